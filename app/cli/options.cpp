@@ -1,0 +1,78 @@
+#include "cli/options.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "springlab/error.hpp"
+#include "springlab/forces.hpp"
+#include "util/data_dir.hpp"
+
+namespace springlab::app {
+
+void add_sim_options(CLI::App& c, SimOptions& o, bool with_length) {
+  c.add_option("--method", o.method, "integration method (springlab list shows them)");
+  c.add_option("--dt", o.dt, "time step in seconds (default: the scene's)");
+  c.add_option("--substeps", o.substeps, "integrator steps per step: h = dt / substeps");
+  if (with_length) {
+    c.add_option("--steps", o.steps, "number of steps to simulate");
+    c.add_option("--duration", o.duration, "simulated seconds (default: the scene's)");
+  }
+  c.add_option("--ks", o.ks, "set every spring's stiffness k_s (N/m)");
+  c.add_option("--kd", o.kd, "set every spring's damping k_d (N s/m)");
+  c.add_option("--tol", o.tol, "tolerance of the adaptive methods (default: the scene's)");
+  c.add_option("--set", o.sets, "KEY=VALUE: any other scene field, e.g. cloth.width=64")
+      ->allow_extra_args(false);
+  c.add_option("--threads", o.threads, "threads for the force loops (default: all cores)");
+}
+
+void check_option(const char* name, double value, double lo, double hi, bool lo_open,
+                  const char* unit) {
+  if (std::isfinite(value) && (lo_open ? value > lo : value >= lo) && value <= hi) return;
+  std::ostringstream s;
+  s << name << ": must be in " << (lo_open ? "(" : "[") << lo << ", " << hi << "]" << unit
+    << ", got " << value;
+  throw InputError(s.str());
+}
+
+Prepared prepare(const std::string& scene_name, const SimOptions& o) {
+  Prepared p;
+  // Options first: a bad option is reported before any file is read.
+  if (o.dt) check_option("--dt", *o.dt, 0.0, 1.0, true, " s");
+  if (o.substeps) check_option("--substeps", *o.substeps, 1, 100000, false);
+  if (o.steps) check_option("--steps", static_cast<double>(*o.steps), 1, 1e12, false);
+  if (o.duration) check_option("--duration", *o.duration, 0.0, 1e7, true, " s");
+  if (o.ks) check_option("--ks", *o.ks, 0.0, 1e12, false, " N/m");
+  if (o.kd) check_option("--kd", *o.kd, 0.0, 1e12, false, " N s/m");
+  if (o.tol) check_option("--tol", *o.tol, 0.0, 1.0, true);
+  if (o.threads) check_option("--threads", *o.threads, 0, 1024, false);
+  std::optional<Method> method;
+  if (o.method) {
+    method = find_method(*o.method);
+    if (!method) {
+      std::vector<std::string> names;
+      for (const auto& m : methods()) names.emplace_back(m.name);
+      const std::string near = closest_match(*o.method, names.data(), names.size());
+      throw InputError("--method: unknown method '" + *o.method + "'" +
+                       (near.empty() ? "" : "; did you mean '" + near + "'?") +
+                       " (methods: " + method_names() + ")");
+    }
+  }
+
+  p.scene = load_scene(resolve_scene(scene_name), o.sets);
+  Scene& s = p.scene;
+  if (o.ks) set_stiffness(s.model, *o.ks);
+  if (o.kd) set_damping(s.model, *o.kd);
+  if (o.threads) set_thread_count(*o.threads);
+
+  p.settings.method = method ? *method : s.methods.front();
+  p.settings.dt = o.dt ? *o.dt : s.dt;
+  p.settings.substeps = o.substeps ? *o.substeps : s.substeps;
+  p.settings.step.tolerance = o.tol ? *o.tol : s.tolerance;
+  const double duration = o.duration ? *o.duration : s.duration;
+  p.steps = o.steps ? *o.steps
+                    : static_cast<std::int64_t>(std::ceil(duration / p.settings.dt - 1e-9));
+  if (p.steps < 1) p.steps = 1;
+  return p;
+}
+
+}  // namespace springlab::app

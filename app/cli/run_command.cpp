@@ -1,0 +1,140 @@
+// springlab run SCENE: simulates without graphics, prints a summary, optionally writes a CSV
+// trace (DESIGN.md): a header, then one row per step (every K-th with --every), columns
+// t,kinetic,potential,total, then x0,y0,z0,vx0,vy0,vz0 for particle 0, and so on.
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <optional>
+
+#include "cli/commands.hpp"
+#include "cli/options.hpp"
+#include "springlab/error.hpp"
+#include "util/atomic_file.hpp"
+#include "util/progress.hpp"
+
+namespace springlab::app {
+
+namespace {
+
+struct RunOptions {
+  std::string scene;
+  SimOptions sim;
+  std::optional<std::string> csv;
+  std::int64_t every = 1;
+};
+
+// Shortest text that reads back as the same double.
+void put_number(std::FILE* f, double x, char separator) {
+  char buffer[32];
+  auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, x);
+  *end++ = separator;
+  std::fwrite(buffer, 1, static_cast<std::size_t>(end - buffer), f);
+}
+
+void write_header(std::FILE* f, int particles) {
+  std::fputs("t,kinetic,potential,total", f);
+  for (int i = 0; i < particles; ++i)
+    std::fprintf(f, ",x%d,y%d,z%d,vx%d,vy%d,vz%d", i, i, i, i, i, i);
+  std::fputc('\n', f);
+}
+
+void write_row(std::FILE* f, const Simulation& sim) {
+  const State& s = sim.state();
+  const Energy e = sim.energy();
+  put_number(f, s.t, ',');
+  put_number(f, e.kinetic, ',');
+  put_number(f, e.potential(), ',');
+  put_number(f, e.total(), s.particle_count() > 0 ? ',' : '\n');
+  for (int i = 0; i < s.particle_count(); ++i) {
+    const bool last = i + 1 == s.particle_count();
+    for (int c = 0; c < 3; ++c) put_number(f, s.x(i, c), ',');
+    for (int c = 0; c < 3; ++c) put_number(f, s.v(i, c), c == 2 && last ? '\n' : ',');
+  }
+}
+
+std::string format(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", x);
+  return buffer;
+}
+
+int run(const RunOptions& o) {
+  Prepared p = prepare(o.scene, o.sim);
+  if (o.every < 1) throw InputError("--every: must be at least 1, got " + std::to_string(o.every));
+  std::unique_ptr<AtomicFile> csv;
+  if (o.csv) csv = std::make_unique<AtomicFile>(*o.csv, "CSV trace");
+
+  Simulation sim(p.scene.model, p.scene.state, p.settings);
+  const Energy initial = sim.energy();
+  const StabilityEstimate stability = sim.stability();
+  const double stable_h = sim.stable_step();
+
+  if (csv) {
+    write_header(csv->file(), sim.model().particle_count());
+    write_row(csv->file(), sim);
+  }
+  Progress progress("run " + p.scene.name, p.steps);
+  const auto start = std::chrono::steady_clock::now();
+  std::int64_t taken = 0;
+  while (taken < p.steps && sim.step()) {
+    ++taken;
+    if (csv && (taken % o.every == 0 || taken == p.steps)) write_row(csv->file(), sim);
+    if ((taken & 255) == 0) progress.update(taken);
+  }
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  progress.finish();
+  if (csv) csv->commit();
+
+  const Energy e = sim.energy();
+  const Counters& c = sim.counters();
+  const MethodInfo& m = method_info(p.settings.method);
+  std::printf("scene      %s (%s): %d particles, %d springs\n", p.scene.name.c_str(),
+              p.scene.file.c_str(), sim.model().particle_count(), sim.model().spring_count());
+  std::printf("method     %s, dt = %s s, %d substep%s (h = %s s)\n", m.name,
+              format(p.settings.dt).c_str(), p.settings.substeps, p.settings.substeps == 1 ? "" : "s",
+              format(sim.h()).c_str());
+  std::printf("steps      %lld of %lld, simulated %s s in %s s of wall time (%s steps/s)\n",
+              static_cast<long long>(taken), static_cast<long long>(p.steps),
+              format(sim.state().t).c_str(), format(wall).c_str(),
+              format(wall > 0 ? taken / wall : 0.0).c_str());
+  std::printf("energy     kinetic %s J, potential %s J, total %s J (initially %s J)\n",
+              format(e.kinetic).c_str(), format(e.potential()).c_str(), format(e.total()).c_str(),
+              format(initial.total()).c_str());
+  std::printf("stability  w_max = %s rad/s (Gershgorin bound %s), h w_max = %s; %s: %s\n",
+              format(stability.w_max).c_str(), format(stability.w_bound).c_str(),
+              format(sim.h() * stability.w_max).c_str(), m.name,
+              describe_limit(p.settings.method, stable_h).c_str());
+  std::printf("cost       %lld force evaluations", static_cast<long long>(c.force_evals));
+  if (c.linear_solves)
+    std::printf(", %lld linear solves (%lld CG iterations)", static_cast<long long>(c.linear_solves),
+                static_cast<long long>(c.solver_iterations));
+  if (m.adaptive)
+    std::printf(", %lld accepted and %lld rejected internal steps",
+                static_cast<long long>(c.accepted), static_cast<long long>(c.rejected));
+  std::printf("\n");
+  if (o.csv) std::printf("trace      %s\n", o.csv->c_str());
+
+  if (sim.diverged()) {
+    std::fflush(stdout);
+    std::fprintf(stderr, "springlab: %s: %s\n", p.scene.name.c_str(),
+                 sim.divergence()->message().c_str());
+    return kDiverged;
+  }
+  return kOk;
+}
+
+}  // namespace
+
+Command add_run_command(CLI::App& app) {
+  auto options = std::make_shared<RunOptions>();
+  CLI::App* c = app.add_subcommand("run", "simulate without graphics; print a summary, write a CSV trace");
+  c->add_option("scene", options->scene, "scene name or JSON file")->required();
+  add_sim_options(*c, options->sim);
+  c->add_option("--csv", options->csv, "write a trace: one row per step");
+  c->add_option("--every", options->every, "write every K-th step to the CSV");
+  return [options] { return run(*options); };
+}
+
+}  // namespace springlab::app

@@ -1,0 +1,60 @@
+// springlab: the command line (DESIGN.md, "The command line"). Parses, dispatches to a
+// subcommand, and turns what goes wrong into one clear message and the exit status:
+// 0 done, 2 bad input, 3 diverged, 1 anything else.
+#include <csignal>
+#include <cstdio>
+#include <exception>
+#include <map>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/commands.hpp"
+#include "springlab/error.hpp"
+#include "util/atomic_file.hpp"
+
+namespace {
+
+extern "C" void on_signal(int signal) {
+  springlab::app::remove_pending_outputs();
+  std::signal(signal, SIG_DFL);
+  std::raise(signal);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace springlab::app;
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+  std::signal(SIGPIPE, SIG_IGN);
+
+  CLI::App app("springlab: mass-spring and particle simulation for teaching", "springlab");
+  app.require_subcommand(0, 1);
+  std::map<std::string, Command> commands;
+  commands["run"] = add_run_command(app);
+  commands["list"] = add_list_command(app);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "springlab: %s (see springlab --help)\n", e.what());
+    return kBadInput;
+  }
+
+  try {
+    for (const auto& [name, command] : commands)
+      if (app.got_subcommand(name)) return command();
+    std::fprintf(stderr, "springlab: the interactive app is not built yet; try springlab --help\n");
+    return kBadInput;
+  } catch (const springlab::InputError& e) {
+    std::fprintf(stderr, "springlab: %s\n", e.what());
+    return kBadInput;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "springlab: %s\n", e.what());
+    return kFailure;
+  }
+}

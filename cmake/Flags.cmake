@@ -1,0 +1,25 @@
+# Compiler flags shared by every target.
+#
+# Floating point: no -ffast-math, and no FMA contraction (-ffp-contract=off), so that a result
+# does not depend on which instructions the compiler happened to fuse: the same scene gives the
+# same bits with SSE2 or AVX2 code and with any thread count. -fno-math-errno only lets sqrt
+# vectorise; it changes no value.
+add_compile_options(-Wall -Wextra -Wpedantic -ffp-contract=off -fno-math-errno)
+
+# AVX2 doubles the width of the vectorised spring loops. Only used when the build machine has it
+# (the binary is meant for the machine it is built on, as scripts/ build it).
+include(CheckCXXSourceRuns)
+if(NOT DEFINED SPRINGLAB_HAVE_AVX2)
+  check_cxx_source_runs("int main() { return __builtin_cpu_supports(\"avx2\") ? 0 : 1; }"
+                        SPRINGLAB_HAVE_AVX2)
+endif()
+option(SPRINGLAB_AVX2 "Compile with -mavx2 (no FMA, see above)" ${SPRINGLAB_HAVE_AVX2})
+if(SPRINGLAB_AVX2)
+  add_compile_options(-mavx2)
+endif()
+
+option(SPRINGLAB_SANITIZE "Build with AddressSanitizer and UndefinedBehaviorSanitizer" OFF)
+if(SPRINGLAB_SANITIZE)
+  add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all)
+  add_link_options(-fsanitize=address,undefined)
+endif()

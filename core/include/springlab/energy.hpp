@@ -1,0 +1,32 @@
+// Energies of a state, and the power lost to the dissipative forces.
+//   kinetic    sum m |v|^2 / 2         (free particles; a pinned one has no finite mass to move)
+//   spring     sum k_s (l - L)^2 / 2
+//   gravity    -sum m g . x            (free particles)
+#pragma once
+
+#include "springlab/model.hpp"
+#include "springlab/state.hpp"
+
+namespace springlab {
+
+struct Energy {
+  double kinetic = 0.0;
+  double spring = 0.0;
+  double gravity = 0.0;
+  double potential() const { return spring + gravity; }
+  double total() const { return kinetic + spring + gravity; }
+};
+
+Energy energy(const Model& model, const State& state);
+
+// Power (W, >= 0) taken out by spring damping, sum k_d ((v_b - v_a) . u)^2, and by drag,
+// sum k_drag |v|^2. Integrated over time it is the energy the scene loses physically, as
+// opposed to what an integrator loses or gains numerically.
+double dissipation_power(const Model& model, const State& state);
+
+// A scene's energy scale (J), the yardstick of divergence: the larger of |E(initial)| and a
+// floor from the scene itself, sum k_s L^2 + sum m |g| * size (size: the diagonal of the
+// initial bounding box), so that a scene that starts at rest still has a scale.
+double energy_scale(const Model& model, const State& initial);
+
+}  // namespace springlab

@@ -1,0 +1,132 @@
+// The integration methods: one table that the command line, the app, the charts and the tests
+// all read. Each entry gives a method's name, order, cost and stability, and its step function.
+//
+// Every step function advances a state by exactly h (adaptive methods take as many internal
+// steps as their tolerance needs to get there), reading `in` and writing `out`, and counts its
+// work in the workspace. NUMERICS.md gives each update; the files in src/methods/ implement
+// them, one method a file.
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+#include "springlab/forces.hpp"
+#include "springlab/model.hpp"
+#include "springlab/state.hpp"
+
+namespace springlab {
+
+enum class Method {
+  Euler,
+  SymplecticEuler,
+  Midpoint,
+  ModifiedEuler,
+  RK4,
+  AdaptiveEuler,
+  RK45,
+  ImplicitEuler,
+  Verlet,
+};
+
+// Settings of the methods that have any; plain values with defaults.
+struct StepSettings {
+  // adaptive-euler: largest accepted |x_T - x_T/2| per internal step (m).
+  // rk45: the absolute and relative tolerance on each coordinate of x and v.
+  double tolerance = 1e-4;
+  // The smallest internal step an adaptive method may take, as a fraction of h; below it the
+  // step fails (a diverging or too demanding run must not loop forever).
+  double min_step_fraction = 1e-6;
+  // implicit-euler: conjugate gradients stop when |r| <= solver_tolerance |b|.
+  double solver_tolerance = 1e-10;
+};
+
+// Work done, summed over steps. The machine-independent cost of a run.
+struct Counters {
+  std::int64_t force_evals = 0;        // evaluations of f(x, v) over all particles
+  std::int64_t linear_solves = 0;      // implicit-euler: one per step
+  std::int64_t solver_iterations = 0;  // conjugate-gradient iterations
+  std::int64_t unconverged_solves = 0; // solves stopped by the iteration cap
+  std::int64_t accepted = 0;           // internal steps kept (h-steps for fixed-step methods)
+  std::int64_t rejected = 0;           // adaptive tries thrown away
+};
+
+struct ImplicitSolver;  // implicit_euler.cpp
+
+// Scratch memory and the little history some methods keep between steps. Allocated on first
+// use and reused, so a step allocates nothing once running.
+struct Workspace {
+  Workspace();
+  ~Workspace();
+  Workspace(Workspace&&) noexcept;
+  Workspace& operator=(Workspace&&) noexcept;
+
+  Counters counters;
+  SpringForces spring_forces;
+  std::array<Points, 7> kx, kv;  // Runge-Kutta stage derivatives (dx/dt, dv/dt)
+  Points tx, tv, ux, uv;         // stage and trial states
+
+  // Verlet: the previous positions and a(x) at the current positions, valid while `verlet_ready`.
+  Points x_prev, a_now;
+  bool verlet_ready = false;
+  double verlet_h = 0.0;
+
+  // Adaptive methods: the internal step to try next (0: start from h), and whether rk45's
+  // first-same-as-last derivative (ws.kx[0], ws.kv[0]) is that of the state it is given next.
+  double adaptive_step = 0.0;
+  bool fsal_ready = false;
+
+  std::unique_ptr<ImplicitSolver> implicit;
+
+  // The state or the model was changed from outside (contact, a drag, a parameter): forget what
+  // was derived from the last step. Counters and the adaptive step size are kept.
+  void invalidate() {
+    verlet_ready = false;
+    fsal_ready = false;
+  }
+};
+
+using StepFunction = void (*)(const Model& model, const State& in, State& out, double h,
+                              const StepSettings& settings, Workspace& ws);
+
+// A step that cannot be completed (an adaptive step below its floor). The simulation reports it
+// as a divergence.
+struct StepFailure : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct MethodInfo {
+  Method id;
+  const char* name;         // as typed on the command line
+  const char* label;        // as shown to people
+  int order;                // global order of accuracy in positions
+  const char* evaluations;  // force evaluations per step, as a sentence fragment
+  // Largest stable h * w on the undamped oscillator x'' = -w^2 x: 0 = never stable,
+  // infinity = always, NaN = not a fixed-step method (the step size is controlled).
+  double undamped_limit;
+  const char* stability;  // one line: why, for the stability gauge
+  bool adaptive;
+  bool implicit;
+  StepFunction step;
+};
+
+std::span<const MethodInfo> methods();
+const MethodInfo& method_info(Method method);
+std::optional<Method> find_method(std::string_view name);
+// "euler, symplectic-euler, ..." for messages.
+std::string method_names();
+
+// Advances `in` by h into `out` (which must not be `in`) with the method, counting the work.
+void step(Method method, const Model& model, const State& in, State& out, double h,
+          const StepSettings& settings, Workspace& ws);
+
+// One evaluation of the accelerations, counted.
+void accelerations(const Model& model, const Points& x, const Points& v, Points& a, Workspace& ws);
+
+}  // namespace springlab

@@ -1,0 +1,89 @@
+// The force of one spring and its derivatives: pure functions, no loops, no model.
+//
+// With d = x_b - x_a, l = |d|, u = d / l, dv = v_b - v_a:
+//   f_a = k_s (l - L) u + k_d (dv . u) u,      f_b = -f_a.
+// The first term is Hooke's law with rest length L; the second damps only the spring's change of
+// length ("damp only the internal, spring-driven motion"): a rigid translation or rotation has
+// dv . u = 0 and is not slowed.
+//
+// Coincident ends (l = 0) have no direction: the force is zero there rather than NaN. For L = 0
+// the spring is linear, f_a = k_s d, and this is also the exact value at l = 0.
+#pragma once
+
+#include <Eigen/Core>
+#include <cmath>
+
+namespace springlab {
+
+// Below this length (relative to the rest length, or absolute for L = 0) the ends are treated as
+// coincident.
+inline constexpr double kCoincident = 1e-12;
+
+inline bool coincident(double l, double rest) { return l <= kCoincident * (rest > 1.0 ? rest : 1.0); }
+
+// Force on end a.
+inline Eigen::Vector3d spring_force(const Eigen::Vector3d& xa, const Eigen::Vector3d& xb,
+                                    const Eigen::Vector3d& va, const Eigen::Vector3d& vb,
+                                    double ks, double kd, double rest) {
+  // Written as (k_s (l - L) + k_d (dv . d) / l) / l * d: the very arithmetic of the vectorised
+  // loop in forces.cpp, so both give the same bits.
+  const Eigen::Vector3d d = xb - xa;
+  const Eigen::Vector3d dv = vb - va;
+  const double l = std::sqrt(d.x() * d.x() + d.y() * d.y() + d.z() * d.z());
+  const double inv = coincident(l, rest) ? 0.0 : 1.0 / l;
+  const double rate = dv.x() * d.x() + dv.y() * d.y() + dv.z() * d.z();
+  return ((ks * (l - rest) + kd * rate * inv) * inv) * d;
+}
+
+// Potential energy k_s (l - L)^2 / 2.
+inline double spring_energy(const Eigen::Vector3d& xa, const Eigen::Vector3d& xb, double ks,
+                            double rest) {
+  const double stretch = (xb - xa).norm() - rest;
+  return 0.5 * ks * stretch * stretch;
+}
+
+// The 3x3 blocks of the Jacobian of f_a with respect to the other end:
+//   dfdx = d f_a / d x_b,  dfdv = d f_a / d v_b.
+// The other blocks follow from f_b = -f_a and f depending on differences only:
+//   d f_a / d x_a = -dfdx,  d f_b / d x_b = -dfdx,  d f_b / d x_a = dfdx (likewise for v).
+struct SpringJacobian {
+  Eigen::Matrix3d dfdx;
+  Eigen::Matrix3d dfdv;
+};
+
+// Exact derivatives, with P = I - u u^T (the projection across the spring):
+//   elastic:   k_s [ u u^T + (1 - L/l) P ]
+//   damping:   (k_d / l) [ u dv^T P + (dv . u) P ]            (depends on x through u)
+//   dfdv:      k_d u u^T
+// For implicit integration pass definite = true: the transverse factor (1 - L/l), negative for a
+// compressed spring, is clamped at zero and the non-symmetric damping term is dropped, which
+// keeps M - h df/dv - h^2 df/dx symmetric positive definite (Choi and Ko 2002; Baraff and
+// Witkin 1998 make the same choice). Along the spring both forms agree.
+inline SpringJacobian spring_jacobian(const Eigen::Vector3d& xa, const Eigen::Vector3d& xb,
+                                      const Eigen::Vector3d& va, const Eigen::Vector3d& vb,
+                                      double ks, double kd, double rest, bool definite) {
+  const Eigen::Vector3d d = xb - xa;
+  const double l = d.norm();
+  const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
+  SpringJacobian J;
+  if (coincident(l, rest)) {
+    // Only the linear zero-length spring has a derivative here: f_a = k_s d.
+    J.dfdx = rest == 0.0 ? Eigen::Matrix3d(ks * I) : Eigen::Matrix3d::Zero();
+    J.dfdv.setZero();
+    return J;
+  }
+  const Eigen::Vector3d u = d / l;
+  const Eigen::Matrix3d uu = u * u.transpose();
+  const Eigen::Matrix3d P = I - uu;
+  double transverse = 1.0 - rest / l;
+  if (definite && transverse < 0.0) transverse = 0.0;
+  J.dfdx = ks * (uu + transverse * P);
+  if (!definite && kd != 0.0) {
+    const Eigen::Vector3d dv = vb - va;
+    J.dfdx += (kd / l) * (u * (P * dv).transpose() + dv.dot(u) * P);
+  }
+  J.dfdv = kd * uu;
+  return J;
+}
+
+}  // namespace springlab

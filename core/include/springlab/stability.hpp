@@ -1,0 +1,39 @@
+// How large a step a scene takes before a method blows up.
+//
+// The scene's highest natural frequency w_max is the square root of the largest eigenvalue of
+// M^-1 K (K = -df/dx, the stiffness matrix at the current positions), found by power iteration
+// on the symmetric M^-1/2 K M^-1/2; Gershgorin's bound w_max^2 <= max_i (2 / m_i) sum k_s
+// brackets it from above. The damping of that mode, c = (q^T C q) / (q^T M q) with C = -df/dv,
+// matters too: explicit Euler is stable exactly while h <= c / w^2.
+//
+// A method's limit comes from its own step function, applied to the oscillator
+// x'' = -w^2 x - c x' (a particle on a spring to a pinned anchor): one step is a linear map of
+// (x, v), and the method is stable while that map's spectral radius is at most 1. The largest
+// stable step is found by scanning h w upwards and bisecting at the first instability, so the
+// limits in NUMERICS.md (2/w, 2 sqrt(2)/w, k_d/k_s...) are computed, not copied.
+#pragma once
+
+#include "springlab/methods.hpp"
+#include "springlab/model.hpp"
+#include "springlab/state.hpp"
+
+namespace springlab {
+
+struct StabilityEstimate {
+  double w_max = 0.0;    // rad/s, power iteration (a lower bound that converges up to it)
+  double w_bound = 0.0;  // rad/s, Gershgorin upper bound
+  double damping = 0.0;  // 1/s, c of the highest mode
+  int iterations = 0;
+};
+
+StabilityEstimate estimate_stability(const Model& model, const State& state);
+
+// Spectral radius of one step of size h on x'' = -w^2 x - c x'.
+double amplification(Method method, double w, double c, double h, double verlet_damping = 0.0);
+
+// The largest h for which every step size up to it is stable on that oscillator:
+// 0 = unstable at any step (from 0.01 / w up; finer growth is lost in rounding), infinity = stable at any step, NaN = the method
+// chooses its own steps.
+double stable_step(Method method, double w, double c, double verlet_damping = 0.0);
+
+}  // namespace springlab

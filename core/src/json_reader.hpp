@@ -1,0 +1,77 @@
+// Reading a JSON object field by field, with a clear InputError for anything wrong. Internal to
+// the core's loaders (scenes, scripts).
+//
+// Every accessor records the key it was asked for; finish() then rejects any other key as
+// unknown, suggesting the closest known one ("stifness": did you mean "stiffness"?). Messages
+// read: "<file>: /generators/0/nodes: must be an integer in [2, 4194304], got 1e+09".
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "springlab/error.hpp"
+#include "springlab/model.hpp"
+
+namespace springlab::json_reader {
+
+using json = nlohmann::json;
+
+struct Range {
+  double lo, hi;
+  bool lo_open = false, hi_open = false;
+  std::string text() const;
+  bool contains(double x) const;
+};
+inline Range positive(double hi = 1e12) { return {0.0, hi, true, false}; }
+inline Range non_negative(double hi = 1e12) { return {0.0, hi}; }
+inline Range between(double lo, double hi) { return {lo, hi}; }
+
+class ObjectReader {
+ public:
+  // `where` is the label of the document for messages ("scene 'rope.json'").
+  ObjectReader(const json& object, std::string pointer, std::string where);
+
+  bool has(const char* key);
+  double number(const char* key, Range range);  // required
+  double number(const char* key, double fallback, Range range);
+  long integer(const char* key, long lo, long hi);  // required
+  long integer(const char* key, long fallback, long lo, long hi);
+  bool boolean(const char* key, bool fallback);
+  Vec3 vec3(const char* key);  // required
+  Vec3 vec3(const char* key, const Vec3& fallback);
+  std::string text(const char* key, const std::string& fallback);
+  std::string choice(const char* key, const std::string& fallback,
+                     const std::vector<std::string>& options);
+  std::optional<ObjectReader> object(const char* key);
+  std::vector<ObjectReader> objects(const char* key);  // an array of objects; missing = empty
+  // The raw value, for fields with a shape of their own; marks the key known.
+  const json* raw(const char* key);
+
+  [[noreturn]] void fail(const char* key, const std::string& what) const;
+  [[noreturn]] void fail(const std::string& what) const;  // about the object itself
+  void finish() const;
+
+  std::string path(const char* key) const { return pointer_ + "/" + key; }
+  const std::string& pointer() const { return pointer_; }
+  const std::string& where() const { return where_; }
+
+ private:
+  const json& object_;
+  std::string pointer_, where_;
+  std::vector<std::string> known_;
+};
+
+// "got -1", "got \"abc\"", "got an array" for messages.
+std::string describe(const json& value);
+
+// Checks and returns an element's value as a number, with the same message style.
+double as_number(const json& value, const std::string& pointer, const std::string& where,
+                 Range range);
+long as_integer(const json& value, const std::string& pointer, const std::string& where, long lo,
+                long hi);
+[[noreturn]] void fail_at(const std::string& where, const std::string& pointer,
+                          const std::string& what);
+
+}  // namespace springlab::json_reader

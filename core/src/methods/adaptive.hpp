@@ -1,0 +1,26 @@
+// Shared by the adaptive methods: walking from t to t + h in internal steps of controlled size.
+#pragma once
+
+#include <cmath>
+#include <string>
+
+#include "springlab/methods.hpp"
+
+namespace springlab::adaptive {
+
+// The internal step to try first: the one the last step ended with, no longer than h.
+inline double first_try(const Workspace& ws, double h) {
+  return ws.adaptive_step > 0.0 && ws.adaptive_step < h ? ws.adaptive_step : h;
+}
+
+// Throws when the controller asks for a step below the floor: a run that needs ever smaller
+// steps (it is diverging, or the tolerance is out of reach) must fail, not hang.
+inline void check_floor(const char* method, double step, double h, const StepSettings& s) {
+  if (step >= s.min_step_fraction * h) return;
+  throw StepFailure(std::string(method) + " needed an internal step below " +
+                    std::to_string(s.min_step_fraction * h) + " s (h x " +
+                    std::to_string(s.min_step_fraction) + ") to meet the tolerance " +
+                    std::to_string(s.tolerance) + ": loosen --tol or shorten --dt");
+}
+
+}  // namespace springlab::adaptive

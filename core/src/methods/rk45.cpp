@@ -1,0 +1,102 @@
+// Dormand-Prince 5(4): seven stages whose last is the derivative at the new state, reused as the
+// first stage of the next internal step (first same as last, so 6 evaluations a step). The
+// difference between the fifth- and fourth-order results estimates the local error:
+//   err = RMS over coordinates of e_i / (tol + tol max(|y_i|, |y1_i|))
+// accepted when err <= 1; the next step is T * min(5, max(0.2, 0.9 err^(-1/5))), and never
+// grows right after a rejection (Hairer, Norsett and Wanner, "Solving ODEs I", II.4).
+#include <algorithm>
+#include <cmath>
+
+#include "adaptive.hpp"
+#include "runge_kutta.hpp"
+#include "steps.hpp"
+
+namespace springlab::steps {
+
+namespace {
+
+constexpr rk::Tableau kDormandPrince = {
+    7,
+    {{0},
+     {1.0 / 5.0},
+     {3.0 / 40.0, 9.0 / 40.0},
+     {44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0},
+     {19372.0 / 6561.0, -25360.0 / 2187.0, 64448.0 / 6561.0, -212.0 / 729.0},
+     {9017.0 / 3168.0, -355.0 / 33.0, 46732.0 / 5247.0, 49.0 / 176.0, -5103.0 / 18656.0},
+     {35.0 / 384.0, 0.0, 500.0 / 1113.0, 125.0 / 192.0, -2187.0 / 6784.0, 11.0 / 84.0}},
+    {35.0 / 384.0, 0.0, 500.0 / 1113.0, 125.0 / 192.0, -2187.0 / 6784.0, 11.0 / 84.0, 0.0}};
+
+// Fifth-order weights minus the embedded fourth-order ones.
+constexpr double kErrorWeights[7] = {71.0 / 57600.0,      0.0,         -71.0 / 16695.0,
+                                     71.0 / 1920.0,       -17253.0 / 339200.0,
+                                     22.0 / 525.0,        -1.0 / 40.0};
+
+// RMS of the scaled error over the coordinates of free particles.
+double error_norm(const Model& model, const Points& x0, const Points& v0, const Points& x1,
+                  const Points& v1, double step, const Workspace& ws, double tol) {
+  double sum = 0.0;
+  int count = 0;
+  for (int i = 0; i < x0.rows(); ++i) {
+    if (model.pinned(i)) continue;
+    for (int c = 0; c < 3; ++c) {
+      double ex = 0.0, ev = 0.0;
+      for (int s = 0; s < 7; ++s) {
+        ex += kErrorWeights[s] * ws.kx[s](i, c);
+        ev += kErrorWeights[s] * ws.kv[s](i, c);
+      }
+      const double sx = tol + tol * std::max(std::abs(x0(i, c)), std::abs(x1(i, c)));
+      const double sv = tol + tol * std::max(std::abs(v0(i, c)), std::abs(v1(i, c)));
+      sum += (step * ex / sx) * (step * ex / sx) + (step * ev / sv) * (step * ev / sv);
+      count += 2;
+    }
+  }
+  return count > 0 ? std::sqrt(sum / count) : 0.0;
+}
+
+}  // namespace
+
+void rk45(const Model& model, const State& in, State& out, double h, const StepSettings& settings,
+          Workspace& ws) {
+  // The state walks in `out`; each try is written to (ws.ux, ws.uv) and swapped in if accepted.
+  out.x = in.x;
+  out.v = in.v;
+  double T = adaptive::first_try(ws, h);
+  double done = 0.0;
+  bool first_known = ws.fsal_ready;
+  bool just_rejected = false;
+  while (done < h) {
+    const double remaining = h - done;
+    const bool last = T >= remaining * (1.0 - 1e-12);
+    const double step = last ? remaining : T;
+    rk::stages(model, out.x, out.v, step, kDormandPrince, ws, first_known);
+    rk::combine(out.x, out.v, step, kDormandPrince.b, 7, ws, ws.ux, ws.uv);
+    const double err = error_norm(model, out.x, out.v, ws.ux, ws.uv, step, ws, settings.tolerance);
+    if (!(err <= 1.0)) {  // also rejects NaN
+      ++ws.counters.rejected;
+      T = step * (std::isfinite(err) ? std::max(0.2, 0.9 * std::pow(err, -0.2)) : 0.2);
+      adaptive::check_floor("rk45", T, h, settings);
+      first_known = true;  // stage 1 is at the unchanged state
+      just_rejected = true;
+      continue;
+    }
+    ++ws.counters.accepted;
+    std::swap(out.x, ws.ux);
+    std::swap(out.v, ws.uv);
+    done = last ? h : done + step;
+    // Stage 7 was evaluated at the new state: it is the next step's stage 1.
+    std::swap(ws.kx[0], ws.kx[6]);
+    std::swap(ws.kv[0], ws.kv[6]);
+    first_known = true;
+    const double growth = err > 0.0 ? 0.9 * std::pow(err, -0.2) : 5.0;
+    const double proposal = step * std::clamp(growth, 0.2, just_rejected ? 1.0 : 5.0);
+    just_rejected = false;
+    // A last step shortened to land on t + h says nothing about the step that fits: keep T
+    // unless it must shrink.
+    if (!last || proposal < T) T = proposal;
+  }
+  out.t = in.t + h;
+  ws.adaptive_step = T;
+  ws.fsal_ready = true;
+}
+
+}  // namespace springlab::steps

@@ -1,0 +1,24 @@
+// The step functions of the method table (methods.cpp), one per file in this folder.
+#pragma once
+
+#include "springlab/methods.hpp"
+
+namespace springlab::steps {
+
+#define SPRINGLAB_STEP(fn)                                                                      \
+  void fn(const Model& model, const State& in, State& out, double h, const StepSettings& settings, \
+          Workspace& ws)
+
+SPRINGLAB_STEP(euler);
+SPRINGLAB_STEP(symplectic_euler);
+SPRINGLAB_STEP(midpoint);
+SPRINGLAB_STEP(modified_euler);
+SPRINGLAB_STEP(rk4);
+SPRINGLAB_STEP(adaptive_euler);
+SPRINGLAB_STEP(rk45);
+SPRINGLAB_STEP(implicit_euler);
+SPRINGLAB_STEP(verlet);
+
+#undef SPRINGLAB_STEP
+
+}  // namespace springlab::steps

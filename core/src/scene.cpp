@@ -1,0 +1,288 @@
+#include "springlab/scene.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "generators.hpp"
+#include "json_reader.hpp"
+
+namespace springlab {
+
+using json_reader::between;
+using json_reader::json;
+using json_reader::non_negative;
+using json_reader::ObjectReader;
+using json_reader::positive;
+
+namespace {
+
+// --set KEY=VALUE: the value as JSON when it parses as JSON, a comma-separated list of numbers
+// as an array, anything else as a string.
+json parse_value(const std::string& text) {
+  json value = json::parse(text, nullptr, false);
+  if (!value.is_discarded()) return value;
+  if (text.find(',') != std::string::npos) {
+    value = json::parse("[" + text + "]", nullptr, false);
+    if (!value.is_discarded()) return value;
+  }
+  return text;
+}
+
+void apply_override(json& doc, const std::string& assignment, const std::string& file) {
+  const auto bad = [&](const std::string& what) {
+    throw InputError("--set " + assignment + ": " + what);
+  };
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0) bad("expected KEY=VALUE, for example cloth.width=64");
+  const std::string key = assignment.substr(0, eq);
+  std::vector<std::string> parts;
+  std::stringstream stream(key);
+  for (std::string part; std::getline(stream, part, '.');) parts.push_back(part);
+
+  json* node = &doc;
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    const std::string& part = parts[k];
+    const bool last = k + 1 == parts.size();
+    if (node->is_array()) {
+      char* end = nullptr;
+      const long index = std::strtol(part.c_str(), &end, 10);
+      if (part.empty() || *end != '\0' || index < 0 || index >= static_cast<long>(node->size()))
+        bad("'" + part + "' is not an index of " + std::to_string(node->size()) + " elements");
+      node = &(*node)[index];
+      continue;
+    }
+    if (!node->is_object()) bad("'" + part + "' goes inside a value that has no fields");
+    if (k == 0 && !node->contains(part) && doc.contains("generators") && doc["generators"].is_array()) {
+      // A generator by name (its "name", or its "type" when it has no name).
+      json* found = nullptr;
+      for (auto& g : doc["generators"])
+        if (g.is_object() && g.value("name", g.value("type", std::string())) == part) found = &g;
+      if (found && !last) {
+        node = found;
+        continue;
+      }
+    }
+    if (last) {
+      (*node)[part] = parse_value(assignment.substr(eq + 1));
+      return;
+    }
+    if (!node->contains(part))
+      bad("scene '" + file + "' has no field '" + part + "' (nor a generator of that name)");
+    node = &(*node)[part];
+  }
+}
+
+// A particle reference in a spring: a global index, or "name:index" into a generator's nodes
+// (negative indices count from the end).
+int particle_ref(const json& value, const std::string& pointer, const std::string& where,
+                 int total, const std::map<std::string, std::pair<int, int>>& named) {
+  if (value.is_string()) {
+    const std::string s = value.get<std::string>();
+    const auto colon = s.rfind(':');
+    const auto it = colon == std::string::npos ? named.end() : named.find(s.substr(0, colon));
+    if (it == named.end())
+      json_reader::fail_at(where, pointer,
+                           "must be a particle index or \"generator:index\" with a generator "
+                           "named in this scene, got \"" + s + "\"");
+    const auto [first, count] = it->second;
+    const long i = json_reader::as_integer(json::parse(s.substr(colon + 1), nullptr, false),
+                                           pointer, where, -count, count - 1);
+    return first + static_cast<int>(i < 0 ? i + count : i);
+  }
+  return static_cast<int>(json_reader::as_integer(value, pointer, where, 0, total - 1));
+}
+
+Camera read_camera(ObjectReader& top, View view, const std::vector<Vec3>& x) {
+  Camera camera;
+  camera.view = view;
+  // Defaults frame the initial bounding box.
+  Vec3 lo = Vec3::Constant(-1.0), hi = Vec3::Constant(1.0);
+  if (!x.empty()) {
+    lo = hi = x.front();
+    for (const Vec3& p : x) {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+  }
+  const double extent = std::max(1.0, (hi - lo).norm());
+  camera.target = 0.5 * (lo + hi);
+  camera.height = 1.4 * std::max(hi.y() - lo.y(), 0.6 * (hi.x() - lo.x())) + 0.5;
+  camera.distance = 1.8 * extent;
+  auto r = top.object("camera");
+  if (!r) return camera;
+  camera.target = r->vec3("target", camera.target);
+  if (view == View::Planar) {
+    camera.height = r->number("height", camera.height, positive(1e6));
+  } else {
+    camera.distance = r->number("distance", camera.distance, positive(1e6));
+    camera.yaw = r->number("yaw", camera.yaw, between(-360.0, 360.0));
+    camera.pitch = r->number("pitch", camera.pitch, between(-89.0, 89.0));
+    camera.fov = r->number("fov", camera.fov, between(10.0, 120.0));
+  }
+  r->finish();
+  return camera;
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& text, const std::string& file,
+                  const std::vector<std::string>& overrides) {
+  const std::string where = "scene '" + file + "'";
+  json doc;
+  try {
+    doc = json::parse(text);
+  } catch (const json::parse_error& e) {
+    // nlohmann's message names the line and column; drop its "[json.exception...]" prefix.
+    std::string what = e.what();
+    const auto start = what.find("parse error");
+    throw InputError(where + ": not valid JSON: " + (start == std::string::npos ? what : what.substr(start)));
+  }
+  for (const std::string& o : overrides) apply_override(doc, o, file);
+
+  Scene scene;
+  scene.file = file;
+  scene.name = std::filesystem::path(file).stem().string();
+  ObjectReader top(doc, "", where);
+  scene.description = top.text("description", "");
+  const View view = top.choice("view", "3d", {"2d", "3d"}) == "2d" ? View::Planar : View::Orbit;
+
+  Model& model = scene.model;
+  std::vector<Vec3> x, v;
+  std::map<std::string, std::pair<int, int>> named;
+  generators::Builder builder{model, x, v, scene.surfaces, named};
+
+  // Particles declared one by one.
+  auto particles = top.objects("particles");
+  if (static_cast<long>(particles.size()) > kMaxParticles)
+    top.fail("particles", "has " + std::to_string(particles.size()) + " particles; the limit is " +
+                              std::to_string(kMaxParticles));
+  for (auto& p : particles) {
+    const Vec3 position = p.vec3("position");
+    const Vec3 velocity = p.vec3("velocity", Vec3::Zero());
+    const double mass = p.number("mass", 1.0, positive(1e9));
+    const bool pinned = p.boolean("pinned", false);
+    p.finish();
+    builder.particle(position, velocity, mass, pinned);
+  }
+
+  // Generators.
+  for (auto& g : top.objects("generators")) {
+    const std::string type = g.choice("type", "", {"rope", "cloth", "box"});
+    const std::string name = g.text("name", type);
+    if (named.count(name)) g.fail("name", "\"" + name + "\" is already the name of a generator");
+    if (type == "rope") generators::rope(g, name, builder);
+    else if (type == "cloth") generators::cloth(g, name, builder);
+    else generators::box(g, name, builder);
+    g.finish();
+  }
+  const int total = model.particle_count();
+  if (total == 0) top.fail("declares no particles: add \"particles\" or \"generators\"");
+
+  // Springs declared one by one.
+  auto springs = top.objects("springs");
+  builder.springs_planned += static_cast<long>(springs.size());
+  if (builder.springs_planned > kMaxSprings)
+    top.fail("springs", "would make " + std::to_string(builder.springs_planned) +
+                            " springs; the limit is " + std::to_string(kMaxSprings));
+  for (auto& s : springs) {
+    const json* a_json = s.raw("a");
+    const json* b_json = s.raw("b");
+    if (!a_json || !b_json) s.fail("needs both ends: \"a\" and \"b\" (particle indices)");
+    const int a = particle_ref(*a_json, s.path("a"), where, total, named);
+    const int b = particle_ref(*b_json, s.path("b"), where, total, named);
+    if (a == b) s.fail("b", "is the same particle as \"a\" (" + std::to_string(a) + "): a spring needs two");
+    const double distance = (x[b] - x[a]).norm();
+    const double rest = s.number("rest_length", distance, non_negative(1e9));
+    const double ks = s.number("ks", non_negative(1e12));
+    const double kd = s.number("kd", 0.0, non_negative(1e12));
+    s.finish();
+    if (rest > 0.0 && distance == 0.0)
+      s.fail("its ends start at the same point (particles " + std::to_string(a) + " and " +
+             std::to_string(b) + "), so the spring has no direction: move one");
+    add_spring(model, a, b, rest, add_material(model, {ks, kd}));
+  }
+  if (model.materials.size() > 65535) top.fail("springs", "use more than 65535 distinct (ks, kd) pairs");
+  finalize(model);
+
+  // Forces and colliders.
+  model.gravity = top.vec3("gravity", Vec3::Zero());
+  model.drag = top.number("drag", 0.0, non_negative(1e9));
+  model.verlet_damping = top.number("verlet_damping", 0.0, {0.0, 1.0, false, true});
+  for (auto& c : top.objects("colliders")) {
+    const std::string type = c.choice("type", "", {"plane", "sphere"});
+    const double friction = c.number("friction", 0.0, non_negative(100.0));
+    const double restitution = c.number("restitution", 0.0, between(0.0, 1.0));
+    if (type == "plane") {
+      const Vec3 point = c.vec3("point", Vec3::Zero());
+      const Vec3 normal = c.vec3("normal", Vec3::UnitY());
+      if (!(normal.norm() > 1e-12)) c.fail("normal", "must not be zero: it is the plane's direction");
+      model.planes.push_back({point, normal.normalized(), friction, restitution});
+    } else {
+      const Vec3 center = c.vec3("center");
+      const double radius = c.number("radius", positive(1e6));
+      model.spheres.push_back({center, radius, friction, restitution});
+    }
+    c.finish();
+  }
+
+  // How to run it.
+  if (const json* list = top.raw("methods")) {
+    if (!list->is_array() || list->empty())
+      top.fail("methods", "must be a non-empty array of method names (" + method_names() + ")");
+    for (std::size_t k = 0; k < list->size(); ++k) {
+      const json& item = (*list)[k];
+      const std::string pointer = top.path("methods") + "/" + std::to_string(k);
+      const auto m = item.is_string() ? find_method(item.get<std::string>()) : std::nullopt;
+      if (!m) {
+        std::vector<std::string> names;
+        for (const auto& info : methods()) names.emplace_back(info.name);
+        const std::string near = item.is_string()
+                                     ? closest_match(item.get<std::string>(), names.data(), names.size())
+                                     : "";
+        json_reader::fail_at(where, pointer,
+                             "unknown method " + item.dump() +
+                                 (near.empty() ? "" : "; did you mean \"" + near + "\"?") +
+                                 " (methods: " + method_names() + ")");
+      }
+      scene.methods.push_back(*m);
+    }
+  } else {
+    scene.methods = {Method::SymplecticEuler};
+  }
+  scene.dt = top.number("dt", 0.01, {0.0, 1.0, true, false});
+  scene.substeps = static_cast<int>(top.integer("substeps", 1, 1, 100000));
+  scene.duration = top.number("duration", 10.0, positive(1e7));
+  scene.tolerance = top.number("tolerance", 1e-4, {0.0, 1.0, true, false});
+  scene.camera = read_camera(top, view, x);
+  if (const json* trails = top.raw("trails")) {
+    if (!trails->is_array()) top.fail("trails", "must be an array of particle indices");
+    for (std::size_t k = 0; k < trails->size(); ++k)
+      scene.trails.push_back(particle_ref((*trails)[k], top.path("trails") + "/" + std::to_string(k),
+                                          where, total, named));
+  }
+  top.finish();
+
+  scene.state.resize(total);
+  for (int i = 0; i < total; ++i) {
+    scene.state.x.row(i) = x[i].transpose();
+    scene.state.v.row(i) = model.pinned(i) ? Eigen::RowVector3d::Zero() : Eigen::RowVector3d(v[i].transpose());
+  }
+  scene.state.t = 0.0;
+  return scene;
+}
+
+Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError("scene '" + path + "': is a folder, not a scene file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError("scene '" + path + "': cannot be read (no such file, or no permission)");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError("scene '" + path + "': reading failed");
+  return parse_scene(text.str(), path, overrides);
+}
+
+}  // namespace springlab

@@ -1,0 +1,215 @@
+#include "springlab/simulation.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <utility>
+
+#include "springlab/colliders.hpp"
+
+namespace springlab {
+
+namespace {
+std::string format(double value) {
+  std::ostringstream s;
+  s.precision(4);
+  s << value;
+  return s.str();
+}
+}  // namespace
+
+std::string describe_limit(Method method, double stable_h) {
+  if (std::isnan(stable_h)) return "the method chooses its own step sizes";
+  if (std::isinf(stable_h)) return "stable at any step";
+  if (stable_h == 0.0)
+    return std::string(method == Method::Euler || method == Method::ModifiedEuler ||
+                               method == Method::Midpoint
+                           ? "unstable at any step (not enough damping)"
+                           : "unstable at any step");
+  return "stable up to h = " + format(stable_h) + " s";
+}
+
+std::string Divergence::message() const {
+  std::ostringstream s;
+  s << "diverged during step " << step << " (last good state at t = " << format(t)
+    << " s): " << reason << ". Method " << method_info(method).name << ", h = " << format(h)
+    << " s, h w_max = " << format(h * w_max) << " (w_max = " << format(w_max)
+    << " rad/s); estimated limit: " << describe_limit(method, stable_h)
+    << ". Try a smaller --dt, more --substeps, or a more stable --method (implicit-euler).";
+  return s.str();
+}
+
+Simulation::Simulation(Model model, State initial, SimulationSettings settings)
+    : model_(std::move(model)), initial_(std::move(initial)), settings_(settings) {
+  initial_model_ = model_;
+  reset();
+}
+
+void Simulation::reset() {
+  model_ = initial_model_;
+  current_ = initial_;
+  next_ = initial_;
+  ws_ = Workspace();
+  steps_ = 0;
+  substeps_done_ = 0;
+  t_since_ = current_.t;
+  dissipated_ = 0.0;
+  divergence_.reset();
+  stability_.reset();
+  grabbed_ = -1;
+  energy_scale_ = springlab::energy_scale(model_, current_);
+}
+
+bool Simulation::step() {
+  if (divergence_) return false;
+  const double h = this->h();
+  for (int k = 0; k < settings_.substeps; ++k) {
+    try {
+      springlab::step(settings_.method, model_, current_, next_, h, settings_.step, ws_);
+    } catch (const StepFailure& failure) {
+      ++steps_;
+      diverge(failure.what());
+      return false;
+    }
+    if (!all_finite(next_)) {
+      ++steps_;
+      diverge("a position or velocity became infinite or NaN");
+      return false;
+    }
+    // Time as a multiple of h since h last changed: no drift from adding h over and over.
+    next_.t = t_since_ + static_cast<double>(++substeps_done_) * h;
+    const ContactResult contact = resolve_contacts(model_, next_);
+    if (contact.contacts > 0) ws_.invalidate();
+    if (settings_.track_dissipation)
+      dissipated_ += h * dissipation_power(model_, next_) + contact.kinetic_lost;
+    std::swap(current_, next_);
+  }
+  ++steps_;
+  if (settings_.energy_check_interval > 0 && steps_ % settings_.energy_check_interval == 0) {
+    const double total = energy().total();
+    if (!(std::abs(total) <= kDivergenceFactor * energy_scale_)) {
+      std::ostringstream reason;
+      reason << "the total energy reached " << format(total) << " J, more than 1e6 times the "
+             << "scene's energy scale (" << format(energy_scale_) << " J)";
+      diverge(reason.str());
+      return false;
+    }
+  }
+  return true;
+}
+
+std::int64_t Simulation::advance(std::int64_t steps) {
+  std::int64_t taken = 0;
+  while (taken < steps && step()) ++taken;
+  return taken;
+}
+
+void Simulation::diverge(std::string reason) {
+  Divergence d;
+  d.step = steps_;
+  d.t = current_.t;
+  d.method = settings_.method;
+  d.h = h();
+  // Estimated on the initial state: the diverged one says nothing about the scene.
+  const StabilityEstimate e = estimate_stability(model_, initial_);
+  d.w_max = e.w_max;
+  d.stable_h = springlab::stable_step(settings_.method, e.w_max, e.damping, model_.verlet_damping);
+  d.reason = std::move(reason);
+  divergence_ = std::move(d);
+}
+
+const StabilityEstimate& Simulation::stability() {
+  if (!stability_) stability_ = estimate_stability(model_, current_);
+  return *stability_;
+}
+
+double Simulation::stable_step() {
+  const StabilityEstimate& e = stability();
+  return springlab::stable_step(settings_.method, e.w_max, e.damping, model_.verlet_damping);
+}
+
+void Simulation::model_changed() {
+  ws_.invalidate();
+  stability_.reset();
+}
+
+void Simulation::set_method(Method method) {
+  settings_.method = method;
+  ws_.invalidate();
+  ws_.adaptive_step = 0.0;
+}
+
+void Simulation::set_dt(double dt) {
+  settings_.dt = dt;
+  t_since_ = current_.t;
+  substeps_done_ = 0;
+  ws_.invalidate();
+}
+
+void Simulation::set_substeps(int substeps) {
+  settings_.substeps = substeps;
+  t_since_ = current_.t;
+  substeps_done_ = 0;
+  ws_.invalidate();
+}
+
+void Simulation::set_step_settings(const StepSettings& step) { settings_.step = step; }
+
+void Simulation::set_stiffness(double ks) {
+  springlab::set_stiffness(model_, ks);
+  model_changed();
+}
+
+void Simulation::set_damping(double kd) {
+  springlab::set_damping(model_, kd);
+  model_changed();
+}
+
+void Simulation::set_gravity(const Vec3& g) {
+  model_.gravity = g;
+  model_changed();
+}
+
+void Simulation::set_drag(double drag) {
+  model_.drag = drag;
+  model_changed();
+}
+
+void Simulation::set_friction(double mu) {
+  for (auto& p : model_.planes) p.friction = mu;
+  for (auto& s : model_.spheres) s.friction = mu;
+  model_changed();
+}
+
+void Simulation::set_mass(double mass) {
+  for (int i = 0; i < model_.particle_count(); ++i) {
+    model_.mass[i] = mass;
+    if (!model_.pinned(i)) model_.inv_mass[i] = 1.0 / mass;
+  }
+  model_changed();
+}
+
+void Simulation::grab(int particle) {
+  release();
+  grabbed_ = particle;
+  // Remember whether it was pinned by the scene: it is pinned for as long as it is held.
+  grabbed_was_pinned_ = model_.pinned(particle);
+  set_pinned(model_, particle, true);
+  current_.v.row(particle).setZero();
+  model_changed();
+}
+
+void Simulation::move_grabbed(const Vec3& target, double over) {
+  if (grabbed_ < 0 || !(over > 0.0)) return;
+  current_.v.row(grabbed_) = (target.transpose() - current_.x.row(grabbed_)) / over;
+  ws_.invalidate();
+}
+
+void Simulation::release() {
+  if (grabbed_ < 0) return;
+  if (!grabbed_was_pinned_) set_pinned(model_, grabbed_, false);
+  else current_.v.row(grabbed_).setZero();
+  grabbed_ = -1;
+  model_changed();
+}
+
+}  // namespace springlab
