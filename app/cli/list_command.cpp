@@ -23,13 +23,13 @@ Command add_list_command(CLI::App& app) {
       std::printf("scene   %-18s %s\n", name.c_str(), description.c_str());
     }
     for (const MethodInfo& m : methods()) {
-      std::string limit = std::isnan(m.undamped_limit)   ? "adaptive step"
-                          : std::isinf(m.undamped_limit) ? "stable at any step"
-                          : m.undamped_limit == 0.0       ? "unstable undamped"
-                                                          : "stable for h w < " +
-                                                                std::to_string(m.undamped_limit).substr(0, 4);
+      char limit[64];
+      if (std::isnan(m.undamped_limit)) std::snprintf(limit, sizeof limit, "adaptive step");
+      else if (std::isinf(m.undamped_limit)) std::snprintf(limit, sizeof limit, "stable at any step");
+      else if (m.undamped_limit == 0.0) std::snprintf(limit, sizeof limit, "unstable undamped");
+      else std::snprintf(limit, sizeof limit, "stable for h w <= %.3g", m.undamped_limit);
       std::printf("method  %-18s %s: order %d, force evaluations per step: %s, %s\n", m.name,
-                  m.label, m.order, m.evaluations, limit.c_str());
+                  m.label, m.order, m.evaluations, limit);
     }
     return kOk;
   };

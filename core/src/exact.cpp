@@ -28,10 +28,20 @@ std::optional<ExactOscillator> ExactOscillator::detect(const Model& model, const
   e.w_ = std::sqrt(model.ks(0) / m);
   e.c_ = (model.kd(0) + model.drag) / m;
   if (e.w_ == 0.0) return std::nullopt;
-  // Bound on |y|: the undamped amplitude (damping only shrinks it). It must stay below the rest
-  // length so that the particle never reaches the anchor.
-  const double amplitude = std::sqrt(e.y0_ * e.y0_ + (e.v0_ / e.w_) * (e.v0_ / e.w_)) +
-                           (e.c_ > 0.0 ? std::abs(e.v0_) / e.w_ + std::abs(e.y0_) : 0.0);
+  // A bound on |y(t)| from the closed forms below (damping only shrinks the envelope); it must
+  // stay under the rest length so that the particle never reaches the anchor.
+  const double half = 0.5 * e.c_, disc = half * half - e.w_ * e.w_;
+  double amplitude;
+  if (disc < 0.0) {
+    const double B = (e.v0_ + half * e.y0_) / std::sqrt(-disc);
+    amplitude = std::sqrt(e.y0_ * e.y0_ + B * B);
+  } else if (disc <= 1e-12 * e.w_ * e.w_) {  // critical: |(A + B t) e^(-w t)| <= |A| + |B| / (e w)
+    amplitude = std::abs(e.y0_) + std::abs(e.v0_ + e.w_ * e.y0_) / (std::exp(1.0) * e.w_);
+  } else {  // overdamped: |A e^(r1 t) + B e^(r2 t)| <= |A| + |B|
+    const double root = std::sqrt(disc), r1 = -half - root, r2 = -half + root;
+    const double B = (e.v0_ - r1 * e.y0_) / (r2 - r1);
+    amplitude = std::abs(e.y0_ - B) + std::abs(B);
+  }
   if (!(amplitude < e.rest_)) return std::nullopt;
   e.initial_ = initial;
   return e;

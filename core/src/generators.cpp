@@ -62,6 +62,34 @@ Eigen::Matrix3d rotation_degrees(const Vec3& angles) {
 
 }  // namespace
 
+// Node positions of a rope: along the segment start-end, or, with `arc` (the offset of the
+// midpoint from the chord), on the circular arc through start, start + (end - start) / 2 + arc
+// and end, equally spaced along the arc so that every segment starts at its rest length.
+std::vector<Vec3> rope_nodes(ObjectReader& r, const Vec3& start, const Vec3& end, long nodes,
+                             const Vec3& arc) {
+  std::vector<Vec3> p(nodes);
+  const Vec3 chord = end - start;
+  const double c = chord.norm();
+  const Vec3 up = arc - arc.dot(chord) / (c * c) * chord;  // across the chord
+  const double s = up.norm();                               // sagitta
+  if (arc.norm() > 0.0 && !(s > 1e-9 * c)) r.fail("arc", "must point away from the chord start-end");
+  if (s == 0.0) {
+    for (long i = 0; i < nodes; ++i) p[i] = start + chord * (double(i) / double(nodes - 1));
+    return p;
+  }
+  // Circle through the three points: radius R = (c^2 / 4 + s^2) / 2s, centre below the midpoint.
+  const double R = (0.25 * c * c + s * s) / (2.0 * s);
+  const Vec3 n = up / s;
+  const Vec3 u = chord / c;
+  const Vec3 center = start + 0.5 * chord + (s - R) * n;
+  const double half = std::atan2(0.5 * c, R - s);  // half the angle the arc spans
+  for (long i = 0; i < nodes; ++i) {
+    const double angle = -half + 2.0 * half * double(i) / double(nodes - 1);
+    p[i] = center + R * (std::sin(angle) * u + std::cos(angle) * n);
+  }
+  return p;
+}
+
 void rope(ObjectReader& r, const std::string& name, Builder& b) {
   const Vec3 start = r.vec3("start");
   const Vec3 end = r.vec3("end");
@@ -69,21 +97,19 @@ void rope(ObjectReader& r, const std::string& name, Builder& b) {
   const double mass = r.number("mass", 1.0, positive(1e9));
   const double stiffness = r.number("stiffness", non_negative(1e12));
   const double damping = r.number("damping", 0.0, non_negative(1e12));
-  const double slack = r.number("slack", 1.0, positive(100.0));
+  const Vec3 arc = r.vec3("arc", Vec3::Zero());
   const Vec3 velocity = r.vec3("velocity", Vec3::Zero());
-  const double span = (end - start).norm();
-  if (!(span > 0.0)) r.fail("end", "must differ from start (the rope needs a length)");
+  if (!((end - start).norm() > 0.0)) r.fail("end", "must differ from start (the rope needs a length)");
   b.reserve(r, nodes, nodes - 1);
   std::vector<bool> pinned(nodes, false);
   for (int i : pinned_nodes(r, static_cast<int>(nodes), {0})) pinned[i] = true;
 
-  const double segment = slack * span / static_cast<double>(nodes - 1);
+  const std::vector<Vec3> p = rope_nodes(r, start, end, nodes, arc);
+  const double segment = (p[1] - p[0]).norm();
   const int material = add_material(b.model, {stiffness / segment, damping / segment});
   const int first = b.model.particle_count();
-  for (long i = 0; i < nodes; ++i) {
-    const double s = static_cast<double>(i) / static_cast<double>(nodes - 1);
-    b.particle(start + s * (end - start), velocity, mass / static_cast<double>(nodes), pinned[i]);
-  }
+  for (long i = 0; i < nodes; ++i)
+    b.particle(p[i], velocity, mass / static_cast<double>(nodes), pinned[i]);
   for (long i = 0; i + 1 < nodes; ++i)
     add_spring(b.model, first + static_cast<int>(i), first + static_cast<int>(i) + 1, segment, material);
   b.named[name] = {first, static_cast<int>(nodes)};

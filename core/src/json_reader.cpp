@@ -98,6 +98,10 @@ ObjectReader::ObjectReader(const json& object, std::string pointer, std::string 
   if (!object_.is_object()) fail("must be an object, " + describe(object_));
 }
 
+void ObjectReader::expect(std::initializer_list<const char*> keys) {
+  for (const char* k : keys) known_.emplace_back(k);
+}
+
 bool ObjectReader::has(const char* key) {
   known_.emplace_back(key);
   return object_.contains(key);

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <vector>
@@ -48,6 +49,10 @@ class ObjectReader {
   std::vector<ObjectReader> objects(const char* key);  // an array of objects; missing = empty
   // The raw value, for fields with a shape of their own; marks the key known.
   const json* raw(const char* key);
+
+  // Declares keys read later, so that finish() can be called first: an unknown field is then
+  // reported before anything else is checked.
+  void expect(std::initializer_list<const char*> keys);
 
   [[noreturn]] void fail(const char* key, const std::string& what) const;
   [[noreturn]] void fail(const std::string& what) const;  // about the object itself

@@ -133,11 +133,11 @@ Scene parse_scene(const std::string& text, const std::string& file,
   json doc;
   try {
     doc = json::parse(text);
-  } catch (const json::parse_error& e) {
-    // nlohmann's message names the line and column; drop its "[json.exception...]" prefix.
+  } catch (const json::exception& e) {
+    // nlohmann's message names the line and column; drop its "[json.exception...] " prefix.
     std::string what = e.what();
-    const auto start = what.find("parse error");
-    throw InputError(where + ": not valid JSON: " + (start == std::string::npos ? what : what.substr(start)));
+    const auto start = what.find("] ");
+    throw InputError(where + ": not valid JSON: " + (start == std::string::npos ? what : what.substr(start + 2)));
   }
   for (const std::string& o : overrides) apply_override(doc, o, file);
 
@@ -145,6 +145,10 @@ Scene parse_scene(const std::string& text, const std::string& file,
   scene.file = file;
   scene.name = std::filesystem::path(file).stem().string();
   ObjectReader top(doc, "", where);
+  top.expect({"description", "view", "particles", "generators", "springs", "gravity", "drag",
+              "verlet_damping", "colliders", "methods", "dt", "substeps", "duration", "tolerance",
+              "camera", "trails"});
+  top.finish();  // a misspelt field first: it may be why something else looks missing
   scene.description = top.text("description", "");
   const View view = top.choice("view", "3d", {"2d", "3d"}) == "2d" ? View::Planar : View::Orbit;
 

@@ -1,0 +1,60 @@
+// Running the springlab executable as a user would, capturing its exit status and output.
+#pragma once
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace springlab::test {
+
+struct Result {
+  int status = -1;
+  std::string out, err;
+};
+
+inline std::string read_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// A fresh folder for one test, removed at the end.
+struct TempDir {
+  std::filesystem::path path;
+  TempDir() {
+    path = std::filesystem::temp_directory_path() /
+           ("springlab-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter()++));
+    std::filesystem::remove_all(path);
+    std::filesystem::create_directories(path);
+  }
+  ~TempDir() { std::filesystem::remove_all(path); }
+  std::filesystem::path operator/(const std::string& name) const { return path / name; }
+  static int& counter() {
+    static int n = 0;
+    return n;
+  }
+};
+
+// Runs `springlab ARGS` (ARGS already shell-quoted where needed) from `cwd`.
+inline Result springlab(const std::string& args, const std::filesystem::path& cwd = ".") {
+  TempDir io;
+  const std::string command = "cd '" + cwd.string() + "' && '" SPRINGLAB_EXECUTABLE "' " + args +
+                              " > '" + (io / "out").string() + "' 2> '" + (io / "err").string() + "'";
+  const int raw = std::system(command.c_str());
+  Result r;
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+  r.out = read_file(io / "out");
+  r.err = read_file(io / "err");
+  return r;
+}
+
+inline void write_file(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+}  // namespace springlab::test

@@ -1,0 +1,177 @@
+// springlab run and list, as DESIGN.md specifies them: the CSV trace, the summary, the exit
+// statuses, one clear message for each bad input, nothing half-written.
+#include <gtest/gtest.h>
+
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+
+#include <chrono>
+#include <cmath>
+#include <thread>
+
+#include "cli/cli_support.hpp"
+
+namespace springlab::test {
+namespace {
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream s(text);
+  for (std::string line; std::getline(s, line);) out.push_back(line);
+  return out;
+}
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> out;
+  std::istringstream s(line);
+  for (std::string cell; std::getline(s, cell, ',');) out.push_back(cell);
+  return out;
+}
+
+TEST(List, ShowsEveryScenesAndMethodOneALine) {
+  const Result r = springlab("list");
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* scene : {"spring", "damped-spring", "rope", "chain", "cloth", "cloth-sphere", "jelly", "stiff"})
+    EXPECT_NE(r.out.find("scene   " + std::string(scene) + " "), std::string::npos) << scene;
+  for (const char* method : {"euler", "symplectic-euler", "midpoint", "modified-euler", "rk4",
+                             "adaptive-euler", "rk45", "implicit-euler", "verlet"})
+    EXPECT_NE(r.out.find("method  " + std::string(method) + " "), std::string::npos) << method;
+}
+
+TEST(Run, WritesTheCsvTraceOfDesignMd) {
+  TempDir dir;
+  const Result r = springlab("run spring --method rk4 --steps 10 --csv " + (dir / "t.csv").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto rows = lines(read_file(dir / "t.csv"));
+  ASSERT_EQ(rows.size(), 12u);  // header, t = 0, 10 steps
+  EXPECT_EQ(rows[0], "t,kinetic,potential,total,x0,y0,z0,vx0,vy0,vz0,x1,y1,z1,vx1,vy1,vz1");
+  const auto first = split(rows[1]);
+  ASSERT_EQ(first.size(), 16u);
+  EXPECT_EQ(first[0], "0");
+  EXPECT_EQ(first[10], "1.5");
+  EXPECT_EQ(first[3], "12.5");
+  // Row k is at t = k dt and close to the exact 1 + 0.5 cos(10 t) (RK4 at h = 0.01).
+  for (int k = 1; k <= 10; ++k) {
+    const auto row = split(rows[k + 1]);
+    const double t = std::stod(row[0]);
+    EXPECT_NEAR(t, 0.01 * k, 1e-15);
+    // RK4's global error after t: about t w (h w)^4 / 120 times the amplitude: 4e-7 here.
+    EXPECT_NEAR(std::stod(row[10]), 1 + 0.5 * std::cos(10 * t), 1e-6);
+    EXPECT_NEAR(std::stod(row[3]), 12.5, 1e-5);
+  }
+  for (const char* part : {"scene      spring", "method     rk4", "steps      10 of 10", "energy", "w_max = 10 rad/s", "stable up to h = 0.2828"})
+    EXPECT_NE(r.out.find(part), std::string::npos) << part << "\n" << r.out;
+}
+
+TEST(Run, EveryKthRowAndTheLast) {
+  TempDir dir;
+  ASSERT_EQ(springlab("run spring --steps 12 --every 5 --csv " + (dir / "t.csv").string()).status, 0);
+  const auto rows = lines(read_file(dir / "t.csv"));
+  ASSERT_EQ(rows.size(), 5u);  // header, steps 0, 5, 10, and the last (12)
+  EXPECT_NEAR(std::stod(split(rows[2])[0]), 0.05, 1e-15);
+  EXPECT_NEAR(std::stod(split(rows[4])[0]), 0.12, 1e-15);
+}
+
+TEST(Run, OptionsChangeTheRun) {
+  const Result r = springlab("run spring --method euler --dt 0.001 --substeps 4 --duration 0.5 --ks 400 --kd 1 --set particles.1.mass=4");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("steps      500 of 500"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("h = 0.00025 s"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("w_max = 10 rad/s"), std::string::npos) << r.out;  // sqrt(400 / 4)
+}
+
+TEST(Run, DivergenceExitsThreeAndSaysWhereAndWhy) {
+  TempDir dir;
+  const Result r = springlab("run spring --method euler --duration 100 --csv " + (dir / "t.csv").string());
+  EXPECT_EQ(r.status, 3);
+  for (const char* part : {"diverged during step", "t = ", "euler", "h = 0.01 s", "unstable at any step", "1e6 times"})
+    EXPECT_NE(r.err.find(part), std::string::npos) << part << "\n" << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  // The trace up to the divergence is complete and kept.
+  const auto rows = lines(read_file(dir / "t.csv"));
+  EXPECT_GT(rows.size(), 1000u);
+  for (const auto& row : rows) EXPECT_EQ(row.find("nan"), std::string::npos);
+}
+
+struct BadInput {
+  std::string args;
+  std::string file;  // written to bad.json when not empty
+  std::vector<std::string> expected;
+};
+
+TEST(Run, BadInputExitsTwoWithOneMessageNamingWhatIsWrong) {
+  TempDir dir;
+  const std::string two = R"("particles": [{"position": [0,0,0], "pinned": true}, {"position": [1,0,0]}])";
+  const BadInput cases[] = {
+      {"run nope", "", {"scene 'nope': no such file", "shipped: ", "spring"}},
+      {"run sprng", "", {"did you mean 'spring'?"}},
+      {"run bad.json", "{\"particles\": [", {"scene 'bad.json': not valid JSON", "line 1"}},
+      {"run bad.json", R"({"particles": [{"position": "here"}]})", {"bad.json", "/particles/0/position", "array of 3 numbers"}},
+      {"run bad.json", R"({"particles": [{"position": [0,0,0], "mass": -2}]})", {"bad.json", "/particles/0/mass", "(0, 1e+09]", "got -2"}},
+      {"run bad.json", R"({"particles": [{"position": [0,0,0], "mass": "NaN"}]})", {"bad.json", "/particles/0/mass", "must be a number"}},
+      {"run bad.json", R"({"particles": [{"position": [NaN,0,0]}]})", {"bad.json", "not valid JSON"}},
+      {"run bad.json", "{" + two + R"(, "springs": [{"a": 0, "b": 2, "ks": 1}]})", {"bad.json", "/springs/0/b", "[0, 1]", "got 2"}},
+      {"run bad.json", "{" + two + R"(, "dt": 0})", {"bad.json", "/dt", "(0, 1]", "got 0"}},
+      {"run bad.json", "{" + two + R"(, "dt": -1})", {"bad.json", "/dt", "got -1"}},
+      {"run spring --dt 0", "", {"--dt", "(0, 1] s", "got 0"}},
+      {"run spring --dt -0.5", "", {"--dt", "got -0.5"}},
+      {"run spring --dt nan", "", {"--dt", "got nan"}},
+      {"run spring --dt abc", "", {"--dt"}},
+      {"run spring --steps 0", "", {"--steps", "got 0"}},
+      {"run spring --substeps 0", "", {"--substeps"}},
+      {"run spring --ks -1", "", {"--ks", "got -1"}},
+      {"run spring --method rk5", "", {"--method", "unknown method 'rk5'", "did you mean 'rk4'?"}},
+      {"run spring --set nothing=3", "", {"/nothing: unknown field"}},
+      {"run spring --set width", "", {"--set width", "KEY=VALUE"}},
+      {"run spring --every 0", "", {"--every", "at least 1"}},
+      {"run spring --frobnicate", "", {"frobnicate"}},
+      {"run", "", {"scene"}},
+      {"explode", "", {"explode"}},
+  };
+  for (const BadInput& c : cases) {
+    if (!c.file.empty()) write_file(dir / "bad.json", c.file);
+    const Result r = springlab(c.args, dir.path);
+    EXPECT_EQ(r.status, 2) << c.args << "\n" << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << c.args << ": one line\n" << r.err;
+    EXPECT_TRUE(r.out.empty()) << c.args << "\n" << r.out;
+    for (const std::string& part : c.expected)
+      EXPECT_NE(r.err.find(part), std::string::npos) << c.args << ": expected '" << part << "' in\n" << r.err;
+  }
+}
+
+TEST(Run, UnwritableOutputFailsAtOnceAndLeavesNothing) {
+  TempDir dir;
+  const Result r = springlab("run spring --csv " + (dir / "missing" / "t.csv").string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("cannot write in folder"), std::string::npos) << r.err;
+  EXPECT_TRUE(std::filesystem::is_empty(dir.path));
+}
+
+TEST(Run, InterruptedRunLeavesNoHalfWrittenTrace) {
+  TempDir dir;
+  const std::string csv = (dir / "t.csv").string();
+  for (int signal : {SIGINT, SIGTERM}) {
+    const char* argv[] = {SPRINGLAB_EXECUTABLE, "run", "cloth", "--duration", "1000", "--csv", csv.c_str(), nullptr};
+    pid_t pid = 0;
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+    ASSERT_EQ(posix_spawn(&pid, argv[0], &actions, nullptr, const_cast<char**>(argv), environ), 0);
+    posix_spawn_file_actions_destroy(&actions);
+    // Wait until the run is writing its temporary file, then interrupt it.
+    for (int k = 0; k < 200 && std::filesystem::is_empty(dir.path); ++k)
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    ASSERT_FALSE(std::filesystem::is_empty(dir.path)) << "the run never started writing";
+    ::kill(pid, signal);
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    EXPECT_TRUE(WIFSIGNALED(status));
+    EXPECT_TRUE(std::filesystem::is_empty(dir.path)) << "left: " << std::filesystem::directory_iterator(dir.path)->path();
+  }
+}
+
+}  // namespace
+}  // namespace springlab::test

@@ -1,0 +1,141 @@
+// Accuracy on the reference spring against its exact solution: every fixed-step method's order
+// measured by halving the step (NUMERICS.md: within 0.2), and the adaptive methods' error falling
+// with their tolerance, with their step counts checked against what the controllers must do.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "support.hpp"
+
+namespace springlab {
+namespace {
+
+TEST(Exact, SolutionSatisfiesTheEquationOfMotion) {
+  for (double kd : {0.0, 2.0, 20.0, 30.0}) {  // undamped, underdamped, critical, overdamped
+    const Scene scene = test::oscillator(100.0, kd);
+    const auto exact = ExactOscillator::detect(scene.model, scene.state);
+    ASSERT_TRUE(exact) << kd;
+    EXPECT_NEAR(exact->at(0).x(1, 0), 1.5, 1e-15);
+    for (double t : {0.1, 0.37, 1.0, 2.5}) {
+      // x'' = -100 (x - 1) - kd x', by central differences.
+      const double e = 1e-4;
+      const double x0 = exact->at(t - e).x(1, 0), x1 = exact->at(t).x(1, 0), x2 = exact->at(t + e).x(1, 0);
+      const double acceleration = (x2 - 2 * x1 + x0) / (e * e);
+      const double velocity = exact->at(t).v(1, 0);
+      EXPECT_NEAR((x2 - x0) / (2 * e), velocity, 1e-6);
+      EXPECT_NEAR(acceleration, -100.0 * (x1 - 1.0) - kd * velocity, 1e-4) << kd << " " << t;
+    }
+  }
+  // The reference scene is exactly x(t) = 1 + 0.5 cos(10 t).
+  const Scene spring = test::shipped("spring");
+  const auto exact = ExactOscillator::detect(spring.model, spring.state);
+  for (double t : {0.0, 0.3, 1.7, 9.9}) EXPECT_NEAR(exact->at(t).x(1, 0), 1 + 0.5 * std::cos(10 * t), 1e-14);
+}
+
+struct OrderCase {
+  Method method;
+  double h;  // the coarser step: stable and in the asymptotic range, above round-off
+};
+
+class Order : public ::testing::TestWithParam<OrderCase> {};
+
+TEST_P(Order, MatchesTheTableWithinTwoTenths) {
+  const auto [method, h] = GetParam();
+  const Scene scene = test::shipped("spring");
+  const double coarse = test::error_against_exact(scene, method, h, 1.0);
+  const double fine = test::error_against_exact(scene, method, h / 2, 1.0);
+  const double finer = test::error_against_exact(scene, method, h / 4, 1.0);
+  const double order1 = std::log2(coarse / fine), order2 = std::log2(fine / finer);
+  const int expected = method_info(method).order;
+  EXPECT_NEAR(order1, expected, 0.2) << method_info(method).name << " errors " << coarse << " " << fine;
+  EXPECT_NEAR(order2, expected, 0.2) << method_info(method).name << " errors " << fine << " " << finer;
+}
+
+INSTANTIATE_TEST_SUITE_P(Methods, Order,
+                         ::testing::Values(OrderCase{Method::Euler, 1e-3},
+                                           OrderCase{Method::SymplecticEuler, 1e-3},
+                                           OrderCase{Method::Midpoint, 4e-3},
+                                           OrderCase{Method::ModifiedEuler, 1e-3},
+                                           OrderCase{Method::RK4, 2e-2},
+                                           OrderCase{Method::ImplicitEuler, 1e-3},
+                                           OrderCase{Method::Verlet, 4e-3}),
+                         [](const auto& info) {
+                           std::string name = method_info(info.param.method).name;
+                           for (char& c : name) if (c == '-') c = '_';
+                           return name;
+                         });
+
+TEST(Order, DampedSpringToo) {
+  // With damping the velocity matters in the force: orders must hold all the same.
+  const Scene scene = test::oscillator(100.0, 2.0);
+  for (auto [method, h] : {std::pair{Method::SymplecticEuler, 1e-3}, {Method::Midpoint, 4e-3},
+                           {Method::RK4, 2e-2}, {Method::ImplicitEuler, 1e-3}, {Method::Verlet, 4e-3}}) {
+    const double coarse = test::error_against_exact(scene, method, h, 1.0);
+    const double fine = test::error_against_exact(scene, method, h / 2, 1.0);
+    EXPECT_NEAR(std::log2(coarse / fine), method_info(method).order, 0.2) << method_info(method).name;
+  }
+}
+
+TEST(Adaptive, ErrorFallsAsTheToleranceTightens) {
+  // Outer steps of 0.25 s, so that the controller, not the step, sets the internal steps.
+  const Scene scene = test::shipped("spring");
+  for (Method method : {Method::AdaptiveEuler, Method::RK45}) {
+    double previous = std::numeric_limits<double>::infinity();
+    for (double tol : {1e-3, 1e-4, 1e-5, 1e-6}) {
+      const double error = test::error_against_exact(scene, method, 0.25, 1.0, tol);
+      EXPECT_LT(error, previous) << method_info(method).name << " tol " << tol;
+      previous = error;
+    }
+    EXPECT_LT(previous, method == Method::RK45 ? 1e-5 : 2e-2);
+  }
+}
+
+TEST(Adaptive, EulerStepDoublingCountsWhatTheNotesPrescribe) {
+  // From rest at x = 1.5 (|a| = 50), the step-doubling error of a try of size T is exactly
+  // T^2 |a| / 4. With tolerance 1e-4 and h = 0.01: T = 0.01 (err 1.25e-3) and 0.005 (3.1e-4)
+  // are rejected, T = 0.0025 (7.8e-5, not below tol / 8) is accepted and kept: 4 steps.
+  Scene scene = test::shipped("spring");
+  SimulationSettings s;
+  s.method = Method::AdaptiveEuler;
+  s.dt = 0.01;
+  s.step.tolerance = 1e-4;
+  Simulation sim(scene.model, scene.state, s);
+  ASSERT_TRUE(sim.step());
+  EXPECT_EQ(sim.counters().rejected, 2);
+  EXPECT_EQ(sim.counters().accepted, 4);
+  // Two force evaluations per accepted step, none for a rejected try.
+  EXPECT_EQ(sim.counters().force_evals, 8);
+  sim.advance(99);
+  EXPECT_EQ(sim.counters().force_evals, 2 * sim.counters().accepted);
+}
+
+TEST(Adaptive, DormandPrinceCountsSixEvaluationsPerTry) {
+  Scene scene = test::shipped("spring");
+  SimulationSettings s;
+  s.method = Method::RK45;
+  s.dt = 0.01;
+  s.step.tolerance = 1e-9;
+  Simulation sim(scene.model, scene.state, s);
+  sim.advance(300);
+  const Counters& c = sim.counters();
+  EXPECT_GT(c.accepted, 300);  // a tight tolerance needs steps below dt
+  // One evaluation to start, then six per try thanks to first-same-as-last.
+  EXPECT_EQ(c.force_evals, 1 + 6 * (c.accepted + c.rejected));
+}
+
+TEST(Adaptive, StepFloorEndsARunThatCannotMeetItsTolerance) {
+  // A tolerance far below what doubles can express: the step would shrink forever.
+  Scene scene = test::shipped("spring");
+  SimulationSettings s;
+  s.method = Method::AdaptiveEuler;
+  s.dt = 0.01;
+  s.step.tolerance = 1e-30;
+  Simulation sim(scene.model, scene.state, s);
+  EXPECT_FALSE(sim.step());
+  ASSERT_TRUE(sim.diverged());
+  EXPECT_NE(sim.divergence()->reason.find("loosen --tol"), std::string::npos);
+  EXPECT_TRUE(all_finite(sim.state()));
+}
+
+}  // namespace
+}  // namespace springlab
