@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
   std::map<std::string, Command> commands;
   commands["run"] = add_run_command(app);
   commands["list"] = add_list_command(app);
+  commands["render"] = add_render_command(app);
 
   try {
     app.parse(argc, argv);

@@ -1,6 +1,7 @@
 #include "cli/options.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 #include "springlab/error.hpp"
@@ -23,6 +24,18 @@ void add_sim_options(CLI::App& c, SimOptions& o, bool with_length) {
   c.add_option("--set", o.sets, "KEY=VALUE: any other scene field, e.g. cloth.width=64")
       ->allow_extra_args(false);
   c.add_option("--threads", o.threads, "threads for the force loops (default: all cores)");
+}
+
+void warn_if_unstable(Simulation& sim, const std::string& scene) {
+  const double limit = sim.stable_step();
+  if (!std::isfinite(limit) || limit <= 0.0 || sim.h() <= limit) return;
+  std::fprintf(stderr,
+               "springlab: warning: %s: h = %.4g s is past %s's estimated stability limit (%.4g s, "
+               "h w_max = %.3g); it will most likely diverge: use --substeps %d or --dt %.3g\n",
+               scene.c_str(), sim.h(), method_info(sim.settings().method).name, limit,
+               sim.h() * sim.stability().w_max,
+               static_cast<int>(std::ceil(sim.h() / (0.9 * limit))) * sim.settings().substeps,
+               0.9 * limit * sim.settings().substeps);
 }
 
 void check_option(const char* name, double value, double lo, double hi, bool lo_open,

@@ -38,6 +38,10 @@ struct Prepared {
 // and --threads, and checks every value. Throws InputError.
 Prepared prepare(const std::string& scene, const SimOptions& options);
 
+// A warning on stderr when the step is past the method's estimated stability limit (the run
+// will most likely diverge), with the step that would do.
+void warn_if_unstable(Simulation& sim, const std::string& scene);
+
 // Checks an option's value: "--dt: must be in (0, 1] s, got -1". Throws InputError.
 void check_option(const char* name, double value, double lo, double hi, bool lo_open,
                   const char* unit = "");

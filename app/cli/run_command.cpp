@@ -70,6 +70,7 @@ int run(const RunOptions& o) {
   const Energy initial = sim.energy();
   const StabilityEstimate stability = sim.stability();
   const double stable_h = sim.stable_step();
+  warn_if_unstable(sim, p.scene.name);
 
   if (csv) {
     write_header(csv->file(), sim.model().particle_count());

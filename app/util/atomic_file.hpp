@@ -1,6 +1,7 @@
 // Output that appears whole or not at all: written under a temporary name in the same folder
 // and renamed over the final name only when complete. Destroyed without commit() (an error, an
-// exception, Ctrl-C through the signal handler), it removes the temporary file.
+// exception), or on SIGINT/SIGTERM (remove_pending_outputs in the signal handler), the
+// temporary file is removed.
 #pragma once
 
 #include <cstdio>
@@ -9,10 +10,29 @@
 
 namespace springlab::app {
 
+// A temporary name for a final path, for writers that open the file themselves (ffmpeg).
+class TemporaryPath {
+ public:
+  // Throws InputError naming the folder if it cannot be written.
+  TemporaryPath(const std::filesystem::path& final_path, std::string what);
+  ~TemporaryPath();
+  TemporaryPath(const TemporaryPath&) = delete;
+  TemporaryPath& operator=(const TemporaryPath&) = delete;
+
+  const std::filesystem::path& path() const { return temp_; }
+  const std::filesystem::path& final_path() const { return final_; }
+  const std::string& what() const { return what_; }
+  // Renames the temporary file to the final name. Throws std::runtime_error on failure.
+  void commit();
+
+ private:
+  std::filesystem::path final_, temp_;
+  std::string what_;
+  bool done_ = false;
+};
+
 class AtomicFile {
  public:
-  // Opens "<dir>/.<name>.tmp-<pid>" for writing; throws InputError if the folder cannot be
-  // written, naming it.
   explicit AtomicFile(const std::filesystem::path& final_path, const char* what = "output");
   ~AtomicFile();
   AtomicFile(const AtomicFile&) = delete;
@@ -21,15 +41,13 @@ class AtomicFile {
   std::FILE* file() { return file_; }
   // Flushes, checks every write succeeded (a full disk fails here), renames. Throws on failure.
   void commit();
-  const std::filesystem::path& temporary_path() const { return temp_; }
 
  private:
-  std::filesystem::path final_, temp_;
-  std::string what_;
+  TemporaryPath path_;
   std::FILE* file_ = nullptr;
 };
 
-// Removes every temporary file still open (for the SIGINT/SIGTERM handler).
+// Removes every temporary file not yet committed (async-signal-safe).
 void remove_pending_outputs();
 
 }  // namespace springlab::app

@@ -30,7 +30,7 @@ ContactResult resolve_contacts(const Model& model, State& state) {
     bool touched = false;
     for (const PlaneCollider& plane : model.planes) {
       Vec3 x = state.x.row(i).transpose();
-      const double depth = (x - plane.point).dot(plane.normal);
+      const double depth = (x - plane.point).dot(plane.normal) - model.particle_radius;
       if (depth >= 0.0) continue;
       Vec3 v = state.v.row(i).transpose();
       x -= depth * plane.normal;
@@ -43,11 +43,12 @@ ContactResult resolve_contacts(const Model& model, State& state) {
       Vec3 x = state.x.row(i).transpose();
       const Vec3 r = x - sphere.center;
       const double dist = r.norm();
-      if (dist >= sphere.radius) continue;
+      const double reach = sphere.radius + model.particle_radius;
+      if (dist >= reach) continue;
       // At the very centre any direction is as good: push out along +y.
       const Vec3 n = dist > 0.0 ? Vec3(r / dist) : Vec3::UnitY();
       Vec3 v = state.v.row(i).transpose();
-      x = sphere.center + sphere.radius * n;
+      x = sphere.center + reach * n;
       result.kinetic_lost += respond(v, n, sphere.friction, sphere.restitution, model.mass[i]);
       state.x.row(i) = x.transpose();
       state.v.row(i) = v.transpose();

@@ -24,6 +24,13 @@ Energy energy(const Model& model, const State& state) {
   return e;
 }
 
+double kinetic_energy(const Model& model, const State& state) {
+  double e = 0.0;
+  for (int i = 0; i < model.particle_count(); ++i)
+    if (!model.pinned(i)) e += 0.5 * model.mass[i] * state.v.row(i).squaredNorm();
+  return e;
+}
+
 double dissipation_power(const Model& model, const State& state) {
   double power = 0.0;
   for (int s = 0; s < model.spring_count(); ++s) {

@@ -47,7 +47,8 @@ std::optional<ExactOscillator> ExactOscillator::detect(const Model& model, const
   return e;
 }
 
-State ExactOscillator::at(double t) const {
+State ExactOscillator::at(double time) const {
+  const double t = time - initial_.t;
   double y, v;
   const double half = 0.5 * c_;
   const double disc = half * half - w_ * w_;
@@ -70,7 +71,7 @@ State ExactOscillator::at(double t) const {
     v = A * r1 * std::exp(r1 * t) + B * r2 * std::exp(r2 * t);
   }
   State s = initial_;
-  s.t = t;
+  s.t = time;
   s.x.row(particle_) = s.x.row(anchor_) + ((rest_ + y) * axis_).transpose();
   s.v.row(particle_) = (v * axis_).transpose();
   return s;

@@ -62,30 +62,18 @@ Eigen::Matrix3d rotation_degrees(const Vec3& angles) {
 
 }  // namespace
 
-// Node positions of a rope: along the segment start-end, or, with `arc` (the offset of the
-// midpoint from the chord), on the circular arc through start, start + (end - start) / 2 + arc
-// and end, equally spaced along the arc so that every segment starts at its rest length.
-std::vector<Vec3> rope_nodes(ObjectReader& r, const Vec3& start, const Vec3& end, long nodes,
-                             const Vec3& arc) {
+// Node positions of a rope: equally spaced along the polyline start, via..., end, so that every
+// segment starts at its rest length (a chain can start as a V, at rest, and swing down).
+std::vector<Vec3> rope_nodes(const std::vector<Vec3>& corners, long nodes) {
+  std::vector<double> at(corners.size(), 0.0);  // arc length at each corner
+  for (std::size_t k = 1; k < corners.size(); ++k) at[k] = at[k - 1] + (corners[k] - corners[k - 1]).norm();
   std::vector<Vec3> p(nodes);
-  const Vec3 chord = end - start;
-  const double c = chord.norm();
-  const Vec3 up = arc - arc.dot(chord) / (c * c) * chord;  // across the chord
-  const double s = up.norm();                               // sagitta
-  if (arc.norm() > 0.0 && !(s > 1e-9 * c)) r.fail("arc", "must point away from the chord start-end");
-  if (s == 0.0) {
-    for (long i = 0; i < nodes; ++i) p[i] = start + chord * (double(i) / double(nodes - 1));
-    return p;
-  }
-  // Circle through the three points: radius R = (c^2 / 4 + s^2) / 2s, centre below the midpoint.
-  const double R = (0.25 * c * c + s * s) / (2.0 * s);
-  const Vec3 n = up / s;
-  const Vec3 u = chord / c;
-  const Vec3 center = start + 0.5 * chord + (s - R) * n;
-  const double half = std::atan2(0.5 * c, R - s);  // half the angle the arc spans
+  std::size_t k = 1;
   for (long i = 0; i < nodes; ++i) {
-    const double angle = -half + 2.0 * half * double(i) / double(nodes - 1);
-    p[i] = center + R * (std::sin(angle) * u + std::cos(angle) * n);
+    const double s = at.back() * static_cast<double>(i) / static_cast<double>(nodes - 1);
+    while (k + 1 < corners.size() && s > at[k]) ++k;
+    const double f = at[k] > at[k - 1] ? (s - at[k - 1]) / (at[k] - at[k - 1]) : 0.0;
+    p[i] = corners[k - 1] + f * (corners[k] - corners[k - 1]);
   }
   return p;
 }
@@ -97,15 +85,33 @@ void rope(ObjectReader& r, const std::string& name, Builder& b) {
   const double mass = r.number("mass", 1.0, positive(1e9));
   const double stiffness = r.number("stiffness", non_negative(1e12));
   const double damping = r.number("damping", 0.0, non_negative(1e12));
-  const Vec3 arc = r.vec3("arc", Vec3::Zero());
   const Vec3 velocity = r.vec3("velocity", Vec3::Zero());
-  if (!((end - start).norm() > 0.0)) r.fail("end", "must differ from start (the rope needs a length)");
+  std::vector<Vec3> corners{start};
+  if (const auto* via = r.raw("via")) {
+    if (!via->is_array()) r.fail("via", "must be an array of points [x, y, z]");
+    for (std::size_t k = 0; k < via->size(); ++k) {
+      const auto& q = (*via)[k];
+      const std::string pointer = r.path("via") + "/" + std::to_string(k);
+      if (!q.is_array() || q.size() != 3)
+        json_reader::fail_at(r.where(), pointer, "must be a point [x, y, z], " + json_reader::describe(q));
+      Vec3 point;
+      for (int c = 0; c < 3; ++c)
+        point[c] = json_reader::as_number(q[c], pointer + "/" + std::to_string(c), r.where(), {-1e9, 1e9});
+      corners.push_back(point);
+    }
+  }
+  corners.push_back(end);
+  double length = 0.0;
+  for (std::size_t k = 1; k < corners.size(); ++k) length += (corners[k] - corners[k - 1]).norm();
+  if (!(length > 0.0)) r.fail("end", "must differ from start (the rope needs a length)");
   b.reserve(r, nodes, nodes - 1);
   std::vector<bool> pinned(nodes, false);
   for (int i : pinned_nodes(r, static_cast<int>(nodes), {0})) pinned[i] = true;
 
-  const std::vector<Vec3> p = rope_nodes(r, start, end, nodes, arc);
-  const double segment = (p[1] - p[0]).norm();
+  const std::vector<Vec3> p = rope_nodes(corners, nodes);
+  // The rest length: the length along the polyline a segment spans (equal to the distance
+  // between its ends except across a corner, where it is slightly longer).
+  const double segment = length / static_cast<double>(nodes - 1);
   const int material = add_material(b.model, {stiffness / segment, damping / segment});
   const int first = b.model.particle_count();
   for (long i = 0; i < nodes; ++i)

@@ -146,7 +146,7 @@ Scene parse_scene(const std::string& text, const std::string& file,
   scene.name = std::filesystem::path(file).stem().string();
   ObjectReader top(doc, "", where);
   top.expect({"description", "view", "particles", "generators", "springs", "gravity", "drag",
-              "verlet_damping", "colliders", "methods", "dt", "substeps", "duration", "tolerance",
+              "verlet_damping", "particle_radius", "colliders", "methods", "dt", "substeps", "duration", "tolerance",
               "camera", "trails"});
   top.finish();  // a misspelt field first: it may be why something else looks missing
   scene.description = top.text("description", "");
@@ -214,6 +214,7 @@ Scene parse_scene(const std::string& text, const std::string& file,
   model.gravity = top.vec3("gravity", Vec3::Zero());
   model.drag = top.number("drag", 0.0, non_negative(1e9));
   model.verlet_damping = top.number("verlet_damping", 0.0, {0.0, 1.0, false, true});
+  model.particle_radius = top.number("particle_radius", 0.0, non_negative(1e3));
   for (auto& c : top.objects("colliders")) {
     const std::string type = c.choice("type", "", {"plane", "sphere"});
     const double friction = c.number("friction", 0.0, non_negative(100.0));
@@ -274,6 +275,7 @@ Scene parse_scene(const std::string& text, const std::string& file,
     scene.state.v.row(i) = model.pinned(i) ? Eigen::RowVector3d::Zero() : Eigen::RowVector3d(v[i].transpose());
   }
   scene.state.t = 0.0;
+  scene.named.assign(named.begin(), named.end());
   return scene;
 }
 

@@ -55,6 +55,7 @@ void Simulation::reset() {
   dissipated_ = 0.0;
   divergence_.reset();
   stability_.reset();
+  stable_h_.reset();
   grabbed_ = -1;
   energy_scale_ = springlab::energy_scale(model_, current_);
 }
@@ -73,6 +74,18 @@ bool Simulation::step() {
     if (!all_finite(next_)) {
       ++steps_;
       diverge("a position or velocity became infinite or NaN");
+      return false;
+    }
+    // The kinetic part of the energy test costs one pass over the particles: every step, so
+    // that a blow-up is stopped near where it starts. The whole energy is checked below.
+    const double kinetic = kinetic_energy(model_, next_);
+    if (!(kinetic <= kDivergenceFactor * energy_scale_)) {
+      ++steps_;
+      std::swap(current_, next_);  // still finite: kept, as the state where it was caught
+      std::ostringstream reason;
+      reason << "the kinetic energy reached " << format(kinetic) << " J, more than 1e6 times the "
+             << "scene's energy scale (" << format(energy_scale_) << " J)";
+      diverge(reason.str());
       return false;
     }
     // Time as a multiple of h since h last changed: no drift from adding h over and over.
@@ -123,17 +136,22 @@ const StabilityEstimate& Simulation::stability() {
 }
 
 double Simulation::stable_step() {
-  const StabilityEstimate& e = stability();
-  return springlab::stable_step(settings_.method, e.w_max, e.damping, model_.verlet_damping);
+  if (!stable_h_) {
+    const StabilityEstimate& e = stability();
+    stable_h_ = springlab::stable_step(settings_.method, e.w_max, e.damping, model_.verlet_damping);
+  }
+  return *stable_h_;
 }
 
 void Simulation::model_changed() {
   ws_.invalidate();
   stability_.reset();
+  stable_h_.reset();
 }
 
 void Simulation::set_method(Method method) {
   settings_.method = method;
+  stable_h_.reset();
   ws_.invalidate();
   ws_.adaptive_step = 0.0;
 }
@@ -155,12 +173,22 @@ void Simulation::set_substeps(int substeps) {
 void Simulation::set_step_settings(const StepSettings& step) { settings_.step = step; }
 
 void Simulation::set_stiffness(double ks) {
-  springlab::set_stiffness(model_, ks);
+  if (model_.materials.empty()) return;
+  const double first = model_.materials.front().ks;
+  if (first > 0.0)
+    for (auto& m : model_.materials) m.ks *= ks / first;
+  else
+    springlab::set_stiffness(model_, ks);
   model_changed();
 }
 
 void Simulation::set_damping(double kd) {
-  springlab::set_damping(model_, kd);
+  if (model_.materials.empty()) return;
+  const double first = model_.materials.front().kd;
+  if (first > 0.0)
+    for (auto& m : model_.materials) m.kd *= kd / first;
+  else
+    springlab::set_damping(model_, kd);
   model_changed();
 }
 
@@ -202,6 +230,12 @@ void Simulation::move_grabbed(const Vec3& target, double over) {
   if (grabbed_ < 0 || !(over > 0.0)) return;
   current_.v.row(grabbed_) = (target.transpose() - current_.x.row(grabbed_)) / over;
   ws_.invalidate();
+}
+
+void Simulation::place(int particle, const Vec3& position) {
+  current_.x.row(particle) = position.transpose();
+  current_.v.row(particle).setZero();
+  model_changed();
 }
 
 void Simulation::release() {

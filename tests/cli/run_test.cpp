@@ -41,7 +41,7 @@ TEST(List, ShowsEveryScenesAndMethodOneALine) {
 
 TEST(Run, WritesTheCsvTraceOfDesignMd) {
   TempDir dir;
-  const Result r = springlab("run spring --method rk4 --steps 10 --csv " + (dir / "t.csv").string());
+  const Result r = springlab("run spring --method rk4 --dt 0.01 --steps 10 --csv " + (dir / "t.csv").string());
   ASSERT_EQ(r.status, 0) << r.err;
   const auto rows = lines(read_file(dir / "t.csv"));
   ASSERT_EQ(rows.size(), 12u);  // header, t = 0, 10 steps
@@ -66,7 +66,7 @@ TEST(Run, WritesTheCsvTraceOfDesignMd) {
 
 TEST(Run, EveryKthRowAndTheLast) {
   TempDir dir;
-  ASSERT_EQ(springlab("run spring --steps 12 --every 5 --csv " + (dir / "t.csv").string()).status, 0);
+  ASSERT_EQ(springlab("run spring --dt 0.01 --steps 12 --every 5 --csv " + (dir / "t.csv").string()).status, 0);
   const auto rows = lines(read_file(dir / "t.csv"));
   ASSERT_EQ(rows.size(), 5u);  // header, steps 0, 5, 10, and the last (12)
   EXPECT_NEAR(std::stod(split(rows[2])[0]), 0.05, 1e-15);
@@ -83,7 +83,7 @@ TEST(Run, OptionsChangeTheRun) {
 
 TEST(Run, DivergenceExitsThreeAndSaysWhereAndWhy) {
   TempDir dir;
-  const Result r = springlab("run spring --method euler --duration 100 --csv " + (dir / "t.csv").string());
+  const Result r = springlab("run spring --method euler --dt 0.01 --duration 100 --csv " + (dir / "t.csv").string());
   EXPECT_EQ(r.status, 3);
   for (const char* part : {"diverged during step", "t = ", "euler", "h = 0.01 s", "unstable at any step", "1e6 times"})
     EXPECT_NE(r.err.find(part), std::string::npos) << part << "\n" << r.err;

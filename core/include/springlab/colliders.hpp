@@ -1,5 +1,6 @@
 // Contact with the scene's planes and spheres, applied after each integrator step whatever the
-// method: a particle found inside is moved back to the surface, its velocity into the surface
+// method: a particle found closer than model.particle_radius to a surface, or inside, is moved
+// back out to that distance, its velocity into the surface
 // is removed (or reversed by the restitution e), and Coulomb friction takes up to mu times that
 // normal impulse from its tangential velocity (all of it when the particle sticks):
 //   dv_n = -(1 + e) (v . n)            (only when v . n < 0)

@@ -19,6 +19,9 @@ struct Energy {
 
 Energy energy(const Model& model, const State& state);
 
+// Only the kinetic part: one pass over the particles, no springs (cheap enough for every step).
+double kinetic_energy(const Model& model, const State& state);
+
 // Power (W, >= 0) taken out by spring damping, sum k_d ((v_b - v_a) . u)^2, and by drag,
 // sum k_drag |v|^2. Integrated over time it is the energy the scene loses physically, as
 // opposed to what an integrator loses or gains numerically.

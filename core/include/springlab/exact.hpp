@@ -20,7 +20,7 @@ class ExactOscillator {
   // reaches the anchor, where the spring would flip).
   static std::optional<ExactOscillator> detect(const Model& model, const State& initial);
 
-  State at(double t) const;  // every particle's position and velocity at time t
+  State at(double t) const;  // every particle's position and velocity at time t (>= initial.t)
 
   double w() const { return w_; }
   double c() const { return c_; }

@@ -71,6 +71,7 @@ struct Model {
   // Colliders.
   std::vector<PlaneCollider> planes;
   std::vector<SphereCollider> spheres;
+  double particle_radius = 0.0;  // m: particles touch colliders at this distance
 
   // The "damping" factor of position Verlet (the rope exercise): x1 = x + (1 - d)(x - x_prev) + ...
   double verlet_damping = 0.0;

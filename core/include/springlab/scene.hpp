@@ -5,6 +5,7 @@
 
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "springlab/methods.hpp"
@@ -52,6 +53,8 @@ struct Scene {
   Camera camera;
   std::vector<Surface> surfaces;
   std::vector<int> trails;  // particles whose paths are drawn
+  // Each generator's particles by name: first index and count ("rope:-1" in scripts).
+  std::vector<std::pair<std::string, std::pair<int, int>>> named;
 };
 
 // Loads a scene file. `overrides` are "KEY=VALUE" strings (the --set option): KEY is a dotted

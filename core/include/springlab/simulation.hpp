@@ -28,7 +28,8 @@ struct SimulationSettings {
 };
 
 // NUMERICS.md: a run has diverged when a position or velocity is not finite, or when the total
-// energy exceeds 1e6 times the scene's energy scale; an adaptive step below its floor too.
+// energy exceeds 1e6 times the scene's energy scale; an adaptive step below its floor too. The
+// kinetic energy is tested every step (cheap), the total every energy_check_interval steps.
 inline constexpr double kDivergenceFactor = 1e6;
 
 struct Divergence {
@@ -82,6 +83,8 @@ class Simulation {
   void set_dt(double dt);
   void set_substeps(int substeps);
   void set_step_settings(const StepSettings& step);
+  // k_s and k_d of the first material; the others keep their ratio to it (a cloth's stretch,
+  // shear and bend springs stay in proportion). A ratio from zero sets every material.
   void set_stiffness(double ks);
   void set_damping(double kd);
   void set_gravity(const Vec3& g);
@@ -95,6 +98,8 @@ class Simulation {
   void move_grabbed(const Vec3& target, double over);
   void release();
   int grabbed() const { return grabbed_; }
+  // Puts a particle somewhere at rest (dragging while paused).
+  void place(int particle, const Vec3& position);
 
   // Back to the initial state (and the model as built), keeping the settings.
   void reset();
@@ -114,6 +119,7 @@ class Simulation {
   double dissipated_ = 0.0;
   std::optional<Divergence> divergence_;
   std::optional<StabilityEstimate> stability_;
+  std::optional<double> stable_h_;  // for the current method and estimate
   int grabbed_ = -1;
   bool grabbed_was_pinned_ = false;
 };

@@ -1,0 +1,92 @@
+#include "chart/chart.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace springlab::chart {
+
+std::string format_tick(double value) {
+  if (value == 0.0) return "0";
+  char s[32];
+  const double a = std::abs(value);
+  if (a >= 1e-3 && a < 1e5) std::snprintf(s, sizeof s, "%.4g", value);
+  else std::snprintf(s, sizeof s, "%.0e", value);
+  std::string out = s;
+  // 1e-06 -> 1e-6
+  const auto e = out.find("e-0");
+  if (e != std::string::npos) out.erase(e + 2, 1);
+  const auto p = out.find("e+0");
+  if (p != std::string::npos) out.replace(p, 3, "e");
+  const auto q = out.find("e+");
+  if (q != std::string::npos) out.erase(q + 1, 1);
+  return out;
+}
+
+std::vector<Tick> ticks(double lo, double hi, bool log, int target) {
+  std::vector<Tick> out;
+  if (!(hi > lo)) return out;
+  if (log) {
+    const int first = static_cast<int>(std::ceil(std::log10(lo) - 1e-9));
+    const int last = static_cast<int>(std::floor(std::log10(hi) + 1e-9));
+    const int decades = last - first + 1;
+    const int every = std::max(1, decades / std::max(1, target + 2));
+    for (int k = first; k <= last; ++k) {
+      if ((k - first) % every) continue;
+      out.push_back({std::pow(10.0, k), format_tick(std::pow(10.0, k)), true});
+    }
+    if (decades <= 3)  // minor ticks 2..9, labelled 2 and 5
+      for (int k = first - 1; k <= last; ++k)
+        for (int m = 2; m <= 9; ++m) {
+          const double v = m * std::pow(10.0, k);
+          if (v < lo || v > hi) continue;
+          out.push_back({v, (m == 2 || m == 5) && decades <= 2 ? format_tick(v) : "", false});
+        }
+    return out;
+  }
+  const double raw = (hi - lo) / target;
+  const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
+  double step = magnitude;
+  for (double m : {1.0, 2.0, 2.5, 5.0, 10.0})
+    if (m * magnitude >= raw) {
+      step = m * magnitude;
+      break;
+    }
+  for (double v = std::ceil(lo / step - 1e-9) * step; v <= hi + 1e-9 * step; v += step)
+    out.push_back({std::abs(v) < 1e-12 * step ? 0.0 : v, format_tick(std::abs(v) < 1e-12 * step ? 0.0 : v), true});
+  return out;
+}
+
+void axis_range(const Chart& chart, bool x_axis, double& lo, double& hi) {
+  const Axis& axis = x_axis ? chart.x : chart.y;
+  lo = std::numeric_limits<double>::infinity();
+  hi = -lo;
+  for (const Series& s : chart.series)
+    for (double v : x_axis ? s.x : s.y) {
+      if (!std::isfinite(v) || (axis.log && v <= 0)) continue;
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+  if (axis.min) lo = *axis.min;
+  if (axis.max) hi = *axis.max;
+  if (!std::isfinite(lo) || !std::isfinite(hi)) {
+    lo = axis.log ? 0.1 : 0.0;
+    hi = axis.log ? 10.0 : 1.0;
+  }
+  if (axis.log) {
+    if (!axis.min) lo = std::pow(10.0, std::floor(std::log10(lo) + 1e-9));
+    if (!axis.max) hi = std::pow(10.0, std::ceil(std::log10(hi) - 1e-9));
+    if (hi <= lo) hi = lo * 10.0;
+    return;
+  }
+  if (hi - lo < 1e-12 * std::max(1.0, std::abs(hi))) {
+    const double pad = std::max(1e-9, 0.5 * std::abs(hi));
+    lo -= pad;
+    hi += pad;
+  }
+  // A little room above and below the data.
+  if (!axis.min) lo -= 0.05 * (hi - lo);
+  if (!axis.max) hi += 0.05 * (hi - lo);
+}
+
+}  // namespace springlab::chart

@@ -1,0 +1,52 @@
+// A chart described as data: axes (linear or log), series of points with a colour and a label,
+// reference lines. Drawn live with Dear ImGui (imgui_chart.cpp) and written as SVG (svg.cpp),
+// so the app, the PNG charts and the SVG charts show the same thing.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "draw/frame.hpp"
+
+namespace springlab::chart {
+
+struct Series {
+  std::string label;
+  draw::Rgba color;
+  std::vector<double> x, y;
+  bool dashed = false;
+  bool markers = false;            // a dot on each point
+  std::vector<bool> crossed;       // per point: drawn as a cross (a diverged run)
+  float width = 2.0f;              // pixels
+};
+
+struct Axis {
+  std::string label;  // with units: "step h (s)"
+  bool log = false;
+  std::optional<double> min, max;  // else from the data
+};
+
+struct Chart {
+  std::string title;
+  Axis x, y;
+  std::vector<Series> series;
+  bool legend = true;
+};
+
+// Ticks for an axis over [lo, hi]: "nice" numbers (1, 2, 5 x 10^k) for a linear axis, decades
+// for a log one (and 2, 5 between them when there are few decades).
+struct Tick {
+  double value;
+  std::string label;
+  bool major = true;
+};
+std::vector<Tick> ticks(double lo, double hi, bool log, int target_count = 5);
+
+// The range the axis shows: the data's, widened to whole ticks, or the one set.
+void axis_range(const Chart& chart, bool x_axis, double& lo, double& hi);
+
+// "0.5", "1e-06", "120": short tick labels.
+std::string format_tick(double value);
+
+}  // namespace springlab::chart

@@ -1,0 +1,139 @@
+#include "chart/imgui_chart.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace springlab::chart {
+
+namespace {
+
+ImU32 color(const draw::Rgba& c, float alpha = 1.0f) {
+  return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, c.a * alpha));
+}
+
+struct Mapping {
+  double lo, hi;
+  bool log;
+  float a, b;  // pixel at lo, at hi
+  float operator()(double v) const {
+    const double t = log ? (std::log10(v) - std::log10(lo)) / (std::log10(hi) - std::log10(lo))
+                         : (v - lo) / (hi - lo);
+    return a + static_cast<float>(t) * (b - a);
+  }
+};
+
+}  // namespace
+
+void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const ImU32 text = ImGui::GetColorU32(ImGuiCol_Text);
+  const ImU32 faint = ImGui::GetColorU32(ImGuiCol_Border);
+  const ImU32 grid = ImGui::GetColorU32(ImGuiCol_Border, 0.45f);
+  const float line_h = ImGui::GetTextLineHeight();
+
+  double xlo, xhi, ylo, yhi;
+  axis_range(chart, true, xlo, xhi);
+  axis_range(chart, false, ylo, yhi);
+  const auto xt = ticks(xlo, xhi, chart.x.log), yt = ticks(ylo, yhi, chart.y.log, 4);
+  float label_w = 0.0f;
+  for (const Tick& t : yt) label_w = std::max(label_w, ImGui::CalcTextSize(t.label.c_str()).x);
+
+  // Plot area: room for the title, the y label (rotated text is not available, so it goes above
+  // the axis), tick labels and the x label.
+  const float top = origin.y + (chart.title.empty() ? 0.0f : line_h * 1.2f) + line_h * 1.1f;
+  const float left = origin.x + label_w + style.ItemSpacing.x + 4.0f;
+  const float right = origin.x + size.x - 8.0f;
+  const float bottom = origin.y + size.y - line_h * (chart.x.label.empty() ? 1.3f : 2.4f);
+  if (right - left < 20 || bottom - top < 20) return;
+  const Mapping mx{xlo, xhi, chart.x.log, left, right}, my{ylo, yhi, chart.y.log, bottom, top};
+
+  if (!chart.title.empty())
+    list->AddText(ImVec2(origin.x, origin.y), text, chart.title.c_str());
+  list->AddText(ImVec2(origin.x, top - line_h * 1.1f), text, chart.y.label.c_str());
+  const ImVec2 xl = ImGui::CalcTextSize(chart.x.label.c_str());
+  list->AddText(ImVec2(0.5f * (left + right) - 0.5f * xl.x, bottom + line_h * 1.15f), text, chart.x.label.c_str());
+
+  list->PushClipRect(ImVec2(origin.x, origin.y), ImVec2(origin.x + size.x, origin.y + size.y), true);
+  for (const Tick& t : xt) {
+    const float x = mx(t.value);
+    list->AddLine(ImVec2(x, top), ImVec2(x, bottom), t.major ? grid : ImGui::GetColorU32(ImGuiCol_Border, 0.2f));
+    if (!t.label.empty()) {
+      const ImVec2 s = ImGui::CalcTextSize(t.label.c_str());
+      list->AddText(ImVec2(x - 0.5f * s.x, bottom + 0.15f * line_h), text, t.label.c_str());
+    }
+  }
+  for (const Tick& t : yt) {
+    const float y = my(t.value);
+    list->AddLine(ImVec2(left, y), ImVec2(right, y), t.major ? grid : ImGui::GetColorU32(ImGuiCol_Border, 0.2f));
+    if (!t.label.empty()) {
+      const ImVec2 s = ImGui::CalcTextSize(t.label.c_str());
+      list->AddText(ImVec2(left - s.x - 6.0f, y - 0.5f * s.y), text, t.label.c_str());
+    }
+  }
+  list->AddRect(ImVec2(left, top), ImVec2(right, bottom), faint);
+
+  list->PushClipRect(ImVec2(left, top), ImVec2(right, bottom), true);
+  for (const Series& s : chart.series) {
+    const ImU32 c = color(s.color);
+    std::vector<ImVec2> points;
+    const auto flush = [&] {
+      if (points.size() >= 2) {
+        if (s.dashed) {
+          for (std::size_t k = 0; k + 1 < points.size(); k += 2) list->AddLine(points[k], points[k + 1], c, s.width);
+        } else {
+          list->AddPolyline(points.data(), static_cast<int>(points.size()), c, ImDrawFlags_None, s.width);
+        }
+      }
+      points.clear();
+    };
+    for (std::size_t k = 0; k < s.x.size(); ++k) {
+      const double x = s.x[k], y = s.y[k];
+      const bool ok = std::isfinite(x) && std::isfinite(y) && (!chart.x.log || x > 0) && (!chart.y.log || y > 0);
+      if (!ok) {
+        flush();
+        continue;
+      }
+      const ImVec2 p(mx(x), my(y));
+      const bool crossed = k < s.crossed.size() && s.crossed[k];
+      if (crossed) {
+        flush();
+        const float r = 4.0f + s.width;
+        list->AddLine(ImVec2(p.x - r, p.y - r), ImVec2(p.x + r, p.y + r), c, 2.0f);
+        list->AddLine(ImVec2(p.x - r, p.y + r), ImVec2(p.x + r, p.y - r), c, 2.0f);
+        continue;
+      }
+      points.push_back(p);
+      if (s.markers) list->AddCircleFilled(p, 2.0f + s.width, c);
+    }
+    flush();
+  }
+  list->PopClipRect();
+
+  if (chart.legend) {
+    float y = top + 4.0f, width = 0.0f;
+    for (const Series& s : chart.series)
+      if (!s.label.empty()) width = std::max(width, ImGui::CalcTextSize(s.label.c_str()).x);
+    const float x = right - width - 34.0f;
+    int count = 0;
+    for (const Series& s : chart.series) count += !s.label.empty();
+    if (count > 0)
+      list->AddRectFilled(ImVec2(x - 6, y - 2), ImVec2(right - 4, y + count * line_h + 2),
+                          ImGui::GetColorU32(ImGuiCol_WindowBg, 0.85f), 3.0f);
+    for (const Series& s : chart.series) {
+      if (s.label.empty()) continue;
+      const float mid = y + 0.5f * line_h;
+      list->AddLine(ImVec2(x, mid), ImVec2(x + 20, mid), color(s.color), 3.0f);
+      list->AddText(ImVec2(x + 26, y), text, s.label.c_str());
+      y += line_h;
+    }
+  }
+  list->PopClipRect();
+}
+
+void chart_widget(const char* id, const Chart& chart, ImVec2 size) {
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  ImGui::InvisibleButton(id, size);
+  draw_imgui(ImGui::GetWindowDrawList(), origin, size, chart);
+}
+
+}  // namespace springlab::chart

@@ -1,0 +1,198 @@
+// springlab render SCENE --out DIR | --video FILE.mp4: headless frames or video (no display, no
+// GPU needed). Frame k shows the scene at presentation time k / fps (session.hpp); the output
+// appears only when complete.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <set>
+#include <sstream>
+
+#include "cli/commands.hpp"
+#include "cli/options.hpp"
+#include "draw/scene_frame.hpp"
+#include "gfx/offscreen.hpp"
+#include "io/frame_writer.hpp"
+#include "springlab/error.hpp"
+#include "springlab/script.hpp"
+#include "ui/overlay.hpp"
+#include "ui/panels.hpp"
+#include "util/data_dir.hpp"
+#include "util/progress.hpp"
+
+namespace springlab::app {
+
+namespace {
+
+struct RenderOptions {
+  std::string scene;
+  SimOptions sim;
+  std::optional<std::string> out, video, script, size = "1280x720", compare, select;
+  std::optional<std::int64_t> frames;
+  std::optional<double> duration;
+  double fps = 60.0;
+  bool ui = false, software = false;
+  std::optional<double> ui_scale;  // default: the frame's height / 720, at least 0.6
+};
+
+void parse_size(const std::string& text, int& width, int& height) {
+  char x = 0;
+  std::istringstream s(text);
+  if (!(s >> width >> x >> height) || x != 'x' || !s.eof() || width < 16 || height < 16 || width > 7680 ||
+      height > 4320)
+    throw InputError("--size: must be WIDTHxHEIGHT, each from 16 to 7680 x 4320, for example 1280x720; got '" +
+                     text + "'");
+}
+
+std::vector<Method> parse_methods(const std::string& list) {
+  std::vector<Method> out;
+  std::stringstream s(list);
+  for (std::string name; std::getline(s, name, ',');) {
+    const auto m = find_method(name);
+    if (!m) throw InputError("--compare: unknown method '" + name + "' (methods: " + method_names() + ")");
+    out.push_back(*m);
+  }
+  if (out.size() < 2 || out.size() > Session::kMaxLanes)
+    throw InputError("--compare: give 2 to 4 methods separated by commas, e.g. euler,verlet");
+  return out;
+}
+
+// A folder made for the output, removed again if the render fails before putting anything in it.
+struct MadeFolder {
+  std::filesystem::path path;
+  bool made = false;
+  ~MadeFolder() {
+    std::error_code ec;
+    if (made && std::filesystem::is_empty(path, ec)) std::filesystem::remove(path, ec);
+  }
+};
+
+int render(const RenderOptions& o) {
+  if (o.out.has_value() == o.video.has_value())
+    throw InputError("render: give exactly one of --out DIR (PNG frames) and --video FILE.mp4");
+  int width = 0, height = 0;
+  parse_size(*o.size, width, height);
+  check_option("--fps", o.fps, 1.0, 240.0, false);
+  if (o.ui_scale) check_option("--ui-scale", *o.ui_scale, 0.5, 4.0, false);
+  if (o.frames) check_option("--frames", static_cast<double>(*o.frames), 1, 1e7, false);
+  if (o.duration) check_option("--duration", *o.duration, 0.0, 1e6, true, " s");
+  if (o.video && (width % 2 || height % 2))
+    throw InputError("--size: a video needs an even width and height (yuv420p), got " + *o.size);
+  std::vector<Method> compare;
+  if (o.compare) compare = parse_methods(*o.compare);
+  std::set<std::int64_t> selected;
+  if (o.select) {
+    std::stringstream s(*o.select);
+    for (std::string item; std::getline(s, item, ',');) {
+      char* end = nullptr;
+      const long long k = std::strtoll(item.c_str(), &end, 10);
+      if (item.empty() || *end || k < 0) throw InputError("--select: frame numbers separated by commas, got '" + *o.select + "'");
+      selected.insert(k);
+    }
+  }
+
+  SimOptions sim_options = o.sim;
+  Prepared p = prepare(o.scene, sim_options);
+  std::optional<Script> script;
+  if (o.script) script = load_script(*o.script, p.scene);
+  const double duration = o.duration ? *o.duration : script ? std::max(script->end_time() + 1.0, 1.0) : p.scene.duration;
+  const std::int64_t frames = o.frames ? *o.frames : std::max<std::int64_t>(1, std::llround(duration * o.fps));
+  if (!selected.empty() && *selected.rbegin() >= frames)
+    throw InputError("--select: frame " + std::to_string(*selected.rbegin()) + " is past the last frame (" +
+                     std::to_string(frames - 1) + ")");
+
+  // Outputs first: a folder that cannot be written, or no ffmpeg, fails before any work.
+  std::unique_ptr<FrameWriter> writer;
+  MadeFolder folder;
+  if (o.out) {
+    std::error_code ec;
+    folder.path = *o.out;
+    folder.made = std::filesystem::create_directories(*o.out, ec);
+    if (ec || !std::filesystem::is_directory(*o.out))
+      throw InputError("--out: cannot create the folder '" + *o.out + "' (" + ec.message() + ")");
+    writer = png_sequence(*o.out);
+  } else {
+    writer = mp4_video(*o.video, width, height, o.fps);
+  }
+
+  const std::string scene_name = p.scene.name;
+  Session session(std::move(p.scene), p.settings, o.fps);
+  if (!compare.empty()) session.set_compare(compare);
+  if (script) session.play(*script);
+  for (Lane& lane : session.lanes()) warn_if_unstable(lane.sim, scene_name);
+  ui::UiState ui;
+  ui.scale = static_cast<float>(o.ui_scale ? *o.ui_scale : std::max(0.6, height / 720.0));
+  ui.view = draw::ViewOptions::for_scene(session.scene());
+  ui.ranges = ui::Ranges::of(session);
+  ui.scene_name = scene_name;
+  ui.scenes = shipped_scenes();
+
+  // Dear ImGui draws the panels (--ui) and, always, the caption and the compare legend.
+  gfx::Offscreen offscreen(o.software, width, height, ui.scale, o.fps);
+  Progress progress("render " + scene_name, frames);
+  Image image;
+  ui::FrameStats stats;
+  const auto start = std::chrono::steady_clock::now();
+  std::int64_t written = 0;
+  for (std::int64_t k = 0; k < frames; ++k) {
+    if (k > 0) {
+      const std::int64_t before = session.primary().sim.counters().force_evals;
+      const auto t0 = std::chrono::steady_clock::now();
+      session.advance_frame();
+      stats.sim_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      stats.force_evals = session.primary().sim.counters().force_evals - before;
+    }
+    if (!selected.empty() && !selected.count(k)) continue;
+    const auto t0 = std::chrono::steady_clock::now();
+    const draw::Viewport viewport = o.ui ? ui::scene_viewport(ui, width, height) : draw::Viewport{0, 0, width, height};
+    const draw::Frame frame = draw::build_frame(session, ui.view, viewport);
+    offscreen.render(frame, [&] {
+      if (o.ui) ui::draw_panels(session, ui, stats, width, height);
+      ui::draw_overlay(session, viewport, ui.scale, scene_name, !o.ui);
+    }, image);
+    stats.draw_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    writer->push(image, static_cast<int>(k));
+    ++written;
+    progress.update(k + 1);
+  }
+  writer->finish();
+  progress.finish();
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("rendered %lld frame%s of %s (%dx%d, %g frames/s, t = 0 to %.4g s) in %.3g s: %.3g frames/s, on %s\n",
+              static_cast<long long>(written), written == 1 ? "" : "s", scene_name.c_str(), width, height, o.fps,
+              session.primary().sim.state().t, wall, wall > 0 ? written / wall : 0.0, offscreen.renderer_name().c_str());
+  std::printf("output     %s\n", (o.out ? *o.out : *o.video).c_str());
+  for (const Lane& lane : session.lanes())
+    if (lane.sim.diverged()) {
+      std::fflush(stdout);
+      std::fprintf(stderr, "springlab: %s: %s\n", scene_name.c_str(), lane.sim.divergence()->message().c_str());
+      return kDiverged;
+    }
+  return kOk;
+}
+
+}  // namespace
+
+Command add_render_command(CLI::App& app) {
+  auto o = std::make_shared<RenderOptions>();
+  CLI::App* c = app.add_subcommand("render", "headless frames (PNG) or video (mp4), no display needed");
+  c->add_option("scene", o->scene, "scene name or JSON file")->required();
+  add_sim_options(*c, o->sim, false);
+  c->add_option("--out", o->out, "write frame_00000.png, ... into this folder");
+  c->add_option("--video", o->video, "write an mp4 (H.264) through ffmpeg");
+  c->add_option("--frames", o->frames, "number of frames (default: the scene's duration, or the script's)");
+  c->add_option("--duration", o->duration, "seconds of presentation time to render");
+  c->add_option("--fps", o->fps, "frames per second (default 60)");
+  c->add_option("--size", o->size, "WIDTHxHEIGHT (default 1280x720)");
+  c->add_flag("--ui", o->ui, "include the app's panels");
+  c->add_option("--ui-scale", o->ui_scale, "size of the panels and text (default: height / 720)");
+  c->add_option("--script", o->script, "play a scripted demo (JSON)");
+  c->add_option("--compare", o->compare, "2 to 4 methods side by side, e.g. euler,verlet");
+  c->add_option("--select", o->select, "write only these frames, e.g. 0,60,120");
+  c->add_flag("--software", o->software, "use the software rasteriser even with a GPU (same pixels everywhere)");
+  return [o] { return render(*o); };
+}
+
+}  // namespace springlab::app

@@ -1,0 +1,55 @@
+// Colours used everywhere in springlab: one per method (the scene view, the charts, the legends
+// and the SVG and PNG charts all agree), and the strain colour map of springs.
+#pragma once
+
+#include <algorithm>
+#include <string>
+
+#include "draw/frame.hpp"
+#include "springlab/methods.hpp"
+
+namespace springlab::draw {
+
+// Distinct on a dark background and on a projector, and for the common colour-vision
+// deficiencies as far as nine colours allow (Okabe-Ito based).
+inline Rgba method_color(Method m) {
+  switch (m) {
+    case Method::Euler: return {0.90f, 0.38f, 0.00f, 1};            // vermilion
+    case Method::SymplecticEuler: return {0.34f, 0.71f, 0.91f, 1};  // sky blue
+    case Method::Midpoint: return {0.80f, 0.47f, 0.74f, 1};         // reddish purple
+    case Method::ModifiedEuler: return {0.94f, 0.89f, 0.26f, 1};    // yellow
+    case Method::RK4: return {0.00f, 0.62f, 0.45f, 1};              // bluish green
+    case Method::AdaptiveEuler: return {0.90f, 0.62f, 0.00f, 1};    // orange
+    case Method::RK45: return {0.55f, 0.85f, 0.45f, 1};             // light green
+    case Method::ImplicitEuler: return {0.00f, 0.45f, 0.70f, 1};    // blue
+    case Method::Verlet: return {0.95f, 0.60f, 0.75f, 1};           // pink
+  }
+  return {1, 1, 1, 1};
+}
+
+inline std::string hex(const Rgba& c) {
+  char s[8];
+  const auto byte = [](float x) { return static_cast<int>(std::clamp(x, 0.0f, 1.0f) * 255.0f + 0.5f); };
+  std::snprintf(s, sizeof s, "#%02x%02x%02x", byte(c.r), byte(c.g), byte(c.b));
+  return s;
+}
+
+inline Rgba mix(const Rgba& a, const Rgba& b, float t) {
+  return {a.r + (b.r - a.r) * t, a.g + (b.g - a.g) * t, a.b + (b.b - a.b) * t, a.a + (b.a - a.a) * t};
+}
+
+// Strain (l - L) / L to colour: blue compressed, light grey at rest, red stretched; saturated
+// at +-`scale`.
+inline Rgba strain_color(double strain, double scale) {
+  const Rgba rest{0.82f, 0.84f, 0.86f, 1}, compressed{0.25f, 0.55f, 1.0f, 1}, stretched{1.0f, 0.30f, 0.22f, 1};
+  const float t = static_cast<float>(std::clamp(strain / scale, -1.0, 1.0));
+  return t < 0 ? mix(rest, compressed, -t) : mix(rest, stretched, t);
+}
+
+inline constexpr Rgba kGrabbed{1.0f, 0.85f, 0.2f, 1};
+inline constexpr Rgba kParticle{0.92f, 0.93f, 0.95f, 1};
+inline constexpr Rgba kClothFront{0.93f, 0.55f, 0.28f, 1};
+inline constexpr Rgba kClothBack{0.28f, 0.60f, 0.72f, 1};
+inline constexpr Rgba kCollider{0.55f, 0.58f, 0.64f, 1};
+
+}  // namespace springlab::draw

@@ -1,0 +1,122 @@
+#include "draw/scene_frame.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+
+#include "draw/camera.hpp"
+#include "draw/palette.hpp"
+
+namespace springlab::draw {
+
+namespace {
+
+Vec3f f(const Eigen::RowVector3d& x) { return x.transpose().cast<float>(); }
+
+Mesh surface_mesh(const Surface& surface, const State& state, Rgba front, Rgba back) {
+  Mesh m;
+  m.front = front;
+  m.back = back;
+  const int n = state.particle_count();
+  m.positions.resize(n);
+  m.normals.assign(n, Vec3f::Zero());
+  for (int i = 0; i < n; ++i) m.positions[i] = f(state.x.row(i));
+  m.indices.reserve(surface.triangles.size() * 3);
+  for (const auto& t : surface.triangles) {
+    const Vec3f& a = m.positions[t[0]];
+    const Vec3f& b = m.positions[t[1]];
+    const Vec3f& c = m.positions[t[2]];
+    const Vec3f normal = (b - a).cross(c - a);  // area-weighted
+    for (int k : t) m.normals[k] += normal;
+    m.indices.insert(m.indices.end(), {static_cast<std::uint32_t>(t[0]), static_cast<std::uint32_t>(t[1]),
+                                       static_cast<std::uint32_t>(t[2])});
+  }
+  for (Vec3f& nrm : m.normals) {
+    const float length = nrm.norm();
+    nrm = length > 0 ? Vec3f(nrm / length) : Vec3f::UnitY();
+  }
+  return m;
+}
+
+}  // namespace
+
+ViewOptions ViewOptions::for_scene(const Scene& scene) {
+  ViewOptions o;
+  o.camera = scene.camera;
+  const bool has_surface = !scene.surfaces.empty();
+  o.springs = !has_surface;
+  o.particles = !has_surface;
+  std::vector<double> lengths(scene.model.rest_length);
+  for (double& l : lengths)
+    if (l == 0.0) l = 0.5;  // zero-length springs: a generic scale
+  if (!lengths.empty()) {
+    std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
+    o.spacing = lengths[lengths.size() / 2];
+  } else {
+    o.spacing = 0.1 * scene.camera.height;
+  }
+  return o;
+}
+
+Frame build_frame(const app::Session& session, const ViewOptions& options, Viewport viewport) {
+  Frame frame;
+  frame.viewport = viewport;
+  frame.camera = view_camera(options.camera, viewport.width, viewport.height);
+  const float wpp = frame.camera.world_per_pixel;
+  const Scene& scene = session.scene();
+  const Model& model = session.primary().sim.model();
+
+  // Sizes in pixels from the spacing: particles a fifth of a spring, lines thinner.
+  const float spacing_px = static_cast<float>(options.spacing) / wpp;
+  const float radius = std::clamp(0.2f * spacing_px, 3.0f, 13.0f) * wpp;
+  const float line_width = std::clamp(0.07f * spacing_px, 1.5f, 4.0f);
+
+  // Colliders.
+  const float size = std::max(1.0f, static_cast<float>(options.spacing) * 20.0f);
+  for (const PlaneCollider& p : model.planes)
+    frame.planes.push_back({p.point.cast<float>(), p.normal.cast<float>(), 4.0f * size, 0.5f});
+  for (const SphereCollider& s : model.spheres)
+    frame.spheres.push_back({s.center.cast<float>(), static_cast<float>(s.radius), kCollider});
+
+  const bool compare = session.comparing();
+  for (const app::Lane& lane : session.lanes()) {
+    const State& state = lane.sim.state();
+    const Model& m = lane.sim.model();
+    Rgba tint = method_color(lane.sim.settings().method);
+    if (lane.sim.diverged()) tint.a = 0.35f;  // frozen where it diverged, faded
+
+    if (options.surfaces && !compare)
+      for (const Surface& s : scene.surfaces) frame.meshes.push_back(surface_mesh(s, state, kClothFront, kClothBack));
+
+    if (options.springs || compare || scene.surfaces.empty()) {
+      for (int k = 0; k < m.spring_count(); ++k) {
+        const int a = m.spring_a[k], b = m.spring_b[k];
+        const double l = (state.x.row(b) - state.x.row(a)).norm();
+        const double rest = m.rest_length[k];
+        const double strain = rest > 0 ? (l - rest) / rest : 0.0;
+        const Rgba c = compare ? tint : strain_color(strain, options.strain_scale);
+        frame.lines.push_back({f(state.x.row(a)), f(state.x.row(b)), c, c, line_width});
+      }
+    }
+    if (options.trails)
+      for (const auto& trail : lane.trails)
+        for (std::size_t k = 1; k < trail.size(); ++k) {
+          Rgba c = compare ? tint : Rgba{1.0f, 0.78f, 0.3f, 1.0f};
+          Rgba c0 = c, c1 = c;
+          c0.a *= static_cast<float>(k - 1) / trail.size();
+          c1.a *= static_cast<float>(k) / trail.size();
+          frame.lines.push_back({trail[k - 1].cast<float>(), trail[k].cast<float>(), c0, c1, 2.0f});
+        }
+    for (int i = 0; i < m.particle_count(); ++i) {
+      const bool pinned = scene.model.pinned(i);
+      const bool held = i == session.grabbed();
+      if (!options.particles && !pinned && !held && !(scene.surfaces.empty())) continue;
+      Rgba c = held ? kGrabbed : compare ? tint : kParticle;
+      if (lane.sim.diverged()) c.a = 0.35f;
+      frame.particles.push_back({f(state.x.row(i)), held ? 1.3f * radius : radius, c, pinned});
+    }
+  }
+  return frame;
+}
+
+}  // namespace springlab::draw

@@ -1,0 +1,20 @@
+// PNG files with libpng: fast (zlib level 1) for frame dumps, as PLATFORM.md measured.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+namespace springlab::app {
+
+struct Image {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> rgba;  // rows from the top
+};
+
+// Writes atomically (temporary name, then rename). Throws on failure.
+void write_png(const std::filesystem::path& path, const Image& image, int compression = 1);
+// Throws std::runtime_error naming the file when it cannot be read as a PNG.
+Image read_png(const std::filesystem::path& path);
+
+}  // namespace springlab::app

@@ -1,0 +1,39 @@
+// What the charts plot: per lane, a few quantities sampled once a frame, the last kCapacity
+// samples kept (20 s at 60 frames a second).
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+namespace springlab::app {
+
+// A fixed-capacity series; index 0 is the oldest kept sample.
+class Series {
+ public:
+  Series() : values_(1200) {}
+  explicit Series(std::size_t capacity) : values_(capacity) {}
+  void push(double x) {
+    values_[(start_ + size_) % values_.size()] = x;
+    if (size_ < values_.size()) ++size_;
+    else start_ = (start_ + 1) % values_.size();
+  }
+  void clear() { start_ = size_ = 0; }
+  std::size_t size() const { return size_; }
+  double operator[](std::size_t i) const { return values_[(start_ + i) % values_.size()]; }
+  double back() const { return (*this)[size_ - 1]; }
+
+ private:
+  std::vector<double> values_;
+  std::size_t start_ = 0, size_ = 0;
+};
+
+struct History {
+  Series t, kinetic, potential, total, dissipated;
+  Series x, v;        // the watched particle: its coordinate along the watched axis, and velocity
+  Series exact_x;     // the exact solution there, where the scene has one (else empty)
+  void clear() {
+    for (Series* s : {&t, &kinetic, &potential, &total, &dissipated, &x, &v, &exact_x}) s->clear();
+  }
+};
+
+}  // namespace springlab::app

@@ -1,0 +1,296 @@
+#include "session/session.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace springlab::app {
+
+Session::Session(Scene scene, SimulationSettings settings, double fps)
+    : scene_(std::move(scene)), settings_(settings), fps_(fps) {
+  settings_.track_dissipation = true;
+  lanes_.push_back(make_lane(settings_.method));
+  // Watch the last free particle (a rope's free end, the spring's mass), along the spring of an
+  // exact oscillator, else along gravity, else along x.
+  for (int i = scene_.model.particle_count() - 1; i >= 0; --i)
+    if (!scene_.model.pinned(i)) {
+      watched_ = i;
+      break;
+    }
+  if (lanes_.front().exact) {
+    const Vec3 d = (scene_.state.x.row(watched_) - scene_.state.x.row(scene_.model.spring_a[0])).transpose();
+    d.cwiseAbs().maxCoeff(&watched_axis_);
+  } else if (scene_.model.gravity.squaredNorm() > 0.0) {
+    scene_.model.gravity.cwiseAbs().maxCoeff(&watched_axis_);
+  }
+  for (Lane& lane : lanes_) sample(lane);
+}
+
+Lane Session::make_lane(Method method) const {
+  SimulationSettings s = settings_;
+  s.method = method;
+  Lane lane{Simulation(scene_.model, scene_.state, s), {}, ExactOscillator::detect(scene_.model, scene_.state), {}};
+  lane.trails.resize(scene_.trails.size());
+  return lane;
+}
+
+void Session::sample(Lane& lane) {
+  const Simulation& sim = lane.sim;
+  const Energy e = sim.energy();
+  History& h = lane.history;
+  const double t = sim.state().t;
+  h.t.push(t);
+  h.kinetic.push(e.kinetic);
+  h.potential.push(e.potential());
+  h.total.push(e.total());
+  h.dissipated.push(sim.dissipated());
+  h.x.push(sim.state().x(watched_, watched_axis_));
+  h.v.push(sim.state().v(watched_, watched_axis_));
+  if (lane.exact) h.exact_x.push(lane.exact->at(t).x(watched_, watched_axis_));
+  for (std::size_t k = 0; k < lane.trails.size(); ++k) {
+    auto& trail = lane.trails[k];
+    trail.push_back(sim.state().x.row(scene_.trails[k]).transpose());
+    if (trail.size() > kTrailLength) trail.erase(trail.begin());
+  }
+}
+
+void Session::advance_frame() {
+  // Script events due now, and the dragged point at the end of this frame.
+  if (script_) {
+    const double now = presentation_time();
+    while (next_event_ < script_->events.size() && script_->events[next_event_].t <= now + 1e-9)
+      apply(script_->events[next_event_++]);
+    if (path_ && grabbed_ >= 0) {
+      const double elapsed = static_cast<double>(frame_ + 1) / fps_ - path_->first;
+      drag_to(path_position(path_->second, elapsed));
+      if (elapsed >= path_->second.back().first) path_.reset();
+    }
+  }
+
+  const double frame_time = speed_ / fps_;
+  if (!paused_) target_ += frame_time;
+  for (Lane& lane : lanes_) {
+    Simulation& sim = lane.sim;
+    if (sim.diverged()) continue;
+    if (grabbed_ >= 0 && drag_target_) {
+      if (paused_) sim.place(grabbed_, *drag_target_);
+      else sim.move_grabbed(*drag_target_, frame_time);
+    }
+    const double dt = sim.settings().dt;
+    const double due = std::floor((target_ - sim.state().t) / dt + 1e-9);
+    if (due > 0) sim.advance(static_cast<std::int64_t>(due));
+  }
+  ++frame_;
+  for (Lane& lane : lanes_) sample(lane);
+}
+
+void Session::step_once() {
+  double latest = target_;
+  for (Lane& lane : lanes_) {
+    if (lane.sim.diverged()) continue;
+    lane.sim.step();
+    latest = std::max(latest, lane.sim.state().t);
+    sample(lane);
+  }
+  target_ = latest;
+}
+
+void Session::set_compare(const std::vector<Method>& methods) {
+  std::vector<Method> list = methods;
+  if (list.size() > kMaxLanes) list.resize(kMaxLanes);
+  if (list.empty()) list = {lanes_.front().sim.settings().method};
+  release();
+  lanes_.clear();
+  for (Method m : list) lanes_.push_back(make_lane(m));
+  target_ = scene_.state.t;
+  for (Lane& lane : lanes_) sample(lane);
+}
+
+void Session::model_changed(Lane& lane) {
+  // The exact solution now starts from the current state, with the new constants.
+  lane.exact = ExactOscillator::detect(lane.sim.model(), lane.sim.state());
+}
+
+void Session::set_method(Method method) {
+  settings_.method = method;
+  if (!comparing()) lanes_.front().sim.set_method(method);
+}
+
+void Session::set_dt(double dt) {
+  settings_.dt = dt;
+  for (Lane& l : lanes_) l.sim.set_dt(dt);
+}
+
+void Session::set_substeps(int substeps) {
+  settings_.substeps = substeps;
+  for (Lane& l : lanes_) l.sim.set_substeps(substeps);
+}
+
+void Session::set_tolerance(double tolerance) {
+  settings_.step.tolerance = tolerance;
+  for (Lane& l : lanes_) l.sim.set_step_settings(settings_.step);
+}
+
+void Session::set_stiffness(double ks) {
+  for (Lane& l : lanes_) {
+    l.sim.set_stiffness(ks);
+    model_changed(l);
+  }
+}
+
+void Session::set_damping(double kd) {
+  for (Lane& l : lanes_) {
+    l.sim.set_damping(kd);
+    model_changed(l);
+  }
+}
+
+void Session::set_gravity(const Vec3& g) {
+  for (Lane& l : lanes_) {
+    l.sim.set_gravity(g);
+    model_changed(l);
+  }
+}
+
+void Session::set_drag(double drag) {
+  for (Lane& l : lanes_) {
+    l.sim.set_drag(drag);
+    model_changed(l);
+  }
+}
+
+void Session::set_friction(double mu) {
+  for (Lane& l : lanes_) l.sim.set_friction(mu);
+}
+
+void Session::set_mass(double mass) {
+  for (Lane& l : lanes_) {
+    l.sim.set_mass(mass);
+    model_changed(l);
+  }
+}
+
+void Session::set_speed(double speed) { speed_ = std::clamp(speed, 1.0 / 16.0, 4.0); }
+
+void Session::reset() {
+  release();
+  for (Lane& l : lanes_) {
+    l.sim.reset();
+    l.history.clear();
+    for (auto& trail : l.trails) trail.clear();
+    l.exact = ExactOscillator::detect(l.sim.model(), l.sim.state());
+  }
+  target_ = scene_.state.t;
+  for (Lane& lane : lanes_) sample(lane);
+}
+
+double Session::stiffness() const {
+  const Model& m = primary().sim.model();
+  return m.materials.empty() ? 0.0 : m.materials.front().ks;
+}
+
+double Session::damping() const {
+  const Model& m = primary().sim.model();
+  return m.materials.empty() ? 0.0 : m.materials.front().kd;
+}
+
+double Session::mass() const { return primary().sim.model().mass[watched_]; }
+
+double Session::friction() const {
+  const Model& m = primary().sim.model();
+  if (!m.planes.empty()) return m.planes.front().friction;
+  if (!m.spheres.empty()) return m.spheres.front().friction;
+  return 0.0;
+}
+
+int Session::pick(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, double radius) const {
+  const State& s = primary().sim.state();
+  int best = -1;
+  double best_along = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < s.particle_count(); ++i) {
+    const Vec3 p = s.x.row(i).transpose() - origin;
+    const double along = p.dot(direction);
+    if (along < 0.0) continue;
+    const double off = (p - along * direction).norm();
+    // Of the particles under the cursor, the nearest the eye.
+    if (off <= radius && along < best_along) {
+      best = i;
+      best_along = along;
+    }
+  }
+  return best;
+}
+
+int Session::nearest(const Vec3& point) const {
+  const State& s = primary().sim.state();
+  int best = 0;
+  (s.x.rowwise() - point.transpose()).rowwise().squaredNorm().minCoeff(&best);
+  return best;
+}
+
+void Session::grab(int particle) {
+  if (particle < 0 || particle >= scene_.model.particle_count()) return;
+  grabbed_ = particle;
+  drag_target_ = primary().sim.state().x.row(particle).transpose();
+  for (Lane& l : lanes_)
+    if (!l.sim.diverged()) l.sim.grab(particle);
+}
+
+void Session::drag_to(const Vec3& target) {
+  if (grabbed_ >= 0) drag_target_ = target;
+}
+
+void Session::release() {
+  if (grabbed_ < 0) return;
+  for (Lane& l : lanes_)
+    if (!l.sim.diverged()) l.sim.release();
+  grabbed_ = -1;
+  drag_target_.reset();
+  path_.reset();
+}
+
+void Session::watch(int particle) {
+  if (particle < 0 || particle >= scene_.model.particle_count()) return;
+  watched_ = particle;
+  for (Lane& l : lanes_) l.history.clear();
+}
+
+void Session::play(Script script) {
+  script_ = std::move(script);
+  next_event_ = 0;
+  path_.reset();
+}
+
+void Session::apply(const ScriptEvent& e) {
+  switch (e.kind) {
+    case ScriptEvent::Kind::Grab: grab(e.near ? nearest(*e.near) : e.particle); break;
+    case ScriptEvent::Kind::Path:
+    case ScriptEvent::Kind::Move: {
+      if (grabbed_ < 0) break;
+      auto path = e.path;
+      // A move, or a path whose first waypoint is later than its event, starts from where the
+      // particle is, so that nothing jumps.
+      if (path.front().first > 0.0) path.insert(path.begin(), {0.0, *drag_target_});
+      path_ = {{e.t, std::move(path)}};
+      break;
+    }
+    case ScriptEvent::Kind::Release: release(); break;
+    case ScriptEvent::Kind::Pause: paused_ = true; break;
+    case ScriptEvent::Kind::Resume: paused_ = false; break;
+    case ScriptEvent::Kind::Reset: reset(); break;
+    case ScriptEvent::Kind::Set:
+      if (e.method) set_method(*e.method);  // (in compare mode the lanes keep theirs)
+      if (e.ks) set_stiffness(*e.ks);
+      if (e.kd) set_damping(*e.kd);
+      if (e.dt) set_dt(*e.dt);
+      if (e.substeps) set_substeps(*e.substeps);
+      if (e.gravity) set_gravity(*e.gravity);
+      if (e.drag) set_drag(*e.drag);
+      if (e.friction) set_friction(*e.friction);
+      if (e.mass) set_mass(*e.mass);
+      if (e.speed) set_speed(*e.speed);
+      break;
+  }
+}
+
+}  // namespace springlab::app

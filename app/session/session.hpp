@@ -1,0 +1,125 @@
+// A Session: one scene being shown, in the window or headless. It owns the simulations (one, or
+// two to four side by side in compare mode, each a "lane" with its own method), the frame clock,
+// what the user holds with the mouse, the script being played and the charts' history. The UI
+// and the headless renderer change it only through these functions, which the tests call too.
+//
+// Frames: frame k is shown at presentation time k / fps. Unless paused, a frame advances the
+// simulated time by speed / fps, in whole steps of dt, so frame k shows the state after
+// floor(simulated time / dt) steps: exactly k / fps at speed 1 whenever dt divides 1 / fps (the
+// shipped scenes' steps do), and never more than one step short otherwise. Nothing depends on
+// the wall clock, so the same inputs give the same frames.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "session/history.hpp"
+#include "springlab/exact.hpp"
+#include "springlab/scene.hpp"
+#include "springlab/script.hpp"
+#include "springlab/simulation.hpp"
+
+namespace springlab::app {
+
+struct Lane {
+  Simulation sim;
+  History history;
+  std::optional<ExactOscillator> exact;  // from the last change of the model
+  std::vector<std::vector<Vec3>> trails;  // one per scene.trails particle, oldest first
+};
+
+class Session {
+ public:
+  static constexpr std::size_t kMaxLanes = 4;
+  static constexpr std::size_t kTrailLength = 240;  // frames
+
+  Session(Scene scene, SimulationSettings settings, double fps = 60.0);
+
+  const Scene& scene() const { return scene_; }
+  std::span<Lane> lanes() { return lanes_; }
+  std::span<const Lane> lanes() const { return lanes_; }
+  const Lane& primary() const { return lanes_.front(); }
+
+  // One frame: plays the script events due, moves what is held, steps every lane that has not
+  // diverged, samples the history.
+  void advance_frame();
+  std::int64_t frame() const { return frame_; }
+  double fps() const { return fps_; }
+  double presentation_time() const { return static_cast<double>(frame_) / fps_; }
+  double simulated_target() const { return target_; }
+
+  // Compare mode: the same scene with 2 to 4 methods at once; an empty list returns to one lane
+  // with the first method. Every lane restarts from the initial state.
+  void set_compare(const std::vector<Method>& methods);
+  bool comparing() const { return lanes_.size() > 1; }
+
+  // Parameters, for every lane.
+  void set_method(Method method);  // one lane: switches it at once, mid-motion
+  Method method() const { return lanes_.front().sim.settings().method; }
+  void set_dt(double dt);
+  void set_substeps(int substeps);
+  void set_tolerance(double tolerance);
+  void set_stiffness(double ks);
+  void set_damping(double kd);
+  void set_gravity(const Vec3& g);
+  void set_drag(double drag);
+  void set_friction(double mu);
+  void set_mass(double mass);
+  void set_speed(double speed);  // 1/16 to 4
+  double speed() const { return speed_; }
+  void set_paused(bool paused) { paused_ = paused; }
+  bool paused() const { return paused_; }
+  void step_once();  // one step of dt in every lane, for single-stepping while paused
+  void reset();      // every lane back to the initial state; the script's clock goes on
+
+  // What the sliders show: the scene's first material, mass and collider, as now set.
+  double stiffness() const;
+  double damping() const;
+  double mass() const;
+  double friction() const;
+
+  // Dragging. pick() returns the particle nearest a ray within `radius` (m), or -1.
+  int pick(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, double radius) const;
+  int nearest(const Vec3& point) const;
+  void grab(int particle);
+  void drag_to(const Vec3& target);
+  void release();
+  int grabbed() const { return grabbed_; }
+  std::optional<Vec3> drag_target() const { return drag_target_; }
+
+  // The particle whose position and phase the charts show.
+  int watched() const { return watched_; }
+  int watched_axis() const { return watched_axis_; }
+  void watch(int particle);
+
+  // Scripts.
+  void play(Script script);
+  const std::optional<Script>& script() const { return script_; }
+  std::size_t script_next() const { return next_event_; }
+
+ private:
+  void apply(const ScriptEvent& event);
+  void model_changed(Lane& lane);
+  void sample(Lane& lane);
+  Lane make_lane(Method method) const;
+
+  Scene scene_;
+  SimulationSettings settings_;
+  std::vector<Lane> lanes_;
+  double fps_;
+  std::int64_t frame_ = 0;
+  double target_ = 0.0;  // simulated time the lanes are to reach
+  double speed_ = 1.0;
+  bool paused_ = false;
+  int grabbed_ = -1;
+  std::optional<Vec3> drag_target_;
+  int watched_ = 0, watched_axis_ = 0;
+  std::optional<Script> script_;
+  std::size_t next_event_ = 0;
+  std::optional<std::pair<double, std::vector<std::pair<double, Vec3>>>> path_;  // start, waypoints
+};
+
+}  // namespace springlab::app

@@ -1,0 +1,34 @@
+#include "ui/actions.hpp"
+
+namespace springlab::ui {
+
+void perform(Action action, app::Session& session, UiState& ui) {
+  switch (action) {
+    case Action::TogglePause: session.set_paused(!session.paused()); break;
+    case Action::Step:
+      session.set_paused(true);
+      session.step_once();
+      break;
+    case Action::Reset: session.reset(); break;
+    case Action::TogglePanels: ui.panels = !ui.panels; break;
+    case Action::ToggleHelp: ui.help = !ui.help; break;
+    case Action::ToggleCompare: {
+      if (session.comparing()) {
+        session.set_compare({});
+        break;
+      }
+      auto chosen = compare_methods(ui);
+      if (chosen.size() < 2) chosen = session.scene().methods;
+      if (chosen.size() < 2) chosen = {Method::Euler, Method::SymplecticEuler, Method::RK4, Method::ImplicitEuler};
+      session.set_compare(chosen);
+      break;
+    }
+    default: {
+      const int k = static_cast<int>(action) - static_cast<int>(Action::Method1);
+      if (!session.comparing()) session.set_method(methods()[k].id);
+      break;
+    }
+  }
+}
+
+}  // namespace springlab::ui

@@ -1,0 +1,393 @@
+#include "ui/panels.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "chart/imgui_chart.hpp"
+#include "draw/palette.hpp"
+
+namespace springlab::ui {
+
+namespace {
+
+constexpr ImGuiWindowFlags kPanel = ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove |
+                                    ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
+
+ImVec4 v4(const draw::Rgba& c) { return ImVec4(c.r, c.g, c.b, c.a); }
+
+const ImVec4 kSafe(0.35f, 0.85f, 0.45f, 1), kNear(1.0f, 0.75f, 0.2f, 1), kBeyond(1.0f, 0.35f, 0.3f, 1),
+    kNeutral(0.55f, 0.75f, 1.0f, 1);
+
+bool slider(const char* label, double& value, double lo, double hi, bool log, const char* format = "%.3g") {
+  float v = static_cast<float>(value);
+  const bool changed = ImGui::SliderFloat(label, &v, static_cast<float>(lo), static_cast<float>(hi), format,
+                                          log ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None);
+  if (changed) value = v;
+  return changed;
+}
+
+std::string fmt(const char* format, double x) {
+  char s[64];
+  std::snprintf(s, sizeof s, format, x);
+  return s;
+}
+
+// The stability gauge of one lane: h w_max against the method's limit, on one row (plus the
+// reason on the next when `explain`).
+void gauge(app::Lane& lane, float width, bool explain) {
+  Simulation& sim = lane.sim;
+  const MethodInfo& m = method_info(sim.settings().method);
+  const double h = sim.h();
+  const StabilityEstimate& e = sim.stability();
+  const double limit = sim.stable_step();
+  double fraction;
+  ImVec4 color;
+  std::string verdict;
+  if (std::isnan(limit)) {
+    fraction = 0.5;
+    color = kNeutral;
+    verdict = "adaptive";
+  } else if (std::isinf(limit)) {
+    fraction = std::min(1.0, h * e.w_max / 10.0) * 0.6;
+    color = kSafe;
+    verdict = "always stable";
+  } else if (limit == 0.0) {
+    fraction = 1.0;
+    color = kBeyond;
+    verdict = "never stable";
+  } else {
+    const double ratio = h / limit;
+    fraction = std::min(1.0, ratio / 1.5);
+    color = ratio > 1.0 ? kBeyond : ratio > 0.8 ? kNear : kSafe;
+    verdict = fmt(ratio > 1.0 ? "beyond: %.2fx" : ratio > 0.8 ? "near: %.2fx" : "safe: %.2fx", ratio);
+  }
+  if (sim.diverged()) {
+    color = kBeyond;
+    verdict = fmt("diverged at t = %.3g s", sim.divergence()->t);
+  }
+  const float label_w = ImGui::CalcTextSize("Symplectic Euler ").x;
+  ImGui::TextColored(v4(draw::method_color(m.id)), "%s", m.label);
+  ImGui::SameLine(label_w + ImGui::GetStyle().WindowPadding.x);
+  // The bar: the limit sits at two thirds of it.
+  const float bar_w = width * 0.26f;
+  const ImVec2 p = ImGui::GetCursorScreenPos();
+  const float line_h = ImGui::GetTextLineHeight();
+  const float bar_h = line_h * 0.7f;
+  const ImVec2 q(p.x, p.y + 0.5f * (line_h - bar_h));
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  dl->AddRectFilled(q, ImVec2(q.x + bar_w, q.y + bar_h), ImGui::GetColorU32(ImGuiCol_FrameBg), 3.0f);
+  dl->AddRectFilled(q, ImVec2(q.x + bar_w * static_cast<float>(fraction), q.y + bar_h), ImGui::GetColorU32(color), 3.0f);
+  if (std::isfinite(limit) && limit > 0.0) {
+    const float x = q.x + bar_w / 1.5f;
+    dl->AddLine(ImVec2(x, q.y - 3), ImVec2(x, q.y + bar_h + 3), IM_COL32_WHITE, 2.0f);
+  }
+  ImGui::Dummy(ImVec2(bar_w, line_h));
+  ImGui::SameLine();
+  ImGui::TextColored(color, "%s", verdict.c_str());
+  if (explain) {
+    if (std::isfinite(limit) && limit > 0.0)
+      ImGui::TextWrapped("h w_max = %.3g, limit %.3g (h = %.3g s)", h * e.w_max, limit * e.w_max, limit);
+    else
+      ImGui::Text("h w_max = %.3g", h * e.w_max);
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + width);
+    ImGui::TextDisabled("%s", m.stability);
+    ImGui::PopTextWrapPos();
+  }
+}
+
+chart::Series series(const std::string& label, const draw::Rgba& color, const app::Series& x,
+                     const app::Series& y, bool dashed = false) {
+  chart::Series s;
+  s.label = label;
+  s.color = color;
+  s.dashed = dashed;
+  const std::size_t n = std::min(x.size(), y.size());
+  s.x.resize(n);
+  s.y.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    s.x[k] = x[x.size() - n + k];
+    s.y[k] = y[y.size() - n + k];
+  }
+  return s;
+}
+
+void charts(app::Session& session, float width, float height) {
+  const bool compare = session.comparing();
+  const float w = (width - 2 * ImGui::GetStyle().ItemSpacing.x) / 3.0f;
+  const draw::Rgba white{0.95f, 0.95f, 0.95f, 1}, ke{1.0f, 0.55f, 0.25f, 1}, pe{0.45f, 0.7f, 1.0f, 1},
+      lost{0.7f, 0.7f, 0.7f, 1};
+
+  chart::Chart energy;
+  energy.title = "Energy";
+  energy.x.label = "t (s)";
+  energy.y.label = "J";
+  for (const app::Lane& lane : session.lanes()) {
+    const app::History& h = lane.history;
+    const draw::Rgba c = draw::method_color(lane.sim.settings().method);
+    const std::string name = method_info(lane.sim.settings().method).name;
+    if (!compare) {
+      energy.series.push_back(series("kinetic", ke, h.t, h.kinetic));
+      energy.series.push_back(series("potential", pe, h.t, h.potential));
+      energy.series.push_back(series("total", white, h.t, h.total));
+    } else {
+      energy.series.push_back(series(name, c, h.t, h.total));
+    }
+    // Total plus what damping, drag and friction took: flat unless the method itself drifts.
+    chart::Series kept = series(compare ? "" : "total + lost", compare ? c : lost, h.t, h.total, true);
+    for (std::size_t k = 0; k < kept.y.size(); ++k)
+      kept.y[k] += h.dissipated[h.dissipated.size() - kept.y.size() + k];
+    energy.series.push_back(kept);
+  }
+  chart::chart_widget("##energy", energy, ImVec2(w, height));
+  ImGui::SameLine();
+
+  const char* axis = "xyz";
+  const int a = session.watched_axis();
+  chart::Chart position;
+  position.title = "Particle " + std::to_string(session.watched()) + ", " + std::string(1, axis[a]) + "(t)";
+  position.x.label = "t (s)";
+  position.y.label = std::string(1, axis[a]) + " (m)";
+  for (const app::Lane& lane : session.lanes()) {
+    const draw::Rgba c = draw::method_color(lane.sim.settings().method);
+    position.series.push_back(series(method_info(lane.sim.settings().method).name, c, lane.history.t, lane.history.x));
+  }
+  if (session.primary().history.exact_x.size() > 0)
+    position.series.push_back(series("exact", white, session.primary().history.t, session.primary().history.exact_x, true));
+  chart::chart_widget("##position", position, ImVec2(w, height));
+  ImGui::SameLine();
+
+  chart::Chart phase;
+  phase.title = "Phase";
+  phase.x.label = std::string(1, axis[a]) + " (m)";
+  phase.y.label = "v (m/s)";
+  phase.legend = false;
+  for (const app::Lane& lane : session.lanes())
+    phase.series.push_back(series("", draw::method_color(lane.sim.settings().method), lane.history.x, lane.history.v));
+  chart::chart_widget("##phase", phase, ImVec2(w, height));
+}
+
+}  // namespace
+
+Ranges Ranges::of(const app::Session& session) {
+  Ranges r;
+  r.ks = session.stiffness();
+  r.kd = session.damping();
+  r.dt = session.primary().sim.settings().dt;
+  r.mass = session.mass();
+  r.drag = session.primary().sim.model().drag;
+  r.gravity = session.primary().sim.model().gravity.norm();
+  return r;
+}
+
+std::vector<Method> compare_methods(const UiState& ui) {
+  std::vector<Method> out;
+  for (const MethodInfo& m : methods())
+    if (ui.compare_choice[static_cast<int>(m.id)] && out.size() < app::Session::kMaxLanes) out.push_back(m.id);
+  return out;
+}
+
+namespace {
+// The layout, at scale 1.
+constexpr float kPad = 8.0f, kLeftWidth = 360.0f, kChartHeight = 250.0f;
+}  // namespace
+
+draw::Viewport scene_viewport(const UiState& ui, int width, int height) {
+  if (!ui.panels) return {0, 0, width, height};
+  const int left = static_cast<int>((kLeftWidth + 2 * kPad) * ui.scale);
+  const int bottom = static_cast<int>((kChartHeight + 2 * kPad) * ui.scale);
+  if (width - left < 64 || height - bottom < 64) return {0, 0, width, height};
+  return {left, 0, width - left, height - bottom};
+}
+
+Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats, int width, int height) {
+  Requests requests;
+  const float s = ui.scale;
+  const float pad = kPad * s;
+  const float left_w = kLeftWidth * s;
+  const float chart_h = kChartHeight * s;
+
+  if (ui.panels) {
+    // Controls.
+    ImGui::SetNextWindowPos(ImVec2(pad, pad));
+    ImGui::SetNextWindowSize(ImVec2(left_w, static_cast<float>(height) - 2 * pad));
+    ImGui::Begin("springlab", nullptr, kPanel);
+    ImGui::PushItemWidth(-130.0f * s);
+    ImGui::TextColored(kNeutral, "%s", ui.scene_name.c_str());
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextDisabled("%s", session.scene().description.c_str());
+    ImGui::PopTextWrapPos();
+
+    if (!ui.scenes.empty() && ImGui::BeginCombo("scene", ui.scene_name.c_str())) {
+      for (const std::string& name : ui.scenes)
+        if (ImGui::Selectable(name.c_str(), name == ui.scene_name)) requests.load = name;
+      ImGui::EndCombo();
+    }
+    ImGui::InputTextWithHint("##open", "or a scene file...", ui.open_path, sizeof ui.open_path);
+    ImGui::SameLine();
+    if (ImGui::Button("Open") && ui.open_path[0]) requests.load = std::string(ui.open_path);
+
+    ImGui::Separator();
+    if (!session.comparing()) {
+      const MethodInfo& current = method_info(session.method());
+      if (ImGui::BeginCombo("method", current.label)) {
+        int key = 1;
+        for (const MethodInfo& m : methods()) {
+          const std::string label = std::to_string(key++) + "  " + m.label;
+          ImGui::PushStyleColor(ImGuiCol_Text, v4(draw::method_color(m.id)));
+          if (ImGui::Selectable(label.c_str(), m.id == current.id)) session.set_method(m.id);
+          ImGui::PopStyleColor();
+        }
+        ImGui::EndCombo();
+      }
+    }
+    // Stability: the gauge of each lane, right under the method it judges.
+    const float inner_w = left_w - 2 * ImGui::GetStyle().WindowPadding.x - ImGui::GetStyle().ScrollbarSize;
+    const StabilityEstimate& e = session.lanes()[0].sim.stability();
+    ImGui::TextDisabled("w_max = %.4g rad/s, h = %.3g s", e.w_max, session.lanes()[0].sim.h());
+    for (app::Lane& lane : session.lanes()) gauge(lane, inner_w, !session.comparing());
+    ImGui::Separator();
+
+    Simulation& sim = session.lanes()[0].sim;
+    double ks = session.stiffness(), kd = session.damping(), dt = sim.settings().dt, mass = session.mass();
+    double g = sim.model().gravity.norm(), drag = sim.model().drag, mu = session.friction();
+    double tol = sim.settings().step.tolerance;
+    int substeps = sim.settings().substeps;
+    if (slider("k_s (N/m)", ks, ui.ranges.ks / 100, ui.ranges.ks * 100, true)) session.set_stiffness(ks);
+    const double kd_max = std::max(10 * ui.ranges.kd, 2 * std::sqrt(ui.ranges.ks * ui.ranges.mass));
+    if (slider("k_d (N s/m)", kd, 0.0, kd_max, true)) session.set_damping(kd);
+    if (slider("dt (s)", dt, ui.ranges.dt / 100, std::min(1.0, std::max(0.1, ui.ranges.dt * 100)), true, "%.3g"))
+      session.set_dt(dt);
+    if (ImGui::SliderInt("sub-steps", &substeps, 1, 64)) session.set_substeps(substeps);
+    if (slider("mass (kg)", mass, ui.ranges.mass / 100, ui.ranges.mass * 100, true)) session.set_mass(mass);
+    if (slider("gravity (m/s^2)", g, 0.0, 30.0, false, "%.2f")) {
+      const Vec3 dir = sim.model().gravity.norm() > 0 ? Vec3(sim.model().gravity.normalized()) : Vec3(-Vec3::UnitY());
+      session.set_gravity(g * dir);
+    }
+    if (slider("drag (N s/m)", drag, 0.0, std::max(1.0, 100 * ui.ranges.drag), true)) session.set_drag(drag);
+    if (sim.model().has_colliders() && slider("friction", mu, 0.0, 2.0, false, "%.2f")) session.set_friction(mu);
+    if (method_info(session.method()).adaptive && slider("tolerance", tol, 1e-10, 1e-1, true, "%.1e"))
+      session.set_tolerance(tol);
+    int speed_exp = static_cast<int>(std::lround(std::log2(session.speed())));
+    const char* speeds[] = {"1/16", "1/8", "1/4", "1/2", "1", "2", "4"};
+    if (ImGui::SliderInt("speed", &speed_exp, -4, 2, speeds[speed_exp + 4]))
+      session.set_speed(std::pow(2.0, speed_exp));
+
+    if (ImGui::Button(session.paused() ? "Resume (space)" : "Pause (space)")) session.set_paused(!session.paused());
+    ImGui::SameLine();
+    if (ImGui::Button("Step (S)")) {
+      session.set_paused(true);
+      session.step_once();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Reset (R)")) session.reset();
+    ImGui::Text("t = %.3f s", session.primary().sim.state().t);
+    if (session.paused()) {
+      ImGui::SameLine();
+      ImGui::TextColored(kNear, " paused");
+    }
+    if (session.speed() != 1.0) {
+      ImGui::SameLine();
+      ImGui::TextColored(kNear, " slow motion x%g", session.speed());
+    }
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextDisabled("a frame: %lld force evaluations%s, %.2f ms simulating, %.2f ms drawing",
+                        static_cast<long long>(stats.force_evals),
+                        stats.linear_solves > 0 ? fmt(" and %.0f solves", static_cast<double>(stats.linear_solves)).c_str() : "",
+                        stats.sim_ms, stats.draw_ms);
+    ImGui::PopTextWrapPos();
+
+    if (ImGui::CollapsingHeader("Compare methods")) {
+    if (ImGui::Button(session.comparing() ? "Single view (C)" : "Compare (C)")) {
+      if (session.comparing()) session.set_compare({});
+      else if (compare_methods(ui).size() >= 2) session.set_compare(compare_methods(ui));
+    }
+    ImGui::SameLine();
+    ImGui::TextDisabled("tick 2 to 4:");
+    if (ImGui::BeginTable("compare", 2)) {
+      for (const MethodInfo& m : methods()) {
+        ImGui::TableNextColumn();
+        ImGui::PushStyleColor(ImGuiCol_Text, v4(draw::method_color(m.id)));
+        ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(3 * s, 1 * s));
+        ImGui::Checkbox(m.name, &ui.compare_choice[static_cast<int>(m.id)]);
+        ImGui::PopStyleVar();
+        ImGui::PopStyleColor();
+      }
+      ImGui::EndTable();
+    }
+    }
+
+    if (ImGui::CollapsingHeader("View")) {
+    ImGui::Checkbox("springs", &ui.view.springs);
+    ImGui::SameLine();
+    ImGui::Checkbox("particles", &ui.view.particles);
+    ImGui::SameLine();
+    ImGui::Checkbox("surface", &ui.view.surfaces);
+    double strain = ui.view.strain_scale;
+    if (slider("strain scale", strain, 1e-3, 0.5, true, "+-%.3f")) ui.view.strain_scale = strain;
+    }
+    ImGui::PopItemWidth();
+    ImGui::End();
+
+    // Charts.
+    const float charts_x = left_w + 2 * pad;
+    ImGui::SetNextWindowPos(ImVec2(charts_x, static_cast<float>(height) - chart_h - pad));
+    ImGui::SetNextWindowSize(ImVec2(static_cast<float>(width) - charts_x - pad, chart_h));
+    ImGui::Begin("Charts", nullptr, kPanel | ImGuiWindowFlags_NoTitleBar);
+    charts(session, ImGui::GetContentRegionAvail().x, ImGui::GetContentRegionAvail().y);
+    ImGui::End();
+  }
+
+  // Divergence in the single view: a banner, and the way out.
+  const Simulation& first = session.primary().sim;
+  if (!session.comparing() && first.diverged()) {
+    ImGui::SetNextWindowPos(ImVec2(0.5f * width, 0.30f * height), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowSize(ImVec2(560.0f * s, 0.0f));
+    ImGui::PushStyleColor(ImGuiCol_WindowBg, ImVec4(0.35f, 0.05f, 0.05f, 0.95f));
+    ImGui::Begin("Diverged", nullptr, kPanel | ImGuiWindowFlags_AlwaysAutoResize);
+    ImGui::Text("The simulation diverged at t = %.4g s", first.divergence()->t);
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextUnformatted(first.divergence()->message().c_str());
+    ImGui::PopTextWrapPos();
+    if (ImGui::Button("Reset (R)")) session.reset();
+    ImGui::End();
+    ImGui::PopStyleColor();
+  }
+
+  if (!ui.message.empty()) {
+    ImGui::SetNextWindowPos(ImVec2(0.5f * width, 0.12f * height), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowSize(ImVec2(600.0f * s, 0.0f));
+    ImGui::Begin("Message", nullptr, kPanel | ImGuiWindowFlags_AlwaysAutoResize);
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextColored(kNear, "%s", ui.message.c_str());
+    ImGui::PopTextWrapPos();
+    if (ImGui::Button("OK")) ui.message.clear();
+    ImGui::End();
+  }
+
+  if (ui.help) {
+    ImGui::SetNextWindowPos(ImVec2(0.5f * width, 0.5f * height), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::Begin("Keys", &ui.help, kPanel | ImGuiWindowFlags_AlwaysAutoResize);
+    const char* keys[][2] = {{"space", "pause or resume"}, {"S", "one step"}, {"R", "reset"},
+                             {"1 - 9", "choose a method"}, {"C", "compare mode on or off"},
+                             {"H", "hide or show the panels"}, {"F1", "this help"},
+                             {"left drag", "move a particle (release lets it go with its speed)"},
+                             {"right drag", "orbit the camera (3D) / pan (2D)"},
+                             {"middle drag", "pan"}, {"wheel", "zoom"}, {"Esc", "quit"}};
+    if (ImGui::BeginTable("keys", 2)) {
+      for (const auto& k : keys) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextColored(kNeutral, "%s", k[0]);
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(k[1]);
+      }
+      ImGui::EndTable();
+    }
+    ImGui::End();
+  }
+  return requests;
+}
+
+}  // namespace springlab::ui

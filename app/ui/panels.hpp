@@ -1,0 +1,58 @@
+// The app's panels, drawn with Dear ImGui: controls (scene, method, k_s, k_d, dt, sub-steps,
+// mass, gravity, drag, friction, speed; pause, step, reset, compare), the stability gauge and
+// the cost of a frame, the charts (energy, the watched particle's position with the exact
+// solution, its phase plot), the divergence banner and the help overlay. The same panels are
+// drawn in the window and, with `render --ui`, headlessly. They change the session only through
+// its public functions.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "draw/scene_frame.hpp"
+#include "session/session.hpp"
+
+namespace springlab::ui {
+
+// The cost of the last frame, measured by whoever runs the frame.
+struct FrameStats {
+  double sim_ms = 0.0, draw_ms = 0.0;
+  std::int64_t force_evals = 0, linear_solves = 0, solver_iterations = 0;
+};
+
+// Slider ranges, from the scene as loaded.
+struct Ranges {
+  double ks = 100, kd = 0, dt = 0.01, mass = 1, drag = 0, gravity = 0;
+  static Ranges of(const app::Session& session);
+};
+
+struct UiState {
+  float scale = 1.0f;
+  bool panels = true;  // H hides them
+  bool help = false;   // F1
+  draw::ViewOptions view;
+  Ranges ranges;
+  std::vector<std::string> scenes;  // the picker's list
+  std::string scene_name;
+  char open_path[512] = "";
+  std::string message;  // shown in a banner until dismissed (a file that failed to load)
+  std::array<bool, 9> compare_choice{};
+};
+
+struct Requests {
+  std::optional<std::string> load;  // a scene name or file to open
+  bool quit = false;
+};
+
+Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats, int width, int height);
+
+// The part of a width x height framebuffer the panels leave to the scene.
+draw::Viewport scene_viewport(const UiState& ui, int width, int height);
+
+// The methods ticked for compare mode, in table order (at most four).
+std::vector<Method> compare_methods(const UiState& ui);
+
+}  // namespace springlab::ui

@@ -1,0 +1,57 @@
+#include "ui/theme.hpp"
+
+#include <imgui.h>
+
+#include <filesystem>
+
+namespace springlab::ui {
+
+void apply_theme(float scale) {
+  ImGuiIO& io = ImGui::GetIO();
+  io.Fonts->Clear();
+  const char* font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+  std::error_code ec;
+  if (std::filesystem::exists(font, ec)) {
+    ImFontConfig config;
+    config.OversampleH = 2;
+    config.OversampleV = 2;
+    io.Fonts->AddFontFromFileTTF(font, kFontSize * scale, &config);
+  } else {
+    ImFontConfig config;
+    config.SizePixels = 13.0f * scale;  // ProggyClean at a whole multiple stays crisp enough
+    io.Fonts->AddFontDefault(&config);
+  }
+
+  ImGui::StyleColorsDark();
+  ImGuiStyle& style = ImGui::GetStyle();
+  style.WindowRounding = 6.0f;
+  style.FrameRounding = 4.0f;
+  style.GrabRounding = 4.0f;
+  style.WindowBorderSize = 1.0f;
+  style.FramePadding = ImVec2(8, 5);
+  style.ItemSpacing = ImVec2(10, 7);
+  style.WindowPadding = ImVec2(12, 10);
+  style.GrabMinSize = 14.0f;
+  ImVec4* c = style.Colors;
+  // Near-white text on a near-black, slightly opaque background: readable from the back row.
+  c[ImGuiCol_Text] = ImVec4(0.96f, 0.97f, 0.98f, 1.0f);
+  c[ImGuiCol_TextDisabled] = ImVec4(0.62f, 0.65f, 0.70f, 1.0f);
+  c[ImGuiCol_WindowBg] = ImVec4(0.05f, 0.06f, 0.07f, 0.90f);
+  c[ImGuiCol_PopupBg] = ImVec4(0.07f, 0.08f, 0.09f, 0.97f);
+  c[ImGuiCol_Border] = ImVec4(0.45f, 0.48f, 0.53f, 0.60f);
+  c[ImGuiCol_FrameBg] = ImVec4(0.16f, 0.18f, 0.21f, 1.0f);
+  c[ImGuiCol_FrameBgHovered] = ImVec4(0.24f, 0.27f, 0.32f, 1.0f);
+  c[ImGuiCol_FrameBgActive] = ImVec4(0.28f, 0.32f, 0.38f, 1.0f);
+  c[ImGuiCol_TitleBg] = ImVec4(0.10f, 0.12f, 0.15f, 1.0f);
+  c[ImGuiCol_TitleBgActive] = ImVec4(0.14f, 0.20f, 0.28f, 1.0f);
+  c[ImGuiCol_SliderGrab] = ImVec4(0.40f, 0.72f, 1.00f, 1.0f);
+  c[ImGuiCol_SliderGrabActive] = ImVec4(0.60f, 0.85f, 1.00f, 1.0f);
+  c[ImGuiCol_Button] = ImVec4(0.20f, 0.36f, 0.55f, 1.0f);
+  c[ImGuiCol_ButtonHovered] = ImVec4(0.28f, 0.46f, 0.68f, 1.0f);
+  c[ImGuiCol_ButtonActive] = ImVec4(0.34f, 0.54f, 0.78f, 1.0f);
+  c[ImGuiCol_CheckMark] = ImVec4(0.55f, 0.85f, 1.00f, 1.0f);
+  c[ImGuiCol_Header] = ImVec4(0.20f, 0.36f, 0.55f, 0.8f);
+  style.ScaleAllSizes(scale);
+}
+
+}  // namespace springlab::ui

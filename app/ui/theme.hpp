@@ -1,0 +1,14 @@
+// Dear ImGui set up for a classroom: a high-contrast dark theme, a large TrueType font
+// (DejaVu Sans from Debian's fonts-dejavu-core, or ImGui's own font scaled cleanly when it is
+// missing), everything scaled by one factor (--ui-scale, or the monitor's content scale).
+#pragma once
+
+namespace springlab::ui {
+
+// Call after ImGui::CreateContext() and before the renderer backend builds the font atlas.
+void apply_theme(float scale);
+
+// The font's pixel size at scale 1.
+inline constexpr float kFontSize = 17.0f;
+
+}  // namespace springlab::ui
