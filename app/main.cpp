@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   commands["run"] = add_run_command(app);
   commands["list"] = add_list_command(app);
   commands["render"] = add_render_command(app);
+  commands["view"] = add_view_command(app);
 
   try {
     app.parse(argc, argv);
@@ -49,8 +50,7 @@ int main(int argc, char** argv) {
   try {
     for (const auto& [name, command] : commands)
       if (app.got_subcommand(name)) return command();
-    std::fprintf(stderr, "springlab: the interactive app is not built yet; try springlab --help\n");
-    return kBadInput;
+    return default_view_command()();
   } catch (const springlab::InputError& e) {
     std::fprintf(stderr, "springlab: %s\n", e.what());
     return kBadInput;

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds, and starts springlab.
-#   With a display: the interactive app (extra arguments go to it, e.g. scripts/run.sh view rope).
-#   Without one: a demo run of every scene, headless, printing what it did.
+#   With a display:    the interactive app (scripts/run.sh view cloth opens another scene).
+#   Without a display: renders a demo video headlessly, out/demo.mp4, and says where it is.
+# Any arguments are passed to springlab: scripts/run.sh run rope --method verlet
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 "$root/scripts/setup.sh"
@@ -10,9 +11,10 @@ bin="$root/build/springlab"
 if [[ $# -gt 0 ]]; then
   exec "$bin" "$@"
 fi
-echo "No display and no arguments: simulating each shipped scene headlessly."
-for scene in $("$bin" list | awk '$1 == "scene" {print $2}'); do
-  echo
-  echo "== springlab run $scene"
-  "$bin" run "$scene" --duration 3 || echo "(exit status $?: see the message above)"
-done
+if [[ -n "${DISPLAY:-}" || -n "${WAYLAND_DISPLAY:-}" ]]; then
+  exec "$bin" view
+fi
+mkdir -p "$root/out"
+echo "No display: rendering the demo (the rope exercise, dragged, switched from explicit Euler to RK4) headlessly."
+"$bin" render rope --script "$root/assets/scripts/rope-drag-euler-to-rk4.json" --ui --video "$root/out/demo.mp4"
+echo "Demo video: $root/out/demo.mp4 (on a desktop, scripts/run.sh opens the app)"

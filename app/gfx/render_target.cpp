@@ -27,6 +27,24 @@ void RenderTarget::resize(int width, int height, int samples) {
   height_ = height;
   samples_ = samples;
 
+  // The plain framebuffer: the resolve target, or, with no multisampling, where everything is
+  // drawn (then it needs the depth buffer).
+  glGenFramebuffers(1, &fbo_);
+  glGenRenderbuffers(1, &color_);
+  glBindRenderbuffer(GL_RENDERBUFFER, color_);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_);
+  if (samples == 0) {
+    glGenRenderbuffers(1, &msaa_depth_);
+    glBindRenderbuffer(GL_RENDERBUFFER, msaa_depth_);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, msaa_depth_);
+  }
+  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    throw std::runtime_error("the framebuffer is incomplete");
+  if (samples == 0) return;
+
   glGenFramebuffers(1, &msaa_fbo_);
   glGenRenderbuffers(1, &msaa_color_);
   glGenRenderbuffers(1, &msaa_depth_);
@@ -39,23 +57,15 @@ void RenderTarget::resize(int width, int height, int samples) {
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, msaa_depth_);
   if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
     throw std::runtime_error("the multisampled framebuffer is incomplete");
-
-  glGenFramebuffers(1, &fbo_);
-  glGenRenderbuffers(1, &color_);
-  glBindRenderbuffer(GL_RENDERBUFFER, color_);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_);
-  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-    throw std::runtime_error("the resolve framebuffer is incomplete");
 }
 
 void RenderTarget::bind_for_drawing() const {
-  glBindFramebuffer(GL_FRAMEBUFFER, msaa_fbo_);
+  glBindFramebuffer(GL_FRAMEBUFFER, samples_ > 0 ? msaa_fbo_ : fbo_);
   glViewport(0, 0, width_, height_);
 }
 
 void RenderTarget::resolve() const {
+  if (samples_ == 0) return;  // drawn straight into the plain framebuffer
   glBindFramebuffer(GL_READ_FRAMEBUFFER, msaa_fbo_);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo_);
   glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);

@@ -1,6 +1,7 @@
 // Where every frame is drawn, in the window and headless alike: a multisampled framebuffer
 // object (4x where the driver allows, fewer where it does not) resolved into a plain one, which
-// is read back as RGBA rows from the top or blitted to a window.
+// is read back as RGBA rows from the top or blitted to a window. With 0 samples the frame is
+// drawn into the plain one directly.
 #pragma once
 
 #include <cstdint>

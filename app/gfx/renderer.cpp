@@ -230,9 +230,18 @@ void Renderer::draw_particles(const draw::Frame& frame) {
   glBindVertexArray(particle_vao_);
   glBindBuffer(GL_ARRAY_BUFFER, particle_instances_);
   glBufferData(GL_ARRAY_BUFFER, scratch_.size() * sizeof(float), scratch_.data(), GL_STREAM_DRAW);
-  glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+  // Multisampled: the soft edge becomes coverage; else it is blended.
+  GLint samples = 0;
+  glGetIntegerv(GL_SAMPLES, &samples);
+  if (samples > 0) {
+    glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+  } else {
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  }
   glDrawArraysInstanced(GL_TRIANGLES, 0, 6, static_cast<GLsizei>(frame.particles.size()));
   glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+  glDisable(GL_BLEND);
 }
 
 }  // namespace springlab::gfx

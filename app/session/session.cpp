@@ -81,6 +81,7 @@ void Session::advance_frame() {
     if (due > 0) sim.advance(static_cast<std::int64_t>(due));
   }
   ++frame_;
+  if (grabbed_ >= 0) drags_.back().to = primary().sim.state().x.row(grabbed_).transpose();
   for (Lane& lane : lanes_) sample(lane);
 }
 
@@ -232,6 +233,7 @@ void Session::grab(int particle) {
   if (particle < 0 || particle >= scene_.model.particle_count()) return;
   grabbed_ = particle;
   drag_target_ = primary().sim.state().x.row(particle).transpose();
+  drags_.push_back({particle, *drag_target_, *drag_target_});
   for (Lane& l : lanes_)
     if (!l.sim.diverged()) l.sim.grab(particle);
 }
@@ -242,6 +244,7 @@ void Session::drag_to(const Vec3& target) {
 
 void Session::release() {
   if (grabbed_ < 0) return;
+  drags_.back().to = primary().sim.state().x.row(grabbed_).transpose();
   for (Lane& l : lanes_)
     if (!l.sim.diverged()) l.sim.release();
   grabbed_ = -1;

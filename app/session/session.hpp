@@ -90,6 +90,14 @@ class Session {
   int grabbed() const { return grabbed_; }
   std::optional<Vec3> drag_target() const { return drag_target_; }
 
+  // Every drag: which particle, where it was grabbed and where it was let go (or is now, while
+  // still held).
+  struct DragRecord {
+    int particle;
+    Vec3 from, to;
+  };
+  const std::vector<DragRecord>& drags() const { return drags_; }
+
   // The particle whose position and phase the charts show.
   int watched() const { return watched_; }
   int watched_axis() const { return watched_axis_; }
@@ -116,6 +124,7 @@ class Session {
   bool paused_ = false;
   int grabbed_ = -1;
   std::optional<Vec3> drag_target_;
+  std::vector<DragRecord> drags_;
   int watched_ = 0, watched_axis_ = 0;
   std::optional<Script> script_;
   std::size_t next_event_ = 0;

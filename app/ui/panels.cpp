@@ -14,6 +14,9 @@ namespace {
 
 constexpr ImGuiWindowFlags kPanel = ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove |
                                     ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
+// The two docked panels sit where the scene is never drawn (scene_viewport), over the plain
+// background: filling them again would only cost time (on a software rasteriser, most of a frame).
+constexpr ImGuiWindowFlags kDocked = kPanel | ImGuiWindowFlags_NoBackground;
 
 ImVec4 v4(const draw::Rgba& c) { return ImVec4(c.r, c.g, c.b, c.a); }
 
@@ -212,7 +215,7 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
     // Controls.
     ImGui::SetNextWindowPos(ImVec2(pad, pad));
     ImGui::SetNextWindowSize(ImVec2(left_w, static_cast<float>(height) - 2 * pad));
-    ImGui::Begin("springlab", nullptr, kPanel);
+    ImGui::Begin("springlab", nullptr, ui.panels_over_scene ? kPanel : kDocked);
     ImGui::PushItemWidth(-130.0f * s);
     ImGui::TextColored(kNeutral, "%s", ui.scene_name.c_str());
     ImGui::PushTextWrapPos(0.0f);
@@ -334,7 +337,7 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
     const float charts_x = left_w + 2 * pad;
     ImGui::SetNextWindowPos(ImVec2(charts_x, static_cast<float>(height) - chart_h - pad));
     ImGui::SetNextWindowSize(ImVec2(static_cast<float>(width) - charts_x - pad, chart_h));
-    ImGui::Begin("Charts", nullptr, kPanel | ImGuiWindowFlags_NoTitleBar);
+    ImGui::Begin("Charts", nullptr, (ui.panels_over_scene ? kPanel : kDocked) | ImGuiWindowFlags_NoTitleBar);
     charts(session, ImGui::GetContentRegionAvail().x, ImGui::GetContentRegionAvail().y);
     ImGui::End();
   }

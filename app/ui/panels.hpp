@@ -33,6 +33,7 @@ struct UiState {
   float scale = 1.0f;
   bool panels = true;  // H hides them
   bool help = false;   // F1
+  bool panels_over_scene = false;  // the scene fills the whole frame (too small to share)
   draw::ViewOptions view;
   Ranges ranges;
   std::vector<std::string> scenes;  // the picker's list

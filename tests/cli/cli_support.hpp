@@ -40,10 +40,12 @@ struct TempDir {
   }
 };
 
-// Runs `springlab ARGS` (ARGS already shell-quoted where needed) from `cwd`.
-inline Result springlab(const std::string& args, const std::filesystem::path& cwd = ".") {
+// Runs `PREFIX springlab ARGS` (ARGS already shell-quoted where needed) from `cwd`; PREFIX is a
+// wrapper such as "xvfb-run -a ".
+inline Result springlab_with(const std::string& prefix, const std::string& args,
+                             const std::filesystem::path& cwd = ".") {
   TempDir io;
-  const std::string command = "cd '" + cwd.string() + "' && '" SPRINGLAB_EXECUTABLE "' " + args +
+  const std::string command = "cd '" + cwd.string() + "' && " + prefix + "'" SPRINGLAB_EXECUTABLE "' " + args +
                               " > '" + (io / "out").string() + "' 2> '" + (io / "err").string() + "'";
   const int raw = std::system(command.c_str());
   Result r;
@@ -51,6 +53,10 @@ inline Result springlab(const std::string& args, const std::filesystem::path& cw
   r.out = read_file(io / "out");
   r.err = read_file(io / "err");
   return r;
+}
+
+inline Result springlab(const std::string& args, const std::filesystem::path& cwd = ".") {
+  return springlab_with("", args, cwd);
 }
 
 inline void write_file(const std::filesystem::path& path, const std::string& text) {

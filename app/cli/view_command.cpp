@@ -1,0 +1,79 @@
+// springlab [view [SCENE]]: the interactive app. With --frames N it runs N frames, as fast as they
+// come, optionally writes a screenshot of the window, prints what happened and exits: how the
+// tests (under xvfb-run) and a course's CI use it.
+#include <memory>
+#include <sstream>
+
+#include "cli/commands.hpp"
+#include "cli/options.hpp"
+#include "springlab/error.hpp"
+#include "window/window_app.hpp"
+
+namespace springlab::app {
+
+namespace {
+
+struct ViewCli {
+  std::string scene = "rope";
+  SimOptions sim;
+  WindowOptions window;
+  std::optional<std::string> compare, size;
+  std::optional<long> frames;
+};
+
+int view(ViewCli& o) {
+  if (o.frames) check_option("--frames", static_cast<double>(*o.frames), 1, 1e7, false);
+  o.window.frames = o.frames;
+  check_option("--ui-scale", o.window.ui_scale, 0.5, 4.0, false);
+  if (o.window.msaa != -1) check_option("--msaa", o.window.msaa, 0, 16, false);
+  if (o.window.screenshot && !o.frames)
+    throw InputError("--screenshot: needs --frames N (the screenshot is taken after the N-th frame)");
+  if (o.size) {
+    char x = 0;
+    std::istringstream s(*o.size);
+    if (!(s >> o.window.width >> x >> o.window.height) || x != 'x' || !s.eof() || o.window.width < 320 ||
+        o.window.height < 240 || o.window.width > 7680 || o.window.height > 4320)
+      throw InputError("--size: must be WIDTHxHEIGHT, from 320x240 to 7680x4320, got '" + *o.size + "'");
+  }
+  if (o.compare) {
+    std::stringstream s(*o.compare);
+    for (std::string name; std::getline(s, name, ',');) {
+      const auto m = find_method(name);
+      if (!m) throw InputError("--compare: unknown method '" + name + "' (methods: " + method_names() + ")");
+      o.window.compare.push_back(*m);
+    }
+    if (o.window.compare.size() < 2 || o.window.compare.size() > 4)
+      throw InputError("--compare: give 2 to 4 methods separated by commas, e.g. euler,verlet");
+  }
+  return run_window(prepare(o.scene, o.sim), o.window);
+}
+
+void add_options(CLI::App& c, ViewCli& o) {
+  add_sim_options(c, o.sim, false);
+  c.add_option("--script", o.window.script, "play a scripted demo (JSON)");
+  c.add_option("--compare", o.compare, "start in compare mode with 2 to 4 methods, e.g. euler,verlet");
+  c.add_option("--frames", o.frames, "run N frames, then exit (with --screenshot: write one)");
+  c.add_option("--screenshot", o.window.screenshot, "after --frames N frames, write the window to this PNG");
+  c.add_option("--ui-scale", o.window.ui_scale, "size of the panels and text (times the monitor's scale)");
+  c.add_option("--size", o.size, "window size WIDTHxHEIGHT (default 1280x720)");
+  c.add_option("--msaa", o.window.msaa, "multisampling (default: 4 on a GPU, 0 on a software rasteriser)");
+}
+
+}  // namespace
+
+Command add_view_command(CLI::App& app) {
+  auto o = std::make_shared<ViewCli>();
+  CLI::App* c = app.add_subcommand("view", "the interactive app (opens a window)");
+  c->add_option("scene", o->scene, "scene name or JSON file (default: rope)");
+  add_options(*c, *o);
+  return [o] { return view(*o); };
+}
+
+Command default_view_command() {
+  return [] {
+    ViewCli o;
+    return view(o);
+  };
+}
+
+}  // namespace springlab::app

@@ -1,0 +1,124 @@
+// The window, run as a user (or a course's CI) runs it: under xvfb-run, springlab view SCENE
+// --frames N --screenshot FILE on every shipped scene; a script that drags a particle and
+// switches method; no display; bad options.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <regex>
+#include <set>
+
+#include "cli/cli_support.hpp"
+#include "io/png.hpp"
+
+namespace springlab::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+Result view(const std::string& args, const fs::path& cwd = ".") {
+  return springlab_with("xvfb-run -a -s '-screen 0 1280x720x24' ", "view " + args, cwd);
+}
+
+std::vector<std::string> scenes() {
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(std::string(SPRINGLAB_SOURCE_DIR) + "/assets/scenes"))
+    if (e.path().extension() == ".json") names.push_back(e.path().stem().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// Distinct colours, and bright (text) pixels, in a rectangle of an image.
+struct Content {
+  std::size_t colours = 0, bright = 0;
+};
+Content content(const app::Image& im, int x0, int y0, int x1, int y1) {
+  std::set<std::uint32_t> colours;
+  Content c;
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) {
+      const std::uint8_t* p = im.rgba.data() + (static_cast<std::size_t>(y) * im.width + x) * 4;
+      colours.insert(p[0] << 16 | p[1] << 8 | p[2]);
+      if (p[0] > 200 && p[1] > 200 && p[2] > 200) ++c.bright;
+    }
+  c.colours = colours.size();
+  return c;
+}
+
+class EveryScene : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(EveryScene, OpensAndShowsTheSceneAndThePanels) {
+  TempDir dir;
+  const fs::path shot = dir / "shot.png";
+  const Result r = view(GetParam() + " --frames 20 --screenshot " + shot.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("frames     20 in"), std::string::npos) << r.out;
+  const app::Image im = app::read_png(shot);
+  ASSERT_EQ(im.width, 1280);
+  ASSERT_EQ(im.height, 720);
+  // The controls on the left: text.
+  EXPECT_GT(content(im, 0, 0, 360, 720).bright, 500u);
+  // The charts at the bottom: lines and labels in several colours.
+  EXPECT_GT(content(im, 380, 470, 1280, 720).colours, 20u);
+  // The scene itself: not an empty background.
+  EXPECT_GT(content(im, 380, 0, 1280, 450).colours, 10u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, EveryScene, ::testing::ValuesIn(scenes()), [](const auto& info) {
+  std::string name = info.param;
+  for (char& c : name)
+    if (c == '-') c = '_';
+  return name;
+});
+
+TEST(View, AScriptDragsAParticleAndSwitchesTheMethod) {
+  TempDir dir;
+  const std::string script = std::string(SPRINGLAB_SOURCE_DIR) + "/assets/scripts/rope-drag-euler-to-rk4.json";
+  const Result r = view("rope --frames 270 --script " + script + " --screenshot " + (dir / "a.png").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  // Grabbed where it was at t = 0.4 s, let go at the path's last waypoint.
+  const std::regex dragged(R"(dragged    particle 15 from \(.*\) to \(3.4, -0.4, 0\): ([0-9.e+-]+) m)");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.out, m, dragged)) << r.out;
+  EXPECT_GT(std::stod(m[1]), 0.3);
+  EXPECT_NE(r.out.find("lane       rk4 at t = 4.5 s"), std::string::npos) << r.out;  // switched at 4 s
+
+  // And the picture differs from the same frames without the script.
+  const Result plain = view("rope --frames 270 --screenshot " + (dir / "b.png").string());
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  const app::Image a = app::read_png(dir / "a.png"), b = app::read_png(dir / "b.png");
+  std::size_t differ = 0;
+  for (std::size_t k = 0; k < a.rgba.size(); ++k) differ += a.rgba[k] != b.rgba[k];
+  EXPECT_GT(differ, 1000u);
+}
+
+TEST(View, CompareModeStartsFromTheCommandLine) {
+  const Result r = view("spring --frames 30 --compare euler,verlet,rk4");
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* lane : {"lane       euler", "lane       verlet", "lane       rk4"})
+    EXPECT_NE(r.out.find(lane), std::string::npos) << r.out;
+}
+
+TEST(View, WithoutADisplaySaysWhatToDo) {
+  const Result r = springlab_with("env -u DISPLAY -u WAYLAND_DISPLAY ", "view spring --frames 1");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("needs a display"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("springlab render"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
+TEST(View, BadOptionsExitTwo) {
+  for (const auto& [args, expected] : std::vector<std::pair<std::string, std::string>>{
+           {"view spring --screenshot x.png", "--screenshot: needs --frames N"},
+           {"view spring --frames 0", "--frames"},
+           {"view spring --size 10x10 --frames 1", "--size"},
+           {"view spring --compare euler --frames 1", "--compare: give 2 to 4 methods"},
+           {"view nope --frames 1", "scene 'nope'"},
+           {"view spring --ui-scale 9 --frames 1", "--ui-scale"}}) {
+    const Result r = springlab(args);
+    EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
+    EXPECT_NE(r.err.find(expected), std::string::npos) << args << "\n" << r.err;
+  }
+}
+
+}  // namespace
+}  // namespace springlab::test
