@@ -143,3 +143,43 @@ TEST(Stability, PowerIterationFindsTheHighestFrequency) {
 
 }  // namespace
 }  // namespace springlab
+
+namespace springlab {
+namespace {
+
+// The measured limit: the method's own step on the scene, linearised, against the oscillator
+// model's limit from w_max.
+TEST(MeasuredStability, OnTheSpringItIsTheTheoreticalLimitWithinTwoPercent) {
+  for (const char* name : {"spring", "damped-spring"}) {
+    const Scene s = test::shipped(name);
+    const StabilityEstimate e = estimate_stability(s.model, s.state);
+    for (const MethodInfo& m : methods()) {
+      const double theory = stable_step(m.id, e.w_max, e.damping);
+      const double measured = measured_stable_step(m.id, s.model, s.state, e.w_max, theory);
+      if (std::isnan(theory)) {
+        EXPECT_TRUE(std::isnan(measured)) << m.name;
+      } else if (theory == 0.0 || std::isinf(theory)) {
+        EXPECT_EQ(measured, theory) << name << " " << m.name;  // never / always stable, both ways
+      } else {
+        EXPECT_NEAR(measured, theory, 0.02 * theory) << name << " " << m.name;
+      }
+    }
+  }
+}
+
+TEST(MeasuredStability, OnManyParticlesItAgreesWithTheEstimateFromWMax) {
+  // Dense Jacobians (the chain, 234 coordinates) and power iteration (a 10 x 10 cloth, 588).
+  for (const auto& [name, overrides] : std::vector<std::pair<std::string, std::vector<std::string>>>{
+           {"chain", {}}, {"rope", {}}, {"cloth", {"cloth.width=10", "cloth.height=10"}}}) {
+    const Scene s = test::shipped(name, overrides);
+    const StabilityEstimate e = estimate_stability(s.model, s.state);
+    for (Method m : {Method::SymplecticEuler, Method::RK4}) {
+      const double theory = stable_step(m, e.w_max, e.damping);
+      const double measured = measured_stable_step(m, s.model, s.state, e.w_max, theory);
+      EXPECT_NEAR(measured, theory, 0.10 * theory) << name << " " << method_info(m).name;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace springlab

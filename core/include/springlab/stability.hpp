@@ -28,12 +28,41 @@ struct StabilityEstimate {
 
 StabilityEstimate estimate_stability(const Model& model, const State& state);
 
+// h w below which "unstable at any step" is decided: see stability.cpp.
+inline constexpr double kNeverStableFrom = 0.05;
+inline constexpr double kNeverStableFromByRuns = 0.3;
+
 // Spectral radius of one step of size h on x'' = -w^2 x - c x'.
 double amplification(Method method, double w, double c, double h, double verlet_damping = 0.0);
 
 // The largest h for which every step size up to it is stable on that oscillator:
-// 0 = unstable at any step (from 0.01 / w up; finer growth is lost in rounding), infinity = stable at any step, NaN = the method
+// 0 = unstable at any step (from h w = kNeverStableFrom up), infinity = stable at any step, NaN = the method
 // chooses its own steps.
 double stable_step(Method method, double w, double c, double verlet_damping = 0.0);
+
+// Measured on the scene itself, with the method's own step: the spectral radius of the step map
+// y -> step(y) linearised at `state` (free particles only), from its whole finite-difference
+// Jacobian and exact eigenvalues; NaN past kDenseDofs free coordinates. The neutral modes of a
+// scene at rest (eigenvalue 1, zero stiffness) are left out: see outermost() in stability.cpp.
+inline constexpr int kDenseDofs = 300;
+double measured_amplification(Method method, const Model& model, const State& state, double h,
+                              const StepSettings& settings = {});
+
+// Linear stability belongs to an equilibrium, where a step's stages do not move and the
+// linearised step is exactly the method's step matrix: the scene without colliders, relaxed to
+// its static balance of springs and gravity (gravity dropped when nothing is pinned, since it
+// would only fall), at rest. A held cloth or rope then hangs in tension, which leaves only rigid
+// motions without stiffness.
+struct EquilibriumScene {
+  Model model;
+  State state;
+};
+EquilibriumScene at_rest(const Model& model, const State& state);
+
+// The largest h at which the spectral radius at that equilibrium stays at most 1 (to 1e-9 dense,
+// 1e-3 by Arnoldi), found by bracketing from `guess` and bisecting: 0 = unstable from 0.01 / w_max up,
+// infinity = stable past 1e6 / w_max, NaN for the adaptive methods.
+double measured_stable_step(Method method, const Model& model, const State& state, double w_max,
+                            double guess, const StepSettings& settings = {});
 
 }  // namespace springlab
