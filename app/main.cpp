@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
   commands["list"] = add_list_command(app);
   commands["render"] = add_render_command(app);
   commands["view"] = add_view_command(app);
+  commands["compare"] = add_compare_command(app);
 
   try {
     app.parse(argc, argv);

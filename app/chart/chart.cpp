@@ -10,17 +10,18 @@ std::string format_tick(double value) {
   if (value == 0.0) return "0";
   char s[32];
   const double a = std::abs(value);
-  if (a >= 1e-3 && a < 1e5) std::snprintf(s, sizeof s, "%.4g", value);
-  else std::snprintf(s, sizeof s, "%.0e", value);
-  std::string out = s;
-  // 1e-06 -> 1e-6
-  const auto e = out.find("e-0");
-  if (e != std::string::npos) out.erase(e + 2, 1);
-  const auto p = out.find("e+0");
-  if (p != std::string::npos) out.replace(p, 3, "e");
-  const auto q = out.find("e+");
-  if (q != std::string::npos) out.erase(q + 1, 1);
-  return out;
+  if (a >= 1e-3 && a < 1e5) {
+    std::snprintf(s, sizeof s, "%.4g", value);
+  } else {  // 1e-6, 2.5e7: a short mantissa and a bare exponent
+    int exponent = static_cast<int>(std::floor(std::log10(a)));
+    double mantissa = value / std::pow(10.0, exponent);
+    if (std::abs(mantissa) >= 9.9995) {
+      mantissa /= 10.0;
+      ++exponent;
+    }
+    std::snprintf(s, sizeof s, "%.3ge%d", mantissa, exponent);
+  }
+  return s;
 }
 
 std::vector<Tick> ticks(double lo, double hi, bool log, int target) {

@@ -341,23 +341,29 @@ double measured_stable_step(Method method, const Model& model, const State& stat
     return std::isfinite(rho) && rho <= 1.0 + 1e-9;
   };
   // A thousandfold growth in 1000 steps needs about 0.35% a step: the run test cannot see the
-  // slowest instabilities (midpoint's (h w)^4 / 8) below h w = 0.3, where it decides "never".
-  const double floor = (dense ? kNeverStableFrom : kNeverStableFromByRuns) / w_max, ceiling = 1e6 / w_max;
+  // slowest instabilities (midpoint's (h w)^4 / 8) below h w = 0.3, where it decides "never",
+  // unless the theory expects a limit below that (damping: explicit Euler's c / w^2), which it
+  // then checks from a quarter of it up.
+  double floor = kNeverStableFrom / w_max;
+  if (!dense) {
+    floor = kNeverStableFromByRuns / w_max;
+    if (std::isfinite(guess) && guess > 0.0) floor = std::min(floor, 0.25 * guess);
+  }
+  // Runs cost steps, and an always-stable method would be tried at every size on the way to
+  // the ceiling: they go up tenfold at a time, and stop at 1e3 / w_max.
+  const double ceiling = (dense ? 1e6 : 1e3) / w_max, growth = dense ? 1.5 : 10.0;
   double h = std::isfinite(guess) && guess > floor ? guess : 1.0 / w_max;
   if (!stable(floor)) return 0.0;
   double lo, hi;
   if (stable(h)) {
     lo = h;
-    for (hi = 1.5 * h; stable(hi); hi *= 1.5) {
+    for (hi = growth * h; stable(hi); hi *= growth) {
       lo = hi;
       if (hi > ceiling) return std::numeric_limits<double>::infinity();
     }
   } else {
     hi = h;
-    for (lo = h / 1.5; !stable(lo); lo /= 1.5) {
-      hi = lo;
-      if (lo < floor) return 0.0;
-    }
+    for (lo = h / 1.5; !stable(lo); lo /= 1.5) hi = lo;
   }
   while (hi - lo > (dense ? 1e-4 : 3e-3) * lo) {
     const double mid = 0.5 * (lo + hi);

@@ -196,8 +196,10 @@ TEST(Interaction, CompareModeMovesTheSameParticleInEveryCopyAndFreezesADivergedO
   session.advance_frame();
   // The drag is the same in every copy that has not diverged (they all start stable: a frame
   // of a stiff chain at rest is calm enough).
-  for (const app::Lane& lane : session.lanes())
-    if (!lane.sim.diverged()) EXPECT_LT((lane.sim.state().x.row(19) - Eigen::RowVector3d(2, 1, 0)).norm(), 1e-9);
+  for (const app::Lane& lane : session.lanes()) {
+    if (lane.sim.diverged()) continue;
+    EXPECT_LT((lane.sim.state().x.row(19) - Eigen::RowVector3d(2, 1, 0)).norm(), 1e-9);
+  }
   session.release();
   for (int k = 0; k < 120; ++k) session.advance_frame();
   const auto& lanes = session.lanes();

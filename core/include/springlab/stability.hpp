@@ -61,7 +61,7 @@ EquilibriumScene at_rest(const Model& model, const State& state);
 
 // The largest h at which the spectral radius at that equilibrium stays at most 1 (to 1e-9 dense,
 // 1e-3 by Arnoldi), found by bracketing from `guess` and bisecting: 0 = unstable from 0.01 / w_max up,
-// infinity = stable past 1e6 / w_max, NaN for the adaptive methods.
+// infinity = stable past 1e6 / w_max (1e3 for the runs), NaN for the adaptive methods.
 double measured_stable_step(Method method, const Model& model, const State& state, double w_max,
                             double guess, const StepSettings& settings = {});
 

@@ -1,0 +1,194 @@
+#include "chart/compare_charts.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "draw/palette.hpp"
+
+namespace springlab::chart {
+
+namespace {
+
+constexpr draw::Rgba kGuide{0.62f, 0.65f, 0.70f, 1.0f};
+
+std::string order_text(double order) {
+  if (std::isnan(order)) return "";
+  char s[32];
+  std::snprintf(s, sizeof s, " (order %.2f)", order);
+  return s;
+}
+
+std::string step_text(double h) {
+  if (std::isnan(h)) return "adaptive";
+  if (std::isinf(h)) return "always stable";
+  if (h == 0.0) return "never stable";
+  char s[32];
+  std::snprintf(s, sizeof s, "%.3g s", h);
+  return s;
+}
+
+// The highest finite error, where diverged runs are drawn (as crosses) on a log chart.
+double ceiling_of(const SweepResult& r) {
+  double top = 0.0;
+  for (const SweepRun& run : r.runs)
+    if (std::isfinite(run.error)) top = std::max(top, run.error);
+  return top > 0 ? 3.0 * top : 1.0;
+}
+
+}  // namespace
+
+Chart work_precision(const SweepResult& r, const std::string& scene) {
+  Chart c;
+  c.title = "Work-precision on " + scene + ": error against cost (lower left is better)";
+  c.x.label = "wall time of the run (s)";
+  c.x.log = true;
+  c.y.label = "error: largest RMS position error over the samples (m)";
+  c.y.log = true;
+  const double ceiling = ceiling_of(r);
+  for (const MethodSummary& m : r.methods) {
+    const bool adaptive = method_info(m.method).adaptive;
+    Series s;
+    s.label = std::string(method_info(m.method).name) + (adaptive ? " (over tolerances)" : "");
+    s.color = draw::method_color(m.method);
+    s.markers = true;
+    for (const SweepRun& run : r.runs) {
+      // Adaptive methods at their tolerances: the accuracy they choose, at the price they pay.
+      if (run.method != m.method || adaptive == std::isnan(run.tolerance)) continue;
+      s.x.push_back(std::max(run.seconds, 1e-6));
+      s.y.push_back(run.diverged ? ceiling : run.error);
+      s.crossed.push_back(run.diverged);
+    }
+    c.series.push_back(std::move(s));
+  }
+  return c;
+}
+
+Chart convergence(const SweepResult& r, const std::string& scene) {
+  Chart c;
+  c.title = "Convergence on " + scene + ": error against step (x = diverged)";
+  c.x.label = "step h (s)";
+  c.x.log = true;
+  c.y.label = "error (m)";
+  c.y.log = true;
+  const double ceiling = ceiling_of(r);
+  double hmin = 1e300, hmax = 0, emin = 1e300, emax = 0;
+  for (const MethodSummary& m : r.methods) {
+    Series s;
+    s.label = std::string(method_info(m.method).name) + order_text(m.order);
+    s.color = draw::method_color(m.method);
+    s.markers = true;
+    for (const SweepRun& run : r.runs) {
+      if (run.method != m.method || !std::isnan(run.tolerance)) continue;
+      s.x.push_back(run.h);
+      s.y.push_back(run.diverged ? ceiling : run.error);
+      s.crossed.push_back(run.diverged);
+      hmin = std::min(hmin, run.h);
+      hmax = std::max(hmax, run.h);
+      if (std::isfinite(run.error) && run.error > 0) {
+        emin = std::min(emin, run.error);
+        emax = std::max(emax, run.error);
+      }
+    }
+    c.series.push_back(std::move(s));
+  }
+  // Reference slopes 1, 2 and 4 through the middle of the data, to read orders against.
+  if (hmax > hmin && emax > emin) {
+    const double hc = std::sqrt(hmin * hmax), ec = std::sqrt(emin * emax);
+    for (int order : {1, 2, 4}) {
+      Series guide;
+      guide.label = "slope " + std::to_string(order);
+      guide.color = kGuide;
+      guide.color.a = 0.35f + 0.15f * order;
+      guide.dashed = true;
+      guide.width = 1.5f;
+      for (double h : {hmin, hmax}) {
+        guide.x.push_back(h);
+        guide.y.push_back(ec * std::pow(h / hc, order));
+      }
+      c.series.push_back(std::move(guide));
+    }
+    c.y.min = emin / 3.0;
+    c.y.max = ceiling * 1.5;
+  }
+  return c;
+}
+
+Chart stability(const SweepResult& r, const std::string& scene) {
+  Chart c;
+  char title[160];
+  std::snprintf(title, sizeof title, "Largest stable step on %s: measured against theory (w_max = %.4g rad/s)",
+                scene.c_str(), r.stability.w_max);
+  c.title = title;
+  c.x.label = "theoretical, from w_max (s)";
+  c.x.log = true;
+  c.y.label = "measured on the scene (s)";
+  c.y.log = true;
+  double lo = 1e300, hi = 0;
+  for (const MethodSummary& m : r.methods) {
+    Series s;
+    s.color = draw::method_color(m.method);
+    s.markers = true;
+    s.width = 3.0f;
+    const bool plotted = std::isfinite(m.theoretical_stable_h) && m.theoretical_stable_h > 0 &&
+                         std::isfinite(m.measured_stable_h) && m.measured_stable_h > 0;
+    char label[160];
+    if (plotted) {
+      std::snprintf(label, sizeof label, "%s: %.3g s measured, %.3g s theory", method_info(m.method).name,
+                    m.measured_stable_h, m.theoretical_stable_h);
+      s.x = {m.theoretical_stable_h};
+      s.y = {m.measured_stable_h};
+      lo = std::min({lo, m.theoretical_stable_h, m.measured_stable_h});
+      hi = std::max({hi, m.theoretical_stable_h, m.measured_stable_h});
+    } else {
+      std::snprintf(label, sizeof label, "%s: %s (theory: %s)", method_info(m.method).name,
+                    step_text(m.measured_stable_h).c_str(), step_text(m.theoretical_stable_h).c_str());
+    }
+    s.label = label;
+    c.series.push_back(std::move(s));
+  }
+  if (hi > 0) {
+    Series diagonal;
+    diagonal.label = "measured = theory";
+    diagonal.color = kGuide;
+    diagonal.dashed = true;
+    diagonal.width = 1.5f;
+    diagonal.x = {lo / 2, hi * 2};
+    diagonal.y = {lo / 2, hi * 2};
+    c.series.push_back(std::move(diagonal));
+    c.x.min = c.y.min = lo / 2;
+    c.x.max = c.y.max = hi * 2;
+  }
+  return c;
+}
+
+Chart energy_drift(const SweepResult& r, const std::string& scene) {
+  Chart c;
+  c.title = "Energy drift on " + scene + ": |E + dissipated - E0| / energy scale (x = diverged)";
+  c.x.label = "t (s)";
+  c.x.log = false;
+  c.y.label = "relative drift";
+  c.y.log = true;
+  for (const DriftTrace& d : r.drift) {
+    Series s;
+    s.label = method_info(d.method).name;
+    s.color = draw::method_color(d.method);
+    for (std::size_t k = 1; k < d.t.size(); ++k) {
+      s.x.push_back(d.t[k]);
+      s.y.push_back(std::max(std::abs(d.drift[k]), 1e-16));
+      s.crossed.push_back(false);
+    }
+    if (d.diverged && !s.x.empty()) s.crossed.back() = true;
+    c.series.push_back(std::move(s));
+  }
+  return c;
+}
+
+std::vector<NamedChart> compare_charts(const SweepResult& result, const std::string& scene) {
+  std::vector<NamedChart> out{{"work-precision", work_precision(result, scene)},
+                              {"convergence", convergence(result, scene)},
+                              {"stability", stability(result, scene)}};
+  if (!result.drift.empty()) out.push_back({"energy-drift", energy_drift(result, scene)});
+  return out;
+}
+
+}  // namespace springlab::chart

@@ -1,0 +1,26 @@
+// The charts of a sweep (springlab compare, and the app's Compare panel), as chart::Chart data:
+// work-precision (error against time), convergence (error against step, with the fitted orders
+// and reference slopes), stability (measured against theoretical largest stable step) and energy
+// drift over a long run. One colour per method, as everywhere in springlab.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "chart/chart.hpp"
+#include "springlab/sweep.hpp"
+
+namespace springlab::chart {
+
+Chart work_precision(const SweepResult& result, const std::string& scene);
+Chart convergence(const SweepResult& result, const std::string& scene);
+Chart stability(const SweepResult& result, const std::string& scene);
+Chart energy_drift(const SweepResult& result, const std::string& scene);
+
+struct NamedChart {
+  std::string name;  // file stem: "work-precision"
+  Chart chart;
+};
+std::vector<NamedChart> compare_charts(const SweepResult& result, const std::string& scene);
+
+}  // namespace springlab::chart

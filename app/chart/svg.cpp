@@ -1,0 +1,145 @@
+#include "chart/svg.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "draw/palette.hpp"
+
+namespace springlab::chart {
+
+namespace {
+
+std::string escape(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '&') out += "&amp;";
+    else if (c == '<') out += "&lt;";
+    else if (c == '>') out += "&gt;";
+    else out += c;
+  }
+  return out;
+}
+
+struct Map {
+  double lo, hi;
+  bool log;
+  double a, b;
+  double operator()(double v) const {
+    const double t = log ? (std::log10(v) - std::log10(lo)) / (std::log10(hi) - std::log10(lo)) : (v - lo) / (hi - lo);
+    return a + t * (b - a);
+  }
+};
+
+}  // namespace
+
+std::string to_svg(const Chart& chart, int width, int height) {
+  constexpr double kFont = 15.0, kChar = 0.56 * kFont;  // DejaVu Sans's mean advance, roughly
+  double xlo, xhi, ylo, yhi;
+  axis_range(chart, true, xlo, xhi);
+  axis_range(chart, false, ylo, yhi);
+  const auto xt = ticks(xlo, xhi, chart.x.log), yt = ticks(ylo, yhi, chart.y.log, 4);
+  std::size_t label_chars = 0;
+  for (const Tick& t : yt) label_chars = std::max(label_chars, t.label.size());
+  const double line = kFont * 1.35;
+  const double top = (chart.title.empty() ? 8.0 : line * 1.4) + line;
+  const double left = 14.0 + label_chars * kChar + 8.0;
+  const double right = width - 16.0, bottom = height - line * 2.6;
+  const Map mx{xlo, xhi, chart.x.log, left, right}, my{ylo, yhi, chart.y.log, bottom, top};
+
+  std::ostringstream s;
+  s.precision(6);
+  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
+    << "\" viewBox=\"0 0 " << width << " " << height << "\" font-family=\"DejaVu Sans, Verdana, sans-serif\" font-size=\""
+    << kFont << "\">\n";
+  s << "<rect width=\"100%\" height=\"100%\" fill=\"#16181c\"/>\n";
+  const char* text = "#f3f4f6";
+  const char* grid = "#3a3f47";
+  if (!chart.title.empty())
+    s << "<text x=\"12\" y=\"" << line << "\" fill=\"" << text << "\" font-size=\"" << kFont * 1.15
+      << "\" font-weight=\"bold\">" << escape(chart.title) << "</text>\n";
+  s << "<text x=\"12\" y=\"" << top - line * 0.35 << "\" fill=\"" << text << "\">" << escape(chart.y.label) << "</text>\n";
+  s << "<text x=\"" << 0.5 * (left + right) << "\" y=\"" << height - line * 0.55 << "\" fill=\"" << text
+    << "\" text-anchor=\"middle\">" << escape(chart.x.label) << "</text>\n";
+  for (const Tick& t : xt) {
+    const double x = mx(t.value);
+    s << "<line x1=\"" << x << "\" y1=\"" << top << "\" x2=\"" << x << "\" y2=\"" << bottom << "\" stroke=\"" << grid
+      << "\" stroke-opacity=\"" << (t.major ? 1.0 : 0.45) << "\"/>\n";
+    if (!t.label.empty())
+      s << "<text x=\"" << x << "\" y=\"" << bottom + line << "\" fill=\"" << text << "\" text-anchor=\"middle\">"
+        << escape(t.label) << "</text>\n";
+  }
+  for (const Tick& t : yt) {
+    const double y = my(t.value);
+    s << "<line x1=\"" << left << "\" y1=\"" << y << "\" x2=\"" << right << "\" y2=\"" << y << "\" stroke=\"" << grid
+      << "\" stroke-opacity=\"" << (t.major ? 1.0 : 0.45) << "\"/>\n";
+    if (!t.label.empty())
+      s << "<text x=\"" << left - 8 << "\" y=\"" << y + kFont * 0.35 << "\" fill=\"" << text << "\" text-anchor=\"end\">"
+        << escape(t.label) << "</text>\n";
+  }
+  s << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << right - left << "\" height=\"" << bottom - top
+    << "\" fill=\"none\" stroke=\"#6b7280\"/>\n";
+  s << "<clipPath id=\"plot\"><rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << right - left
+    << "\" height=\"" << bottom - top << "\"/></clipPath>\n<g clip-path=\"url(#plot)\">\n";
+  for (const Series& series : chart.series) {
+    const std::string colour = draw::hex(series.color);
+    std::ostringstream points;
+    points.precision(6);
+    const auto flush = [&] {
+      const std::string p = points.str();
+      if (!p.empty() && p.find(' ') != p.rfind(' '))
+        s << "<polyline fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"" << series.width
+          << "\" stroke-linejoin=\"round\"" << (series.dashed ? " stroke-dasharray=\"7 5\"" : "") << " points=\"" << p
+          << "\"/>\n";
+      points.str("");
+    };
+    for (std::size_t k = 0; k < series.x.size(); ++k) {
+      const double xv = series.x[k], yv = series.y[k];
+      const bool ok = std::isfinite(xv) && std::isfinite(yv) && (!chart.x.log || xv > 0) && (!chart.y.log || yv > 0);
+      if (!ok) {
+        flush();
+        continue;
+      }
+      const double x = mx(xv), y = my(yv);
+      if (k < series.crossed.size() && series.crossed[k]) {
+        flush();
+        const double r = 4.0 + series.width;
+        s << "<path d=\"M" << x - r << " " << y - r << "L" << x + r << " " << y + r << "M" << x - r << " " << y + r
+          << "L" << x + r << " " << y - r << "\" stroke=\"" << colour << "\" stroke-width=\"2\"/>\n";
+        continue;
+      }
+      points << x << "," << y << " ";
+      if (series.markers)
+        s << "<circle cx=\"" << x << "\" cy=\"" << y << "\" r=\"" << 2.0 + series.width << "\" fill=\"" << colour << "\"/>\n";
+    }
+    flush();
+  }
+  s << "</g>\n";
+  if (chart.legend) {
+    std::size_t chars = 0;
+    int rows = 0;
+    for (const Series& series : chart.series)
+      if (!series.label.empty()) {
+        chars = std::max(chars, series.label.size());
+        ++rows;
+      }
+    if (rows > 0) {
+      const double w = chars * kChar + 44, x = right - w - 6, y0 = top + 6;
+      s << "<rect x=\"" << x - 6 << "\" y=\"" << y0 - 4 << "\" width=\"" << w + 8 << "\" height=\"" << rows * line + 8
+        << "\" rx=\"3\" fill=\"#0d0f12\" fill-opacity=\"0.85\"/>\n";
+      int row = 0;
+      for (const Series& series : chart.series) {
+        if (series.label.empty()) continue;
+        const double y = y0 + row++ * line + 0.5 * line;
+        s << "<line x1=\"" << x << "\" y1=\"" << y << "\" x2=\"" << x + 22 << "\" y2=\"" << y << "\" stroke=\""
+          << draw::hex(series.color) << "\" stroke-width=\"3\"" << (series.dashed ? " stroke-dasharray=\"5 3\"" : "")
+          << "/>\n<text x=\"" << x + 30 << "\" y=\"" << y + kFont * 0.35 << "\" fill=\"" << text << "\">"
+          << escape(series.label) << "</text>\n";
+      }
+    }
+  }
+  s << "</svg>\n";
+  return s.str();
+}
+
+}  // namespace springlab::chart

@@ -1,0 +1,203 @@
+// springlab compare SCENE --out DIR: every method's error against its cost, its order and its
+// largest stable step (core/sweep.hpp), written as DIR/results.csv and DIR/summary.csv, printed
+// as a table, and charted as PNG (rendered headlessly by springlab) and SVG.
+#include <imgui.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <sstream>
+
+#include "chart/compare_charts.hpp"
+#include "chart/imgui_chart.hpp"
+#include "chart/svg.hpp"
+#include "cli/commands.hpp"
+#include "cli/options.hpp"
+#include "gfx/offscreen.hpp"
+#include "springlab/error.hpp"
+#include "springlab/forces.hpp"
+#include "util/atomic_file.hpp"
+#include "util/progress.hpp"
+
+namespace springlab::app {
+
+namespace {
+
+struct CompareOptions {
+  std::string scene, out;
+  SimOptions sim;
+  std::optional<std::string> methods, dt_range, tol_range;
+  std::optional<double> drift_duration;
+  int points = 8, repeats = 1;
+  bool software = false, no_charts = false;
+};
+
+// "LO:HI" with 0 < LO < HI.
+std::pair<double, double> range(const std::string& option, const std::string& text, double max) {
+  const auto colon = text.find(':');
+  char* end1 = nullptr;
+  char* end2 = nullptr;
+  const std::string a = text.substr(0, colon), b = colon == std::string::npos ? "" : text.substr(colon + 1);
+  const double lo = std::strtod(a.c_str(), &end1), hi = std::strtod(b.c_str(), &end2);
+  if (colon == std::string::npos || a.empty() || b.empty() || *end1 || *end2 || !(lo > 0) || !(hi > lo) || !(hi <= max))
+    throw InputError(option + ": must be LO:HI with 0 < LO < HI <= " + std::to_string(max).substr(0, 4) +
+                     ", for example 0.001:0.02; got '" + text + "'");
+  return {lo, hi};
+}
+
+std::string number(double x) {
+  char s[32];
+  std::snprintf(s, sizeof s, "%.10g", x);
+  return s;
+}
+
+std::string step_text(double h) {
+  if (std::isnan(h)) return "adaptive";
+  if (std::isinf(h)) return "always";
+  if (h == 0.0) return "never";
+  char s[32];
+  std::snprintf(s, sizeof s, "%.4g s", h);
+  return s;
+}
+
+void write_csvs(const std::filesystem::path& dir, const SweepResult& r) {
+  AtomicFile results(dir / "results.csv", "results");
+  std::fprintf(results.file(),
+               "method,step,tolerance,mean_step,error,seconds,force_evals,linear_solves,solver_iterations,"
+               "accepted,rejected,diverged,diverged_at\n");
+  for (const SweepRun& run : r.runs)
+    std::fprintf(results.file(), "%s,%s,%s,%s,%s,%s,%lld,%lld,%lld,%lld,%lld,%d,%s\n", method_info(run.method).name,
+                 number(run.h).c_str(), std::isnan(run.tolerance) ? "" : number(run.tolerance).c_str(),
+                 number(run.mean_step).c_str(), run.diverged ? "inf" : number(run.error).c_str(),
+                 number(run.seconds).c_str(), static_cast<long long>(run.counters.force_evals),
+                 static_cast<long long>(run.counters.linear_solves), static_cast<long long>(run.counters.solver_iterations),
+                 static_cast<long long>(run.counters.accepted), static_cast<long long>(run.counters.rejected),
+                 run.diverged ? 1 : 0, run.diverged ? number(run.diverged_at).c_str() : "");
+  results.commit();
+  AtomicFile summary(dir / "summary.csv", "summary");
+  std::fprintf(summary.file(), "method,order_table,order_measured,fitted_points,stable_step_measured,"
+                               "stable_step_theoretical,ratio\n");
+  for (const MethodSummary& m : r.methods) {
+    const bool finite = std::isfinite(m.measured_stable_h) && std::isfinite(m.theoretical_stable_h) &&
+                        m.theoretical_stable_h > 0;
+    std::fprintf(summary.file(), "%s,%d,%s,%d,%s,%s,%s\n", method_info(m.method).name, method_info(m.method).order,
+                 std::isnan(m.order) ? "" : number(m.order).c_str(), m.fitted_points,
+                 number(m.measured_stable_h).c_str(), number(m.theoretical_stable_h).c_str(),
+                 finite ? number(m.measured_stable_h / m.theoretical_stable_h).c_str() : "");
+  }
+  summary.commit();
+}
+
+void write_charts(const std::filesystem::path& dir, const SweepResult& r, const std::string& scene, bool software) {
+  constexpr int kWidth = 1200, kHeight = 760;
+  const auto charts = chart::compare_charts(r, scene);
+  for (const auto& named : charts) {
+    AtomicFile svg(dir / (named.name + ".svg"), "chart");
+    const std::string text = chart::to_svg(named.chart, kWidth, kHeight);
+    std::fwrite(text.data(), 1, text.size(), svg.file());
+    svg.commit();
+  }
+  gfx::Offscreen offscreen(software, kWidth, kHeight, 1.15f);
+  draw::Frame blank;
+  blank.background = {0.086f, 0.094f, 0.11f, 1.0f};
+  Image image;
+  for (const auto& named : charts) {
+    offscreen.render(blank, [&] {
+      ImGui::SetNextWindowPos(ImVec2(0, 0));
+      ImGui::SetNextWindowSize(ImVec2(kWidth, kHeight));
+      ImGui::Begin("chart", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoBackground |
+                                         ImGuiWindowFlags_NoSavedSettings);
+      chart::chart_widget("##chart", named.chart, ImGui::GetContentRegionAvail());
+      ImGui::End();
+    }, image);
+    write_png(dir / (named.name + ".png"), image, 6);
+  }
+}
+
+int compare(const CompareOptions& o) {
+  if (o.points < 2 || o.points > 64) throw InputError("--points: must be in [2, 64], got " + std::to_string(o.points));
+  if (o.repeats < 1 || o.repeats > 100) throw InputError("--repeats: must be in [1, 100], got " + std::to_string(o.repeats));
+  std::vector<Method> list;
+  if (o.methods) {
+    std::stringstream s(*o.methods);
+    for (std::string name; std::getline(s, name, ',');) {
+      const auto m = find_method(name);
+      if (!m) throw InputError("--methods: unknown method '" + name + "' (methods: " + method_names() + ")");
+      list.push_back(*m);
+    }
+  }
+  Prepared p = prepare(o.scene, o.sim);
+  SweepSettings s;
+  s.methods = list;
+  s.points = o.points;
+  s.repeats = o.repeats;
+  s.step = p.settings.step;
+  s.workers = o.sim.threads.value_or(0);
+  const double dt = p.settings.dt;
+  std::tie(s.h_min, s.h_max) = o.dt_range ? range("--dt-range", *o.dt_range, 1.0) : std::pair{dt / 16, dt * 2};
+  if (o.tol_range) std::tie(s.tol_min, s.tol_max) = range("--tol-range", *o.tol_range, 1.0);
+  s.duration = o.sim.duration ? *o.sim.duration : std::min(p.scene.duration, 2.0);
+  if (s.duration < s.h_max) throw InputError("--duration: must be at least the largest step (" + step_text(s.h_max) + ")");
+  s.drift_h = dt;
+  if (o.drift_duration) check_option("--drift-duration", *o.drift_duration, 0.0, 1e6, false, " s");
+  s.drift_duration = o.drift_duration ? *o.drift_duration : p.scene.duration;
+
+  // The output folder first: it must be writable before the work starts.
+  std::error_code ec;
+  std::filesystem::create_directories(o.out, ec);
+  if (ec || !std::filesystem::is_directory(o.out))
+    throw InputError("--out: cannot create the folder '" + o.out + "' (" + ec.message() + ")");
+  { TemporaryPath probe(std::filesystem::path(o.out) / "results.csv", "results"); }
+
+  Progress progress("compare " + p.scene.name, 1);
+  const SweepResult r = run_sweep(p.scene.model, p.scene.state, s, [&](const SweepRun&, int done, int total) {
+    progress = Progress("compare " + p.scene.name, total);
+    progress.update(done);
+  });
+  progress.finish();
+  write_csvs(o.out, r);
+  if (!o.no_charts) write_charts(o.out, r, p.scene.name, o.software);
+
+  std::printf("scene      %s: %d particles, %d springs; w_max = %.4g rad/s\n", p.scene.name.c_str(),
+              p.scene.model.particle_count(), p.scene.model.spring_count(), r.stability.w_max);
+  std::printf("steps      %zu from %.4g s to %.4g s; %d samples over %.4g s; reference: %s\n",
+              step_divisors(s.h_min, s.h_max, s.points).size(), s.h_max / step_divisors(s.h_min, s.h_max, s.points).back(),
+              s.h_max, r.samples, r.samples * r.sample_interval, r.reference.c_str());
+  std::printf("\n%-18s %-16s %-14s %-14s %s\n", "method", "order (table)", "stable step", "theory", "measured/theory");
+  for (const MethodSummary& m : r.methods) {
+    char order[32];
+    if (std::isnan(m.order)) std::snprintf(order, sizeof order, "n/a (%d)", method_info(m.method).order);
+    else std::snprintf(order, sizeof order, "%.2f (%d)", m.order, method_info(m.method).order);
+    const bool finite = std::isfinite(m.measured_stable_h) && std::isfinite(m.theoretical_stable_h) &&
+                        m.theoretical_stable_h > 0;
+    char ratio[16] = "";
+    if (finite) std::snprintf(ratio, sizeof ratio, "%.3f", m.measured_stable_h / m.theoretical_stable_h);
+    std::printf("%-18s %-16s %-14s %-14s %s\n", method_info(m.method).name, order,
+                step_text(m.measured_stable_h).c_str(), step_text(m.theoretical_stable_h).c_str(), ratio);
+  }
+  std::printf("\nwritten    %s/results.csv, summary.csv%s\n", o.out.c_str(),
+              o.no_charts ? "" : ", work-precision, convergence, stability, energy-drift (.png, .svg)");
+  return kOk;
+}
+
+}  // namespace
+
+Command add_compare_command(CLI::App& app) {
+  auto o = std::make_shared<CompareOptions>();
+  CLI::App* c = app.add_subcommand("compare", "accuracy against cost for the methods: CSV and charts");
+  c->add_option("scene", o->scene, "scene name or JSON file")->required();
+  c->add_option("--out", o->out, "folder for results.csv, summary.csv and the charts")->required();
+  add_sim_options(*c, o->sim);
+  c->add_option("--methods", o->methods, "methods to compare, e.g. euler,rk4 (default: all)");
+  c->add_option("--dt-range", o->dt_range, "LO:HI steps to sweep, log-spaced (default: dt/16 to 2 dt)");
+  c->add_option("--points", o->points, "steps (and tolerances) per method (default 8)");
+  c->add_option("--tol-range", o->tol_range, "LO:HI tolerances for the adaptive methods (default 1e-10:1e-4)");
+  c->add_option("--repeats", o->repeats, "time each run this many times and keep the fastest (default 1)");
+  c->add_option("--drift-duration", o->drift_duration, "length of the energy-drift runs (default: the scene's duration; 0: none)");
+  c->add_flag("--software", o->software, "render the PNG charts with the software rasteriser");
+  c->add_flag("--no-charts", o->no_charts, "write only the CSV files");
+  return [o] { return compare(*o); };
+}
+
+}  // namespace springlab::app

@@ -1,0 +1,101 @@
+// Accuracy against cost (NUMERICS.md, "Accuracy and cost"): every method run on one scene over a
+// range of steps (adaptive methods: of tolerances), each run's error against a reference, its
+// cost, the order fitted to its errors, its largest stable step measured and from theory, and
+// the energy each method gains or loses over a long run. What `springlab compare` and the app's
+// Compare panel chart.
+//
+// Steps are h = H / n for whole n (H the coarsest step), so every run passes through the common
+// sample times k H, where errors are taken: the largest over the samples of the RMS over free
+// particles of |x - x_ref|. The reference is the exact solution where the scene has one, else
+// RK4 at a step 16 times smaller than the finest charted, itself checked against RK4 at twice
+// its step (its own error is about a fifteenth of that difference).
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "springlab/methods.hpp"
+#include "springlab/model.hpp"
+#include "springlab/stability.hpp"
+#include "springlab/state.hpp"
+
+namespace springlab {
+
+struct SweepSettings {
+  std::vector<Method> methods;  // empty: every method
+  double h_min = 1e-3, h_max = 1e-2;
+  int points = 8;  // steps (and tolerances) per method, log-spaced
+  double duration = 2.0;
+  double tol_min = 1e-10, tol_max = 1e-4;  // for the adaptive methods
+  int repeats = 1;                         // runs timed this many times; the fastest counts
+  int workers = 0;                         // threads running runs at once; 0: every core
+  StepSettings step;
+  bool stability = true;  // measure each method's largest stable step
+  // The energy-drift runs: each method at this step for this long (0: no drift runs).
+  double drift_h = 0.0, drift_duration = 0.0;
+};
+
+struct SweepRun {
+  Method method = Method::Euler;
+  double h = 0.0;          // the outer step: samples are every H / h of them
+  // Adaptive methods: the tolerance; NaN for a fixed-step run (an adaptive method then accepts
+  // every try: its order is measured that way, like everyone's).
+  double tolerance = std::numeric_limits<double>::quiet_NaN();
+  double mean_step = 0.0;  // duration / internal steps taken (h for fixed-step methods)
+  double error = 0.0;      // m; infinity when the run diverged
+  double seconds = 0.0;    // wall time of the fastest repeat
+  Counters counters;
+  bool diverged = false;
+  double diverged_at = std::numeric_limits<double>::quiet_NaN();
+};
+
+struct MethodSummary {
+  Method method = Method::Euler;
+  double order = std::numeric_limits<double>::quiet_NaN();  // fitted; NaN: too few points
+  int fitted_points = 0;
+  double measured_stable_h = std::numeric_limits<double>::quiet_NaN();
+  double theoretical_stable_h = std::numeric_limits<double>::quiet_NaN();
+};
+
+struct DriftTrace {
+  Method method = Method::Euler;
+  std::vector<double> t, drift;  // drift = (E + dissipated - E0) / energy scale
+  bool diverged = false;
+};
+
+struct SweepResult {
+  std::vector<SweepRun> runs;  // grouped by method in the order asked, steps from coarse to fine
+  std::vector<MethodSummary> methods;
+  std::vector<DriftTrace> drift;
+  std::string reference;         // "exact solution" or "rk4 at h = ... s"
+  double reference_error = 0.0;  // m, estimated
+  double sample_interval = 0.0;  // H
+  int samples = 0;
+  double motion = 0.0;  // m: the largest RMS displacement of the reference from the start
+  StabilityEstimate stability;
+  bool cancelled = false;
+};
+
+// Calls `on_run` (from the worker that finished it, one at a time) after each run, with the
+// number of jobs done and in all; stops early, marking the result cancelled, when `cancel` is
+// set. Results are the same whatever the number of workers (only the seconds differ).
+SweepResult run_sweep(const Model& model, const State& initial, const SweepSettings& settings,
+                      const std::function<void(const SweepRun&, int done, int total)>& on_run = {},
+                      const std::atomic<bool>* cancel = nullptr);
+
+// The slope of log(error) against log(step) over the fixed-step runs of one method that are
+// stable, well above the reference's error and round-off, and below a tenth of the motion
+// (where the error is still small enough to scale as a power of the step). NaN with fewer than 3
+// such runs. (Against the mean step of its tolerance runs, RK45 on the spring shows 6, not 5:
+// its controller spreads the steps unevenly over a period.)
+double fitted_order(const std::vector<SweepRun>& runs, Method method, double floor, double ceiling,
+                    int* points = nullptr);
+
+// The n of the steps H / n: `count` whole numbers from 1 to about H / h_min, log-spaced,
+// distinct.
+std::vector<int> step_divisors(double h_min, double h_max, int count);
+
+}  // namespace springlab
