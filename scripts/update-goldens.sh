@@ -7,4 +7,4 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 "$root/scripts/setup.sh"
 "$root/scripts/build.sh"
 SPRINGLAB_UPDATE_GOLDENS=1 "${SPRINGLAB_BUILD_DIR:-$root/build}/tests/golden_tests" \
-  --gtest_filter="Cases/Golden.*${1:-}"
+  --gtest_filter="Cases/Golden.*${1:-}:GoldenCharts.*${1:-}"

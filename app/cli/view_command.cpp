@@ -56,6 +56,7 @@ void add_options(CLI::App& c, ViewCli& o) {
   c.add_option("--screenshot", o.window.screenshot, "after --frames N frames, write the window to this PNG");
   c.add_option("--ui-scale", o.window.ui_scale, "size of the panels and text (times the monitor's scale)");
   c.add_option("--size", o.size, "window size WIDTHxHEIGHT (default 1280x720)");
+  c.add_flag("--accuracy", o.window.accuracy, "open the accuracy-against-cost panel and start its sweep");
   c.add_option("--msaa", o.window.msaa, "multisampling (default: 4 on a GPU, 0 on a software rasteriser)");
 }
 

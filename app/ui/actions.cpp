@@ -12,6 +12,7 @@ void perform(Action action, app::Session& session, UiState& ui) {
     case Action::Reset: session.reset(); break;
     case Action::TogglePanels: ui.panels = !ui.panels; break;
     case Action::ToggleHelp: ui.help = !ui.help; break;
+    case Action::ToggleAccuracy: ui.accuracy = !ui.accuracy; break;
     case Action::ToggleCompare: {
       if (session.comparing()) {
         session.set_compare({});

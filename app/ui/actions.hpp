@@ -14,6 +14,7 @@ enum class Action {
   ToggleCompare,  // C: the ticked methods, else the scene's, else four classics
   TogglePanels,   // H
   ToggleHelp,     // F1
+  ToggleAccuracy, // A: the Compare panel
   Method1, Method2, Method3, Method4, Method5, Method6, Method7, Method8, Method9,  // 1 - 9
 };
 

@@ -301,6 +301,8 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
                         stats.sim_ms, stats.draw_ms);
     ImGui::PopTextWrapPos();
 
+    if (ImGui::Button(ui.accuracy ? "Hide accuracy vs cost (A)" : "Accuracy vs cost (A)")) ui.accuracy = !ui.accuracy;
+
     if (ImGui::CollapsingHeader("Compare methods")) {
     if (ImGui::Button(session.comparing() ? "Single view (C)" : "Compare (C)")) {
       if (session.comparing()) session.set_compare({});
@@ -374,7 +376,8 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
     ImGui::Begin("Keys", &ui.help, kPanel | ImGuiWindowFlags_AlwaysAutoResize);
     const char* keys[][2] = {{"space", "pause or resume"}, {"S", "one step"}, {"R", "reset"},
                              {"1 - 9", "choose a method"}, {"C", "compare mode on or off"},
-                             {"H", "hide or show the panels"}, {"F1", "this help"},
+                             {"H", "hide or show the panels"}, {"A", "accuracy against cost: chart every method"},
+                             {"F1", "this help"},
                              {"left drag", "move a particle (release lets it go with its speed)"},
                              {"right drag", "orbit the camera (3D) / pan (2D)"},
                              {"middle drag", "pan"}, {"wheel", "zoom"}, {"Esc", "quit"}};

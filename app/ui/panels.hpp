@@ -34,6 +34,7 @@ struct UiState {
   bool panels = true;  // H hides them
   bool help = false;   // F1
   bool panels_over_scene = false;  // the scene fills the whole frame (too small to share)
+  bool accuracy = false;           // the Compare panel (accuracy against cost), A
   draw::ViewOptions view;
   Ranges ranges;
   std::vector<std::string> scenes;  // the picker's list

@@ -23,6 +23,7 @@
 #include "io/png.hpp"
 #include "springlab/error.hpp"
 #include "ui/actions.hpp"
+#include "ui/compare_panel.hpp"
 #include "ui/interaction.hpp"
 #include "ui/overlay.hpp"
 #include "ui/panels.hpp"
@@ -40,6 +41,7 @@ std::string g_glfw_error;
 struct Shown {
   std::unique_ptr<Session> session;
   ui::UiState ui;
+  ui::ComparePanel accuracy;
   std::optional<std::string> dropped;  // a file dropped on the window, to open
 };
 
@@ -66,7 +68,8 @@ void keyboard(Session& session, ui::UiState& ui, GLFWwindow* window) {
   const std::pair<int, ui::Action> keys[] = {
       {GLFW_KEY_SPACE, ui::Action::TogglePause}, {GLFW_KEY_S, ui::Action::Step},
       {GLFW_KEY_R, ui::Action::Reset},           {GLFW_KEY_C, ui::Action::ToggleCompare},
-      {GLFW_KEY_H, ui::Action::TogglePanels},    {GLFW_KEY_F1, ui::Action::ToggleHelp}};
+      {GLFW_KEY_H, ui::Action::TogglePanels},    {GLFW_KEY_F1, ui::Action::ToggleHelp},
+      {GLFW_KEY_A, ui::Action::ToggleAccuracy}};
   for (const auto& [key, action] : keys)
     if (ImGui::IsKeyPressed(key, false)) ui::perform(action, session, ui);
   for (int k = 0; k < 9; ++k)
@@ -144,6 +147,10 @@ int run_window(Prepared prepared, const WindowOptions& o) {
     show(shown, std::move(prepared), scale, first_name);
     if (!o.compare.empty()) shown.session->set_compare(o.compare);
     if (script) shown.session->play(*script);
+    if (o.accuracy) {
+      shown.ui.accuracy = true;
+      shown.accuracy.start(*shown.session);
+    }
     glfwSetWindowUserPointer(window, &shown);
     // A scene file dropped on the window opens.
     glfwSetDropCallback(window, [](GLFWwindow* w, int count, const char** paths) {
@@ -211,6 +218,10 @@ int run_window(Prepared prepared, const WindowOptions& o) {
       keyboard(session, ui, window);
 
       const ui::Requests requests = ui::draw_panels(session, ui, stats, win_w, win_h);
+      shown.accuracy.open = ui.accuracy;
+      ui::draw_compare_panel(shown.accuracy, session, scale, 380.0f * scale, 20.0f * scale, win_w - 400.0f * scale,
+                             win_h * 0.62f);
+      ui.accuracy = shown.accuracy.open;
       ui::draw_overlay(session, {static_cast<int>(viewport.x / to_fb), static_cast<int>(viewport.y / to_fb),
                                  static_cast<int>(viewport.width / to_fb), static_cast<int>(viewport.height / to_fb)},
                        scale, ui.scene_name, !ui.panels);
@@ -251,6 +262,7 @@ int run_window(Prepared prepared, const WindowOptions& o) {
         try {
           const std::string name = *load;
           Prepared next = prepare(name, {});
+          shown.accuracy.sweep.cancel();
           show(shown, std::move(next), scale, name);
           glfwSetWindowTitle(window, ("springlab - " + shown.session->scene().name).c_str());
           drag.reset();

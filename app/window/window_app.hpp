@@ -18,6 +18,7 @@ struct WindowOptions {
   double ui_scale = 1.0;       // times the monitor's content scale
   int width = 1280, height = 720;
   int msaa = -1;  // samples; -1: 4 on a GPU, none on a software rasteriser (to keep 60 frames/s)
+  bool accuracy = false;  // open the Compare panel and start its sweep
 };
 
 // Runs until the window closes (or after `frames` frames). Throws InputError for a bad script,

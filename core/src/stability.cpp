@@ -281,7 +281,9 @@ double measured_amplification(Method method, const Model& model, const State& st
 // (slack springs, rigid motions) keep their energy; an unstable stiff mode multiplies it by at
 // least 1.3 a step one per cent past the limits of symplectic Euler, Verlet and RK4.
 bool grows(Method method, const Model& model, const State& rest, double h, const StepSettings& settings) {
-  constexpr int kGrowthSteps = 1000;
+  // An implicit step costs a solve, and ill-conditioned ones at large h: a hundred show the
+  // same growth there would be.
+  const int kGrowthSteps = method_info(method).implicit ? 100 : 1000;
   constexpr double kGrowth = 1e3;
   State a = rest, b = rest;
   std::uint64_t seed = 0x2545F4914F6CDD1Dull;
@@ -309,6 +311,13 @@ EquilibriumScene at_rest(const Model& model, const State& state) {
   rest.model.spheres.clear();
   rest.model.gravity.setZero();
   rest.state.v.setZero();
+  // Already at rest (generated scenes start so): nothing to relax.
+  double strain = 0.0;
+  for (int k = 0; k < model.spring_count(); ++k) {
+    const double l = (state.x.row(model.spring_b[k]) - state.x.row(model.spring_a[k])).norm();
+    strain = std::max(strain, std::abs(l - model.rest_length[k]) / std::max(model.rest_length[k], 1e-300));
+  }
+  if (strain < 1e-12) return rest;
   const StabilityEstimate e = estimate_stability(rest.model, rest.state);
   if (!(e.w_max > 0.0)) return rest;
   // Implicit Euler with h w_max = 1e4 is, to M / h^2, Newton's method on the springs' static
@@ -329,12 +338,16 @@ EquilibriumScene at_rest(const Model& model, const State& state) {
 
 double measured_stable_step(Method method, const Model& model, const State& state, double w_max,
                             double guess, const StepSettings& settings) {
+  return measured_stable_step(method, at_rest(model, state), w_max, guess, settings);
+}
+
+double measured_stable_step(Method method, const EquilibriumScene& rest, double w_max, double guess,
+                            const StepSettings& settings) {
   if (method_info(method).adaptive) return std::numeric_limits<double>::quiet_NaN();
   if (!(w_max > 0.0)) return std::numeric_limits<double>::infinity();
   int free = 0;
-  for (int i = 0; i < model.particle_count(); ++i) free += !model.pinned(i);
+  for (int i = 0; i < rest.model.particle_count(); ++i) free += !rest.model.pinned(i);
   const bool dense = 6 * free <= kDenseDofs;
-  const EquilibriumScene rest = at_rest(model, state);
   const auto stable = [&](double h) {
     if (!dense) return !grows(method, rest.model, rest.state, h, settings);
     const double rho = measured_amplification(method, rest.model, rest.state, h, settings);
@@ -350,8 +363,9 @@ double measured_stable_step(Method method, const Model& model, const State& stat
     if (std::isfinite(guess) && guess > 0.0) floor = std::min(floor, 0.25 * guess);
   }
   // Runs cost steps, and an always-stable method would be tried at every size on the way to
-  // the ceiling: they go up tenfold at a time, and stop at 1e3 / w_max.
-  const double ceiling = (dense ? 1e6 : 1e3) / w_max, growth = dense ? 1.5 : 10.0;
+  // the ceiling: they go up tenfold at a time, and stop at 100 / w_max (where implicit Euler's
+  // solves already face a condition number of 1e4).
+  const double ceiling = (dense ? 1e6 : 1e2) / w_max, growth = dense ? 1.5 : 10.0;
   double h = std::isfinite(guess) && guess > floor ? guess : 1.0 / w_max;
   if (!stable(floor)) return 0.0;
   double lo, hi;

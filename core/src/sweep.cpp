@@ -211,6 +211,7 @@ SweepResult run_sweep(const Model& model, const State& initial, const SweepSetti
     }
   }
   result.stability = estimate_stability(model, initial);
+  const EquilibriumScene rest = settings.stability ? at_rest(model, initial) : EquilibriumScene{model, initial};
   const bool drift = settings.drift_h > 0.0 && settings.drift_duration > 0.0;
   const int stability_jobs = settings.stability ? static_cast<int>(list.size()) : 0;
   const int drift_jobs = drift ? static_cast<int>(list.size()) : 0;
@@ -242,7 +243,7 @@ SweepResult run_sweep(const Model& model, const State& initial, const SweepSetti
       s.method = list[j];
       const StabilityEstimate& e = result.stability;
       s.theoretical_stable_h = stable_step(list[j], e.w_max, e.damping, model.verlet_damping);
-      s.measured_stable_h = measured_stable_step(list[j], model, initial, e.w_max, s.theoretical_stable_h, settings.step);
+      s.measured_stable_h = measured_stable_step(list[j], rest, e.w_max, s.theoretical_stable_h, settings.step);
       finished(nullptr);
       return;
     }

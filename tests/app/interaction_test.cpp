@@ -9,7 +9,11 @@
 #include "draw/scene_frame.hpp"
 #include "support.hpp"
 #include "ui/actions.hpp"
+#include "ui/compare_panel.hpp"
 #include "ui/interaction.hpp"
+
+#include <chrono>
+#include <thread>
 
 namespace springlab::ui {
 namespace {
@@ -250,6 +254,42 @@ TEST(Interaction, ScriptedEventsHappenAtTheirFrames) {
   for (int k = 0; k < 40; ++k) session.advance_frame();
   EXPECT_EQ(session.method(), Method::Verlet);
   EXPECT_DOUBLE_EQ(session.damping(), 1.5);
+}
+
+}  // namespace
+}  // namespace springlab::ui
+
+namespace springlab::ui {
+namespace {
+
+TEST(ComparePanel, SweepsTheSceneOnScreenInTheBackgroundAndCancels) {
+  app::Session session = session_of("spring");
+  session.set_stiffness(400);  // the panel sweeps the scene as it is now: w = 20
+  ComparePanel panel;
+  panel.points = 3;
+  panel.duration = 0.5f;
+  panel.methods[static_cast<int>(Method::RK4)] = true;
+  panel.methods[static_cast<int>(Method::Euler)] = true;
+  const SweepSettings s = panel.settings(session);
+  EXPECT_EQ(s.methods.size(), 2u);
+  EXPECT_DOUBLE_EQ(s.h_max, 2 * session.primary().sim.settings().dt);
+  panel.start(session);
+  while (panel.sweep.running()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  const SweepResult r = panel.sweep.snapshot();
+  EXPECT_FALSE(r.cancelled);
+  EXPECT_NEAR(r.stability.w_max, 20.0, 1e-6);
+  ASSERT_EQ(r.methods.size(), 2u);
+  EXPECT_NEAR(r.methods[1].measured_stable_h, 2 * std::sqrt(2.0) / 20.0, 1e-3);  // RK4's limit
+  // A long sweep, cancelled: it stops, keeping what it had.
+  panel.points = 10;
+  panel.duration = 5.0f;
+  for (bool& m : panel.methods) m = true;
+  panel.start(session);
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  panel.sweep.cancel();
+  EXPECT_FALSE(panel.sweep.running());
+  const auto [done, total] = panel.sweep.progress();
+  EXPECT_LT(done, total);
 }
 
 }  // namespace

@@ -130,6 +130,34 @@ INSTANTIATE_TEST_SUITE_P(Cases, Golden, ::testing::ValuesIn(load_cases()), [](co
   return name;
 });
 
+// The deterministic charts of `compare spring` (not work-precision: it plots wall time).
+TEST(GoldenCharts, OfTheSpring) {
+  TempDir dir;
+  const Result r = springlab("compare spring --software --points 6 --duration 1 --drift-duration 5 "
+                             "--tol-range 1e-9:1e-5 --out '" + dir.path.string() + "'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* chart : {"convergence", "stability", "energy-drift"}) {
+    const fs::path actual_path = dir / (std::string(chart) + ".png");
+    const fs::path reference = golden_dir() / ("charts-spring-" + std::string(chart) + ".png");
+    if (std::getenv("SPRINGLAB_UPDATE_GOLDENS")) {
+      fs::copy_file(actual_path, reference, fs::copy_options::overwrite_existing);
+      std::printf("updated %s\n", reference.c_str());
+      continue;
+    }
+    ASSERT_TRUE(fs::exists(reference)) << reference << " is missing: run scripts/update-goldens.sh";
+    const app::Image expected = app::read_png(reference), actual = app::read_png(actual_path);
+    ASSERT_EQ(actual.width, expected.width);
+    const Difference d = compare(expected, actual);
+    const double fraction = static_cast<double>(d.differing) / d.total;
+    if (fraction > kFraction) {
+      fs::create_directories(failure_dir());
+      app::write_png(failure_dir() / ("charts-spring-" + std::string(chart) + "-actual.png"), actual, 6);
+      app::write_png(failure_dir() / ("charts-spring-" + std::string(chart) + "-diff.png"), d.diff, 6);
+      ADD_FAILURE() << chart << ": " << 100.0 * fraction << "% of pixels differ; see " << failure_dir();
+    }
+  }
+}
+
 std::string bytes(const fs::path& p) { return read_file(p); }
 
 TEST(Deterministic, SameFrameInTwoProcessesIsTheSameBytes) {

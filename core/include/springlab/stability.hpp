@@ -40,14 +40,6 @@ double amplification(Method method, double w, double c, double h, double verlet_
 // chooses its own steps.
 double stable_step(Method method, double w, double c, double verlet_damping = 0.0);
 
-// Measured on the scene itself, with the method's own step: the spectral radius of the step map
-// y -> step(y) linearised at `state` (free particles only), from its whole finite-difference
-// Jacobian and exact eigenvalues; NaN past kDenseDofs free coordinates. The neutral modes of a
-// scene at rest (eigenvalue 1, zero stiffness) are left out: see outermost() in stability.cpp.
-inline constexpr int kDenseDofs = 300;
-double measured_amplification(Method method, const Model& model, const State& state, double h,
-                              const StepSettings& settings = {});
-
 // Linear stability belongs to an equilibrium, where a step's stages do not move and the
 // linearised step is exactly the method's step matrix: the scene without colliders, relaxed to
 // its static balance of springs and gravity (gravity dropped when nothing is pinned, since it
@@ -59,10 +51,23 @@ struct EquilibriumScene {
 };
 EquilibriumScene at_rest(const Model& model, const State& state);
 
+// Measured on the scene itself, with the method's own step: the spectral radius of the step map
+// y -> step(y) linearised at `state` (free particles only), from its whole finite-difference
+// Jacobian and exact eigenvalues; NaN past kDenseDofs free coordinates. The neutral modes of a
+// scene at rest (eigenvalue 1, zero stiffness) are left out: see outermost() in stability.cpp.
+inline constexpr int kDenseDofs = 300;
+double measured_amplification(Method method, const Model& model, const State& state, double h,
+                              const StepSettings& settings = {});
+
+
+
 // The largest h at which the spectral radius at that equilibrium stays at most 1 (to 1e-9 dense,
 // 1e-3 by Arnoldi), found by bracketing from `guess` and bisecting: 0 = unstable from 0.01 / w_max up,
-// infinity = stable past 1e6 / w_max (1e3 for the runs), NaN for the adaptive methods.
+// infinity = stable past 1e6 / w_max (100 for the runs), NaN for the adaptive methods.
 double measured_stable_step(Method method, const Model& model, const State& state, double w_max,
                             double guess, const StepSettings& settings = {});
+// The same from an equilibrium already found (at_rest), to measure several methods.
+double measured_stable_step(Method method, const EquilibriumScene& rest, double w_max, double guess,
+                            const StepSettings& settings = {});
 
 }  // namespace springlab

@@ -1,0 +1,92 @@
+#include "ui/compare_panel.hpp"
+
+#include <imgui.h>
+
+#include <cmath>
+
+#include "chart/compare_charts.hpp"
+#include "chart/imgui_chart.hpp"
+#include "draw/palette.hpp"
+
+namespace springlab::ui {
+
+SweepSettings ComparePanel::settings(const app::Session& session) const {
+  SweepSettings s;
+  for (const MethodInfo& m : springlab::methods())
+    if (methods[static_cast<int>(m.id)]) s.methods.push_back(m.id);
+  const Simulation& sim = session.primary().sim;
+  const double dt = sim.settings().dt;
+  s.h_max = 2 * dt;
+  s.h_min = 2 * dt / step_range;
+  s.points = points;
+  s.duration = std::max(static_cast<double>(duration), s.h_max);
+  s.tol_min = 1e-9;
+  s.tol_max = 1e-4;
+  s.step = sim.settings().step;
+  s.drift_h = dt;
+  s.drift_duration = std::max(static_cast<double>(duration), dt) * 4;
+  return s;
+}
+
+void ComparePanel::start(const app::Session& session) {
+  const Simulation& sim = session.primary().sim;
+  sweep.start(sim.model(), sim.state(), settings(session));
+}
+
+void draw_compare_panel(ComparePanel& panel, const app::Session& session, float scale, float x, float y,
+                        float width, float height) {
+  if (!panel.open) return;
+  ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Appearing);
+  ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Appearing);
+  if (!ImGui::Begin("Accuracy against cost", &panel.open, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
+    ImGui::End();
+    return;
+  }
+  const bool running = panel.sweep.running();
+  const auto [done, total] = panel.sweep.progress();
+  ImGui::PushItemWidth(110.0f * scale);
+  ImGui::SliderInt("steps", &panel.points, 3, 10);
+  ImGui::SameLine();
+  ImGui::SliderFloat("seconds", &panel.duration, 0.2f, 5.0f, "%.1f");
+  ImGui::SameLine();
+  ImGui::SliderFloat("range", &panel.step_range, 4.0f, 64.0f, "dt/%.0f..2dt", ImGuiSliderFlags_Logarithmic);
+  ImGui::PopItemWidth();
+  ImGui::SameLine();
+  if (!running && ImGui::Button("Run")) panel.start(session);
+  if (running && ImGui::Button("Cancel")) panel.sweep.cancel();
+  if (running || done > 0) {
+    ImGui::SameLine();
+    ImGui::ProgressBar(total > 0 ? static_cast<float>(done) / total : 0.0f, ImVec2(160.0f * scale, 0),
+                       (std::to_string(done) + " / " + std::to_string(total)).c_str());
+  }
+  // Methods: none ticked means all.
+  if (ImGui::BeginTable("methods", 5)) {
+    for (const MethodInfo& m : methods()) {
+      ImGui::TableNextColumn();
+      const draw::Rgba c = draw::method_color(m.id);
+      ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(c.r, c.g, c.b, 1));
+      ImGui::Checkbox(m.name, &panel.methods[static_cast<int>(m.id)]);
+      ImGui::PopStyleColor();
+    }
+    ImGui::EndTable();
+  }
+
+  const SweepResult result = panel.sweep.snapshot();
+  if (result.runs.empty()) {
+    ImGui::TextDisabled("Run: every method over steps from dt/%.0f to 2 dt (adaptive ones over tolerances), "
+                        "each against the exact solution or a fine RK4 run.", panel.step_range);
+  } else {
+    const auto charts = chart::compare_charts(result, session.scene().name);
+    const char* tabs[] = {"work-precision", "convergence", "stability", "energy drift"};
+    for (int k = 0; k < 4; ++k) {
+      if (k > 0) ImGui::SameLine();
+      if (ImGui::RadioButton(tabs[k], panel.chart == k)) panel.chart = k;
+    }
+    if (running && panel.chart >= 2) ImGui::TextDisabled("(measured at the end of the sweep)");
+    const int k = std::min(panel.chart, static_cast<int>(charts.size()) - 1);
+    chart::chart_widget("##sweep", charts[k].chart, ImGui::GetContentRegionAvail());
+  }
+  ImGui::End();
+}
+
+}  // namespace springlab::ui

@@ -1,0 +1,30 @@
+// The app's Compare panel: the sweep of `springlab compare` run on the scene on screen, in the
+// background, with progress and cancel, and the same charts filling in as the runs finish.
+#pragma once
+
+#include <array>
+
+#include "session/background_sweep.hpp"
+#include "session/session.hpp"
+
+namespace springlab::ui {
+
+struct ComparePanel {
+  bool open = false;
+  int points = 6;
+  float duration = 1.0f;          // s simulated by each run
+  float step_range = 16.0f;       // from dt / range to 2 dt
+  std::array<bool, 9> methods{};  // which to sweep (none ticked: all)
+  int chart = 0;                  // the tab shown
+  app::BackgroundSweep sweep;
+
+  // The settings for the session's scene as it is now.
+  SweepSettings settings(const app::Session& session) const;
+  void start(const app::Session& session);
+};
+
+// Draws the panel (when open) over the area `x, y, width, height` of the window.
+void draw_compare_panel(ComparePanel& panel, const app::Session& session, float scale, float x, float y,
+                        float width, float height);
+
+}  // namespace springlab::ui

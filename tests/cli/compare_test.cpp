@@ -1,0 +1,113 @@
+// springlab compare, as a student runs it: results and summary CSVs, charts in PNG and SVG for
+// every shipped scene, the printed table, and clear errors for bad options.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "cli/cli_support.hpp"
+#include "io/png.hpp"
+#include "springlab/scene.hpp"
+
+namespace springlab::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::vector<std::string>> csv(const fs::path& path) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream in(read_file(path));
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> cells;
+    std::istringstream s(line);
+    for (std::string cell; std::getline(s, cell, ',');) cells.push_back(cell);
+    if (!line.empty() && line.back() == ',') cells.emplace_back();
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+TEST(Compare, OnTheSpringWritesResultsSummaryAndCharts) {
+  TempDir dir;
+  const Result r = springlab("compare spring --software --points 5 --duration 1 --drift-duration 2 --out " +
+                             dir.path.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* file : {"results.csv", "summary.csv", "work-precision.png", "work-precision.svg", "convergence.png",
+                           "convergence.svg", "stability.png", "stability.svg", "energy-drift.png", "energy-drift.svg"})
+    EXPECT_TRUE(fs::exists(dir / file)) << file;
+  const auto summary = csv(dir / "summary.csv");
+  ASSERT_EQ(summary.size(), 10u);  // header and nine methods
+  EXPECT_EQ(summary[0][0], "method");
+  for (std::size_t k = 1; k < summary.size(); ++k) {
+    const int table = std::stoi(summary[k][1]);
+    if (summary[k][2].empty()) continue;
+    EXPECT_NEAR(std::stod(summary[k][2]), table, 0.2) << summary[k][0];
+  }
+  const auto results = csv(dir / "results.csv");
+  EXPECT_EQ(results[0].size(), 13u);
+  EXPECT_GT(results.size(), 40u);
+  for (const char* part : {"reference: exact solution", "symplectic-euler", "0.2 s", "0.2828 s", "never", "always"})
+    EXPECT_NE(r.out.find(part), std::string::npos) << part << "\n" << r.out;
+  EXPECT_NE(read_file(dir / "convergence.svg").find("rk4 (order"), std::string::npos);
+  const app::Image png = app::read_png(dir / "convergence.png");
+  EXPECT_EQ(png.width, 1200);
+}
+
+class EveryScene : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(EveryScene, IsChartedWithoutError) {
+  const std::string name = GetParam();
+  const Scene scene = load_scene(std::string(SPRINGLAB_SOURCE_DIR) + "/assets/scenes/" + name + ".json");
+  std::ostringstream range;
+  range.precision(17);
+  range << scene.dt / 2 << ":" << scene.dt;
+  TempDir dir;
+  const Result r = springlab("compare " + name + " --software --points 2 --duration " + std::to_string(20 * scene.dt) +
+                             " --drift-duration " + std::to_string(20 * scene.dt) + " --dt-range " + range.str() +
+                             " --tol-range 1e-5:1e-4 --out " + dir.path.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* chart : {"work-precision", "convergence", "stability", "energy-drift"}) {
+    EXPECT_TRUE(fs::exists(dir / (std::string(chart) + ".png"))) << chart;
+    EXPECT_TRUE(fs::exists(dir / (std::string(chart) + ".svg"))) << chart;
+  }
+}
+
+std::vector<std::string> scenes() {
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(std::string(SPRINGLAB_SOURCE_DIR) + "/assets/scenes"))
+    if (e.path().extension() == ".json") names.push_back(e.path().stem().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, EveryScene, ::testing::ValuesIn(scenes()), [](const auto& info) {
+  std::string n = info.param;
+  for (char& c : n)
+    if (c == '-') c = '_';
+  return n;
+});
+
+TEST(Compare, BadOptionsExitTwo) {
+  TempDir dir;
+  const std::string out = " --out " + dir.path.string();
+  const std::pair<std::string, std::string> cases[] = {
+      {"compare spring", "--out is required"},
+      {"compare spring --points 1" + out, "--points: must be in [2, 64]"},
+      {"compare spring --dt-range 0:0.1" + out, "--dt-range: must be LO:HI with 0 < LO < HI"},
+      {"compare spring --dt-range 0.1:0.01" + out, "--dt-range"},
+      {"compare spring --dt-range fast" + out, "--dt-range"},
+      {"compare spring --tol-range 1e-3" + out, "--tol-range"},
+      {"compare spring --methods euler,rk5" + out, "--methods: unknown method 'rk5'"},
+      {"compare spring --repeats 0" + out, "--repeats"},
+      {"compare spring --duration 0.001 --dt-range 0.001:0.01" + out, "--duration: must be at least the largest step"},
+      {"compare spring --out /proc/springlab/charts", "--out: cannot create the folder"},
+  };
+  for (const auto& [args, expected] : cases) {
+    const Result r = springlab(args);
+    EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
+    EXPECT_NE(r.err.find(expected), std::string::npos) << args << "\n" << r.err;
+  }
+}
+
+}  // namespace
+}  // namespace springlab::test
