@@ -36,6 +36,7 @@ int main(int argc, char** argv) {
   commands["render"] = add_render_command(app);
   commands["view"] = add_view_command(app);
   commands["compare"] = add_compare_command(app);
+  commands["bench"] = add_bench_command(app);
 
   try {
     app.parse(argc, argv);

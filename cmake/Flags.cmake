@@ -2,9 +2,10 @@
 #
 # Floating point: no -ffast-math, and no FMA contraction (-ffp-contract=off), so that a result
 # does not depend on which instructions the compiler happened to fuse: the same scene gives the
-# same bits with SSE2 or AVX2 code and with any thread count. -fno-math-errno only lets sqrt
-# vectorise; it changes no value.
-add_compile_options(-Wall -Wextra -Wpedantic -ffp-contract=off -fno-math-errno)
+# same bits with SSE2 or AVX2 code and with any thread count. -fno-math-errno and
+# -fno-trapping-math change no value: they let sqrt vectorise and let the spring loop select
+# with a compare instead of a branch (springlab never unmasks floating-point traps).
+add_compile_options(-Wall -Wextra -Wpedantic -ffp-contract=off -fno-math-errno -fno-trapping-math)
 
 # AVX2 doubles the width of the vectorised spring loops. Only used when the build machine has it
 # (the binary is meant for the machine it is built on, as scripts/ build it).

@@ -24,11 +24,43 @@ Energy energy(const Model& model, const State& state) {
   return e;
 }
 
+namespace {
+
+// Sums over particles with four running sums in a fixed order: independent add chains (a single
+// one is bound by the adder's latency) that the compiler turns into one vector, and the same
+// bits every time. term(i, c) is the contribution of coordinate c of particle i.
+template <typename Term>
+double sum4(int n, const Term& term) {
+  double acc[4] = {0.0, 0.0, 0.0, 0.0};
+  for (int c = 0; c < 3; ++c) {
+    int i = 0;
+    for (; i + 4 <= n; i += 4)
+      for (int j = 0; j < 4; ++j) acc[j] += term(i + j, c);
+    for (; i < n; ++i) acc[0] += term(i, c);
+  }
+  return (acc[0] + acc[1]) + (acc[2] + acc[3]);
+}
+
+}  // namespace
+
 double kinetic_energy(const Model& model, const State& state) {
-  double e = 0.0;
-  for (int i = 0; i < model.particle_count(); ++i)
-    if (!model.pinned(i)) e += 0.5 * model.mass[i] * state.v.row(i).squaredNorm();
-  return e;
+  const double* m = model.mass.data();
+  const double* w = model.inv_mass.data();
+  const double* v[3] = {state.v.col(0).data(), state.v.col(1).data(), state.v.col(2).data()};
+  return 0.5 * sum4(model.particle_count(), [&](int i, int c) {
+           return (w[i] > 0.0 ? m[i] : 0.0) * v[c][i] * v[c][i];
+         });
+}
+
+StepProbe probe(const Model& model, const State& state) {
+  // x * 0 is 0 for every finite x and NaN otherwise, so the sum is 0 exactly when all are finite;
+  // a velocity that is not finite makes the kinetic energy so.
+  const double* x[3] = {state.x.col(0).data(), state.x.col(1).data(), state.x.col(2).data()};
+  const double sink = sum4(model.particle_count(), [&](int i, int c) { return x[c][i] * 0.0; });
+  StepProbe p;
+  p.kinetic = kinetic_energy(model, state);
+  p.finite = sink == 0.0 && std::isfinite(p.kinetic);  // 0 * NaN is NaN: pinned ones count too
+  return p;
 }
 
 double dissipation_power(const Model& model, const State& state) {

@@ -71,14 +71,15 @@ bool Simulation::step() {
       diverge(failure.what());
       return false;
     }
-    if (!all_finite(next_)) {
+    // One pass over the particles: finite, and the kinetic part of the energy test, every step,
+    // so that a blow-up is stopped near where it starts. The whole energy is checked below.
+    const StepProbe check = probe(model_, next_);
+    if (!check.finite) {
       ++steps_;
       diverge("a position or velocity became infinite or NaN");
       return false;
     }
-    // The kinetic part of the energy test costs one pass over the particles: every step, so
-    // that a blow-up is stopped near where it starts. The whole energy is checked below.
-    const double kinetic = kinetic_energy(model_, next_);
+    const double kinetic = check.kinetic;
     if (!(kinetic <= kDivergenceFactor * energy_scale_)) {
       ++steps_;
       std::swap(current_, next_);  // still finite: kept, as the state where it was caught

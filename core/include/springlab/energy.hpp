@@ -22,6 +22,14 @@ Energy energy(const Model& model, const State& state);
 // Only the kinetic part: one pass over the particles, no springs (cheap enough for every step).
 double kinetic_energy(const Model& model, const State& state);
 
+// What a simulation checks after every step, in one pass: whether every position and velocity
+// is finite, and the kinetic energy.
+struct StepProbe {
+  bool finite = true;
+  double kinetic = 0.0;
+};
+StepProbe probe(const Model& model, const State& state);
+
 // Power (W, >= 0) taken out by spring damping, sum k_d ((v_b - v_a) . u)^2, and by drag,
 // sum k_drag |v|^2. Integrated over time it is the energy the scene loses physically, as
 // opposed to what an integrator loses or gains numerically.

@@ -1,15 +1,16 @@
 // Explicit (forward) Euler: both updates from the old state.
 //   x1 = x + h v,  v1 = v + h a(x, v)
+#include "fused_step.hpp"
 #include "steps.hpp"
 
 namespace springlab::steps {
 
 void euler(const Model& model, const State& in, State& out, double h, const StepSettings&,
            Workspace& ws) {
-  accelerations(model, in.x, in.v, ws.kv[0], ws);
-  out.x = in.x + h * in.v;
-  out.v = in.v + h * ws.kv[0];
-  out.t = in.t + h;
+  fused_step(model, in, out, h, ws, [h](double x, double v, double a, double& x1, double& v1) {
+    x1 = x + h * v;
+    v1 = v + h * a;
+  });
 }
 
 }  // namespace springlab::steps

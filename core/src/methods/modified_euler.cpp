@@ -2,16 +2,17 @@
 // the new velocity, the velocity takes an Euler step.
 //   v1 = v + h a(x, v),  x1 = x + h (v + v1) / 2  ( = x + h v + h^2 a / 2 )
 // The position is second order per step, the velocity is not, so the method is first order.
+#include "fused_step.hpp"
 #include "steps.hpp"
 
 namespace springlab::steps {
 
 void modified_euler(const Model& model, const State& in, State& out, double h, const StepSettings&,
                     Workspace& ws) {
-  accelerations(model, in.x, in.v, ws.kv[0], ws);
-  out.v = in.v + h * ws.kv[0];
-  out.x = in.x + (0.5 * h) * (in.v + out.v);
-  out.t = in.t + h;
+  fused_step(model, in, out, h, ws, [h](double x, double v, double a, double& x1, double& v1) {
+    v1 = v + h * a;
+    x1 = x + (0.5 * h) * (v + v1);
+  });
 }
 
 }  // namespace springlab::steps

@@ -1,0 +1,62 @@
+// springlab bench SCENE: the scene's step throughput with a method, without graphics, after a
+// warm-up; one key=value a line (particles, springs, steps, seconds, steps_per_s,
+// ns_per_spring_step, peak_rss_mb), for scripts and the README's figures.
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cstdio>
+#include <memory>
+
+#include "cli/commands.hpp"
+#include "cli/options.hpp"
+#include "springlab/error.hpp"
+#include "springlab/forces.hpp"
+
+namespace springlab::app {
+
+namespace {
+
+struct BenchOptions {
+  std::string scene;
+  SimOptions sim;
+};
+
+int bench(const BenchOptions& o) {
+  SimOptions sim = o.sim;
+  if (!sim.steps && !sim.duration) sim.steps = 1000;
+  Prepared p = prepare(o.scene, sim);
+  Simulation s(p.scene.model, p.scene.state, p.settings);
+  // Warm-up: caches, the first allocations, the implicit solver's pattern.
+  const std::int64_t warm = std::max<std::int64_t>(1, p.steps / 10);
+  s.advance(warm);
+  const auto start = std::chrono::steady_clock::now();
+  const std::int64_t taken = s.advance(p.steps);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  const double springs = s.model().spring_count();
+  std::printf("scene=%s\nmethod=%s\nthreads=%d\nparticles=%d\nsprings=%d\nsteps=%lld\nseconds=%.6g\n"
+              "steps_per_s=%.6g\nns_per_spring_step=%.4g\npeak_rss_mb=%.1f\n",
+              p.scene.name.c_str(), method_info(p.settings.method).name, thread_count(), s.model().particle_count(),
+              s.model().spring_count(), static_cast<long long>(taken), seconds, taken / seconds,
+              springs > 0 ? 1e9 * seconds / (taken * p.settings.substeps * springs) : 0.0,
+              static_cast<double>(usage.ru_maxrss) / 1024.0);
+  if (s.diverged()) {
+    std::fflush(stdout);
+    std::fprintf(stderr, "springlab: %s: %s\n", p.scene.name.c_str(), s.divergence()->message().c_str());
+    return kDiverged;
+  }
+  return kOk;
+}
+
+}  // namespace
+
+Command add_bench_command(CLI::App& app) {
+  auto o = std::make_shared<BenchOptions>();
+  CLI::App* c = app.add_subcommand("bench", "step throughput of a scene and method (key=value lines)");
+  c->add_option("scene", o->scene, "scene name or JSON file")->required();
+  add_sim_options(*c, o->sim);
+  return [o] { return bench(*o); };
+}
+
+}  // namespace springlab::app

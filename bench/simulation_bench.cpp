@@ -1,0 +1,119 @@
+// Benchmarks of the simulation core (Google Benchmark): the spring kernel and the force pass,
+// each method's step on rope and cloth at several sizes and thread counts, the implicit solve,
+// and building scenes. Run: build/bench/springlab_bench (see the README for the figures).
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+#include "springlab/forces.hpp"
+#include "springlab/methods.hpp"
+#include "springlab/scene.hpp"
+#include "springlab/simulation.hpp"
+#include "springlab/spring_kernel.hpp"
+
+namespace springlab {
+namespace {
+
+Scene cloth(int n) {
+  return load_scene(std::string(SPRINGLAB_SOURCE_DIR) + "/assets/scenes/cloth.json",
+                    {"cloth.width=" + std::to_string(n), "cloth.height=" + std::to_string(n)});
+}
+
+Scene rope(int nodes) {
+  return load_scene(std::string(SPRINGLAB_SOURCE_DIR) + "/assets/scenes/rope.json",
+                    {"rope.nodes=" + std::to_string(nodes)});
+}
+
+void per_spring(benchmark::State& state, const Model& model) {
+  const double springs = model.spring_count();
+  state.counters["springs"] = springs;
+  state.counters["ns_per_spring"] = benchmark::Counter(springs * 1e-9, benchmark::Counter::kIsIterationInvariantRate |
+                                                                           benchmark::Counter::kInvert);
+}
+
+// One spring's force with the scalar kernel (the reference the vector loop agrees with).
+void BM_SpringKernel(benchmark::State& state) {
+  const Vec3 a(0, 0, 0), b(1.1, 0.2, -0.3), va(0, 1, 0), vb(0.5, 0, 0);
+  for (auto _ : state) benchmark::DoNotOptimize(spring_force(a, b, va, vb, 100.0, 0.5, 1.0));
+}
+BENCHMARK(BM_SpringKernel);
+
+// One force evaluation of a cloth: args are the side and the thread count.
+void BM_Forces(benchmark::State& state) {
+  const Scene s = cloth(static_cast<int>(state.range(0)));
+  set_thread_count(static_cast<int>(state.range(1)));
+  Points a;
+  SpringForces buffer;
+  for (auto _ : state) {
+    evaluate_forces(s.model, s.state.x, s.state.v, a, buffer, ForceOutput::Acceleration);
+    benchmark::ClobberMemory();
+  }
+  per_spring(state, s.model);
+  set_thread_count(0);
+}
+BENCHMARK(BM_Forces)->ArgsProduct({{32, 64, 128, 256}, {1, 2}})->UseRealTime();
+
+// A simulation step (with its checks) of a method on a cloth: side, threads, method.
+void BM_ClothStep(benchmark::State& state) {
+  Scene s = cloth(static_cast<int>(state.range(0)));
+  set_thread_count(static_cast<int>(state.range(1)));
+  SimulationSettings settings;
+  settings.method = static_cast<Method>(state.range(2));
+  settings.dt = 1e-5;  // small enough for every explicit method at every size
+  Simulation sim(s.model, s.state, settings);
+  sim.advance(5);
+  for (auto _ : state) sim.step();
+  per_spring(state, s.model);
+  state.SetLabel(method_info(settings.method).name);
+  set_thread_count(0);
+}
+BENCHMARK(BM_ClothStep)
+    ->ArgsProduct({{32, 64, 128}, {1, 2},
+                   {static_cast<int>(Method::Euler), static_cast<int>(Method::SymplecticEuler),
+                    static_cast<int>(Method::Midpoint), static_cast<int>(Method::RK4),
+                    static_cast<int>(Method::Verlet)}})
+    ->UseRealTime();
+
+// The implicit step on cloth at one step a frame (h = 1/60): a force evaluation, the assembly
+// and the linear solve.
+void BM_ImplicitCloth(benchmark::State& state) {
+  Scene s = cloth(static_cast<int>(state.range(0)));
+  set_thread_count(static_cast<int>(state.range(1)));
+  SimulationSettings settings;
+  settings.method = Method::ImplicitEuler;
+  settings.dt = 1.0 / 60.0;
+  Simulation sim(s.model, s.state, settings);
+  sim.advance(3);
+  for (auto _ : state) sim.step();
+  per_spring(state, s.model);
+  state.counters["cg_iterations_per_step"] =
+      benchmark::Counter(static_cast<double>(sim.counters().solver_iterations) / sim.counters().linear_solves);
+  set_thread_count(0);
+}
+BENCHMARK(BM_ImplicitCloth)->ArgsProduct({{32, 64}, {1, 2}})->UseRealTime()->Unit(benchmark::kMillisecond);
+
+// A rope's step: nodes, threads.
+void BM_RopeStep(benchmark::State& state) {
+  Scene s = rope(static_cast<int>(state.range(0)));
+  set_thread_count(static_cast<int>(state.range(1)));
+  SimulationSettings settings;
+  settings.method = Method::SymplecticEuler;
+  settings.dt = 1e-7;
+  Simulation sim(s.model, s.state, settings);
+  sim.advance(5);
+  for (auto _ : state) sim.step();
+  per_spring(state, s.model);
+  set_thread_count(0);
+}
+BENCHMARK(BM_RopeStep)->ArgsProduct({{100, 1000, 10000}, {1, 2}})->UseRealTime();
+
+// Building a scene from its file: parsing, checking, generating, sorting springs into spans.
+void BM_BuildScene(benchmark::State& state) {
+  for (auto _ : state) benchmark::DoNotOptimize(cloth(static_cast<int>(state.range(0))));
+}
+BENCHMARK(BM_BuildScene)->Arg(64)->Arg(256)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace springlab
+
+BENCHMARK_MAIN();
