@@ -116,4 +116,24 @@ BENCHMARK(BM_BuildScene)->Arg(64)->Arg(256)->Unit(benchmark::kMillisecond);
 }  // namespace
 }  // namespace springlab
 
+
+namespace springlab {
+namespace {
+// One force evaluation of a rope (a single long span): nodes, threads.
+void BM_RopeForces(benchmark::State& state) {
+  const Scene s = rope(static_cast<int>(state.range(0)));
+  set_thread_count(static_cast<int>(state.range(1)));
+  Points a;
+  SpringForces buffer;
+  for (auto _ : state) {
+    evaluate_forces(s.model, s.state.x, s.state.v, a, buffer, ForceOutput::Acceleration);
+    benchmark::ClobberMemory();
+  }
+  per_spring(state, s.model);
+  set_thread_count(0);
+}
+BENCHMARK(BM_RopeForces)->ArgsProduct({{1000, 24000}, {1, 2}})->UseRealTime();
+}  // namespace
+}  // namespace springlab
+
 BENCHMARK_MAIN();

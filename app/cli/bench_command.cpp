@@ -32,6 +32,12 @@ int bench(const BenchOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   const std::int64_t taken = s.advance(p.steps);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  // A diverged run's figures would time a state of NaNs and infinities: report it instead.
+  if (s.diverged()) {
+    std::fflush(stdout);
+    std::fprintf(stderr, "springlab: %s: %s\n", p.scene.name.c_str(), s.divergence()->message().c_str());
+    return kDiverged;
+  }
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   const double springs = s.model().spring_count();
@@ -41,11 +47,6 @@ int bench(const BenchOptions& o) {
               s.model().spring_count(), static_cast<long long>(taken), seconds, taken / seconds,
               springs > 0 ? 1e9 * seconds / (taken * p.settings.substeps * springs) : 0.0,
               static_cast<double>(usage.ru_maxrss) / 1024.0);
-  if (s.diverged()) {
-    std::fflush(stdout);
-    std::fprintf(stderr, "springlab: %s: %s\n", p.scene.name.c_str(), s.divergence()->message().c_str());
-    return kDiverged;
-  }
   return kOk;
 }
 

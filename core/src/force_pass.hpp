@@ -2,14 +2,16 @@
 // finish it its own way: the explicit methods integrate each thread's particles right where
 // their forces were summed, instead of in further passes over memory.
 //
-// Each thread owns a range of particles, and the springs whose a-end it owns:
-//   phase 1  its particles' gravity and drag; then, span by span, its springs' forces, added to
-//            their a-ends at once (while at hand) and kept for their b-ends in a per-spring buffer
-//   phase 2  span by span, the buffered forces subtracted at its particles that are b-ends; then
-//            finish(begin, end) on its particles
-// So every particle's force is summed in one order, whatever the number of threads: gravity and
-// drag, its a-end springs in span order, its b-end springs in span order. Results are
-// bit-identical for any thread count, and the buffer is written once and read once.
+// The particles are cut into fixed blocks (their size depends on the particle count only), and
+// each block holds the springs whose a-end is in it. Blocks are shared out among the threads:
+//   phase 1  for each of its blocks: gravity and drag; then span by span, in chunks small enough
+//            for the L1 cache, the springs' forces, added to their a-ends as they are computed,
+//            then to those of their b-ends that are in the block; forces reaching into a later
+//            block are kept
+//   phase 2  for each of its blocks: the kept forces of the springs reaching into it, span by
+//            span; then finish(begin, end)
+// Every particle's force is summed in an order fixed by the blocks alone, so results are
+// bit-identical for any number of threads; and most forces never leave the L1 cache.
 #pragma once
 
 #include <omp.h>
@@ -26,103 +28,142 @@ namespace force_detail {
 
 // Below this much work (springs + particles) one thread is faster than waking a second.
 inline constexpr int kParallelThreshold = 4096;
+// Springs computed at once: their forces (3 x 8 bytes each) stay in the L1 cache.
+inline constexpr int kChunk = 256;
 
-struct Range {
-  int begin, end;
-};
-
-// Thread t's share of [0, n), in multiples of 8 so that the vector loops stay aligned.
-inline Range share(int n, int threads, int t) {
-  const int chunk = ((n + threads - 1) / threads + 7) / 8 * 8;
-  return {std::min(n, t * chunk), std::min(n, (t + 1) * chunk)};
-}
-
-// Forces of `count` springs whose ends are consecutive particles a0 + k and b0 + k: added to
-// F at the a-ends and kept in f for the b-ends. Plain arrays, without branches, so that the
-// compiler vectorises it (positions are read contiguously): the division is done even for
-// coincident ends (giving infinity) and the result selected away, which keeps the loop free of
-// control flow.
+// Forces of `count` springs whose ends are consecutive particles a0 + k and b0 + k: added to FA
+// (the a-ends' forces, FA[k] for particle a0 + k) and kept in f for the b-ends.
+// Plain arrays, without branches, so that the compiler vectorises it (positions are read
+// contiguously): the division is done even for coincident ends (giving infinity) and the result
+// selected away. 1/l is l (1/l^2), so that the division need not wait for the square root.
 // Same arithmetic as spring_force(): s = (k_s (l - L) + k_d (dv . d) / l) / l, f_a = s d.
 template <bool kDamped>
 void span_forces(const double* __restrict X, const double* __restrict Y, const double* __restrict Z,
                  const double* __restrict VX, const double* __restrict VY, const double* __restrict VZ,
-                 int a0, int b0, int count, const double* __restrict rest, double ks, double kd,
-                 double* __restrict FX, double* __restrict FY, double* __restrict FZ,
+                 int a0, int b0, int count, double rest, double ks, double kd,
+                 double* __restrict FAX, double* __restrict FAY, double* __restrict FAZ,
                  double* __restrict fx, double* __restrict fy, double* __restrict fz) {
+  const double coincident = kCoincident * std::max(rest, 1.0);
   for (int k = 0; k < count; ++k) {
     const double dx = X[b0 + k] - X[a0 + k];
     const double dy = Y[b0 + k] - Y[a0 + k];
     const double dz = Z[b0 + k] - Z[a0 + k];
-    const double l = std::sqrt(dx * dx + dy * dy + dz * dz);
-    const double inverse = 1.0 / l;
-    const double inv = l > kCoincident * std::max(rest[k], 1.0) ? inverse : 0.0;
+    const double l2 = dx * dx + dy * dy + dz * dz;
+    const double l = std::sqrt(l2);
+    const double inverse = l * (1.0 / l2);
+    const double inv = l > coincident ? inverse : 0.0;
     double s;
     if constexpr (kDamped) {
       const double rate = (VX[b0 + k] - VX[a0 + k]) * dx + (VY[b0 + k] - VY[a0 + k]) * dy +
                           (VZ[b0 + k] - VZ[a0 + k]) * dz;
-      s = (ks * (l - rest[k]) + kd * rate * inv) * inv;
+      s = (ks * (l - rest) + kd * rate * inv) * inv;
     } else {
-      s = ks * (l - rest[k]) * inv;
+      s = ks * (l - rest) * inv;
     }
     const double gx = s * dx, gy = s * dy, gz = s * dz;
-    FX[a0 + k] += gx;
-    FY[a0 + k] += gy;
-    FZ[a0 + k] += gz;
+    FAX[k] += gx;
+    FAY[k] += gy;
+    FAZ[k] += gz;
     fx[k] = gx;
     fy[k] = gy;
     fz[k] = gz;
   }
 }
 
-// out[i] -= f[i - offset] for i in [lo, hi).
-inline void subtract(double* __restrict out, const double* __restrict f, int lo, int hi, int offset) {
-  for (int i = lo; i < hi; ++i) out[i] -= f[i - offset];
+inline void subtract(double* __restrict out, const double* __restrict f, int count) {
+  for (int k = 0; k < count; ++k) out[k] -= f[k];
+}
+inline void copy(double* __restrict out, const double* __restrict f, int count) {
+  for (int k = 0; k < count; ++k) out[k] = f[k];
+}
+
+// The plan of the pass for a model: blocks of about a sixteenth of the particles (at least 256,
+// at most 2048, a multiple of 64), and each block's pieces of spans.
+inline void make_plan(const Model& model, ForcePlan& plan) {
+  const int n = model.particle_count();
+  plan.particles = n;
+  plan.springs = model.spring_count();
+  plan.spans = model.spans.data();
+  plan.block = std::clamp((n / 16 + 63) / 64 * 64, 256, 2048);
+  const int blocks = std::max(1, (n + plan.block - 1) / plan.block);
+  plan.own.assign(blocks, {});
+  plan.incoming.assign(blocks, {});
+  for (int s = 0; s < static_cast<int>(model.spans.size()); ++s) {
+    const SpringSpan& span = model.spans[s];
+    for (int b = 0; b < blocks; ++b) {
+      const int begin = b * plan.block, end = std::min(n, begin + plan.block);
+      const int lo = std::max(0, begin - span.a0), hi = std::min(span.count, end - span.a0);
+      if (lo < hi) plan.own[b].push_back({s, lo, hi});
+      // Springs with the b-end here and the a-end in an earlier block (b-ends follow a-ends).
+      const int blo = std::max(0, begin - span.b0), bhi = std::min(span.count, end - span.b0);
+      const int from_before = std::min(bhi, begin - span.a0);
+      if (blo < from_before) plan.incoming[b].push_back({s, blo, from_before});
+    }
+  }
 }
 
 }  // namespace force_detail
 
 // F: three arrays (x, y, z) of particle_count() forces, written. `finish(begin, end)` is called
-// once per thread, after its particles' forces are complete, with that range.
+// once per block, after its particles' forces are complete, with that range.
 template <typename Finish>
 void force_pass(const Model& model, const Points& x, const Points& v, double* const F[3],
                 SpringForces& buffer, const Finish& finish) {
   using namespace force_detail;
   const int n = model.particle_count();
   const int springs = model.spring_count();
-  buffer.x.resize(springs);
-  buffer.y.resize(springs);
-  buffer.z.resize(springs);
+  ForcePlan& plan = buffer.plan;
+  if (plan.particles != n || plan.springs != springs || plan.spans != model.spans.data()) {
+    make_plan(model, plan);
+    buffer.x.resize(springs);
+    buffer.y.resize(springs);
+    buffer.z.resize(springs);
+  }
   const double* X[3] = {x.col(0).data(), x.col(1).data(), x.col(2).data()};
   const double* V[3] = {v.col(0).data(), v.col(1).data(), v.col(2).data()};
   double* SF[3] = {buffer.x.data(), buffer.y.data(), buffer.z.data()};
   const double g[3] = {model.gravity.x(), model.gravity.y(), model.gravity.z()};
   const double drag = model.drag;
   const double* mass = model.mass.data();
+  const int blocks = static_cast<int>(plan.own.size());
 
 #pragma omp parallel if (springs + n >= kParallelThreshold)
   {
-    const Range own = share(n, omp_get_num_threads(), omp_get_thread_num());
-    for (int c = 0; c < 3; ++c)
-      for (int i = own.begin; i < own.end; ++i) F[c][i] = mass[i] * g[c] - drag * V[c][i];
-    for (const SpringSpan& span : model.spans) {
-      // This thread's springs of the span: those whose a-end it owns.
-      const int lo = std::max(0, own.begin - span.a0), hi = std::min(span.count, own.end - span.a0);
-      if (lo >= hi) continue;
-      const SpringMaterial& mat = model.materials[span.material];
-      const int first = span.first + lo;
-      // Undamped springs need no velocities: (k_s (l - L) + 0) / l is the same number.
-      (mat.kd != 0.0 ? span_forces<true> : span_forces<false>)(
-          X[0], X[1], X[2], V[0], V[1], V[2], span.a0 + lo, span.b0 + lo, hi - lo,
-          model.rest_length.data() + first, mat.ks, mat.kd, F[0], F[1], F[2], SF[0] + first,
-          SF[1] + first, SF[2] + first);
+    alignas(64) double chunk[3][kChunk];
+#pragma omp for schedule(static)
+    for (int b = 0; b < blocks; ++b) {
+      const int begin = b * plan.block, end = std::min(n, begin + plan.block);
+      for (int c = 0; c < 3; ++c)
+        for (int i = begin; i < end; ++i) F[c][i] = mass[i] * g[c] - drag * V[c][i];
+      for (const ForcePlan::Piece& piece : plan.own[b]) {
+        const SpringSpan& span = model.spans[piece.span];
+        const SpringMaterial& mat = model.materials[span.material];
+        for (int lo = piece.lo; lo < piece.hi; lo += kChunk) {
+          const int count = std::min(kChunk, piece.hi - lo);
+          const int a = span.a0 + lo, bb = span.b0 + lo;
+          // Undamped springs need no velocities: (k_s (l - L) + 0) / l is the same number.
+          (mat.kd != 0.0 ? span_forces<true> : span_forces<false>)(
+              X[0], X[1], X[2], V[0], V[1], V[2], a, bb, count, span.rest, mat.ks, mat.kd, F[0] + a, F[1] + a, F[2] + a, chunk[0], chunk[1], chunk[2]);
+          // b-ends in this block now; those beyond it later, from the buffer.
+          const int inside = std::clamp(end - bb, 0, count);
+          for (int c = 0; c < 3; ++c) {
+            subtract(F[c] + bb, chunk[c], inside);
+            copy(SF[c] + span.first + lo + inside, chunk[c] + inside, count - inside);
+          }
+        }
+      }
     }
-#pragma omp barrier
-    for (const SpringSpan& span : model.spans) {
-      const int lo = std::max(span.b0, own.begin), hi = std::min(span.b0 + span.count, own.end);
-      if (lo >= hi) continue;
-      for (int c = 0; c < 3; ++c) subtract(F[c], SF[c] + span.first, lo, hi, span.b0);
+    // (The end of the loop above waits for every thread: the buffer is complete.)
+#pragma omp for schedule(static)
+    for (int b = 0; b < blocks; ++b) {
+      const int begin = b * plan.block, end = std::min(n, begin + plan.block);
+      for (const ForcePlan::Piece& piece : plan.incoming[b]) {
+        const SpringSpan& span = model.spans[piece.span];
+        for (int c = 0; c < 3; ++c)
+          subtract(F[c] + span.b0 + piece.lo, SF[c] + span.first + piece.lo, piece.hi - piece.lo);
+      }
+      finish(begin, end);
     }
-    finish(own.begin, own.end);
   }
 }
 

@@ -165,28 +165,30 @@ void cloth(ObjectReader& r, const std::string& name, Builder& b) {
                  velocity, node_mass, pinned[j * W + i]);
 
   const auto node = [&](long i, long j) { return first + static_cast<int>(j * W + i); };
-  const auto spring = [&](int a, int c, int material) {
-    add_spring(b.model, a, c, (b.x[c] - b.x[a]).norm(), material);
-  };
+  // Rest lengths from the lattice's spacing, not from the nodes' rounded positions: every spring
+  // of a kind gets the very same length, so the springs group into long spans (model.hpp).
+  const double sx = size[0] / double(W - 1), sy = size[1] / double(H - 1);
+  const auto spring = [&](int a, int c, double rest, int material) { add_spring(b.model, a, c, rest, material); };
   const int structural = add_material(b.model, {stretch, damping});
   for (long j = 0; j < H; ++j)
-    for (long i = 0; i + 1 < W; ++i) spring(node(i, j), node(i + 1, j), structural);
+    for (long i = 0; i + 1 < W; ++i) spring(node(i, j), node(i + 1, j), sx, structural);
   for (long j = 0; j + 1 < H; ++j)
-    for (long i = 0; i < W; ++i) spring(node(i, j), node(i, j + 1), structural);
+    for (long i = 0; i < W; ++i) spring(node(i, j), node(i, j + 1), sy, structural);
   if (shear > 0) {
     const int m = add_material(b.model, {shear, damping});
+    const double diagonal = std::hypot(sx, sy);
     for (long j = 0; j + 1 < H; ++j)
       for (long i = 0; i + 1 < W; ++i) {
-        spring(node(i, j), node(i + 1, j + 1), m);
-        spring(node(i + 1, j), node(i, j + 1), m);
+        spring(node(i, j), node(i + 1, j + 1), diagonal, m);
+        spring(node(i + 1, j), node(i, j + 1), diagonal, m);
       }
   }
   if (bend > 0) {
     const int m = add_material(b.model, {bend, damping});
     for (long j = 0; j < H; ++j)
-      for (long i = 0; i + 2 < W; ++i) spring(node(i, j), node(i + 2, j), m);
+      for (long i = 0; i + 2 < W; ++i) spring(node(i, j), node(i + 2, j), 2.0 * sx, m);
     for (long j = 0; j + 2 < H; ++j)
-      for (long i = 0; i < W; ++i) spring(node(i, j), node(i, j + 2), m);
+      for (long i = 0; i < W; ++i) spring(node(i, j), node(i, j + 2), 2.0 * sy, m);
   }
 
   Surface surface{name, {}};
@@ -237,7 +239,9 @@ void box(ObjectReader& r, const std::string& name, Builder& b) {
       }
   // Every neighbour in the 3 x 3 x 3 cell around a node: edges, face and body diagonals. The
   // 13 "forward" offsets visit each pair once. k_s = stiffness x rest length (see the header).
-  std::map<long, int> material_by_length;  // the three lengths' materials, by rounded length
+  // Rest lengths from the lattice's spacing (as for the cloth), one material for each length.
+  const Vec3 spacing(size.x() / double(n[0] - 1), size.y() / double(n[1] - 1), size.z() / double(n[2] - 1));
+  std::map<double, int> material_by_length;
   for (long k = 0; k < n[2]; ++k)
     for (long j = 0; j < n[1]; ++j)
       for (long i = 0; i < n[0]; ++i)
@@ -248,11 +252,10 @@ void box(ObjectReader& r, const std::string& name, Builder& b) {
               const long i2 = i + di, j2 = j + dj, k2 = k + dk;
               if (i2 < 0 || j2 < 0 || i2 >= n[0] || j2 >= n[1] || k2 >= n[2]) continue;
               const int a = index(i, j, k), c = index(i2, j2, k2);
-              const double L = (b.x[c] - b.x[a]).norm();
-              const long key = std::lround(L * 1e9);
-              auto it = material_by_length.find(key);
+              const double L = Vec3(std::abs(di) * spacing.x(), std::abs(dj) * spacing.y(), dk * spacing.z()).norm();
+              auto it = material_by_length.find(L);
               if (it == material_by_length.end())
-                it = material_by_length.emplace(key, add_material(b.model, {stiffness * L, damping * L})).first;
+                it = material_by_length.emplace(L, add_material(b.model, {stiffness * L, damping * L})).first;
               add_spring(b.model, a, c, L, it->second);
             }
 

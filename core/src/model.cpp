@@ -41,7 +41,7 @@ void finalize(Model& model) {
   std::stable_sort(order.begin(), order.end(), [&](int i, int j) {
     const auto key = [&](int s) {
       return std::tuple(model.spring_material[s], model.spring_b[s] - model.spring_a[s],
-                        model.spring_a[s]);
+                        model.rest_length[s], model.spring_a[s]);
     };
     return key(i) < key(j);
   });
@@ -61,12 +61,13 @@ void finalize(Model& model) {
       SpringSpan& last = model.spans.back();
       const int k = s - last.first;
       if (model.spring_a[s] == last.a0 + k && model.spring_b[s] == last.b0 + k &&
-          model.spring_material[s] == last.material) {
+          model.spring_material[s] == last.material && model.rest_length[s] == last.rest) {
         ++last.count;
         continue;
       }
     }
-    model.spans.push_back({s, 1, model.spring_a[s], model.spring_b[s], model.spring_material[s]});
+    model.spans.push_back({s, 1, model.spring_a[s], model.spring_b[s], model.spring_material[s],
+                           model.rest_length[s]});
   }
 }
 

@@ -14,9 +14,23 @@
 
 namespace springlab {
 
-// Per-spring force on end a, structure of arrays; reused between evaluations.
+// Reused between evaluations: the plan of the force pass for a model (force_pass.hpp), and the
+// forces of the springs that reach from one block of particles into another.
+struct ForcePlan {
+  struct Piece {
+    int span;    // index into model.spans
+    int lo, hi;  // springs [lo, hi) of the span (from its first)
+  };
+  int particles = -1, springs = -1;  // of the model it was made for
+  const void* spans = nullptr;
+  int block = 0;                             // particles a block
+  std::vector<std::vector<Piece>> own;       // per block: springs whose a-end it holds
+  std::vector<std::vector<Piece>> incoming;  // per block: springs from an earlier block to it
+};
+
 struct SpringForces {
-  std::vector<double> x, y, z;
+  std::vector<double> x, y, z;  // per spring: the force on its a-end, where buffered
+  ForcePlan plan;
 };
 
 enum class ForceOutput {

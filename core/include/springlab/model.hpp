@@ -26,15 +26,16 @@ struct SpringMaterial {
 };
 
 // A run of springs whose ends are consecutive particles: spring first + k joins particles
-// a0 + k and b0 + k, all with one material. Generators produce long runs (a rope is one span,
-// a cloth's vertical springs are one span), which lets the force loop read positions
-// contiguously and vectorise. A lone spring is a span of length one.
+// a0 + k and b0 + k, all with one material and one rest length. Generators produce long runs (a
+// rope is one span, a cloth's vertical springs are one span), which lets the force loop read
+// positions contiguously and vectorise. A lone spring is a span of length one.
 struct SpringSpan {
   std::int32_t first = 0;
   std::int32_t count = 0;
   std::int32_t a0 = 0;
   std::int32_t b0 = 0;
   std::int32_t material = 0;
+  double rest = 0.0;
 };
 
 struct PlaneCollider {
@@ -90,8 +91,8 @@ int add_particle(Model& model, double mass, bool pinned);
 int add_material(Model& model, SpringMaterial material);
 void add_spring(Model& model, int a, int b, double rest_length, int material);
 
-// Sorts the springs (by material, then by b - a, then by a), orients them a < b and groups them
-// into spans. The order of springs after this is what every loop uses.
+// Sorts the springs (by material, then by b - a, then by rest length, then by a), orients them
+// a < b and groups them into spans. The order of springs after this is what every loop uses.
 void finalize(Model& model);
 
 // Parameter changes the app and the command line make (the only ways the model changes).

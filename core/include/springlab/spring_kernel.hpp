@@ -25,12 +25,13 @@ inline bool coincident(double l, double rest) { return l <= kCoincident * (rest 
 inline Eigen::Vector3d spring_force(const Eigen::Vector3d& xa, const Eigen::Vector3d& xb,
                                     const Eigen::Vector3d& va, const Eigen::Vector3d& vb,
                                     double ks, double kd, double rest) {
-  // Written as (k_s (l - L) + k_d (dv . d) / l) / l * d: the very arithmetic of the vectorised
-  // loop in forces.cpp, so both give the same bits.
+  // Written as (k_s (l - L) + k_d (dv . d) / l) / l * d with 1/l = l (1/l^2): the very
+  // arithmetic of the vectorised loop in force_pass.hpp, so both give the same bits.
   const Eigen::Vector3d d = xb - xa;
   const Eigen::Vector3d dv = vb - va;
-  const double l = std::sqrt(d.x() * d.x() + d.y() * d.y() + d.z() * d.z());
-  const double inv = coincident(l, rest) ? 0.0 : 1.0 / l;
+  const double l2 = d.x() * d.x() + d.y() * d.y() + d.z() * d.z();
+  const double l = std::sqrt(l2);
+  const double inv = coincident(l, rest) ? 0.0 : l * (1.0 / l2);
   const double rate = dv.x() * d.x() + dv.y() * d.y() + dv.z() * d.z();
   return ((ks * (l - rest) + kd * rate * inv) * inv) * d;
 }
