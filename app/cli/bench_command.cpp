@@ -25,6 +25,7 @@ int bench(const BenchOptions& o) {
   SimOptions sim = o.sim;
   if (!sim.steps && !sim.duration) sim.steps = 1000;
   Prepared p = prepare(o.scene, sim);
+  require_integration(p.scene, "bench");
   Simulation s(p.scene.model, p.scene.state, p.settings);
   // Warm-up: caches, the first allocations, the implicit solver's pattern.
   const std::int64_t warm = std::max<std::int64_t>(1, p.steps / 10);

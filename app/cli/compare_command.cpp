@@ -128,6 +128,7 @@ int compare(const CompareOptions& o) {
     }
   }
   Prepared p = prepare(o.scene, o.sim);
+  require_integration(p.scene, "compare");
   SweepSettings s;
   s.methods = list;
   s.points = o.points;

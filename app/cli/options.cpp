@@ -88,4 +88,11 @@ Prepared prepare(const std::string& scene_name, const SimOptions& o) {
   return p;
 }
 
+void require_integration(const Scene& scene, const char* command) {
+  if (scene.ik)
+    throw InputError(std::string(command) + ": '" + scene.name + "' is an inverse-kinematics scene, which has no "
+                     "integrator to measure; use `springlab run " + scene.name + "` (each solver's result), "
+                     "`view` or `render`");
+}
+
 }  // namespace springlab::app

@@ -38,6 +38,9 @@ struct Prepared {
 // and --threads, and checks every value. Throws InputError.
 Prepared prepare(const std::string& scene, const SimOptions& options);
 
+// `compare` and `bench` time integrators: an inverse-kinematics scene has none to time.
+void require_integration(const Scene& scene, const char* command);
+
 // A warning on stderr when the step is past the method's estimated stability limit (the run
 // will most likely diverge), with the step that would do.
 void warn_if_unstable(Simulation& sim, const std::string& scene);

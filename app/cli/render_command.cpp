@@ -59,6 +59,22 @@ std::vector<Method> parse_methods(const std::string& list) {
   return out;
 }
 
+// For an inverse-kinematics scene, --compare names solvers.
+std::vector<IkSolver> parse_solvers(const std::string& list) {
+  std::vector<IkSolver> out;
+  std::stringstream s(list);
+  for (std::string name; std::getline(s, name, ',');) {
+    const auto solver = find_ik_solver(name);
+    if (!solver)
+      throw InputError("--compare: unknown solver '" + name + "' (this is an inverse-kinematics scene; solvers: " +
+                       ik_solver_names() + ")");
+    out.push_back(*solver);
+  }
+  if (out.size() < 2 || out.size() > Session::kMaxLanes)
+    throw InputError("--compare: give 2 or more solvers separated by commas, e.g. ccd,fabrik,dls");
+  return out;
+}
+
 // A folder made for the output, removed again if the render fails before putting anything in it.
 struct MadeFolder {
   std::filesystem::path path;
@@ -80,8 +96,6 @@ int render(const RenderOptions& o) {
   if (o.duration) check_option("--duration", *o.duration, 0.0, 1e6, true, " s");
   if (o.video && (width % 2 || height % 2))
     throw InputError("--size: a video needs an even width and height (yuv420p), got " + *o.size);
-  std::vector<Method> compare;
-  if (o.compare) compare = parse_methods(*o.compare);
   std::set<std::int64_t> selected;
   if (o.select) {
     std::stringstream s(*o.select);
@@ -95,6 +109,12 @@ int render(const RenderOptions& o) {
 
   SimOptions sim_options = o.sim;
   Prepared p = prepare(o.scene, sim_options);
+  std::vector<Method> compare;
+  std::vector<IkSolver> compare_solvers;
+  if (o.compare) {
+    if (p.scene.ik) compare_solvers = parse_solvers(*o.compare);
+    else compare = parse_methods(*o.compare);
+  }
   std::optional<Script> script;
   if (o.script) script = load_script(*o.script, p.scene);
   const double duration = o.duration ? *o.duration : script ? std::max(script->end_time() + 1.0, 1.0) : p.scene.duration;
@@ -120,6 +140,7 @@ int render(const RenderOptions& o) {
   const std::string scene_name = p.scene.name;
   Session session(std::move(p.scene), p.settings, o.fps);
   if (!compare.empty()) session.set_compare(compare);
+  if (!compare_solvers.empty()) session.set_compare_solvers(compare_solvers);
   if (script) session.play(*script);
   for (Lane& lane : session.lanes()) warn_if_unstable(lane.sim, scene_name);
   ui::UiState ui;
@@ -189,7 +210,7 @@ Command add_render_command(CLI::App& app) {
   c->add_flag("--ui", o->ui, "include the app's panels");
   c->add_option("--ui-scale", o->ui_scale, "size of the panels and text (default: height / 720)");
   c->add_option("--script", o->script, "play a scripted demo (JSON)");
-  c->add_option("--compare", o->compare, "2 to 4 methods side by side, e.g. euler,verlet");
+  c->add_option("--compare", o->compare, "2 to 4 methods side by side, e.g. euler,verlet (IK scenes: solvers, e.g. ccd,fabrik,dls)");
   c->add_option("--select", o->select, "write only these frames, e.g. 0,60,120");
   c->add_flag("--software", o->software, "use the software rasteriser even with a GPU (same pixels everywhere)");
   return [o] { return render(*o); };

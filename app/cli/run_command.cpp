@@ -60,8 +60,31 @@ std::string format(double x) {
   return buffer;
 }
 
+// An inverse-kinematics scene: each solver from the starting pose to the target, as far as it
+// gets, one line each.
+int run_ik(const Scene& scene, bool csv) {
+  if (csv) throw InputError("--csv: '" + scene.name + "' is an inverse-kinematics scene, which has no trace over time");
+  const IkScene& ik = *scene.ik;
+  const Eigen::Vector2d target = scene.state.x.row(ik.target).head<2>().transpose();
+  const double distance = (target - ik.chain.base).norm();
+  std::printf("scene      %s (inverse kinematics: %d links, reach %.4g m)\n", scene.name.c_str(), ik.chain.size(),
+              ik.chain.reach());
+  const IkStatus start = ik_status(ik.chain, target, ik.settings);
+  std::printf("target     (%.4g, %.4g), %.4g m from the base: %s\n", target.x(), target.y(), distance,
+              start.reachable ? "within reach" : "out of reach (the chain can only stretch towards it)");
+  for (IkSolver solver : ik.solvers) {
+    IkChain chain = ik.chain;
+    const IkStatus s = ik_solve(solver, chain, target, ik.settings);
+    std::printf("%-10s %s after %d iterations, error %.3g m (tolerance %.3g m)\n", ik_solver_info(solver).name,
+                s.converged ? "reached" : s.stalled ? "stuck" : "not reached", s.iterations, s.error,
+                ik.settings.tolerance);
+  }
+  return kOk;
+}
+
 int run(const RunOptions& o) {
   Prepared p = prepare(o.scene, o.sim);
+  if (p.scene.ik) return run_ik(p.scene, o.csv.has_value());
   if (o.every < 1) throw InputError("--every: must be at least 1, got " + std::to_string(o.every));
   std::unique_ptr<AtomicFile> csv;
   if (o.csv) csv = std::make_unique<AtomicFile>(*o.csv, "CSV trace");

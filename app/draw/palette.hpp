@@ -6,12 +6,23 @@
 #include <string>
 
 #include "draw/frame.hpp"
+#include "springlab/ik.hpp"
 #include "springlab/methods.hpp"
 
 namespace springlab::draw {
 
 // Distinct on a dark background and on a projector, and for the common colour-vision
 // deficiencies as far as nine colours allow (Okabe-Ito based).
+// The IK solvers, distinct from one another in compare mode.
+inline Rgba solver_color(IkSolver s) {
+  switch (s) {
+    case IkSolver::CCD: return {0.90f, 0.38f, 0.00f, 1};     // vermilion
+    case IkSolver::FABRIK: return {0.34f, 0.71f, 0.91f, 1};  // sky blue
+    case IkSolver::DLS: return {0.00f, 0.62f, 0.45f, 1};     // bluish green
+  }
+  return {1, 1, 1, 1};
+}
+
 inline Rgba method_color(Method m) {
   switch (m) {
     case Method::Euler: return {0.90f, 0.38f, 0.00f, 1};            // vermilion
@@ -47,6 +58,9 @@ inline Rgba strain_color(double strain, double scale) {
 }
 
 inline constexpr Rgba kGrabbed{1.0f, 0.85f, 0.2f, 1};
+inline constexpr Rgba kTarget{1.0f, 0.30f, 0.35f, 1};     // an IK chain's target
+inline constexpr Rgba kReach{0.60f, 0.64f, 0.70f, 0.45f};  // the circles an IK chain can reach
+inline constexpr Rgba kAttractor{0.62f, 0.45f, 0.95f, 1};
 inline constexpr Rgba kParticle{0.92f, 0.93f, 0.95f, 1};
 inline constexpr Rgba kClothFront{0.93f, 0.55f, 0.28f, 1};
 inline constexpr Rgba kClothBack{0.28f, 0.60f, 0.72f, 1};

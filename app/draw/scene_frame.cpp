@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "draw/camera.hpp"
 #include "draw/palette.hpp"
@@ -49,7 +50,9 @@ ViewOptions ViewOptions::for_scene(const Scene& scene) {
   std::vector<double> lengths(scene.model.rest_length);
   for (double& l : lengths)
     if (l == 0.0) l = 0.5;  // zero-length springs: a generic scale
-  if (!lengths.empty()) {
+  if (lengths.empty() && scene.model.particle_radius > 0.0) {
+    o.spacing = 5.0 * scene.model.particle_radius;  // drawn at the size they collide at
+  } else if (!lengths.empty()) {
     std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
     o.spacing = lengths[lengths.size() / 2];
   } else {
@@ -77,12 +80,30 @@ Frame build_frame(const app::Session& session, const ViewOptions& options, Viewp
     frame.planes.push_back({p.point.cast<float>(), p.normal.cast<float>(), 4.0f * size, 0.5f});
   for (const SphereCollider& s : model.spheres)
     frame.spheres.push_back({s.center.cast<float>(), static_cast<float>(s.radius), kCollider});
+  // Attractors: a small ball at the centre, the size of the softening.
+  for (const Attractor& a : model.attractors)
+    frame.spheres.push_back({a.center.cast<float>(), static_cast<float>(std::min(a.softening, 2.0 * options.spacing)), kAttractor});
+  // An IK chain: the circles bounding what its end can reach (reach, and the inner one, if any).
+  if (scene.ik) {
+    const IkChain& chain = scene.ik->chain;
+    const Vec3f base(static_cast<float>(chain.base.x()), static_cast<float>(chain.base.y()), 0.0f);
+    for (double r : {chain.reach(), chain.inner_reach()}) {
+      if (!(r > 0.0)) continue;
+      constexpr int kSegments = 128;
+      for (int k = 0; k < kSegments; ++k) {
+        const double a0 = 2 * std::numbers::pi * k / kSegments, a1 = 2 * std::numbers::pi * (k + 1) / kSegments;
+        const Vec3f p0 = base + static_cast<float>(r) * Vec3f(std::cos(a0), std::sin(a0), 0.0f);
+        const Vec3f p1 = base + static_cast<float>(r) * Vec3f(std::cos(a1), std::sin(a1), 0.0f);
+        frame.lines.push_back({p0, p1, kReach, kReach, 1.5f});
+      }
+    }
+  }
 
   const bool compare = session.comparing();
   for (const app::Lane& lane : session.lanes()) {
     const State& state = lane.sim.state();
     const Model& m = lane.sim.model();
-    Rgba tint = method_color(lane.sim.settings().method);
+    Rgba tint = lane.ik ? solver_color(lane.ik->solver) : method_color(lane.sim.settings().method);
     if (lane.sim.diverged()) tint.a = 0.35f;  // frozen where it diverged, faded
 
     if (options.surfaces && !compare)
@@ -94,7 +115,7 @@ Frame build_frame(const app::Session& session, const ViewOptions& options, Viewp
         const double l = (state.x.row(b) - state.x.row(a)).norm();
         const double rest = m.rest_length[k];
         const double strain = rest > 0 ? (l - rest) / rest : 0.0;
-        const Rgba c = compare ? tint : strain_color(strain, options.strain_scale);
+        const Rgba c = compare || lane.ik ? tint : strain_color(strain, options.strain_scale);
         frame.lines.push_back({f(state.x.row(a)), f(state.x.row(b)), c, c, line_width});
       }
     }
@@ -107,10 +128,27 @@ Frame build_frame(const app::Session& session, const ViewOptions& options, Viewp
           c1.a *= static_cast<float>(k) / trail.size();
           frame.lines.push_back({trail[k - 1].cast<float>(), trail[k].cast<float>(), c0, c1, 2.0f});
         }
+    const Emission& emission = lane.sim.emission();
     for (int i = 0; i < m.particle_count(); ++i) {
-      const bool pinned = scene.model.pinned(i);
       const bool held = i == session.grabbed();
+      if (emission.owned(i)) {
+        // An emitted particle: drawn only while alive, in its colour, fading out with age.
+        if (!emission.alive(i)) continue;
+        const double life = emission.lifetime(i);
+        const float left = life > 0 ? static_cast<float>(std::clamp(1.0 - emission.age(i, state.t) / life, 0.0, 1.0)) : 1.0f;
+        const Vec3& rgb = emission.color(i);
+        Rgba c = held ? kGrabbed : compare ? tint : Rgba{float(rgb.x()), float(rgb.y()), float(rgb.z()), 1.0f};
+        c.a *= std::sqrt(left) * (lane.sim.diverged() ? 0.35f : 1.0f);
+        frame.particles.push_back({f(state.x.row(i)), held ? 1.3f * radius : radius, c, false});
+        continue;
+      }
+      const bool pinned = scene.model.pinned(i);
       if (!options.particles && !pinned && !held && !(scene.surfaces.empty())) continue;
+      if (scene.ik && i == scene.ik->target) {
+        const float size = std::max(1.4f * radius, 8.0f * wpp);  // big enough to grab
+        frame.particles.push_back({f(state.x.row(i)), held ? 1.2f * size : size, held ? kGrabbed : kTarget, false});
+        continue;
+      }
       Rgba c = held ? kGrabbed : compare ? tint : kParticle;
       if (lane.sim.diverged()) c.a = 0.35f;
       frame.particles.push_back({f(state.x.row(i)), held ? 1.3f * radius : radius, c, pinned});

@@ -31,8 +31,9 @@ struct History {
   Series t, kinetic, potential, total, dissipated;
   Series x, v;        // the watched particle: its coordinate along the watched axis, and velocity
   Series exact_x;     // the exact solution there, where the scene has one (else empty)
+  Series ik_error;    // IK scenes: the distance from the chain's end to the target (m)
   void clear() {
-    for (Series* s : {&t, &kinetic, &potential, &total, &dissipated, &x, &v, &exact_x}) s->clear();
+    for (Series* s : {&t, &kinetic, &potential, &total, &dissipated, &x, &v, &exact_x, &ik_error}) s->clear();
   }
 };
 

@@ -9,6 +9,10 @@ namespace springlab::app {
 Session::Session(Scene scene, SimulationSettings settings, double fps)
     : scene_(std::move(scene)), settings_(settings), fps_(fps) {
   settings_.track_dissipation = true;
+  if (scene_.ik) {
+    solver_ = scene_.ik->solvers.front();
+    ik_iterations_ = scene_.ik->iterations_per_frame;
+  }
   lanes_.push_back(make_lane(settings_.method));
   // Watch the last free particle (a rope's free end, the spring's mass), along the spring of an
   // exact oscillator, else along gravity, else along x.
@@ -26,13 +30,61 @@ Session::Session(Scene scene, SimulationSettings settings, double fps)
   for (Lane& lane : lanes_) sample(lane);
 }
 
-Lane Session::make_lane(Method method) const {
+Lane Session::make_lane(Method method, std::optional<IkSolver> solver) const {
   SimulationSettings s = settings_;
   s.method = method;
-  Lane lane{Simulation(scene_.model, scene_.state, s), {}, ExactOscillator::detect(scene_.model, scene_.state), {}};
+  Lane lane{Simulation(scene_.model, scene_.state, s), {}, ExactOscillator::detect(scene_.model, scene_.state), {}, {}};
   lane.trails.resize(scene_.trails.size());
+  if (scene_.ik) {
+    const Vec3 target = scene_.state.x.row(scene_.ik->target).transpose();
+    lane.ik = IkLane{solver.value_or(solver_), scene_.ik->chain, {}, target.head<2>()};
+    lane.ik->status = ik_status(lane.ik->chain, lane.ik->target, scene_.ik->settings);
+  }
   return lane;
 }
+
+void Session::iterate_ik(Lane& lane, int iterations) {
+  IkLane& ik = *lane.ik;
+  const IkSettings& settings = scene_.ik->settings;
+  const Eigen::Vector2d target = lane.sim.state().x.row(scene_.ik->target).head<2>().transpose();
+  // Moved (by more than rounding: a held target creeps by ulps): the count starts again.
+  if ((target - ik.target).norm() > 1e-9 * ik.chain.reach()) {
+    ik.target = target;
+    ik.status = ik_status(ik.chain, target, settings);
+  }
+  for (int k = 0; k < iterations && !ik.status.converged && !ik.status.stalled; ++k) {
+    const std::vector<double> before = ik.chain.angles;
+    ik_iterate(ik.solver, ik.chain, target, settings);
+    const int done = ik.status.iterations + 1;
+    ik.status = ik_status(ik.chain, target, settings);
+    ik.status.iterations = done;
+    ik.status.stalled = !ik.status.converged && ik.chain.angles == before;
+  }
+  const std::vector<Eigen::Vector2d> joints = ik.chain.positions();
+  for (std::size_t j = 0; j < joints.size(); ++j)
+    lane.sim.place(scene_.ik->first_joint + static_cast<int>(j), Vec3(joints[j].x(), joints[j].y(), 0.0));
+}
+
+void Session::set_solver(IkSolver solver) {
+  solver_ = solver;
+  if (comparing() || !scene_.ik) return;
+  Lane& lane = lanes_.front();
+  lane.ik->solver = solver;  // from the pose it has reached: a new solver takes over from there
+  lane.ik->status = ik_status(lane.ik->chain, lane.ik->target, scene_.ik->settings);
+}
+
+void Session::set_compare_solvers(const std::vector<IkSolver>& solvers) {
+  if (!scene_.ik) return;
+  release();
+  lanes_.clear();
+  if (solvers.empty()) lanes_.push_back(make_lane(settings_.method, solver_));
+  for (std::size_t k = 0; k < solvers.size() && k < kMaxLanes; ++k)
+    lanes_.push_back(make_lane(settings_.method, solvers[k]));
+  target_ = scene_.state.t;
+  for (Lane& lane : lanes_) sample(lane);
+}
+
+void Session::set_ik_iterations_per_frame(int iterations) { ik_iterations_ = std::clamp(iterations, 1, 10000); }
 
 void Session::sample(Lane& lane) {
   const Simulation& sim = lane.sim;
@@ -47,6 +99,7 @@ void Session::sample(Lane& lane) {
   h.x.push(sim.state().x(watched_, watched_axis_));
   h.v.push(sim.state().v(watched_, watched_axis_));
   if (lane.exact) h.exact_x.push(lane.exact->at(t).x(watched_, watched_axis_));
+  if (lane.ik) h.ik_error.push(lane.ik->status.error);
   for (std::size_t k = 0; k < lane.trails.size(); ++k) {
     auto& trail = lane.trails[k];
     trail.push_back(sim.state().x.row(scene_.trails[k]).transpose());
@@ -79,6 +132,7 @@ void Session::advance_frame() {
     const double dt = sim.settings().dt;
     const double due = std::floor((target_ - sim.state().t) / dt + 1e-9);
     if (due > 0) sim.advance(static_cast<std::int64_t>(due));
+    if (lane.ik) iterate_ik(lane, paused_ ? 0 : ik_iterations_);
   }
   ++frame_;
   if (grabbed_ >= 0) drags_.back().to = primary().sim.state().x.row(grabbed_).transpose();
@@ -90,6 +144,7 @@ void Session::step_once() {
   for (Lane& lane : lanes_) {
     if (lane.sim.diverged()) continue;
     lane.sim.step();
+    if (lane.ik) iterate_ik(lane, 1);
     latest = std::max(latest, lane.sim.state().t);
     sample(lane);
   }
@@ -180,6 +235,7 @@ void Session::reset() {
     l.history.clear();
     for (auto& trail : l.trails) trail.clear();
     l.exact = ExactOscillator::detect(l.sim.model(), l.sim.state());
+    if (l.ik) *l.ik = *make_lane(l.sim.settings().method, l.ik->solver).ik;
   }
   target_ = scene_.state.t;
   for (Lane& lane : lanes_) sample(lane);
@@ -206,9 +262,12 @@ double Session::friction() const {
 
 int Session::pick(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, double radius) const {
   const State& s = primary().sim.state();
+  const Emission& emission = primary().sim.emission();
   int best = -1;
   double best_along = std::numeric_limits<double>::infinity();
   for (int i = 0; i < s.particle_count(); ++i) {
+    if (emission.owned(i) && !emission.alive(i)) continue;  // not born yet, or gone
+    if (scene_.ik && i != scene_.ik->target) continue;     // the solvers place the joints
     const Vec3 p = s.x.row(i).transpose() - origin;
     const double along = p.dot(direction);
     if (along < 0.0) continue;

@@ -24,11 +24,22 @@
 
 namespace springlab::app {
 
+// An inverse-kinematics lane (scenes with scene.ik): a solver working on its own copy of the
+// chain, towards the target particle of the lane's simulation, a few iterations a frame; the
+// joints are placed in the simulation's state for drawing.
+struct IkLane {
+  IkSolver solver;
+  IkChain chain;
+  IkStatus status;  // status.iterations: since the target last moved
+  Eigen::Vector2d target = Eigen::Vector2d::Zero();
+};
+
 struct Lane {
   Simulation sim;
   History history;
   std::optional<ExactOscillator> exact;  // from the last change of the model
   std::vector<std::vector<Vec3>> trails;  // one per scene.trails particle, oldest first
+  std::optional<IkLane> ik;
 };
 
 class Session {
@@ -55,6 +66,14 @@ class Session {
   // with the first method. Every lane restarts from the initial state.
   void set_compare(const std::vector<Method>& methods);
   bool comparing() const { return lanes_.size() > 1; }
+
+  // Inverse kinematics (scenes with an "ik" part): the solver of the single lane, or one lane
+  // per solver side by side (2 to 3; empty: back to one lane), and the iterations a frame.
+  void set_solver(IkSolver solver);
+  IkSolver solver() const { return solver_; }
+  void set_compare_solvers(const std::vector<IkSolver>& solvers);
+  void set_ik_iterations_per_frame(int iterations);
+  int ik_iterations_per_frame() const { return ik_iterations_; }
 
   // Parameters, for every lane.
   void set_method(Method method);  // one lane: switches it at once, mid-motion
@@ -111,8 +130,9 @@ class Session {
  private:
   void apply(const ScriptEvent& event);
   void model_changed(Lane& lane);
+  void iterate_ik(Lane& lane, int iterations);
   void sample(Lane& lane);
-  Lane make_lane(Method method) const;
+  Lane make_lane(Method method, std::optional<IkSolver> solver = std::nullopt) const;
 
   Scene scene_;
   SimulationSettings settings_;
@@ -126,6 +146,8 @@ class Session {
   std::optional<Vec3> drag_target_;
   std::vector<DragRecord> drags_;
   int watched_ = 0, watched_axis_ = 0;
+  IkSolver solver_ = IkSolver::CCD;
+  int ik_iterations_ = 1;
   std::optional<Script> script_;
   std::size_t next_event_ = 0;
   std::optional<std::pair<double, std::vector<std::pair<double, Vec3>>>> path_;  // start, waypoints

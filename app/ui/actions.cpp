@@ -14,6 +14,10 @@ void perform(Action action, app::Session& session, UiState& ui) {
     case Action::ToggleHelp: ui.help = !ui.help; break;
     case Action::ToggleAccuracy: ui.accuracy = !ui.accuracy; break;
     case Action::ToggleCompare: {
+      if (session.scene().ik) {  // the solvers side by side, from the same start
+        session.set_compare_solvers(session.comparing() ? std::vector<IkSolver>{} : session.scene().ik->solvers);
+        break;
+      }
       if (session.comparing()) {
         session.set_compare({});
         break;
@@ -26,7 +30,12 @@ void perform(Action action, app::Session& session, UiState& ui) {
     }
     default: {
       const int k = static_cast<int>(action) - static_cast<int>(Action::Method1);
-      if (!session.comparing()) session.set_method(methods()[k].id);
+      if (session.comparing()) break;
+      if (session.scene().ik) {  // keys 1 to 3 pick a solver
+        if (k < static_cast<int>(ik_solvers().size())) session.set_solver(ik_solvers()[k].id);
+      } else {
+        session.set_method(methods()[k].id);
+      }
       break;
     }
   }

@@ -21,8 +21,13 @@ void draw_overlay(const app::Session& session, const draw::Viewport& viewport, f
   if (caption) {
     char s[256];
     const auto& lanes = session.lanes();
-    std::snprintf(s, sizeof s, "%s  |  %s  |  t = %.3f s", scene_name.c_str(),
-                  session.comparing() ? "compare" : method_info(session.method()).label, lanes.front().sim.state().t);
+    if (const auto& ik = lanes.front().ik; ik && !session.comparing())
+      std::snprintf(s, sizeof s, "%s  |  %s  |  iteration %d, error %.3g m%s", scene_name.c_str(),
+                    ik_solver_info(ik->solver).label, ik->status.iterations, ik->status.error,
+                    ik->status.reachable ? "" : "  |  target out of reach");
+    else
+      std::snprintf(s, sizeof s, "%s  |  %s  |  t = %.3f s", scene_name.c_str(),
+                    session.comparing() ? "compare" : method_info(session.method()).label, lanes.front().sim.state().t);
     const ImVec2 size = ImGui::CalcTextSize(s);
     const ImVec2 p(viewport.x + pad, viewport.y + viewport.height - pad - size.y);
     dl->AddRectFilled(ImVec2(p.x - 6, p.y - 3), ImVec2(p.x + size.x + 6, p.y + size.y + 3), back, 4.0f);
@@ -33,7 +38,13 @@ void draw_overlay(const app::Session& session, const draw::Viewport& viewport, f
   std::vector<std::string> rows;
   float width = 0.0f;
   for (const app::Lane& lane : session.lanes()) {
-    std::string row = method_info(lane.sim.settings().method).label;
+    std::string row = lane.ik ? ik_solver_info(lane.ik->solver).label : method_info(lane.sim.settings().method).label;
+    if (lane.ik) {
+      char s[96];
+      std::snprintf(s, sizeof s, "  %d it., error %.2g m%s", lane.ik->status.iterations, lane.ik->status.error,
+                    lane.ik->status.converged ? "" : lane.ik->status.stalled ? " (stuck)" : "");
+      row += s;
+    }
     if (lane.sim.diverged()) {
       char s[64];
       std::snprintf(s, sizeof s, "  diverged at t = %.3g s", lane.sim.divergence()->t);
@@ -49,7 +60,7 @@ void draw_overlay(const app::Session& session, const draw::Viewport& viewport, f
   for (std::size_t k = 0; k < rows.size(); ++k) {
     const app::Lane& lane = session.lanes()[k];
     const float y = p.y + k * line;
-    draw::Rgba c = draw::method_color(lane.sim.settings().method);
+    draw::Rgba c = lane.ik ? draw::solver_color(lane.ik->solver) : draw::method_color(lane.sim.settings().method);
     dl->AddLine(ImVec2(p.x, y + 0.5f * line), ImVec2(p.x + swatch, y + 0.5f * line), u32(c), 4.0f * scale);
     if (lane.sim.diverged()) c = {1.0f, 0.45f, 0.4f, 1.0f};
     dl->AddText(ImVec2(p.x + swatch + 8.0f * scale, y), lane.sim.diverged() ? u32(c) : text, rows[k].c_str());

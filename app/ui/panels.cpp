@@ -116,7 +116,25 @@ chart::Series series(const std::string& label, const draw::Rgba& color, const ap
   return s;
 }
 
+// IK scenes: how far each solver's end is from the target, frame by frame (log scale: the
+// solvers converge at very different rates, and a stuck one levels off).
+void ik_chart(app::Session& session, float width, float height) {
+  chart::Chart error;
+  error.title = "Distance from the end to the target, against time (drag the target to start again)";
+  error.x.label = "t (s)";
+  error.y.label = "m";
+  error.y.log = true;
+  for (const app::Lane& lane : session.lanes()) {
+    chart::Series s = series(ik_solver_info(lane.ik->solver).name, draw::solver_color(lane.ik->solver),
+                             lane.history.t, lane.history.ik_error);
+    for (double& y : s.y) y = std::max(y, 1e-9);  // a log axis needs > 0: an exact hit shows at 1e-9
+    error.series.push_back(std::move(s));
+  }
+  chart::chart_widget("##ik", error, ImVec2(width, height));
+}
+
 void charts(app::Session& session, float width, float height) {
+  if (session.scene().ik) return ik_chart(session, width, height);
   const bool compare = session.comparing();
   const float w = (width - 2 * ImGui::GetStyle().ItemSpacing.x) / 3.0f;
   const draw::Rgba white{0.95f, 0.95f, 0.95f, 1}, ke{1.0f, 0.55f, 0.25f, 1}, pe{0.45f, 0.7f, 1.0f, 1},
@@ -204,6 +222,49 @@ draw::Viewport scene_viewport(const UiState& ui, int width, int height) {
   return {left, 0, width - left, height - bottom};
 }
 
+// An IK scene's controls: the solver, side by side or not, iterations a frame, and each lane's
+// progress, with the two difficulties spelt out: no solution, or many.
+void ik_controls(app::Session& session) {
+  const IkScene& ik = *session.scene().ik;
+  if (!session.comparing() && ImGui::BeginCombo("solver", ik_solver_info(session.solver()).label)) {
+    int key = 1;
+    for (const IkSolverInfo& info : ik_solvers()) {
+      const std::string label = std::to_string(key++) + "  " + info.label;
+      ImGui::PushStyleColor(ImGuiCol_Text, v4(draw::solver_color(info.id)));
+      if (ImGui::Selectable(label.c_str(), info.id == session.solver())) session.set_solver(info.id);
+      ImGui::PopStyleColor();
+    }
+    ImGui::EndCombo();
+  }
+  if (ImGui::Button(session.comparing() ? "One solver (C)" : "Solvers side by side (C)"))
+    session.set_compare_solvers(session.comparing() ? std::vector<IkSolver>{} : ik.solvers);
+  int per_frame = session.ik_iterations_per_frame();
+  if (ImGui::SliderInt("iterations/frame", &per_frame, 1, 100, "%d", ImGuiSliderFlags_Logarithmic))
+    session.set_ik_iterations_per_frame(per_frame);
+  ImGui::TextDisabled("reach %.3g m, %d links; tolerance %.2g m", ik.chain.reach(), ik.chain.size(),
+                      ik.settings.tolerance);
+  for (const app::Lane& lane : session.lanes()) {
+    const app::IkLane& l = *lane.ik;
+    ImGui::PushStyleColor(ImGuiCol_Text, v4(draw::solver_color(l.solver)));
+    ImGui::Text("%s", ik_solver_info(l.solver).name);
+    ImGui::PopStyleColor();
+    ImGui::SameLine();
+    const char* state = l.status.converged ? "reached" : l.status.stalled ? "stuck" : "iterating";
+    ImGui::Text("%s in %d, error %.2g m", state, l.status.iterations, l.status.error);
+  }
+  const IkStatus& first = session.primary().ik->status;
+  ImGui::PushTextWrapPos(0.0f);
+  if (!first.reachable)
+    ImGui::TextColored(kNear, "The target is out of reach: no pose puts the end on it. The chain stretches "
+                              "straight towards it, as close as it can get.");
+  else if (session.comparing())
+    ImGui::TextDisabled("One target, several poses: each solver, from the same start, settles on its own "
+                        "answer. Inverse kinematics has many solutions, or none.");
+  else
+    ImGui::TextDisabled("Drag the red target. Press C to see the solvers side by side.");
+  ImGui::PopTextWrapPos();
+}
+
 Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats, int width, int height) {
   Requests requests;
   const float s = ui.scale;
@@ -232,46 +293,50 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
     if (ImGui::Button("Open") && ui.open_path[0]) requests.load = std::string(ui.open_path);
 
     ImGui::Separator();
-    if (!session.comparing()) {
-      const MethodInfo& current = method_info(session.method());
-      if (ImGui::BeginCombo("method", current.label)) {
-        int key = 1;
-        for (const MethodInfo& m : methods()) {
-          const std::string label = std::to_string(key++) + "  " + m.label;
-          ImGui::PushStyleColor(ImGuiCol_Text, v4(draw::method_color(m.id)));
-          if (ImGui::Selectable(label.c_str(), m.id == current.id)) session.set_method(m.id);
-          ImGui::PopStyleColor();
+    if (session.scene().ik) ik_controls(session);
+    else {
+      if (!session.comparing()) {
+        const MethodInfo& current = method_info(session.method());
+        if (ImGui::BeginCombo("method", current.label)) {
+          int key = 1;
+          for (const MethodInfo& m : methods()) {
+            const std::string label = std::to_string(key++) + "  " + m.label;
+            ImGui::PushStyleColor(ImGuiCol_Text, v4(draw::method_color(m.id)));
+            if (ImGui::Selectable(label.c_str(), m.id == current.id)) session.set_method(m.id);
+            ImGui::PopStyleColor();
+          }
+          ImGui::EndCombo();
         }
-        ImGui::EndCombo();
       }
-    }
-    // Stability: the gauge of each lane, right under the method it judges.
-    const float inner_w = left_w - 2 * ImGui::GetStyle().WindowPadding.x - ImGui::GetStyle().ScrollbarSize;
-    const StabilityEstimate& e = session.lanes()[0].sim.stability();
-    ImGui::TextDisabled("w_max = %.4g rad/s, h = %.3g s", e.w_max, session.lanes()[0].sim.h());
-    for (app::Lane& lane : session.lanes()) gauge(lane, inner_w, !session.comparing());
-    ImGui::Separator();
+      // Stability: the gauge of each lane, right under the method it judges.
+      const float inner_w = left_w - 2 * ImGui::GetStyle().WindowPadding.x - ImGui::GetStyle().ScrollbarSize;
+      const StabilityEstimate& e = session.lanes()[0].sim.stability();
+      ImGui::TextDisabled("w_max = %.4g rad/s, h = %.3g s", e.w_max, session.lanes()[0].sim.h());
+      for (app::Lane& lane : session.lanes()) gauge(lane, inner_w, !session.comparing());
+      ImGui::Separator();
 
-    Simulation& sim = session.lanes()[0].sim;
-    double ks = session.stiffness(), kd = session.damping(), dt = sim.settings().dt, mass = session.mass();
-    double g = sim.model().gravity.norm(), drag = sim.model().drag, mu = session.friction();
-    double tol = sim.settings().step.tolerance;
-    int substeps = sim.settings().substeps;
-    if (slider("k_s (N/m)", ks, ui.ranges.ks / 100, ui.ranges.ks * 100, true)) session.set_stiffness(ks);
-    const double kd_max = std::max(10 * ui.ranges.kd, 2 * std::sqrt(ui.ranges.ks * ui.ranges.mass));
-    if (slider("k_d (N s/m)", kd, 0.0, kd_max, true)) session.set_damping(kd);
-    if (slider("dt (s)", dt, ui.ranges.dt / 100, std::min(1.0, std::max(0.1, ui.ranges.dt * 100)), true, "%.3g"))
-      session.set_dt(dt);
-    if (ImGui::SliderInt("sub-steps", &substeps, 1, 64)) session.set_substeps(substeps);
-    if (slider("mass (kg)", mass, ui.ranges.mass / 100, ui.ranges.mass * 100, true)) session.set_mass(mass);
-    if (slider("gravity (m/s^2)", g, 0.0, 30.0, false, "%.2f")) {
-      const Vec3 dir = sim.model().gravity.norm() > 0 ? Vec3(sim.model().gravity.normalized()) : Vec3(-Vec3::UnitY());
-      session.set_gravity(g * dir);
+      Simulation& sim = session.lanes()[0].sim;
+      double ks = session.stiffness(), kd = session.damping(), dt = sim.settings().dt, mass = session.mass();
+      double g = sim.model().gravity.norm(), drag = sim.model().drag, mu = session.friction();
+      double tol = sim.settings().step.tolerance;
+      int substeps = sim.settings().substeps;
+      const bool springs = sim.model().spring_count() > 0;  // a particle system has none to set
+      if (springs && slider("k_s (N/m)", ks, ui.ranges.ks / 100, ui.ranges.ks * 100, true)) session.set_stiffness(ks);
+      const double kd_max = std::max(10 * ui.ranges.kd, 2 * std::sqrt(ui.ranges.ks * ui.ranges.mass));
+      if (springs && slider("k_d (N s/m)", kd, 0.0, kd_max, true)) session.set_damping(kd);
+      if (slider("dt (s)", dt, ui.ranges.dt / 100, std::min(1.0, std::max(0.1, ui.ranges.dt * 100)), true, "%.3g"))
+        session.set_dt(dt);
+      if (ImGui::SliderInt("sub-steps", &substeps, 1, 64)) session.set_substeps(substeps);
+      if (slider("mass (kg)", mass, ui.ranges.mass / 100, ui.ranges.mass * 100, true)) session.set_mass(mass);
+      if (slider("gravity (m/s^2)", g, 0.0, 30.0, false, "%.2f")) {
+        const Vec3 dir = sim.model().gravity.norm() > 0 ? Vec3(sim.model().gravity.normalized()) : Vec3(-Vec3::UnitY());
+        session.set_gravity(g * dir);
+      }
+      if (slider("drag (N s/m)", drag, 0.0, std::max(1.0, 100 * ui.ranges.drag), true)) session.set_drag(drag);
+      if (sim.model().has_colliders() && slider("friction", mu, 0.0, 2.0, false, "%.2f")) session.set_friction(mu);
+      if (method_info(session.method()).adaptive && slider("tolerance", tol, 1e-10, 1e-1, true, "%.1e"))
+        session.set_tolerance(tol);
     }
-    if (slider("drag (N s/m)", drag, 0.0, std::max(1.0, 100 * ui.ranges.drag), true)) session.set_drag(drag);
-    if (sim.model().has_colliders() && slider("friction", mu, 0.0, 2.0, false, "%.2f")) session.set_friction(mu);
-    if (method_info(session.method()).adaptive && slider("tolerance", tol, 1e-10, 1e-1, true, "%.1e"))
-      session.set_tolerance(tol);
     int speed_exp = static_cast<int>(std::lround(std::log2(session.speed())));
     const char* speeds[] = {"1/16", "1/8", "1/4", "1/2", "1", "2", "4"};
     if (ImGui::SliderInt("speed", &speed_exp, -4, 2, speeds[speed_exp + 4]))
@@ -301,9 +366,11 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
                         stats.sim_ms, stats.draw_ms);
     ImGui::PopTextWrapPos();
 
-    if (ImGui::Button(ui.accuracy ? "Hide accuracy vs cost (A)" : "Accuracy vs cost (A)")) ui.accuracy = !ui.accuracy;
+    if (!session.scene().ik &&
+        ImGui::Button(ui.accuracy ? "Hide accuracy vs cost (A)" : "Accuracy vs cost (A)"))
+      ui.accuracy = !ui.accuracy;
 
-    if (ImGui::CollapsingHeader("Compare methods")) {
+    if (!session.scene().ik && ImGui::CollapsingHeader("Compare methods")) {
     if (ImGui::Button(session.comparing() ? "Single view (C)" : "Compare (C)")) {
       if (session.comparing()) session.set_compare({});
       else if (compare_methods(ui).size() >= 2) session.set_compare(compare_methods(ui));

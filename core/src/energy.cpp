@@ -68,6 +68,9 @@ Energy energy(const Model& model, const State& state) {
   const double g[3] = {model.gravity.x(), model.gravity.y(), model.gravity.z()};
   e.gravity = -sum4(n, [&](int i, int c) { return (w[i] > 0.0 ? m[i] : 0.0) * g[c] * x[c][i]; });
   e.spring = spring_energy_sum(model, state);
+  for (const Attractor& field : model.attractors)
+    for (int i = 0; i < n; ++i)
+      if (w[i] > 0.0) e.field += m[i] * field_potential(field, state.x.row(i).transpose());
   return e;
 }
 
@@ -106,7 +109,7 @@ double dissipation_power(const Model& model, const State& state) {
   }
   if (model.drag > 0.0)
     for (int i = 0; i < model.particle_count(); ++i)
-      if (!model.pinned(i)) power += model.drag * state.v.row(i).squaredNorm();
+      if (!model.pinned(i)) power += model.drag * state.v.row(i).dot(state.v.row(i) - model.wind.transpose());
   return power;
 }
 
@@ -120,6 +123,18 @@ double energy_scale(const Model& model, const State& initial) {
     const double size = (hi - lo).norm();
     const double g = model.gravity.norm();
     for (int i = 0; i < model.particle_count(); ++i) floor += model.mass[i] * g * size;
+  }
+  // Emitted particles: as many as the pools hold, at their fastest, thrown up against gravity
+  // (m v^2 covers their kinetic energy and the height they can gain), and as deep in a well.
+  const auto pool_floor = [&](const Spawn& spawn, const Pool& pool) {
+    const double v = spawn.speed + spawn.speed_spread + model.wind.norm();
+    double well = 0.0;
+    for (const Attractor& f : model.attractors) well += std::abs(f.strength) / f.softening;
+    return pool.capacity * spawn.mass * (v * v + well);
+  };
+  for (const Emitter& e : model.emitters) {
+    floor += pool_floor(e.spawn, e.pool);
+    if (e.burst) floor += pool_floor(e.burst->spawn, e.burst->pool);
   }
   const double scale = std::max(std::abs(energy(model, initial).total()), floor);
   return scale > 0.0 ? scale : 1.0;  // a scene with no energy at all: 1 J

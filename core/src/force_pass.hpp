@@ -4,7 +4,7 @@
 //
 // The particles are cut into fixed blocks (their size depends on the particle count only), and
 // each block holds the springs whose a-end is in it. Blocks are shared out among the threads:
-//   phase 1  for each of its blocks: gravity and drag; then span by span, in chunks small enough
+//   phase 1  for each of its blocks: gravity, drag and the fields; then span by span, in chunks small enough
 //            for the L1 cache, the springs' forces, added to their a-ends as they are computed,
 //            then to those of their b-ends that are in the block; forces reaching into a later
 //            block are kept
@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "springlab/fields.hpp"
 #include "springlab/forces.hpp"
 #include "springlab/spring_kernel.hpp"
 
@@ -124,6 +125,8 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
   double* SF[3] = {buffer.x.data(), buffer.y.data(), buffer.z.data()};
   const double g[3] = {model.gravity.x(), model.gravity.y(), model.gravity.z()};
   const double drag = model.drag;
+  // -k_drag (v - wind) = k_drag wind - k_drag v: the first term is a constant (0 in still air).
+  const double blow[3] = {drag * model.wind.x(), drag * model.wind.y(), drag * model.wind.z()};
   const double* mass = model.mass.data();
   const int blocks = static_cast<int>(plan.own.size());
 
@@ -134,7 +137,12 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
     for (int b = 0; b < blocks; ++b) {
       const int begin = b * plan.block, end = std::min(n, begin + plan.block);
       for (int c = 0; c < 3; ++c)
-        for (int i = begin; i < end; ++i) F[c][i] = mass[i] * g[c] - drag * V[c][i];
+        for (int i = begin; i < end; ++i) F[c][i] = (mass[i] * g[c] + blow[c]) - drag * V[c][i];
+      for (const Attractor& field : model.attractors)
+        for (int i = begin; i < end; ++i) {
+          const Vec3 a = field_acceleration(field, Vec3(X[0][i], X[1][i], X[2][i]));
+          for (int c = 0; c < 3; ++c) F[c][i] += mass[i] * a[c];
+        }
       for (const ForcePlan::Piece& piece : plan.own[b]) {
         const SpringSpan& span = model.spans[piece.span];
         const SpringMaterial& mat = model.materials[span.material];

@@ -5,7 +5,9 @@
 #include <map>
 #include <sstream>
 
+#include "emitter_scene.hpp"
 #include "generators.hpp"
+#include "ik_scene.hpp"
 #include "json_reader.hpp"
 
 namespace springlab {
@@ -125,6 +127,45 @@ Camera read_camera(ObjectReader& top, View view, const std::vector<Vec3>& x) {
   return camera;
 }
 
+// The "ik" object: the chain (ik_scene.hpp), the target, the solvers and their settings; its
+// joints and target become pinned particles, its links springs of no stiffness.
+IkScene read_ik_scene(ObjectReader& r, generators::Builder& b) {
+  IkScene ik;
+  ik.chain = read_ik_chain(r);
+  const Vec3 target = r.vec3("target");
+  if (target.z() != 0.0) r.fail("target", "must lie in the chain's plane: z = 0");
+  if (const json* list = r.raw("solvers")) {
+    if (!list->is_array() || list->empty())
+      r.fail("solvers", "must be a non-empty array of solver names (" + ik_solver_names() + ")");
+    for (std::size_t k = 0; k < list->size(); ++k) {
+      const json& item = (*list)[k];
+      const auto solver = item.is_string() ? find_ik_solver(item.get<std::string>()) : std::nullopt;
+      if (!solver)
+        json_reader::fail_at(r.where(), r.path("solvers") + "/" + std::to_string(k),
+                             "unknown solver " + item.dump() + " (solvers: " + ik_solver_names() + ")");
+      ik.solvers.push_back(*solver);
+    }
+  } else {
+    for (const IkSolverInfo& info : ik_solvers()) ik.solvers.push_back(info.id);
+  }
+  ik.settings.tolerance = r.number("tolerance", 1e-3, positive(1e3));
+  ik.settings.damping = r.number("damping", ik.settings.damping, positive(10.0));
+  ik.settings.max_iterations = static_cast<int>(r.integer("max_iterations", ik.settings.max_iterations, 1, 1000000));
+  ik.iterations_per_frame = static_cast<int>(r.integer("iterations_per_frame", 1, 1, 10000));
+
+  const std::vector<Eigen::Vector2d> joints = ik.chain.positions();
+  b.reserve(r, static_cast<long>(joints.size()) + 1, static_cast<long>(joints.size()) - 1);
+  ik.first_joint = b.model.particle_count();
+  for (const Eigen::Vector2d& p : joints) b.particle(Vec3(p.x(), p.y(), 0.0), Vec3::Zero(), 1.0, true);
+  ik.target = b.particle(target, Vec3::Zero(), 1.0, true);
+  const int link = add_material(b.model, {0.0, 0.0});
+  for (int i = 0; i < ik.chain.size(); ++i)
+    add_spring(b.model, ik.first_joint + i, ik.first_joint + i + 1, ik.chain.lengths[i], link);
+  b.named["chain"] = {ik.first_joint, static_cast<int>(joints.size())};
+  b.named["target"] = {ik.target, 1};
+  return ik;
+}
+
 }  // namespace
 
 Scene parse_scene(const std::string& text, const std::string& file,
@@ -145,7 +186,7 @@ Scene parse_scene(const std::string& text, const std::string& file,
   scene.file = file;
   scene.name = std::filesystem::path(file).stem().string();
   ObjectReader top(doc, "", where);
-  top.expect({"description", "view", "particles", "generators", "springs", "gravity", "drag",
+  top.expect({"description", "view", "particles", "generators", "emitters", "ik", "springs", "gravity", "drag", "wind", "attractors",
               "verlet_damping", "particle_radius", "colliders", "methods", "dt", "substeps", "duration", "tolerance",
               "camera", "trails"});
   top.finish();  // a misspelt field first: it may be why something else looks missing
@@ -181,8 +222,24 @@ Scene parse_scene(const std::string& text, const std::string& file,
     else generators::box(g, name, builder);
     g.finish();
   }
+  if (auto ik = top.object("ik")) {
+    if (model.particle_count() > 0)
+      top.fail("ik", "is a scene of its own: leave out \"particles\" and \"generators\"");
+    scene.ik = read_ik_scene(*ik, builder);
+    ik->finish();
+  }
+
+  // Springs and plain indices refer to these; the emitters' pools follow them.
   const int total = model.particle_count();
-  if (total == 0) top.fail("declares no particles: add \"particles\" or \"generators\"");
+  for (auto& e : top.objects("emitters")) {
+    const std::string name = e.text("name", "emitter");
+    if (named.count(name) || named.count(name + "-sparks"))
+      e.fail("name", "\"" + name + "\" is already the name of a generator or emitter");
+    read_emitter(e, name, builder);
+    e.finish();
+  }
+  if (model.particle_count() == 0)
+    top.fail("declares no particles: add \"particles\", \"generators\" or \"emitters\"");
 
   // Springs declared one by one.
   auto springs = top.objects("springs");
@@ -213,6 +270,13 @@ Scene parse_scene(const std::string& text, const std::string& file,
   // Forces and colliders.
   model.gravity = top.vec3("gravity", Vec3::Zero());
   model.drag = top.number("drag", 0.0, non_negative(1e9));
+  model.wind = top.vec3("wind", Vec3::Zero());
+  if (model.wind.norm() > 0.0 && model.drag == 0.0)
+    top.fail("wind", "needs \"drag\" above 0: the air pushes particles through drag, f = -drag (v - wind)");
+  for (auto& a : top.objects("attractors")) {
+    model.attractors.push_back(read_attractor(a));
+    a.finish();
+  }
   model.verlet_damping = top.number("verlet_damping", 0.0, {0.0, 1.0, false, true});
   model.particle_radius = top.number("particle_radius", 0.0, non_negative(1e3));
   for (auto& c : top.objects("colliders")) {
@@ -269,8 +333,9 @@ Scene parse_scene(const std::string& text, const std::string& file,
   }
   top.finish();
 
-  scene.state.resize(total);
-  for (int i = 0; i < total; ++i) {
+  const int count = model.particle_count();
+  scene.state.resize(count);
+  for (int i = 0; i < count; ++i) {
     scene.state.x.row(i) = x[i].transpose();
     scene.state.v.row(i) = model.pinned(i) ? Eigen::RowVector3d::Zero() : Eigen::RowVector3d(v[i].transpose());
   }

@@ -47,7 +47,12 @@ Simulation::Simulation(Model model, State initial, SimulationSettings settings)
 void Simulation::reset() {
   model_ = initial_model_;
   current_ = initial_;
-  next_ = initial_;
+  emission_ = Emission();
+  if (!model_.emitters.empty()) {
+    emission_ = Emission(model_, current_);
+    emission_.update(model_, current_);  // the births due at the start
+  }
+  next_ = current_;
   ws_ = Workspace();
   steps_ = 0;
   substeps_done_ = 0;
@@ -96,6 +101,12 @@ bool Simulation::step() {
     if (settings_.track_dissipation)
       dissipated_ += h * dissipation_power(model_, next_) + contact.kinetic_lost;
     std::swap(current_, next_);
+    if (!emission_.empty() && emission_.update(model_, current_)) {
+      ws_.invalidate();
+      // A held particle whose time is up is let go of: it is no longer there.
+      if (grabbed_ >= 0 && !model_.emitters.empty() && !emission_.alive(grabbed_) && emission_.owned(grabbed_))
+        grabbed_ = -1;
+    }
   }
   ++steps_;
   if (settings_.energy_check_interval > 0 && steps_ % settings_.energy_check_interval == 0) {
@@ -210,6 +221,10 @@ void Simulation::set_friction(double mu) {
 }
 
 void Simulation::set_mass(double mass) {
+  for (Emitter& e : model_.emitters) {
+    e.spawn.mass = mass;
+    if (e.burst) e.burst->spawn.mass = mass;
+  }
   for (int i = 0; i < model_.particle_count(); ++i) {
     model_.mass[i] = mass;
     if (!model_.pinned(i)) model_.inv_mass[i] = 1.0 / mass;

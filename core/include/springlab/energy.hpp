@@ -2,8 +2,10 @@
 //   kinetic    sum m |v|^2 / 2         (free particles; a pinned one has no finite mass to move)
 //   spring     sum k_s (l - L)^2 / 2
 //   gravity    -sum m g . x            (free particles)
+//   field      sum m U(x), U the attractors' potential per unit mass (fields.hpp; free particles)
 #pragma once
 
+#include "springlab/fields.hpp"
 #include "springlab/model.hpp"
 #include "springlab/state.hpp"
 
@@ -13,8 +15,9 @@ struct Energy {
   double kinetic = 0.0;
   double spring = 0.0;
   double gravity = 0.0;
-  double potential() const { return spring + gravity; }
-  double total() const { return kinetic + spring + gravity; }
+  double field = 0.0;
+  double potential() const { return spring + gravity + field; }
+  double total() const { return kinetic + spring + gravity + field; }
 };
 
 Energy energy(const Model& model, const State& state);
@@ -30,8 +33,8 @@ struct StepProbe {
 };
 StepProbe probe(const Model& model, const State& state);
 
-// Power (W, >= 0) taken out by spring damping, sum k_d ((v_b - v_a) . u)^2, and by drag,
-// sum k_drag |v|^2. Integrated over time it is the energy the scene loses physically, as
+// Power (W) taken out by spring damping, sum k_d ((v_b - v_a) . u)^2, and by drag,
+// sum k_drag v . (v - wind) (>= 0 in still air; a wind can put energy in). Integrated over time it is the energy the scene loses physically, as
 // opposed to what an integrator loses or gains numerically.
 double dissipation_power(const Model& model, const State& state);
 

@@ -1,9 +1,12 @@
-// The Model: everything about a scene that does not change as it is simulated.
+// The Model: the constants of a scene, which change only through the functions at the end
+// (parameters, and pinning: a drag pins what it holds, an emitter's births and deaths unpin and
+// pin its pool's particles).
 //
 //   Particle data      one array a quantity (mass, inverse mass); inverse mass 0 means pinned.
 //   Springs            index pairs, rest lengths and a material (stiffness k_s, damping k_d),
 //                      stored structure-of-arrays and grouped into contiguous "spans" (below).
-//   Forces             gravity, global viscous drag.
+//   Forces             gravity, global viscous drag (in still air or a wind), attractors.
+//   Emitters           particle sources, each with a fixed pool of particles (emitter.hpp).
 //   Colliders          planes and spheres with Coulomb friction and restitution.
 //
 // Positions and velocities live in the State (state.hpp), never here.
@@ -14,9 +17,10 @@
 #include <string>
 #include <vector>
 
-namespace springlab {
+#include "springlab/emitter.hpp"
+#include "springlab/fields.hpp"
 
-using Vec3 = Eigen::Vector3d;
+namespace springlab {
 
 // k_s and k_d shared by a group of springs (a cloth's stretch, shear and bend springs are three
 // materials). Setting "every spring's stiffness" sets every material's.
@@ -67,7 +71,11 @@ struct Model {
 
   // Forces.
   Vec3 gravity = Vec3::Zero();  // m/s^2
-  double drag = 0.0;            // global viscous drag k_drag: f = -k_drag v, N s/m
+  double drag = 0.0;            // global viscous drag k_drag: f = -k_drag (v - wind), N s/m
+  Vec3 wind = Vec3::Zero();     // m/s, the air's velocity
+  std::vector<Attractor> attractors;
+
+  std::vector<Emitter> emitters;
 
   // Colliders.
   std::vector<PlaneCollider> planes;

@@ -4,10 +4,12 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "springlab/ik.hpp"
 #include "springlab/methods.hpp"
 #include "springlab/model.hpp"
 #include "springlab/state.hpp"
@@ -39,6 +41,19 @@ struct Surface {
   std::vector<std::array<int, 3>> triangles;  // counter-clockwise seen from outside
 };
 
+// An inverse-kinematics scene: a planar chain whose end must reach a target (ik.hpp). Its model
+// holds the joints (pinned particles, base first) and the target (a pinned particle the user
+// drags), with the links drawn as springs of no stiffness: the physics leaves them still, and
+// the solvers place the joints.
+struct IkScene {
+  IkChain chain;                  // as it starts
+  int first_joint = 0;            // particle of the base; the other joints follow it
+  int target = 0;                 // particle
+  std::vector<IkSolver> solvers;  // to show side by side; the first is the default
+  IkSettings settings;
+  int iterations_per_frame = 1;   // shown one at a time, so that convergence can be watched
+};
+
 struct Scene {
   std::string name;  // "rope" for assets/scenes/rope.json
   std::string file;  // as given
@@ -55,6 +70,7 @@ struct Scene {
   std::vector<int> trails;  // particles whose paths are drawn
   // Each generator's particles by name: first index and count ("rope:-1" in scripts).
   std::vector<std::pair<std::string, std::pair<int, int>>> named;
+  std::optional<IkScene> ik;
 };
 
 // Loads a scene file. `overrides` are "KEY=VALUE" strings (the --set option): KEY is a dotted

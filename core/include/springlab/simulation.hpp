@@ -1,7 +1,8 @@
 // The Simulation: a model, its state and a method, advanced step by step, with everything a run
 // must watch: contacts after each integrator step, divergence, cost, and the energy dissipated.
 //
-// A step advances the time by dt in `substeps` integrator steps of h = dt / substeps. The app
+// A step advances the time by dt in `substeps` integrator steps of h = dt / substeps, each
+// followed by contacts and then by the emitters' deaths and births (emission.hpp). The app
 // and the command line change the scene only through the setters below, each of which tells
 // the method that the state it remembers is stale.
 #pragma once
@@ -10,6 +11,7 @@
 #include <optional>
 #include <string>
 
+#include "springlab/emission.hpp"
 #include "springlab/energy.hpp"
 #include "springlab/methods.hpp"
 #include "springlab/model.hpp"
@@ -60,6 +62,7 @@ class Simulation {
   const Model& model() const { return model_; }
   const State& state() const { return current_; }
   const State& initial_state() const { return initial_; }
+  const Emission& emission() const { return emission_; }
   const SimulationSettings& settings() const { return settings_; }
   double h() const { return settings_.dt / settings_.substeps; }
   const Counters& counters() const { return ws_.counters; }
@@ -90,7 +93,7 @@ class Simulation {
   void set_gravity(const Vec3& g);
   void set_drag(double drag);
   void set_friction(double mu);  // every collider
-  void set_mass(double mass);    // every particle
+  void set_mass(double mass);    // every particle, and the emitters' new ones
 
   // Dragging a particle: while grabbed it is pinned and moves with the velocity that brings it to
   // the target in `over` seconds of simulated time; released, it keeps that velocity.
@@ -110,6 +113,7 @@ class Simulation {
 
   Model model_, initial_model_;
   State initial_, current_, next_;
+  Emission emission_;
   SimulationSettings settings_;
   Workspace ws_;
   std::int64_t steps_ = 0;
