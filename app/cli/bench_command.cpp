@@ -26,7 +26,7 @@ int bench(const BenchOptions& o) {
   if (!sim.steps && !sim.duration) sim.steps = 1000;
   Prepared p = prepare(o.scene, sim);
   require_integration(p.scene, "bench");
-  Simulation s(p.scene.model, p.scene.state, p.settings);
+  Simulation s(std::move(p.scene.model), std::move(p.scene.state), p.settings);
   // Warm-up: caches, the first allocations, the implicit solver's pattern.
   const std::int64_t warm = std::max<std::int64_t>(1, p.steps / 10);
   s.advance(warm);

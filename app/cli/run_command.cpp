@@ -89,7 +89,8 @@ int run(const RunOptions& o) {
   std::unique_ptr<AtomicFile> csv;
   if (o.csv) csv = std::make_unique<AtomicFile>(*o.csv, "CSV trace");
 
-  Simulation sim(p.scene.model, p.scene.state, p.settings);
+  // The scene's model and state move into the simulation: a big scene is not held twice.
+  Simulation sim(std::move(p.scene.model), std::move(p.scene.state), p.settings);
   const Energy initial = sim.energy();
   const StabilityEstimate stability = sim.stability();
   const double stable_h = sim.stable_step();

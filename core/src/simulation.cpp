@@ -9,6 +9,26 @@
 namespace springlab {
 
 namespace {
+// A model's spring arrays, moved out and back in (a moved-from vector is empty). Moving keeps
+// their buffers, and with them what the force pass and the implicit solver planned for them.
+struct SpringArrays {
+  std::vector<std::int32_t> a, b;
+  std::vector<double> rest;
+  std::vector<std::uint16_t> material;
+  std::vector<SpringSpan> spans;
+};
+SpringArrays take_springs(Model& m) {
+  return {std::move(m.spring_a), std::move(m.spring_b), std::move(m.rest_length), std::move(m.spring_material),
+          std::move(m.spans)};
+}
+void put_springs(Model& m, SpringArrays&& s) {
+  m.spring_a = std::move(s.a);
+  m.spring_b = std::move(s.b);
+  m.rest_length = std::move(s.rest);
+  m.spring_material = std::move(s.material);
+  m.spans = std::move(s.spans);
+}
+
 std::string format(double value) {
   std::ostringstream s;
   s.precision(4);
@@ -40,12 +60,16 @@ std::string Divergence::message() const {
 
 Simulation::Simulation(Model model, State initial, SimulationSettings settings)
     : model_(std::move(model)), initial_(std::move(initial)), settings_(settings) {
+  SpringArrays springs = take_springs(model_);
   initial_model_ = model_;
+  put_springs(model_, std::move(springs));
   reset();
 }
 
 void Simulation::reset() {
+  SpringArrays springs = take_springs(model_);
   model_ = initial_model_;
+  put_springs(model_, std::move(springs));
   current_ = initial_;
   emission_ = Emission();
   if (!model_.emitters.empty()) {

@@ -24,6 +24,7 @@ struct StabilityEstimate {
   double w_bound = 0.0;  // rad/s, Gershgorin upper bound
   double damping = 0.0;  // 1/s, c of the highest mode
   int iterations = 0;
+  bool converged = false;  // else stopped at the cap on work, for a very large scene
 };
 
 StabilityEstimate estimate_stability(const Model& model, const State& state);
