@@ -204,7 +204,7 @@ Scene parse_scene(const std::string& text, const std::string& file,
     s.finish();
     if (rest > 0.0 && distance == 0.0)
       s.fail("its ends start at the same point (particles " + std::to_string(a) + " and " +
-             std::to_string(b) + "), so the spring has no direction: move one");
+             std::to_string(b) + "), so the spring has no direction: move one, or give it rest_length 0");
     add_spring(model, a, b, rest, add_material(model, {ks, kd}));
   }
   if (model.materials.size() > 65535) top.fail("springs", "use more than 65535 distinct (ks, kd) pairs");
