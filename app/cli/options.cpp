@@ -116,6 +116,17 @@ Prepared prepare(const std::string& scene_name, const SimOptions& o) {
   p.settings.substeps = o.substeps ? *o.substeps : s.substeps;
   p.settings.step.tolerance = o.tol ? *o.tol : s.tolerance;
   const double duration = o.duration ? *o.duration : s.duration;
+  if (!o.steps) {
+    // Checked before the conversion: a tiny dt ("dt": 1e-300) made a count no integer holds.
+    const double steps = std::ceil(duration / p.settings.dt - 1e-9);
+    if (!(steps <= kSteps.hi)) {
+      std::ostringstream m;
+      m << "scene '" << s.file << "': a duration of " << duration << " s at dt = " << p.settings.dt
+        << " s would take " << steps << " steps; the limit is " << kSteps.hi
+        << ": use a larger --dt, a shorter --duration, or --steps";
+      throw InputError(m.str());
+    }
+  }
   p.steps = o.steps ? *o.steps
                     : static_cast<std::int64_t>(std::ceil(duration / p.settings.dt - 1e-9));
   if (p.steps < 1) p.steps = 1;
