@@ -10,7 +10,7 @@ packages=(
   libegl-dev libgl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri libglx-mesa0 libgl1
   libgtest-dev libbenchmark-dev
   xvfb xauth ffmpeg fonts-dejavu-core
-  clang libclang-rt-14-dev
+  clang libclang-rt-14-dev libomp-dev
 )
 
 missing=()

@@ -1,9 +1,16 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds, and runs every test with CTest.
+# Installs what is missing, builds, and runs every test with CTest: the normal build's suite
+# (labels core, cli, golden, app, soak), then the checking build's (scripts/sanitize.sh: the core
+# tests under AddressSanitizer and UndefinedBehaviorSanitizer, and a bounded run of each fuzz
+# target). CI runs this with no options.
 # Usage: scripts/test.sh [ctest options, e.g. -L core or -R Stability]
+#   With ctest options, only the normal suite runs, with those options (a quick check while
+#   working); scripts/sanitize.sh takes the same options for the checking build.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 "$root/scripts/setup.sh"
 "$root/scripts/build.sh"
-cd "${SPRINGLAB_BUILD_DIR:-$root/build}"
-ctest --output-on-failure --parallel "$(nproc)" --timeout 600 "$@"
+(cd "${SPRINGLAB_BUILD_DIR:-$root/build}" && ctest --output-on-failure --parallel "$(nproc)" --timeout 600 "$@")
+if [[ $# -eq 0 ]]; then
+  "$root/scripts/sanitize.sh"
+fi

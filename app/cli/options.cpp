@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
 #include "springlab/error.hpp"
@@ -10,12 +11,44 @@
 
 namespace springlab::app {
 
+namespace {
+// The integer options' ranges: checked as the text is read, and again in prepare().
+struct WholeRange {
+  double lo, hi;
+};
+constexpr WholeRange kSubsteps{1, 100000}, kSteps{1, 1e12}, kThreads{0, 1024};
+}  // namespace
+
+CLI::Validator whole_number(double lo, double hi) {
+  std::ostringstream bounds;
+  bounds << "[" << lo << ", " << hi << "]";
+  const std::string range = bounds.str();
+  return CLI::Validator(
+      [lo, hi, range](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double x = std::strtod(text.c_str(), &end);
+        const bool number = !text.empty() && *end == '\0';
+        if (number && std::isfinite(x) && x == std::floor(x) && x >= lo && x <= hi) {
+          text = std::to_string(static_cast<long long>(x));  // "1e6" reads as 1000000
+          return "";
+        }
+        std::ostringstream s;
+        s << "must be a whole number in " << range << ", got ";
+        if (number) s << x;
+        else s << "'" << text << "'";
+        return s.str();
+      },
+      range);
+}
+
 void add_sim_options(CLI::App& c, SimOptions& o, bool with_length) {
   c.add_option("--method", o.method, "integration method (springlab list shows them)");
   c.add_option("--dt", o.dt, "time step in seconds (default: the scene's)");
-  c.add_option("--substeps", o.substeps, "integrator steps per step: h = dt / substeps");
+  c.add_option("--substeps", o.substeps, "integrator steps per step: h = dt / substeps")
+      ->transform(whole_number(kSubsteps.lo, kSubsteps.hi));
   if (with_length) {
-    c.add_option("--steps", o.steps, "number of steps to simulate");
+    c.add_option("--steps", o.steps, "number of steps to simulate")
+        ->transform(whole_number(kSteps.lo, kSteps.hi));
     c.add_option("--duration", o.duration, "simulated seconds (default: the scene's)");
   }
   c.add_option("--ks", o.ks, "set every spring's stiffness k_s (N/m)");
@@ -23,7 +56,8 @@ void add_sim_options(CLI::App& c, SimOptions& o, bool with_length) {
   c.add_option("--tol", o.tol, "tolerance of the adaptive methods (default: the scene's)");
   c.add_option("--set", o.sets, "KEY=VALUE: any other scene field, e.g. cloth.width=64")
       ->allow_extra_args(false);
-  c.add_option("--threads", o.threads, "threads for the force loops (default: all cores)");
+  c.add_option("--threads", o.threads, "threads for the force loops (default: all cores)")
+      ->transform(whole_number(kThreads.lo, kThreads.hi));
 }
 
 void warn_if_unstable(Simulation& sim, const std::string& scene) {
@@ -51,13 +85,13 @@ Prepared prepare(const std::string& scene_name, const SimOptions& o) {
   Prepared p;
   // Options first: a bad option is reported before any file is read.
   if (o.dt) check_option("--dt", *o.dt, 0.0, 1.0, true, " s");
-  if (o.substeps) check_option("--substeps", *o.substeps, 1, 100000, false);
-  if (o.steps) check_option("--steps", static_cast<double>(*o.steps), 1, 1e12, false);
+  if (o.substeps) check_option("--substeps", *o.substeps, kSubsteps.lo, kSubsteps.hi, false);
+  if (o.steps) check_option("--steps", static_cast<double>(*o.steps), kSteps.lo, kSteps.hi, false);
   if (o.duration) check_option("--duration", *o.duration, 0.0, 1e7, true, " s");
   if (o.ks) check_option("--ks", *o.ks, 0.0, 1e12, false, " N/m");
   if (o.kd) check_option("--kd", *o.kd, 0.0, 1e12, false, " N s/m");
   if (o.tol) check_option("--tol", *o.tol, 0.0, 1.0, true);
-  if (o.threads) check_option("--threads", *o.threads, 0, 1024, false);
+  if (o.threads) check_option("--threads", *o.threads, kThreads.lo, kThreads.hi, false);
   std::optional<Method> method;
   if (o.method) {
     method = find_method(*o.method);
@@ -82,6 +116,17 @@ Prepared prepare(const std::string& scene_name, const SimOptions& o) {
   p.settings.substeps = o.substeps ? *o.substeps : s.substeps;
   p.settings.step.tolerance = o.tol ? *o.tol : s.tolerance;
   const double duration = o.duration ? *o.duration : s.duration;
+  if (!o.steps) {
+    // Checked before the conversion: a tiny dt ("dt": 1e-300) made a count no integer holds.
+    const double steps = std::ceil(duration / p.settings.dt - 1e-9);
+    if (!(steps <= kSteps.hi)) {
+      std::ostringstream m;
+      m << "scene '" << s.file << "': a duration of " << duration << " s at dt = " << p.settings.dt
+        << " s would take " << steps << " steps; the limit is " << kSteps.hi
+        << ": use a larger --dt, a shorter --duration, or --steps";
+      throw InputError(m.str());
+    }
+  }
   p.steps = o.steps ? *o.steps
                     : static_cast<std::int64_t>(std::ceil(duration / p.settings.dt - 1e-9));
   if (p.steps < 1) p.steps = 1;

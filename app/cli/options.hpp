@@ -45,6 +45,10 @@ void require_integration(const Scene& scene, const char* command);
 // will most likely diverge), with the step that would do.
 void warn_if_unstable(Simulation& sim, const std::string& scene);
 
+// For an integer option: accepts a whole number written any way ("1e6"), refuses anything else
+// with the range: "--steps: must be a whole number in [1, 1e+12], got 2.5".
+CLI::Validator whole_number(double lo, double hi);
+
 // Checks an option's value: "--dt: must be in (0, 1] s, got -1". Throws InputError.
 void check_option(const char* name, double value, double lo, double hi, bool lo_open,
                   const char* unit = "");

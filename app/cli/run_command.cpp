@@ -158,7 +158,8 @@ Command add_run_command(CLI::App& app) {
   c->add_option("scene", options->scene, "scene name or JSON file")->required();
   add_sim_options(*c, options->sim);
   c->add_option("--csv", options->csv, "write a trace: one row per step");
-  c->add_option("--every", options->every, "write every K-th step to the CSV");
+  c->add_option("--every", options->every, "write every K-th step to the CSV")
+      ->transform(whole_number(1, 1e12));
   return [options] { return run(*options); };
 }
 

@@ -82,7 +82,7 @@ void rope(ObjectReader& r, const std::string& name, Builder& b) {
   const Vec3 start = r.vec3("start");
   const Vec3 end = r.vec3("end");
   const long nodes = r.integer("nodes", 2, kMaxParticles);
-  const double mass = r.number("mass", 1.0, positive(1e9));
+  const double mass = r.number("mass", 1.0, json_reader::mass_range());
   const double stiffness = r.number("stiffness", non_negative(1e12));
   const double damping = r.number("damping", 0.0, non_negative(1e12));
   const Vec3 velocity = r.vec3("velocity", Vec3::Zero());
@@ -135,7 +135,7 @@ void cloth(ObjectReader& r, const std::string& name, Builder& b) {
   const long W = r.integer("width", 2, 2048);
   const long H = r.integer("height", 2, 2048);
   const std::string plane = r.choice("plane", "xz", {"xz", "xy"});
-  const double mass = r.number("mass", 1.0, positive(1e9));
+  const double mass = r.number("mass", 1.0, json_reader::mass_range());
   const double stretch = r.number("stretch", non_negative(1e12));
   const double shear = r.number("shear", 0.0, non_negative(1e12));
   const double bend = r.number("bend", 0.0, non_negative(1e12));
@@ -215,7 +215,7 @@ void box(ObjectReader& r, const std::string& name, Builder& b) {
       n[c] = json_reader::as_integer((*nodes)[c], r.path("nodes") + "/" + std::to_string(c),
                                      r.where(), 2, 128);
   }
-  const double mass = r.number("mass", 1.0, positive(1e9));
+  const double mass = r.number("mass", 1.0, json_reader::mass_range());
   const double stiffness = r.number("stiffness", non_negative(1e12));
   const double damping = r.number("damping", 0.0, non_negative(1e12));
   const Eigen::Matrix3d R = rotation_degrees(r.vec3("rotation", Vec3::Zero()));

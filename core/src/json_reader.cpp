@@ -55,11 +55,15 @@ bool Range::contains(double x) const {
   return (lo_open ? x > lo : x >= lo) && (hi_open ? x < hi : x <= hi);
 }
 
+std::string dump(const json& value) {
+  return value.dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
 std::string describe(const json& value) {
   switch (value.type()) {
     case json::value_t::null: return "got null";
     case json::value_t::boolean: return std::string("got ") + (value.get<bool>() ? "true" : "false");
-    case json::value_t::string: return "got the string " + value.dump();
+    case json::value_t::string: return "got the string " + dump(value);
     case json::value_t::array: return "got an array";
     case json::value_t::object: return "got an object";
     default: return "got " + value.dump();

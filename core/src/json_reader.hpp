@@ -28,6 +28,10 @@ struct Range {
 inline Range positive(double hi = 1e12) { return {0.0, hi, true, false}; }
 inline Range non_negative(double hi = 1e12) { return {0.0, hi}; }
 inline Range between(double lo, double hi) { return {lo, hi}; }
+// Masses, kg: a microgram to a million tonnes. The floor keeps 1 / m finite, and a generator's
+// node mass too (a total of 1e-9 kg over the most nodes a scene may have): a particle of 5e-324
+// kg, "positive", had an infinite inverse mass.
+inline Range mass_range() { return {1e-9, 1e9}; }
 
 class ObjectReader {
  public:
@@ -67,6 +71,10 @@ class ObjectReader {
   std::string pointer_, where_;
   std::vector<std::string> known_;
 };
+
+// A value as JSON text for messages. A string set with --set may hold bytes that are not UTF-8
+// (a file's cannot: the parser refuses them); they are shown as U+FFFD instead of throwing.
+std::string dump(const json& value);
 
 // "got -1", "got \"abc\"", "got an array" for messages.
 std::string describe(const json& value);

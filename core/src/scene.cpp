@@ -53,14 +53,21 @@ void apply_override(json& doc, const std::string& assignment, const std::string&
       if (part.empty() || *end != '\0' || index < 0 || index >= static_cast<long>(node->size()))
         bad("'" + part + "' is not an index of " + std::to_string(node->size()) + " elements");
       node = &(*node)[index];
+      if (last) *node = parse_value(assignment.substr(eq + 1));  // "methods.0=rk4"
       continue;
     }
     if (!node->is_object()) bad("'" + part + "' goes inside a value that has no fields");
     if (k == 0 && !node->contains(part) && doc.contains("generators") && doc["generators"].is_array()) {
-      // A generator by name (its "name", or its "type" when it has no name).
+      // A generator by name (its "name", or its "type" when it has no name). Either may be of
+      // any type here: the loader reports that later, with its path.
+      const auto is_named = [&](const json& g) {
+        auto label = g.find("name");
+        if (label == g.end()) label = g.find("type");
+        return label != g.end() && label->is_string() && label->get<std::string>() == part;
+      };
       json* found = nullptr;
       for (auto& g : doc["generators"])
-        if (g.is_object() && g.value("name", g.value("type", std::string())) == part) found = &g;
+        if (g.is_object() && is_named(g)) found = &g;
       if (found && !last) {
         node = found;
         continue;
@@ -206,7 +213,7 @@ Scene parse_scene(const std::string& text, const std::string& file,
   for (auto& p : particles) {
     const Vec3 position = p.vec3("position");
     const Vec3 velocity = p.vec3("velocity", Vec3::Zero());
-    const double mass = p.number("mass", 1.0, positive(1e9));
+    const double mass = p.number("mass", 1.0, json_reader::mass_range());
     const bool pinned = p.boolean("pinned", false);
     p.finish();
     builder.particle(position, velocity, mass, pinned);
@@ -261,7 +268,7 @@ Scene parse_scene(const std::string& text, const std::string& file,
     s.finish();
     if (rest > 0.0 && distance == 0.0)
       s.fail("its ends start at the same point (particles " + std::to_string(a) + " and " +
-             std::to_string(b) + "), so the spring has no direction: move one");
+             std::to_string(b) + "), so the spring has no direction: move one, or give it rest_length 0");
     add_spring(model, a, b, rest, add_material(model, {ks, kd}));
   }
   if (model.materials.size() > 65535) top.fail("springs", "use more than 65535 distinct (ks, kd) pairs");
@@ -310,8 +317,11 @@ Scene parse_scene(const std::string& text, const std::string& file,
         const std::string near = item.is_string()
                                      ? closest_match(item.get<std::string>(), names.data(), names.size())
                                      : "";
+        // A value that is not a string is described, not printed: printing a deeply nested
+        // array recurses as deep as it is nested.
         json_reader::fail_at(where, pointer,
-                             "unknown method " + item.dump() +
+                             (item.is_string() ? "unknown method " + json_reader::dump(item)
+                                               : "must be a method name, " + json_reader::describe(item)) +
                                  (near.empty() ? "" : "; did you mean \"" + near + "\"?") +
                                  " (methods: " + method_names() + ")");
       }

@@ -113,7 +113,7 @@ ScriptEvent read_event(ObjectReader& r, const Scene& scene) {
     if (s.has("gravity")) e.gravity = s.vec3("gravity");
     if (s.has("drag")) e.drag = s.number("drag", json_reader::non_negative(1e9));
     if (s.has("friction")) e.friction = s.number("friction", json_reader::non_negative(100.0));
-    if (s.has("mass")) e.mass = s.number("mass", positive(1e9));
+    if (s.has("mass")) e.mass = s.number("mass", json_reader::mass_range());
     if (s.has("speed")) e.speed = s.number("speed", {1.0 / 16.0, 4.0});
     s.finish();
   } else {

@@ -81,6 +81,13 @@ TEST(Run, OptionsChangeTheRun) {
   EXPECT_NE(r.out.find("w_max = 10 rad/s"), std::string::npos) << r.out;  // sqrt(400 / 4)
 }
 
+TEST(Run, IntegerOptionsTakeAnyWholeNumber) {
+  const Result r = springlab("run spring --steps 1e3 --substeps 2.0 --threads 1");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("steps      1000 of 1000"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("2 substeps"), std::string::npos) << r.out;
+}
+
 TEST(Run, DivergenceExitsThreeAndSaysWhereAndWhy) {
   TempDir dir;
   const Result r = springlab("run spring --method euler --dt 0.01 --duration 100 --csv " + (dir / "t.csv").string());
@@ -103,28 +110,91 @@ struct BadInput {
 TEST(Run, BadInputExitsTwoWithOneMessageNamingWhatIsWrong) {
   TempDir dir;
   const std::string two = R"("particles": [{"position": [0,0,0], "pinned": true}, {"position": [1,0,0]}])";
+  const std::string rope = R"({"generators": [{"type": "rope", "start": [0,0,0], "end": [1,0,0], "stiffness": 1, )";
+  // Each message names the file (or the option), the field as a JSON path, and what is allowed.
   const BadInput cases[] = {
+      // Scenes that are not there.
       {"run nope", "", {"scene 'nope': no such file", "shipped: ", "spring"}},
       {"run sprng", "", {"did you mean 'spring'?"}},
+      // Malformed JSON.
       {"run bad.json", "{\"particles\": [", {"scene 'bad.json': not valid JSON", "line 1"}},
+      // Wrong types.
       {"run bad.json", R"({"particles": [{"position": "here"}]})", {"bad.json", "/particles/0/position", "array of 3 numbers"}},
-      {"run bad.json", R"({"particles": [{"position": [0,0,0], "mass": -2}]})", {"bad.json", "/particles/0/mass", "(0, 1e+09]", "got -2"}},
-      {"run bad.json", R"({"particles": [{"position": [0,0,0], "mass": "NaN"}]})", {"bad.json", "/particles/0/mass", "must be a number"}},
+      {"run bad.json", R"({"particles": [{"position": [0,0,0], "pinned": 1}]})", {"bad.json", "/particles/0/pinned", "true or false", "got 1"}},
+      {"run bad.json", "{" + two + R"(, "springs": {"a": 0}})", {"bad.json", "/springs", "array of objects", "got an object"}},
+      // Unknown fields: the closest known one is suggested.
+      {"run bad.json", "{" + two + R"(, "gravty": [0,-9.8,0]})", {"bad.json", "/gravty: unknown field", "did you mean \"gravity\"?", "known fields here: "}},
+      {"run bad.json", "{" + two + R"(, "springs": [{"a": 0, "b": 1, "ks": 1, "restlength": 1}]})", {"bad.json", "/springs/0/restlength: unknown field", "did you mean \"rest_length\"?"}},
+      // Missing required fields.
+      {"run bad.json", "{" + two + R"(, "springs": [{"a": 0, "b": 1}]})", {"bad.json", "/springs/0/ks: is required", "[0, 1e+12]"}},
+      {"run bad.json", R"({"particles": [{"mass": 1}]})", {"bad.json", "/particles/0/position: is required", "[x, y, z]"}},
+      {"run bad.json", "{}", {"bad.json", "declares no particles"}},
+      // Negative or zero mass.
+      {"run bad.json", R"({"particles": [{"position": [0,0,0], "mass": -2}]})", {"bad.json", "/particles/0/mass", "[1e-09, 1e+09]", "got -2"}},
+      {"run bad.json", R"({"particles": [{"position": [0,0,0], "mass": 0}]})", {"bad.json", "/particles/0/mass", "[1e-09, 1e+09]", "got 0"}},
+      {"run bad.json", rope + R"("nodes": 4, "mass": 0}]})", {"bad.json", "/generators/0/mass", "[1e-09, 1e+09]", "got 0"}},
+      // NaN or infinite values (JSON has neither: a NaN is not JSON, an infinity overflows).
+      {"run bad.json", R"({"particles": [{"position": [0,0,0], "mass": "NaN"}]})", {"bad.json", "/particles/0/mass", "must be a number", "[1e-09, 1e+09]"}},
       {"run bad.json", R"({"particles": [{"position": [NaN,0,0]}]})", {"bad.json", "not valid JSON"}},
+      {"run bad.json", R"({"particles": [{"position": [0,0,1e999]}]})", {"bad.json", "not valid JSON", "number overflow", "1e999"}},
+      {"run bad.json", R"({"particles": [{"position": [0,0,1e300]}]})", {"bad.json", "/particles/0/position/2", "[-1e+09, 1e+09]", "got 1e+300"}},
+      // Springs to particles that do not exist, from a particle to itself, with coincident ends,
+      // with negative rest lengths.
       {"run bad.json", "{" + two + R"(, "springs": [{"a": 0, "b": 2, "ks": 1}]})", {"bad.json", "/springs/0/b", "[0, 1]", "got 2"}},
+      {"run bad.json", "{" + two + R"(, "springs": [{"a": -1, "b": 1, "ks": 1}]})", {"bad.json", "/springs/0/a", "[0, 1]", "got -1"}},
+      {"run bad.json", "{" + two + R"(, "springs": [{"a": 0, "b": "rope:3", "ks": 1}]})", {"bad.json", "/springs/0/b", "generator named in this scene", "rope:3"}},
+      {"run bad.json", "{" + two + R"(, "springs": [{"a": 1, "b": 1, "ks": 1}]})", {"bad.json", "/springs/0/b", "same particle as \"a\""}},
+      {"run bad.json", R"({"particles": [{"position": [0,0,0]}, {"position": [0,0,0]}], "springs": [{"a": 0, "b": 1, "ks": 5, "rest_length": 1}]})",
+       {"bad.json", "/springs/0", "ends start at the same point", "rest_length 0"}},
+      {"run bad.json", "{" + two + R"(, "springs": [{"a": 0, "b": 1, "ks": 1, "rest_length": -2}]})", {"bad.json", "/springs/0/rest_length", "[0, 1e+09]", "got -2"}},
+      // Generators of zero or absurd size: refused before anything is allocated, with the limit.
+      {"run bad.json", rope + R"("nodes": 1e9}]})", {"bad.json", "/generators/0/nodes", "[2, 4194304]", "got 1e+09"}},
+      {"run bad.json", rope + R"("nodes": 0}]})", {"bad.json", "/generators/0/nodes", "[2, 4194304]", "got 0"}},
+      {"run bad.json", R"({"generators": [{"type": "cloth", "width": 0, "stretch": 1}]})", {"bad.json", "/generators/0/width", "[2, 2048]", "got 0"}},
+      {"run bad.json", R"({"generators": [{"type": "cloth", "size": [0, 1], "stretch": 1}]})", {"bad.json", "/generators/0/size/0", "(0, 1e+06]", "got 0"}},
+      {"run bad.json", R"({"generators": [{"type": "box", "nodes": [2, 2, 1e6], "stiffness": 1}]})", {"bad.json", "/generators/0/nodes/2", "[2, 128]", "got 1e+06"}},
+      {"run bad.json", "{" + two + R"(, "generators": [{"type": "cloth", "width": 2048, "height": 2048, "stretch": 1}]})",
+       {"bad.json", "/generators/0", "4194306 particles", "the limit is 4194304"}},
+      // Colliders with zero-length normals.
+      {"run bad.json", "{" + two + R"(, "colliders": [{"type": "plane", "normal": [0,0,0]}]})", {"bad.json", "/colliders/0/normal", "must not be zero"}},
+      {"run bad.json", "{" + two + R"(, "colliders": [{"type": "sphere", "center": [0,0,0], "radius": -1}]})", {"bad.json", "/colliders/0/radius", "(0, 1e+06]", "got -1"}},
+      // Unknown methods.
+      {"run bad.json", "{" + two + R"(, "methods": ["rk5"]})", {"bad.json", "/methods/0", "unknown method \"rk5\"", "did you mean \"rk4\"?", "methods: euler, "}},
+      // Non-positive or absurd steps.
       {"run bad.json", "{" + two + R"(, "dt": 0})", {"bad.json", "/dt", "(0, 1]", "got 0"}},
-      {"run bad.json", "{" + two + R"(, "dt": -1})", {"bad.json", "/dt", "got -1"}},
+      {"run bad.json", "{" + two + R"(, "dt": -1})", {"bad.json", "/dt", "(0, 1]", "got -1"}},
+      {"run bad.json", "{" + two + R"(, "dt": 5})", {"bad.json", "/dt", "(0, 1]", "got 5"}},
+      {"run bad.json", "{" + two + R"(, "dt": 1e-300})", {"bad.json", "dt = 1e-300 s", "1e+301 steps", "the limit is 1e+12"}},
+      {"run bad.json", "{" + two + R"(, "substeps": 0})", {"bad.json", "/substeps", "[1, 100000]", "got 0"}},
+      {"run bad.json", "{" + two + R"(, "substeps": 1e9})", {"bad.json", "/substeps", "[1, 100000]", "got 1e+09"}},
+      // Command-line options: the same checks, in the same style.
       {"run spring --dt 0", "", {"--dt", "(0, 1] s", "got 0"}},
-      {"run spring --dt -0.5", "", {"--dt", "got -0.5"}},
-      {"run spring --dt nan", "", {"--dt", "got nan"}},
+      {"run spring --dt -0.5", "", {"--dt", "(0, 1] s", "got -0.5"}},
+      {"run spring --dt 5", "", {"--dt", "(0, 1] s", "got 5"}},
+      {"run spring --dt nan", "", {"--dt", "(0, 1] s", "got nan"}},
+      {"run spring --dt inf", "", {"--dt", "(0, 1] s", "got inf"}},
       {"run spring --dt abc", "", {"--dt"}},
-      {"run spring --steps 0", "", {"--steps", "got 0"}},
-      {"run spring --substeps 0", "", {"--substeps"}},
-      {"run spring --ks -1", "", {"--ks", "got -1"}},
+      {"run spring --dt 1e-300", "", {"spring.json", "dt = 1e-300 s", "1e+301 steps", "the limit is 1e+12", "--dt"}},
+      {"run spring --steps 0", "", {"--steps", "[1, 1e+12]", "got 0"}},
+      {"run spring --steps -5", "", {"--steps", "[1, 1e+12]", "got -5"}},
+      {"run spring --steps 1e13", "", {"--steps", "[1, 1e+12]", "got 1e+13"}},
+      {"run spring --steps 2.5", "", {"--steps", "[1, 1e+12]", "got 2.5"}},
+      {"run spring --substeps 0", "", {"--substeps", "[1, 100000]", "got 0"}},
+      {"run spring --substeps 1e9", "", {"--substeps", "[1, 100000]", "got 1e+09"}},
+      {"run spring --substeps many", "", {"--substeps", "[1, 100000]", "got 'many'"}},
+      {"run spring --duration 0", "", {"--duration", "(0, 1e+07] s", "got 0"}},
+      {"run spring --ks -1", "", {"--ks", "[0, 1e+12] N/m", "got -1"}},
+      {"run spring --ks inf", "", {"--ks", "[0, 1e+12] N/m", "got inf"}},
+      {"run spring --kd nan", "", {"--kd", "[0, 1e+12] N s/m", "got nan"}},
+      {"run spring --threads -1", "", {"--threads", "[0, 1024]", "got -1"}},
       {"run spring --method rk5", "", {"--method", "unknown method 'rk5'", "did you mean 'rk4'?"}},
-      {"run spring --set nothing=3", "", {"/nothing: unknown field"}},
+      {"run spring --set nothing=3", "", {"spring.json", "/nothing: unknown field"}},
+      {"run spring --set particles.1.mas=2", "", {"spring.json", "/particles/1/mas: unknown field", "did you mean \"mass\"?"}},
+      {"run spring --set particles.1.mass=0", "", {"spring.json", "/particles/1/mass", "[1e-09, 1e+09]", "got 0"}},
+      {"run spring --set springs.0.b=7", "", {"spring.json", "/springs/0/b", "[0, 1]", "got 7"}},
+      {"run rope --set rope.nodes=1e9", "", {"rope.json", "/generators/0/nodes", "[2, 4194304]", "got 1e+09"}},
       {"run spring --set width", "", {"--set width", "KEY=VALUE"}},
-      {"run spring --every 0", "", {"--every", "at least 1"}},
+      {"run spring --every 0", "", {"--every", "[1, 1e+12]", "got 0"}},
       {"run spring --frobnicate", "", {"frobnicate"}},
       {"run", "", {"scene"}},
       {"explode", "", {"explode"}},
