@@ -1,6 +1,7 @@
 // springlab bench SCENE: the scene's step throughput with a method, without graphics, after a
 // warm-up; one key=value a line (particles, springs, steps, seconds, steps_per_s,
-// ns_per_spring_step, peak_rss_mb), for scripts and the README's figures.
+// ns_per_spring_step, peak_rss_mb, and for implicit methods solver_iterations_per_step and
+// unconverged_solves), for scripts and the README's figures.
 #include <sys/resource.h>
 
 #include <chrono>
@@ -48,6 +49,10 @@ int bench(const BenchOptions& o) {
               s.model().spring_count(), static_cast<long long>(taken), seconds, taken / seconds,
               springs > 0 ? 1e9 * seconds / (taken * p.settings.substeps * springs) : 0.0,
               static_cast<double>(usage.ru_maxrss) / 1024.0);
+  if (s.counters().linear_solves > 0)  // over all steps, the warm-up's too
+    std::printf("solver_iterations_per_step=%.4g\nunconverged_solves=%lld\n",
+                static_cast<double>(s.counters().solver_iterations) / s.counters().linear_solves,
+                static_cast<long long>(s.counters().unconverged_solves));
   return kOk;
 }
 

@@ -85,6 +85,25 @@ TEST(SpringKernel, DefiniteJacobianIsSymmetricPositiveAndExactAlongTheSpring) {
   }
 }
 
+TEST(SpringKernel, CompactDefiniteJacobianIsTheDefiniteJacobian) {
+  // dfdx = stiff_along d d^T + stiff_across I and dfdv = damp_along d d^T, d = x_b - x_a.
+  for (const Config& c : random_configs(30)) {
+    const SpringJacobian J = spring_jacobian(c.xa, c.xb, c.va, c.vb, c.ks, c.kd, c.rest, true);
+    const Vector3d d = c.xb - c.xa;
+    const DefiniteSpringJacobian K = definite_spring_jacobian(d.squaredNorm(), c.ks, c.kd, c.rest);
+    const Matrix3d dfdx = K.stiff_along * d * d.transpose() + K.stiff_across * Matrix3d::Identity();
+    EXPECT_LT((dfdx - J.dfdx).norm(), 1e-12 * J.dfdx.norm()) << "rest " << c.rest;
+    EXPECT_LT((K.damp_along * d * d.transpose() - J.dfdv).norm(), 1e-12 * J.dfdv.norm());
+  }
+  // Coincident ends: k_s I for the zero-length spring, zero for any other, and no NaN.
+  for (double rest : {0.0, 1.0}) {
+    const DefiniteSpringJacobian K = definite_spring_jacobian(0.0, 100, 5, rest);
+    EXPECT_EQ(K.stiff_along, 0.0);
+    EXPECT_EQ(K.stiff_across, rest == 0.0 ? 100.0 : 0.0);
+    EXPECT_EQ(K.damp_along, 0.0);
+  }
+}
+
 TEST(SpringKernel, CoincidentEndsGiveNoNaN) {
   const Vector3d p(0.3, -1.0, 2.0), v(1, 2, 3);
   for (double rest : {0.0, 1.0}) {

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 
 namespace springlab {
@@ -85,6 +86,29 @@ inline SpringJacobian spring_jacobian(const Eigen::Vector3d& xa, const Eigen::Ve
   }
   J.dfdv = kd * uu;
   return J;
+}
+
+// The definite Jacobian above in the compact form the implicit solver keeps, three numbers a
+// spring that depend on its length only. With d = x_b - x_a (not normalised), l = |d|,
+// u u^T = d d^T / l^2 and P = I - u u^T: k_s [u u^T + t P] = k_s [(1 - t) u u^T + t I], so
+//   dfdx = stiff_along d d^T + stiff_across I,  stiff_along = k_s (1 - t) / l^2,
+//                                               stiff_across = k_s t,  t = max(0, 1 - L/l)
+//   dfdv = damp_along d d^T,                    damp_along = k_d / l^2.
+// Coincident ends as above: t = 1 for the zero-length spring (k_s I), else zero. Written with
+// selects, not branches, so that a loop over springs vectorises.
+struct DefiniteSpringJacobian {
+  double stiff_along = 0.0;
+  double stiff_across = 0.0;
+  double damp_along = 0.0;
+};
+
+inline DefiniteSpringJacobian definite_spring_jacobian(double length_squared, double ks, double kd,
+                                                       double rest) {
+  const double l = std::sqrt(length_squared);
+  const bool apart = !coincident(l, rest);
+  const double inv_l2 = apart ? 1.0 / length_squared : 0.0;
+  const double t = apart ? std::max(0.0, 1.0 - rest / l) : (rest == 0.0 ? 1.0 : 0.0);
+  return {ks * (1.0 - t) * inv_l2, ks * t, kd * inv_l2};
 }
 
 }  // namespace springlab
