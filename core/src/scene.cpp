@@ -254,6 +254,11 @@ Scene parse_scene(const std::string& text, const std::string& file,
   if (builder.springs_planned > kMaxSprings)
     top.fail("springs", "would make " + std::to_string(builder.springs_planned) +
                             " springs; the limit is " + std::to_string(kMaxSprings));
+  // Materials by (k_s, k_d), starting from the generators': a lookup per spring, not add_material's
+  // scan of every material so far, which made a file of N distinct springs load in N^2 steps.
+  std::map<std::pair<double, double>, int> material_of;
+  for (std::size_t m = 0; m < model.materials.size(); ++m)
+    material_of.try_emplace({model.materials[m].ks, model.materials[m].kd}, static_cast<int>(m));
   for (auto& s : springs) {
     const json* a_json = s.raw("a");
     const json* b_json = s.raw("b");
@@ -269,7 +274,12 @@ Scene parse_scene(const std::string& text, const std::string& file,
     if (rest > 0.0 && distance == 0.0)
       s.fail("its ends start at the same point (particles " + std::to_string(a) + " and " +
              std::to_string(b) + "), so the spring has no direction: move one, or give it rest_length 0");
-    add_spring(model, a, b, rest, add_material(model, {ks, kd}));
+    const auto [material, added] = material_of.try_emplace({ks, kd}, static_cast<int>(model.materials.size()));
+    if (added) {
+      if (model.materials.size() == 65535) top.fail("springs", "use more than 65535 distinct (ks, kd) pairs");
+      model.materials.push_back({ks, kd});
+    }
+    add_spring(model, a, b, rest, material->second);
   }
   if (model.materials.size() > 65535) top.fail("springs", "use more than 65535 distinct (ks, kd) pairs");
   finalize(model);
