@@ -9,19 +9,22 @@ namespace springlab {
 
 namespace {
 
-// Sums over particles with four running sums in a fixed order: independent add chains (a single
-// one is bound by the adder's latency) that the compiler turns into one vector, and the same
-// bits every time. term(i, c) is the contribution of coordinate c of particle i.
+// Sums over particles [begin, end) with sixteen running sums in a fixed order: independent add
+// chains (one chain is bound by the adder's latency) that the compiler turns into vectors, and
+// the same bits every time. term(i, c) is the contribution of coordinate c of particle i.
 template <typename Term>
-double sum4(int n, const Term& term) {
-  double acc[4] = {0.0, 0.0, 0.0, 0.0};
+double lane_sum(int begin, int end, const Term& term) {
+  constexpr int kLanes = 16;
+  double acc[kLanes] = {};
   for (int c = 0; c < 3; ++c) {
-    int i = 0;
-    for (; i + 4 <= n; i += 4)
-      for (int j = 0; j < 4; ++j) acc[j] += term(i + j, c);
-    for (; i < n; ++i) acc[0] += term(i, c);
+    int i = begin;
+    for (; i + kLanes <= end; i += kLanes)
+      for (int j = 0; j < kLanes; ++j) acc[j] += term(i + j, c);
+    for (; i < end; ++i) acc[0] += term(i, c);
   }
-  return (acc[0] + acc[1]) + (acc[2] + acc[3]);
+  for (int width = kLanes / 2; width > 0; width /= 2)
+    for (int j = 0; j < width; ++j) acc[j] += acc[j + width];
+  return acc[0];
 }
 
 }  // namespace
@@ -66,7 +69,7 @@ Energy energy(const Model& model, const State& state) {
   const double* w = model.inv_mass.data();
   const double* x[3] = {state.x.col(0).data(), state.x.col(1).data(), state.x.col(2).data()};
   const double g[3] = {model.gravity.x(), model.gravity.y(), model.gravity.z()};
-  e.gravity = -sum4(n, [&](int i, int c) { return (w[i] > 0.0 ? m[i] : 0.0) * g[c] * x[c][i]; });
+  e.gravity = -lane_sum(0, n, [&](int i, int c) { return (w[i] > 0.0 ? m[i] : 0.0) * g[c] * x[c][i]; });
   e.spring = spring_energy_sum(model, state);
   for (const Attractor& field : model.attractors)
     for (int i = 0; i < n; ++i)
@@ -76,23 +79,33 @@ Energy energy(const Model& model, const State& state) {
 
 
 double kinetic_energy(const Model& model, const State& state) {
-  const double* m = model.mass.data();
-  const double* w = model.inv_mass.data();
-  const double* v[3] = {state.v.col(0).data(), state.v.col(1).data(), state.v.col(2).data()};
-  return 0.5 * sum4(model.particle_count(), [&](int i, int c) {
-           return (w[i] > 0.0 ? m[i] : 0.0) * v[c][i] * v[c][i];
-         });
+  return probe(model, state, 0, model.particle_count()).kinetic;
 }
 
 StepProbe probe(const Model& model, const State& state) {
-  // x * 0 is 0 for every finite x and NaN otherwise, so the sum is 0 exactly when all are finite;
-  // a velocity that is not finite makes the kinetic energy so.
+  return probe(model, state, 0, model.particle_count());
+}
+
+StepProbe probe(const Model& model, const State& state, int begin, int end) {
+  const double* m = model.mass.data();
+  const double* w = model.inv_mass.data();
   const double* x[3] = {state.x.col(0).data(), state.x.col(1).data(), state.x.col(2).data()};
-  const double sink = sum4(model.particle_count(), [&](int i, int c) { return x[c][i] * 0.0; });
+  const double* v[3] = {state.v.col(0).data(), state.v.col(1).data(), state.v.col(2).data()};
+  // One sum: x * 0 is 0 for every finite x and NaN otherwise, so it adds nothing to the kinetic
+  // energy unless a position is not finite; a velocity that is not finite makes the sum so too
+  // (0 * inf is NaN: pinned ones count as well).
   StepProbe p;
-  p.kinetic = kinetic_energy(model, state);
-  p.finite = sink == 0.0 && std::isfinite(p.kinetic);  // 0 * NaN is NaN: pinned ones count too
+  p.kinetic = 0.5 * lane_sum(begin, end, [&](int i, int c) {
+                return (w[i] > 0.0 ? m[i] : 0.0) * v[c][i] * v[c][i] + x[c][i] * 0.0;
+              });
+  p.finite = std::isfinite(p.kinetic);
   return p;
+}
+
+StepProbe& StepProbe::operator+=(const StepProbe& block) {
+  finite = finite && block.finite;
+  kinetic += block.kinetic;
+  return *this;
 }
 
 double dissipation_power(const Model& model, const State& state) {

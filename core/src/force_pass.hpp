@@ -4,12 +4,13 @@
 //
 // The particles are cut into fixed blocks (their size depends on the particle count only), and
 // each block holds the springs whose a-end is in it. Blocks are shared out among the threads:
-//   phase 1  for each of its blocks: gravity, drag and the fields; then span by span, in chunks small enough
-//            for the L1 cache, the springs' forces, added to their a-ends as they are computed,
-//            then to those of their b-ends that are in the block; forces reaching into a later
-//            block are kept
+//   phase 1  for each of its blocks: gravity, drag and the fields; then span by span the
+//            springs' forces, added to their a-ends and taken from their b-ends in the same loop
+//            where both ends are in the block and far enough apart (kInPlaceDistance), else
+//            (neighbours: a rope's springs) kept in an L1-sized chunk and taken from the b-ends
+//            after it; forces reaching into a later block are kept in a buffer
 //   phase 2  for each of its blocks: the kept forces of the springs reaching into it, span by
-//            span; then finish(begin, end)
+//            span; then finish(block, begin, end)
 // Every particle's force is summed in an order fixed by the blocks alone, so results are
 // bit-identical for any number of threads; and most forces never leave the L1 cache.
 #pragma once
@@ -32,19 +33,29 @@ inline constexpr int kParallelThreshold = 4096;
 // Springs computed at once: their forces (3 x 8 bytes each) stay in the L1 cache.
 inline constexpr int kChunk = 256;
 
-// Forces of `count` springs whose ends are consecutive particles a0 + k and b0 + k: added to FA
-// (the a-ends' forces, FA[k] for particle a0 + k) and kept in f for the b-ends.
+// Where span_forces puts the force g of spring k (g on its a-end, -g on its b-end):
+enum class Ends {
+  Both,   // FA[k] += g, FB[k] -= g: FA and FB are one array, the b-ends at least
+          // kInPlaceDistance after the a-ends (a vector of that many springs never holds both
+          // ends of one spring, which `safelen` tells the compiler)
+  KeepB,  // FA[k] += g, FB[k] = g (kept: for b-ends in a later block, or neighbours, whose
+          // ends a vector would hold both of)
+};
+inline constexpr int kInPlaceDistance = 4;
+
+// Forces of `count` springs whose ends are consecutive particles a0 + k and b0 + k.
+// Doing the ends here costs little: the loop waits on its square root and division anyway.
 // Plain arrays, without branches, so that the compiler vectorises it (positions are read
 // contiguously): the division is done even for coincident ends (giving infinity) and the result
 // selected away. 1/l is l (1/l^2), so that the division need not wait for the square root.
 // Same arithmetic as spring_force(): s = (k_s (l - L) + k_d (dv . d) / l) / l, f_a = s d.
-template <bool kDamped>
+template <bool kDamped, Ends kEnds>
 void span_forces(const double* __restrict X, const double* __restrict Y, const double* __restrict Z,
                  const double* __restrict VX, const double* __restrict VY, const double* __restrict VZ,
                  int a0, int b0, int count, double rest, double ks, double kd,
-                 double* __restrict FAX, double* __restrict FAY, double* __restrict FAZ,
-                 double* __restrict fx, double* __restrict fy, double* __restrict fz) {
+                 double* FAX, double* FAY, double* FAZ, double* FBX, double* FBY, double* FBZ) {
   const double coincident = kCoincident * std::max(rest, 1.0);
+#pragma omp simd safelen(4)
   for (int k = 0; k < count; ++k) {
     const double dx = X[b0 + k] - X[a0 + k];
     const double dy = Y[b0 + k] - Y[a0 + k];
@@ -65,17 +76,20 @@ void span_forces(const double* __restrict X, const double* __restrict Y, const d
     FAX[k] += gx;
     FAY[k] += gy;
     FAZ[k] += gz;
-    fx[k] = gx;
-    fy[k] = gy;
-    fz[k] = gz;
+    if constexpr (kEnds == Ends::Both) {
+      FBX[k] -= gx;
+      FBY[k] -= gy;
+      FBZ[k] -= gz;
+    } else {
+      FBX[k] = gx;
+      FBY[k] = gy;
+      FBZ[k] = gz;
+    }
   }
 }
 
 inline void subtract(double* __restrict out, const double* __restrict f, int count) {
   for (int k = 0; k < count; ++k) out[k] -= f[k];
-}
-inline void copy(double* __restrict out, const double* __restrict f, int count) {
-  for (int k = 0; k < count; ++k) out[k] = f[k];
 }
 
 // The plan of the pass for a model: blocks of about a sixteenth of the particles (at least 256,
@@ -85,7 +99,7 @@ inline void make_plan(const Model& model, ForcePlan& plan) {
   plan.particles = n;
   plan.springs = model.spring_count();
   plan.spans = model.spans.data();
-  plan.block = std::clamp((n / 16 + 63) / 64 * 64, 256, 2048);
+  plan.block = std::clamp((n / 8 + 63) / 64 * 64, 256, 2048);
   const int blocks = std::max(1, (n + plan.block - 1) / plan.block);
   plan.own.assign(blocks, {});
   plan.incoming.assign(blocks, {});
@@ -105,21 +119,30 @@ inline void make_plan(const Model& model, ForcePlan& plan) {
 
 }  // namespace force_detail
 
-// F: three arrays (x, y, z) of particle_count() forces, written. `finish(begin, end)` is called
-// once per block, after its particles' forces are complete, with that range.
+// The plan of the pass for a model, made on first use (and again when the springs change).
+inline const ForcePlan& plan_for(const Model& model, SpringForces& buffer) {
+  ForcePlan& plan = buffer.plan;
+  const int springs = model.spring_count();
+  if (plan.particles != model.particle_count() || plan.springs != springs ||
+      plan.spans != model.spans.data()) {
+    force_detail::make_plan(model, plan);
+    buffer.x.resize(springs);
+    buffer.y.resize(springs);
+    buffer.z.resize(springs);
+  }
+  return plan;
+}
+
+// F: three arrays (x, y, z) of particle_count() forces, written. `finish(block, begin, end)` is
+// called once per block, after its particles' forces are complete, with the block's index and
+// particle range.
 template <typename Finish>
 void force_pass(const Model& model, const Points& x, const Points& v, double* const F[3],
                 SpringForces& buffer, const Finish& finish) {
   using namespace force_detail;
   const int n = model.particle_count();
   const int springs = model.spring_count();
-  ForcePlan& plan = buffer.plan;
-  if (plan.particles != n || plan.springs != springs || plan.spans != model.spans.data()) {
-    make_plan(model, plan);
-    buffer.x.resize(springs);
-    buffer.y.resize(springs);
-    buffer.z.resize(springs);
-  }
+  const ForcePlan& plan = plan_for(model, buffer);
   const double* X[3] = {x.col(0).data(), x.col(1).data(), x.col(2).data()};
   const double* V[3] = {v.col(0).data(), v.col(1).data(), v.col(2).data()};
   double* SF[3] = {buffer.x.data(), buffer.y.data(), buffer.z.data()};
@@ -130,48 +153,76 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
   const double* mass = model.mass.data();
   const int blocks = static_cast<int>(plan.own.size());
 
-#pragma omp parallel if (springs + n >= kParallelThreshold)
-  {
-    alignas(64) double chunk[3][kChunk];
+  // The springs k in [lo, hi) of a span: their forces, onto the ends in F or kept in K as `ends`
+  // says (kept forces at K[k - lo]).
+  const auto springs_of = [&](const SpringSpan& span, int lo, int hi, Ends ends, double* const K[3]) {
+    const SpringMaterial& mat = model.materials[span.material];
+    const int a = span.a0 + lo, b = span.b0 + lo;
+    // Undamped springs need no velocities: (k_s (l - L) + 0) / l is the same number.
+    using Kernel = decltype(&span_forces<true, Ends::Both>);
+    constexpr Kernel kernels[2][2] = {{span_forces<false, Ends::Both>, span_forces<false, Ends::KeepB>},
+                                      {span_forces<true, Ends::Both>, span_forces<true, Ends::KeepB>}};
+    double* const* B = ends == Ends::Both ? F : K;
+    const int shift = ends == Ends::Both ? b : 0;
+    kernels[mat.kd != 0.0][static_cast<int>(ends)](
+        X[0], X[1], X[2], V[0], V[1], V[2], a, b, hi - lo, span.rest, mat.ks, mat.kd, F[0] + a,
+        F[1] + a, F[2] + a, B[0] + shift, B[1] + shift, B[2] + shift);
+  };
+
+  // Run by every thread of the team, or by the caller alone (a parallel region costs an
+  // allocation and a wake-up even with one thread).
+  const auto pass = [&] {
+    // Kept forces of neighbouring springs (small enough for the L1 cache).
+    alignas(64) double chunk_x[kChunk], chunk_y[kChunk], chunk_z[kChunk];
+    double* const chunk[3] = {chunk_x, chunk_y, chunk_z};
 #pragma omp for schedule(static)
-    for (int b = 0; b < blocks; ++b) {
-      const int begin = b * plan.block, end = std::min(n, begin + plan.block);
+    for (int blk = 0; blk < blocks; ++blk) {
+      const int begin = blk * plan.block, end = std::min(n, begin + plan.block);
       for (int c = 0; c < 3; ++c)
         for (int i = begin; i < end; ++i) F[c][i] = (mass[i] * g[c] + blow[c]) - drag * V[c][i];
       for (const Attractor& field : model.attractors)
         for (int i = begin; i < end; ++i) {
-          const Vec3 a = field_acceleration(field, Vec3(X[0][i], X[1][i], X[2][i]));
-          for (int c = 0; c < 3; ++c) F[c][i] += mass[i] * a[c];
+          const Vec3 acc = field_acceleration(field, Vec3(X[0][i], X[1][i], X[2][i]));
+          for (int c = 0; c < 3; ++c) F[c][i] += mass[i] * acc[c];
         }
-      for (const ForcePlan::Piece& piece : plan.own[b]) {
+      for (const ForcePlan::Piece& piece : plan.own[blk]) {
         const SpringSpan& span = model.spans[piece.span];
-        const SpringMaterial& mat = model.materials[span.material];
-        for (int lo = piece.lo; lo < piece.hi; lo += kChunk) {
-          const int count = std::min(kChunk, piece.hi - lo);
-          const int a = span.a0 + lo, bb = span.b0 + lo;
-          // Undamped springs need no velocities: (k_s (l - L) + 0) / l is the same number.
-          (mat.kd != 0.0 ? span_forces<true> : span_forces<false>)(
-              X[0], X[1], X[2], V[0], V[1], V[2], a, bb, count, span.rest, mat.ks, mat.kd, F[0] + a, F[1] + a, F[2] + a, chunk[0], chunk[1], chunk[2]);
-          // b-ends in this block now; those beyond it later, from the buffer.
-          const int inside = std::clamp(end - bb, 0, count);
-          for (int c = 0; c < 3; ++c) {
-            subtract(F[c] + bb, chunk[c], inside);
-            copy(SF[c] + span.first + lo + inside, chunk[c] + inside, count - inside);
+        const int offset = span.b0 - span.a0;
+        // Springs [lo, inside) have their b-end in this block, [inside, hi) beyond it.
+        const int inside = std::clamp(end - span.b0, piece.lo, piece.hi);
+        if (offset >= kInPlaceDistance) {
+          springs_of(span, piece.lo, inside, Ends::Both, nullptr);
+        } else {
+          for (int lo = piece.lo; lo < inside; lo += kChunk) {
+            const int count = std::min(inside - lo, kChunk);
+            springs_of(span, lo, lo + count, Ends::KeepB, chunk);
+            for (int c = 0; c < 3; ++c) subtract(F[c] + span.b0 + lo, chunk[c], count);
           }
+        }
+        if (inside < piece.hi) {
+          double* const kept[3] = {SF[0] + span.first + inside, SF[1] + span.first + inside,
+                                   SF[2] + span.first + inside};
+          springs_of(span, inside, piece.hi, Ends::KeepB, kept);
         }
       }
     }
     // (The end of the loop above waits for every thread: the buffer is complete.)
 #pragma omp for schedule(static)
-    for (int b = 0; b < blocks; ++b) {
-      const int begin = b * plan.block, end = std::min(n, begin + plan.block);
-      for (const ForcePlan::Piece& piece : plan.incoming[b]) {
+    for (int blk = 0; blk < blocks; ++blk) {
+      const int begin = blk * plan.block, end = std::min(n, begin + plan.block);
+      for (const ForcePlan::Piece& piece : plan.incoming[blk]) {
         const SpringSpan& span = model.spans[piece.span];
         for (int c = 0; c < 3; ++c)
           subtract(F[c] + span.b0 + piece.lo, SF[c] + span.first + piece.lo, piece.hi - piece.lo);
       }
-      finish(begin, end);
+      finish(blk, begin, end);
     }
+  };
+  if (springs + n >= kParallelThreshold && omp_get_max_threads() > 1) {
+#pragma omp parallel
+    pass();
+  } else {
+    pass();
   }
 }
 

@@ -2,7 +2,6 @@
 
 #include <omp.h>
 
-
 #include "force_pass.hpp"
 
 namespace springlab {
@@ -14,10 +13,10 @@ void evaluate_forces(const Model& model, const Points& x, const Points& v, Point
   double* const F[3] = {out.col(0).data(), out.col(1).data(), out.col(2).data()};
   const double* inv_mass = model.inv_mass.data();
   if (what == ForceOutput::Force) {
-    force_pass(model, x, v, F, buffer, [](int, int) {});
+    force_pass(model, x, v, F, buffer, [](int, int, int) {});
     return;
   }
-  force_pass(model, x, v, F, buffer, [&](int begin, int end) {
+  force_pass(model, x, v, F, buffer, [&](int, int begin, int end) {
     for (int c = 0; c < 3; ++c)
       for (int i = begin; i < end; ++i) F[c][i] *= inv_mass[i];
   });

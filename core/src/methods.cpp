@@ -72,6 +72,7 @@ void accelerations(const Model& model, const Points& x, const Points& v, Points&
 void step(Method method, const Model& model, const State& in, State& out, double h,
           const StepSettings& settings, Workspace& ws) {
   const MethodInfo& info = method_info(method);
+  ws.step_probe.reset();
   info.step(model, in, out, h, settings, ws);
   if (!info.adaptive) ++ws.counters.accepted;
 }

@@ -102,7 +102,7 @@ bool Simulation::step() {
     }
     // One pass over the particles: finite, and the kinetic part of the energy test, every step,
     // so that a blow-up is stopped near where it starts. The whole energy is checked below.
-    const StepProbe check = probe(model_, next_);
+    const StepProbe check = ws_.step_probe ? *ws_.step_probe : probe(model_, next_);
     if (!check.finite) {
       ++steps_;
       diverge("a position or velocity became infinite or NaN");

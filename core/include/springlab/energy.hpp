@@ -30,8 +30,11 @@ double kinetic_energy(const Model& model, const State& state);
 struct StepProbe {
   bool finite = true;
   double kinetic = 0.0;
+  StepProbe& operator+=(const StepProbe& block);  // of the particles that follow
 };
 StepProbe probe(const Model& model, const State& state);
+// The same over particles [begin, end): a step that has them in cache checks them there.
+StepProbe probe(const Model& model, const State& state, int begin, int end);
 
 // Power (W) taken out by spring damping, sum k_d ((v_b - v_a) . u)^2, and by drag,
 // sum k_drag v . (v - wind) (>= 0 in still air; a wind can put energy in). Integrated over time it is the energy the scene loses physically, as

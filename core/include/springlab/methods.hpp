@@ -17,6 +17,7 @@
 #include <string>
 #include <string_view>
 
+#include "springlab/energy.hpp"
 #include "springlab/forces.hpp"
 #include "springlab/model.hpp"
 #include "springlab/state.hpp"
@@ -85,6 +86,12 @@ struct Workspace {
   bool fsal_ready = false;
 
   std::unique_ptr<ImplicitSolver> implicit;
+
+  // The check of the state a step made (energy.hpp), when the step made it itself: the explicit
+  // methods probe each block of particles as they finish it, while it is in cache, and sum the
+  // blocks in order (the same bits for any thread count). Cleared by step() before each step.
+  std::vector<StepProbe> block_probes;
+  std::optional<StepProbe> step_probe;
 
   // The state or the model was changed from outside (contact, a drag, a parameter): forget what
   // was derived from the last step. Counters and the adaptive step size are kept.
