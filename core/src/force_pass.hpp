@@ -3,22 +3,31 @@
 // their forces were summed, instead of in further passes over memory.
 //
 // The particles are cut into fixed blocks (their size depends on the particle count only), and
-// each block holds the springs whose a-end is in it. Blocks are shared out among the threads:
-//   phase 1  for each of its blocks: gravity, drag and the fields; then span by span the
-//            springs' forces, added to their a-ends and taken from their b-ends in the same loop
-//            where both ends are in the block and far enough apart (kInPlaceDistance), else
-//            (neighbours: a rope's springs) kept in an L1-sized chunk and taken from the b-ends
-//            after it; forces reaching into a later block are kept in a buffer
-//   phase 2  for each of its blocks: the kept forces of the springs reaching into it, span by
-//            span; then finish(block, begin, end)
-// Every particle's force is summed in an order fixed by the blocks alone, so results are
-// bit-identical for any number of threads; and most forces never leave the L1 cache.
+// each block holds the springs whose a-end is in it. Each thread takes a run of consecutive
+// blocks and does for each:
+//   1. gravity, drag and the fields; then span by span the springs' forces, added to their
+//      a-ends and taken from their b-ends in the same loop where both ends are in the block and
+//      far enough apart (kInPlaceDistance), else (neighbours: a rope's springs) kept in an
+//      L1-sized chunk and taken from the b-ends after it; forces reaching into a later block are
+//      kept in a buffer
+//   2. the kept forces of the springs reaching into the block from earlier blocks, then
+//      finish(block, begin, end)
+// Step 2 of a block waits for step 1 of the blocks its springs come from. A thread does step 1
+// of its last block first, since the next thread's first block waits for it; then its blocks in
+// order, each with both steps (the last one's step 2 at the end). So no thread waits for
+// another's whole share, and with one thread nothing waits at all.
+// Every particle's force is summed in the same order (step 1, then step 2 span by span) whatever
+// the number of threads, so results are bit-identical for any thread count; and most forces
+// never leave the L1 cache.
 #pragma once
 
 #include <omp.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <cstdint>
+#include <thread>
 
 #include "springlab/fields.hpp"
 #include "springlab/forces.hpp"
@@ -88,6 +97,21 @@ void span_forces(const double* __restrict X, const double* __restrict Y, const d
   }
 }
 
+// Waits until `flag` holds `value` (acquire): spins briefly, as the wait is usually short, then
+// yields, so that a thread that is not running (more threads than cores) gets the core.
+inline void wait_for(std::uint32_t& flag, std::uint32_t value) {
+  std::atomic_ref<std::uint32_t> ref(flag);
+  for (int spins = 0; ref.load(std::memory_order_acquire) != value; ++spins) {
+    if (spins < 4096) {
+#if defined(__x86_64__) || defined(__i386__)
+      __builtin_ia32_pause();
+#endif
+    } else {
+      std::this_thread::yield();
+    }
+  }
+}
+
 inline void subtract(double* __restrict out, const double* __restrict f, int count) {
   for (int k = 0; k < count; ++k) out[k] -= f[k];
 }
@@ -103,6 +127,10 @@ inline void make_plan(const Model& model, ForcePlan& plan) {
   const int blocks = std::max(1, (n + plan.block - 1) / plan.block);
   plan.own.assign(blocks, {});
   plan.incoming.assign(blocks, {});
+  plan.source.resize(blocks);
+  plan.done.assign(blocks, 0);
+  plan.passes = 0;
+  for (int b = 0; b < blocks; ++b) plan.source[b] = b;
   for (int s = 0; s < static_cast<int>(model.spans.size()); ++s) {
     const SpringSpan& span = model.spans[s];
     for (int b = 0; b < blocks; ++b) {
@@ -112,7 +140,10 @@ inline void make_plan(const Model& model, ForcePlan& plan) {
       // Springs with the b-end here and the a-end in an earlier block (b-ends follow a-ends).
       const int blo = std::max(0, begin - span.b0), bhi = std::min(span.count, end - span.b0);
       const int from_before = std::min(bhi, begin - span.a0);
-      if (blo < from_before) plan.incoming[b].push_back({s, blo, from_before});
+      if (blo < from_before) {
+        plan.incoming[b].push_back({s, blo, from_before});
+        plan.source[b] = std::min(plan.source[b], (span.a0 + blo) / plan.block);
+      }
     }
   }
 }
@@ -120,7 +151,7 @@ inline void make_plan(const Model& model, ForcePlan& plan) {
 }  // namespace force_detail
 
 // The plan of the pass for a model, made on first use (and again when the springs change).
-inline const ForcePlan& plan_for(const Model& model, SpringForces& buffer) {
+inline ForcePlan& plan_for(const Model& model, SpringForces& buffer) {
   ForcePlan& plan = buffer.plan;
   const int springs = model.spring_count();
   if (plan.particles != model.particle_count() || plan.springs != springs ||
@@ -142,7 +173,7 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
   using namespace force_detail;
   const int n = model.particle_count();
   const int springs = model.spring_count();
-  const ForcePlan& plan = plan_for(model, buffer);
+  ForcePlan& plan = plan_for(model, buffer);
   const double* X[3] = {x.col(0).data(), x.col(1).data(), x.col(2).data()};
   const double* V[3] = {v.col(0).data(), v.col(1).data(), v.col(2).data()};
   double* SF[3] = {buffer.x.data(), buffer.y.data(), buffer.z.data()};
@@ -169,54 +200,73 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
         F[1] + a, F[2] + a, B[0] + shift, B[1] + shift, B[2] + shift);
   };
 
+  // Step 1 of a block (see the top of this file).
+  const auto springs_into = [&](int blk, double* const chunk[3]) {
+    const int begin = blk * plan.block, end = std::min(n, begin + plan.block);
+    for (int c = 0; c < 3; ++c)
+      for (int i = begin; i < end; ++i) F[c][i] = (mass[i] * g[c] + blow[c]) - drag * V[c][i];
+    for (const Attractor& field : model.attractors)
+      for (int i = begin; i < end; ++i) {
+        const Vec3 acc = field_acceleration(field, Vec3(X[0][i], X[1][i], X[2][i]));
+        for (int c = 0; c < 3; ++c) F[c][i] += mass[i] * acc[c];
+      }
+    for (const ForcePlan::Piece& piece : plan.own[blk]) {
+      const SpringSpan& span = model.spans[piece.span];
+      // Springs [lo, inside) have their b-end in this block, [inside, hi) beyond it.
+      const int inside = std::clamp(end - span.b0, piece.lo, piece.hi);
+      if (span.b0 - span.a0 >= kInPlaceDistance) {
+        springs_of(span, piece.lo, inside, Ends::Both, nullptr);
+      } else {
+        for (int lo = piece.lo; lo < inside; lo += kChunk) {
+          const int count = std::min(inside - lo, kChunk);
+          springs_of(span, lo, lo + count, Ends::KeepB, chunk);
+          for (int c = 0; c < 3; ++c) subtract(F[c] + span.b0 + lo, chunk[c], count);
+        }
+      }
+      if (inside < piece.hi) {
+        double* const kept[3] = {SF[0] + span.first + inside, SF[1] + span.first + inside,
+                                 SF[2] + span.first + inside};
+        springs_of(span, inside, piece.hi, Ends::KeepB, kept);
+      }
+    }
+  };
+
+  // Step 1 done: published (release) for the threads whose step 2 waits for it.
+  const std::uint32_t pass_number = ++plan.passes;
+  std::uint32_t* done = plan.done.data();
+  const auto publish = [&](int blk) {
+    std::atomic_ref<std::uint32_t>(done[blk]).store(pass_number, std::memory_order_release);
+  };
+
+  // Step 2 of a block; blocks before `mine` (another thread's) are waited for.
+  const auto complete = [&](int blk, int mine) {
+    for (int src = plan.source[blk]; src < std::min(blk, mine); ++src) wait_for(done[src], pass_number);
+    const int begin = blk * plan.block, end = std::min(n, begin + plan.block);
+    for (const ForcePlan::Piece& piece : plan.incoming[blk]) {
+      const SpringSpan& span = model.spans[piece.span];
+      for (int c = 0; c < 3; ++c)
+        subtract(F[c] + span.b0 + piece.lo, SF[c] + span.first + piece.lo, piece.hi - piece.lo);
+    }
+    finish(blk, begin, end);
+  };
+
   // Run by every thread of the team, or by the caller alone (a parallel region costs an
   // allocation and a wake-up even with one thread).
   const auto pass = [&] {
     // Kept forces of neighbouring springs (small enough for the L1 cache).
     alignas(64) double chunk_x[kChunk], chunk_y[kChunk], chunk_z[kChunk];
     double* const chunk[3] = {chunk_x, chunk_y, chunk_z};
-#pragma omp for schedule(static)
-    for (int blk = 0; blk < blocks; ++blk) {
-      const int begin = blk * plan.block, end = std::min(n, begin + plan.block);
-      for (int c = 0; c < 3; ++c)
-        for (int i = begin; i < end; ++i) F[c][i] = (mass[i] * g[c] + blow[c]) - drag * V[c][i];
-      for (const Attractor& field : model.attractors)
-        for (int i = begin; i < end; ++i) {
-          const Vec3 acc = field_acceleration(field, Vec3(X[0][i], X[1][i], X[2][i]));
-          for (int c = 0; c < 3; ++c) F[c][i] += mass[i] * acc[c];
-        }
-      for (const ForcePlan::Piece& piece : plan.own[blk]) {
-        const SpringSpan& span = model.spans[piece.span];
-        const int offset = span.b0 - span.a0;
-        // Springs [lo, inside) have their b-end in this block, [inside, hi) beyond it.
-        const int inside = std::clamp(end - span.b0, piece.lo, piece.hi);
-        if (offset >= kInPlaceDistance) {
-          springs_of(span, piece.lo, inside, Ends::Both, nullptr);
-        } else {
-          for (int lo = piece.lo; lo < inside; lo += kChunk) {
-            const int count = std::min(inside - lo, kChunk);
-            springs_of(span, lo, lo + count, Ends::KeepB, chunk);
-            for (int c = 0; c < 3; ++c) subtract(F[c] + span.b0 + lo, chunk[c], count);
-          }
-        }
-        if (inside < piece.hi) {
-          double* const kept[3] = {SF[0] + span.first + inside, SF[1] + span.first + inside,
-                                   SF[2] + span.first + inside};
-          springs_of(span, inside, piece.hi, Ends::KeepB, kept);
-        }
-      }
+    const int threads = omp_get_num_threads(), thread = omp_get_thread_num();
+    const int first = blocks * thread / threads, last = blocks * (thread + 1) / threads;
+    if (first == last) return;
+    springs_into(last - 1, chunk);
+    publish(last - 1);
+    for (int blk = first; blk < last - 1; ++blk) {
+      springs_into(blk, chunk);
+      publish(blk);
+      complete(blk, first);
     }
-    // (The end of the loop above waits for every thread: the buffer is complete.)
-#pragma omp for schedule(static)
-    for (int blk = 0; blk < blocks; ++blk) {
-      const int begin = blk * plan.block, end = std::min(n, begin + plan.block);
-      for (const ForcePlan::Piece& piece : plan.incoming[blk]) {
-        const SpringSpan& span = model.spans[piece.span];
-        for (int c = 0; c < 3; ++c)
-          subtract(F[c] + span.b0 + piece.lo, SF[c] + span.first + piece.lo, piece.hi - piece.lo);
-      }
-      finish(blk, begin, end);
-    }
+    complete(last - 1, first);
   };
   if (springs + n >= kParallelThreshold && omp_get_max_threads() > 1) {
 #pragma omp parallel

@@ -31,6 +31,8 @@ TEST(Determinism, ThreadCountDoesNotChangeABit) {
     EXPECT_EQ(one, two) << method_info(method).name;
     EXPECT_EQ(one, three) << method_info(method).name;
   }
+  // More threads than blocks (and than cores): threads with one block, or none, waiting on others.
+  EXPECT_EQ(run_hash(scene, Method::SymplecticEuler, 1, 40), run_hash(scene, Method::SymplecticEuler, 12, 40));
 }
 
 TEST(Determinism, HashSeesTheSmallestChange) {

@@ -7,6 +7,7 @@
 // a-ends before b-ends), so results are bit-identical for any thread count.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "springlab/model.hpp"
@@ -26,6 +27,11 @@ struct ForcePlan {
   int block = 0;                             // particles a block
   std::vector<std::vector<Piece>> own;       // per block: springs whose a-end it holds
   std::vector<std::vector<Piece>> incoming;  // per block: springs from an earlier block to it
+  std::vector<int> source;                   // per block: the earliest block those come from
+  // Per block: the number of the last pass that has computed its springs (step 1 in
+  // force_pass.hpp), which another thread waits for before taking their kept forces.
+  std::vector<std::uint32_t> done;
+  std::uint32_t passes = 0;
 };
 
 struct SpringForces {
