@@ -152,6 +152,9 @@ int render(const RenderOptions& o) {
 
   // Dear ImGui draws the panels (--ui) and, always, the caption and the compare legend.
   gfx::Offscreen offscreen(o.software, width, height, ui.scale, o.fps);
+  // Mesa's software rasteriser draws with every core, and ffmpeg encodes beside it: the
+  // simulation takes one core unless told (threads waiting for work would only take turns away).
+  if (!o.sim.threads && gfx::software_renderer(offscreen.renderer_name())) set_thread_count(1);
   Progress progress("render " + scene_name, frames);
   Image image;
   ui::FrameStats stats;

@@ -45,6 +45,7 @@ int view(ViewCli& o) {
     if (o.window.compare.size() < 2 || o.window.compare.size() > 4)
       throw InputError("--compare: give 2 to 4 methods separated by commas, e.g. euler,verlet");
   }
+  o.window.threads_given = o.sim.threads.has_value();
   return run_window(prepare(o.scene, o.sim), o.window);
 }
 

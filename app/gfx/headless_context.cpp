@@ -90,4 +90,8 @@ std::string HeadlessContext::renderer() const {
   return r ? r : "unknown";
 }
 
+bool software_renderer(const std::string& gl_renderer) {
+  return gl_renderer.find("llvmpipe") != std::string::npos || gl_renderer.find("softpipe") != std::string::npos;
+}
+
 }  // namespace springlab::gfx

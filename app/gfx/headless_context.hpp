@@ -23,4 +23,8 @@ class HeadlessContext {
   void* context_ = nullptr;
 };
 
+// Whether an OpenGL renderer string (GL_RENDERER) names one of Mesa's software rasterisers,
+// which draw with the CPU's cores.
+bool software_renderer(const std::string& gl_renderer);
+
 }  // namespace springlab::gfx

@@ -18,6 +18,7 @@
 #include <utility>
 
 #include "draw/scene_frame.hpp"
+#include "gfx/headless_context.hpp"
 #include "gfx/render_target.hpp"
 #include "gfx/renderer.hpp"
 #include "io/png.hpp"
@@ -138,9 +139,10 @@ int run_window(Prepared prepared, const WindowOptions& o) {
     gfx::Renderer renderer;
     gfx::RenderTarget target;
     const std::string gl_renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    const bool software = gl_renderer.find("llvmpipe") != std::string::npos ||
-                          gl_renderer.find("softpipe") != std::string::npos;
+    const bool software = gfx::software_renderer(gl_renderer);
     const int samples = o.msaa >= 0 ? o.msaa : software ? 0 : 4;
+    // The software rasteriser draws with every core: the simulation takes one unless told.
+    if (software && !o.threads_given) set_thread_count(1);
 
     Shown shown;
     const std::string first_name = prepared.scene.name;
