@@ -16,7 +16,7 @@ namespace {
 // y = K u with K = -df/dx from the definite spring Jacobians (spring_kernel.hpp), pinned
 // particles held (their rows and columns dropped). Each spring's block in closed form,
 //   K_s du = k_s ((u . du) u + beta (du - (u . du) u)),   beta = max(0, 1 - L / l),
-// span by span over the coordinate arrays: power iteration calls this hundreds of times.
+// span by span over the coordinate arrays: Lanczos calls this hundreds of times.
 void stiffness_product(const Model& model, const State& state, const Points& u, Points& y) {
   y.setZero(u.rows(), 3);
   const double* X[3] = {state.x.col(0).data(), state.x.col(1).data(), state.x.col(2).data()};
@@ -52,9 +52,13 @@ void stiffness_product(const Model& model, const State& state, const Points& u, 
     if (model.pinned(i)) y.row(i).setZero();
 }
 
-// u^T C u with C = -df/dv (spring damping along each spring, and drag).
-double damping_form(const Model& model, const State& state, const Points& u) {
-  double sum = 0.0;
+// u^T C u with C = -df/dv: its spring damping part (along each spring) and its drag part.
+struct DampingForm {
+  double springs = 0.0, drag = 0.0;
+};
+DampingForm damping_form(const Model& model, const State& state, const Points& u) {
+  DampingForm form;
+  double& sum = form.springs;
   for (int s = 0; s < model.spring_count(); ++s) {
     const int a = model.spring_a[s], b = model.spring_b[s];
     const Vec3 d = (state.x.row(b) - state.x.row(a)).transpose();
@@ -64,8 +68,8 @@ double damping_form(const Model& model, const State& state, const Points& u) {
     sum += model.kd(s) * along * along;
   }
   for (int i = 0; i < model.particle_count(); ++i)
-    if (!model.pinned(i)) sum += model.drag * u.row(i).squaredNorm();
-  return sum;
+    if (!model.pinned(i)) form.drag += model.drag * u.row(i).squaredNorm();
+  return form;
 }
 
 // The oscillator: an anchor pinned at the origin, a unit mass at distance 1 along x, a spring of
@@ -98,45 +102,103 @@ StabilityEstimate estimate_stability(const Model& model, const State& state) {
   e.w_bound = std::sqrt(bound);
   if (bound == 0.0) return e;
 
-  // Power iteration on B = M^-1/2 K M^-1/2 from a fixed pseudo-random start (deterministic).
-  Points q(n, 3), u(n, 3), y(n, 3);
-  std::uint64_t seed = 0x9E3779B97F4A7C15ull;
-  for (int i = 0; i < n; ++i)
-    for (int c = 0; c < 3; ++c) {
-      seed = seed * 6364136223846793005ull + 1442695040888963407ull;
-      q(i, c) = model.pinned(i) ? 0.0 : static_cast<double>(seed >> 11) / 9007199254740992.0 - 0.5;
-    }
-  q /= q.norm();
+  // Lanczos on B = M^-1/2 K M^-1/2 (symmetric) from a fixed pseudo-random start (deterministic):
+  // after k steps, the largest eigenvalue of the k x k tridiagonal T (alpha on the diagonal, beta
+  // beside it) is a lower bound on lambda_max that converges in far fewer products than a power
+  // iteration's Rayleigh quotient (tens to hundreds instead of thousands on a cloth, whose top
+  // modes crowd together). No reorthogonalisation: lost orthogonality only repeats converged
+  // eigenvalues, and the largest is still right.
+  Points q(n, 3), q_prev(n, 3), u(n, 3), y(n, 3);
+  const auto start = [&] {
+    std::uint64_t seed = 0x9E3779B97F4A7C15ull;
+    for (int i = 0; i < n; ++i)
+      for (int c = 0; c < 3; ++c) {
+        seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+        q(i, c) = model.pinned(i) ? 0.0 : static_cast<double>(seed >> 11) / 9007199254740992.0 - 0.5;
+      }
+    q /= q.norm();
+    q_prev.setZero();
+  };
   Eigen::VectorXd root_inv_mass(n);
   for (int i = 0; i < n; ++i) root_inv_mass[i] = std::sqrt(model.inv_mass[i]);
-  double lambda = 0.0;
-  // At most 2000 iterations, and about 2e8 spring products in all (a few seconds): a 512 x 512
-  // cloth gets 127. The quotient rises towards w_max^2 from below, and on a large lattice, whose
-  // top modes crowd together, it is close long before the vector settles.
-  const int max_iterations =
-      static_cast<int>(std::clamp<long>(200'000'000L / std::max(1, model.spring_count()), 100, 2000));
-  for (int k = 0; k < max_iterations; ++k) {
+  // One Lanczos step: y = B q - alpha q - beta_prev q_prev, then q_prev = q, q = y / |y|.
+  const auto lanczos_step = [&](double beta_prev, double& alpha, double& beta) {
     u = q.array().colwise() * root_inv_mass.array();
     stiffness_product(model, state, u, y);
     y = y.array().colwise() * root_inv_mass.array();
-    const double next = q.cwiseProduct(y).sum();  // Rayleigh quotient, |q| = 1
-    const double norm = y.norm();
+    alpha = q.cwiseProduct(y).sum();
+    y -= alpha * q + beta_prev * q_prev;
+    beta = y.norm();
+    std::swap(q_prev, q);
+    if (beta > 0.0) q = y / beta;
+  };
+  // At most 1000 steps, and about 1e8 spring products (the mode's shape takes as many again): a
+  // few seconds for a 512 x 512 cloth, which gets 63.
+  const int max_steps =
+      static_cast<int>(std::clamp<long>(100'000'000L / std::max(1, model.spring_count()), 50, 1000));
+  std::vector<double> alpha, beta;
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> tridiagonal;
+  double lambda = 0.0;
+  start();
+  for (int k = 0; k < max_steps; ++k) {
+    double a = 0.0, b = 0.0;
+    lanczos_step(beta.empty() ? 0.0 : beta.back(), a, b);
+    alpha.push_back(a);
+    beta.push_back(b);
+    const Eigen::Map<const Eigen::VectorXd> diagonal(alpha.data(), k + 1);
+    const Eigen::Map<const Eigen::VectorXd> beside(beta.data(), k);
+    tridiagonal.computeFromTridiagonal(diagonal, beside, Eigen::EigenvaluesOnly);
+    const double next = tridiagonal.eigenvalues().maxCoeff();
     e.iterations = k + 1;
-    if (norm == 0.0) {
-      e.converged = true;  // K u = 0: nothing moves it
-      break;
-    }
-    q = y / norm;
-    e.converged = std::abs(next - lambda) <= 1e-9 * next;
+    // beta = 0: the steps so far span an invariant subspace, and T's eigenvalues are exact.
+    e.converged = b <= 1e-14 * std::abs(next) || std::abs(next - lambda) <= 1e-12 * next;
     lambda = next;
     if (e.converged) break;
   }
   e.w_max = std::sqrt(std::max(lambda, 0.0));
 
+  // The mode's shape, sum_j s_j q_j with s the top eigenvector of T: the same steps again (the
+  // Lanczos vectors are not kept: a large scene would need hundreds of copies of its state).
+  const int steps = e.iterations;
+  tridiagonal.computeFromTridiagonal(Eigen::Map<const Eigen::VectorXd>(alpha.data(), steps),
+                                     Eigen::Map<const Eigen::VectorXd>(beta.data(), steps - 1),
+                                     Eigen::ComputeEigenvectors);
+  Eigen::Index top = 0;
+  tridiagonal.eigenvalues().maxCoeff(&top);
+  const Eigen::VectorXd s = tridiagonal.eigenvectors().col(top);
+  Points mode = Points::Zero(n, 3);
+  start();
+  for (int k = 0; k < steps; ++k) {
+    mode += s[k] * q;
+    if (k + 1 < steps) {
+      double a = 0.0, b = 0.0;
+      lanczos_step(k == 0 ? 0.0 : beta[k - 1], a, b);
+    }
+  }
+  q = mode / mode.norm();
+
   // The damping rate of that mode, with u = M^-1/2 q its physical shape (q^T q = u^T M u = 1).
   u = q.array().colwise() * root_inv_mass.array();
-  e.damping = damping_form(model, state, u) / q.squaredNorm();
+  const DampingForm form = damping_form(model, state, u);
+  e.spring_damping = form.springs / q.squaredNorm();
+  e.drag_damping = form.drag / q.squaredNorm();
+  e.damping = e.spring_damping + e.drag_damping;
   return e;
+}
+
+void StabilityEstimate::scale_stiffness(double factor) {
+  w_max *= std::sqrt(factor);
+  w_bound *= std::sqrt(factor);
+}
+
+void StabilityEstimate::scale_spring_damping(double factor) {
+  spring_damping *= factor;
+  damping = spring_damping + drag_damping;
+}
+
+void StabilityEstimate::scale_drag(double factor) {
+  drag_damping *= factor;
+  damping = spring_damping + drag_damping;
 }
 
 double amplification(Method method, double w, double c, double h, double verlet_damping) {

@@ -1,7 +1,7 @@
 // How large a step a scene takes before a method blows up.
 //
 // The scene's highest natural frequency w_max is the square root of the largest eigenvalue of
-// M^-1 K (K = -df/dx, the stiffness matrix at the current positions), found by power iteration
+// M^-1 K (K = -df/dx, the stiffness matrix at the current positions), found by Lanczos iteration
 // on the symmetric M^-1/2 K M^-1/2; Gershgorin's bound w_max^2 <= max_i (2 / m_i) sum k_s
 // brackets it from above. The damping of that mode, c = (q^T C q) / (q^T M q) with C = -df/dv,
 // matters too: explicit Euler is stable exactly while h <= c / w^2.
@@ -20,11 +20,18 @@
 namespace springlab {
 
 struct StabilityEstimate {
-  double w_max = 0.0;    // rad/s, power iteration (a lower bound that converges up to it)
+  double w_max = 0.0;    // rad/s, Lanczos (a lower bound that converges up to it)
   double w_bound = 0.0;  // rad/s, Gershgorin upper bound
-  double damping = 0.0;  // 1/s, c of the highest mode
-  int iterations = 0;
+  double damping = 0.0;  // 1/s, c of the highest mode: spring_damping + drag_damping
+  double spring_damping = 0.0, drag_damping = 0.0;  // its parts, in proportion to k_d and k_drag
+  int iterations = 0;      // Lanczos steps
   bool converged = false;  // else stopped at the cap on work, for a very large scene
+
+  // The same estimate after every k_s, every k_d or the drag was multiplied by `factor` (the
+  // mode is unchanged: K and C scale): w_max and w_bound by sqrt(factor), the damping part.
+  void scale_stiffness(double factor);
+  void scale_spring_damping(double factor);
+  void scale_drag(double factor);
 };
 
 StabilityEstimate estimate_stability(const Model& model, const State& state);
