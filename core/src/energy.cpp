@@ -119,7 +119,9 @@ double dissipation_power(const Model& model, const State& state) {
   for (const SpringSpan& span : model.spans) {
     const double kd = model.materials[span.material].kd;
     if (kd == 0.0) continue;
+    // Coincident ends (l <= kCoincident max(L, 1)) compared squared: no square root needed.
     const double coincident = kCoincident * std::max(span.rest, 1.0);
+    const double coincident2 = coincident * coincident;
     for (int lo = 0; lo < span.count; lo += kChunk) {
       const int count = std::min(kChunk, span.count - lo);
       const int a = span.a0 + lo, b = span.b0 + lo;
@@ -130,7 +132,7 @@ double dissipation_power(const Model& model, const State& state) {
           l2 += d * d;
           rate += (v[c][b + k] - v[c][a + k]) * d;
         }
-        term[k] = std::sqrt(l2) > coincident ? kd * rate * rate / l2 : 0.0;
+        term[k] = l2 > coincident2 ? kd * rate * rate / l2 : 0.0;
       }
       int k = 0;
       for (; k + 4 <= count; k += 4)
