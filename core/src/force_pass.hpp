@@ -53,7 +53,8 @@ enum class Ends {
 inline constexpr int kInPlaceDistance = 4;
 
 // Forces of `count` springs whose ends are consecutive particles a0 + k and b0 + k.
-// Doing the ends here costs little: the loop waits on its square root and division anyway.
+// Both ends in one loop where possible: a second loop would store, reload and add each force
+// again, and the loop is bound by how many instructions it issues (about 17 a spring).
 // Plain arrays, without branches, so that the compiler vectorises it (positions are read
 // contiguously): the division is done even for coincident ends (giving infinity) and the result
 // selected away. 1/l is l (1/l^2), so that the division need not wait for the square root.

@@ -1,10 +1,10 @@
-// Forces on every particle: springs, gravity and drag, gathered without races.
+// Forces on every particle: springs, gravity, drag and the fields, gathered without races.
 //
-// One evaluation runs in two phases, each split evenly over the threads:
-//   1. springs: each spring's force on its end a, into a per-spring buffer (no shared writes);
-//   2. particles: each particle sums gravity, drag and the forces of the springs at its ends.
-// Every particle's sum is taken in the same order whatever the number of threads (span by span,
-// a-ends before b-ends), so results are bit-identical for any thread count.
+// The pass (core/src/force_pass.hpp) cuts the particles into fixed blocks, shared out among the
+// threads as runs of consecutive blocks; each spring belongs to the block of its a-end, and
+// the forces of springs reaching into a later block wait in a buffer until that block takes
+// them. Every particle's sum is taken in an order fixed by the blocks alone, so results are
+// bit-identical for any thread count.
 #pragma once
 
 #include <cstdint>
