@@ -280,7 +280,7 @@ void Simulation::grab(int particle) {
   grabbed_was_pinned_ = model_.pinned(particle);
   set_pinned(model_, particle, true);
   current_.v.row(particle).setZero();
-  model_changed();
+  keep_stability_across_pinning();
 }
 
 void Simulation::move_grabbed(const Vec3& target, double over) {
@@ -300,7 +300,20 @@ void Simulation::release() {
   if (!grabbed_was_pinned_) set_pinned(model_, grabbed_, false);
   else current_.v.row(grabbed_).setZero();
   grabbed_ = -1;
+  keep_stability_across_pinning();
+}
+
+// A held particle is pinned, which can only lower w_max (the stiffness matrix loses a row and a
+// column: by interlacing its largest eigenvalue does not grow), and letting go restores the
+// pinning the estimate was made with. So the estimate is kept across a grab and a release (a
+// safe limit meanwhile) instead of made again: on a large cloth that took a visible pause at
+// every click.
+void Simulation::keep_stability_across_pinning() {
+  const std::optional<StabilityEstimate> kept = stability_;
+  const std::optional<double> kept_h = stable_h_;
   model_changed();
+  stability_ = kept;
+  stable_h_ = kept_h;
 }
 
 }  // namespace springlab

@@ -209,9 +209,17 @@ TEST(Stability, ScaledEstimateAfterAParameterChangeIsTheFreshOne) {
   expect_fresh("k_d");
   sim.set_drag(2.0 * sim.model().drag);
   expect_fresh("drag");
-  // A change that is not a scaling (a particle pinned) makes it again.
+  // A grab pins the particle: the estimate is kept, an upper bound on the pinned scene's w_max
+  // (so a safe limit), and right again once it is let go.
+  const StabilityEstimate before = sim.stability();
   sim.grab(100);
-  expect_fresh("pinned");
+  EXPECT_EQ(sim.stability().w_max, before.w_max);
+  EXPECT_GE(before.w_max, estimate_stability(sim.model(), sim.state()).w_max * (1 - 1e-9));
+  sim.release();
+  expect_fresh("released");
+  // A change that is not a scaling (a particle moved while paused) makes it again.
+  sim.place(100, sim.state().x.row(100).transpose() + Vec3(0.05, 0.0, 0.0));
+  expect_fresh("placed");
 }
 
 }  // namespace
