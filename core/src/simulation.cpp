@@ -243,7 +243,7 @@ void Simulation::set_damping(double kd) {
 
 void Simulation::set_gravity(const Vec3& g) {
   model_.gravity = g;
-  model_changed();
+  keep_stability();  // K and C do not depend on gravity
 }
 
 void Simulation::set_drag(double drag) {
@@ -258,7 +258,7 @@ void Simulation::set_drag(double drag) {
 void Simulation::set_friction(double mu) {
   for (auto& p : model_.planes) p.friction = mu;
   for (auto& s : model_.spheres) s.friction = mu;
-  model_changed();
+  keep_stability();  // nor on friction
 }
 
 void Simulation::set_mass(double mass) {
@@ -280,7 +280,7 @@ void Simulation::grab(int particle) {
   grabbed_was_pinned_ = model_.pinned(particle);
   set_pinned(model_, particle, true);
   current_.v.row(particle).setZero();
-  keep_stability_across_pinning();
+  keep_stability();
 }
 
 void Simulation::move_grabbed(const Vec3& target, double over) {
@@ -300,15 +300,15 @@ void Simulation::release() {
   if (!grabbed_was_pinned_) set_pinned(model_, grabbed_, false);
   else current_.v.row(grabbed_).setZero();
   grabbed_ = -1;
-  keep_stability_across_pinning();
+  keep_stability();
 }
 
-// A held particle is pinned, which can only lower w_max (the stiffness matrix loses a row and a
-// column: by interlacing its largest eigenvalue does not grow), and letting go restores the
-// pinning the estimate was made with. So the estimate is kept across a grab and a release (a
-// safe limit meanwhile) instead of made again: on a large cloth that took a visible pause at
-// every click.
-void Simulation::keep_stability_across_pinning() {
+// model_changed() for a change that leaves the stability estimate right, or safe: gravity and
+// friction are not in K or C; a held particle is pinned, which can only lower w_max (the
+// stiffness matrix loses a row and a column: by interlacing its largest eigenvalue does not
+// grow), and letting go restores the pinning the estimate was made with. Making it again takes a
+// visible pause on a large cloth, at every click.
+void Simulation::keep_stability() {
   const std::optional<StabilityEstimate> kept = stability_;
   const std::optional<double> kept_h = stable_h_;
   model_changed();

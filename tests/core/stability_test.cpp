@@ -209,6 +209,8 @@ TEST(Stability, ScaledEstimateAfterAParameterChangeIsTheFreshOne) {
   expect_fresh("k_d");
   sim.set_drag(2.0 * sim.model().drag);
   expect_fresh("drag");
+  sim.set_gravity(Vec3(0.0, -3.0, 1.0));
+  expect_fresh("gravity");
   // A grab pins the particle: the estimate is kept, an upper bound on the pinned scene's w_max
   // (so a safe limit), and right again once it is let go.
   const StabilityEstimate before = sim.stability();

@@ -109,7 +109,7 @@ class Simulation {
 
  private:
   void model_changed();
-  void keep_stability_across_pinning();  // model_changed(), keeping the stability estimate
+  void keep_stability();  // model_changed(), keeping the stability estimate (see the .cpp)
   void diverge(std::string reason);
 
   Model model_;
