@@ -56,7 +56,7 @@ void add_sim_options(CLI::App& c, SimOptions& o, bool with_length) {
   c.add_option("--tol", o.tol, "tolerance of the adaptive methods (default: the scene's)");
   c.add_option("--set", o.sets, "KEY=VALUE: any other scene field, e.g. cloth.width=64")
       ->allow_extra_args(false);
-  c.add_option("--threads", o.threads, "threads for the force loops (default: all cores)")
+  c.add_option("--threads", o.threads, "threads for the force loops (default: all cores; render and view on a software rasteriser: 1)")
       ->transform(whole_number(kThreads.lo, kThreads.hi));
 }
 
