@@ -214,31 +214,25 @@ void Simulation::set_step_settings(const StepSettings& step) { settings_.step = 
 void Simulation::set_stiffness(double ks) {
   if (model_.materials.empty()) return;
   const double first = model_.materials.front().ks;
-  std::optional<StabilityEstimate> kept = stability_;
-  if (first > 0.0) {
-    for (auto& m : model_.materials) m.ks *= ks / first;
-    if (kept) kept->scale_stiffness(ks / first);
-  } else {
+  if (!(first > 0.0)) {
     springlab::set_stiffness(model_, ks);
-    kept.reset();
+    return model_changed();
   }
-  model_changed();
-  stability_ = kept;
+  for (auto& m : model_.materials) m.ks *= ks / first;
+  if (stability_) stability_->scale_stiffness(ks / first);
+  scaled_stability();
 }
 
 void Simulation::set_damping(double kd) {
   if (model_.materials.empty()) return;
   const double first = model_.materials.front().kd;
-  std::optional<StabilityEstimate> kept = stability_;
-  if (first > 0.0) {
-    for (auto& m : model_.materials) m.kd *= kd / first;
-    if (kept) kept->scale_spring_damping(kd / first);
-  } else {
+  if (!(first > 0.0)) {
     springlab::set_damping(model_, kd);
-    kept.reset();
+    return model_changed();
   }
-  model_changed();
-  stability_ = kept;
+  for (auto& m : model_.materials) m.kd *= kd / first;
+  if (stability_) stability_->scale_spring_damping(kd / first);
+  scaled_stability();
 }
 
 void Simulation::set_gravity(const Vec3& g) {
@@ -247,12 +241,13 @@ void Simulation::set_gravity(const Vec3& g) {
 }
 
 void Simulation::set_drag(double drag) {
-  std::optional<StabilityEstimate> kept = stability_;
-  if (kept && model_.drag > 0.0) kept->scale_drag(drag / model_.drag);
-  else kept.reset();
+  if (!(model_.drag > 0.0)) {
+    model_.drag = drag;
+    return model_changed();
+  }
+  if (stability_) stability_->scale_drag(drag / model_.drag);
   model_.drag = drag;
-  model_changed();
-  stability_ = kept;
+  scaled_stability();
 }
 
 void Simulation::set_friction(double mu) {
@@ -314,6 +309,12 @@ void Simulation::keep_stability() {
   model_changed();
   stability_ = kept;
   stable_h_ = kept_h;
+}
+
+// model_changed() after the estimate was scaled in place: kept, but not the step limit from it.
+void Simulation::scaled_stability() {
+  keep_stability();
+  stable_h_.reset();
 }
 
 }  // namespace springlab

@@ -109,7 +109,8 @@ class Simulation {
 
  private:
   void model_changed();
-  void keep_stability();  // model_changed(), keeping the stability estimate (see the .cpp)
+  void keep_stability();    // model_changed(), keeping the stability estimate (see the .cpp)
+  void scaled_stability();  // the same after scaling it, with the step limit made again
   void diverge(std::string reason);
 
   Model model_;
