@@ -5,11 +5,10 @@
 // The particles are cut into fixed blocks (their size depends on the particle count only), and
 // each block holds the springs whose a-end is in it. Each thread takes a run of consecutive
 // blocks and does for each:
-//   1. gravity, drag and the fields; then span by span the springs' forces, added to their
-//      a-ends and taken from their b-ends in the same loop where both ends are in the block and
-//      far enough apart (kInPlaceDistance), else (neighbours: a rope's springs) kept in an
-//      L1-sized chunk and taken from the b-ends after it; forces reaching into a later block are
-//      kept in a buffer
+//   1. gravity, drag and the fields; then span by span the springs' forces, four springs at a
+//      time, added to their a-ends and taken from their b-ends in the same loop (springs_both;
+//      where the ends are fewer than four particles apart, as along a rope, springs_chain runs
+//      over the particles instead); forces reaching into a later block are kept in a buffer
 //   2. the kept forces of the springs reaching into the block from earlier blocks, then
 //      finish(block, begin, end)
 // Step 2 of a block waits for step 1 of the blocks its springs come from. A thread does step 1
@@ -17,8 +16,7 @@
 // order, each with both steps (the last one's step 2 at the end). So no thread waits for
 // another's whole share, and with one thread nothing waits at all.
 // Every particle's force is summed in the same order (step 1, then step 2 span by span) whatever
-// the number of threads, so results are bit-identical for any thread count; and most forces
-// never leave the L1 cache.
+// the number of threads, so results are bit-identical for any thread count.
 #pragma once
 
 #include <omp.h>
@@ -37,64 +35,154 @@ namespace springlab {
 
 namespace force_detail {
 
+using simd::f64x4;
+using simd::kLanes;
+
 // Below this much work (springs + particles) one thread is faster than waking a second.
 inline constexpr int kParallelThreshold = 4096;
-// Springs computed at once: their forces (3 x 8 bytes each) stay in the L1 cache.
-inline constexpr int kChunk = 256;
 
-// Where span_forces puts the force g of spring k (g on its a-end, -g on its b-end):
-enum class Ends {
-  Both,   // FA[k] += g, FB[k] -= g: FA and FB are one array, the b-ends at least
-          // kInPlaceDistance after the a-ends (a vector of that many springs never holds both
-          // ends of one spring, which `safelen` tells the compiler)
-  KeepB,  // FA[k] += g, FB[k] = g (kept: for b-ends in a later block, or neighbours, whose
-          // ends a vector would hold both of)
+// What the spring kernels read: positions and velocities, one array a coordinate.
+struct SpringInput {
+  const double* x[3];
+  const double* v[3];
 };
-inline constexpr int kInPlaceDistance = 4;
 
-// Forces of `count` springs whose ends are consecutive particles a0 + k and b0 + k.
-// Both ends in one loop where possible: a second loop would store, reload and add each force
-// again, and the loop is bound by how many instructions it issues (about 17 a spring).
-// Plain arrays, without branches, so that the compiler vectorises it (positions are read
-// contiguously): the division is done even for coincident ends (giving infinity) and the result
-// selected away. 1/l is l (1/l^2), so that the division need not wait for the square root.
-// Same arithmetic as spring_force(): s = (k_s (l - L) + k_d (dv . d) / l) / l, f_a = s d.
-template <bool kDamped, Ends kEnds>
-void span_forces(const double* __restrict X, const double* __restrict Y, const double* __restrict Z,
-                 const double* __restrict VX, const double* __restrict VY, const double* __restrict VZ,
-                 int a0, int b0, int count, double rest, double ks, double kd,
-                 double* FAX, double* FAY, double* FAZ, double* FBX, double* FBY, double* FBZ) {
-  const double coincident = kCoincident * std::max(rest, 1.0);
-#pragma omp simd safelen(4)
-  for (int k = 0; k < count; ++k) {
-    const double dx = X[b0 + k] - X[a0 + k];
-    const double dy = Y[b0 + k] - Y[a0 + k];
-    const double dz = Z[b0 + k] - Z[a0 + k];
-    const double l2 = dx * dx + dy * dy + dz * dz;
-    const double l = std::sqrt(l2);
-    const double inverse = l * (1.0 / l2);
-    const double inv = l > coincident ? inverse : 0.0;
-    double s;
-    if constexpr (kDamped) {
-      const double rate = (VX[b0 + k] - VX[a0 + k]) * dx + (VY[b0 + k] - VY[a0 + k]) * dy +
-                          (VZ[b0 + k] - VZ[a0 + k]) * dz;
-      s = (ks * (l - rest) + kd * rate * inv) * inv;
-    } else {
-      s = ks * (l - rest) * inv;
+// One span's constants.
+struct SpanLaw {
+  double ks, kd, rest;
+};
+
+// g, the force on the a-ends of the springs between particles a (+ lane) and b (+ lane): one
+// spring for T = double, four for T = f64x4. spring_scale() holds the formula; this gathers
+// its inputs with the same arithmetic as spring_force().
+template <bool kDamped, typename T>
+inline void spring_lanes(const SpringInput& in, int a, int b, SpanLaw law, T g[3]) {
+  using simd::at;
+  const T dx = at<T>(in.x[0] + b) - at<T>(in.x[0] + a);
+  const T dy = at<T>(in.x[1] + b) - at<T>(in.x[1] + a);
+  const T dz = at<T>(in.x[2] + b) - at<T>(in.x[2] + a);
+  const T l2 = dx * dx + dy * dy + dz * dz;
+  T rate{};
+  if constexpr (kDamped)
+    rate = (at<T>(in.v[0] + b) - at<T>(in.v[0] + a)) * dx + (at<T>(in.v[1] + b) - at<T>(in.v[1] + a)) * dy +
+           (at<T>(in.v[2] + b) - at<T>(in.v[2] + a)) * dz;
+  const T s = spring_scale<kDamped>(l2, rate, law.ks, law.kd, law.rest);
+  g[0] = s * dx;
+  g[1] = s * dy;
+  g[2] = s * dz;
+}
+
+// The loops below take four springs at a time: `body.template operator()<T>(k, lanes)` is the
+// same code for T = f64x4 (springs k .. k + 3, of which the first `lanes` exist: the others'
+// forces are made zero) and T = double (spring k). The springs that do not fill a vector at the
+// end go four at once too where `last_four_fit` (what the vector reads and writes beyond them
+// is in memory the caller owns: adding a zero changes nothing there), else one at a time.
+template <typename Body>
+inline void four_at_a_time(int count, bool last_four_fit, const Body& body) {
+  int k = 0;
+  for (; k + kLanes <= count; k += kLanes) body.template operator()<f64x4>(k, kLanes);
+  if (k < count && last_four_fit) return body.template operator()<f64x4>(k, count - k);
+  for (; k < count; ++k) body.template operator()<double>(k, 1);
+}
+
+// g with its lanes from `lanes` up set to zero.
+inline void first_lanes(f64x4 g[3], int lanes) {
+  if (lanes < kLanes)
+    for (int c = 0; c < 3; ++c) g[c] = simd::first_lanes(g[c], lanes);
+}
+inline void first_lanes(double[3], int) {}
+
+// `count` springs joining a + k and b + k, b - a >= kLanes: g added to F at the a-ends and taken
+// from it at the b-ends in the same loop (four springs at once never share a particle). F may be
+// read and written below `limit`.
+template <bool kDamped>
+void springs_both(const SpringInput& in, double* const F[3], int a, int b, int count, SpanLaw law, int limit) {
+  const int whole = count / kLanes * kLanes;
+  four_at_a_time(count, b + whole + kLanes <= limit, [&]<typename T>(int k, int lanes) {
+    T g[3];
+    spring_lanes<kDamped>(in, a + k, b + k, law, g);
+    first_lanes(g, lanes);
+    for (int c = 0; c < 3; ++c) {
+      simd::store(F[c] + a + k, simd::at<T>(F[c] + a + k) + g[c]);
+      simd::store(F[c] + b + k, simd::at<T>(F[c] + b + k) - g[c]);
     }
-    const double gx = s * dx, gy = s * dy, gz = s * dz;
-    FAX[k] += gx;
-    FAY[k] += gy;
-    FAZ[k] += gz;
-    if constexpr (kEnds == Ends::Both) {
-      FBX[k] -= gx;
-      FBY[k] -= gy;
-      FBZ[k] -= gz;
-    } else {
-      FBX[k] = gx;
-      FBY[k] = gy;
-      FBZ[k] = gz;
+  });
+}
+
+// `count` springs of a chain, joining a + k and a + kOffset + k with kOffset < kLanes (a rope's
+// springs, a cloth's along its rows): four springs at once would touch some particles twice, so
+// the loop runs over particles instead, each taking its own spring's g and giving back the one
+// that ends there, kOffset springs earlier:
+//   F[a + k] += g_k - g_{k - kOffset}    for k in [0, count + kOffset)
+// (g is 0 outside [0, count)); g_{k - kOffset} comes from the vector before by a shuffle, so
+// every force is loaded and stored once. F may be read and written below `limit`.
+template <bool kDamped, int kOffset>
+void springs_chain(const SpringInput& in, double* const F[3], int a, int count, SpanLaw law, int limit) {
+  static_assert(kOffset >= 1 && kOffset < kLanes);
+  f64x4 before[3] = {};  // g of the four springs before (zero before the first)
+  const auto particles = [&](int k, const f64x4 g[3]) {
+    for (int c = 0; c < 3; ++c) {
+      simd::store(F[c] + a + k, simd::load(F[c] + a + k) + (g[c] - simd::shifted_in<kOffset>(before[c], g[c])));
+      before[c] = g[c];
     }
+  };
+  int k = 0;
+  for (; k + kLanes <= count; k += kLanes) {
+    f64x4 g[3];
+    spring_lanes<kDamped>(in, a + k, a + kOffset + k, law, g);
+    particles(k, g);
+  }
+  // The last springs and the kOffset particles past the last a-end, four at a time while what
+  // that reads and writes is below `limit`, then one at a time.
+  for (; k < count + kOffset && a + kOffset + k + kLanes <= limit; k += kLanes) {
+    f64x4 g[3] = {};
+    if (k < count) {
+      spring_lanes<kDamped>(in, a + k, a + kOffset + k, law, g);
+      first_lanes(g, count - k);
+    }
+    particles(k, g);
+  }
+  if (k >= count + kOffset) return;
+  // window[c][kLanes + j] is g of spring k + j: the vector before, then these, then zeros.
+  const int left = count - k;  // fewer than kLanes
+  double window[3][2 * kLanes + kOffset] = {};
+  for (int c = 0; c < 3; ++c)
+    for (int lane = 0; lane < kLanes; ++lane) window[c][lane] = before[c][lane];
+  for (int j = 0; j < kLanes - 1 + kOffset && j < left + kOffset; ++j) {
+    if (j < left) {
+      double g[3];
+      spring_lanes<kDamped>(in, a + k + j, a + kOffset + k + j, law, g);
+      for (int c = 0; c < 3; ++c) window[c][kLanes + j] = g[c];
+    }
+    for (int c = 0; c < 3; ++c) F[c][a + k + j] += window[c][kLanes + j] - window[c][kLanes + j - kOffset];
+  }
+}
+
+// Springs whose b-ends are in a later block: g added at the a-ends and kept in K for that block.
+template <bool kDamped>
+void springs_kept(const SpringInput& in, double* const F[3], int a, int b, int count, SpanLaw law,
+                  double* const K[3]) {
+  four_at_a_time(count, false, [&]<typename T>(int k, int) {
+    T g[3];
+    spring_lanes<kDamped>(in, a + k, b + k, law, g);
+    for (int c = 0; c < 3; ++c) {
+      simd::store(F[c] + a + k, simd::at<T>(F[c] + a + k) + g[c]);
+      simd::store(K[c] + k, g[c]);
+    }
+  });
+}
+
+// Springs [lo, hi) of a span whose b-ends are all in the block being summed, which ends at
+// particle `end`.
+template <bool kDamped>
+void springs_in_block(const SpringInput& in, double* const F[3], const SpringSpan& span, int lo, int hi,
+                      SpanLaw law, int end) {
+  const int a = span.a0 + lo, count = hi - lo;
+  switch (span.b0 - span.a0) {
+    case 1: return springs_chain<kDamped, 1>(in, F, a, count, law, end);
+    case 2: return springs_chain<kDamped, 2>(in, F, a, count, law, end);
+    case 3: return springs_chain<kDamped, 3>(in, F, a, count, law, end);
+    default: return springs_both<kDamped>(in, F, a, span.b0 + lo, count, law, end);
   }
 }
 
@@ -185,24 +273,10 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
   const double* mass = model.mass.data();
   const int blocks = static_cast<int>(plan.own.size());
 
-  // The springs k in [lo, hi) of a span: their forces, onto the ends in F or kept in K as `ends`
-  // says (kept forces at K[k - lo]).
-  const auto springs_of = [&](const SpringSpan& span, int lo, int hi, Ends ends, double* const K[3]) {
-    const SpringMaterial& mat = model.materials[span.material];
-    const int a = span.a0 + lo, b = span.b0 + lo;
-    // Undamped springs need no velocities: (k_s (l - L) + 0) / l is the same number.
-    using Kernel = decltype(&span_forces<true, Ends::Both>);
-    constexpr Kernel kernels[2][2] = {{span_forces<false, Ends::Both>, span_forces<false, Ends::KeepB>},
-                                      {span_forces<true, Ends::Both>, span_forces<true, Ends::KeepB>}};
-    double* const* B = ends == Ends::Both ? F : K;
-    const int shift = ends == Ends::Both ? b : 0;
-    kernels[mat.kd != 0.0][static_cast<int>(ends)](
-        X[0], X[1], X[2], V[0], V[1], V[2], a, b, hi - lo, span.rest, mat.ks, mat.kd, F[0] + a,
-        F[1] + a, F[2] + a, B[0] + shift, B[1] + shift, B[2] + shift);
-  };
+  const SpringInput in{{X[0], X[1], X[2]}, {V[0], V[1], V[2]}};
 
   // Step 1 of a block (see the top of this file).
-  const auto springs_into = [&](int blk, double* const chunk[3]) {
+  const auto springs_into = [&](int blk) {
     const int begin = blk * plan.block, end = std::min(n, begin + plan.block);
     for (int c = 0; c < 3; ++c)
       for (int i = begin; i < end; ++i) F[c][i] = (mass[i] * g[c] + blow[c]) - drag * V[c][i];
@@ -213,21 +287,18 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
       }
     for (const ForcePlan::Piece& piece : plan.own[blk]) {
       const SpringSpan& span = model.spans[piece.span];
+      const SpringMaterial& mat = model.materials[span.material];
+      const SpanLaw law{mat.ks, mat.kd, span.rest};
+      const bool damped = mat.kd != 0.0;
       // Springs [lo, inside) have their b-end in this block, [inside, hi) beyond it.
       const int inside = std::clamp(end - span.b0, piece.lo, piece.hi);
-      if (span.b0 - span.a0 >= kInPlaceDistance) {
-        springs_of(span, piece.lo, inside, Ends::Both, nullptr);
-      } else {
-        for (int lo = piece.lo; lo < inside; lo += kChunk) {
-          const int count = std::min(inside - lo, kChunk);
-          springs_of(span, lo, lo + count, Ends::KeepB, chunk);
-          for (int c = 0; c < 3; ++c) subtract(F[c] + span.b0 + lo, chunk[c], count);
-        }
-      }
+      if (piece.lo < inside)
+        (damped ? springs_in_block<true> : springs_in_block<false>)(in, F, span, piece.lo, inside, law, end);
       if (inside < piece.hi) {
         double* const kept[3] = {SF[0] + span.first + inside, SF[1] + span.first + inside,
                                  SF[2] + span.first + inside};
-        springs_of(span, inside, piece.hi, Ends::KeepB, kept);
+        (damped ? springs_kept<true> : springs_kept<false>)(in, F, span.a0 + inside, span.b0 + inside,
+                                                             piece.hi - inside, law, kept);
       }
     }
   };
@@ -254,16 +325,13 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
   // Run by every thread of the team, or by the caller alone (a parallel region costs an
   // allocation and a wake-up even with one thread).
   const auto pass = [&] {
-    // Kept forces of neighbouring springs (small enough for the L1 cache).
-    alignas(64) double chunk_x[kChunk], chunk_y[kChunk], chunk_z[kChunk];
-    double* const chunk[3] = {chunk_x, chunk_y, chunk_z};
     const int threads = omp_get_num_threads(), thread = omp_get_thread_num();
     const int first = blocks * thread / threads, last = blocks * (thread + 1) / threads;
     if (first == last) return;
-    springs_into(last - 1, chunk);
+    springs_into(last - 1);
     publish(last - 1);
     for (int blk = first; blk < last - 1; ++blk) {
-      springs_into(blk, chunk);
+      springs_into(blk);
       publish(blk);
       complete(blk, first);
     }

@@ -357,7 +357,7 @@ struct ImplicitSolver {
   // spares a second pass and a wait for the other threads.
   void product(const Model& model, const ForcePlan& plan, const Points& x, const Points& in,
                Points& out) {
-    using force_detail::kChunk;
+    constexpr int kChunk = 256;  // springs at once: their products stay in the L1 cache
     const int n = model.particle_count();
     const double* X[3] = {x.col(0).data(), x.col(1).data(), x.col(2).data()};
     const double* P[3] = {in.col(0).data(), in.col(1).data(), in.col(2).data()};

@@ -9,7 +9,7 @@ namespace springlab::steps {
 
 void modified_euler(const Model& model, const State& in, State& out, double h, const StepSettings&,
                     Workspace& ws) {
-  fused_step(model, in, out, h, ws, [h](double x, double v, double a, double& x1, double& v1) {
+  fused_step(model, in, out, h, ws, [h](auto x, auto v, auto a, auto& x1, auto& v1) {
     v1 = v + h * a;
     x1 = x + (0.5 * h) * (v + v1);
   });
