@@ -16,12 +16,15 @@ namespace springlab::simd {
 using f64x4 = double __attribute__((vector_size(32)));
 inline constexpr int kLanes = 4;
 
-// The same, at any address of a double (one vmovupd). Accessed as doubles, not as bytes (as
-// memcpy would), so the compiler knows that a store of forces changes no pointer it holds.
-using f64x4_unaligned = double __attribute__((vector_size(32), aligned(alignof(double))));
+// Loads and stores at any address of a double (one vmovupd), through a packed struct (Clang
+// honours no lesser alignment on a vector typedef). Accessed as doubles, not as bytes (as memcpy
+// would), so the compiler knows that a store of forces changes no pointer it holds.
+struct [[gnu::packed]] Unaligned {
+  f64x4 v;
+};
 
-inline f64x4 load(const double* p) { return *reinterpret_cast<const f64x4_unaligned*>(p); }
-inline void store(double* p, f64x4 v) { *reinterpret_cast<f64x4_unaligned*>(p) = v; }
+inline f64x4 load(const double* p) { return reinterpret_cast<const Unaligned*>(p)->v; }
+inline void store(double* p, f64x4 v) { reinterpret_cast<Unaligned*>(p)->v = v; }
 inline void store(double* p, double v) { *p = v; }
 
 // load as the type T: `at<f64x4>(p)` reads p[0..3], `at<double>(p)` reads p[0].
