@@ -5,18 +5,22 @@
 // The particles are cut into fixed blocks (their size depends on the particle count only), and
 // each block holds the springs whose a-end is in it. Each thread takes a run of consecutive
 // blocks and does for each:
-//   1. gravity, drag and the fields; then span by span the springs' forces, four springs at a
-//      time, added to their a-ends and taken from their b-ends in the same loop (springs_both;
-//      where the ends are fewer than four particles apart, as along a rope, springs_chain runs
-//      over the particles instead); forces reaching into a later block are kept in a buffer
-//   2. the kept forces of the springs reaching into the block from earlier blocks, then
-//      finish(block, begin, end)
+//   1. gravity, drag and the fields; then the springs whose b-ends are in a later block: their
+//      forces added to their a-ends and kept in a buffer for that block
+//   2. chunk by chunk (kChunkParticles): the springs with both ends in the block and their
+//      a-ends in the chunk, span by span, four at a time, added to the a-ends and taken from the
+//      b-ends in the same loop (springs_both; where the ends are fewer than four particles
+//      apart, as along a rope, springs_chain runs over the particles instead); then the kept
+//      forces of springs reaching into the chunk from earlier blocks; the chunk's forces are
+//      then complete (a spring's b-end follows its a-end) and finish(block, begin, end) uses
+//      them while they are in the cache
 // Step 2 of a block waits for step 1 of the blocks its springs come from. A thread does step 1
 // of its last block first, since the next thread's first block waits for it; then its blocks in
 // order, each with both steps (the last one's step 2 at the end). So no thread waits for
 // another's whole share, and with one thread nothing waits at all.
-// Every particle's force is summed in the same order (step 1, then step 2 span by span) whatever
-// the number of threads, so results are bit-identical for any thread count.
+// Every particle's force is summed in the same order (step 1, then step 2 chunk by chunk and
+// span by span) whatever the number of threads, so results are bit-identical for any thread
+// count.
 #pragma once
 
 #include <omp.h>
@@ -40,6 +44,9 @@ using simd::kLanes;
 
 // Below this much work (springs + particles) one thread is faster than waking a second.
 inline constexpr int kParallelThreshold = 4096;
+// A block's particles are finished this many at a time: the forces of a chunk and the springs
+// reaching on from it stay in the L1 and L2 caches between being summed and being used.
+inline constexpr int kChunkParticles = 256;
 
 // What the spring kernels read: positions and velocities, one array a coordinate.
 struct SpringInput {
@@ -205,14 +212,15 @@ inline void subtract(double* __restrict out, const double* __restrict f, int cou
   for (int k = 0; k < count; ++k) out[k] -= f[k];
 }
 
-// The plan of the pass for a model: blocks of about a sixteenth of the particles (at least 256,
-// at most 2048, a multiple of 64), and each block's pieces of spans.
+// The plan of the pass for a model: blocks of about an eighth of the particles (at least 256, a
+// multiple of 64: enough blocks for the threads to share, few enough that little crosses between
+// them; a block need not fit a cache, its chunks do), and each block's pieces of spans.
 inline void make_plan(const Model& model, ForcePlan& plan) {
   const int n = model.particle_count();
   plan.particles = n;
   plan.springs = model.spring_count();
   plan.spans = model.spans.data();
-  plan.block = std::clamp((n / 8 + 63) / 64 * 64, 256, 2048);
+  plan.block = std::max((n / 8 + 63) / 64 * 64, 256);
   const int blocks = std::max(1, (n + plan.block - 1) / plan.block);
   plan.own.assign(blocks, {});
   plan.incoming.assign(blocks, {});
@@ -254,8 +262,8 @@ inline ForcePlan& plan_for(const Model& model, SpringForces& buffer) {
 }
 
 // F: three arrays (x, y, z) of particle_count() forces, written. `finish(block, begin, end)` is
-// called once per block, after its particles' forces are complete, with the block's index and
-// particle range.
+// called for each chunk [begin, end) of a block's particles, in order, as soon as their forces
+// are complete.
 template <typename Finish>
 void force_pass(const Model& model, const Points& x, const Points& v, double* const F[3],
                 SpringForces& buffer, const Finish& finish) {
@@ -272,12 +280,23 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
   const double blow[3] = {drag * model.wind.x(), drag * model.wind.y(), drag * model.wind.z()};
   const double* mass = model.mass.data();
   const int blocks = static_cast<int>(plan.own.size());
-
   const SpringInput in{{X[0], X[1], X[2]}, {V[0], V[1], V[2]}};
+  const auto law_of = [&](const SpringSpan& span) {
+    const SpringMaterial& mat = model.materials[span.material];
+    return SpanLaw{mat.ks, mat.kd, span.rest};
+  };
+  const auto range = [&](int blk) { return std::pair(blk * plan.block, std::min(n, (blk + 1) * plan.block)); };
+  // Springs [lo, inside) of an own piece have their b-end in the block, [inside, hi) beyond it.
+  const auto inside = [](const ForcePlan::Piece& piece, const SpringSpan& span, int end) {
+    return std::clamp(end - span.b0, piece.lo, piece.hi);
+  };
 
-  // Step 1 of a block (see the top of this file).
-  const auto springs_into = [&](int blk) {
-    const int begin = blk * plan.block, end = std::min(n, begin + plan.block);
+  // Step 1 of a block: gravity, drag and the fields, then the springs reaching into later blocks
+  // (their forces kept for those), published (release) for the threads whose step 2 waits.
+  const std::uint32_t pass_number = ++plan.passes;
+  std::uint32_t* done = plan.done.data();
+  const auto start = [&](int blk) {
+    const auto [begin, end] = range(blk);
     for (int c = 0; c < 3; ++c)
       for (int i = begin; i < end; ++i) F[c][i] = (mass[i] * g[c] + blow[c]) - drag * V[c][i];
     for (const Attractor& field : model.attractors)
@@ -287,55 +306,58 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
       }
     for (const ForcePlan::Piece& piece : plan.own[blk]) {
       const SpringSpan& span = model.spans[piece.span];
-      const SpringMaterial& mat = model.materials[span.material];
-      const SpanLaw law{mat.ks, mat.kd, span.rest};
-      const bool damped = mat.kd != 0.0;
-      // Springs [lo, inside) have their b-end in this block, [inside, hi) beyond it.
-      const int inside = std::clamp(end - span.b0, piece.lo, piece.hi);
-      if (piece.lo < inside)
-        (damped ? springs_in_block<true> : springs_in_block<false>)(in, F, span, piece.lo, inside, law, end);
-      if (inside < piece.hi) {
-        double* const kept[3] = {SF[0] + span.first + inside, SF[1] + span.first + inside,
-                                 SF[2] + span.first + inside};
-        (damped ? springs_kept<true> : springs_kept<false>)(in, F, span.a0 + inside, span.b0 + inside,
-                                                             piece.hi - inside, law, kept);
-      }
+      const int from = inside(piece, span, end);
+      if (from == piece.hi) continue;
+      double* const kept[3] = {SF[0] + span.first + from, SF[1] + span.first + from, SF[2] + span.first + from};
+      const SpanLaw law = law_of(span);
+      (law.kd != 0.0 ? springs_kept<true> : springs_kept<false>)(in, F, span.a0 + from, span.b0 + from,
+                                                                 piece.hi - from, law, kept);
     }
-  };
-
-  // Step 1 done: published (release) for the threads whose step 2 waits for it.
-  const std::uint32_t pass_number = ++plan.passes;
-  std::uint32_t* done = plan.done.data();
-  const auto publish = [&](int blk) {
     std::atomic_ref<std::uint32_t>(done[blk]).store(pass_number, std::memory_order_release);
   };
 
-  // Step 2 of a block; blocks before `mine` (another thread's) are waited for.
-  const auto complete = [&](int blk, int mine) {
-    for (int src = plan.source[blk]; src < std::min(blk, mine); ++src) wait_for(done[src], pass_number);
-    const int begin = blk * plan.block, end = std::min(n, begin + plan.block);
-    for (const ForcePlan::Piece& piece : plan.incoming[blk]) {
-      const SpringSpan& span = model.spans[piece.span];
-      for (int c = 0; c < 3; ++c)
-        subtract(F[c] + span.b0 + piece.lo, SF[c] + span.first + piece.lo, piece.hi - piece.lo);
+  // Step 2 of a block, chunk by chunk: the springs with both ends in the block and their a-ends
+  // in the chunk, then the kept forces of the springs reaching into the chunk from earlier blocks
+  // (those before `mine`, another thread's, waited for), then finish(chunk).
+  const auto sweep = [&](int blk, int mine) {
+    const auto [begin, end] = range(blk);
+    bool waited = false;
+    for (int first = begin; first < end; first += kChunkParticles) {
+      const int last = std::min(end, first + kChunkParticles);
+      for (const ForcePlan::Piece& piece : plan.own[blk]) {
+        const SpringSpan& span = model.spans[piece.span];
+        const int lo = std::max(piece.lo, first - span.a0), hi = std::min(inside(piece, span, end), last - span.a0);
+        if (lo >= hi) continue;
+        const SpanLaw law = law_of(span);
+        (law.kd != 0.0 ? springs_in_block<true> : springs_in_block<false>)(in, F, span, lo, hi, law, end);
+      }
+      for (const ForcePlan::Piece& piece : plan.incoming[blk]) {
+        const SpringSpan& span = model.spans[piece.span];
+        const int lo = std::max(piece.lo, first - span.b0), hi = std::min(piece.hi, last - span.b0);
+        if (lo >= hi) continue;
+        if (!waited) {
+          for (int src = plan.source[blk]; src < std::min(blk, mine); ++src) wait_for(done[src], pass_number);
+          waited = true;
+        }
+        for (int c = 0; c < 3; ++c) subtract(F[c] + span.b0 + lo, SF[c] + span.first + lo, hi - lo);
+      }
+      finish(blk, first, last);
     }
-    finish(blk, begin, end);
   };
 
   // Run by every thread of the team, or by the caller alone (a parallel region costs an
-  // allocation and a wake-up even with one thread).
+  // allocation and a wake-up even with one thread). A thread starts its last block first, since
+  // the next thread's first block waits for it; nothing else waits.
   const auto pass = [&] {
     const int threads = omp_get_num_threads(), thread = omp_get_thread_num();
     const int first = blocks * thread / threads, last = blocks * (thread + 1) / threads;
     if (first == last) return;
-    springs_into(last - 1);
-    publish(last - 1);
+    start(last - 1);
     for (int blk = first; blk < last - 1; ++blk) {
-      springs_into(blk);
-      publish(blk);
-      complete(blk, first);
+      start(blk);
+      sweep(blk, first);
     }
-    complete(last - 1, first);
+    sweep(last - 1, first);
   };
   if (springs + n >= kParallelThreshold && omp_get_max_threads() > 1) {
 #pragma omp parallel

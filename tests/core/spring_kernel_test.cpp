@@ -135,8 +135,8 @@ TEST(SpringKernel, CoincidentEndsGiveNoNaN) {
   }
 }
 
-// The force pass (blocks, spans updated in place or kept for a later block, neighbours through a
-// chunk) against the plain sum of spring_force() over the springs, on a jelly (one block), a cloth
+// The force pass (blocks and their chunks, spans updated in place or kept for a later block,
+// neighbours as chains, partial vectors masked) against the plain sum of spring_force() over the springs, on a jelly (one block), a cloth
 // of several blocks (springs 1 to 2 x 48 particles apart) and a long rope (neighbours only).
 TEST(SpringKernel, AssembledForcesAreTheSumOfTheKernels) {
   const Scene scenes[] = {test::shipped("jelly"),
