@@ -227,6 +227,8 @@ inline void make_plan(const Model& model, ForcePlan& plan) {
   plan.source.resize(blocks);
   plan.done.assign(blocks, 0);
   plan.passes = 0;
+  plan.reach = 0;
+  for (const SpringSpan& span : model.spans) plan.reach = std::max(plan.reach, span.b0 - span.a0);
   for (int b = 0; b < blocks; ++b) plan.source[b] = b;
   for (int s = 0; s < static_cast<int>(model.spans.size()); ++s) {
     const SpringSpan& span = model.spans[s];
@@ -291,12 +293,8 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
     return std::clamp(end - span.b0, piece.lo, piece.hi);
   };
 
-  // Step 1 of a block: gravity, drag and the fields, then the springs reaching into later blocks
-  // (their forces kept for those), published (release) for the threads whose step 2 waits.
-  const std::uint32_t pass_number = ++plan.passes;
-  std::uint32_t* done = plan.done.data();
-  const auto start = [&](int blk) {
-    const auto [begin, end] = range(blk);
+  // Gravity, drag and the fields: the forces F starts from, for particles [begin, end).
+  const auto external = [&](int begin, int end) {
     for (int c = 0; c < 3; ++c)
       for (int i = begin; i < end; ++i) F[c][i] = (mass[i] * g[c] + blow[c]) - drag * V[c][i];
     for (const Attractor& field : model.attractors)
@@ -304,6 +302,18 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
         const Vec3 acc = field_acceleration(field, Vec3(X[0][i], X[1][i], X[2][i]));
         for (int c = 0; c < 3; ++c) F[c][i] += mass[i] * acc[c];
       }
+  };
+  // A block's last plan.reach particles hold the a-ends of the springs that leave it; step 1
+  // starts those, step 2 the others, a chunk ahead of the springs that reach them.
+  const auto tail = [&](int begin, int end) { return std::max(begin, end - plan.reach); };
+
+  // Step 1 of a block: the springs reaching into later blocks, their forces added to their a-ends
+  // and kept for those blocks, then published (release) for the threads whose step 2 waits.
+  const std::uint32_t pass_number = ++plan.passes;
+  std::uint32_t* done = plan.done.data();
+  const auto start = [&](int blk) {
+    const auto [begin, end] = range(blk);
+    external(tail(begin, end), end);
     for (const ForcePlan::Piece& piece : plan.own[blk]) {
       const SpringSpan& span = model.spans[piece.span];
       const int from = inside(piece, span, end);
@@ -316,14 +326,19 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
     std::atomic_ref<std::uint32_t>(done[blk]).store(pass_number, std::memory_order_release);
   };
 
-  // Step 2 of a block, chunk by chunk: the springs with both ends in the block and their a-ends
+  // Step 2 of a block, chunk by chunk: the external forces of the particles the chunk's springs
+  // reach (those step 1 did not start), the springs with both ends in the block and their a-ends
   // in the chunk, then the kept forces of the springs reaching into the chunk from earlier blocks
   // (those before `mine`, another thread's, waited for), then finish(chunk).
   const auto sweep = [&](int blk, int mine) {
     const auto [begin, end] = range(blk);
     bool waited = false;
+    int started = begin;  // external forces are in F below this
     for (int first = begin; first < end; first += kChunkParticles) {
       const int last = std::min(end, first + kChunkParticles);
+      const int reached = std::min(tail(begin, end), last + plan.reach);
+      if (started < reached) external(started, reached);
+      started = std::max(started, reached);
       for (const ForcePlan::Piece& piece : plan.own[blk]) {
         const SpringSpan& span = model.spans[piece.span];
         const int lo = std::max(piece.lo, first - span.a0), hi = std::min(inside(piece, span, end), last - span.a0);

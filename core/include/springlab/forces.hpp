@@ -25,6 +25,7 @@ struct ForcePlan {
   int particles = -1, springs = -1;  // of the model it was made for
   const void* spans = nullptr;
   int block = 0;                             // particles a block
+  int reach = 0;                             // the largest b - a of a spring (0 without springs)
   std::vector<std::vector<Piece>> own;       // per block: springs whose a-end it holds
   std::vector<std::vector<Piece>> incoming;  // per block: springs from an earlier block to it
   std::vector<int> source;                   // per block: the earliest block those come from
