@@ -30,6 +30,7 @@
 #include <cmath>
 #include <cstdint>
 #include <thread>
+#include <type_traits>
 
 #include "springlab/fields.hpp"
 #include "springlab/forces.hpp"
@@ -59,12 +60,23 @@ struct SpanLaw {
   double ks, kd, rest;
 };
 
-// g, the force on the a-ends of the springs between particles a (+ lane) and b (+ lane): one
-// spring for T = double, four for T = f64x4. spring_scale() holds the formula; this gathers
-// its inputs with the same arithmetic as spring_force().
-template <bool kDamped, typename T>
-inline void spring_lanes(const SpringInput& in, int a, int b, SpanLaw law, T g[3]) {
+// What a kernel computes: elastic springs (k_d = 0, no velocities read), damped springs, or
+// damped springs and the power their damping takes out, sum k_d (dv . u)^2 (the app and `render`
+// follow the energy dissipated, and it costs a pass over the springs of its own otherwise).
+enum class Law { Elastic, Damped, Measured };
+
+// Power accumulated four lanes at a time; a single spring's goes into lane 0.
+inline void accumulate(f64x4& sum, f64x4 power) { sum += power; }
+inline void accumulate(f64x4& sum, double power) { sum[0] += power; }
+
+// g, the force on the a-ends of the springs between particles a (+ lane) and b (+ lane), and
+// with Law::Measured their damping's power: one spring for T = double, four for T = f64x4.
+// spring_scale() holds the formula; this gathers its inputs with the same arithmetic as
+// spring_force().
+template <Law kLaw, typename T>
+inline void spring_lanes(const SpringInput& in, int a, int b, SpanLaw law, T g[3], T& power) {
   using simd::at;
+  constexpr bool kDamped = kLaw != Law::Elastic;
   const T dx = at<T>(in.x[0] + b) - at<T>(in.x[0] + a);
   const T dy = at<T>(in.x[1] + b) - at<T>(in.x[1] + a);
   const T dz = at<T>(in.x[2] + b) - at<T>(in.x[2] + a);
@@ -73,7 +85,7 @@ inline void spring_lanes(const SpringInput& in, int a, int b, SpanLaw law, T g[3
   if constexpr (kDamped)
     rate = (at<T>(in.v[0] + b) - at<T>(in.v[0] + a)) * dx + (at<T>(in.v[1] + b) - at<T>(in.v[1] + a)) * dy +
            (at<T>(in.v[2] + b) - at<T>(in.v[2] + a)) * dz;
-  const T s = spring_scale<kDamped>(l2, rate, law.ks, law.kd, law.rest);
+  const T s = spring_scale<kDamped>(l2, rate, law.ks, law.kd, law.rest, kLaw == Law::Measured ? &power : nullptr);
   g[0] = s * dx;
   g[1] = s * dy;
   g[2] = s * dz;
@@ -92,27 +104,31 @@ inline void four_at_a_time(int count, bool last_four_fit, const Body& body) {
   for (; k < count; ++k) body.template operator()<double>(k, 1);
 }
 
-// g with its lanes from `lanes` up set to zero.
-inline void first_lanes(f64x4 g[3], int lanes) {
-  if (lanes < kLanes)
+// g and the power with their lanes from `lanes` up set to zero.
+inline void first_lanes(f64x4 g[3], f64x4& power, int lanes) {
+  if (lanes < kLanes) {
     for (int c = 0; c < 3; ++c) g[c] = simd::first_lanes(g[c], lanes);
+    power = simd::first_lanes(power, lanes);
+  }
 }
-inline void first_lanes(double[3], int) {}
+inline void first_lanes(double[3], double&, int) {}
 
 // `count` springs joining a + k and b + k, b - a >= kLanes: g added to F at the a-ends and taken
 // from it at the b-ends in the same loop (four springs at once never share a particle). F may be
 // read and written below `limit`.
-template <bool kDamped>
-void springs_both(const SpringInput& in, double* const F[3], int a, int b, int count, SpanLaw law, int limit) {
+template <Law kLaw>
+void springs_both(const SpringInput& in, double* const F[3], int a, int b, int count, SpanLaw law, int limit,
+                  f64x4& power) {
   const int whole = count / kLanes * kLanes;
   four_at_a_time(count, b + whole + kLanes <= limit, [&]<typename T>(int k, int lanes) {
-    T g[3];
-    spring_lanes<kDamped>(in, a + k, b + k, law, g);
-    first_lanes(g, lanes);
+    T g[3], p{};
+    spring_lanes<kLaw>(in, a + k, b + k, law, g, p);
+    first_lanes(g, p, lanes);
     for (int c = 0; c < 3; ++c) {
       simd::store(F[c] + a + k, simd::at<T>(F[c] + a + k) + g[c]);
       simd::store(F[c] + b + k, simd::at<T>(F[c] + b + k) - g[c]);
     }
+    if constexpr (kLaw == Law::Measured) accumulate(power, p);
   });
 }
 
@@ -123,8 +139,9 @@ void springs_both(const SpringInput& in, double* const F[3], int a, int b, int c
 //   F[a + k] += g_k - g_{k - kOffset}    for k in [0, count + kOffset)
 // (g is 0 outside [0, count)); g_{k - kOffset} comes from the vector before by a shuffle, so
 // every force is loaded and stored once. F may be read and written below `limit`.
-template <bool kDamped, int kOffset>
-void springs_chain(const SpringInput& in, double* const F[3], int a, int count, SpanLaw law, int limit) {
+template <Law kLaw, int kOffset>
+void springs_chain(const SpringInput& in, double* const F[3], int a, int count, SpanLaw law, int limit,
+                   f64x4& power) {
   static_assert(kOffset >= 1 && kOffset < kLanes);
   f64x4 before[3] = {};  // g of the four springs before (zero before the first)
   const auto particles = [&](int k, const f64x4 g[3]) {
@@ -135,19 +152,21 @@ void springs_chain(const SpringInput& in, double* const F[3], int a, int count, 
   };
   int k = 0;
   for (; k + kLanes <= count; k += kLanes) {
-    f64x4 g[3];
-    spring_lanes<kDamped>(in, a + k, a + kOffset + k, law, g);
+    f64x4 g[3], p{};
+    spring_lanes<kLaw>(in, a + k, a + kOffset + k, law, g, p);
     particles(k, g);
+    if constexpr (kLaw == Law::Measured) accumulate(power, p);
   }
   // The last springs and the kOffset particles past the last a-end, four at a time while what
   // that reads and writes is below `limit`, then one at a time.
   for (; k < count + kOffset && a + kOffset + k + kLanes <= limit; k += kLanes) {
-    f64x4 g[3] = {};
+    f64x4 g[3] = {}, p{};
     if (k < count) {
-      spring_lanes<kDamped>(in, a + k, a + kOffset + k, law, g);
-      first_lanes(g, count - k);
+      spring_lanes<kLaw>(in, a + k, a + kOffset + k, law, g, p);
+      first_lanes(g, p, count - k);
     }
     particles(k, g);
+    if constexpr (kLaw == Law::Measured) accumulate(power, p);
   }
   if (k >= count + kOffset) return;
   // window[c][kLanes + j] is g of spring k + j: the vector before, then these, then zeros.
@@ -157,40 +176,50 @@ void springs_chain(const SpringInput& in, double* const F[3], int a, int count, 
     for (int lane = 0; lane < kLanes; ++lane) window[c][lane] = before[c][lane];
   for (int j = 0; j < kLanes - 1 + kOffset && j < left + kOffset; ++j) {
     if (j < left) {
-      double g[3];
-      spring_lanes<kDamped>(in, a + k + j, a + kOffset + k + j, law, g);
+      double g[3], p = 0.0;
+      spring_lanes<kLaw>(in, a + k + j, a + kOffset + k + j, law, g, p);
       for (int c = 0; c < 3; ++c) window[c][kLanes + j] = g[c];
+      if constexpr (kLaw == Law::Measured) accumulate(power, p);
     }
     for (int c = 0; c < 3; ++c) F[c][a + k + j] += window[c][kLanes + j] - window[c][kLanes + j - kOffset];
   }
 }
 
 // Springs whose b-ends are in a later block: g added at the a-ends and kept in K for that block.
-template <bool kDamped>
+template <Law kLaw>
 void springs_kept(const SpringInput& in, double* const F[3], int a, int b, int count, SpanLaw law,
-                  double* const K[3]) {
+                  double* const K[3], f64x4& power) {
   four_at_a_time(count, false, [&]<typename T>(int k, int) {
-    T g[3];
-    spring_lanes<kDamped>(in, a + k, b + k, law, g);
+    T g[3], p{};
+    spring_lanes<kLaw>(in, a + k, b + k, law, g, p);
     for (int c = 0; c < 3; ++c) {
       simd::store(F[c] + a + k, simd::at<T>(F[c] + a + k) + g[c]);
       simd::store(K[c] + k, g[c]);
     }
+    if constexpr (kLaw == Law::Measured) accumulate(power, p);
   });
 }
 
 // Springs [lo, hi) of a span whose b-ends are all in the block being summed, which ends at
 // particle `end`.
-template <bool kDamped>
+template <Law kLaw>
 void springs_in_block(const SpringInput& in, double* const F[3], const SpringSpan& span, int lo, int hi,
-                      SpanLaw law, int end) {
+                      SpanLaw law, int end, f64x4& power) {
   const int a = span.a0 + lo, count = hi - lo;
   switch (span.b0 - span.a0) {
-    case 1: return springs_chain<kDamped, 1>(in, F, a, count, law, end);
-    case 2: return springs_chain<kDamped, 2>(in, F, a, count, law, end);
-    case 3: return springs_chain<kDamped, 3>(in, F, a, count, law, end);
-    default: return springs_both<kDamped>(in, F, a, span.b0 + lo, count, law, end);
+    case 1: return springs_chain<kLaw, 1>(in, F, a, count, law, end, power);
+    case 2: return springs_chain<kLaw, 2>(in, F, a, count, law, end, power);
+    case 3: return springs_chain<kLaw, 3>(in, F, a, count, law, end, power);
+    default: return springs_both<kLaw>(in, F, a, span.b0 + lo, count, law, end, power);
   }
+}
+
+// Calls f with std::integral_constant<Law, ...> for a span of damping kd.
+template <typename F>
+void with_law(double kd, bool measured, const F& f) {
+  if (kd == 0.0) f(std::integral_constant<Law, Law::Elastic>{});
+  else if (measured) f(std::integral_constant<Law, Law::Measured>{});
+  else f(std::integral_constant<Law, Law::Damped>{});
 }
 
 // Waits until `flag` holds `value` (acquire): spins briefly, as the wait is usually short, then
@@ -265,10 +294,12 @@ inline ForcePlan& plan_for(const Model& model, SpringForces& buffer) {
 
 // F: three arrays (x, y, z) of particle_count() forces, written. `finish(block, begin, end)` is
 // called for each chunk [begin, end) of a block's particles, in order, as soon as their forces
-// are complete.
+// are complete. With `block_power` (one a block), also the power that spring damping and drag
+// take out of each block's springs and particles: dissipation_power() (energy.hpp), summed by
+// blocks.
 template <typename Finish>
 void force_pass(const Model& model, const Points& x, const Points& v, double* const F[3],
-                SpringForces& buffer, const Finish& finish) {
+                SpringForces& buffer, const Finish& finish, double* block_power = nullptr) {
   using namespace force_detail;
   const int n = model.particle_count();
   const int springs = model.spring_count();
@@ -293,8 +324,13 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
     return std::clamp(end - span.b0, piece.lo, piece.hi);
   };
 
-  // Gravity, drag and the fields: the forces F starts from, for particles [begin, end).
-  const auto external = [&](int begin, int end) {
+  const bool measured = block_power != nullptr;
+  const double* inv_mass = model.inv_mass.data();
+  const double wind[3] = {model.wind.x(), model.wind.y(), model.wind.z()};
+
+  // Gravity, drag and the fields: the forces F starts from, for particles [begin, end); measured,
+  // the power drag takes out of the free ones, k_drag v . (v - wind).
+  const auto external = [&](int begin, int end, f64x4& power) {
     for (int c = 0; c < 3; ++c)
       for (int i = begin; i < end; ++i) F[c][i] = (mass[i] * g[c] + blow[c]) - drag * V[c][i];
     for (const Attractor& field : model.attractors)
@@ -302,6 +338,14 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
         const Vec3 acc = field_acceleration(field, Vec3(X[0][i], X[1][i], X[2][i]));
         for (int c = 0; c < 3; ++c) F[c][i] += mass[i] * acc[c];
       }
+    if (measured && drag != 0.0)
+      four_at_a_time(end - begin, false, [&]<typename T>(int k, int) {
+        using simd::at;
+        const int i = begin + k;
+        T dot{};
+        for (int c = 0; c < 3; ++c) dot += at<T>(V[c] + i) * (at<T>(V[c] + i) - wind[c]);
+        accumulate(power, drag * simd::where_greater(at<T>(inv_mass + i), 0.0, dot));
+      });
   };
   // A block's last plan.reach particles hold the a-ends of the springs that leave it; step 1
   // starts those, step 2 the others, a chunk ahead of the springs that reach them.
@@ -313,16 +357,19 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
   std::uint32_t* done = plan.done.data();
   const auto start = [&](int blk) {
     const auto [begin, end] = range(blk);
-    external(tail(begin, end), end);
+    f64x4 power{};
+    external(tail(begin, end), end, power);
     for (const ForcePlan::Piece& piece : plan.own[blk]) {
       const SpringSpan& span = model.spans[piece.span];
       const int from = inside(piece, span, end);
       if (from == piece.hi) continue;
       double* const kept[3] = {SF[0] + span.first + from, SF[1] + span.first + from, SF[2] + span.first + from};
       const SpanLaw law = law_of(span);
-      (law.kd != 0.0 ? springs_kept<true> : springs_kept<false>)(in, F, span.a0 + from, span.b0 + from,
-                                                                 piece.hi - from, law, kept);
+      with_law(law.kd, measured, [&](auto kind) {
+        springs_kept<decltype(kind)::value>(in, F, span.a0 + from, span.b0 + from, piece.hi - from, law, kept, power);
+      });
     }
+    if (measured) block_power[blk] = simd::sum(power);
     std::atomic_ref<std::uint32_t>(done[blk]).store(pass_number, std::memory_order_release);
   };
 
@@ -334,17 +381,20 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
     const auto [begin, end] = range(blk);
     bool waited = false;
     int started = begin;  // external forces are in F below this
+    f64x4 power{};
     for (int first = begin; first < end; first += kChunkParticles) {
       const int last = std::min(end, first + kChunkParticles);
       const int reached = std::min(tail(begin, end), last + plan.reach);
-      if (started < reached) external(started, reached);
+      if (started < reached) external(started, reached, power);
       started = std::max(started, reached);
       for (const ForcePlan::Piece& piece : plan.own[blk]) {
         const SpringSpan& span = model.spans[piece.span];
         const int lo = std::max(piece.lo, first - span.a0), hi = std::min(inside(piece, span, end), last - span.a0);
         if (lo >= hi) continue;
         const SpanLaw law = law_of(span);
-        (law.kd != 0.0 ? springs_in_block<true> : springs_in_block<false>)(in, F, span, lo, hi, law, end);
+        with_law(law.kd, measured, [&](auto kind) {
+          springs_in_block<decltype(kind)::value>(in, F, span, lo, hi, law, end, power);
+        });
       }
       for (const ForcePlan::Piece& piece : plan.incoming[blk]) {
         const SpringSpan& span = model.spans[piece.span];
@@ -358,6 +408,7 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
       }
       finish(blk, first, last);
     }
+    if (measured) block_power[blk] += simd::sum(power);
   };
 
   // Run by every thread of the team, or by the caller alone (a parallel region costs an

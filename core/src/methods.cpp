@@ -73,6 +73,7 @@ void step(Method method, const Model& model, const State& in, State& out, double
           const StepSettings& settings, Workspace& ws) {
   const MethodInfo& info = method_info(method);
   ws.step_probe.reset();
+  ws.input_power.reset();
   info.step(model, in, out, h, settings, ws);
   if (!info.adaptive) ++ws.counters.accepted;
 }

@@ -92,6 +92,7 @@ void Simulation::reset() {
 bool Simulation::step() {
   if (divergence_) return false;
   const double h = this->h();
+  ws_.measure_power = settings_.track_dissipation;
   for (int k = 0; k < settings_.substeps; ++k) {
     try {
       springlab::step(settings_.method, model_, current_, next_, h, settings_.step, ws_);
@@ -122,8 +123,10 @@ bool Simulation::step() {
     next_.t = t_since_ + static_cast<double>(++substeps_done_) * h;
     const ContactResult contact = resolve_contacts(model_, next_);
     if (contact.contacts > 0) ws_.invalidate();
+    // The power at the step's start (the explicit methods measured it in their force pass), over h.
     if (settings_.track_dissipation)
-      dissipated_ += h * dissipation_power(model_, next_) + contact.kinetic_lost;
+      dissipated_ += h * (ws_.input_power ? *ws_.input_power : dissipation_power(model_, current_)) +
+                     contact.kinetic_lost;
     std::swap(current_, next_);
     if (!emission_.empty() && emission_.update(model_, current_)) {
       ws_.invalidate();

@@ -93,6 +93,13 @@ struct Workspace {
   std::vector<StepProbe> block_probes;
   std::optional<StepProbe> step_probe;
 
+  // Asked for (measure_power), the explicit methods measure in their force pass the power that
+  // damping and drag take out at the state they start from (dissipation_power(), energy.hpp), by
+  // blocks, summed in order. Cleared by step() before each step.
+  bool measure_power = false;
+  std::vector<double> block_power;
+  std::optional<double> input_power;
+
   // The state or the model was changed from outside (contact, a drag, a parameter): forget what
   // was derived from the last step. Counters and the adaptive step size are kept.
   void invalidate() {

@@ -26,7 +26,7 @@ struct SimulationSettings {
   int substeps = 1;  // integrator steps per step
   StepSettings step;
   int energy_check_interval = 16;  // steps between divergence checks of the total energy
-  bool track_dissipation = false;  // integrate the dissipated power (costs a spring pass a step)
+  bool track_dissipation = false;  // integrate the dissipated power (free with the explicit methods)
 };
 
 // NUMERICS.md: a run has diverged when a position or velocity is not finite, or when the total

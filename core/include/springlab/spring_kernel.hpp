@@ -31,12 +31,18 @@ inline bool coincident(double l, double rest) { return l <= coincident_length(re
 // set to 0 for coincident ends (selected, not branched, so that it vectorises). A template on
 // its number type: double, or simd::f64x4 for four springs at once, with the same bits lane by
 // lane. Undamped springs (kDamped = false) skip the rate: (k_s (l - L) + 0) / l is the same number.
+// With `power`, also the power the damping takes out: k_d (dv . u)^2 = (k_d rate / l)(rate / l).
 template <bool kDamped, typename T>
-inline T spring_scale(T l2, T rate, double ks, double kd, double rest) {
+inline T spring_scale(T l2, T rate, double ks, double kd, double rest, T* power = nullptr) {
   const T l = simd::sqrt(l2);
   const T inv = simd::where_greater(l, coincident_length(rest), l * (1.0 / l2));
-  if constexpr (kDamped) return (ks * (l - rest) + kd * rate * inv) * inv;
-  else return ks * (l - rest) * inv;
+  if constexpr (kDamped) {
+    const T damping = kd * rate * inv;
+    if (power) *power = damping * (rate * inv);
+    return (ks * (l - rest) + damping) * inv;
+  } else {
+    return ks * (l - rest) * inv;
+  }
 }
 
 // Force on end a.
