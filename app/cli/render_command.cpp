@@ -156,10 +156,24 @@ int render(const RenderOptions& o) {
   // simulation takes one core unless told (threads waiting for work would only take turns away).
   if (!o.sim.threads && gfx::software_renderer(offscreen.renderer_name())) set_thread_count(1);
   Progress progress("render " + scene_name, frames);
-  Image image;
   ui::FrameStats stats;
   const auto start = std::chrono::steady_clock::now();
   std::int64_t written = 0;
+  // Frame k is drawn, then the simulation advances to frame k + 1 while the rasteriser's threads
+  // draw it, then it is read back and handed to the writer (rows as GL reads them: the writer
+  // puts them in order as it writes).
+  std::optional<std::int64_t> drawn;
+  double draw_ms = 0.0;
+  const auto collect = [&] {
+    const auto t0 = std::chrono::steady_clock::now();
+    Image image = writer->spare();
+    offscreen.read(image, true);
+    stats.draw_ms = draw_ms + std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    writer->push(std::move(image), static_cast<int>(*drawn));
+    ++written;
+    progress.update(*drawn + 1);
+    drawn.reset();
+  };
   for (std::int64_t k = 0; k < frames; ++k) {
     if (k > 0) {
       const std::int64_t before = session.primary().sim.counters().force_evals;
@@ -168,19 +182,19 @@ int render(const RenderOptions& o) {
       stats.sim_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
       stats.force_evals = session.primary().sim.counters().force_evals - before;
     }
+    if (drawn) collect();
     if (!selected.empty() && !selected.count(k)) continue;
     const auto t0 = std::chrono::steady_clock::now();
     const draw::Viewport viewport = o.ui ? ui::scene_viewport(ui, width, height) : draw::Viewport{0, 0, width, height};
     const draw::Frame frame = draw::build_frame(session, ui.view, viewport);
-    offscreen.render(frame, [&] {
+    offscreen.draw(frame, [&] {
       if (o.ui) ui::draw_panels(session, ui, stats, width, height);
       ui::draw_overlay(session, viewport, ui.scale, scene_name, !o.ui);
-    }, image);
-    stats.draw_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    writer->push(image, static_cast<int>(k));
-    ++written;
-    progress.update(k + 1);
+    });
+    draw_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    drawn = k;
   }
+  if (drawn) collect();
   writer->finish();
   progress.finish();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -30,6 +30,11 @@ Offscreen::~Offscreen() {
 }
 
 void Offscreen::render(const draw::Frame& frame, const std::function<void()>& ui, app::Image& out) {
+  draw(frame, ui);
+  read(out);
+}
+
+void Offscreen::draw(const draw::Frame& frame, const std::function<void()>& ui) {
   target_.bind_for_drawing();
   renderer_->draw(frame, width_, height_);
   if (imgui_ && ui) {
@@ -50,9 +55,14 @@ void Offscreen::render(const draw::Frame& frame, const std::function<void()>& ui
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   }
   target_.resolve();
+  glFlush();
+}
+
+void Offscreen::read(app::Image& out, bool bottom_up) {
   out.width = width_;
   out.height = height_;
-  target_.read_rgba(out.rgba);
+  out.bottom_up = bottom_up;
+  target_.read_rgba(out.rgba, bottom_up);
 }
 
 }  // namespace springlab::gfx

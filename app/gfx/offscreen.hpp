@@ -24,6 +24,11 @@ class Offscreen {
   // Draws the frame, then whatever `ui` draws with ImGui (between NewFrame and Render), and
   // reads the result back.
   void render(const draw::Frame& frame, const std::function<void()>& ui, app::Image& out);
+  // The same in two halves, so that the caller can work while the rasteriser's threads draw
+  // (Mesa's llvmpipe starts on glFlush): draw() returns at once, read() waits for the pixels.
+  // With `bottom_up` the rows are left as GL reads them (out.bottom_up), sparing a copy.
+  void draw(const draw::Frame& frame, const std::function<void()>& ui);
+  void read(app::Image& out, bool bottom_up = false);
 
   std::string renderer_name() const { return context_.renderer(); }
   int samples() const { return target_.samples(); }

@@ -71,12 +71,13 @@ void RenderTarget::resolve() const {
   glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
-void RenderTarget::read_rgba(std::vector<std::uint8_t>& pixels) const {
+void RenderTarget::read_rgba(std::vector<std::uint8_t>& pixels, bool bottom_up) const {
   const std::size_t row = static_cast<std::size_t>(width_) * 4;
   pixels.resize(row * height_);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+  if (bottom_up) return;
   // GL reads bottom-up.
   std::vector<std::uint8_t> swap(row);
   for (int y = 0; y < height_ / 2; ++y) {

@@ -23,8 +23,9 @@ class RenderTarget {
   void bind_for_drawing() const;
   // Resolves the samples into the plain framebuffer.
   void resolve() const;
-  // Reads the resolved image: width x height RGBA, rows from the top.
-  void read_rgba(std::vector<std::uint8_t>& pixels) const;
+  // Reads the resolved image: width x height RGBA, rows from the top, or from the bottom as GL
+  // reads them (a consumer that can take them so spares a copy of the frame).
+  void read_rgba(std::vector<std::uint8_t>& pixels, bool bottom_up = false) const;
   // Copies the resolved image to the default framebuffer (a window).
   void blit_to_window(int window_width, int window_height) const;
 

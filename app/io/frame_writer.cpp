@@ -3,9 +3,11 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
+#include <sys/uio.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -40,6 +42,14 @@ void FrameWriter::push(Image frame, int index) {
   changed_.notify_all();
 }
 
+Image FrameWriter::spare() {
+  std::lock_guard lock(mutex_);
+  if (spares_.empty()) return {};
+  Image image = std::move(spares_.back());
+  spares_.pop_back();
+  return image;
+}
+
 void FrameWriter::finish() {
   stop();
   if (error_) std::rethrow_exception(error_);
@@ -59,6 +69,8 @@ void FrameWriter::run() {
     changed_.notify_all();
     try {
       write(item.first, item.second);
+      std::lock_guard lock(mutex_);
+      if (spares_.size() < kQueue) spares_.push_back(std::move(item.first));
     } catch (...) {
       std::lock_guard lock(mutex_);
       error_ = std::current_exception();
@@ -119,6 +131,9 @@ class Mp4Video final : public FrameWriter {
       throw std::runtime_error(std::string("ffmpeg could not be started: ") + std::strerror(rc));
     }
     pipe_ = fds[1];
+    // A frame is megabytes: a larger pipe (best effort: 1 MiB is Linux's default limit) wakes
+    // ffmpeg a few times a frame instead of every 64 KiB.
+    ::fcntl(pipe_, F_SETPIPE_SZ, 1 << 20);
     start();
   }
 
@@ -132,18 +147,37 @@ class Mp4Video final : public FrameWriter {
   }
 
  protected:
+  // The rows from the top, as ffmpeg takes them: one writev of up to kRows rows at a time, whichever
+  // way the image holds them.
   void write(const Image& frame, int) override {
-    const std::uint8_t* p = frame.rgba.data();
-    std::size_t left = frame.rgba.size();
-    while (left > 0) {
-      const ssize_t n = ::write(pipe_, p, left);
+    constexpr int kRows = 512;  // below IOV_MAX (1024)
+    const std::size_t row = static_cast<std::size_t>(frame.width) * 4;
+    iovec rows[kRows];
+    for (int top = 0; top < frame.height; top += kRows) {
+      const int count = std::min(kRows, frame.height - top);
+      for (int y = 0; y < count; ++y) rows[y] = {const_cast<std::uint8_t*>(frame.row(top + y)), row};
+      send(rows, count);
+    }
+  }
+
+  void send(iovec* rows, int count) {
+    while (count > 0) {
+      ssize_t n = ::writev(pipe_, rows, count);
       if (n < 0) {
         if (errno == EINTR) continue;
         throw std::runtime_error("ffmpeg stopped taking frames (" + std::string(std::strerror(errno)) +
                                  "): is the disk full?");
       }
-      p += n;
-      left -= static_cast<std::size_t>(n);
+      // Past what was written: whole rows, then part of one.
+      while (count > 0 && static_cast<std::size_t>(n) >= rows->iov_len) {
+        n -= static_cast<ssize_t>(rows->iov_len);
+        ++rows;
+        --count;
+      }
+      if (count > 0) {
+        rows->iov_base = static_cast<std::uint8_t*>(rows->iov_base) + n;
+        rows->iov_len -= static_cast<std::size_t>(n);
+      }
     }
   }
 

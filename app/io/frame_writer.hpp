@@ -10,6 +10,7 @@
 #include <memory>
 #include <mutex>
 #include <thread>
+#include <vector>
 
 #include "io/png.hpp"
 
@@ -20,6 +21,9 @@ class FrameWriter {
   virtual ~FrameWriter();
   // Queues a frame (waits while the queue is full). Rethrows a failure of the writer thread.
   void push(Image frame, int index);
+  // An image written already, to read the next frame into (its buffer is reused: a 1280x720
+  // frame is 3.7 MB the system would otherwise map and clear each time); empty at first.
+  Image spare();
   // Waits for every frame, then completes the output (renames, closes ffmpeg). Throws on failure.
   void finish();
 
@@ -36,6 +40,7 @@ class FrameWriter {
   std::mutex mutex_;
   std::condition_variable changed_;
   std::deque<std::pair<Image, int>> queue_;
+  std::vector<Image> spares_;
   bool closing_ = false;
   std::exception_ptr error_;
 };

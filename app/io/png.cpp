@@ -23,8 +23,7 @@ void write_png(const std::filesystem::path& path, const Image& image, int compre
   png_set_IHDR(png, info, image.width, image.height, 8, PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_write_info(png, info);
-  for (int y = 0; y < image.height; ++y)
-    png_write_row(png, image.rgba.data() + static_cast<std::size_t>(y) * image.width * 4);
+  for (int y = 0; y < image.height; ++y) png_write_row(png, image.row(y));
   png_write_end(png, nullptr);
   png_destroy_write_struct(&png, &info);
   out.commit();

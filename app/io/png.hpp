@@ -9,7 +9,13 @@ namespace springlab::app {
 
 struct Image {
   int width = 0, height = 0;
-  std::vector<std::uint8_t> rgba;  // rows from the top
+  std::vector<std::uint8_t> rgba;  // rows from the top, or from the bottom (as GL reads them)
+  bool bottom_up = false;
+
+  // Row y counted from the top, whichever way the rows are stored.
+  const std::uint8_t* row(int y) const {
+    return rgba.data() + static_cast<std::size_t>(bottom_up ? height - 1 - y : y) * width * 4;
+  }
 };
 
 // Writes atomically (temporary name, then rename). Throws on failure.
