@@ -318,7 +318,10 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
     const SpringMaterial& mat = model.materials[span.material];
     return SpanLaw{mat.ks, mat.kd, span.rest};
   };
-  const auto range = [&](int blk) { return std::pair(blk * plan.block, std::min(n, (blk + 1) * plan.block)); };
+  // A block's particles [begin, end) (plain variables where used: Clang 14 cannot capture
+  // structured bindings in a lambda).
+  const auto begin_of = [&](int blk) { return blk * plan.block; };
+  const auto end_of = [&](int blk) { return std::min(n, (blk + 1) * plan.block); };
   // Springs [lo, inside) of an own piece have their b-end in the block, [inside, hi) beyond it.
   const auto inside = [](const ForcePlan::Piece& piece, const SpringSpan& span, int end) {
     return std::clamp(end - span.b0, piece.lo, piece.hi);
@@ -356,7 +359,7 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
   const std::uint32_t pass_number = ++plan.passes;
   std::uint32_t* done = plan.done.data();
   const auto start = [&](int blk) {
-    const auto [begin, end] = range(blk);
+    const int begin = begin_of(blk), end = end_of(blk);
     f64x4 power{};
     external(tail(begin, end), end, power);
     for (const ForcePlan::Piece& piece : plan.own[blk]) {
@@ -378,7 +381,7 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
   // in the chunk, then the kept forces of the springs reaching into the chunk from earlier blocks
   // (those before `mine`, another thread's, waited for), then finish(chunk).
   const auto sweep = [&](int blk, int mine) {
-    const auto [begin, end] = range(blk);
+    const int begin = begin_of(blk), end = end_of(blk);
     bool waited = false;
     int started = begin;  // external forces are in F below this
     f64x4 power{};
