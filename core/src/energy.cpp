@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "springlab/spring_kernel.hpp"
 
@@ -31,23 +32,50 @@ double lane_sum(int begin, int end, const Term& term) {
 
 namespace {
 
-// sum k_s (l - L)^2 / 2 over the springs, span by span, in chunks whose terms are summed with
-// four running sums (in a fixed order: the same bits every time).
-double spring_energy_sum(const Model& model, const State& state) {
+// Pieces of a sum: this many springs or particles each. Above kParallelPieces of them they are
+// summed by the threads, each piece's sum in its own fixed order, then the pieces' sums in
+// order: the same bits for any number of threads.
+constexpr int kPiece = 4096;
+constexpr int kParallelPieces = 2;
+
+template <typename Part>
+double ordered_sum(int pieces, const Part& part) {
+  if (pieces < kParallelPieces) {
+    double sum = 0.0;
+    for (int p = 0; p < pieces; ++p) sum += part(p);
+    return sum;
+  }
+  std::vector<double> parts(pieces);
+#pragma omp parallel for schedule(static)
+  for (int p = 0; p < pieces; ++p) parts[p] = part(p);
+  double sum = 0.0;
+  for (double v : parts) sum += v;
+  return sum;
+}
+
+int pieces_of(int count) { return (count + kPiece - 1) / kPiece; }
+
+// sum k_s (l - L)^2 / 2 over springs [lo, hi) (in the order finalize() left them), span by span
+// in chunks whose terms are summed with four running sums (in a fixed order).
+double spring_energy_sum(const Model& model, const State& state, int lo, int hi) {
   constexpr int kChunk = 256;
   const double* X = state.x.col(0).data();
   const double* Y = state.x.col(1).data();
   const double* Z = state.x.col(2).data();
   double acc[4] = {0.0, 0.0, 0.0, 0.0};
   double term[kChunk];
-  for (const SpringSpan& span : model.spans) {
-    const double half_ks = 0.5 * model.materials[span.material].ks;
-    for (int lo = 0; lo < span.count; lo += kChunk) {
-      const int count = std::min(kChunk, span.count - lo);
-      const int a = span.a0 + lo, b = span.b0 + lo;
+  // The span holding spring lo: the last whose first spring is not after it.
+  auto span = std::upper_bound(model.spans.begin(), model.spans.end(), lo,
+                               [](int s, const SpringSpan& sp) { return s < sp.first; }) - 1;
+  for (; span < model.spans.end() && span->first < hi; ++span) {
+    const double half_ks = 0.5 * model.materials[span->material].ks;
+    const int from = std::max(lo - span->first, 0), to = std::min(hi - span->first, span->count);
+    for (int first = from; first < to; first += kChunk) {
+      const int count = std::min(kChunk, to - first);
+      const int a = span->a0 + first, b = span->b0 + first;
       for (int k = 0; k < count; ++k) {
         const double dx = X[b + k] - X[a + k], dy = Y[b + k] - Y[a + k], dz = Z[b + k] - Z[a + k];
-        const double stretch = std::sqrt(dx * dx + dy * dy + dz * dz) - span.rest;
+        const double stretch = std::sqrt(dx * dx + dy * dy + dz * dz) - span->rest;
         term[k] = half_ks * stretch * stretch;
       }
       int k = 0;
@@ -57,6 +85,19 @@ double spring_energy_sum(const Model& model, const State& state) {
     }
   }
   return (acc[0] + acc[1]) + (acc[2] + acc[3]);
+}
+
+double spring_energy_sum(const Model& model, const State& state) {
+  const int springs = model.spring_count();
+  return ordered_sum(pieces_of(springs), [&](int p) {
+    return spring_energy_sum(model, state, p * kPiece, std::min(springs, (p + 1) * kPiece));
+  });
+}
+
+// lane_sum over all particles, piece by piece.
+template <typename Term>
+double particle_sum(int n, const Term& term) {
+  return ordered_sum(pieces_of(n), [&](int p) { return lane_sum(p * kPiece, std::min(n, (p + 1) * kPiece), term); });
 }
 
 }  // namespace
@@ -69,7 +110,7 @@ Energy energy(const Model& model, const State& state) {
   const double* w = model.inv_mass.data();
   const double* x[3] = {state.x.col(0).data(), state.x.col(1).data(), state.x.col(2).data()};
   const double g[3] = {model.gravity.x(), model.gravity.y(), model.gravity.z()};
-  e.gravity = -lane_sum(0, n, [&](int i, int c) { return (w[i] > 0.0 ? m[i] : 0.0) * g[c] * x[c][i]; });
+  e.gravity = -particle_sum(n, [&](int i, int c) { return (w[i] > 0.0 ? m[i] : 0.0) * g[c] * x[c][i]; });
   e.spring = spring_energy_sum(model, state);
   for (const Attractor& field : model.attractors)
     for (int i = 0; i < n; ++i)
@@ -78,12 +119,16 @@ Energy energy(const Model& model, const State& state) {
 }
 
 
-double kinetic_energy(const Model& model, const State& state) {
-  return probe(model, state, 0, model.particle_count()).kinetic;
-}
+double kinetic_energy(const Model& model, const State& state) { return probe(model, state).kinetic; }
 
 StepProbe probe(const Model& model, const State& state) {
-  return probe(model, state, 0, model.particle_count());
+  const int n = model.particle_count();
+  StepProbe p;
+  p.kinetic = ordered_sum(pieces_of(n), [&](int k) {
+    return probe(model, state, k * kPiece, std::min(n, (k + 1) * kPiece)).kinetic;
+  });
+  p.finite = std::isfinite(p.kinetic);
+  return p;
 }
 
 StepProbe probe(const Model& model, const State& state, int begin, int end) {
