@@ -335,8 +335,15 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
   // Gravity, drag and the fields: the forces F starts from, for particles [begin, end); measured,
   // the power drag takes out of the free ones, k_drag v . (v - wind).
   const auto external = [&](int begin, int end, f64x4& power) {
-    for (int c = 0; c < 3; ++c)
-      for (int i = begin; i < end; ++i) F[c][i] = (mass[i] * g[c] + blow[c]) - drag * V[c][i];
+    // One loop for the three coordinates, four particles at a time. The constants are copied
+    // (captured by value): a store of a force might otherwise change them, as far as the
+    // compiler knows, and they would be loaded again after each.
+    four_at_a_time(end - begin, false, [=]<typename T>(int k, int) {
+      using simd::at;
+      const int i = begin + k;
+      const T m = at<T>(mass + i);
+      for (int c = 0; c < 3; ++c) simd::store(F[c] + i, (m * g[c] + blow[c]) - drag * at<T>(V[c] + i));
+    });
     for (const Attractor& field : model.attractors)
       for (int i = begin; i < end; ++i) {
         const Vec3 acc = field_acceleration(field, Vec3(X[0][i], X[1][i], X[2][i]));
