@@ -4,28 +4,27 @@
 #include <cmath>
 #include <vector>
 
+#include "springlab/simd.hpp"
 #include "springlab/spring_kernel.hpp"
 
 namespace springlab {
 
 namespace {
 
-// Sums over particles [begin, end) with sixteen running sums in a fixed order: independent add
-// chains (one chain is bound by the adder's latency) that the compiler turns into vectors, and
-// the same bits every time. term(i, c) is the contribution of coordinate c of particle i.
+// Sums over particles [begin, end) with sixteen running sums (four vectors) in a fixed order:
+// independent add chains (one chain is bound by the adder's latency), and the same bits every
+// time. `term.template operator()<T>(i)` is the contribution of particle i (T = double) or of
+// particles i .. i + 3 (T = simd::f64x4), its three coordinates summed in the term.
 template <typename Term>
 double lane_sum(int begin, int end, const Term& term) {
-  constexpr int kLanes = 16;
-  double acc[kLanes] = {};
-  for (int c = 0; c < 3; ++c) {
-    int i = begin;
-    for (; i + kLanes <= end; i += kLanes)
-      for (int j = 0; j < kLanes; ++j) acc[j] += term(i + j, c);
-    for (; i < end; ++i) acc[0] += term(i, c);
-  }
-  for (int width = kLanes / 2; width > 0; width /= 2)
-    for (int j = 0; j < width; ++j) acc[j] += acc[j + width];
-  return acc[0];
+  using simd::f64x4;
+  f64x4 acc[4] = {};
+  int i = begin;
+  for (; i + 16 <= end; i += 16)
+    for (int j = 0; j < 4; ++j) acc[j] += term.template operator()<f64x4>(i + 4 * j);
+  double rest = 0.0;
+  for (; i < end; ++i) rest += term.template operator()<double>(i);
+  return simd::sum((acc[0] + acc[1]) + (acc[2] + acc[3])) + rest;
 }
 
 }  // namespace
@@ -110,7 +109,11 @@ Energy energy(const Model& model, const State& state) {
   const double* w = model.inv_mass.data();
   const double* x[3] = {state.x.col(0).data(), state.x.col(1).data(), state.x.col(2).data()};
   const double g[3] = {model.gravity.x(), model.gravity.y(), model.gravity.z()};
-  e.gravity = -particle_sum(n, [&](int i, int c) { return (w[i] > 0.0 ? m[i] : 0.0) * g[c] * x[c][i]; });
+  e.gravity = -particle_sum(n, [&]<typename T>(int i) {
+    using simd::at;
+    return simd::where_greater(at<T>(w + i), 0.0, at<T>(m + i)) *
+           (g[0] * at<T>(x[0] + i) + g[1] * at<T>(x[1] + i) + g[2] * at<T>(x[2] + i));
+  });
   e.spring = spring_energy_sum(model, state);
   for (const Attractor& field : model.attractors)
     for (int i = 0; i < n; ++i)
@@ -140,8 +143,11 @@ StepProbe probe(const Model& model, const State& state, int begin, int end) {
   // energy unless a position is not finite; a velocity that is not finite makes the sum so too
   // (0 * inf is NaN: pinned ones count as well).
   StepProbe p;
-  p.kinetic = 0.5 * lane_sum(begin, end, [&](int i, int c) {
-                return (w[i] > 0.0 ? m[i] : 0.0) * v[c][i] * v[c][i] + x[c][i] * 0.0;
+  p.kinetic = 0.5 * lane_sum(begin, end, [&]<typename T>(int i) {
+                using simd::at;
+                const T vx = at<T>(v[0] + i), vy = at<T>(v[1] + i), vz = at<T>(v[2] + i);
+                return simd::where_greater(at<T>(w + i), 0.0, at<T>(m + i)) * (vx * vx + vy * vy + vz * vz) +
+                       (at<T>(x[0] + i) + at<T>(x[1] + i) + at<T>(x[2] + i)) * 0.0;
               });
   p.finite = std::isfinite(p.kinetic);
   return p;
@@ -189,8 +195,11 @@ double dissipation_power(const Model& model, const State& state) {
   if (model.drag > 0.0) {
     const double* w = model.inv_mass.data();
     const double wind[3] = {model.wind.x(), model.wind.y(), model.wind.z()};
-    power += model.drag * lane_sum(0, model.particle_count(), [&](int i, int c) {
-               return w[i] > 0.0 ? v[c][i] * (v[c][i] - wind[c]) : 0.0;
+    power += model.drag * lane_sum(0, model.particle_count(), [&]<typename T>(int i) {
+               using simd::at;
+               const T vx = at<T>(v[0] + i), vy = at<T>(v[1] + i), vz = at<T>(v[2] + i);
+               return simd::where_greater(at<T>(w + i), 0.0,
+                                          vx * (vx - wind[0]) + vy * (vy - wind[1]) + vz * (vz - wind[2]));
              });
   }
   return power;
