@@ -1,6 +1,6 @@
 // Benchmarks of the simulation core (Google Benchmark): the spring kernel and the force pass,
 // each method's step on rope and cloth at several sizes and thread counts, the implicit solve,
-// and building scenes. Run: build/bench/springlab_bench (see the README for the figures).
+// building scenes, and the stability estimate. Run: build/bench/springlab_bench (see the README for the figures).
 #include <benchmark/benchmark.h>
 
 #include <chrono>
@@ -13,6 +13,7 @@
 #include "springlab/scene.hpp"
 #include "springlab/simulation.hpp"
 #include "springlab/spring_kernel.hpp"
+#include "springlab/stability.hpp"
 
 namespace springlab {
 namespace {
@@ -136,6 +137,18 @@ void BM_BuildScene(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(cloth(static_cast<int>(state.range(0))));
 }
 BENCHMARK(BM_BuildScene)->Arg(64)->Arg(256)->Unit(benchmark::kMillisecond);
+
+// The stability estimate (Lanczos for w_max and the damping of that mode): what the app's panel
+// and `run` wait for when a scene is loaded. Rope nodes (0: the 64 x 64 cloth).
+void BM_StabilityEstimate(benchmark::State& state) {
+  const int nodes = static_cast<int>(state.range(0));
+  const Scene s = nodes > 0 ? rope(nodes) : cloth(64);
+  int iterations = 0;
+  for (auto _ : state) iterations = estimate_stability(s.model, s.state).iterations;
+  state.counters["lanczos_steps"] = iterations;
+  state.SetLabel(nodes > 0 ? "rope " + std::to_string(nodes) : "cloth 64x64");
+}
+BENCHMARK(BM_StabilityEstimate)->Arg(1000)->Arg(0)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace springlab
