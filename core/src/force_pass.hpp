@@ -275,6 +275,21 @@ inline void make_plan(const Model& model, ForcePlan& plan) {
       }
     }
   }
+  plan.chunk_first.assign(blocks + 1, 0);
+  plan.chunk_own.clear();
+  for (int b = 0; b < blocks; ++b) {
+    const int begin = b * plan.block, end = std::min(n, begin + plan.block);
+    for (int first = begin; first < end; first += kChunkParticles) {
+      const int last = std::min(end, first + kChunkParticles);
+      std::vector<ForcePlan::Piece>& mine = plan.chunk_own.emplace_back();
+      for (const ForcePlan::Piece& piece : plan.own[b]) {
+        const SpringSpan& span = model.spans[piece.span];
+        const int lo = std::max(piece.lo, first - span.a0), hi = std::min(piece.hi, last - span.a0);
+        if (lo < hi) mine.push_back({piece.span, lo, hi});
+      }
+    }
+    plan.chunk_first[b + 1] = static_cast<int>(plan.chunk_own.size());
+  }
 }
 
 }  // namespace force_detail
@@ -398,9 +413,9 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
       const int reached = std::min(tail(begin, end), last + plan.reach);
       if (started < reached) external(started, reached, power);
       started = std::max(started, reached);
-      for (const ForcePlan::Piece& piece : plan.own[blk]) {
+      for (const ForcePlan::Piece& piece : plan.chunk_own[plan.chunk_first[blk] + (first - begin) / kChunkParticles]) {
         const SpringSpan& span = model.spans[piece.span];
-        const int lo = std::max(piece.lo, first - span.a0), hi = std::min(inside(piece, span, end), last - span.a0);
+        const int lo = piece.lo, hi = inside(piece, span, end);
         if (lo >= hi) continue;
         const SpanLaw law = law_of(span);
         with_law(law.kd, measured, [&](auto kind) {

@@ -27,6 +27,12 @@ struct ForcePlan {
   int block = 0;                             // particles a block
   int reach = 0;                             // the largest b - a of a spring (0 without springs)
   std::vector<std::vector<Piece>> own;       // per block: springs whose a-end it holds
+  // Per chunk of a block's particles (block b's chunks from chunk_first[b] on): the pieces of
+  // `own` cut to the springs whose a-ends are in the chunk, in the same order. A block of a
+  // cloth holds a few spans a row, hundreds in all: a chunk finds its own without going
+  // through them all.
+  std::vector<std::vector<Piece>> chunk_own;
+  std::vector<int> chunk_first;
   std::vector<std::vector<Piece>> incoming;  // per block: springs from an earlier block to it
   std::vector<int> source;                   // per block: the earliest block those come from
   // Per block: the number of the last pass that has computed its springs (step 1 in
