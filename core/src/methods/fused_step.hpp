@@ -32,16 +32,15 @@ StepProbe update_block(const Update& update, const Model& model, const State& in
   double* X1[3] = {out.x.col(0).data(), out.x.col(1).data(), out.x.col(2).data()};
   const auto particles = [&]<typename T>(int i) {
     const T w = at<T>(inv_mass + i);
-    const T free_mass = simd::where_greater(w, 0.0, at<T>(mass + i));
-    T twice_kinetic{};
+    T x1[3], v1[3];
     for (int c = 0; c < 3; ++c) {
-      T x1, v1;
-      update(at<T>(X[c] + i), at<T>(V[c] + i), at<T>(v1_and_f[c] + i) * w, x1, v1);
-      simd::store(X1[c] + i, x1);
-      simd::store(v1_and_f[c] + i, v1);
-      twice_kinetic += free_mass * (v1 * v1) + x1 * 0.0;
+      update(at<T>(X[c] + i), at<T>(V[c] + i), at<T>(v1_and_f[c] + i) * w, x1[c], v1[c]);
+      simd::store(X1[c] + i, x1[c]);
+      simd::store(v1_and_f[c] + i, v1[c]);
     }
-    return twice_kinetic;
+    // The terms of probe() (energy.cpp), in its order.
+    return simd::where_greater(w, 0.0, at<T>(mass + i)) * (v1[0] * v1[0] + v1[1] * v1[1] + v1[2] * v1[2]) +
+           (x1[0] + x1[1] + x1[2]) * 0.0;
   };
   f64x4 sum{};
   int i = begin;
