@@ -137,11 +137,13 @@ TEST(SpringKernel, CoincidentEndsGiveNoNaN) {
 
 // The force pass (blocks and their chunks, spans updated in place or kept for a later block,
 // neighbours as chains, partial vectors masked) against the plain sum of spring_force() over the springs, on a jelly (one block), a cloth
-// of several blocks (springs 1 to 2 x 48 particles apart) and a long rope (neighbours only).
+// of several blocks (springs 1 to 2 x 48 particles apart), a long rope (neighbours only) and a
+// tall narrow cloth (hundreds of row spans a block, each chunk's own listed in the plan).
 TEST(SpringKernel, AssembledForcesAreTheSumOfTheKernels) {
   const Scene scenes[] = {test::shipped("jelly"),
                           test::shipped("cloth", {"cloth.width=48", "cloth.height=48"}),
-                          test::shipped("rope", {"rope.nodes=3000"})};
+                          test::shipped("rope", {"rope.nodes=3000"}),
+                          test::shipped("cloth", {"cloth.width=7", "cloth.height=700"})};
   for (const Scene& scene : scenes) {
     const Model& m = scene.model;
     State s = scene.state;
@@ -171,6 +173,7 @@ TEST(SpringKernel, AssembledForcesAreTheSumOfTheKernels) {
     const Eigen::ArrayXd size = expected.rowwise().norm().array() + 1.0;
     EXPECT_LT((error / size).maxCoeff(), 1e-12) << m.particle_count() << " particles";
     EXPECT_GT(buffer.plan.own.size(), scene.model.particle_count() > 2000 ? 1u : 0u);
+    EXPECT_EQ(buffer.plan.chunk_first.back(), static_cast<int>(buffer.plan.chunk_own.size()));
   }
 }
 
