@@ -39,6 +39,10 @@ struct ForcePlan {
   // force_pass.hpp), which another thread waits for before taking their kept forces.
   std::vector<std::uint32_t> done;
   std::uint32_t passes = 0;
+  // Per thread: the blocks of its run not yet claimed for step 2, [front, back), with the pass
+  // they belong to (force_pass.hpp: the owner takes them from the front, a thread that has
+  // finished its own from the back).
+  std::vector<std::uint64_t> runs;
 };
 
 struct SpringForces {
