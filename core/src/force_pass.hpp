@@ -465,8 +465,9 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
       if (run.compare_exchange_weak(old, claimed, std::memory_order_relaxed)) return front ? f : b - 1;
     }
   };
-  const auto pass = [&] {
-    const int threads = omp_get_num_threads(), thread = omp_get_thread_num();
+  // (The team's size and this thread's number are passed in: alone, the caller may itself be a
+  // thread of an enclosing parallel region, whose numbers are not this pass's.)
+  const auto pass = [&](int threads, int thread) {
     const int first = blocks * thread / threads, last = blocks * (thread + 1) / threads;
     std::atomic_ref<std::uint64_t>(plan.runs[thread]).store(word(first, last),
                                                             std::memory_order_relaxed);
@@ -480,9 +481,9 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
   };
   if (parallel) {
 #pragma omp parallel
-    pass();
+    pass(omp_get_num_threads(), omp_get_thread_num());
   } else {
-    pass();
+    pass(1, 0);
   }
 }
 

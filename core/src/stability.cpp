@@ -126,7 +126,9 @@ Eigen::VectorXd top_eigenvector(const std::vector<double>& alpha, const std::vec
   for (int i = 0; i < k; ++i)
     scale = std::max(scale, std::abs(alpha[i]) + (i > 0 ? std::abs(beta[i - 1]) : 0.0) +
                                 (i + 1 < k ? std::abs(beta[i]) : 0.0));
-  const double sigma = lambda + 1e-10 * scale + std::numeric_limits<double>::min();
+  // T = 0 (no stiffness anywhere, e.g. coincident ends): every vector is an eigenvector.
+  if (!(scale > 0.0)) return Eigen::VectorXd::Unit(k, 0);
+  const double sigma = lambda + 1e-10 * scale;
   // sigma I - T = L D L^T, L unit lower bidiagonal with l[i] below the diagonal in row i.
   std::vector<double> d(k), l(k, 0.0);
   d[0] = sigma - alpha[0];
@@ -141,6 +143,7 @@ Eigen::VectorXd top_eigenvector(const std::vector<double>& alpha, const std::vec
     for (int i = 1; i < k; ++i) s[i] -= l[i] * s[i - 1];          // L y = s
     for (int i = 0; i < k; ++i) s[i] /= d[i];                      // D z = y
     for (int i = k - 2; i >= 0; --i) s[i] -= l[i + 1] * s[i + 1];  // L^T s = z
+    s /= s.cwiseAbs().maxCoeff();  // first to about 1: |s|^2 of a huge s would overflow
     s /= s.norm();
   }
   return s;

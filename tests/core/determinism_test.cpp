@@ -1,6 +1,9 @@
 // Determinism: the same scene, method and inputs give a bit-identical state, run after run and
 // whatever the number of threads.
 #include <gtest/gtest.h>
+#include <omp.h>
+
+#include <string>
 
 #include "springlab/forces.hpp"
 #include "support.hpp"
@@ -33,6 +36,27 @@ TEST(Determinism, ThreadCountDoesNotChangeABit) {
   }
   // More threads than blocks (and than cores): threads with one block, or none, waiting on others.
   EXPECT_EQ(run_hash(scene, Method::SymplecticEuler, 1, 40), run_hash(scene, Method::SymplecticEuler, 12, 40));
+}
+
+// Called from the threads of an enclosing parallel region (each with its own buffers, as
+// independent simulations would be), the force pass gives every thread the forces one call gives:
+// alone (a small cloth) or with a nested region of its own (a larger one).
+TEST(Determinism, ForcesInsideAnotherParallelRegionAreTheSame) {
+  for (int side : {20, 48}) {
+    const Scene scene = test::shipped("cloth", {"cloth.width=" + std::to_string(side), "cloth.height=" + std::to_string(side)});
+    Points expected;
+    SpringForces buffer;
+    evaluate_forces(scene.model, scene.state.x, scene.state.v, expected, buffer, ForceOutput::Force);
+    constexpr int kThreads = 2;
+    Points got[kThreads];
+#pragma omp parallel num_threads(kThreads)
+    {
+      SpringForces mine;
+      const int t = omp_get_thread_num();
+      evaluate_forces(scene.model, scene.state.x, scene.state.v, got[t], mine, ForceOutput::Force);
+    }
+    for (const Points& f : got) EXPECT_TRUE(f == expected) << side;
+  }
 }
 
 TEST(Determinism, HashSeesTheSmallestChange) {

@@ -173,7 +173,14 @@ TEST(SpringKernel, AssembledForcesAreTheSumOfTheKernels) {
     const Eigen::ArrayXd size = expected.rowwise().norm().array() + 1.0;
     EXPECT_LT((error / size).maxCoeff(), 1e-12) << m.particle_count() << " particles";
     EXPECT_GT(buffer.plan.own.size(), scene.model.particle_count() > 2000 ? 1u : 0u);
-    EXPECT_EQ(buffer.plan.chunk_first.back(), static_cast<int>(buffer.plan.chunk_own.size()));
+    // The chunks' lists hold every spring of their blocks' pieces, once.
+    long in_blocks = 0, in_chunks = 0;
+    for (const auto& pieces : buffer.plan.own)
+      for (const ForcePlan::Piece& piece : pieces) in_blocks += piece.hi - piece.lo;
+    for (const auto& pieces : buffer.plan.chunk_own)
+      for (const ForcePlan::Piece& piece : pieces) in_chunks += piece.hi - piece.lo;
+    EXPECT_EQ(in_chunks, in_blocks);
+    EXPECT_EQ(in_blocks, m.spring_count());
   }
 }
 
