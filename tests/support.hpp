@@ -47,6 +47,20 @@ inline Scene linear_oscillator(double ks = 100.0, double kd = 0.0) {
   return s;
 }
 
+// Two particles on top of each other (the loader refuses this; a simulation can come to it),
+// joined by a spring of rest length 1, k_s, k_d; the first one pinned if `pinned`.
+inline Scene coincident_pair(bool pinned, double ks, double kd) {
+  Scene s;
+  add_particle(s.model, 1.0, pinned);
+  add_particle(s.model, 1.0, false);
+  add_spring(s.model, 0, 1, 1.0, add_material(s.model, {ks, kd}));
+  finalize(s.model);
+  s.state.resize(2);
+  s.state.x.setZero();
+  s.state.v.setZero();
+  return s;
+}
+
 // Largest over the steps of the RMS over free particles of |x - x_exact| (NUMERICS.md).
 inline double error_against_exact(const Scene& scene, Method method, double h, double duration,
                                   double tolerance = 1e-4) {

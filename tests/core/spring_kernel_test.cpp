@@ -117,15 +117,9 @@ TEST(SpringKernel, CoincidentEndsGiveNoNaN) {
   EXPECT_TRUE(spring_jacobian(p, p, v, v, 100, 0, 0.0, false).dfdx.isApprox(100 * Matrix3d::Identity()));
 
   // In a simulation: two free particles on top of each other, joined by a spring.
-  Model m;
-  add_particle(m, 1.0, false);
-  add_particle(m, 1.0, false);
-  add_spring(m, 0, 1, 1.0, add_material(m, {100, 1}));
-  finalize(m);
-  State s;
-  s.resize(2);
-  s.x.setZero();
-  s.v.setZero();
+  const Scene pair = test::coincident_pair(false, 100, 1);
+  const Model& m = pair.model;
+  const State& s = pair.state;
   for (Method method : {Method::Euler, Method::RK4, Method::ImplicitEuler, Method::Verlet}) {
     SimulationSettings settings;
     settings.method = method;

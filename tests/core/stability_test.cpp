@@ -171,16 +171,8 @@ TEST(Stability, LanczosModeHasTheHighestModesDamping) {
 // No stiffness at all (a spring whose ends coincide has no direction, hence no force): the
 // estimate is w_max = 0 with a finite damping, not NaN.
 TEST(Stability, ASceneWithoutStiffnessHasAFiniteEstimate) {
-  Model m;
-  add_particle(m, 1.0, true);
-  add_particle(m, 1.0, false);
-  add_spring(m, 0, 1, 1.0, add_material(m, {100.0, 0.5}));
-  finalize(m);
-  State s;
-  s.resize(2);
-  s.x.setZero();
-  s.v.setZero();
-  const StabilityEstimate e = estimate_stability(m, s);
+  const Scene pair = test::coincident_pair(true, 100.0, 0.5);
+  const StabilityEstimate e = estimate_stability(pair.model, pair.state);
   EXPECT_EQ(e.w_max, 0.0);
   EXPECT_TRUE(std::isfinite(e.damping));
 }
