@@ -139,15 +139,13 @@ StepProbe probe(const Model& model, const State& state, int begin, int end) {
   const double* w = model.inv_mass.data();
   const double* x[3] = {state.x.col(0).data(), state.x.col(1).data(), state.x.col(2).data()};
   const double* v[3] = {state.v.col(0).data(), state.v.col(1).data(), state.v.col(2).data()};
-  // One sum: x * 0 is 0 for every finite x and NaN otherwise, so it adds nothing to the kinetic
-  // energy unless a position is not finite; a velocity that is not finite makes the sum so too
-  // (0 * inf is NaN: pinned ones count as well).
+  // One sum of probe_term() (energy.hpp): finiteness rides along with the kinetic energy.
   StepProbe p;
   p.kinetic = 0.5 * lane_sum(begin, end, [&]<typename T>(int i) {
                 using simd::at;
-                const T vx = at<T>(v[0] + i), vy = at<T>(v[1] + i), vz = at<T>(v[2] + i);
-                return simd::where_greater(at<T>(w + i), 0.0, at<T>(m + i)) * (vx * vx + vy * vy + vz * vz) +
-                       (at<T>(x[0] + i) + at<T>(x[1] + i) + at<T>(x[2] + i)) * 0.0;
+                const T vi[3] = {at<T>(v[0] + i), at<T>(v[1] + i), at<T>(v[2] + i)};
+                const T xi[3] = {at<T>(x[0] + i), at<T>(x[1] + i), at<T>(x[2] + i)};
+                return probe_term(at<T>(w + i), at<T>(m + i), vi, xi);
               });
   p.finite = std::isfinite(p.kinetic);
   return p;

@@ -89,6 +89,11 @@ Model oscillator(double w, double c, double verlet_damping) {
   return m;
 }
 
+// Gershgorin's radius of row i of the k x k symmetric tridiagonal T: |beta_(i-1)| + |beta_i|.
+double radius(const std::vector<double>& beta, int k, int i) {
+  return (i > 0 ? std::abs(beta[i - 1]) : 0.0) + (i + 1 < k ? std::abs(beta[i]) : 0.0);
+}
+
 // The largest eigenvalue of the k x k symmetric tridiagonal T (alpha on the diagonal, beta beside
 // it), at least `floor`, by bisection on Sturm counts: the pivots of T - x I = L D L^T,
 //   d_0 = alpha_0 - x,  d_i = alpha_i - x - beta_{i-1}^2 / d_{i-1},
@@ -100,7 +105,7 @@ double largest_eigenvalue(const std::vector<double>& alpha, const std::vector<do
   double lo = floor, hi = -std::numeric_limits<double>::infinity();
   for (int i = 0; i < k; ++i) {
     lo = std::max(lo, alpha[i]);  // lambda_max >= any diagonal entry
-    hi = std::max(hi, alpha[i] + (i > 0 ? std::abs(beta[i - 1]) : 0.0) + (i + 1 < k ? std::abs(beta[i]) : 0.0));
+    hi = std::max(hi, alpha[i] + radius(beta, k, i));
   }
   const auto all_below = [&](double x) {
     double d = alpha[0] - x;
@@ -124,8 +129,7 @@ Eigen::VectorXd top_eigenvector(const std::vector<double>& alpha, const std::vec
                                 double lambda) {
   double scale = 0.0;  // |T| (a bound)
   for (int i = 0; i < k; ++i)
-    scale = std::max(scale, std::abs(alpha[i]) + (i > 0 ? std::abs(beta[i - 1]) : 0.0) +
-                                (i + 1 < k ? std::abs(beta[i]) : 0.0));
+    scale = std::max(scale, std::abs(alpha[i]) + radius(beta, k, i));
   // T = 0 (no stiffness anywhere, e.g. coincident ends): every vector is an eigenvector.
   if (!(scale > 0.0)) return Eigen::VectorXd::Unit(k, 0);
   const double sigma = lambda + 1e-10 * scale;

@@ -7,6 +7,7 @@
 
 #include "springlab/fields.hpp"
 #include "springlab/model.hpp"
+#include "springlab/simd.hpp"
 #include "springlab/state.hpp"
 
 namespace springlab {
@@ -35,6 +36,16 @@ struct StepProbe {
 StepProbe probe(const Model& model, const State& state);
 // The same over particles [begin, end): a step that has them in cache checks them there.
 StepProbe probe(const Model& model, const State& state, int begin, int end);
+
+// One particle's term of the probe (T = double), or four's (T = simd::f64x4): twice its kinetic
+// energy if free, m |v|^2, plus (x + y + z) * 0, which adds nothing unless a position is not
+// finite, whose NaN then makes the sum so (a velocity that is not finite does so too: 0 * inf is
+// NaN, pinned ones count as well). probe() and the explicit steps' own check share it.
+template <typename T>
+T probe_term(T inv_mass, T mass, const T v[3], const T x[3]) {
+  return simd::where_greater(inv_mass, 0.0, mass) * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) +
+         (x[0] + x[1] + x[2]) * 0.0;
+}
 
 // Power (W) taken out by spring damping, sum k_d ((v_b - v_a) . u)^2, and by drag,
 // sum k_drag v . (v - wind) (>= 0 in still air; a wind can put energy in). Integrated over time it is the energy the scene loses physically, as

@@ -17,9 +17,8 @@ namespace springlab::steps {
 namespace detail {
 
 // Updates particles [begin, end) from the forces in v1_and_f (overwritten with the new
-// velocities) and returns their check: finite, and twice the kinetic energy of the free ones,
-// sum m |v1|^2 (x1 * 0 adds nothing unless a position is not finite, whose NaN then makes the
-// sum so), summed four particles at a time in a fixed order.
+// velocities) and returns their check, the sum of probe_term() (energy.hpp) over them: finite,
+// and twice the kinetic energy of the free ones, summed four particles at a time in a fixed order.
 template <typename Update>
 StepProbe update_block(const Update& update, const Model& model, const State& in, State& out,
                        double* const v1_and_f[3], int begin, int end) {
@@ -38,9 +37,7 @@ StepProbe update_block(const Update& update, const Model& model, const State& in
       simd::store(X1[c] + i, x1[c]);
       simd::store(v1_and_f[c] + i, v1[c]);
     }
-    // The terms of probe() (energy.cpp), in its order.
-    return simd::where_greater(w, 0.0, at<T>(mass + i)) * (v1[0] * v1[0] + v1[1] * v1[1] + v1[2] * v1[2]) +
-           (x1[0] + x1[1] + x1[2]) * 0.0;
+    return probe_term(w, at<T>(mass + i), v1, x1);
   };
   f64x4 sum{};
   int i = begin;
