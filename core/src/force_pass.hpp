@@ -477,7 +477,10 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
     }
     for (int blk; (blk = claim(thread, true)) >= 0;) sweep(blk);
     for (int other = 1; other < threads; ++other)
-      for (int blk; (blk = claim((thread + other) % threads, false)) >= 0;) sweep(blk);
+      for (int blk; (blk = claim((thread + other) % threads, false)) >= 0;) {
+        std::atomic_ref<std::uint64_t>(plan.stolen).fetch_add(1, std::memory_order_relaxed);
+        sweep(blk);
+      }
   };
   if (parallel) {
 #pragma omp parallel

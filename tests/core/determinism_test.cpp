@@ -59,6 +59,26 @@ TEST(Determinism, ForcesInsideAnotherParallelRegionAreTheSame) {
   }
 }
 
+// A block stolen from another thread's run (swept by a thread that did not start it) gives the
+// forces its owner would have: twelve threads share a cloth's eight blocks, so the threads left
+// without a run of their own take blocks from the others' runs, pass after pass.
+TEST(Determinism, StolenBlocksGiveTheSameForces) {
+  const Scene scene = test::shipped("cloth", {"cloth.width=48", "cloth.height=48"});
+  Points expected, got;
+  SpringForces buffer;
+  set_thread_count(1);
+  evaluate_forces(scene.model, scene.state.x, scene.state.v, expected, buffer);
+  set_thread_count(12);
+  int differing = 0, passes = 0;
+  for (; passes < 2000 && (passes < 50 || buffer.plan.stolen == 0); ++passes) {
+    evaluate_forces(scene.model, scene.state.x, scene.state.v, got, buffer);
+    differing += !(got == expected);
+  }
+  set_thread_count(0);
+  EXPECT_GT(buffer.plan.stolen, 0u) << "no block was stolen in " << passes << " passes";
+  EXPECT_EQ(differing, 0) << "of " << passes << " passes, " << buffer.plan.stolen << " blocks stolen";
+}
+
 TEST(Determinism, HashSeesTheSmallestChange) {
   const Scene scene = test::shipped("spring");
   State s = scene.state;

@@ -43,6 +43,9 @@ struct ForcePlan {
   // they belong to (force_pass.hpp: the owner takes them from the front, a thread that has
   // finished its own from the back).
   std::vector<std::uint64_t> runs;
+  // Blocks swept by a thread other than their run's owner, over all passes: a test checks that
+  // stealing happens and changes no bit.
+  std::uint64_t stolen = 0;
 };
 
 struct SpringForces {
