@@ -2,7 +2,8 @@
 // warm-up; one key=value a line (particles, springs, steps, seconds, steps_per_s,
 // ns_per_spring_step, peak_rss_mb, and for implicit methods solver_iterations_per_step and
 // unconverged_solves), for scripts and the README's figures. With --repeat N the steps are timed
-// N times over (the simulation going on): the figures are the fastest run's, and
+// N times over (the simulation going on: the same work each time for the explicit methods; an
+// implicit method's solves get cheaper as a scene settles): the figures are the fastest run's, and
 // ns_per_spring_step_median is the middle one, since on a machine whose speed wanders (a shared
 // or throttled core) one run says little.
 #include <sys/resource.h>
@@ -79,7 +80,9 @@ Command add_bench_command(CLI::App& app) {
   CLI::App* c = app.add_subcommand("bench", "step throughput of a scene and method (key=value lines)");
   c->add_option("scene", o->scene, "scene name or JSON file")->required();
   add_sim_options(*c, o->sim);
-  c->add_option("--repeat", o->repeat, "time the steps this many times over; the figures are the fastest run's")
+  c->add_option("--repeat", o->repeat,
+                "time the steps this many times over (the simulation going on: for the explicit methods the "
+                "same work each time); the figures are the fastest run's")
       ->transform(whole_number(1, 1000));
   return [o] { return bench(*o); };
 }
