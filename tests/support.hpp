@@ -1,6 +1,7 @@
 // Helpers shared by the tests: loading shipped scenes, running a simulation, small models.
 #pragma once
 
+#include <random>
 #include <string>
 
 #include "springlab/exact.hpp"
@@ -24,6 +25,19 @@ inline Simulation simulation(const Scene& scene, Method method, double dt, int s
   s.substeps = substeps;
   s.step.tolerance = scene.tolerance;
   return Simulation(scene.model, scene.state, s);
+}
+
+// A state in motion: every position moved and every velocity set at random (normal, standard
+// deviations dx and dv), so that every spring is stretched and moving and the drag works; the same
+// numbers each run.
+inline void jitter(State& s, double dx, double dv, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> n(0.0, 1.0);
+  for (int i = 0; i < s.particle_count(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      s.x(i, c) += dx * n(rng);
+      s.v(i, c) = dv * n(rng);
+    }
 }
 
 // The reference oscillator of NUMERICS.md with optional damping: anchor at the origin, unit mass

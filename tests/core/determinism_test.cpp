@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
-#include <random>
 #include <string>
 
 #include "springlab/forces.hpp"
@@ -68,13 +67,7 @@ TEST(Determinism, ForcesInsideAnotherParallelRegionAreTheSame) {
 TEST(Determinism, StolenBlocksGiveTheSameForces) {
   const Scene scene = test::shipped("cloth", {"cloth.width=48", "cloth.height=48"});
   State moving = scene.state;
-  std::mt19937 rng(5);
-  std::normal_distribution<double> jitter(0.0, 0.02);
-  for (int i = 0; i < moving.particle_count(); ++i)
-    for (int c = 0; c < 3; ++c) {
-      moving.x(i, c) += jitter(rng);
-      moving.v(i, c) = 10.0 * jitter(rng);
-    }
+  test::jitter(moving, 0.02, 0.2, 5);
   // The bits of forces (state_hash tells -0 from +0, and any last bit).
   const auto bits = [&](const Points& f) {
     State s = moving;

@@ -141,13 +141,7 @@ TEST(SpringKernel, AssembledForcesAreTheSumOfTheKernels) {
   for (const Scene& scene : scenes) {
     const Model& m = scene.model;
     State s = scene.state;
-    std::mt19937 rng(3);
-    std::normal_distribution<double> n(0.0, 0.05);
-    for (int i = 0; i < s.particle_count(); ++i)
-      for (int c = 0; c < 3; ++c) {
-        s.x(i, c) += n(rng);
-        s.v(i, c) = n(rng);
-      }
+    test::jitter(s, 0.05, 0.05, 3);
     Points f;
     SpringForces buffer;
     evaluate_forces(m, s.x, s.v, f, buffer, ForceOutput::Force);

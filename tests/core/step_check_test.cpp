@@ -5,7 +5,6 @@
 // thread count.
 #include <gtest/gtest.h>
 
-#include <random>
 
 #include "springlab/energy.hpp"
 #include "springlab/forces.hpp"
@@ -19,13 +18,7 @@ namespace {
 // moving, the drag working).
 Scene jittered(const std::string& name, const std::vector<std::string>& overrides) {
   Scene scene = test::shipped(name, overrides);
-  std::mt19937 rng(11);
-  std::normal_distribution<double> n(0.0, 0.02);
-  for (int i = 0; i < scene.state.particle_count(); ++i)
-    for (int c = 0; c < 3; ++c) {
-      scene.state.x(i, c) += n(rng);
-      scene.state.v(i, c) = 10.0 * n(rng);
-    }
+  test::jitter(scene.state, 0.02, 0.2, 11);
   return scene;
 }
 
