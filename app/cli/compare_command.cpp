@@ -65,25 +65,27 @@ void write_csvs(const std::filesystem::path& dir, const SweepResult& r) {
   AtomicFile results(dir / "results.csv", "results");
   std::fprintf(results.file(),
                "method,step,tolerance,mean_step,error,seconds,force_evals,linear_solves,solver_iterations,"
-               "accepted,rejected,diverged,diverged_at\n");
+               "accepted,rejected,diverged,diverged_at,energy_created,unstable\n");
   for (const SweepRun& run : r.runs)
-    std::fprintf(results.file(), "%s,%s,%s,%s,%s,%s,%lld,%lld,%lld,%lld,%lld,%d,%s\n", method_info(run.method).name,
+    std::fprintf(results.file(), "%s,%s,%s,%s,%s,%s,%lld,%lld,%lld,%lld,%lld,%d,%s,%s,%d\n", method_info(run.method).name,
                  number(run.h).c_str(), std::isnan(run.tolerance) ? "" : number(run.tolerance).c_str(),
                  number(run.mean_step).c_str(), run.diverged ? "inf" : number(run.error).c_str(),
                  number(run.seconds).c_str(), static_cast<long long>(run.counters.force_evals),
                  static_cast<long long>(run.counters.linear_solves), static_cast<long long>(run.counters.solver_iterations),
                  static_cast<long long>(run.counters.accepted), static_cast<long long>(run.counters.rejected),
-                 run.diverged ? 1 : 0, run.diverged ? number(run.diverged_at).c_str() : "");
+                 run.diverged ? 1 : 0, run.diverged ? number(run.diverged_at).c_str() : "",
+                 number(run.created).c_str(), run.unstable ? 1 : 0);
   results.commit();
   AtomicFile summary(dir / "summary.csv", "summary");
   std::fprintf(summary.file(), "method,order_table,order_measured,fitted_points,stable_step_measured,"
-                               "stable_step_theoretical,ratio\n");
+                               "measured_resolution,stable_step_theoretical,theory_exact,ratio\n");
   for (const MethodSummary& m : r.methods) {
     const bool finite = std::isfinite(m.measured_stable_h) && std::isfinite(m.theoretical_stable_h) &&
                         m.theoretical_stable_h > 0;
-    std::fprintf(summary.file(), "%s,%d,%s,%d,%s,%s,%s\n", method_info(m.method).name, method_info(m.method).order,
+    std::fprintf(summary.file(), "%s,%d,%s,%d,%s,%s,%s,%d,%s\n", method_info(m.method).name, method_info(m.method).order,
                  std::isnan(m.order) ? "" : number(m.order).c_str(), m.fitted_points,
-                 number(m.measured_stable_h).c_str(), number(m.theoretical_stable_h).c_str(),
+                 number(m.measured_stable_h).c_str(), number(m.measured_resolution).c_str(),
+                 number(m.theoretical_stable_h).c_str(), m.theory_exact ? 1 : 0,
                  finite ? number(m.measured_stable_h / m.theoretical_stable_h).c_str() : "");
   }
   summary.commit();
@@ -161,11 +163,12 @@ int compare(const CompareOptions& o) {
   if (!o.no_charts) write_charts(o.out, r, p.scene.name, o.software);
 
   std::printf("scene      %s: %d particles, %d springs; w_max = %.4g rad/s\n", p.scene.name.c_str(),
-              p.scene.model.particle_count(), p.scene.model.spring_count(), r.stability.w_max);
+              p.scene.model.particle_count(), p.scene.model.spring_count(), r.w_max);
   std::printf("steps      %zu from %.4g s to %.4g s; %d samples over %.4g s; reference: %s\n",
               step_divisors(s.h_min, s.h_max, s.points).size(), s.h_max / step_divisors(s.h_min, s.h_max, s.points).back(),
               s.h_max, r.samples, r.samples * r.sample_interval, r.reference.c_str());
-  std::printf("\n%-18s %-16s %-14s %-14s %s\n", "method", "order (table)", "stable step", "theory", "measured/theory");
+  std::printf("\n%-18s %-16s %-22s %-16s %s\n", "method", "order (table)", "stable step, by runs", "analysis",
+              "runs/analysis");
   for (const MethodSummary& m : r.methods) {
     char order[32];
     if (std::isnan(m.order)) std::snprintf(order, sizeof order, "n/a (%d)", method_info(m.method).order);
@@ -174,8 +177,15 @@ int compare(const CompareOptions& o) {
                         m.theoretical_stable_h > 0;
     char ratio[16] = "";
     if (finite) std::snprintf(ratio, sizeof ratio, "%.3f", m.measured_stable_h / m.theoretical_stable_h);
-    std::printf("%-18s %-16s %-14s %-14s %s\n", method_info(m.method).name, order,
-                step_text(m.measured_stable_h).c_str(), step_text(m.theoretical_stable_h).c_str(), ratio);
+    std::string measured = step_text(m.measured_stable_h), theory = step_text(m.theoretical_stable_h);
+    if (finite && m.measured_resolution > 0.0) {
+      char within[32];
+      std::snprintf(within, sizeof within, " (+%.1f %%)", 100.0 * m.measured_resolution);
+      measured += within;
+    }
+    if (!m.theory_exact && finite) theory = ">= " + theory;
+    std::printf("%-18s %-16s %-22s %-16s %s\n", method_info(m.method).name, order, measured.c_str(), theory.c_str(),
+                ratio);
   }
   std::printf("\nwritten    %s/results.csv, summary.csv%s\n", o.out.c_str(),
               o.no_charts ? "" : ", work-precision, convergence, stability, energy-drift (.png, .svg)");

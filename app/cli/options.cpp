@@ -61,15 +61,16 @@ void add_sim_options(CLI::App& c, SimOptions& o, bool with_length) {
 }
 
 void warn_if_unstable(Simulation& sim, const std::string& scene) {
-  const double limit = sim.stable_step();
-  if (!std::isfinite(limit) || limit <= 0.0 || sim.h() <= limit) return;
+  const StabilityLimit& limit = sim.stability_limit();
+  if (!std::isfinite(limit.h) || limit.h <= 0.0 || sim.h() <= limit.h) return;
+  const int substeps = static_cast<int>(std::ceil(sim.h() / (0.9 * limit.h))) * sim.settings().substeps;
   std::fprintf(stderr,
-               "springlab: warning: %s: h = %.4g s is past %s's estimated stability limit (%.4g s, "
-               "h w_max = %.3g); it will most likely diverge: use --substeps %d or --dt %.3g\n",
-               scene.c_str(), sim.h(), method_info(sim.settings().method).name, limit,
-               sim.h() * sim.stability().w_max,
-               static_cast<int>(std::ceil(sim.h() / (0.9 * limit))) * sim.settings().substeps,
-               0.9 * limit * sim.settings().substeps);
+               "springlab: warning: %s: h = %.4g s is past %s's %s (%.4g s, h w_max = %.3g); %s: use "
+               "--substeps %d or --dt %.3g\n",
+               scene.c_str(), sim.h(), method_info(sim.settings().method).name,
+               limit.exact ? "stability limit" : "proven stable step (the exact limit may be higher)", limit.h,
+               sim.h() * sim.stability().w_max(), limit.exact ? "it will most likely diverge" : "it may diverge",
+               substeps, 0.9 * limit.h * sim.settings().substeps);
 }
 
 void check_option(const char* name, double value, double lo, double hi, bool lo_open,

@@ -92,8 +92,8 @@ int run(const RunOptions& o) {
   // The scene's model and state move into the simulation: a big scene is not held twice.
   Simulation sim(std::move(p.scene.model), std::move(p.scene.state), p.settings);
   const Energy initial = sim.energy();
-  const StabilityEstimate stability = sim.stability();
-  const double stable_h = sim.stable_step();
+  const StabilityAnalysis& stability = sim.stability();
+  const StabilityLimit limit = sim.stability_limit();
   warn_if_unstable(sim, p.scene.name);
 
   if (csv) {
@@ -127,10 +127,19 @@ int run(const RunOptions& o) {
   std::printf("energy     kinetic %s J, potential %s J, total %s J (initially %s J)\n",
               format(e.kinetic).c_str(), format(e.potential()).c_str(), format(e.total()).c_str(),
               format(initial.total()).c_str());
-  std::printf("stability  w_max = %s rad/s (Gershgorin bound %s), h w_max = %s; %s: %s\n",
-              format(stability.w_max).c_str(), format(stability.w_bound).c_str(),
-              format(sim.h() * stability.w_max).c_str(), m.name,
-              describe_limit(p.settings.method, stable_h).c_str());
+  if (stability.oscillates()) {
+    std::printf("stability  w_max = %s rad/s (Gershgorin bound %s), h w_max = %s; %s: %s", format(stability.w_max()).c_str(),
+                format(stability.w_bound()).c_str(), format(sim.h() * stability.w_max()).c_str(), m.name,
+                describe(limit).c_str());
+    if (limit.mode && std::isfinite(limit.h))
+      std::printf(", set by a mode of %s rad/s with damping ratio %s", format(limit.mode->w).c_str(),
+                  format(limit.mode->damping_ratio()).c_str());
+    std::printf(" (at the scene's equilibrium, %s, %s s)\n", stability.dense() ? "every eigenvalue" : "Lanczos",
+                format(stability.seconds()).c_str());
+  } else {
+    std::printf("stability  no oscillating modes (%s); %s: %s\n", stability.no_modes_reason().c_str(), m.name,
+                describe(limit).c_str());
+  }
   std::printf("cost       %lld force evaluations", static_cast<long long>(c.force_evals));
   if (c.linear_solves)
     std::printf(", %lld linear solves (%lld CG iterations)", static_cast<long long>(c.linear_solves),

@@ -43,28 +43,29 @@ void gauge(app::Lane& lane, float width, bool explain) {
   Simulation& sim = lane.sim;
   const MethodInfo& m = method_info(sim.settings().method);
   const double h = sim.h();
-  const StabilityEstimate& e = sim.stability();
-  const double limit = sim.stable_step();
+  const StabilityAnalysis& analysis = sim.stability();
+  const StabilityLimit& limit = analysis.limit(m.id);
   double fraction;
   ImVec4 color;
   std::string verdict;
-  if (std::isnan(limit)) {
+  if (std::isnan(limit.h)) {
     fraction = 0.5;
     color = kNeutral;
     verdict = "adaptive";
-  } else if (std::isinf(limit)) {
-    fraction = std::min(1.0, h * e.w_max / 10.0) * 0.6;
+  } else if (std::isinf(limit.h)) {
+    fraction = std::min(1.0, h * analysis.w_max() / 10.0) * 0.6;
     color = kSafe;
     verdict = "always stable";
-  } else if (limit == 0.0) {
+  } else if (limit.h == 0.0) {
     fraction = 1.0;
     color = kBeyond;
     verdict = "never stable";
   } else {
-    const double ratio = h / limit;
+    const double ratio = h / limit.h;
     fraction = std::min(1.0, ratio / 1.5);
-    color = ratio > 1.0 ? kBeyond : ratio > 0.8 ? kNear : kSafe;
-    verdict = fmt(ratio > 1.0 ? "beyond: %.2fx" : ratio > 0.8 ? "near: %.2fx" : "safe: %.2fx", ratio);
+    color = ratio > 1.0 ? (limit.exact ? kBeyond : kNear) : ratio > 0.8 ? kNear : kSafe;
+    verdict = fmt(ratio > 1.0 ? (limit.exact ? "beyond: %.2fx" : "past proven: %.2fx") : ratio > 0.8 ? "near: %.2fx" : "safe: %.2fx",
+                  ratio);
   }
   if (sim.diverged()) {
     color = kBeyond;
@@ -82,7 +83,7 @@ void gauge(app::Lane& lane, float width, bool explain) {
   ImDrawList* dl = ImGui::GetWindowDrawList();
   dl->AddRectFilled(q, ImVec2(q.x + bar_w, q.y + bar_h), ImGui::GetColorU32(ImGuiCol_FrameBg), 3.0f);
   dl->AddRectFilled(q, ImVec2(q.x + bar_w * static_cast<float>(fraction), q.y + bar_h), ImGui::GetColorU32(color), 3.0f);
-  if (std::isfinite(limit) && limit > 0.0) {
+  if (std::isfinite(limit.h) && limit.h > 0.0) {
     const float x = q.x + bar_w / 1.5f;
     dl->AddLine(ImVec2(x, q.y - 3), ImVec2(x, q.y + bar_h + 3), IM_COL32_WHITE, 2.0f);
   }
@@ -90,11 +91,13 @@ void gauge(app::Lane& lane, float width, bool explain) {
   ImGui::SameLine();
   ImGui::TextColored(color, "%s", verdict.c_str());
   if (explain) {
-    if (std::isfinite(limit) && limit > 0.0)
-      ImGui::TextWrapped("h w_max = %.3g, limit %.3g (h = %.3g s)", h * e.w_max, limit * e.w_max, limit);
-    else
-      ImGui::Text("h w_max = %.3g", h * e.w_max);
     ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + width);
+    if (std::isfinite(limit.h) && limit.h > 0.0)
+      ImGui::TextWrapped("h w_max = %.3g; %s", h * analysis.w_max(), describe(limit).c_str());
+    else
+      ImGui::Text("h w_max = %.3g", h * analysis.w_max());
+    if (limit.mode && std::isfinite(limit.h))
+      ImGui::TextDisabled("limiting mode: %.4g rad/s, damping ratio %.3g", limit.mode->w, limit.mode->damping_ratio());
     ImGui::TextDisabled("%s", m.stability);
     ImGui::PopTextWrapPos();
   }
@@ -310,8 +313,8 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
       }
       // Stability: the gauge of each lane, right under the method it judges.
       const float inner_w = left_w - 2 * ImGui::GetStyle().WindowPadding.x - ImGui::GetStyle().ScrollbarSize;
-      const StabilityEstimate& e = session.lanes()[0].sim.stability();
-      ImGui::TextDisabled("w_max = %.4g rad/s, h = %.3g s", e.w_max, session.lanes()[0].sim.h());
+      const StabilityAnalysis& analysis = session.lanes()[0].sim.stability();
+      ImGui::TextDisabled("w_max = %.4g rad/s, h = %.3g s", analysis.w_max(), session.lanes()[0].sim.h());
       for (app::Lane& lane : session.lanes()) gauge(lane, inner_w, !session.comparing());
       ImGui::Separator();
 

@@ -34,6 +34,7 @@ ContactResult resolve_contacts(const Model& model, State& state) {
       if (depth >= 0.0) continue;
       Vec3 v = state.v.row(i).transpose();
       x -= depth * plane.normal;
+      result.potential_gained += depth * model.mass[i] * model.gravity.dot(plane.normal);
       result.kinetic_lost += respond(v, plane.normal, plane.friction, plane.restitution, model.mass[i]);
       state.x.row(i) = x.transpose();
       state.v.row(i) = v.transpose();
@@ -48,7 +49,9 @@ ContactResult resolve_contacts(const Model& model, State& state) {
       // At the very centre any direction is as good: push out along +y.
       const Vec3 n = dist > 0.0 ? Vec3(r / dist) : Vec3::UnitY();
       Vec3 v = state.v.row(i).transpose();
-      x = sphere.center + reach * n;
+      const Vec3 moved = sphere.center + reach * n - x;
+      result.potential_gained -= model.mass[i] * model.gravity.dot(moved);
+      x += moved;
       result.kinetic_lost += respond(v, n, sphere.friction, sphere.restitution, model.mass[i]);
       state.x.row(i) = x.transpose();
       state.v.row(i) = v.transpose();

@@ -203,6 +203,30 @@ double dissipation_power(const Model& model, const State& state) {
   return power;
 }
 
+double field_power(const Model& model, const State& state) {
+  double power = 0.0;
+  for (const Attractor& f : model.attractors) {
+    if (f.swirl == 0.0) continue;
+    Attractor swirl = f;
+    swirl.strength = 0.0;  // the pull is conservative: only the swirl's work
+    for (int i = 0; i < model.particle_count(); ++i)
+      if (!model.pinned(i))
+        power += model.mass[i] * field_acceleration(swirl, state.x.row(i).transpose()).dot(state.v.row(i).transpose());
+  }
+  return power;
+}
+
+Vec3 held_force(const Model& model, const State& state, int particle, const std::vector<int>& springs) {
+  Vec3 f = Vec3::Zero();
+  for (int s : springs) {
+    const int a = model.spring_a[s], b = model.spring_b[s];
+    const Vec3 fa = spring_force(state.x.row(a).transpose(), state.x.row(b).transpose(), state.v.row(a).transpose(),
+                                 state.v.row(b).transpose(), model.ks(s), model.kd(s), model.rest_length[s]);
+    f += a == particle ? fa : Vec3(-fa);
+  }
+  return f;
+}
+
 double energy_scale(const Model& model, const State& initial) {
   double floor = 0.0;
   for (int s = 0; s < model.spring_count(); ++s)

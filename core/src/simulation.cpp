@@ -1,10 +1,12 @@
 #include "springlab/simulation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <utility>
 
 #include "springlab/colliders.hpp"
+#include "springlab/spring_kernel.hpp"
 
 namespace springlab {
 
@@ -37,24 +39,18 @@ std::string format(double value) {
 }
 }  // namespace
 
-std::string describe_limit(Method method, double stable_h) {
-  if (std::isnan(stable_h)) return "the method chooses its own step sizes";
-  if (std::isinf(stable_h)) return "stable at any step";
-  if (stable_h == 0.0)
-    return std::string(method == Method::Euler || method == Method::ModifiedEuler ||
-                               method == Method::Midpoint
-                           ? "unstable at any step (not enough damping)"
-                           : "unstable at any step");
-  return "stable up to h = " + format(stable_h) + " s";
-}
+std::string describe_limit(const StabilityLimit& limit) { return describe(limit); }
 
 std::string Divergence::message() const {
   std::ostringstream s;
-  s << "diverged during step " << step << " (last good state at t = " << format(t)
-    << " s): " << reason << ". Method " << method_info(method).name << ", h = " << format(h)
-    << " s, h w_max = " << format(h * w_max) << " (w_max = " << format(w_max)
-    << " rad/s); estimated limit: " << describe_limit(method, stable_h)
-    << ". Try a smaller --dt, more --substeps, or a more stable --method (implicit-euler).";
+  s << (unstable ? "went numerically unstable during step " : "diverged during step ") << step
+    << " (last good state at t = " << format(t) << " s): " << reason << ". Method "
+    << method_info(method).name << ", h = " << format(h) << " s, h w_max = " << format(h * w_max)
+    << " (w_max = " << format(w_max) << " rad/s); limit: " << describe(limit);
+  if (limit.mode && std::isfinite(limit.h) && limit.h > 0.0)
+    s << ", set by a mode of " << format(limit.mode->w) << " rad/s with damping ratio "
+      << format(limit.mode->damping_ratio());
+  s << ". Try a smaller --dt, more --substeps, or a more stable --method (implicit-euler).";
   return s.str();
 }
 
@@ -84,15 +80,89 @@ void Simulation::reset() {
   dissipated_ = 0.0;
   divergence_.reset();
   stability_.reset();
-  stable_h_.reset();
+  ++model_version_;
   grabbed_ = -1;
+  grabbed_springs_.clear();
   energy_scale_ = springlab::energy_scale(model_, current_);
+  has_stiffness_ = false;
+  for (const SpringMaterial& m : model_.materials) has_stiffness_ |= m.ks > 0.0;
+  baseline_ = energy().total();
+  external_ = created_ = 0.0;
+  audit_.reset();
+}
+
+// The audit looks for the instability of oscillating modes: scenes without springs have none
+// (the energy a method gains in free flight and bounces is first-order error, not instability),
+// and the adaptive methods control their own steps.
+bool Simulation::audited() const {
+  return settings_.audit_fraction > 0.0 && !method_info(settings_.method).adaptive && has_stiffness_;
+}
+
+template <typename Change>
+void Simulation::from_outside(const Change& change) {
+  const double before = energy().total();
+  change();
+  const double work = energy().total() - before;
+  if (std::isfinite(work)) {
+    baseline_ += work;
+    external_ += work;
+  }
+}
+
+// The symplectic methods keep a modified energy, not the energy: at the states they step
+// through, the energy itself is biased by up to tenfold near their limit (all of it coming back).
+// To first order in h (exactly for a linear system), with f the conservative forces,
+//   symplectic Euler (v first):  E + (h / 2) v . f
+//   Verlet (its velocities are velocity Verlet's):  E - (h^2 / 8) f . M^-1 f
+// The audit follows that one for them. Zero for the other methods.
+double Simulation::energy_correction() {
+  const Method m = settings_.method;
+  if (!audited() || (m != Method::SymplecticEuler && m != Method::Verlet)) return 0.0;
+  const int n = model_.particle_count();
+  at_rest_.setZero(n, 3);
+  evaluate_forces(model_, current_.x, at_rest_, forces_, ws_.spring_forces, ForceOutput::Force);
+  const double h = this->h();
+  double sum = 0.0;
+  for (int i = 0; i < n; ++i) {
+    if (model_.pinned(i)) continue;
+    const Eigen::RowVector3d f = forces_.row(i);
+    sum += m == Method::SymplecticEuler ? 0.5 * h * f.dot(current_.v.row(i))
+                                        : -0.125 * h * h * f.squaredNorm() * model_.inv_mass[i];
+  }
+  return sum;
+}
+
+void Simulation::audit(double total) {
+  created_ = total + dissipated_ - baseline_;
+  const double net = total - baseline_;  // E - E0 - W
+  if (!audited()) return;
+  const std::optional<EnergyAudit::Stretch> stretch = audit_.record(current_.t, steps_, created_, net);
+  const double threshold = settings_.audit_fraction * energy_scale_;
+  if (!stretch || !(stretch->rise > threshold)) return;
+  // Suspicious: more than what a stable method at this step could create (the analysis says how
+  // far from its limit the step is)?
+  const StabilityLimit& limit = stability_limit();
+  const double allowed = allowed_creation_ratio(h(), limit.h, limit.exact) * std::max(stretch->fall, 0.0);
+  if (!(stretch->rise > threshold + allowed)) return;
+  std::ostringstream reason;
+  reason << "the method created " << format(stretch->rise) << " J from nothing since step " << stretch->step
+         << " (t = " << format(stretch->t) << " s), more than " << settings_.audit_fraction
+         << " of the scene's energy scale (" << format(energy_scale_) << " J), while damping, drag and contacts "
+         << "brought the energy down by " << format(std::max(stretch->fall, 0.0))
+         << " J: more than a stable method at this step creates";
+  diverge(reason.str());
+  divergence_->unstable = true;
+  divergence_->created = stretch->rise;
+  divergence_->started_step = stretch->step;
+  divergence_->started_t = stretch->t;
 }
 
 bool Simulation::step() {
   if (divergence_) return false;
   const double h = this->h();
-  ws_.measure_power = settings_.track_dissipation;
+  const bool audit = audited();
+  const bool dissipation = settings_.track_dissipation || audit;  // the audit's bookkeeping
+  ws_.measure_power = dissipation;
   for (int k = 0; k < settings_.substeps; ++k) {
     try {
       springlab::step(settings_.method, model_, current_, next_, h, settings_.step, ws_);
@@ -123,20 +193,39 @@ bool Simulation::step() {
     next_.t = t_since_ + static_cast<double>(++substeps_done_) * h;
     const ContactResult contact = resolve_contacts(model_, next_);
     if (contact.contacts > 0) ws_.invalidate();
-    // The power at the step's start (the explicit methods measured it in their force pass), over h.
-    if (settings_.track_dissipation)
+    if (dissipation) {
+      // The power at the step's start (the explicit methods measured it in their force pass),
+      // over h; what contacts took; what a swirl put in. A held particle's prescribed motion
+      // does work on the rest through its springs: -f . v, f their force on it.
       dissipated_ += h * (ws_.input_power ? *ws_.input_power : dissipation_power(model_, current_)) +
-                     contact.kinetic_lost;
+                     contact.kinetic_lost - contact.potential_gained - h * field_power(model_, current_);
+      if (grabbed_ >= 0) {
+        const double work = -h * held_force(model_, current_, grabbed_, grabbed_springs_).dot(
+                                     current_.v.row(grabbed_).transpose());
+        baseline_ += work;
+        external_ += work;
+      }
+    }
     std::swap(current_, next_);
-    if (!emission_.empty() && emission_.update(model_, current_)) {
-      ws_.invalidate();
-      // A held particle whose time is up is let go of: it is no longer there.
-      if (grabbed_ >= 0 && !model_.emitters.empty() && !emission_.alive(grabbed_) && emission_.owned(grabbed_))
-        grabbed_ = -1;
+    if (!emission_.empty()) {
+      bool changed = false;
+      const auto births_and_deaths = [&] { changed = emission_.update(model_, current_); };
+      if (dissipation) from_outside(births_and_deaths);
+      else births_and_deaths();
+      if (changed) {
+        ws_.invalidate();
+        // A held particle whose time is up is let go of: it is no longer there.
+        if (grabbed_ >= 0 && !model_.emitters.empty() && !emission_.alive(grabbed_) && emission_.owned(grabbed_))
+          grabbed_ = -1;
+      }
     }
   }
   ++steps_;
-  if (settings_.energy_check_interval > 0 && steps_ % settings_.energy_check_interval == 0) {
+  // A small scene is checked every step: a pass over it costs little, and its energy, often all
+  // in one mode, oscillates within a few steps near a symplectic method's limit; the audit needs
+  // those oscillations sampled to see through them.
+  const int interval = model_.particle_count() + model_.spring_count() <= kSmallScene ? 1 : settings_.energy_check_interval;
+  if (settings_.energy_check_interval > 0 && steps_ % interval == 0) {
     const double total = energy().total();
     if (!(std::abs(total) <= kDivergenceFactor * energy_scale_)) {
       std::ostringstream reason;
@@ -144,6 +233,10 @@ bool Simulation::step() {
              << "scene's energy scale (" << format(energy_scale_) << " J)";
       diverge(reason.str());
       return false;
+    }
+    if (dissipation) {
+      this->audit(total + energy_correction());
+      if (divergence_) return false;
     }
   }
   return true;
@@ -161,42 +254,36 @@ void Simulation::diverge(std::string reason) {
   d.t = current_.t;
   d.method = settings_.method;
   d.h = h();
-  // Estimated on the initial state: the diverged one says nothing about the scene.
-  const StabilityEstimate e = estimate_stability(model_, initial_);
-  d.w_max = e.w_max;
-  d.stable_h = springlab::stable_step(settings_.method, e.w_max, e.damping, model_.verlet_damping);
+  // The analysis of the scene as it is (kept, or made from the last good state, which is finite).
+  const StabilityAnalysis& analysis = stability();
+  d.w_max = analysis.w_max();
+  d.limit = analysis.limit(settings_.method);
+  d.stable_h = d.limit.h;
   d.reason = std::move(reason);
   divergence_ = std::move(d);
 }
 
-const StabilityEstimate& Simulation::stability() {
-  if (!stability_) stability_ = estimate_stability(model_, current_);
+const StabilityAnalysis& Simulation::stability() {
+  if (!stability_) stability_ = std::make_shared<const StabilityAnalysis>(model_, current_);
   return *stability_;
-}
-
-double Simulation::stable_step() {
-  if (!stable_h_) {
-    const StabilityEstimate& e = stability();
-    stable_h_ = springlab::stable_step(settings_.method, e.w_max, e.damping, model_.verlet_damping);
-  }
-  return *stable_h_;
 }
 
 void Simulation::model_changed() {
   ws_.invalidate();
   stability_.reset();
-  stable_h_.reset();
+  ++model_version_;
 }
 
 void Simulation::set_method(Method method) {
   settings_.method = method;
-  stable_h_.reset();
+  audit_.reset();  // a new step: what a stable run may create changes
   ws_.invalidate();
   ws_.adaptive_step = 0.0;
 }
 
 void Simulation::set_dt(double dt) {
   settings_.dt = dt;
+  audit_.reset();  // a new step: what a stable run may create changes
   t_since_ = current_.t;
   substeps_done_ = 0;
   ws_.invalidate();
@@ -204,6 +291,7 @@ void Simulation::set_dt(double dt) {
 
 void Simulation::set_substeps(int substeps) {
   settings_.substeps = substeps;
+  audit_.reset();  // a new step: what a stable run may create changes
   t_since_ = current_.t;
   substeps_done_ = 0;
   ws_.invalidate();
@@ -211,74 +299,72 @@ void Simulation::set_substeps(int substeps) {
 
 void Simulation::set_step_settings(const StepSettings& step) { settings_.step = step; }
 
-// Every k_s (k_d, the drag) multiplied by one factor leaves the highest mode as it is: the
-// estimate is scaled (exact for the state it was made on) instead of made again, which on a
-// large cloth takes a second; so a slider dragged in front of a class stays smooth.
+// k_s and k_d of the first material; the others keep their ratio to it. Each change of the
+// model counts the jump in energy it makes as work from outside (the audit), and makes the
+// stability analysis again when next asked (the equilibrium sags with k_s, w_max scales).
 void Simulation::set_stiffness(double ks) {
   if (model_.materials.empty()) return;
-  const double first = model_.materials.front().ks;
-  if (!(first > 0.0)) {
-    springlab::set_stiffness(model_, ks);
-    return model_changed();
-  }
-  for (auto& m : model_.materials) m.ks *= ks / first;
-  if (stability_) stability_->scale_stiffness(ks / first);
-  scaled_stability();
+  from_outside([&] {
+    const double first = model_.materials.front().ks;
+    if (!(first > 0.0)) springlab::set_stiffness(model_, ks);
+    else
+      for (auto& m : model_.materials) m.ks *= ks / first;
+  });
+  model_changed();
 }
 
 void Simulation::set_damping(double kd) {
   if (model_.materials.empty()) return;
   const double first = model_.materials.front().kd;
-  if (!(first > 0.0)) {
-    springlab::set_damping(model_, kd);
-    return model_changed();
-  }
-  for (auto& m : model_.materials) m.kd *= kd / first;
-  if (stability_) stability_->scale_spring_damping(kd / first);
-  scaled_stability();
+  if (!(first > 0.0)) springlab::set_damping(model_, kd);
+  else
+    for (auto& m : model_.materials) m.kd *= kd / first;
+  model_changed();
 }
 
 void Simulation::set_gravity(const Vec3& g) {
-  model_.gravity = g;
-  keep_stability();  // K and C do not depend on gravity
+  from_outside([&] { model_.gravity = g; });
+  model_changed();  // the equilibrium's tension follows gravity
 }
 
 void Simulation::set_drag(double drag) {
-  if (!(model_.drag > 0.0)) {
-    model_.drag = drag;
-    return model_changed();
-  }
-  if (stability_) stability_->scale_drag(drag / model_.drag);
   model_.drag = drag;
-  scaled_stability();
+  model_changed();
 }
 
 void Simulation::set_friction(double mu) {
   for (auto& p : model_.planes) p.friction = mu;
   for (auto& s : model_.spheres) s.friction = mu;
-  keep_stability();  // nor on friction
+  ws_.invalidate();  // friction is not in the stability analysis (colliders are left out)
 }
 
 void Simulation::set_mass(double mass) {
-  for (Emitter& e : model_.emitters) {
-    e.spawn.mass = mass;
-    if (e.burst) e.burst->spawn.mass = mass;
-  }
-  for (int i = 0; i < model_.particle_count(); ++i) {
-    model_.mass[i] = mass;
-    if (!model_.pinned(i)) model_.inv_mass[i] = 1.0 / mass;
-  }
+  from_outside([&] {
+    for (Emitter& e : model_.emitters) {
+      e.spawn.mass = mass;
+      if (e.burst) e.burst->spawn.mass = mass;
+    }
+    for (int i = 0; i < model_.particle_count(); ++i) {
+      model_.mass[i] = mass;
+      if (!model_.pinned(i)) model_.inv_mass[i] = 1.0 / mass;
+    }
+  });
   model_changed();
 }
 
 void Simulation::grab(int particle) {
   release();
-  grabbed_ = particle;
-  // Remember whether it was pinned by the scene: it is pinned for as long as it is held.
-  grabbed_was_pinned_ = model_.pinned(particle);
-  set_pinned(model_, particle, true);
-  current_.v.row(particle).setZero();
-  keep_stability();
+  from_outside([&] {
+    grabbed_ = particle;
+    // Remember whether it was pinned by the scene: it is pinned for as long as it is held.
+    grabbed_was_pinned_ = model_.pinned(particle);
+    set_pinned(model_, particle, true);
+    current_.v.row(particle).setZero();
+  });
+  grabbed_springs_.clear();
+  for (int s = 0; s < model_.spring_count(); ++s)
+    if (model_.spring_a[s] == particle || model_.spring_b[s] == particle) grabbed_springs_.push_back(s);
+  model_changed();
 }
 
 void Simulation::move_grabbed(const Vec3& target, double over) {
@@ -288,36 +374,22 @@ void Simulation::move_grabbed(const Vec3& target, double over) {
 }
 
 void Simulation::place(int particle, const Vec3& position) {
-  current_.x.row(particle) = position.transpose();
-  current_.v.row(particle).setZero();
+  from_outside([&] {
+    current_.x.row(particle) = position.transpose();
+    current_.v.row(particle).setZero();
+  });
   model_changed();
 }
 
 void Simulation::release() {
   if (grabbed_ < 0) return;
-  if (!grabbed_was_pinned_) set_pinned(model_, grabbed_, false);
-  else current_.v.row(grabbed_).setZero();
+  from_outside([&] {
+    if (!grabbed_was_pinned_) set_pinned(model_, grabbed_, false);
+    else current_.v.row(grabbed_).setZero();
+  });
   grabbed_ = -1;
-  keep_stability();
-}
-
-// model_changed() for a change that leaves the stability estimate right, or safe: gravity and
-// friction are not in K or C; a held particle is pinned, which can only lower w_max (the
-// stiffness matrix loses a row and a column: by interlacing its largest eigenvalue does not
-// grow), and letting go restores the pinning the estimate was made with. Making it again takes a
-// visible pause on a large cloth, at every click.
-void Simulation::keep_stability() {
-  const std::optional<StabilityEstimate> kept = stability_;
-  const std::optional<double> kept_h = stable_h_;
+  grabbed_springs_.clear();
   model_changed();
-  stability_ = kept;
-  stable_h_ = kept_h;
-}
-
-// model_changed() after the estimate was scaled in place: kept, but not the step limit from it.
-void Simulation::scaled_stability() {
-  keep_stability();
-  stable_h_.reset();
 }
 
 }  // namespace springlab

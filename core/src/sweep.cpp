@@ -58,6 +58,10 @@ SweepRun run_one(const Model& model, const State& initial, Method method, double
     s.method = method;
     s.dt = h;
     s.step = base;
+    // The audit's bookkeeping without its stop: the error is measured over the whole run, and
+    // the energy the method created says whether the run was numerically unstable.
+    s.track_dissipation = true;
+    s.audit_fraction = 0.0;
     // An adaptive method without a tolerance runs at fixed steps: every try accepted. (Not an
     // infinite one: times a zero coordinate in RK45's error norm it would make NaN.)
     if (method_info(method).adaptive) s.step.tolerance = std::isnan(tolerance) ? 1e300 : tolerance;
@@ -77,6 +81,8 @@ SweepRun run_one(const Model& model, const State& initial, Method method, double
     run.diverged = diverged;
     run.error = diverged ? kInf : error;
     if (diverged) run.diverged_at = sim.divergence()->t;
+    run.created = sim.created_energy();
+    run.unstable = diverged || run.created > kAuditFraction * sim.energy_scale();
     const double internal = static_cast<double>(std::max<std::int64_t>(1, sim.counters().accepted));
     run.mean_step = method_info(method).adaptive ? sim.state().t / internal : h / s.substeps;
     if (diverged) break;  // a diverging run is not worth timing again
@@ -90,6 +96,7 @@ Trajectory rk4_trajectory(const Model& model, const State& initial, double h, in
   SimulationSettings s;
   s.method = Method::RK4;
   s.dt = h;
+  s.audit_fraction = 0.0;  // the reference is checked by its own convergence
   Simulation sim(model, initial, s);
   for (int k = 0; k < samples; ++k) {
     sim.advance(every);
@@ -210,8 +217,8 @@ SweepResult run_sweep(const Model& model, const State& initial, const SweepSetti
       jobs.push_back({m, 1, settings.tol_max * std::pow(settings.tol_min / settings.tol_max, f)});
     }
   }
-  result.stability = estimate_stability(model, initial);
-  const EquilibriumScene rest = settings.stability ? at_rest(model, initial) : EquilibriumScene{model, initial};
+  const StabilityAnalysis analysis(model, initial);
+  result.w_max = analysis.w_max();
   const bool drift = settings.drift_h > 0.0 && settings.drift_duration > 0.0;
   const int stability_jobs = settings.stability ? static_cast<int>(list.size()) : 0;
   const int drift_jobs = drift ? static_cast<int>(list.size()) : 0;
@@ -241,9 +248,12 @@ SweepResult run_sweep(const Model& model, const State& initial, const SweepSetti
     if (j < stability_jobs) {
       MethodSummary& s = result.methods[j];
       s.method = list[j];
-      const StabilityEstimate& e = result.stability;
-      s.theoretical_stable_h = stable_step(list[j], e.w_max, e.damping, model.verlet_damping);
-      s.measured_stable_h = measured_stable_step(list[j], rest, e.w_max, s.theoretical_stable_h, settings.step);
+      const StabilityLimit& limit = analysis.limit(list[j]);
+      s.theoretical_stable_h = limit.h;
+      s.theory_exact = limit.exact;
+      const MeasuredLimit measured = measured_limit(list[j], model, initial, limit, analysis.w_max(), settings.step);
+      s.measured_stable_h = measured.h;
+      s.measured_resolution = measured.resolution;
       finished(nullptr);
       return;
     }
@@ -255,6 +265,7 @@ SweepResult run_sweep(const Model& model, const State& initial, const SweepSetti
     s.dt = settings.drift_h;
     s.step = settings.step;
     s.track_dissipation = true;
+    s.audit_fraction = 0.0;  // the drift is what the chart shows, however far it goes
     Simulation sim(model, initial, s);
     const double scale = sim.energy_scale(), e0 = sim.energy().total();
     const auto steps = static_cast<std::int64_t>(std::llround(settings.drift_duration / settings.drift_h));

@@ -7,18 +7,28 @@
 // the method that the state it remembers is stale.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "springlab/emission.hpp"
 #include "springlab/energy.hpp"
+#include "springlab/energy_audit.hpp"
 #include "springlab/methods.hpp"
 #include "springlab/model.hpp"
 #include "springlab/stability.hpp"
 #include "springlab/state.hpp"
 
 namespace springlab {
+
+// The energy audit (energy_audit.hpp): a run counts as numerically unstable once the energy the
+// method created has risen by more than this fraction of the scene's energy scale, and by more
+// than a stable method at its step could create for what damping took out. Chosen so that every stable run of the shipped scenes
+// stays below it and the instabilities that saturate are caught (README, "The energy audit").
+inline constexpr double kAuditFraction = 1e-3;
 
 struct SimulationSettings {
   Method method = Method::SymplecticEuler;
@@ -27,12 +37,19 @@ struct SimulationSettings {
   StepSettings step;
   int energy_check_interval = 16;  // steps between divergence checks of the total energy
   bool track_dissipation = false;  // integrate the dissipated power (free with the explicit methods)
+  // The audit's fraction (0: no audit). An audit tracks the dissipation whatever the flag above.
+  // The adaptive methods are not audited: they control each step's error, not its energy.
+  double audit_fraction = kAuditFraction;
 };
 
 // NUMERICS.md: a run has diverged when a position or velocity is not finite, or when the total
 // energy exceeds 1e6 times the scene's energy scale; an adaptive step below its floor too. The
 // kinetic energy is tested every step (cheap), the total every energy_check_interval steps.
+// The audit (above) reports a run that went numerically unstable the same way, even when the
+// growth saturates and nothing becomes infinite.
 inline constexpr double kDivergenceFactor = 1e6;
+// Scenes with at most this many particles and springs have their total energy checked every step.
+inline constexpr int kSmallScene = 512;
 
 struct Divergence {
   std::int64_t step = 0;  // the step during which it happened (1-based)
@@ -40,14 +57,20 @@ struct Divergence {
   Method method = Method::Euler;
   double h = 0.0;
   double w_max = 0.0;
-  double stable_h = 0.0;  // the method's estimated largest stable step
+  double stable_h = 0.0;  // the method's largest stable step (limit.h)
+  StabilityLimit limit;
+  // Caught by the energy audit: the energy the method created, and where that stretch started.
+  bool unstable = false;
+  double created = 0.0;
+  std::int64_t started_step = 0;
+  double started_t = 0.0;
   std::string reason;
 
   std::string message() const;  // one paragraph for people
 };
 
 // "stable up to h = 0.0283 s", "unstable at any step without damping", ...
-std::string describe_limit(Method method, double stable_h);
+std::string describe_limit(const StabilityLimit& limit);
 
 class Simulation {
  public:
@@ -76,10 +99,21 @@ class Simulation {
   // with settings.track_dissipation.
   double dissipated() const { return dissipated_; }
 
-  // Highest frequency and the current method's largest stable step, for the current state.
-  // Computed when first asked after a change, then cached.
-  const StabilityEstimate& stability();
-  double stable_step();
+  // The stability analysis of the scene as it is now (stability.hpp), and the current method's
+  // limit from it. Computed when first asked after a change (or given, by set_stability, from
+  // an analysis made elsewhere, e.g. on a worker thread), then kept.
+  const StabilityAnalysis& stability();
+  const StabilityLimit& stability_limit() { return stability().limit(settings_.method); }
+  double stable_step() { return stability_limit().h; }
+  bool has_stability() const { return stability_ != nullptr; }
+  void set_stability(std::shared_ptr<const StabilityAnalysis> analysis) { stability_ = std::move(analysis); }
+  // The model and state an analysis must be made from to be the one stability() would make.
+  // Changes every time the model or the pinning changes (a counter, compared by the app).
+  std::uint64_t model_version() const { return model_version_; }
+
+  // The energy audit: what the method created so far (J), and the work done from outside.
+  double created_energy() const { return created_; }
+  double external_work() const { return external_; }
 
   // Changes. Each takes effect at the next step.
   void set_method(Method method);
@@ -109,8 +143,12 @@ class Simulation {
 
  private:
   void model_changed();
-  void keep_stability();    // model_changed(), keeping the stability estimate (see the .cpp)
-  void scaled_stability();  // the same after scaling it, with the step limit made again
+  // Runs `change`, counting the jump in the total energy it makes as work done from outside.
+  template <typename Change>
+  void from_outside(const Change& change);
+  bool audited() const;
+  double energy_correction();
+  void audit(double total);
   void diverge(std::string reason);
 
   Model model_;
@@ -127,10 +165,17 @@ class Simulation {
   double energy_scale_ = 1.0;
   double dissipated_ = 0.0;
   std::optional<Divergence> divergence_;
-  std::optional<StabilityEstimate> stability_;
-  std::optional<double> stable_h_;  // for the current method and estimate
+  std::shared_ptr<const StabilityAnalysis> stability_;
+  std::uint64_t model_version_ = 0;
   int grabbed_ = -1;
   bool grabbed_was_pinned_ = false;
+  std::vector<int> grabbed_springs_;  // the springs of the held particle (its drag's work)
+  // The audit: the initial energy plus the work done from outside; what the method created at
+  // the last check; where that was last under a hundredth of the threshold.
+  double baseline_ = 0.0, external_ = 0.0, created_ = 0.0;
+  EnergyAudit audit_;
+  bool has_stiffness_ = false;
+  Points at_rest_, forces_;  // scratch for energy_correction()
 };
 
 }  // namespace springlab

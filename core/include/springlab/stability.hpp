@@ -1,17 +1,44 @@
-// How large a step a scene takes before a method blows up.
+// How large a step a scene takes before a method blows up: the one place that says so, for the
+// gauge, the warnings, the divergence messages, `run`'s summary, `compare` and the automatic
+// sub-steps.
 //
-// The scene's highest natural frequency w_max is the square root of the largest eigenvalue of
-// M^-1 K (K = -df/dx, the stiffness matrix at the current positions), found by Lanczos iteration
-// on the symmetric M^-1/2 K M^-1/2; Gershgorin's bound w_max^2 <= max_i (2 / m_i) sum k_s
-// brackets it from above. The damping of that mode, c = (q^T C q) / (q^T M q) with C = -df/dv,
-// matters too: explicit Euler is stable exactly while h <= c / w^2.
+// A scene is linearised at its equilibrium (the static balance it settles into, with its pins,
+// a held particle and gravity: a hanging rope in tension), pinned particles removed:
+//   M x'' + C x' + K x = 0,  K = -df/dx (definite spring Jacobians), C = -df/dv (spring damping
+//   along each spring, and the drag).
+// In mass-scaled coordinates K^ = M^-1/2 K M^-1/2 and C^ are symmetric positive semidefinite, and
+// every eigenvalue lambda of the first-order system, with its eigenvector x (|x| = 1), solves the
+// scalar equation of one damped mode
+//   lambda^2 + gamma lambda + kappa = 0,   gamma = x^* C^ x,  kappa = x^* K^ x,
+// so each eigenvalue is a mode (kappa = w^2, gamma = c) whose stability mode_limit() gives in
+// closed form. Then, per method:
 //
-// A method's limit comes from its own step function, applied to the oscillator
-// x'' = -w^2 x - c x' (a particle on a spring to a pinned anchor): one step is a linear map of
-// (x, v), and the method is stable while that map's spectral radius is at most 1. The largest
-// stable step is found by scanning h w upwards and bisecting at the first instability, so the
-// limits in NUMERICS.md (2/w, 2 sqrt(2)/w, k_d/k_s...) are computed, not copied.
+//   euler, midpoint, rk4      Runge-Kutta methods, stable while |R(h lambda)| <= 1 for every
+//                             lambda. Small scenes: every eigenvalue, exactly (a dense solve).
+//   modified-euler            The same with C^ + (h/2) K^ as damping (its step is explicit Euler
+//                             on that system). Large scenes, and modified Euler: every (gamma,
+//                             kappa) of an eigenvector lies in the joint numerical range W of
+//                             (C^, K^), a convex set whose boundary is traced by the top
+//                             eigenvectors of cos(phi) K^ + sin(phi) C^ (Lanczos); the least
+//                             mode_limit() over W bounds the limit from below, and it is the
+//                             limit exactly when the vector that attains it is an eigenvector
+//                             (checked by its residual). So a limit is exact, or "at least".
+//   symplectic-euler, verlet  Their roots leave the unit disc only through -1 (a complex pair
+//                             has |mu|^2 = 1 - h gamma for one mode; the same holds for the
+//                             matrix step, as x^* Q(mu) x = 0 shows), so the limit is exactly
+//                             the largest h with  a h^2 K^ + b h C^ <= c I  (positive
+//                             semidefinite): (1, 2, 4) for symplectic Euler and
+//                             (1, 4 - d, 4 - 2 d) for Verlet with its damping d. Found by
+//                             Newton's method on the largest eigenvalue (Lanczos), at any size.
+//
+// The limiting mode (its frequency, damping ratio and shape) comes with each limit.
 #pragma once
+
+#include <complex>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "springlab/methods.hpp"
 #include "springlab/model.hpp"
@@ -19,63 +46,112 @@
 
 namespace springlab {
 
-struct StabilityEstimate {
-  double w_max = 0.0;    // rad/s, Lanczos (a lower bound that converges up to it)
-  double w_bound = 0.0;  // rad/s, Gershgorin upper bound
-  double damping = 0.0;  // 1/s, c of the highest mode: spring_damping + drag_damping
-  double spring_damping = 0.0, drag_damping = 0.0;  // its parts, in proportion to k_d and k_drag
-  int iterations = 0;      // Lanczos steps
-  bool converged = false;  // else stopped at the cap on work, for a very large scene
+// ---- One damped mode, x'' = -kappa x - gamma x' ------------------------------------------------
 
-  // The same estimate after every k_s, every k_d or the drag was multiplied by `factor` (the
-  // mode is unchanged: K and C scale): w_max and w_bound by sqrt(factor), the damping part.
-  void scale_stiffness(double factor);
-  void scale_spring_damping(double factor);
-  void scale_drag(double factor);
-};
-
-StabilityEstimate estimate_stability(const Model& model, const State& state);
-
-// h w below which "unstable at any step" is decided: see stability.cpp.
-inline constexpr double kNeverStableFrom = 0.05;
-inline constexpr double kNeverStableFromByRuns = 0.3;
-
-// Spectral radius of one step of size h on x'' = -w^2 x - c x'.
+// The largest h such that every step up to it keeps the method's spectral radius at most 1:
+// 0 = unstable at any step, infinity = at any step, NaN = the method chooses its own steps.
+double mode_limit(Method method, double gamma, double kappa, double verlet_damping = 0.0);
+// The same as a function of w = sqrt(kappa) and c = gamma.
+double stable_step(Method method, double w, double c, double verlet_damping = 0.0);
+// The first h > 0 with |R(h lambda)| > 1, for euler, midpoint and rk4 (NaN for the others).
+double runge_kutta_limit(Method method, std::complex<double> lambda);
+// Spectral radius of one step of size h on x'' = -w^2 x - c x', from the method's own step
+// function applied to that oscillator as it runs (Verlet with the history it keeps): what the
+// closed forms are checked against.
 double amplification(Method method, double w, double c, double h, double verlet_damping = 0.0);
 
-// The largest h for which every step size up to it is stable on that oscillator:
-// 0 = unstable at any step (from h w = kNeverStableFrom up), infinity = stable at any step, NaN = the method
-// chooses its own steps.
-double stable_step(Method method, double w, double c, double verlet_damping = 0.0);
+// ---- The equilibrium ----------------------------------------------------------------------------
 
-// Linear stability belongs to an equilibrium, where a step's stages do not move and the
-// linearised step is exactly the method's step matrix: the scene without colliders, relaxed to
-// its static balance of springs and gravity (gravity dropped when nothing is pinned, since it
-// would only fall), at rest. A held cloth or rope then hangs in tension, which leaves only rigid
-// motions without stiffness.
-struct EquilibriumScene {
-  Model model;
-  State state;
+// The static balance of the scene as it is now: positions where the springs and gravity are in
+// balance (colliders, drag and fields play no part), velocities zero. Gravity acts on the
+// particles joined by springs to a pinned one; a part with nothing pinned only relaxes its
+// springs (it would fall forever).
+State equilibrium(const Model& model, const State& state);
+
+// ---- A scene's limits ---------------------------------------------------------------------------
+
+struct LimitingMode {
+  double w = 0.0;  // rad/s
+  double c = 0.0;  // 1/s, the damping rate: the mode decays as e^(-c t / 2)
+  double damping_ratio() const;  // c / (2 w)
+  Points shape;    // each particle's displacement in the mode, the largest of length 1
 };
-EquilibriumScene at_rest(const Model& model, const State& state);
 
-// Measured on the scene itself, with the method's own step: the spectral radius of the step map
-// y -> step(y) linearised at `state` (free particles only), from its whole finite-difference
-// Jacobian and exact eigenvalues; NaN past kDenseDofs free coordinates. The neutral modes of a
-// scene at rest (eigenvalue 1, zero stiffness) are left out: see outermost() in stability.cpp.
-inline constexpr int kDenseDofs = 300;
-double measured_amplification(Method method, const Model& model, const State& state, double h,
-                              const StepSettings& settings = {});
+struct StabilityLimit {
+  Method method = Method::Euler;
+  // The largest stable step (s): 0 = unstable at any step, infinity = stable at any step,
+  // NaN = the method chooses its own steps.
+  double h = 0.0;
+  bool exact = true;  // else h is a lower bound: stable at least up to h
+  std::optional<LimitingMode> mode;
+  double residual = 0.0;  // of the limiting mode as an eigenvector (0: computed as one)
+};
 
+// "stable up to h = 0.0283 s", "stable at least up to h = ...", "unstable at any step (not
+// enough damping)", "stable at any step", "the method chooses its own step sizes".
+std::string describe(const StabilityLimit& limit);
 
+// A scene's stability, computed once (the expensive part: the equilibrium, the eigenvalues)
+// for every method; immutable, so it may be computed on one thread and read on another.
+// Free coordinates up to which every eigenvalue is computed (a dense eigen-solver on twice as
+// many: 0.2 s here at 240).
+inline constexpr int kDenseDofs = 240;
 
-// The largest h at which the spectral radius at that equilibrium stays at most 1 (to 1e-9 dense,
-// 1e-3 by Arnoldi), found by bracketing from `guess` and bisecting: 0 = unstable from 0.01 / w_max up,
-// infinity = stable past 1e6 / w_max (100 for the runs), NaN for the adaptive methods.
-double measured_stable_step(Method method, const Model& model, const State& state, double w_max,
-                            double guess, const StepSettings& settings = {});
-// The same from an equilibrium already found (at_rest), to measure several methods.
-double measured_stable_step(Method method, const EquilibriumScene& rest, double w_max, double guess,
-                            const StepSettings& settings = {});
+class StabilityAnalysis {
+ public:
+  // `dense_dofs`: up to how many free coordinates every eigenvalue is computed (the tests make
+  // the large scenes' path run on small ones, to check it against the dense one).
+  StabilityAnalysis(const Model& model, const State& state, int dense_dofs = kDenseDofs);
+
+  // Whether the scene has oscillating modes (springs with stiffness on free particles); if not,
+  // why ("no springs", "every particle is pinned"), and the limits come from the drag alone.
+  bool oscillates() const { return oscillates_; }
+  const std::string& no_modes_reason() const { return no_modes_; }
+  double w_max() const { return w_max_; }    // rad/s, the highest frequency (undamped)
+  double w_bound() const { return w_bound_; }  // rad/s, Gershgorin's bound on it
+  bool dense() const { return dense_; }      // every eigenvalue computed
+  int dofs() const { return dofs_; }         // free coordinates
+  double seconds() const { return seconds_; }  // what the analysis took, wall time
+
+  const StabilityLimit& limit(Method method) const;
+
+  // For the stability-region chart. The eigenvalues of the first-order system (dense scenes:
+  // all of them; large ones: none). The modes as (gamma, kappa) points: dense scenes, one per
+  // eigenvalue (gamma = -2 Re lambda, kappa = |lambda|^2 for a complex pair; a real pair as
+  // one point); large scenes, the traced boundary of W, within which every mode lies.
+  struct ModePoint {
+    double gamma = 0.0, kappa = 0.0;
+  };
+  const std::vector<std::complex<double>>& eigenvalues() const { return eigenvalues_; }
+  const std::vector<ModePoint>& modes() const { return modes_; }
+
+ private:
+  bool oscillates_ = false, dense_ = false;
+  std::string no_modes_;
+  double w_max_ = 0.0, w_bound_ = 0.0, seconds_ = 0.0;
+  int dofs_ = 0;
+  std::vector<StabilityLimit> limits_;  // one per method, in table order
+  std::vector<std::complex<double>> eigenvalues_;
+  std::vector<ModePoint> modes_;
+};
+
+// ---- Measured by runs ---------------------------------------------------------------------------
+
+// The largest step at which the method's own runs hold, found by bisection on h: each run starts
+// at the scene's equilibrium (colliders and fields left out) with a tiny random push (the linear regime) and counts as unstable when its
+// energy grows a thousandfold. A run is long enough to see a thousandfold growth at the
+// bracket's width (`resolution`, relative) for the mode `expected` names, up to max_steps steps;
+// the bracket stops narrowing where runs would have to be longer, and `resolution` says how
+// far it got. 0 = unstable from guess / 1000 down, infinity = stable past 1000 guess, NaN for the
+// adaptive methods.
+struct MeasuredLimit {
+  double h = 0.0;
+  // Relative: the bracket's width, or how far past a limit growth is too slow for the runs to
+  // see, whichever is larger. The true limit is within it of h.
+  double resolution = 0.0;
+};
+// `w_max` sets the scale when the expected limit has no mode (0 or infinity).
+MeasuredLimit measured_limit(Method method, const Model& model, const State& state, const StabilityLimit& expected,
+                             double w_max, const StepSettings& settings = {}, long max_steps = 200000);
 
 }  // namespace springlab

@@ -50,14 +50,22 @@ struct SweepRun {
   Counters counters;
   bool diverged = false;
   double diverged_at = std::numeric_limits<double>::quiet_NaN();
+  // The energy audit (simulation.hpp): what the method created over the run (J), and whether
+  // that is past the audit's threshold (or the run diverged): numerically unstable.
+  double created = 0.0;
+  bool unstable = false;
 };
 
 struct MethodSummary {
   Method method = Method::Euler;
   double order = std::numeric_limits<double>::quiet_NaN();  // fitted; NaN: too few points
   int fitted_points = 0;
+  // The largest stable step measured by runs (stability.hpp, measured_limit), to within
+  // measured_resolution (relative), and the analysis's (exact, or a lower bound).
   double measured_stable_h = std::numeric_limits<double>::quiet_NaN();
+  double measured_resolution = 0.0;
   double theoretical_stable_h = std::numeric_limits<double>::quiet_NaN();
+  bool theory_exact = true;
 };
 
 struct DriftTrace {
@@ -75,7 +83,7 @@ struct SweepResult {
   double sample_interval = 0.0;  // H
   int samples = 0;
   double motion = 0.0;  // m: the largest RMS displacement of the reference from the start
-  StabilityEstimate stability;
+  double w_max = 0.0;   // rad/s, the highest frequency at the equilibrium
   bool cancelled = false;
 };
 

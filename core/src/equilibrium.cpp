@@ -1,0 +1,178 @@
+// The static balance a scene settles into (stability.hpp): the springs' potential plus gravity's
+// minimised by Newton's method with Levenberg-Marquardt damping,
+//   (K + mu M) dx = f,   accepted when the potential falls (then mu shrinks, else it grows),
+// K the definite stiffness (positive semidefinite: a pinned rope's sideways motions start with
+// none, and mu M keeps the step finite), solved by a sparse LDL^T factorisation. Gravity acts on
+// the particles joined by springs to a pinned one; a part with nothing pinned would fall forever
+// (no balance), so it only relaxes its springs.
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <vector>
+#include <cstdio>
+#include <cstdlib>
+
+#include "springlab/spring_kernel.hpp"
+#include "springlab/stability.hpp"
+
+namespace springlab {
+
+namespace {
+
+// Union-find over the particles joined by springs.
+struct Parts {
+  std::vector<int> parent;
+  explicit Parts(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  int find(int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  }
+  void join(int a, int b) { parent[find(a)] = find(b); }
+};
+
+struct Balance {
+  const Model& model;
+  std::vector<char> weighed;  // gravity acts on it
+  std::vector<int> index;     // free coordinate block of each particle, -1 pinned
+  int free = 0;
+
+  explicit Balance(const Model& m) : model(m), weighed(m.particle_count(), 0), index(m.particle_count(), -1) {
+    const int n = m.particle_count();
+    Parts parts(n);
+    for (int s = 0; s < m.spring_count(); ++s)
+      if (m.ks(s) > 0.0) parts.join(m.spring_a[s], m.spring_b[s]);
+    std::vector<char> held(n, 0);
+    for (int i = 0; i < n; ++i)
+      if (m.pinned(i)) held[parts.find(i)] = 1;
+    for (int i = 0; i < n; ++i) {
+      weighed[i] = !m.pinned(i) && held[parts.find(i)];
+      if (!m.pinned(i)) index[i] = free++;
+    }
+  }
+
+  // Potential energy, and the force on each free particle.
+  double potential(const Points& x) const {
+    double e = 0.0;
+    for (int s = 0; s < model.spring_count(); ++s)
+      e += spring_energy(x.row(model.spring_a[s]).transpose(), x.row(model.spring_b[s]).transpose(), model.ks(s),
+                         model.rest_length[s]);
+    for (int i = 0; i < model.particle_count(); ++i)
+      if (weighed[i]) e -= model.mass[i] * model.gravity.dot(x.row(i).transpose());
+    return e;
+  }
+  Eigen::VectorXd force(const Points& x) const {
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(3 * free);
+    for (int s = 0; s < model.spring_count(); ++s) {
+      const int a = model.spring_a[s], b = model.spring_b[s];
+      const Vec3 fa = spring_force(x.row(a).transpose(), x.row(b).transpose(), Vec3::Zero(), Vec3::Zero(),
+                                   model.ks(s), 0.0, model.rest_length[s]);
+      if (index[a] >= 0) f.segment<3>(3 * index[a]) += fa;
+      if (index[b] >= 0) f.segment<3>(3 * index[b]) -= fa;
+    }
+    for (int i = 0; i < model.particle_count(); ++i)
+      if (weighed[i]) f.segment<3>(3 * index[i]) += model.mass[i] * model.gravity;
+    return f;
+  }
+  // K + mu M over the free coordinates.
+  Eigen::SparseMatrix<double> system(const Points& x, double mu) const {
+    std::vector<Eigen::Triplet<double>> t;
+    t.reserve(static_cast<std::size_t>(model.spring_count()) * 36 + 3 * free);
+    for (int s = 0; s < model.spring_count(); ++s) {
+      const int a = model.spring_a[s], b = model.spring_b[s];
+      // The potential's own Hessian (a compressed spring's negative transverse term kept: near
+      // the balance Newton then converges quadratically; mu M covers where it is indefinite).
+      const Eigen::Matrix3d block = spring_jacobian(x.row(a).transpose(), x.row(b).transpose(), Vec3::Zero(),
+                                                    Vec3::Zero(), model.ks(s), 0.0, model.rest_length[s], false)
+                                        .dfdx;
+      const int ends[2] = {index[a], index[b]};
+      for (int p = 0; p < 2; ++p)
+        for (int q = 0; q < 2; ++q) {
+          if (ends[p] < 0 || ends[q] < 0) continue;
+          const double sign = p == q ? 1.0 : -1.0;
+          for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) t.emplace_back(3 * ends[p] + r, 3 * ends[q] + c, sign * block(r, c));
+        }
+    }
+    for (int i = 0; i < model.particle_count(); ++i)
+      if (index[i] >= 0)
+        for (int c = 0; c < 3; ++c) t.emplace_back(3 * index[i] + c, 3 * index[i] + c, mu * model.mass[i]);
+    Eigen::SparseMatrix<double> A(3 * free, 3 * free);
+    A.setFromTriplets(t.begin(), t.end());
+    return A;
+  }
+  void move(Points& x, const Eigen::VectorXd& dx, double scale) const {
+    for (int i = 0; i < model.particle_count(); ++i)
+      if (index[i] >= 0) x.row(i) += scale * dx.segment<3>(3 * index[i]).transpose();
+  }
+};
+
+}  // namespace
+
+State equilibrium(const Model& model, const State& state) {
+  State rest = state;
+  rest.v.setZero();
+  const Balance balance(model);
+  if (balance.free == 0 || model.spring_count() == 0) return rest;
+
+  // The force's yardstick: the largest spring force at 1 % strain, or weight.
+  double force_scale = 0.0;
+  for (int s = 0; s < model.spring_count(); ++s)
+    force_scale = std::max(force_scale, 0.01 * model.ks(s) * std::max(model.rest_length[s], 1e-3));
+  for (int i = 0; i < model.particle_count(); ++i)
+    if (balance.weighed[i]) force_scale = std::max(force_scale, model.mass[i] * model.gravity.norm());
+  if (!(force_scale > 0.0)) return rest;
+  // Balanced to a millionth of that: the tension it leaves is the springs' to 1e-8 strain.
+  const double tolerance = 1e-8 * force_scale;
+  double size = 0.0;  // the scene's extent: steps below 1e-13 of it are rounding
+  for (int c = 0; c < 3; ++c) size = std::max(size, rest.x.col(c).maxCoeff() - rest.x.col(c).minCoeff());
+
+  // mu in units of k / m: start small against the stiffest spring on the lightest particle.
+  double k_over_m = 0.0;
+  for (int s = 0; s < model.spring_count(); ++s)
+    k_over_m = std::max(k_over_m, model.ks(s) * std::max(model.inv_mass[model.spring_a[s]], model.inv_mass[model.spring_b[s]]));
+  const double mu_floor = 1e-12 * std::max(k_over_m, 1e-300);
+  double mu = 1e-6 * k_over_m;
+
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
+  bool analysed = false;
+  double energy = balance.potential(rest.x);
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    const Eigen::VectorXd f = balance.force(rest.x);
+    if (std::getenv("EQ_DEBUG")) std::fprintf(stderr, "it %d |f| %g mu %g E %.12g\n", iteration, f.lpNorm<Eigen::Infinity>(), mu, energy);
+    if (f.lpNorm<Eigen::Infinity>() <= tolerance) break;
+    bool moved = false;
+    for (int attempt = 0; attempt < 40; ++attempt) {
+      const Eigen::SparseMatrix<double> A = balance.system(rest.x, mu);
+      if (!analysed) {
+        solver.analyzePattern(A);
+        analysed = true;
+      }
+      solver.factorize(A);
+      if (solver.info() != Eigen::Success) {
+        mu = std::max(10.0 * mu, mu_floor);
+        continue;
+      }
+      const Eigen::VectorXd dx = solver.solve(f);
+      if (dx.lpNorm<Eigen::Infinity>() <= 1e-13 * size) break;  // nothing left to move
+      State trial = rest;
+      balance.move(trial.x, dx, 1.0);
+      const double e = balance.potential(trial.x);
+      // Accepted when the potential does not rise beyond its rounding (near the balance its
+      // changes are below it, and the force decides when to stop).
+      if (std::isfinite(e) && e <= energy + 1e-13 * std::abs(energy)) {
+        rest = std::move(trial);
+        energy = std::min(energy, e);
+        mu = std::max(mu / 8.0, mu_floor);
+        moved = true;
+        break;
+      }
+      mu = std::max(8.0 * mu, mu_floor);
+    }
+    if (!moved) break;  // no step lowers the potential: as balanced as rounding allows
+  }
+  return rest;
+}
+
+}  // namespace springlab

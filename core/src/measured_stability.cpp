@@ -1,0 +1,201 @@
+// Stability measured on the methods' own steps (stability.hpp): the amplification of one step
+// of the oscillator, and a scene's largest stable step found by running it.
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "springlab/energy.hpp"
+#include "springlab/stability.hpp"
+
+namespace springlab {
+
+namespace {
+
+// The oscillator: an anchor pinned at the origin, a unit mass at distance 1 along x, a spring of
+// rest length 1, k_s = w^2, k_d = c. Motion along x is exactly linear.
+Model oscillator(double w, double c, double verlet_damping) {
+  Model m;
+  add_particle(m, 1.0, true);
+  add_particle(m, 1.0, false);
+  add_spring(m, 0, 1, 1.0, add_material(m, {w * w, c}));
+  m.verlet_damping = verlet_damping;
+  finalize(m);
+  return m;
+}
+
+// The parts of a scene joined by springs, whether every part with a free particle is pinned
+// somewhere: then gravity has a balance, else it is left out of the runs (a free part would
+// fall and gain energy that is no instability).
+bool every_part_held(const Model& model) {
+  const int n = model.particle_count();
+  std::vector<int> part(n);
+  for (int i = 0; i < n; ++i) part[i] = i;
+  const auto find = [&](int i) {
+    while (part[i] != i) i = part[i] = part[part[i]];
+    return i;
+  };
+  for (int s = 0; s < model.spring_count(); ++s) part[find(model.spring_a[s])] = find(model.spring_b[s]);
+  std::vector<char> held(n, 0);
+  for (int i = 0; i < n; ++i)
+    if (model.pinned(i)) held[find(i)] = 1;
+  for (int i = 0; i < n; ++i)
+    if (!model.pinned(i) && !held[find(i)]) return false;
+  return true;
+}
+
+}  // namespace
+
+double amplification(Method method, double w, double c, double h, double verlet_damping) {
+  const Model model = oscillator(w, c, verlet_damping);
+  const StepSettings settings;
+  // Motion along the spring is exactly linear whatever the offset, so the offset only has to be
+  // large enough for (x - 1) / delta to keep its digits (1e-13 relative), and small enough that
+  // no stage crosses the anchor near the limits (amplitudes grow like (h w)^4 per step).
+  const double delta = 1e-3;
+  // The step as it runs: from (x, v) for the one-step methods; Verlet runs a recurrence on
+  // (x, x_prev, a), its restart from (x, v) only once, so it is measured with that history.
+  const bool verlet = method == Method::Verlet;
+  const int size = verlet ? 3 : 2;
+  State rest;
+  rest.resize(2);
+  rest.x.setZero();
+  rest.v.setZero();
+  rest.x(1, 0) = 1.0;
+  Workspace history;
+  if (verlet) {
+    State out = rest;
+    step(method, model, rest, out, h, settings, history);  // at rest: x_prev = x, a = 0
+  }
+  Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
+  for (int column = 0; column < size; ++column) {
+    State in = rest, out = rest;
+    Workspace ws;
+    if (verlet) {
+      ws.x_prev = history.x_prev;
+      ws.a_now = history.a_now;
+      ws.verlet_ready = true;
+      ws.verlet_h = h;
+    }
+    if (column == 0) in.x(1, 0) += delta;
+    if (column == 1) (verlet ? ws.x_prev(1, 0) : in.v(1, 0)) += delta;
+    if (column == 2) ws.a_now(1, 0) += delta;
+    step(method, model, in, out, h, settings, ws);
+    M(0, column) = (out.x(1, 0) - 1.0) / delta;
+    M(1, column) = (verlet ? ws.x_prev(1, 0) - 1.0 : out.v(1, 0)) / delta;
+    if (verlet) M(2, column) = ws.a_now(1, 0) / delta;
+  }
+  double rho = 0.0;
+  const Eigen::VectorXcd mu = Eigen::EigenSolver<Eigen::MatrixXd>(M.topLeftCorner(size, size), false).eigenvalues();
+  for (const auto& z : mu) rho = std::max(rho, std::abs(z));
+  return rho;
+}
+
+MeasuredLimit measured_limit(Method method, const Model& model, const State& state, const StabilityLimit& expected,
+                             double w_max, const StepSettings& settings, long max_steps) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  MeasuredLimit out;
+  if (method_info(method).adaptive) {
+    out.h = std::numeric_limits<double>::quiet_NaN();
+    return out;
+  }
+  Model runs = model;
+  runs.planes.clear();
+  runs.spheres.clear();
+  runs.attractors.clear();
+  if (!every_part_held(runs)) runs.gravity.setZero();
+  const State rest = equilibrium(runs, state);
+  const double e_rest = energy(runs, rest).total();
+  const double scale = energy_scale(runs, rest);
+
+  // A tiny random push, the same every run.
+  State pushed = rest;
+  std::uint64_t seed = 0x2545F4914F6CDD1Dull;
+  for (int i = 0; i < runs.particle_count(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+      pushed.v(i, c) = runs.pinned(i) ? 0.0 : static_cast<double>(seed >> 11) / 9007199254740992.0 - 0.5;
+    }
+  const double kinetic = kinetic_energy(runs, pushed);
+  if (!(kinetic > 0.0)) {
+    out.h = kInf;
+    return out;
+  }
+  pushed.v *= std::sqrt(1e-12 * scale / kinetic);
+  const double start = energy(runs, pushed).total() - e_rest;
+
+  // The mode the analysis expects to fail first sets how long a run must be: long enough for
+  // that mode's energy to grow 1e9-fold, ln(1e9) / (2 ln rho), so that the whole energy grows a
+  // thousandfold even if the push gave the mode a millionth of it. At least 200 steps.
+  const double w = expected.mode ? expected.mode->w : w_max;
+  const double c = expected.mode ? expected.mode->c : 0.0;
+  const double d = model.verlet_damping;
+  const auto steps_to_see = [&](double h) -> long {
+    const double rho = amplification(method, w, c, h, d);
+    if (!(rho > 1.0)) return max_steps;
+    const double steps = std::ceil(std::log(1e9) / (2.0 * std::log(rho)));
+    return std::clamp(static_cast<long>(std::min(steps, 1e12)), 200L, max_steps);
+  };
+  const auto holds = [&](double h, long steps) -> bool {
+    State a = pushed, b = pushed;
+    Workspace ws;
+    for (long k = 0; k < steps; ++k) {
+      step(method, runs, a, b, h, settings, ws);
+      std::swap(a, b);
+      if ((k & 15) != 15 && k + 1 < steps) continue;
+      const double e = energy(runs, a).total() - e_rest;
+      if (!std::isfinite(e) || e > 1e3 * start) return false;
+    }
+    return true;
+  };
+  const auto holds_for = [&](double h) { return holds(h, steps_to_see(h)); };
+
+  // Unstable at any step, says the analysis: then runs from h w = 0.3 up grow, fast enough to
+  // see (midpoint's (h w)^4 / 8 a step is the slowest), and 0 is what they measure.
+  if (expected.h == 0.0 && w > 0.0) {
+    if (!holds_for(0.3 / w)) {
+      out.h = 0.0;
+      return out;
+    }
+  }
+  const double guess = std::isfinite(expected.h) && expected.h > 0.0 ? expected.h : w > 0.0 ? 1.0 / w : 1.0;
+  // A probe at h runs as long as a thousandfold growth takes for the expected mode at h, or at
+  // 0.5 % past its limit if h is below that (the slowest growth a run still has to see).
+  const auto length = [&](double h) { return steps_to_see(std::max(h, 1.005 * guess)); };
+  double lo = guess, hi = guess;
+  if (holds(guess, length(guess))) {
+    for (hi = guess * 1.25; holds(hi, length(hi)); hi *= 2.0) {
+      lo = hi;
+      if (hi > 1e3 * guess) {
+        out.h = kInf;
+        return out;
+      }
+    }
+  } else {
+    for (lo = guess / 1.25; !holds(lo, length(lo)); lo /= 2.0) {
+      hi = lo;
+      if (lo < 1e-3 * guess) {
+        out.h = 0.0;
+        return out;
+      }
+    }
+  }
+  // Bisection, to 0.1 %, while runs of at most max_steps can still see the growth at the
+  // bracket's midpoint.
+  while (hi > lo * 1.001) {
+    const double mid = 0.5 * (lo + hi);
+    const long n = length(mid);
+    if (n >= max_steps) break;  // runs this long could no longer tell
+    (holds(mid, n) ? lo : hi) = mid;
+  }
+  out.h = lo;
+  // A run of max_steps steps cannot see the growth within `blind` past the expected limit: the
+  // largest step that held may be that far above the true limit.
+  double blind = 1e-3;
+  while (blind < 1.0 && steps_to_see(guess * (1.0 + blind)) >= max_steps) blind *= 1.25;
+  out.resolution = std::max(hi / lo - 1.0, blind);
+  return out;
+}
+
+}  // namespace springlab
