@@ -46,7 +46,7 @@ int bench(const BenchOptions& o) {
     runs.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     // A diverged run's figures would time a state of NaNs and infinities: report it instead.
     if (s.diverged()) {
-      std::fprintf(stderr, "springlab: %s: %s\n", p.scene.name.c_str(), s.divergence()->message().c_str());
+      std::fprintf(stderr, "springlab: %s: %s\n", p.scene.name.c_str(), s.explain_divergence()->message().c_str());
       return kDiverged;
     }
   }

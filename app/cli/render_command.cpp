@@ -202,10 +202,10 @@ int render(const RenderOptions& o) {
               static_cast<long long>(written), written == 1 ? "" : "s", scene_name.c_str(), width, height, o.fps,
               session.primary().sim.state().t, wall, wall > 0 ? written / wall : 0.0, offscreen.renderer_name().c_str());
   std::printf("output     %s\n", (o.out ? *o.out : *o.video).c_str());
-  for (const Lane& lane : session.lanes())
+  for (Lane& lane : session.lanes())
     if (lane.sim.diverged()) {
       std::fflush(stdout);
-      std::fprintf(stderr, "springlab: %s: %s\n", scene_name.c_str(), lane.sim.divergence()->message().c_str());
+      std::fprintf(stderr, "springlab: %s: %s\n", scene_name.c_str(), lane.sim.explain_divergence()->message().c_str());
       return kDiverged;
     }
   return kOk;

@@ -153,7 +153,7 @@ int run(const RunOptions& o) {
   if (sim.diverged()) {
     std::fflush(stdout);
     std::fprintf(stderr, "springlab: %s: %s\n", p.scene.name.c_str(),
-                 sim.divergence()->message().c_str());
+                 sim.explain_divergence()->message().c_str());
     return kDiverged;
   }
   return kOk;

@@ -423,7 +423,7 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
     ImGui::Begin("Diverged", nullptr, kPanel | ImGuiWindowFlags_AlwaysAutoResize);
     ImGui::Text("The simulation diverged at t = %.4g s", first.divergence()->t);
     ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextUnformatted(first.divergence()->message().c_str());
+    ImGui::TextUnformatted(first.divergence()->message().c_str());  // the limit once analysed
     ImGui::PopTextWrapPos();
     if (ImGui::Button("Reset (R)")) session.reset();
     ImGui::End();

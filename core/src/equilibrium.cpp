@@ -1,5 +1,14 @@
-// The static balance a scene settles into (stability.hpp): the springs' potential plus gravity's
-// minimised by Newton's method with Levenberg-Marquardt damping,
+// The static balance a scene settles into (stability.hpp), in two stages.
+//
+// Dynamic relaxation first, for the large motions (a cloth held by two corners swinging from
+// flat to hanging): the scene stepped with symplectic Euler at h = 1 / w_bound (inside its limit
+// 2 / w_max), without damping, and every time its kinetic energy stops rising all velocities
+// are set to zero (kinetic damping: the energy taken out is the most there is to take). A step
+// costs one pass of the force loop, so thousands of them cost less than one factorisation of a
+// large cloth's stiffness.
+//
+// Then Newton's method for the last digits: the springs' potential plus gravity's minimised with
+// Levenberg-Marquardt damping,
 //   (K + mu M) dx = f,   accepted when the potential falls (then mu shrinks, else it grows),
 // K the definite stiffness (positive semidefinite: a pinned rope's sideways motions start with
 // none, and mu M keeps the step finite), solved by a sparse LDL^T factorisation. Gravity acts on
@@ -11,9 +20,9 @@
 #include <cmath>
 #include <numeric>
 #include <vector>
-#include <cstdio>
-#include <cstdlib>
 
+#include "linearised.hpp"
+#include "springlab/forces.hpp"
 #include "springlab/spring_kernel.hpp"
 #include "springlab/stability.hpp"
 
@@ -108,6 +117,46 @@ struct Balance {
   }
 };
 
+// Dynamic relaxation with kinetic damping (above), until the largest force is below `tolerance`
+// or after a budget of force passes.
+void relax(const Model& model, const Balance& balance, State& rest, double tolerance) {
+  Model springs = model;  // the springs alone: gravity is added where it has a balance
+  springs.gravity.setZero();
+  springs.drag = 0.0;
+  springs.attractors.clear();
+  const int n = model.particle_count();
+  Points v = Points::Zero(n, 3), zero = Points::Zero(n, 3), f(n, 3);
+  SpringForces buffer;
+  double kinetic = 0.0, h = 0.0;
+  constexpr int kBudget = 20000, kLook = 50;
+  for (int k = 0; k < kBudget; ++k) {
+    if (k % 500 == 0) {
+      // The step from Gershgorin's bound at the positions now (tension raises it).
+      const double w = std::sqrt(Linearised(model, rest).stiffness_bound());
+      if (!(w > 0.0)) return;
+      h = 1.0 / w;
+    }
+    evaluate_forces(springs, rest.x, zero, f, buffer, ForceOutput::Force);
+    double largest = 0.0, energy = 0.0;
+    for (int i = 0; i < n; ++i) {
+      if (balance.index[i] < 0) continue;
+      if (balance.weighed[i]) f.row(i) += model.mass[i] * model.gravity.transpose();
+      if (k % kLook == 0) largest = std::max(largest, f.row(i).cwiseAbs().maxCoeff());
+      v.row(i) += (h * model.inv_mass[i]) * f.row(i);
+      energy += model.mass[i] * v.row(i).squaredNorm();
+    }
+    if (k % kLook == 0 && largest <= tolerance) return;
+    if (energy < kinetic) {
+      v.setZero();  // past a peak of the kinetic energy: take it all out
+      kinetic = 0.0;
+      continue;
+    }
+    kinetic = energy;
+    for (int i = 0; i < n; ++i)
+      if (balance.index[i] >= 0) rest.x.row(i) += h * v.row(i);
+  }
+}
+
 }  // namespace
 
 State equilibrium(const Model& model, const State& state) {
@@ -135,12 +184,13 @@ State equilibrium(const Model& model, const State& state) {
   const double mu_floor = 1e-12 * std::max(k_over_m, 1e-300);
   double mu = 1e-6 * k_over_m;
 
+  relax(model, balance, rest, 1e-3 * force_scale);
+
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
   bool analysed = false;
   double energy = balance.potential(rest.x);
   for (int iteration = 0; iteration < 200; ++iteration) {
     const Eigen::VectorXd f = balance.force(rest.x);
-    if (std::getenv("EQ_DEBUG")) std::fprintf(stderr, "it %d |f| %g mu %g E %.12g\n", iteration, f.lpNorm<Eigen::Infinity>(), mu, energy);
     if (f.lpNorm<Eigen::Infinity>() <= tolerance) break;
     bool moved = false;
     for (int attempt = 0; attempt < 40; ++attempt) {

@@ -45,9 +45,10 @@ std::string Divergence::message() const {
   std::ostringstream s;
   s << (unstable ? "went numerically unstable during step " : "diverged during step ") << step
     << " (last good state at t = " << format(t) << " s): " << reason << ". Method "
-    << method_info(method).name << ", h = " << format(h) << " s, h w_max = " << format(h * w_max)
-    << " (w_max = " << format(w_max) << " rad/s); limit: " << describe(limit);
-  if (limit.mode && std::isfinite(limit.h) && limit.h > 0.0)
+    << method_info(method).name << ", h = " << format(h) << " s";
+  if (analysed)
+    s << ", h w_max = " << format(h * w_max) << " (w_max = " << format(w_max) << " rad/s); limit: " << describe(limit);
+  if (analysed && limit.mode && std::isfinite(limit.h) && limit.h > 0.0)
     s << ", set by a mode of " << format(limit.mode->w) << " rad/s with damping ratio "
       << format(limit.mode->damping_ratio());
   s << ". Try a smaller --dt, more --substeps, or a more stable --method (implicit-euler).";
@@ -254,13 +255,23 @@ void Simulation::diverge(std::string reason) {
   d.t = current_.t;
   d.method = settings_.method;
   d.h = h();
-  // The analysis of the scene as it is (kept, or made from the last good state, which is finite).
-  const StabilityAnalysis& analysis = stability();
-  d.w_max = analysis.w_max();
-  d.limit = analysis.limit(settings_.method);
-  d.stable_h = d.limit.h;
   d.reason = std::move(reason);
   divergence_ = std::move(d);
+  // The limit, from the analysis if there is one already (a large scene's takes seconds, which
+  // a batch of runs or the app's frame loop should not wait for): explain_divergence() makes it.
+  if (stability_) explain_divergence();
+}
+
+const std::optional<Divergence>& Simulation::explain_divergence() {
+  if (divergence_ && !divergence_->analysed) {
+    // The analysis of the scene as it is (kept, or made from the last good state, which is finite).
+    const StabilityAnalysis& analysis = stability();
+    divergence_->w_max = analysis.w_max();
+    divergence_->limit = analysis.limit(settings_.method);
+    divergence_->stable_h = divergence_->limit.h;
+    divergence_->analysed = true;
+  }
+  return divergence_;
 }
 
 const StabilityAnalysis& Simulation::stability() {

@@ -106,7 +106,7 @@ TEST(Stability, DivergenceReportsStepTimeMethodAndLimit) {
   Simulation sim = test::simulation(spring, Method::RK4, 0.29);
   sim.advance(1000);
   ASSERT_TRUE(sim.diverged());
-  const Divergence& d = *sim.divergence();
+  const Divergence& d = *sim.explain_divergence();
   EXPECT_EQ(d.method, Method::RK4);
   EXPECT_DOUBLE_EQ(d.h, 0.29);
   EXPECT_NEAR(d.w_max, 10.0, 1e-6);

@@ -56,6 +56,8 @@ struct Divergence {
   double t = 0.0;         // time of the last good state kept
   Method method = Method::Euler;
   double h = 0.0;
+  // The stability analysis's word on it (once analysed: Simulation::explain_divergence()).
+  bool analysed = false;
   double w_max = 0.0;
   double stable_h = 0.0;  // the method's largest stable step (limit.h)
   StabilityLimit limit;
@@ -91,6 +93,8 @@ class Simulation {
   const Counters& counters() const { return ws_.counters; }
   std::int64_t steps_taken() const { return steps_; }
   const std::optional<Divergence>& divergence() const { return divergence_; }
+  // The same with the stability analysis's limit in it (made now if it was not kept).
+  const std::optional<Divergence>& explain_divergence();
   bool diverged() const { return divergence_.has_value(); }
 
   Energy energy() const { return springlab::energy(model_, current_); }
