@@ -29,6 +29,7 @@ struct CompareOptions {
   SimOptions sim;
   std::optional<std::string> methods, dt_range, tol_range;
   std::optional<double> drift_duration;
+  double stability_budget = 2e8;
   int points = 8, repeats = 1;
   bool software = false, no_charts = false;
 };
@@ -145,6 +146,9 @@ int compare(const CompareOptions& o) {
   s.drift_h = dt;
   if (o.drift_duration) check_option("--drift-duration", *o.drift_duration, 0.0, 1e6, false, " s");
   s.drift_duration = o.drift_duration ? *o.drift_duration : p.scene.duration;
+  check_option("--stability-budget", o.stability_budget, 0.0, 1e13, false);
+  s.stability = o.stability_budget > 0.0;
+  s.stability_budget = o.stability_budget;
 
   // The output folder first: it must be writable before the work starts.
   std::error_code ec;
@@ -208,6 +212,9 @@ Command add_compare_command(CLI::App& app) {
   c->add_option("--drift-duration", o->drift_duration, "length of the energy-drift runs (default: the scene's duration; 0: none)");
   c->add_flag("--software", o->software, "render the PNG charts with the software rasteriser");
   c->add_flag("--no-charts", o->no_charts, "write only the CSV files");
+  c->add_option("--stability-budget", o->stability_budget,
+                "work allowed for each method's measured stable step, in particle- and spring-steps (default 2e8, "
+                "about a second; 0: not measured)");
   return [o] { return compare(*o); };
 }
 

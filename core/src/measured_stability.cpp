@@ -93,7 +93,7 @@ double amplification(Method method, double w, double c, double h, double verlet_
 }
 
 MeasuredLimit measured_limit(Method method, const Model& model, const State& state, const StabilityLimit& expected,
-                             double w_max, const StepSettings& settings, long max_steps) {
+                             double w_max, const StepSettings& settings, double budget) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   MeasuredLimit out;
   if (method_info(method).adaptive) {
@@ -124,6 +124,11 @@ MeasuredLimit measured_limit(Method method, const Model& model, const State& sta
   }
   pushed.v *= std::sqrt(1e-12 * scale / kinetic);
   const double start = energy(runs, pushed).total() - e_rest;
+  // The work allowed, in particle- and spring-steps: a probe is at most 200,000 steps and a
+  // twentieth of it; the bisection stops when it is spent.
+  const double size = runs.particle_count() + runs.spring_count();
+  const long max_steps = std::clamp(static_cast<long>(budget / (20.0 * size)), 200L, 200000L);
+  double spent = 0.0;
 
   // The mode the analysis expects to fail first sets how long a run must be: long enough for
   // that mode's energy to grow 1e9-fold, ln(1e9) / (2 ln rho), so that the whole energy grows a
@@ -140,6 +145,7 @@ MeasuredLimit measured_limit(Method method, const Model& model, const State& sta
   const auto holds = [&](double h, long steps) -> bool {
     State a = pushed, b = pushed;
     Workspace ws;
+    spent += static_cast<double>(steps) * size;
     for (long k = 0; k < steps; ++k) {
       step(method, runs, a, b, h, settings, ws);
       std::swap(a, b);
@@ -186,7 +192,7 @@ MeasuredLimit measured_limit(Method method, const Model& model, const State& sta
   while (hi > lo * 1.001) {
     const double mid = 0.5 * (lo + hi);
     const long n = length(mid);
-    if (n >= max_steps) break;  // runs this long could no longer tell
+    if (n >= max_steps || spent > budget) break;  // runs this long could no longer tell, or no more runs
     (holds(mid, n) ? lo : hi) = mid;
   }
   out.h = lo;

@@ -251,7 +251,8 @@ SweepResult run_sweep(const Model& model, const State& initial, const SweepSetti
       const StabilityLimit& limit = analysis.limit(list[j]);
       s.theoretical_stable_h = limit.h;
       s.theory_exact = limit.exact;
-      const MeasuredLimit measured = measured_limit(list[j], model, initial, limit, analysis.w_max(), settings.step);
+      const MeasuredLimit measured =
+          measured_limit(list[j], model, initial, limit, analysis.w_max(), settings.step, settings.stability_budget);
       s.measured_stable_h = measured.h;
       s.measured_resolution = measured.resolution;
       finished(nullptr);

@@ -44,7 +44,10 @@ TEST(Compare, OnTheSpringWritesResultsSummaryAndCharts) {
     EXPECT_NEAR(std::stod(summary[k][2]), table, 0.2) << summary[k][0];
   }
   const auto results = csv(dir / "results.csv");
-  EXPECT_EQ(results[0].size(), 13u);
+  EXPECT_EQ(results[0].size(), 15u);
+  EXPECT_EQ(results[0][14], "unstable");
+  EXPECT_EQ(summary[0].size(), 9u);
+  EXPECT_EQ(summary[0][5], "measured_resolution");
   EXPECT_GT(results.size(), 40u);
   for (const char* part : {"reference: exact solution", "symplectic-euler", "0.2 s", "0.2828 s", "never", "always"})
     EXPECT_NE(r.out.find(part), std::string::npos) << part << "\n" << r.out;
@@ -64,7 +67,7 @@ TEST_P(EveryScene, IsChartedWithoutError) {
   TempDir dir;
   const Result r = springlab("compare " + name + " --software --points 2 --duration " + std::to_string(20 * scene.dt) +
                              " --drift-duration " + std::to_string(20 * scene.dt) + " --dt-range " + range.str() +
-                             " --tol-range 1e-5:1e-4 --out " + dir.path.string());
+                             " --tol-range 1e-5:1e-4 --stability-budget 1e6 --out " + dir.path.string());
   if (scene.ik) {  // no integrator to chart: said so, and nothing written
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.err.find("inverse-kinematics scene"), std::string::npos) << r.err;

@@ -90,15 +90,40 @@ TEST(Run, IntegerOptionsTakeAnyWholeNumber) {
 
 TEST(Run, DivergenceExitsThreeAndSaysWhereAndWhy) {
   TempDir dir;
-  const Result r = springlab("run spring --method euler --dt 0.01 --duration 100 --csv " + (dir / "t.csv").string());
+  // The linear spring (rest length 0) under symplectic Euler at h w = 3: past its limit 2, the
+  // energy grows about fortyfold a step and passes 1e6 times the scene's scale within a second.
+  const Result r = springlab("run spring --set springs.0.rest_length=0 --set particles.1.position=[0.5,0,0] "
+                             "--method symplectic-euler --dt 0.3 --duration 100 --csv " + (dir / "t.csv").string());
   EXPECT_EQ(r.status, 3);
-  for (const char* part : {"diverged during step", "t = ", "euler", "h = 0.01 s", "unstable at any step", "1e6 times"})
+  for (const char* part : {"diverged during step", "t = ", "symplectic-euler", "h = 0.3 s", "stable up to h = 0.2 s",
+                           "1e6 times", "10 rad/s"})
     EXPECT_NE(r.err.find(part), std::string::npos) << part << "\n" << r.err;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  // A warning before the run (the step is past the limit), then the divergence.
+  const auto said = lines(r.err);
+  ASSERT_EQ(said.size(), 2u) << r.err;
+  EXPECT_NE(said[0].find("warning: spring: h = 0.3 s is past symplectic-euler's stability limit (0.2 s"),
+            std::string::npos) << said[0];
+  EXPECT_NE(said[1].find("diverged during step"), std::string::npos) << said[1];
   // The trace up to the divergence is complete and kept.
   const auto rows = lines(read_file(dir / "t.csv"));
-  EXPECT_GT(rows.size(), 1000u);
+  EXPECT_GT(rows.size(), 2u);
   for (const auto& row : rows) EXPECT_EQ(row.find("nan"), std::string::npos);
+}
+
+// The energy audit: explicit Euler on the undamped spring gains energy at every step and never
+// stops; long before the energy reaches 1e6 times the scene's scale, the run is reported as
+// numerically unstable, with where it started.
+TEST(Run, AnInstabilityCaughtByTheAuditExitsThreeToo) {
+  TempDir dir;
+  const Result r = springlab("run spring --method euler --dt 0.01 --duration 100 --csv " + (dir / "t.csv").string());
+  EXPECT_EQ(r.status, 3);
+  for (const char* part : {"went numerically unstable during step", "created", "since step", "t = ", "euler",
+                           "h = 0.01 s", "unstable at any step"})
+    EXPECT_NE(r.err.find(part), std::string::npos) << part << "\n" << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  const auto rows = lines(read_file(dir / "t.csv"));
+  EXPECT_GT(rows.size(), 100u);
+  EXPECT_LT(rows.size(), 1000u);  // stopped within seconds, not at 1e6 times the scale
 }
 
 struct BadInput {

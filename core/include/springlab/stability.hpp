@@ -138,12 +138,13 @@ class StabilityAnalysis {
 // ---- Measured by runs ---------------------------------------------------------------------------
 
 // The largest step at which the method's own runs hold, found by bisection on h: each run starts
-// at the scene's equilibrium (colliders and fields left out) with a tiny random push (the linear regime) and counts as unstable when its
-// energy grows a thousandfold. A run is long enough to see a thousandfold growth at the
-// bracket's width (`resolution`, relative) for the mode `expected` names, up to max_steps steps;
-// the bracket stops narrowing where runs would have to be longer, and `resolution` says how
-// far it got. 0 = unstable from guess / 1000 down, infinity = stable past 1000 guess, NaN for the
-// adaptive methods.
+// at the scene's equilibrium (colliders and fields left out) with a tiny random push (the linear
+// regime) and counts as unstable when its energy grows a thousandfold. A run is as long as the
+// mode `expected` names needs to grow 1e9-fold just past the bracket, within a budget of work
+// (particle- and spring-steps; 2e8 is about a second here), a probe at most a twentieth of it;
+// the bracket stops narrowing where runs would have to be longer or the budget is spent, and
+// `resolution` says how far it got. 0 = unstable from h w = 0.3 (or guess / 1000) down,
+// infinity = stable past 1000 guess, NaN for the adaptive methods.
 struct MeasuredLimit {
   double h = 0.0;
   // Relative: the bracket's width, or how far past a limit growth is too slow for the runs to
@@ -152,6 +153,6 @@ struct MeasuredLimit {
 };
 // `w_max` sets the scale when the expected limit has no mode (0 or infinity).
 MeasuredLimit measured_limit(Method method, const Model& model, const State& state, const StabilityLimit& expected,
-                             double w_max, const StepSettings& settings = {}, long max_steps = 200000);
+                             double w_max, const StepSettings& settings = {}, double budget = 2e8);
 
 }  // namespace springlab

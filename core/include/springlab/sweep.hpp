@@ -34,6 +34,7 @@ struct SweepSettings {
   int workers = 0;                         // threads running runs at once; 0: every core
   StepSettings step;
   bool stability = true;  // measure each method's largest stable step
+  double stability_budget = 2e8;  // particle- and spring-steps per method for that (stability.hpp)
   // The energy-drift runs: each method at this step for this long (0: no drift runs).
   double drift_h = 0.0, drift_duration = 0.0;
 };
