@@ -38,7 +38,7 @@ struct SimulationSettings {
   int energy_check_interval = 16;  // steps between divergence checks of the total energy
   bool track_dissipation = false;  // integrate the dissipated power (free with the explicit methods)
   // The audit's fraction (0: no audit). An audit tracks the dissipation whatever the flag above.
-  // The adaptive methods are not audited: they control each step's error, not its energy.
+  // Which methods it watches, and why: Simulation::audited().
   double audit_fraction = kAuditFraction;
 };
 
@@ -151,7 +151,6 @@ class Simulation {
   template <typename Change>
   void from_outside(const Change& change);
   bool audited() const;
-  double energy_correction();
   void audit(double total);
   void diverge(std::string reason);
 
@@ -179,7 +178,6 @@ class Simulation {
   double baseline_ = 0.0, external_ = 0.0, created_ = 0.0;
   EnergyAudit audit_;
   bool has_stiffness_ = false;
-  Points at_rest_, forces_;  // scratch for energy_correction()
 };
 
 }  // namespace springlab
