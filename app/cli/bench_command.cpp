@@ -1,5 +1,5 @@
 // springlab bench SCENE: the scene's step throughput with a method, without graphics, after a
-// warm-up; one key=value a line (particles, springs, steps, seconds, steps_per_s,
+// warm-up; one key=value a line (substeps and whether chosen, particles, springs, steps, seconds, steps_per_s,
 // ns_per_spring_step, peak_rss_mb, and for implicit methods solver_iterations_per_step and
 // unconverged_solves), for scripts and the README's figures. With --repeat N the steps are timed
 // N times over (the simulation going on: the same work each time for the explicit methods; an
@@ -56,11 +56,12 @@ int bench(const BenchOptions& o) {
   getrusage(RUSAGE_SELF, &usage);
   const double springs = s.model().spring_count();
   const auto ns_per_spring_step = [&](double time) {
-    return springs > 0 ? 1e9 * time / (taken * p.settings.substeps * springs) : 0.0;
+    return springs > 0 ? 1e9 * time / (taken * s.settings().substeps * springs) : 0.0;
   };
-  std::printf("scene=%s\nmethod=%s\nthreads=%d\nparticles=%d\nsprings=%d\nsteps=%lld\nseconds=%.6g\n"
-              "steps_per_s=%.6g\nns_per_spring_step=%.4g\npeak_rss_mb=%.1f\n",
-              p.scene.name.c_str(), method_info(p.settings.method).name, thread_count(), s.model().particle_count(),
+  std::printf("scene=%s\nmethod=%s\nthreads=%d\nsubsteps=%d\nsubsteps_auto=%d\nparticles=%d\nsprings=%d\n"
+              "steps=%lld\nseconds=%.6g\nsteps_per_s=%.6g\nns_per_spring_step=%.4g\npeak_rss_mb=%.1f\n",
+              p.scene.name.c_str(), method_info(p.settings.method).name, thread_count(), s.settings().substeps,
+              s.auto_substeps() ? 1 : 0, s.model().particle_count(),
               s.model().spring_count(), static_cast<long long>(taken), seconds, taken / seconds,
               ns_per_spring_step(seconds), static_cast<double>(usage.ru_maxrss) / 1024.0);
   if (o.repeat > 1)  // the middle run (the mean of the two middle ones for an even count)

@@ -144,6 +144,9 @@ int compare(const CompareOptions& o) {
   s.duration = o.sim.duration ? *o.sim.duration : std::min(p.scene.duration, 2.0);
   if (s.duration < s.h_max) throw InputError("--duration: must be at least the largest step (" + step_text(s.h_max) + ")");
   s.drift_h = dt;
+  s.drift_substeps = p.settings.substeps;
+  s.drift_auto_substeps = p.settings.auto_substeps;
+  s.drift_safety = p.settings.safety;
   if (o.drift_duration) check_option("--drift-duration", *o.drift_duration, 0.0, 1e6, false, " s");
   s.drift_duration = o.drift_duration ? *o.drift_duration : p.scene.duration;
   check_option("--stability-budget", o.stability_budget, 0.0, 1e13, false);
@@ -190,6 +193,15 @@ int compare(const CompareOptions& o) {
     if (!m.theory_exact && finite) theory = ">= " + theory;
     std::printf("%-18s %-16s %-22s %-16s %s\n", method_info(m.method).name, order, measured.c_str(), theory.c_str(),
                 ratio);
+  }
+  // The sweep's runs take each step as given (the step is what it varies); the drift runs, at
+  // the scene's step, take the sub-steps `run` would.
+  if (!r.drift.empty()) {
+    std::string list;
+    for (const DriftTrace& d : r.drift)
+      list += (list.empty() ? "" : ", ") + std::string(method_info(d.method).name) + " " + std::to_string(d.substeps);
+    std::printf("\ndrift      at dt = %s, sub-steps (%s): %s\n", step_text(dt).c_str(),
+                p.settings.auto_substeps ? "auto" : "fixed", list.c_str());
   }
   std::printf("\nwritten    %s/results.csv, summary.csv%s\n", o.out.c_str(),
               o.no_charts ? "" : ", work-precision, convergence, stability, energy-drift (.png, .svg)");

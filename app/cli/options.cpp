@@ -44,8 +44,9 @@ CLI::Validator whole_number(double lo, double hi) {
 void add_sim_options(CLI::App& c, SimOptions& o, bool with_length) {
   c.add_option("--method", o.method, "integration method (springlab list shows them)");
   c.add_option("--dt", o.dt, "time step in seconds (default: the scene's)");
-  c.add_option("--substeps", o.substeps, "integrator steps per step: h = dt / substeps")
-      ->transform(whole_number(kSubsteps.lo, kSubsteps.hi));
+  c.add_option("--substeps", o.substeps,
+               "integrator steps per step, h = dt / substeps; auto (the default): the fewest that keep h within "
+               "the scene's safe fraction of the method's stability limit");
   if (with_length) {
     c.add_option("--steps", o.steps, "number of steps to simulate")
         ->transform(whole_number(kSteps.lo, kSteps.hi));
@@ -61,16 +62,34 @@ void add_sim_options(CLI::App& c, SimOptions& o, bool with_length) {
 }
 
 void warn_if_unstable(Simulation& sim, const std::string& scene) {
-  const StabilityLimit& limit = sim.stability_limit();
-  if (!std::isfinite(limit.h) || limit.h <= 0.0 || sim.h() <= limit.h) return;
-  const int substeps = static_cast<int>(std::ceil(sim.h() / (0.9 * limit.h))) * sim.settings().substeps;
-  std::fprintf(stderr,
-               "springlab: warning: %s: h = %.4g s is past %s's %s (%.4g s, h w_max = %.3g); %s: use "
-               "--substeps %d or --dt %.3g\n",
-               scene.c_str(), sim.h(), method_info(sim.settings().method).name,
+  const StabilityLimit& limit = sim.stability_limit();  // (made now: with automatic sub-steps, chooses them)
+  if (!std::isfinite(limit.h) || sim.h() <= limit.h) return;
+  if (limit.h == 0.0) {
+    std::fprintf(stderr, "springlab: warning: %s: %s is unstable at any step here (not enough damping): use a method "
+                 "that is stable without damping (symplectic-euler, verlet, rk4, implicit-euler) or add damping\n",
+                 scene.c_str(), method_info(sim.settings().method).name);
+    return;
+  }
+  const std::string method = method_info(sim.settings().method).name;
+  if (sim.auto_substeps()) {
+    std::fprintf(stderr,
+                 "springlab: warning: %s: the automatic sub-steps reached their cap (%d), and h = %.4g s is still "
+                 "past %s's %s (%.4g s); it will most likely go unstable: use a smaller --dt or a more stable "
+                 "--method (implicit-euler)\n",
+                 scene.c_str(), kMaxAutoSubsteps, sim.h(), method.c_str(),
+                 limit.exact ? "stability limit" : "proven stable step", limit.h);
+    return;
+  }
+  const double substeps = std::ceil(sim.h() / (0.9 * limit.h)) * sim.settings().substeps;
+  char fix[96];
+  if (substeps <= kSubsteps.hi)
+    std::snprintf(fix, sizeof fix, "--substeps %.0f (or auto) or --dt %.3g", substeps, 0.9 * limit.h * sim.settings().substeps);
+  else
+    std::snprintf(fix, sizeof fix, "--dt %.3g or a more stable --method (implicit-euler)", 0.9 * limit.h * sim.settings().substeps);
+  std::fprintf(stderr, "springlab: warning: %s: h = %.4g s is past %s's %s (%.4g s, h w_max = %.3g); %s: use %s\n",
+               scene.c_str(), sim.h(), method.c_str(),
                limit.exact ? "stability limit" : "proven stable step (the exact limit may be higher)", limit.h,
-               sim.h() * sim.stability().w_max(), limit.exact ? "it will most likely diverge" : "it may diverge",
-               substeps, 0.9 * limit.h * sim.settings().substeps);
+               sim.h() * sim.stability().w_max(), limit.exact ? "it will most likely diverge" : "it may diverge", fix);
 }
 
 void check_option(const char* name, double value, double lo, double hi, bool lo_open,
@@ -86,7 +105,13 @@ Prepared prepare(const std::string& scene_name, const SimOptions& o) {
   Prepared p;
   // Options first: a bad option is reported before any file is read.
   if (o.dt) check_option("--dt", *o.dt, 0.0, 1.0, true, " s");
-  if (o.substeps) check_option("--substeps", *o.substeps, kSubsteps.lo, kSubsteps.hi, false);
+  std::optional<int> substeps;  // fixed; none: automatic
+  if (o.substeps && *o.substeps != "auto") {
+    std::string text = *o.substeps;
+    const std::string error = whole_number(kSubsteps.lo, kSubsteps.hi)(text);
+    if (!error.empty()) throw InputError("--substeps: " + error + " (or auto)");
+    substeps = std::stoi(text);
+  }
   if (o.steps) check_option("--steps", static_cast<double>(*o.steps), kSteps.lo, kSteps.hi, false);
   if (o.duration) check_option("--duration", *o.duration, 0.0, 1e7, true, " s");
   if (o.ks) check_option("--ks", *o.ks, 0.0, 1e12, false, " N/m");
@@ -114,7 +139,12 @@ Prepared prepare(const std::string& scene_name, const SimOptions& o) {
 
   p.settings.method = method ? *method : s.methods.front();
   p.settings.dt = o.dt ? *o.dt : s.dt;
-  p.settings.substeps = o.substeps ? *o.substeps : s.substeps;
+  // Sub-steps: fixed by --substeps N or by the scene's file, else chosen from the stability
+  // limit (with the scene's safe fraction) when the simulation first steps.
+  const int fixed = substeps ? *substeps : s.substeps;
+  p.settings.auto_substeps = fixed == 0;
+  p.settings.substeps = std::max(1, fixed);
+  p.settings.safety = s.safety;
   p.settings.step.tolerance = o.tol ? *o.tol : s.tolerance;
   const double duration = o.duration ? *o.duration : s.duration;
   if (!o.steps) {

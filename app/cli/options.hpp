@@ -16,7 +16,7 @@ namespace springlab::app {
 struct SimOptions {
   std::optional<std::string> method;
   std::optional<double> dt;
-  std::optional<int> substeps;
+  std::optional<std::string> substeps;  // a whole number, or "auto"
   std::optional<std::int64_t> steps;
   std::optional<double> duration;
   std::optional<double> ks, kd, tol;

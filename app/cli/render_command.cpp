@@ -202,6 +202,9 @@ int render(const RenderOptions& o) {
               static_cast<long long>(written), written == 1 ? "" : "s", scene_name.c_str(), width, height, o.fps,
               session.primary().sim.state().t, wall, wall > 0 ? written / wall : 0.0, offscreen.renderer_name().c_str());
   std::printf("output     %s\n", (o.out ? *o.out : *o.video).c_str());
+  for (const Lane& lane : session.lanes())
+    std::printf("substeps   %s: %d (%s)\n", method_info(lane.sim.settings().method).name, lane.sim.settings().substeps,
+                !lane.sim.auto_substeps() ? "fixed" : lane.sim.substeps_capped() ? "auto, capped" : "auto");
   for (Lane& lane : session.lanes())
     if (lane.sim.diverged()) {
       std::fflush(stdout);

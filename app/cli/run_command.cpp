@@ -117,9 +117,14 @@ int run(const RunOptions& o) {
   const MethodInfo& m = method_info(p.settings.method);
   std::printf("scene      %s (%s): %d particles, %d springs\n", p.scene.name.c_str(),
               p.scene.file.c_str(), sim.model().particle_count(), sim.model().spring_count());
-  std::printf("method     %s, dt = %s s, %d substep%s (h = %s s)\n", m.name,
-              format(p.settings.dt).c_str(), p.settings.substeps, p.settings.substeps == 1 ? "" : "s",
-              format(sim.h()).c_str());
+  const int substeps = sim.settings().substeps;
+  std::string chosen = "fixed";
+  if (sim.auto_substeps())
+    chosen = !sim.substeps_capped() ? "auto: h within " + format(sim.settings().safety) + " of the limit"
+             : sim.stable_step() == 0.0 ? "auto: unstable at any step, sub-steps cannot help"
+                                        : "auto, capped at " + std::to_string(kMaxAutoSubsteps) + ": still past the limit";
+  std::printf("method     %s, dt = %s s, %d substep%s (%s; h = %s s)\n", m.name, format(p.settings.dt).c_str(),
+              substeps, substeps == 1 ? "" : "s", chosen.c_str(), format(sim.h()).c_str());
   std::printf("steps      %lld of %lld, simulated %s s in %s s of wall time (%s steps/s)\n",
               static_cast<long long>(taken), static_cast<long long>(p.steps),
               format(sim.state().t).c_str(), format(wall).c_str(),

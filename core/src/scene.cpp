@@ -9,6 +9,7 @@
 #include "generators.hpp"
 #include "ik_scene.hpp"
 #include "json_reader.hpp"
+#include "springlab/stability.hpp"
 
 namespace springlab {
 
@@ -194,7 +195,7 @@ Scene parse_scene(const std::string& text, const std::string& file,
   scene.name = std::filesystem::path(file).stem().string();
   ObjectReader top(doc, "", where);
   top.expect({"description", "view", "particles", "generators", "emitters", "ik", "springs", "gravity", "drag", "wind", "attractors",
-              "verlet_damping", "particle_radius", "colliders", "methods", "dt", "substeps", "duration", "tolerance",
+              "verlet_damping", "particle_radius", "colliders", "methods", "dt", "substeps", "safety", "duration", "tolerance",
               "camera", "trails"});
   top.finish();  // a misspelt field first: it may be why something else looks missing
   scene.description = top.text("description", "");
@@ -341,7 +342,15 @@ Scene parse_scene(const std::string& text, const std::string& file,
     scene.methods = {Method::SymplecticEuler};
   }
   scene.dt = top.number("dt", 0.01, {0.0, 1.0, true, false});
-  scene.substeps = static_cast<int>(top.integer("substeps", 1, 1, 100000));
+  // "substeps": a whole number fixes them, "auto" (the default) chooses them from the limit.
+  if (const json* sub = top.raw("substeps"); sub && sub->is_string()) {
+    if (sub->get<std::string>() != "auto")
+      top.fail("substeps", "must be \"auto\" or a whole number in [1, 100000], got " + json_reader::dump(*sub));
+    scene.substeps = 0;
+  } else {
+    scene.substeps = sub ? static_cast<int>(top.integer("substeps", 1, 1, 100000)) : 0;
+  }
+  scene.safety = top.number("safety", kSafeFraction, {0.0, 10.0, true, false});
   scene.duration = top.number("duration", 10.0, positive(1e7));
   scene.tolerance = top.number("tolerance", 1e-4, {0.0, 1.0, true, false});
   scene.camera = read_camera(top, view, x);

@@ -51,7 +51,11 @@ std::string Divergence::message() const {
   if (analysed && limit.mode && std::isfinite(limit.h) && limit.h > 0.0)
     s << ", set by a mode of " << format(limit.mode->w) << " rad/s with damping ratio "
       << format(limit.mode->damping_ratio());
-  s << ". Try a smaller --dt, more --substeps, or a more stable --method (implicit-euler).";
+  if (analysed && limit.h == 0.0)
+    s << ". No step is small enough: try a method stable without damping (symplectic-euler, verlet, rk4, "
+         "implicit-euler), or more damping.";
+  else
+    s << ". Try a smaller --dt, more --substeps, or a more stable --method (implicit-euler).";
   return s.str();
 }
 
@@ -129,6 +133,7 @@ void Simulation::audit(double total) {
   if (!stretch || !(stretch->rise[0] > threshold)) return;
   // Something was created: more than a stable method at this step could create for what damping
   // took out? (The analysis says how close to its limit the step is.)
+  if (!stability_ && !settings_.analyse_when_needed) return;  // asked again at the next window
   const StabilityLimit& limit = stability_limit();
   const double allowance = allowed_creation_ratio(settings_.method, h(), limit, model_.verlet_damping);
   const double rise = stretch->rise_for(allowance);
@@ -147,6 +152,7 @@ void Simulation::audit(double total) {
 
 bool Simulation::step() {
   if (divergence_) return false;
+  if (settings_.auto_substeps && !stability_ && settings_.analyse_when_needed) stability();  // chooses them
   const double h = this->h();
   const bool audit = audited();
   const bool dissipation = settings_.track_dissipation || audit;  // the audit's bookkeeping
@@ -262,8 +268,32 @@ const std::optional<Divergence>& Simulation::explain_divergence() {
 }
 
 const StabilityAnalysis& Simulation::stability() {
-  if (!stability_) stability_ = std::make_shared<const StabilityAnalysis>(model_, current_);
+  if (!stability_) {
+    stability_ = std::make_shared<const StabilityAnalysis>(model_, current_);
+    choose_substeps();
+  }
   return *stability_;
+}
+
+void Simulation::set_stability(std::shared_ptr<const StabilityAnalysis> analysis) {
+  stability_ = std::move(analysis);
+  choose_substeps();
+}
+
+void Simulation::choose_substeps() {
+  if (!settings_.auto_substeps || !stability_) return;
+  const SubstepChoice choice =
+      springlab::choose_substeps(stability_->limit(settings_.method), settings_.dt, settings_.safety);
+  substeps_capped_ = choice.capped;
+  if (choice.substeps != settings_.substeps) substeps_changed(choice.substeps);
+}
+
+void Simulation::substeps_changed(int substeps) {
+  settings_.substeps = substeps;
+  t_since_ = current_.t;
+  substeps_done_ = 0;
+  ws_.invalidate();
+  audit_.reset();  // a new step: what a stable run may create changes
 }
 
 void Simulation::model_changed() {
@@ -277,22 +307,28 @@ void Simulation::set_method(Method method) {
   audit_.reset();  // a new step: what a stable run may create changes
   ws_.invalidate();
   ws_.adaptive_step = 0.0;
+  choose_substeps();
 }
 
 void Simulation::set_dt(double dt) {
   settings_.dt = dt;
-  audit_.reset();  // a new step: what a stable run may create changes
+  audit_.reset();
   t_since_ = current_.t;
   substeps_done_ = 0;
   ws_.invalidate();
+  choose_substeps();
 }
 
 void Simulation::set_substeps(int substeps) {
-  settings_.substeps = substeps;
-  audit_.reset();  // a new step: what a stable run may create changes
-  t_since_ = current_.t;
-  substeps_done_ = 0;
-  ws_.invalidate();
+  settings_.auto_substeps = false;
+  substeps_capped_ = false;
+  substeps_changed(substeps);
+}
+
+void Simulation::set_auto_substeps(double safety) {
+  settings_.auto_substeps = true;
+  settings_.safety = safety;
+  choose_substeps();
 }
 
 void Simulation::set_step_settings(const StepSettings& step) { settings_.step = step; }

@@ -361,4 +361,17 @@ StabilityAnalysis::StabilityAnalysis(const Model& model, const State& state, int
 
 const StabilityLimit& StabilityAnalysis::limit(Method method) const { return limits_[static_cast<int>(method)]; }
 
+SubstepChoice choose_substeps(const StabilityLimit& limit, double dt, double fraction, int cap) {
+  SubstepChoice choice;
+  if (std::isnan(limit.h) || std::isinf(limit.h)) return choice;
+  if (limit.h == 0.0) {  // unstable at any step: no number of sub-steps helps
+    choice.capped = true;
+    return choice;
+  }
+  const double wanted = std::ceil(dt / (fraction * limit.h) * (1.0 - 1e-12));
+  choice.capped = !(wanted <= cap);
+  choice.substeps = choice.capped ? cap : std::max(1, static_cast<int>(wanted));
+  return choice;
+}
+
 }  // namespace springlab

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <mutex>
 #include <sstream>
 #include <thread>
@@ -217,7 +218,8 @@ SweepResult run_sweep(const Model& model, const State& initial, const SweepSetti
       jobs.push_back({m, 1, settings.tol_max * std::pow(settings.tol_min / settings.tol_max, f)});
     }
   }
-  const StabilityAnalysis analysis(model, initial);
+  const auto shared = std::make_shared<const StabilityAnalysis>(model, initial);
+  const StabilityAnalysis& analysis = *shared;
   result.w_max = analysis.w_max();
   const bool drift = settings.drift_h > 0.0 && settings.drift_duration > 0.0;
   const int stability_jobs = settings.stability ? static_cast<int>(list.size()) : 0;
@@ -264,10 +266,15 @@ SweepResult run_sweep(const Model& model, const State& initial, const SweepSetti
     SimulationSettings s;
     s.method = list[j];
     s.dt = settings.drift_h;
+    s.substeps = settings.drift_substeps;
+    s.auto_substeps = settings.drift_auto_substeps;
+    s.safety = settings.drift_safety;
     s.step = settings.step;
     s.track_dissipation = true;
     s.audit_fraction = 0.0;  // the drift is what the chart shows, however far it goes
     Simulation sim(model, initial, s);
+    sim.set_stability(shared);  // the same scene: chooses the sub-steps
+    trace.substeps = sim.settings().substeps;
     const double scale = sim.energy_scale(), e0 = sim.energy().total();
     const auto steps = static_cast<std::int64_t>(std::llround(settings.drift_duration / settings.drift_h));
     const std::int64_t every = std::max<std::int64_t>(1, steps / 400);

@@ -62,7 +62,8 @@ struct Scene {
   State state;
   std::vector<Method> methods;  // to show side by side; the first is the default
   double dt = 0.01;
-  int substeps = 1;
+  int substeps = 0;  // 0: automatic (stability.hpp, choose_substeps)
+  double safety = 0.5;  // the fraction of the limit automatic sub-steps keep h within
   double duration = 10.0;
   double tolerance = 1e-4;
   Camera camera;

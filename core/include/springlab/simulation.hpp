@@ -33,7 +33,16 @@ inline constexpr double kAuditFraction = 1e-3;
 struct SimulationSettings {
   Method method = Method::SymplecticEuler;
   double dt = 0.01;  // s, one step
-  int substeps = 1;  // integrator steps per step
+  int substeps = 1;  // integrator steps per step (chosen, with auto_substeps)
+  // Automatic sub-steps (stability.hpp, choose_substeps): the fewest that keep h within `safety`
+  // of the method's stated limit, chosen again whenever the analysis is made again (the scene
+  // changed: k_s, mass, pins...) and when the method or dt change.
+  bool auto_substeps = false;
+  double safety = kSafeFraction;
+  // A step that needs the analysis (automatic sub-steps, the audit) makes it there and then; the
+  // app instead makes it on a worker thread and hands it over (set_stability), stepping on
+  // meanwhile with the sub-steps it has.
+  bool analyse_when_needed = true;
   StepSettings step;
   int energy_check_interval = 16;  // steps between divergence checks of the total energy
   bool track_dissipation = false;  // integrate the dissipated power (free with the explicit methods)
@@ -110,7 +119,11 @@ class Simulation {
   const StabilityLimit& stability_limit() { return stability().limit(settings_.method); }
   double stable_step() { return stability_limit().h; }
   bool has_stability() const { return stability_ != nullptr; }
-  void set_stability(std::shared_ptr<const StabilityAnalysis> analysis) { stability_ = std::move(analysis); }
+  void set_stability(std::shared_ptr<const StabilityAnalysis> analysis);
+  std::shared_ptr<const StabilityAnalysis> stability_if_any() const { return stability_; }
+  // Automatic sub-steps: whether on, and whether the choice reached kMaxAutoSubsteps.
+  bool auto_substeps() const { return settings_.auto_substeps; }
+  bool substeps_capped() const { return substeps_capped_; }
   // The model and state an analysis must be made from to be the one stability() would make.
   // Changes every time the model or the pinning changes (a counter, compared by the app).
   std::uint64_t model_version() const { return model_version_; }
@@ -122,7 +135,8 @@ class Simulation {
   // Changes. Each takes effect at the next step.
   void set_method(Method method);
   void set_dt(double dt);
-  void set_substeps(int substeps);
+  void set_substeps(int substeps);  // fixes them (automatic sub-steps off)
+  void set_auto_substeps(double safety = kSafeFraction);
   void set_step_settings(const StepSettings& step);
   // k_s and k_d of the first material; the others keep their ratio to it (a cloth's stretch,
   // shear and bend springs stay in proportion). A ratio from zero sets every material.
@@ -147,6 +161,8 @@ class Simulation {
 
  private:
   void model_changed();
+  void choose_substeps();
+  void substeps_changed(int substeps);
   // Runs `change`, counting the jump in the total energy it makes as work done from outside.
   template <typename Change>
   void from_outside(const Change& change);
@@ -178,6 +194,7 @@ class Simulation {
   double baseline_ = 0.0, external_ = 0.0, created_ = 0.0;
   EnergyAudit audit_;
   bool has_stiffness_ = false;
+  bool substeps_capped_ = false;
 };
 
 }  // namespace springlab

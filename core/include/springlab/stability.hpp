@@ -135,6 +135,29 @@ class StabilityAnalysis {
   std::vector<ModePoint> modes_;
 };
 
+// ---- Automatic sub-steps ------------------------------------------------------------------------
+
+// The fraction of a method's stated limit the automatic sub-steps keep h within, unless a scene
+// says otherwise ("safety": a scene made to show a divergence gives one above 1). A half: the
+// limit is that of small motions about the equilibrium, and a rope that whips or a cloth that
+// swings stretches its springs beyond their hanging tension (the fastest sideways modes of a
+// swinging rope run up to twice as fast as at rest).
+inline constexpr double kSafeFraction = 0.5;
+// The most sub-steps the automatic choice takes (a stiff chain under explicit Euler would want
+// millions a frame); reaching it is said.
+inline constexpr int kMaxAutoSubsteps = 10000;
+
+struct SubstepChoice {
+  int substeps = 1;
+  // The limit wanted more than the cap, or is 0 (unstable at any step: then no number of
+  // sub-steps helps, and the choice is 1).
+  bool capped = false;
+};
+// The fewest sub-steps n with dt / n <= fraction * limit.h (1 when the method is stable at any
+// step or chooses its own steps).
+SubstepChoice choose_substeps(const StabilityLimit& limit, double dt, double fraction,
+                              int cap = kMaxAutoSubsteps);
+
 // ---- Measured by runs ---------------------------------------------------------------------------
 
 // The largest step at which the method's own runs hold, found by bisection on h: each run starts

@@ -35,8 +35,12 @@ struct SweepSettings {
   StepSettings step;
   bool stability = true;  // measure each method's largest stable step
   double stability_budget = 2e8;  // particle- and spring-steps per method for that (stability.hpp)
-  // The energy-drift runs: each method at this step for this long (0: no drift runs).
+  // The energy-drift runs: each method at this step for this long (0: no drift runs), with these
+  // sub-steps (automatic, as the app and `run` choose them, or fixed).
   double drift_h = 0.0, drift_duration = 0.0;
+  int drift_substeps = 1;
+  bool drift_auto_substeps = false;
+  double drift_safety = kSafeFraction;
 };
 
 struct SweepRun {
@@ -71,6 +75,7 @@ struct MethodSummary {
 
 struct DriftTrace {
   Method method = Method::Euler;
+  int substeps = 1;  // chosen, or as given
   std::vector<double> t, drift;  // drift = (E + dissipated - E0) / energy scale
   bool diverged = false;
 };
