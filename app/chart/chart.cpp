@@ -6,11 +6,20 @@
 
 namespace springlab::chart {
 
-std::string format_tick(double value) {
+std::string format_tick(double value, double step) {
   if (value == 0.0) return "0";
   char s[32];
   const double a = std::abs(value);
   if (a >= 1e-3 && a < 1e5) {
+    // Decimals enough for the step's last significant digit (2.5e-4 needs 5), at least as many
+    // significant digits as %.4g gives.
+    if (step > 0.0) {
+      const double lead = std::floor(std::log10(step) + 1e-9);
+      const double mantissa = step / std::pow(10.0, lead);
+      const int decimals = std::max(0, static_cast<int>(-lead) + (std::abs(mantissa - std::round(mantissa)) > 1e-6 ? 1 : 0));
+      std::snprintf(s, sizeof s, "%.*f", std::min(decimals, 12), value);
+      return s;
+    }
     std::snprintf(s, sizeof s, "%.4g", value);
   } else {  // 1e-6, 2.5e7: a short mantissa and a bare exponent
     int exponent = static_cast<int>(std::floor(std::log10(a)));
@@ -19,7 +28,10 @@ std::string format_tick(double value) {
       mantissa /= 10.0;
       ++exponent;
     }
-    std::snprintf(s, sizeof s, "%.3ge%d", mantissa, exponent);
+    // Digits enough for the step, relative to the exponent.
+    int digits = 3;
+    if (step > 0.0) digits = std::clamp(exponent - static_cast<int>(std::floor(std::log10(step) + 1e-9)) + 1, 1, 12);
+    std::snprintf(s, sizeof s, "%.*ge%d", digits, mantissa, exponent);
   }
   return s;
 }
@@ -53,8 +65,10 @@ std::vector<Tick> ticks(double lo, double hi, bool log, int target) {
       step = m * magnitude;
       break;
     }
-  for (double v = std::ceil(lo / step - 1e-9) * step; v <= hi + 1e-9 * step; v += step)
-    out.push_back({std::abs(v) < 1e-12 * step ? 0.0 : v, format_tick(std::abs(v) < 1e-12 * step ? 0.0 : v), true});
+  for (double v = std::ceil(lo / step - 1e-9) * step; v <= hi + 1e-9 * step; v += step) {
+    const double at = std::abs(v) < 1e-12 * step ? 0.0 : v;
+    out.push_back({at, format_tick(at, step), true});
+  }
   return out;
 }
 
@@ -62,12 +76,14 @@ void axis_range(const Chart& chart, bool x_axis, double& lo, double& hi) {
   const Axis& axis = x_axis ? chart.x : chart.y;
   lo = std::numeric_limits<double>::infinity();
   hi = -lo;
-  for (const Series& s : chart.series)
+  for (const Series& s : chart.series) {
+    if (s.escapes && !x_axis) continue;  // a diverged lane does not set the scale
     for (double v : x_axis ? s.x : s.y) {
       if (!std::isfinite(v) || (axis.log && v <= 0)) continue;
       lo = std::min(lo, v);
       hi = std::max(hi, v);
     }
+  }
   if (axis.min) lo = *axis.min;
   if (axis.max) hi = *axis.max;
   if (!std::isfinite(lo) || !std::isfinite(hi)) {

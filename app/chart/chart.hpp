@@ -19,6 +19,9 @@ struct Series {
   bool markers = false;            // a dot on each point
   std::vector<bool> crossed;       // per point: drawn as a cross (a diverged run)
   float width = 2.0f;              // pixels
+  // A series that left the sane range (a diverged lane): it does not set the axes' range, and is
+  // drawn up to where it leaves the plot, with a marker on the edge there.
+  bool escapes = false;
 };
 
 struct Axis {
@@ -46,7 +49,8 @@ std::vector<Tick> ticks(double lo, double hi, bool log, int target_count = 5);
 // The range the axis shows: the data's, widened to whole ticks, or the one set.
 void axis_range(const Chart& chart, bool x_axis, double& lo, double& hi);
 
-// "0.5", "1e-06", "120": short tick labels.
-std::string format_tick(double value);
+// "0.5", "1e-06", "120": short tick labels; with the ticks' spacing, as many digits as the labels
+// need to differ ("1.9990", "1.9995").
+std::string format_tick(double value, double step = 0.0);
 
 }  // namespace springlab::chart

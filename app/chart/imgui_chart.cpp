@@ -89,6 +89,18 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
     for (std::size_t k = 0; k < s.x.size(); ++k) {
       const double x = s.x[k], y = s.y[k];
       const bool ok = std::isfinite(x) && std::isfinite(y) && (!chart.x.log || x > 0) && (!chart.y.log || y > 0);
+      if (s.escapes && (!ok || y > yhi || y < ylo)) {
+        // Leaving the plot: the line to its edge, a marker there, and nothing after.
+        if (!points.empty() && ok) {
+          const double edge = y > yhi ? yhi : ylo;
+          const double f = (edge - s.y[k - 1]) / (y - s.y[k - 1]);
+          const ImVec2 at(mx(s.x[k - 1] + f * (x - s.x[k - 1])), my(edge));
+          points.push_back(at);
+          const float r = 5.0f + s.width, d = y > yhi ? 1.0f : -1.0f;
+          list->AddTriangleFilled(ImVec2(at.x - r, at.y + d * 1.7f * r), ImVec2(at.x + r, at.y + d * 1.7f * r), at, c);
+        }
+        break;
+      }
       if (!ok) {
         flush();
         continue;
@@ -110,21 +122,26 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
   list->PopClipRect();
 
   if (chart.legend) {
-    float y = top + 4.0f, width = 0.0f;
+    // At most the plot's width: a longer label wraps onto a second line.
+    const float most = std::max(60.0f, right - left - 40.0f);
+    float width = 0.0f, height = 0.0f;
     for (const Series& s : chart.series)
-      if (!s.label.empty()) width = std::max(width, ImGui::CalcTextSize(s.label.c_str()).x);
+      if (!s.label.empty()) {
+        const ImVec2 size = ImGui::CalcTextSize(s.label.c_str(), nullptr, false, most);
+        width = std::max(width, size.x);
+        height += size.y;
+      }
     const float x = right - width - 34.0f;
-    int count = 0;
-    for (const Series& s : chart.series) count += !s.label.empty();
-    if (count > 0)
-      list->AddRectFilled(ImVec2(x - 6, y - 2), ImVec2(right - 4, y + count * line_h + 2),
-                          ImGui::GetColorU32(ImGuiCol_WindowBg, 0.85f), 3.0f);
+    float y = top + 4.0f;
+    if (height > 0.0f)
+      list->AddRectFilled(ImVec2(x - 6, y - 2), ImVec2(right - 4, y + height + 2), ImGui::GetColorU32(ImGuiCol_WindowBg, 0.85f),
+                          3.0f);
     for (const Series& s : chart.series) {
       if (s.label.empty()) continue;
       const float mid = y + 0.5f * line_h;
       list->AddLine(ImVec2(x, mid), ImVec2(x + 20, mid), color(s.color), 3.0f);
-      list->AddText(ImVec2(x + 26, y), text, s.label.c_str());
-      y += line_h;
+      list->AddText(nullptr, 0.0f, ImVec2(x + 26, y), text, s.label.c_str(), nullptr, most);
+      y += ImGui::CalcTextSize(s.label.c_str(), nullptr, false, most).y;
     }
   }
   list->PopClipRect();

@@ -83,14 +83,16 @@ std::string to_svg(const Chart& chart, int width, int height) {
     << "\" height=\"" << bottom - top << "\"/></clipPath>\n<g clip-path=\"url(#plot)\">\n";
   for (const Series& series : chart.series) {
     const std::string colour = draw::hex(series.color);
+    const std::string opacity =
+        series.color.a < 1.0f ? " stroke-opacity=\"" + std::to_string(series.color.a) + "\"" : std::string();
     std::ostringstream points;
     points.precision(6);
     const auto flush = [&] {
       const std::string p = points.str();
       if (!p.empty() && p.find(' ') != p.rfind(' '))
         s << "<polyline fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"" << series.width
-          << "\" stroke-linejoin=\"round\"" << (series.dashed ? " stroke-dasharray=\"7 5\"" : "") << " points=\"" << p
-          << "\"/>\n";
+          << "\" stroke-linejoin=\"round\"" << (series.dashed ? " stroke-dasharray=\"7 5\"" : "") << opacity
+          << " points=\"" << p << "\"/>\n";
       points.str("");
     };
     for (std::size_t k = 0; k < series.x.size(); ++k) {

@@ -189,7 +189,10 @@ int render(const RenderOptions& o) {
     const draw::Frame frame = draw::build_frame(session, ui.view, viewport);
     offscreen.draw(frame, [&] {
       if (o.ui) ui::draw_panels(session, ui, stats, width, height);
-      ui::draw_overlay(session, viewport, ui.scale, scene_name, !o.ui);
+      ui::OverlayOptions overlay;
+      overlay.scale = ui.scale;
+      overlay.caption = !o.ui;
+      ui::draw_overlay(session, frame.camera, viewport, scene_name, overlay);
     });
     draw_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     drawn = k;

@@ -11,32 +11,39 @@
 
 namespace springlab::draw {
 
-// Distinct on a dark background and on a projector, and for the common colour-vision
-// deficiencies as far as nine colours allow (Okabe-Ito based).
-// The IK solvers, distinct from one another in compare mode.
-inline Rgba solver_color(IkSolver s) {
-  switch (s) {
-    case IkSolver::CCD: return {0.90f, 0.38f, 0.00f, 1};     // vermilion
-    case IkSolver::FABRIK: return {0.34f, 0.71f, 0.91f, 1};  // sky blue
-    case IkSolver::DLS: return {0.00f, 0.62f, 0.45f, 1};     // bluish green
+// One colour per method, the same in the scene, the charts, the legends and the SVG and PNG
+// charts: Okabe and Ito's palette for colour-blind viewers, on a dark background and a projector.
+// The five compared most (every shipped scene's lanes are among explicit Euler, symplectic Euler,
+// RK4, Verlet and implicit Euler) take its five most distinct hues, for protanopes and
+// deuteranopes too: vermilion, sky blue, bluish green, yellow and reddish purple; the rest take
+// orange, light grey, blue and a violet, and are seldom beside the ones they resemble.
+inline Rgba method_color(Method m) {
+  switch (m) {
+    case Method::Euler: return {0.90f, 0.38f, 0.00f, 1};            // vermilion  #E66100
+    case Method::SymplecticEuler: return {0.34f, 0.71f, 0.91f, 1};  // sky blue   #56B4E9
+    case Method::RK4: return {0.00f, 0.66f, 0.48f, 1};              // bluish green #00A87A
+    case Method::Verlet: return {0.94f, 0.89f, 0.26f, 1};           // yellow     #F0E442
+    case Method::ImplicitEuler: return {0.85f, 0.52f, 0.78f, 1};    // reddish purple #D985C7
+    case Method::Midpoint: return {0.90f, 0.62f, 0.00f, 1};         // orange     #E69F00
+    case Method::ModifiedEuler: return {0.78f, 0.78f, 0.78f, 1};    // light grey
+    case Method::AdaptiveEuler: return {0.20f, 0.50f, 0.85f, 1};    // blue
+    case Method::RK45: return {0.62f, 0.50f, 0.98f, 1};             // violet
   }
   return {1, 1, 1, 1};
 }
 
-inline Rgba method_color(Method m) {
-  switch (m) {
-    case Method::Euler: return {0.90f, 0.38f, 0.00f, 1};            // vermilion
-    case Method::SymplecticEuler: return {0.34f, 0.71f, 0.91f, 1};  // sky blue
-    case Method::Midpoint: return {0.80f, 0.47f, 0.74f, 1};         // reddish purple
-    case Method::ModifiedEuler: return {0.94f, 0.89f, 0.26f, 1};    // yellow
-    case Method::RK4: return {0.00f, 0.62f, 0.45f, 1};              // bluish green
-    case Method::AdaptiveEuler: return {0.90f, 0.62f, 0.00f, 1};    // orange
-    case Method::RK45: return {0.55f, 0.85f, 0.45f, 1};             // light green
-    case Method::ImplicitEuler: return {0.00f, 0.45f, 0.70f, 1};    // blue
-    case Method::Verlet: return {0.95f, 0.60f, 0.75f, 1};           // pink
+// The IK solvers, distinct from one another in compare mode (the same hues).
+inline Rgba solver_color(IkSolver s) {
+  switch (s) {
+    case IkSolver::CCD: return {0.90f, 0.38f, 0.00f, 1};     // vermilion
+    case IkSolver::FABRIK: return {0.34f, 0.71f, 0.91f, 1};  // sky blue
+    case IkSolver::DLS: return {0.00f, 0.66f, 0.48f, 1};     // bluish green
   }
   return {1, 1, 1, 1};
 }
+
+// A lane that diverged is faded, its label in this red.
+inline constexpr Rgba kDiverged{1.0f, 0.36f, 0.32f, 1};
 
 inline std::string hex(const Rgba& c) {
   char s[8];

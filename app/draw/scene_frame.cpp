@@ -71,8 +71,8 @@ Frame build_frame(const app::Session& session, const ViewOptions& options, Viewp
 
   // Sizes in pixels from the spacing: particles a fifth of a spring, lines thinner.
   const float spacing_px = static_cast<float>(options.spacing) / wpp;
-  const float radius = std::clamp(0.2f * spacing_px, 3.0f, 13.0f) * wpp;
-  const float line_width = std::clamp(0.07f * spacing_px, 1.5f, 4.0f);
+  const float radius = std::clamp(0.2f * spacing_px, 3.0f, 13.0f) * wpp * std::sqrt(options.line_scale);
+  const float line_width = std::clamp(0.07f * spacing_px, 1.5f, 4.0f) * options.line_scale;
 
   // Colliders.
   const float size = std::max(1.0f, static_cast<float>(options.spacing) * 20.0f);
@@ -101,10 +101,11 @@ Frame build_frame(const app::Session& session, const ViewOptions& options, Viewp
 
   const bool compare = session.comparing();
   for (const app::Lane& lane : session.lanes()) {
-    const State& state = lane.sim.state();
+    // A lane that diverged: its last sane state, faded (its last good state may be blown up).
+    const State& state = lane.sim.diverged() ? lane.sane : lane.sim.state();
     const Model& m = lane.sim.model();
     Rgba tint = lane.ik ? solver_color(lane.ik->solver) : method_color(lane.sim.settings().method);
-    if (lane.sim.diverged()) tint.a = 0.35f;  // frozen where it diverged, faded
+    if (lane.sim.diverged()) tint.a = 0.35f;
 
     if (options.surfaces && !compare)
       for (const Surface& s : scene.surfaces) frame.meshes.push_back(surface_mesh(s, state, kClothFront, kClothBack));
@@ -116,7 +117,7 @@ Frame build_frame(const app::Session& session, const ViewOptions& options, Viewp
         const double rest = m.rest_length[k];
         const double strain = rest > 0 ? (l - rest) / rest : 0.0;
         const Rgba c = compare || lane.ik ? tint : strain_color(strain, options.strain_scale);
-        frame.lines.push_back({f(state.x.row(a)), f(state.x.row(b)), c, c, line_width});
+        frame.lines.push_back({f(state.x.row(a)), f(state.x.row(b)), c, c, line_width});  // (sane state when diverged)
       }
     }
     if (options.trails)
@@ -153,8 +154,34 @@ Frame build_frame(const app::Session& session, const ViewOptions& options, Viewp
       if (lane.sim.diverged()) c.a = 0.35f;
       frame.particles.push_back({f(state.x.row(i)), held ? 1.3f * radius : radius, c, pinned});
     }
+    // The limiting mode: each particle's displacement in it, as an arrow from the particle.
+    if (options.mode && lane.analysis && !lane.sim.diverged()) {
+      const StabilityLimit& limit = lane.analysis->limit(lane.sim.settings().method);
+      if (limit.mode && limit.mode->shape.rows() == state.particle_count()) {
+        const Points& shape = limit.mode->shape;
+        const double length = 3.0 * options.spacing;
+        for (int i = 0; i < state.particle_count(); ++i) {
+          const double size = shape.row(i).norm();
+          if (size < 0.02) continue;
+          const Vec3f a = f(state.x.row(i)), b = f(state.x.row(i) + length * shape.row(i));
+          Rgba tip = kDiverged, tail = kDiverged;
+          tail.a = 0.3f;
+          tip.a = 0.4f + 0.6f * static_cast<float>(size);
+          frame.lines.push_back({a, b, tail, tip, 2.5f * options.line_scale});
+        }
+      }
+    }
   }
   return frame;
+}
+
+Eigen::Vector3d label_anchor(const app::Lane& lane) {
+  const State& s = lane.sim.diverged() ? lane.sane : lane.sim.state();
+  if (s.particle_count() == 0) return Eigen::Vector3d::Zero();
+  const Eigen::Vector3d lo = s.x.colwise().minCoeff().transpose(), hi = s.x.colwise().maxCoeff().transpose();
+  Eigen::Vector3d top = 0.5 * (lo + hi);
+  top.y() = hi.y();
+  return top;
 }
 
 }  // namespace springlab::draw

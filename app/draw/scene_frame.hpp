@@ -16,12 +16,22 @@ struct ViewOptions {
   bool trails = true;
   double strain_scale = 0.02;  // the strain at which the colour map saturates
   double spacing = 0.1;        // the scene's typical spring length, sizes particles and lines
+  // The mode that limits each lane's method (stability.hpp): an arrow at every particle, its
+  // displacement in that mode, the largest three spacings long, so that a class sees which motion
+  // blows up first.
+  bool mode = false;
+  float line_scale = 1.0f;  // presentation mode draws lines thicker
 
   // Defaults for a scene: a surface hides the springs and particles it is made of.
   static ViewOptions for_scene(const Scene& scene);
 };
 
-// `viewport`: where in the framebuffer the scene goes (the whole of it when empty).
+// `viewport`: where in the framebuffer the scene goes (the whole of it when empty). A lane that
+// diverged is drawn as its last sane state (Lane::sane), faded: never its blown-up geometry.
 Frame build_frame(const app::Session& session, const ViewOptions& options, Viewport viewport);
+
+// Where a lane is, for a label beside it: the top of its bounding box (the sane state's for a
+// lane that diverged).
+Eigen::Vector3d label_anchor(const app::Lane& lane);
 
 }  // namespace springlab::draw

@@ -27,13 +27,49 @@ Session::Session(Scene scene, SimulationSettings settings, double fps)
   } else if (scene_.model.gravity.squaredNorm() > 0.0) {
     scene_.model.gravity.cwiseAbs().maxCoeff(&watched_axis_);
   }
+  // A sane state keeps its particles within ten times the scene's size of its starting box.
+  const Vec3 lo = scene_.state.x.colwise().minCoeff().transpose(), hi = scene_.state.x.colwise().maxCoeff().transpose();
+  sane_reach_ = 10.0 * std::max({(hi - lo).norm(), scene_.camera.height, scene_.camera.distance, 1.0});
   for (Lane& lane : lanes_) sample(lane);
+}
+
+void Session::set_background_analysis(bool on) {
+  background_ = on;
+  settings_.analyse_when_needed = !on;
+  for (Lane& lane : lanes_) lane.sim.set_analyse_when_needed(!on);
+}
+
+bool Session::analysing() const {
+  for (const Lane& lane : lanes_)
+    if (lane.job.running()) return true;
+  return false;
+}
+
+void Session::update_analyses() {
+  for (Lane& lane : lanes_) {
+    Simulation& sim = lane.sim;
+    if (!background_) {
+      if (sim.has_stability()) lane.analysis = sim.stability_if_any();
+      continue;
+    }
+    if (std::optional<StabilityJob::Result> done = lane.job.take()) {
+      lane.analysis = done->analysis;  // shown even if the scene has moved on since
+      if (done->version == sim.model_version()) sim.set_stability(done->analysis);
+    }
+    if (sim.has_stability()) {
+      lane.analysis = sim.stability_if_any();
+      if (sim.diverged()) sim.explain_divergence();  // the limit in its message, now at no cost
+    } else if (!lane.job.running()) {
+      lane.job.start(sim.model(), sim.state(), sim.model_version());
+    }
+  }
 }
 
 Lane Session::make_lane(Method method, std::optional<IkSolver> solver) const {
   SimulationSettings s = settings_;
   s.method = method;
-  Lane lane{Simulation(scene_.model, scene_.state, s), {}, ExactOscillator::detect(scene_.model, scene_.state), {}, {}};
+  Lane lane{Simulation(scene_.model, scene_.state, s), {}, ExactOscillator::detect(scene_.model, scene_.state), {}, {}, {}, {},
+            scene_.state};
   lane.trails.resize(scene_.trails.size());
   if (scene_.ik) {
     const Vec3 target = scene_.state.x.row(scene_.ik->target).transpose();
@@ -100,7 +136,9 @@ void Session::sample(Lane& lane) {
   h.v.push(sim.state().v(watched_, watched_axis_));
   if (lane.exact) h.exact_x.push(lane.exact->at(t).x(watched_, watched_axis_));
   if (lane.ik) h.ik_error.push(lane.ik->status.error);
-  for (std::size_t k = 0; k < lane.trails.size(); ++k) {
+  // Trails follow sane states only (a diverged lane's last good one may be far off).
+  const bool sane = !sim.diverged() && lane.sane.t == t;
+  for (std::size_t k = 0; k < lane.trails.size() && sane; ++k) {
     auto& trail = lane.trails[k];
     trail.push_back(sim.state().x.row(scene_.trails[k]).transpose());
     if (trail.size() > kTrailLength) trail.erase(trail.begin());
@@ -120,11 +158,13 @@ void Session::advance_frame() {
     }
   }
 
+  update_analyses();
   const double frame_time = speed_ / fps_;
   if (!paused_) target_ += frame_time;
   for (Lane& lane : lanes_) {
     Simulation& sim = lane.sim;
     if (sim.diverged()) continue;
+    if (lane.waiting()) continue;  // its sub-steps are not chosen yet: it starts when they are
     if (grabbed_ >= 0 && drag_target_) {
       if (paused_) sim.place(grabbed_, *drag_target_);
       else sim.move_grabbed(*drag_target_, frame_time);
@@ -136,16 +176,33 @@ void Session::advance_frame() {
   }
   ++frame_;
   if (grabbed_ >= 0) drags_.back().to = primary().sim.state().x.row(grabbed_).transpose();
-  for (Lane& lane : lanes_) sample(lane);
+  for (Lane& lane : lanes_) {
+    keep_if_sane(lane);
+    sample(lane);
+  }
+}
+
+void Session::keep_if_sane(Lane& lane) {
+  const Simulation& sim = lane.sim;
+  if (sim.diverged()) return;
+  const State& s = sim.state();
+  const Vec3 lo = scene_.state.x.colwise().minCoeff().transpose(), hi = scene_.state.x.colwise().maxCoeff().transpose();
+  const Vec3 centre = 0.5 * (lo + hi);
+  if (!((s.x.rowwise() - centre.transpose()).rowwise().norm().maxCoeff() <= sane_reach_)) return;
+  lane.sane.x = s.x;
+  lane.sane.v = s.v;
+  lane.sane.t = s.t;
 }
 
 void Session::step_once() {
   double latest = target_;
+  update_analyses();
   for (Lane& lane : lanes_) {
-    if (lane.sim.diverged()) continue;
+    if (lane.sim.diverged() || lane.waiting()) continue;
     lane.sim.step();
     if (lane.ik) iterate_ik(lane, 1);
     latest = std::max(latest, lane.sim.state().t);
+    keep_if_sane(lane);
     sample(lane);
   }
   target_ = latest;
@@ -179,7 +236,13 @@ void Session::set_dt(double dt) {
 
 void Session::set_substeps(int substeps) {
   settings_.substeps = substeps;
+  settings_.auto_substeps = false;
   for (Lane& l : lanes_) l.sim.set_substeps(substeps);
+}
+
+void Session::set_auto_substeps() {
+  settings_.auto_substeps = true;
+  for (Lane& l : lanes_) l.sim.set_auto_substeps(settings_.safety);
 }
 
 void Session::set_tolerance(double tolerance) {
@@ -235,6 +298,7 @@ void Session::reset() {
     l.history.clear();
     for (auto& trail : l.trails) trail.clear();
     l.exact = ExactOscillator::detect(l.sim.model(), l.sim.state());
+    l.sane = l.sim.state();
     if (l.ik) *l.ik = *make_lane(l.sim.settings().method, l.ik->solver).ik;
   }
   target_ = scene_.state.t;

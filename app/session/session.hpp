@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "session/history.hpp"
+#include "session/stability_job.hpp"
 #include "springlab/exact.hpp"
 #include "springlab/scene.hpp"
 #include "springlab/script.hpp"
@@ -40,6 +41,15 @@ struct Lane {
   std::optional<ExactOscillator> exact;  // from the last change of the model
   std::vector<std::vector<Vec3>> trails;  // one per scene.trails particle, oldest first
   std::optional<IkLane> ik;
+  // The stability analysis shown (the latest made, which may be of the scene as it was a moment
+  // ago while a new one is made), and the job making the next, in the app's background mode.
+  std::shared_ptr<const StabilityAnalysis> analysis;
+  StabilityJob job;
+  // The last state that looked sane (positions within a few scene sizes of where they started):
+  // what a diverged lane is drawn as, never its blown-up geometry.
+  State sane;
+  // Whether the lane waits for its first analysis before it steps (automatic sub-steps).
+  bool waiting() const { return sim.auto_substeps() && !analysis && !sim.has_stability(); }
 };
 
 class Session {
@@ -48,6 +58,17 @@ class Session {
   static constexpr std::size_t kTrailLength = 240;  // frames
 
   Session(Scene scene, SimulationSettings settings, double fps = 60.0);
+
+  // Background mode (the interactive window): each lane's stability analysis is made on a worker
+  // thread when the scene changes, the lane stepping on with the sub-steps it had meanwhile (a
+  // lane with automatic sub-steps waits for its first). Off (render, the tests, `view --frames`),
+  // an analysis is made where it is needed, and the same inputs give the same frames.
+  void set_background_analysis(bool on);
+  bool background_analysis() const { return background_; }
+  // Collects finished analyses and starts the ones needed (done by advance_frame too).
+  void update_analyses();
+  // Whether any lane's analysis is being made.
+  bool analysing() const;
 
   const Scene& scene() const { return scene_; }
   std::span<Lane> lanes() { return lanes_; }
@@ -79,7 +100,9 @@ class Session {
   void set_method(Method method);  // one lane: switches it at once, mid-motion
   Method method() const { return lanes_.front().sim.settings().method; }
   void set_dt(double dt);
-  void set_substeps(int substeps);
+  void set_substeps(int substeps);  // fixes them
+  void set_auto_substeps();         // chosen again from each lane's limit
+  bool auto_substeps() const { return settings_.auto_substeps; }
   void set_tolerance(double tolerance);
   void set_stiffness(double ks);
   void set_damping(double kd);
@@ -132,6 +155,7 @@ class Session {
   void model_changed(Lane& lane);
   void iterate_ik(Lane& lane, int iterations);
   void sample(Lane& lane);
+  void keep_if_sane(Lane& lane);
   Lane make_lane(Method method, std::optional<IkSolver> solver = std::nullopt) const;
 
   Scene scene_;
@@ -151,6 +175,8 @@ class Session {
   std::optional<Script> script_;
   std::size_t next_event_ = 0;
   std::optional<std::pair<double, std::vector<std::pair<double, Vec3>>>> path_;  // start, waypoints
+  bool background_ = false;
+  double sane_reach_ = 0.0;  // how far from the scene's start a sane state's particles stay
 };
 
 }  // namespace springlab::app

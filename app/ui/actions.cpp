@@ -13,6 +13,9 @@ void perform(Action action, app::Session& session, UiState& ui) {
     case Action::TogglePanels: ui.panels = !ui.panels; break;
     case Action::ToggleHelp: ui.help = !ui.help; break;
     case Action::ToggleAccuracy: ui.accuracy = !ui.accuracy; break;
+    case Action::ToggleRegion: ui.region = !ui.region; break;
+    case Action::ToggleMode: ui.view.mode = !ui.view.mode; break;
+    case Action::TogglePresentation: ui.presentation = !ui.presentation; break;
     case Action::ToggleCompare: {
       if (session.scene().ik) {  // the solvers side by side, from the same start
         session.set_compare_solvers(session.comparing() ? std::vector<IkSolver>{} : session.scene().ik->solvers);

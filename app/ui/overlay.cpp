@@ -3,53 +3,111 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 
+#include "draw/camera.hpp"
 #include "draw/palette.hpp"
+#include "draw/scene_frame.hpp"
 
 namespace springlab::ui {
 
 namespace {
 ImU32 u32(const draw::Rgba& c) { return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, c.a)); }
+
+std::string lane_name(const app::Lane& lane) {
+  return lane.ik ? ik_solver_info(lane.ik->solver).label : method_info(lane.sim.settings().method).label;
+}
 }  // namespace
 
-void draw_overlay(const app::Session& session, const draw::Viewport& viewport, float scale,
-                  const std::string& scene_name, bool caption) {
+std::string realtime_text(double realtime) {
+  if (!(realtime < 0.95)) return "";
+  char s[48];
+  std::snprintf(s, sizeof s, "%.2gx real time", realtime);
+  return s;
+}
+
+void draw_overlay(const app::Session& session, const draw::ViewCamera& camera, const draw::Viewport& viewport,
+                  const std::string& scene_name, const OverlayOptions& options) {
   ImDrawList* dl = ImGui::GetForegroundDrawList();
+  const float scale = options.scale;
   const float pad = 10.0f * scale, line = ImGui::GetTextLineHeightWithSpacing();
   const ImU32 text = IM_COL32(240, 242, 245, 255), back = IM_COL32(10, 12, 14, 190);
+  const ImU32 red = u32(draw::kDiverged);
 
-  if (caption) {
-    char s[256];
+  if (options.caption) {
+    char s[320];
     const auto& lanes = session.lanes();
+    const std::string slow = realtime_text(options.realtime);
     if (const auto& ik = lanes.front().ik; ik && !session.comparing())
       std::snprintf(s, sizeof s, "%s  |  %s  |  iteration %d, error %.3g m%s", scene_name.c_str(),
                     ik_solver_info(ik->solver).label, ik->status.iterations, ik->status.error,
                     ik->status.reachable ? "" : "  |  target out of reach");
     else
-      std::snprintf(s, sizeof s, "%s  |  %s  |  t = %.3f s", scene_name.c_str(),
-                    session.comparing() ? "compare" : method_info(session.method()).label, lanes.front().sim.state().t);
+      std::snprintf(s, sizeof s, "%s  |  %s  |  t = %.3f s%s%s", scene_name.c_str(),
+                    session.comparing() ? "compare" : method_info(session.method()).label,
+                    session.comparing() ? session.simulated_target() : lanes.front().sim.state().t,
+                    slow.empty() ? "" : "  |  ", slow.c_str());
     const ImVec2 size = ImGui::CalcTextSize(s);
     const ImVec2 p(viewport.x + pad, viewport.y + viewport.height - pad - size.y);
     dl->AddRectFilled(ImVec2(p.x - 6, p.y - 3), ImVec2(p.x + size.x + 6, p.y + size.y + 3), back, 4.0f);
     dl->AddText(p, text, s);
   }
 
+  // A lane waiting for its stability analysis (its sub-steps are chosen from it).
+  bool waiting = false;
+  for (const app::Lane& lane : session.lanes()) waiting |= lane.waiting();
+  if (waiting) {
+    const char* s = "analysing stability: choosing the sub-steps...";
+    const ImVec2 size = ImGui::CalcTextSize(s);
+    const ImVec2 p(viewport.x + 0.5f * (viewport.width - size.x), viewport.y + 0.45f * viewport.height);
+    dl->AddRectFilled(ImVec2(p.x - 8, p.y - 4), ImVec2(p.x + size.x + 8, p.y + size.y + 4), back, 4.0f);
+    dl->AddText(p, text, s);
+  }
+
+  // A red label beside each lane that diverged, at the top of its last sane state (one under
+  // another where they would overlap).
+  std::vector<ImVec4> placed;
+  for (const app::Lane& lane : session.lanes()) {
+    if (!lane.sim.diverged()) continue;
+    char s[160];
+    std::snprintf(s, sizeof s, "%s %s at t = %.3g s", lane_name(lane).c_str(),
+                  lane.sim.divergence()->unstable ? "went unstable" : "diverged", lane.sim.divergence()->t);
+    const Eigen::Vector3d at = draw::project(camera, draw::label_anchor(lane), viewport.width, viewport.height);
+    const ImVec2 size = ImGui::CalcTextSize(s);
+    float x = viewport.x + static_cast<float>(at.x()) - 0.5f * size.x;
+    float y = viewport.y + static_cast<float>(at.y()) - size.y - 8.0f * scale;
+    x = std::clamp(x, viewport.x + pad, viewport.x + viewport.width - pad - size.x);
+    y = std::clamp(y, viewport.y + pad, viewport.y + viewport.height - pad - size.y);
+    for (bool moved = true; moved;) {
+      moved = false;
+      for (const ImVec4& r : placed)
+        if (x < r.z && x + size.x > r.x && y < r.w && y + size.y > r.y) {
+          y = r.w + 4.0f;
+          moved = true;
+        }
+    }
+    placed.push_back(ImVec4(x, y, x + size.x, y + size.y));
+    dl->AddRectFilled(ImVec2(x - 5, y - 2), ImVec2(x + size.x + 5, y + size.y + 2), back, 4.0f);
+    dl->AddText(ImVec2(x, y), red, s);
+  }
+
   if (!session.comparing()) return;
+  // The legend: each lane's colour, name and its own clock (a lane that diverged stopped).
   std::vector<std::string> rows;
   float width = 0.0f;
   for (const app::Lane& lane : session.lanes()) {
-    std::string row = lane.ik ? ik_solver_info(lane.ik->solver).label : method_info(lane.sim.settings().method).label;
+    std::string row = lane_name(lane);
+    char s[96];
     if (lane.ik) {
-      char s[96];
       std::snprintf(s, sizeof s, "  %d it., error %.2g m%s", lane.ik->status.iterations, lane.ik->status.error,
                     lane.ik->status.converged ? "" : lane.ik->status.stalled ? " (stuck)" : "");
-      row += s;
+    } else if (lane.sim.diverged()) {
+      std::snprintf(s, sizeof s, "  %s at t = %.3g s", lane.sim.divergence()->unstable ? "went unstable" : "diverged",
+                    lane.sim.divergence()->t);
+    } else {
+      std::snprintf(s, sizeof s, "  t = %.3f s", lane.sim.state().t);
     }
-    if (lane.sim.diverged()) {
-      char s[64];
-      std::snprintf(s, sizeof s, "  diverged at t = %.3g s", lane.sim.divergence()->t);
-      row += s;
-    }
+    row += s;
     width = std::max(width, ImGui::CalcTextSize(row.c_str()).x);
     rows.push_back(row);
   }
@@ -60,10 +118,9 @@ void draw_overlay(const app::Session& session, const draw::Viewport& viewport, f
   for (std::size_t k = 0; k < rows.size(); ++k) {
     const app::Lane& lane = session.lanes()[k];
     const float y = p.y + k * line;
-    draw::Rgba c = lane.ik ? draw::solver_color(lane.ik->solver) : draw::method_color(lane.sim.settings().method);
+    const draw::Rgba c = lane.ik ? draw::solver_color(lane.ik->solver) : draw::method_color(lane.sim.settings().method);
     dl->AddLine(ImVec2(p.x, y + 0.5f * line), ImVec2(p.x + swatch, y + 0.5f * line), u32(c), 4.0f * scale);
-    if (lane.sim.diverged()) c = {1.0f, 0.45f, 0.4f, 1.0f};
-    dl->AddText(ImVec2(p.x + swatch + 8.0f * scale, y), lane.sim.diverged() ? u32(c) : text, rows[k].c_str());
+    dl->AddText(ImVec2(p.x + swatch + 8.0f * scale, y), lane.sim.diverged() ? red : text, rows[k].c_str());
   }
 }
 

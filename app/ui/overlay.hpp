@@ -1,6 +1,8 @@
-// Text drawn over the scene itself: in compare mode a legend (each method's colour, and where it
-// diverged); without the panels, a caption (scene, method, time), so that a video or a frame dump
-// says what it shows.
+// Text drawn over the scene itself: in compare mode a legend (each lane's colour and its own
+// clock, or where it diverged), a red label beside a lane that diverged (drawn as its last sane
+// state), "analysing stability" while a lane waits for its sub-steps; without the panels, a
+// caption (scene, method, time, and the real-time factor when the simulation cannot keep up), so
+// that a video or a frame dump says what it shows.
 #pragma once
 
 #include <string>
@@ -10,7 +12,16 @@
 
 namespace springlab::ui {
 
-void draw_overlay(const app::Session& session, const draw::Viewport& viewport, float scale,
-                  const std::string& scene_name, bool caption);
+struct OverlayOptions {
+  float scale = 1.0f;
+  bool caption = false;
+  double realtime = 1.0;  // simulated seconds a second of wall time (below 0.95 it is shown)
+};
+
+void draw_overlay(const app::Session& session, const draw::ViewCamera& camera, const draw::Viewport& viewport,
+                  const std::string& scene_name, const OverlayOptions& options);
+
+// "0.42x real time", or "" at (or near) real time.
+std::string realtime_text(double realtime);
 
 }  // namespace springlab::ui

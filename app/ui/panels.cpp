@@ -6,7 +6,9 @@
 #include <cmath>
 
 #include "chart/imgui_chart.hpp"
+#include "chart/stability_region.hpp"
 #include "draw/palette.hpp"
+#include "ui/overlay.hpp"
 
 namespace springlab::ui {
 
@@ -20,7 +22,7 @@ constexpr ImGuiWindowFlags kDocked = kPanel | ImGuiWindowFlags_NoBackground;
 
 ImVec4 v4(const draw::Rgba& c) { return ImVec4(c.r, c.g, c.b, c.a); }
 
-const ImVec4 kSafe(0.35f, 0.85f, 0.45f, 1), kNear(1.0f, 0.75f, 0.2f, 1), kBeyond(1.0f, 0.35f, 0.3f, 1),
+const ImVec4 kSafe(0.35f, 0.85f, 0.45f, 1), kNear(1.0f, 0.75f, 0.2f, 1), kBeyond(1.0f, 0.36f, 0.32f, 1),
     kNeutral(0.55f, 0.75f, 1.0f, 1);
 
 bool slider(const char* label, double& value, double lo, double hi, bool log, const char* format = "%.3g") {
@@ -32,50 +34,63 @@ bool slider(const char* label, double& value, double lo, double hi, bool log, co
 }
 
 std::string fmt(const char* format, double x) {
-  char s[64];
+  char s[96];
   std::snprintf(s, sizeof s, format, x);
   return s;
 }
 
-// The stability gauge of one lane: h w_max against the method's limit, on one row (plus the
-// reason on the next when `explain`).
-void gauge(app::Lane& lane, float width, bool explain) {
+// The analysis a lane shows: the latest (in the background mode it may be of the scene a moment
+// ago, while the next is made); made here if the session makes them where needed.
+const StabilityAnalysis* shown_analysis(app::Session& session, app::Lane& lane) {
+  if (lane.analysis) return lane.analysis.get();
+  if (!session.background_analysis()) return &lane.sim.stability();
+  return nullptr;
+}
+
+// The stability gauge of one lane: h against the method's limit on one row (the verdict on the
+// next when it is long), and with `explain` the limit and the mode that sets it.
+void gauge(app::Session& session, app::Lane& lane, float width, bool explain) {
   Simulation& sim = lane.sim;
   const MethodInfo& m = method_info(sim.settings().method);
   const double h = sim.h();
-  const StabilityAnalysis& analysis = sim.stability();
-  const StabilityLimit& limit = analysis.limit(m.id);
-  double fraction;
-  ImVec4 color;
-  std::string verdict;
-  if (std::isnan(limit.h)) {
-    fraction = 0.5;
-    color = kNeutral;
-    verdict = "adaptive";
-  } else if (std::isinf(limit.h)) {
-    fraction = std::min(1.0, h * analysis.w_max() / 10.0) * 0.6;
-    color = kSafe;
-    verdict = "always stable";
-  } else if (limit.h == 0.0) {
-    fraction = 1.0;
-    color = kBeyond;
-    verdict = "never stable";
-  } else {
-    const double ratio = h / limit.h;
-    fraction = std::min(1.0, ratio / 1.5);
-    color = ratio > 1.0 ? (limit.exact ? kBeyond : kNear) : ratio > 0.8 ? kNear : kSafe;
-    verdict = fmt(ratio > 1.0 ? (limit.exact ? "beyond: %.2fx" : "past proven: %.2fx") : ratio > 0.8 ? "near: %.2fx" : "safe: %.2fx",
-                  ratio);
+  const StabilityAnalysis* analysis = shown_analysis(session, lane);
+  double fraction = 0.0;
+  ImVec4 color = kNeutral;
+  std::string verdict = "analysing...";
+  const StabilityLimit* limit = analysis ? &analysis->limit(m.id) : nullptr;
+  if (limit) {
+    if (std::isnan(limit->h)) {
+      fraction = 0.5;
+      verdict = "adaptive";
+    } else if (std::isinf(limit->h)) {
+      fraction = std::min(1.0, h * analysis->w_max() / 10.0) * 0.6;
+      color = kSafe;
+      verdict = "always stable";
+    } else if (limit->h == 0.0) {
+      fraction = 1.0;
+      color = kBeyond;
+      verdict = "never stable";
+    } else {
+      const double ratio = h / limit->h;
+      fraction = std::min(1.0, ratio / 1.5);
+      color = ratio > 1.0 ? (limit->exact ? kBeyond : kNear) : ratio > 0.8 ? kNear : kSafe;
+      verdict = fmt(ratio > 1.0 ? (limit->exact ? "beyond: %.2fx" : "past proven: %.2fx")
+                                : ratio > 0.8 ? "near: %.2fx" : "safe: %.2fx",
+                    ratio);
+    }
   }
   if (sim.diverged()) {
     color = kBeyond;
-    verdict = fmt("diverged at t = %.3g s", sim.divergence()->t);
+    verdict = explain ? fmt(sim.divergence()->unstable ? "unstable at %.3g s" : "diverged at %.3g s", sim.divergence()->t)
+                      : std::string(sim.divergence()->unstable ? "unstable" : "diverged");
   }
+  const ImGuiStyle& style = ImGui::GetStyle();
   const float label_w = ImGui::CalcTextSize("Symplectic Euler ").x;
   ImGui::TextColored(v4(draw::method_color(m.id)), "%s", m.label);
-  ImGui::SameLine(label_w + ImGui::GetStyle().WindowPadding.x);
-  // The bar: the limit sits at two thirds of it.
-  const float bar_w = width * 0.26f;
+  ImGui::SameLine(label_w + style.WindowPadding.x);
+  // The bar (the limit sits at two thirds of it), then the verdict; a verdict too long for the
+  // row goes on the next.
+  const float bar_w = width * 0.22f;
   const ImVec2 p = ImGui::GetCursorScreenPos();
   const float line_h = ImGui::GetTextLineHeight();
   const float bar_h = line_h * 0.7f;
@@ -83,28 +98,33 @@ void gauge(app::Lane& lane, float width, bool explain) {
   ImDrawList* dl = ImGui::GetWindowDrawList();
   dl->AddRectFilled(q, ImVec2(q.x + bar_w, q.y + bar_h), ImGui::GetColorU32(ImGuiCol_FrameBg), 3.0f);
   dl->AddRectFilled(q, ImVec2(q.x + bar_w * static_cast<float>(fraction), q.y + bar_h), ImGui::GetColorU32(color), 3.0f);
-  if (std::isfinite(limit.h) && limit.h > 0.0) {
+  if (limit && std::isfinite(limit->h) && limit->h > 0.0) {
     const float x = q.x + bar_w / 1.5f;
     dl->AddLine(ImVec2(x, q.y - 3), ImVec2(x, q.y + bar_h + 3), IM_COL32_WHITE, 2.0f);
   }
   ImGui::Dummy(ImVec2(bar_w, line_h));
-  ImGui::SameLine();
+  const float room = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x -
+                     (p.x + bar_w + style.ItemSpacing.x);
+  if (ImGui::CalcTextSize(verdict.c_str()).x <= room) ImGui::SameLine();
   ImGui::TextColored(color, "%s", verdict.c_str());
-  if (explain) {
-    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + width);
-    if (std::isfinite(limit.h) && limit.h > 0.0)
-      ImGui::TextWrapped("h w_max = %.3g; %s", h * analysis.w_max(), describe(limit).c_str());
-    else
-      ImGui::Text("h w_max = %.3g", h * analysis.w_max());
-    if (limit.mode && std::isfinite(limit.h))
-      ImGui::TextDisabled("limiting mode: %.4g rad/s, damping ratio %.3g", limit.mode->w, limit.mode->damping_ratio());
-    ImGui::TextDisabled("%s", m.stability);
-    ImGui::PopTextWrapPos();
+  if (ImGui::IsItemHovered() && limit) ImGui::SetTooltip("%s", m.stability);
+  if (!explain || !limit) return;
+  ImGui::PushTextWrapPos(0.0f);
+  if (analysis && !analysis->oscillates()) {
+    ImGui::TextDisabled("no oscillating modes (%s); %s", analysis->no_modes_reason().c_str(), describe(*limit).c_str());
+  } else if (limit->mode && std::isfinite(limit->h) && limit->h > 0.0) {
+    char mode[96];
+    std::snprintf(mode, sizeof mode, " (its mode: %.4g rad/s, damping ratio %.2g)", limit->mode->w,
+                  limit->mode->damping_ratio());
+    ImGui::TextDisabled("%s%s", describe(*limit).c_str(), mode);
+  } else {
+    ImGui::TextDisabled("%s", describe(*limit).c_str());
   }
+  ImGui::PopTextWrapPos();
 }
 
-chart::Series series(const std::string& label, const draw::Rgba& color, const app::Series& x,
-                     const app::Series& y, bool dashed = false) {
+chart::Series series(const std::string& label, const draw::Rgba& color, const app::Series& x, const app::Series& y,
+                     bool dashed = false) {
   chart::Series s;
   s.label = label;
   s.color = color;
@@ -117,6 +137,16 @@ chart::Series series(const std::string& label, const draw::Rgba& color, const ap
     s.y[k] = y[y.size() - n + k];
   }
   return s;
+}
+
+// A lane that diverged: its line does not set the chart's scale, leaves it with a marker on the
+// edge, and its legend says where and how far it went.
+void mark_diverged(chart::Series& s, const app::Lane& lane, const char* unit) {
+  if (!lane.sim.diverged()) return;
+  s.escapes = true;
+  if (s.label.empty() || s.y.empty()) return;
+  s.label += std::string(lane.sim.divergence()->unstable ? " unstable " : " diverged ") +
+             fmt("%.3g s, ", lane.sim.divergence()->t) + fmt("%.2g ", s.y.back()) + unit;
 }
 
 // IK scenes: how far each solver's end is from the target, frame by frame (log scale: the
@@ -136,10 +166,12 @@ void ik_chart(app::Session& session, float width, float height) {
   chart::chart_widget("##ik", error, ImVec2(width, height));
 }
 
-void charts(app::Session& session, float width, float height) {
+void charts(app::Session& session, float width, float height, bool presentation) {
   if (session.scene().ik) return ik_chart(session, width, height);
   const bool compare = session.comparing();
-  const float w = (width - 2 * ImGui::GetStyle().ItemSpacing.x) / 3.0f;
+  const int count = presentation ? 1 : 3;
+  const float w = (width - (count - 1) * ImGui::GetStyle().ItemSpacing.x) / count;
+  const float line = presentation ? 3.0f : 2.0f;
   const draw::Rgba white{0.95f, 0.95f, 0.95f, 1}, ke{1.0f, 0.55f, 0.25f, 1}, pe{0.45f, 0.7f, 1.0f, 1},
       lost{0.7f, 0.7f, 0.7f, 1};
 
@@ -160,11 +192,14 @@ void charts(app::Session& session, float width, float height) {
     }
     // Total plus what damping, drag and friction took: flat unless the method itself drifts.
     chart::Series kept = series(compare ? "" : "total + lost", compare ? c : lost, h.t, h.total, true);
-    for (std::size_t k = 0; k < kept.y.size(); ++k)
-      kept.y[k] += h.dissipated[h.dissipated.size() - kept.y.size() + k];
+    for (std::size_t k = 0; k < kept.y.size(); ++k) kept.y[k] += h.dissipated[h.dissipated.size() - kept.y.size() + k];
     energy.series.push_back(kept);
+    const std::size_t from = energy.series.size() - (compare ? 2 : 4);
+    for (std::size_t k = from; k < energy.series.size(); ++k) mark_diverged(energy.series[k], lane, "J");
   }
+  for (chart::Series& s : energy.series) s.width = line;
   chart::chart_widget("##energy", energy, ImVec2(w, height));
+  if (presentation) return;
   ImGui::SameLine();
 
   const char* axis = "xyz";
@@ -176,6 +211,7 @@ void charts(app::Session& session, float width, float height) {
   for (const app::Lane& lane : session.lanes()) {
     const draw::Rgba c = draw::method_color(lane.sim.settings().method);
     position.series.push_back(series(method_info(lane.sim.settings().method).name, c, lane.history.t, lane.history.x));
+    mark_diverged(position.series.back(), lane, "m");
   }
   if (session.primary().history.exact_x.size() > 0)
     position.series.push_back(series("exact", white, session.primary().history.t, session.primary().history.exact_x, true));
@@ -187,9 +223,46 @@ void charts(app::Session& session, float width, float height) {
   phase.x.label = std::string(1, axis[a]) + " (m)";
   phase.y.label = "v (m/s)";
   phase.legend = false;
-  for (const app::Lane& lane : session.lanes())
+  for (const app::Lane& lane : session.lanes()) {
+    if (lane.sim.diverged()) continue;  // its phase plot would set the scale to its blow-up
     phase.series.push_back(series("", draw::method_color(lane.sim.settings().method), lane.history.x, lane.history.v));
+  }
   chart::chart_widget("##phase", phase, ImVec2(w, height));
+}
+
+// The stability region of the lanes' methods, with the scene's modes at their steps (G).
+void region_window(app::Session& session, UiState& ui, float x, float y, float width, float height) {
+  if (!ui.region) return;
+  ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Appearing);
+  ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Appearing);
+  if (!ImGui::Begin("Stability region (G)", &ui.region, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
+    ImGui::End();
+    return;
+  }
+  const StabilityAnalysis* analysis = shown_analysis(session, session.lanes()[0]);
+  if (!analysis) {
+    ImGui::TextDisabled("analysing the scene's stability...");
+  } else {
+    // One chart a plane: the complex plane's methods, then the oscillator plane's.
+    std::vector<chart::RegionLane> planes[2];
+    for (app::Lane& lane : session.lanes())
+      if (!method_info(lane.sim.settings().method).adaptive)
+        planes[static_cast<int>(chart::region_plane(lane.sim.settings().method))].push_back(
+            {lane.sim.settings().method, lane.sim.h()});
+    const int charts = !planes[0].empty() + !planes[1].empty();
+    if (charts == 0) ImGui::TextDisabled("an adaptive method chooses its own steps: it has no region");
+    const ImVec2 room = ImGui::GetContentRegionAvail();
+    const float w = (room.x - (charts - 1) * ImGui::GetStyle().ItemSpacing.x) / std::max(1, charts);
+    bool first = true;
+    for (int k = 0; k < 2; ++k) {
+      if (planes[k].empty()) continue;
+      if (!first) ImGui::SameLine();
+      first = false;
+      chart::Chart c = chart::stability_region(*analysis, planes[k]);
+      chart::chart_widget(k == 0 ? "##complex-plane" : "##oscillator-plane", c, ImVec2(w, room.y));
+    }
+  }
+  ImGui::End();
 }
 
 }  // namespace
@@ -214,13 +287,15 @@ std::vector<Method> compare_methods(const UiState& ui) {
 
 namespace {
 // The layout, at scale 1.
-constexpr float kPad = 8.0f, kLeftWidth = 360.0f, kChartHeight = 250.0f;
+constexpr float kPad = 8.0f, kLeftWidth = 360.0f, kChartHeight = 230.0f;
+float layout_scale(const UiState& ui) { return ui.scale * (ui.presentation ? kPresentationScale : 1.0f); }
 }  // namespace
 
 draw::Viewport scene_viewport(const UiState& ui, int width, int height) {
   if (!ui.panels) return {0, 0, width, height};
-  const int left = static_cast<int>((kLeftWidth + 2 * kPad) * ui.scale);
-  const int bottom = static_cast<int>((kChartHeight + 2 * kPad) * ui.scale);
+  const float s = layout_scale(ui);
+  const int left = static_cast<int>((kLeftWidth + 2 * kPad) * s);
+  const int bottom = static_cast<int>((kChartHeight + 2 * kPad) * s);
   if (width - left < 64 || height - bottom < 64) return {0, 0, width, height};
   return {left, 0, width - left, height - bottom};
 }
@@ -268,36 +343,154 @@ void ik_controls(app::Session& session) {
   ImGui::PopTextWrapPos();
 }
 
+namespace {
+
+// Pause, step, reset: the buttons a class sees pressed most.
+void transport(app::Session& session) {
+  if (ImGui::Button(session.paused() ? "Resume (space)" : "Pause (space)")) session.set_paused(!session.paused());
+  ImGui::SameLine();
+  if (ImGui::Button("Step (S)")) {
+    session.set_paused(true);
+    session.step_once();
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Reset (R)")) session.reset();
+}
+
+// The time of each lane (in compare mode a diverged lane stopped at its own), the speed, and
+// the real-time factor when the simulation cannot keep up.
+void clocks(app::Session& session, const FrameStats& stats) {
+  if (!session.comparing()) {
+    ImGui::Text("t = %.3f s", session.primary().sim.state().t);
+  } else {
+    bool first = true;
+    for (const app::Lane& lane : session.lanes()) {
+      if (!first) ImGui::SameLine();
+      first = false;
+      ImGui::TextColored(lane.sim.diverged() ? kBeyond : v4(draw::method_color(lane.sim.settings().method)), "%.3f",
+                         lane.sim.state().t);
+    }
+    ImGui::SameLine();
+    ImGui::TextDisabled("s");
+  }
+  if (session.paused()) {
+    ImGui::SameLine();
+    ImGui::TextColored(kNear, "paused");
+  }
+  if (session.speed() != 1.0) {
+    ImGui::SameLine();
+    ImGui::TextColored(kNear, "slow motion x%g", session.speed());
+  }
+  const std::string slow = realtime_text(stats.realtime);
+  if (!slow.empty()) {
+    ImGui::SameLine();
+    ImGui::TextColored(kNear, "%s", slow.c_str());
+  }
+}
+
+// The sliders of the physics; `few`: only dt, k_s and k_d (presentation mode).
+void parameters(app::Session& session, UiState& ui, bool few) {
+  const float s = layout_scale(ui);
+  Simulation& sim = session.lanes()[0].sim;
+  double ks = session.stiffness(), kd = session.damping(), dt = sim.settings().dt, mass = session.mass();
+  double g = sim.model().gravity.norm(), drag = sim.model().drag, mu = session.friction();
+  double tol = sim.settings().step.tolerance;
+  const bool springs = sim.model().spring_count() > 0;  // a particle system has none to set
+  if (springs && slider("k_s (N/m)", ks, ui.ranges.ks / 100, ui.ranges.ks * 100, true)) session.set_stiffness(ks);
+  const double kd_max = std::max(10 * ui.ranges.kd, 2 * std::sqrt(ui.ranges.ks * ui.ranges.mass));
+  if (springs && slider("k_d (N s/m)", kd, 0.0, kd_max, true)) session.set_damping(kd);
+  if (slider("dt (s)", dt, ui.ranges.dt / 100, std::min(1.0, std::max(0.1, ui.ranges.dt * 100)), true, "%.3g"))
+    session.set_dt(dt);
+  // Sub-steps: chosen from each lane's limit ("auto (N)"), until the slider fixes them.
+  int substeps = sim.settings().substeps;
+  std::string shown = std::to_string(substeps);
+  if (session.auto_substeps()) {
+    shown = "auto (" + shown;
+    if (session.comparing())
+      for (std::size_t k = 1; k < session.lanes().size(); ++k) shown += ", " + std::to_string(session.lanes()[k].sim.settings().substeps);
+    shown += ")";
+  }
+  ImGui::PushItemWidth(ImGui::CalcItemWidth() - ImGui::CalcTextSize("auto").x - ImGui::GetFrameHeight() -
+                       2 * ImGui::GetStyle().ItemInnerSpacing.x);
+  if (ImGui::SliderInt("##substeps", &substeps, 1, 256, shown.c_str(), ImGuiSliderFlags_Logarithmic))
+    session.set_substeps(substeps);
+  ImGui::PopItemWidth();
+  ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
+  bool automatic = session.auto_substeps();
+  if (ImGui::Checkbox("auto", &automatic)) {
+    if (automatic) session.set_auto_substeps();
+    else session.set_substeps(sim.settings().substeps);
+  }
+  ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
+  ImGui::TextUnformatted("sub-steps");
+  for (const app::Lane& lane : session.lanes())
+    if (lane.sim.auto_substeps() && lane.sim.substeps_capped() && lane.analysis) {
+      const bool hopeless = lane.analysis->limit(lane.sim.settings().method).h == 0.0;
+      ImGui::TextColored(kNear, "%s: %s", method_info(lane.sim.settings().method).name,
+                         hopeless ? "unstable at any step: sub-steps cannot help" : "sub-steps capped: still past its limit");
+      break;
+    }
+  if (few) return;
+  if (slider("mass (kg)", mass, ui.ranges.mass / 100, ui.ranges.mass * 100, true)) session.set_mass(mass);
+  if (slider("gravity (m/s^2)", g, 0.0, 30.0, false, "%.2f")) {
+    const Vec3 dir = sim.model().gravity.norm() > 0 ? Vec3(sim.model().gravity.normalized()) : Vec3(-Vec3::UnitY());
+    session.set_gravity(g * dir);
+  }
+  if (slider("drag (N s/m)", drag, 0.0, std::max(1.0, 100 * ui.ranges.drag), true)) session.set_drag(drag);
+  if (sim.model().has_colliders() && slider("friction", mu, 0.0, 2.0, false, "%.2f")) session.set_friction(mu);
+  if (method_info(session.method()).adaptive && slider("tolerance", tol, 1e-10, 1e-1, true, "%.1e"))
+    session.set_tolerance(tol);
+  int speed_exp = static_cast<int>(std::lround(std::log2(session.speed())));
+  const char* speeds[] = {"1/16", "1/8", "1/4", "1/2", "1", "2", "4"};
+  if (ImGui::SliderInt("speed", &speed_exp, -4, 2, speeds[speed_exp + 4])) session.set_speed(std::pow(2.0, speed_exp));
+  (void)s;
+}
+
+}  // namespace
+
 Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats, int width, int height) {
   Requests requests;
-  const float s = ui.scale;
+  ImGuiIO& io = ImGui::GetIO();
+  const bool large = ui.presentation && io.Fonts->Fonts.Size > 1;
+  if (large) ImGui::PushFont(io.Fonts->Fonts[1]);
+  const float s = layout_scale(ui);
   const float pad = kPad * s;
   const float left_w = kLeftWidth * s;
   const float chart_h = kChartHeight * s;
+  const bool few = ui.presentation;
 
   if (ui.panels) {
     // Controls.
     ImGui::SetNextWindowPos(ImVec2(pad, pad));
     ImGui::SetNextWindowSize(ImVec2(left_w, static_cast<float>(height) - 2 * pad));
-    ImGui::Begin("springlab", nullptr, ui.panels_over_scene ? kPanel : kDocked);
+    ImGui::Begin("springlab", nullptr, (ui.panels_over_scene ? kPanel : kDocked) | ImGuiWindowFlags_NoTitleBar);
     ImGui::PushItemWidth(-130.0f * s);
-    ImGui::TextColored(kNeutral, "%s", ui.scene_name.c_str());
-    ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextDisabled("%s", session.scene().description.c_str());
-    ImGui::PopTextWrapPos();
 
+    // The scene: its picker, and what it shows (its first sentence; the rest on hover).
     if (!ui.scenes.empty() && ImGui::BeginCombo("scene", ui.scene_name.c_str())) {
       for (const std::string& name : ui.scenes)
         if (ImGui::Selectable(name.c_str(), name == ui.scene_name)) requests.load = name;
       ImGui::EndCombo();
     }
-    ImGui::InputTextWithHint("##open", "or a scene file...", ui.open_path, sizeof ui.open_path);
-    ImGui::SameLine();
-    if (ImGui::Button("Open") && ui.open_path[0]) requests.load = std::string(ui.open_path);
-
+    const std::string& about = session.scene().description;
+    const std::size_t stop = about.find(". ");
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextDisabled("%s", stop == std::string::npos ? about.c_str() : (about.substr(0, stop + 1) + " (...)").c_str());
+    ImGui::PopTextWrapPos();
+    if (ImGui::IsItemHovered() && stop != std::string::npos) {
+      ImGui::BeginTooltip();
+      ImGui::PushTextWrapPos(420.0f * s);
+      ImGui::TextUnformatted(about.c_str());
+      ImGui::PopTextWrapPos();
+      ImGui::EndTooltip();
+    }
     ImGui::Separator();
-    if (session.scene().ik) ik_controls(session);
-    else {
+
+    if (session.scene().ik) {
+      ik_controls(session);
+      transport(session);
+      clocks(session, stats);
+    } else {
       if (!session.comparing()) {
         const MethodInfo& current = method_info(session.method());
         if (ImGui::BeginCombo("method", current.label)) {
@@ -311,96 +504,54 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
           ImGui::EndCombo();
         }
       }
-      // Stability: the gauge of each lane, right under the method it judges.
+      transport(session);
+      clocks(session, stats);
+      // Stability: the gauge of each lane, under the method it judges.
       const float inner_w = left_w - 2 * ImGui::GetStyle().WindowPadding.x - ImGui::GetStyle().ScrollbarSize;
-      const StabilityAnalysis& analysis = session.lanes()[0].sim.stability();
-      ImGui::TextDisabled("w_max = %.4g rad/s, h = %.3g s", analysis.w_max(), session.lanes()[0].sim.h());
-      for (app::Lane& lane : session.lanes()) gauge(lane, inner_w, !session.comparing());
+      for (app::Lane& lane : session.lanes()) gauge(session, lane, inner_w, !session.comparing());
       ImGui::Separator();
-
-      Simulation& sim = session.lanes()[0].sim;
-      double ks = session.stiffness(), kd = session.damping(), dt = sim.settings().dt, mass = session.mass();
-      double g = sim.model().gravity.norm(), drag = sim.model().drag, mu = session.friction();
-      double tol = sim.settings().step.tolerance;
-      int substeps = sim.settings().substeps;
-      const bool springs = sim.model().spring_count() > 0;  // a particle system has none to set
-      if (springs && slider("k_s (N/m)", ks, ui.ranges.ks / 100, ui.ranges.ks * 100, true)) session.set_stiffness(ks);
-      const double kd_max = std::max(10 * ui.ranges.kd, 2 * std::sqrt(ui.ranges.ks * ui.ranges.mass));
-      if (springs && slider("k_d (N s/m)", kd, 0.0, kd_max, true)) session.set_damping(kd);
-      if (slider("dt (s)", dt, ui.ranges.dt / 100, std::min(1.0, std::max(0.1, ui.ranges.dt * 100)), true, "%.3g"))
-        session.set_dt(dt);
-      if (ImGui::SliderInt("sub-steps", &substeps, 1, 64)) session.set_substeps(substeps);
-      if (slider("mass (kg)", mass, ui.ranges.mass / 100, ui.ranges.mass * 100, true)) session.set_mass(mass);
-      if (slider("gravity (m/s^2)", g, 0.0, 30.0, false, "%.2f")) {
-        const Vec3 dir = sim.model().gravity.norm() > 0 ? Vec3(sim.model().gravity.normalized()) : Vec3(-Vec3::UnitY());
-        session.set_gravity(g * dir);
+      parameters(session, ui, few);
+    }
+    if (!few) {
+      ImGui::TextDisabled("%s", fmt("a frame: %.1f ms simulating, ", stats.sim_ms).append(fmt("%.1f drawing", stats.draw_ms)).c_str());
+      if (!session.scene().ik) {
+        if (ImGui::Button(ui.accuracy ? "Hide accuracy (A)" : "Accuracy vs cost (A)")) ui.accuracy = !ui.accuracy;
+        ImGui::SameLine();
+        if (ImGui::Button(ui.region ? "Hide region (G)" : "Stability region (G)")) ui.region = !ui.region;
       }
-      if (slider("drag (N s/m)", drag, 0.0, std::max(1.0, 100 * ui.ranges.drag), true)) session.set_drag(drag);
-      if (sim.model().has_colliders() && slider("friction", mu, 0.0, 2.0, false, "%.2f")) session.set_friction(mu);
-      if (method_info(session.method()).adaptive && slider("tolerance", tol, 1e-10, 1e-1, true, "%.1e"))
-        session.set_tolerance(tol);
-    }
-    int speed_exp = static_cast<int>(std::lround(std::log2(session.speed())));
-    const char* speeds[] = {"1/16", "1/8", "1/4", "1/2", "1", "2", "4"};
-    if (ImGui::SliderInt("speed", &speed_exp, -4, 2, speeds[speed_exp + 4]))
-      session.set_speed(std::pow(2.0, speed_exp));
-
-    if (ImGui::Button(session.paused() ? "Resume (space)" : "Pause (space)")) session.set_paused(!session.paused());
-    ImGui::SameLine();
-    if (ImGui::Button("Step (S)")) {
-      session.set_paused(true);
-      session.step_once();
-    }
-    ImGui::SameLine();
-    if (ImGui::Button("Reset (R)")) session.reset();
-    ImGui::Text("t = %.3f s", session.primary().sim.state().t);
-    if (session.paused()) {
-      ImGui::SameLine();
-      ImGui::TextColored(kNear, " paused");
-    }
-    if (session.speed() != 1.0) {
-      ImGui::SameLine();
-      ImGui::TextColored(kNear, " slow motion x%g", session.speed());
-    }
-    ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextDisabled("a frame: %lld force evaluations%s, %.2f ms simulating, %.2f ms drawing",
-                        static_cast<long long>(stats.force_evals),
-                        stats.linear_solves > 0 ? fmt(" and %.0f solves", static_cast<double>(stats.linear_solves)).c_str() : "",
-                        stats.sim_ms, stats.draw_ms);
-    ImGui::PopTextWrapPos();
-
-    if (!session.scene().ik &&
-        ImGui::Button(ui.accuracy ? "Hide accuracy vs cost (A)" : "Accuracy vs cost (A)"))
-      ui.accuracy = !ui.accuracy;
-
-    if (!session.scene().ik && ImGui::CollapsingHeader("Compare methods")) {
-    if (ImGui::Button(session.comparing() ? "Single view (C)" : "Compare (C)")) {
-      if (session.comparing()) session.set_compare({});
-      else if (compare_methods(ui).size() >= 2) session.set_compare(compare_methods(ui));
-    }
-    ImGui::SameLine();
-    ImGui::TextDisabled("tick 2 to 4:");
-    if (ImGui::BeginTable("compare", 2)) {
-      for (const MethodInfo& m : methods()) {
-        ImGui::TableNextColumn();
-        ImGui::PushStyleColor(ImGuiCol_Text, v4(draw::method_color(m.id)));
-        ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(3 * s, 1 * s));
-        ImGui::Checkbox(m.name, &ui.compare_choice[static_cast<int>(m.id)]);
-        ImGui::PopStyleVar();
-        ImGui::PopStyleColor();
+      if (!session.scene().ik && ImGui::CollapsingHeader("Compare methods")) {
+        if (ImGui::Button(session.comparing() ? "Single view (C)" : "Compare (C)")) {
+          if (session.comparing()) session.set_compare({});
+          else if (compare_methods(ui).size() >= 2) session.set_compare(compare_methods(ui));
+        }
+        ImGui::SameLine();
+        ImGui::TextDisabled("tick 2 to 4:");
+        if (ImGui::BeginTable("compare", 2)) {
+          for (const MethodInfo& m : methods()) {
+            ImGui::TableNextColumn();
+            ImGui::PushStyleColor(ImGuiCol_Text, v4(draw::method_color(m.id)));
+            ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(3 * s, 1 * s));
+            ImGui::Checkbox(m.name, &ui.compare_choice[static_cast<int>(m.id)]);
+            ImGui::PopStyleVar();
+            ImGui::PopStyleColor();
+          }
+          ImGui::EndTable();
+        }
       }
-      ImGui::EndTable();
-    }
-    }
-
-    if (ImGui::CollapsingHeader("View")) {
-    ImGui::Checkbox("springs", &ui.view.springs);
-    ImGui::SameLine();
-    ImGui::Checkbox("particles", &ui.view.particles);
-    ImGui::SameLine();
-    ImGui::Checkbox("surface", &ui.view.surfaces);
-    double strain = ui.view.strain_scale;
-    if (slider("strain scale", strain, 1e-3, 0.5, true, "+-%.3f")) ui.view.strain_scale = strain;
+      if (ImGui::CollapsingHeader("View and files")) {
+        ImGui::InputTextWithHint("##open", "a scene file (or drop one)", ui.open_path, sizeof ui.open_path);
+        ImGui::SameLine();
+        if (ImGui::Button("Open") && ui.open_path[0]) requests.load = std::string(ui.open_path);
+        ImGui::Checkbox("springs", &ui.view.springs);
+        ImGui::SameLine();
+        ImGui::Checkbox("particles", &ui.view.particles);
+        ImGui::SameLine();
+        ImGui::Checkbox("surface", &ui.view.surfaces);
+        ImGui::Checkbox("the limiting mode (M)", &ui.view.mode);
+        double strain = ui.view.strain_scale;
+        if (slider("strain scale", strain, 1e-3, 0.5, true, "+-%.3f")) ui.view.strain_scale = strain;
+        ImGui::Checkbox("presentation (P)", &ui.presentation);
+      }
     }
     ImGui::PopItemWidth();
     ImGui::End();
@@ -410,8 +561,9 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
     ImGui::SetNextWindowPos(ImVec2(charts_x, static_cast<float>(height) - chart_h - pad));
     ImGui::SetNextWindowSize(ImVec2(static_cast<float>(width) - charts_x - pad, chart_h));
     ImGui::Begin("Charts", nullptr, (ui.panels_over_scene ? kPanel : kDocked) | ImGuiWindowFlags_NoTitleBar);
-    charts(session, ImGui::GetContentRegionAvail().x, ImGui::GetContentRegionAvail().y);
+    charts(session, ImGui::GetContentRegionAvail().x, ImGui::GetContentRegionAvail().y, ui.presentation);
     ImGui::End();
+    region_window(session, ui, charts_x, pad, 0.55f * (width - charts_x), 0.55f * height);
   }
 
   // Divergence in the single view: a banner, and the way out.
@@ -421,7 +573,9 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
     ImGui::SetNextWindowSize(ImVec2(560.0f * s, 0.0f));
     ImGui::PushStyleColor(ImGuiCol_WindowBg, ImVec4(0.35f, 0.05f, 0.05f, 0.95f));
     ImGui::Begin("Diverged", nullptr, kPanel | ImGuiWindowFlags_AlwaysAutoResize);
-    ImGui::Text("The simulation diverged at t = %.4g s", first.divergence()->t);
+    ImGui::Text(first.divergence()->unstable ? "The simulation went numerically unstable at t = %.4g s"
+                                             : "The simulation diverged at t = %.4g s",
+                first.divergence()->t);
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextUnformatted(first.divergence()->message().c_str());  // the limit once analysed
     ImGui::PopTextWrapPos();
@@ -447,6 +601,9 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
     const char* keys[][2] = {{"space", "pause or resume"}, {"S", "one step"}, {"R", "reset"},
                              {"1 - 9", "choose a method"}, {"C", "compare mode on or off"},
                              {"H", "hide or show the panels"}, {"A", "accuracy against cost: chart every method"},
+                             {"G", "the stability region, with the scene's modes"},
+                             {"M", "show the mode that limits the step"},
+                             {"P", "presentation mode: larger, for a projector"},
                              {"F1", "this help"},
                              {"left drag", "move a particle (release lets it go with its speed)"},
                              {"right drag", "orbit the camera (3D) / pan (2D)"},
@@ -463,6 +620,7 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
     }
     ImGui::End();
   }
+  if (large) ImGui::PopFont();
   return requests;
 }
 

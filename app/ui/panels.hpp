@@ -1,9 +1,14 @@
-// The app's panels, drawn with Dear ImGui: controls (scene, method, k_s, k_d, dt, sub-steps,
-// mass, gravity, drag, friction, speed; pause, step, reset, compare), the stability gauge and
-// the cost of a frame, the charts (energy, the watched particle's position with the exact
-// solution, its phase plot), the divergence banner and the help overlay. The same panels are
-// drawn in the window and, with `render --ui`, headlessly. They change the session only through
-// its public functions.
+// The app's panels, drawn with Dear ImGui: controls (scene, method, pause, step, reset, the
+// stability gauge, k_s, k_d, dt, sub-steps (auto or fixed), mass, gravity, drag, friction,
+// speed), the time of each lane and the real-time factor, compare mode, the view options, the
+// stability region; the charts (energy, the watched particle's position with the exact solution,
+// its phase plot); the divergence banner and the help overlay. The same panels are drawn in the
+// window and, with `render --ui`, headlessly. They change the session only through its public
+// functions.
+//
+// Layout: the left panel and the charts fit 1280x720 at scale 1 with nothing cut off (the rarer
+// controls fold away); presentation mode (P) is for a projector: larger text, thicker lines, the
+// left panel down to what a class watches, one chart.
 #pragma once
 
 #include <array>
@@ -17,10 +22,13 @@
 
 namespace springlab::ui {
 
-// The cost of the last frame, measured by whoever runs the frame.
+// The cost of the last frame, measured by whoever runs the frame, and how fast simulated time
+// goes against the wall clock over the last second (1 unless the simulation cannot keep up).
 struct FrameStats {
   double sim_ms = 0.0, draw_ms = 0.0;
   std::int64_t force_evals = 0, linear_solves = 0, solver_iterations = 0;
+  double realtime = 1.0;
+  double fps = 0.0;  // frames shown a second of wall time (0: not measured, headless)
 };
 
 // Slider ranges, from the scene as loaded.
@@ -35,6 +43,8 @@ struct UiState {
   bool help = false;   // F1
   bool panels_over_scene = false;  // the scene fills the whole frame (too small to share)
   bool accuracy = false;           // the Compare panel (accuracy against cost), A
+  bool presentation = false;       // P: for a projector
+  bool region = false;             // G: the stability region
   draw::ViewOptions view;
   Ranges ranges;
   std::vector<std::string> scenes;  // the picker's list
@@ -56,5 +66,8 @@ draw::Viewport scene_viewport(const UiState& ui, int width, int height);
 
 // The methods ticked for compare mode, in table order (at most four).
 std::vector<Method> compare_methods(const UiState& ui);
+
+// How much larger everything is in presentation mode.
+inline constexpr float kPresentationScale = 1.4f;
 
 }  // namespace springlab::ui

@@ -2,7 +2,10 @@
 
 #include <imgui.h>
 
+#include <cmath>
 #include <filesystem>
+
+#include "ui/panels.hpp"
 
 namespace springlab::ui {
 
@@ -11,15 +14,19 @@ void apply_theme(float scale) {
   io.Fonts->Clear();
   const char* font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
   std::error_code ec;
-  if (std::filesystem::exists(font, ec)) {
-    ImFontConfig config;
-    config.OversampleH = 2;
-    config.OversampleV = 2;
-    io.Fonts->AddFontFromFileTTF(font, kFontSize * scale, &config);
-  } else {
-    ImFontConfig config;
-    config.SizePixels = 13.0f * scale;  // ProggyClean at a whole multiple stays crisp enough
-    io.Fonts->AddFontDefault(&config);
+  // Two sizes: the panels' and presentation mode's (kPresentationScale larger, drawn at its own
+  // size rather than stretched, so that it stays sharp on a projector).
+  for (const float size : {1.0f, kPresentationScale}) {
+    if (std::filesystem::exists(font, ec)) {
+      ImFontConfig config;
+      config.OversampleH = 2;
+      config.OversampleV = 2;
+      io.Fonts->AddFontFromFileTTF(font, kFontSize * scale * size, &config);
+    } else {
+      ImFontConfig config;
+      config.SizePixels = std::round(13.0f * scale * size);  // ProggyClean at a whole size stays crisp enough
+      io.Fonts->AddFontDefault(&config);
+    }
   }
 
   ImGui::StyleColorsDark();
@@ -28,8 +35,8 @@ void apply_theme(float scale) {
   style.FrameRounding = 4.0f;
   style.GrabRounding = 4.0f;
   style.WindowBorderSize = 1.0f;
-  style.FramePadding = ImVec2(8, 5);
-  style.ItemSpacing = ImVec2(10, 7);
+  style.FramePadding = ImVec2(8, 4);
+  style.ItemSpacing = ImVec2(10, 6);
   style.WindowPadding = ImVec2(12, 10);
   style.GrabMinSize = 14.0f;
   ImVec4* c = style.Colors;

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <deque>
 #include <memory>
 #include <stdexcept>
 #include <thread>
@@ -46,10 +47,14 @@ struct Shown {
   std::optional<std::string> dropped;  // a file dropped on the window, to open
 };
 
-void show(Shown& shown, Prepared p, float scale, const std::string& name) {
+void show(Shown& shown, Prepared p, float scale, const std::string& name, bool background) {
   const std::vector<std::string> scenes = shipped_scenes();
   const auto compare = shown.ui.compare_choice;
+  const bool presentation = shown.ui.presentation;
   shown.session = std::make_unique<Session>(std::move(p.scene), p.settings, 60.0);
+  // Interactive: stability analyses on a worker thread, the frame loop never waiting for one.
+  // Scripted (--frames): made where needed, so that the same run gives the same frames.
+  shown.session->set_background_analysis(background);
   ui::UiState ui;
   ui.scale = scale;
   ui.view = draw::ViewOptions::for_scene(shown.session->scene());
@@ -57,6 +62,7 @@ void show(Shown& shown, Prepared p, float scale, const std::string& name) {
   ui.scenes = scenes;
   ui.scene_name = name;
   ui.compare_choice = compare;
+  ui.presentation = presentation;
   for (Method m : shown.session->scene().methods)
     if (shown.session->scene().methods.size() >= 2) ui.compare_choice[static_cast<int>(m)] = true;
   shown.ui = std::move(ui);
@@ -70,7 +76,8 @@ void keyboard(Session& session, ui::UiState& ui, GLFWwindow* window) {
       {GLFW_KEY_SPACE, ui::Action::TogglePause}, {GLFW_KEY_S, ui::Action::Step},
       {GLFW_KEY_R, ui::Action::Reset},           {GLFW_KEY_C, ui::Action::ToggleCompare},
       {GLFW_KEY_H, ui::Action::TogglePanels},    {GLFW_KEY_F1, ui::Action::ToggleHelp},
-      {GLFW_KEY_A, ui::Action::ToggleAccuracy}};
+      {GLFW_KEY_A, ui::Action::ToggleAccuracy},  {GLFW_KEY_G, ui::Action::ToggleRegion},
+      {GLFW_KEY_M, ui::Action::ToggleMode},      {GLFW_KEY_P, ui::Action::TogglePresentation}};
   for (const auto& [key, action] : keys)
     if (ImGui::IsKeyPressed(key, false)) ui::perform(action, session, ui);
   for (int k = 0; k < 9; ++k)
@@ -146,7 +153,8 @@ int run_window(Prepared prepared, const WindowOptions& o) {
 
     Shown shown;
     const std::string first_name = prepared.scene.name;
-    show(shown, std::move(prepared), scale, first_name);
+    const bool background = !o.frames;
+    show(shown, std::move(prepared), scale, first_name, background);
     if (!o.compare.empty()) shown.session->set_compare(o.compare);
     if (script) shown.session->play(*script);
     if (o.accuracy) {
@@ -161,6 +169,7 @@ int run_window(Prepared prepared, const WindowOptions& o) {
 
     std::optional<ui::Drag> drag;
     ui::FrameStats stats;
+    std::deque<std::pair<Clock::time_point, double>> pace;  // (wall, simulated target) a frame
     int shown_w = 0, shown_h = 0;
     const double period = 1.0 / 60.0;
     auto next_frame = Clock::now();
@@ -224,9 +233,15 @@ int run_window(Prepared prepared, const WindowOptions& o) {
       ui::draw_compare_panel(shown.accuracy, session, scale, 380.0f * scale, 20.0f * scale, win_w - 400.0f * scale,
                              win_h * 0.62f);
       ui.accuracy = shown.accuracy.open;
-      ui::draw_overlay(session, {static_cast<int>(viewport.x / to_fb), static_cast<int>(viewport.y / to_fb),
-                                 static_cast<int>(viewport.width / to_fb), static_cast<int>(viewport.height / to_fb)},
-                       scale, ui.scene_name, !ui.panels);
+      ui.view.line_scale = ui.presentation ? 1.6f : 1.0f;
+      ui::OverlayOptions overlay;
+      overlay.scale = scale * (ui.presentation ? ui::kPresentationScale : 1.0f);
+      overlay.caption = !ui.panels;
+      overlay.realtime = stats.realtime;
+      ui::draw_overlay(session, camera,
+                       {static_cast<int>(viewport.x / to_fb), static_cast<int>(viewport.y / to_fb),
+                        static_cast<int>(viewport.width / to_fb), static_cast<int>(viewport.height / to_fb)},
+                       ui.scene_name, overlay);
       std::optional<std::string> load = requests.load;
       if (shown.dropped) load = std::exchange(shown.dropped, std::nullopt);
 
@@ -240,6 +255,19 @@ int run_window(Prepared prepared, const WindowOptions& o) {
       stats.force_evals = session.primary().sim.counters().force_evals - evals0;
       stats.linear_solves = session.primary().sim.counters().linear_solves - solves0;
       stats.solver_iterations = session.primary().sim.counters().solver_iterations - iters0;
+      // The real-time factor over the last second: simulated time (what the lanes reached) against
+      // the wall clock. Below 1 the simulation cannot keep up and the app slows down with it,
+      // rather than drop simulated time; the panels say by how much.
+      pace.emplace_back(Clock::now(), session.simulated_target());
+      while (pace.size() > 2 && pace.front().first < pace.back().first - std::chrono::seconds(1)) pace.pop_front();
+      if (pace.size() >= 2 && !session.paused()) {
+        const double wall = std::chrono::duration<double>(pace.back().first - pace.front().first).count();
+        const double simulated = (pace.back().second - pace.front().second) / std::max(1e-9, session.speed());
+        if (wall > 0.25) {
+          stats.realtime = simulated / wall;
+          stats.fps = (pace.size() - 1) / wall;
+        }
+      }
 
       // Draw it, the panels over it, then show it.
       const auto draw_start = Clock::now();
@@ -265,7 +293,7 @@ int run_window(Prepared prepared, const WindowOptions& o) {
           const std::string name = *load;
           Prepared next = prepare(name, {});
           shown.accuracy.sweep.cancel();
-          show(shown, std::move(next), scale, name);
+          show(shown, std::move(next), scale, name, background);
           glfwSetWindowTitle(window, ("springlab - " + shown.session->scene().name).c_str());
           drag.reset();
         } catch (const std::exception& e) {

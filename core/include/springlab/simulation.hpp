@@ -124,6 +124,7 @@ class Simulation {
   // Automatic sub-steps: whether on, and whether the choice reached kMaxAutoSubsteps.
   bool auto_substeps() const { return settings_.auto_substeps; }
   bool substeps_capped() const { return substeps_capped_; }
+  void set_analyse_when_needed(bool on) { settings_.analyse_when_needed = on; }
   // The model and state an analysis must be made from to be the one stability() would make.
   // Changes every time the model or the pinning changes (a counter, compared by the app).
   std::uint64_t model_version() const { return model_version_; }
