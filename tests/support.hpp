@@ -18,11 +18,14 @@ inline Scene shipped(const std::string& name, const std::vector<std::string>& ov
   return load_scene(scene_path(name), overrides);
 }
 
+// substeps 0: automatic (a scene's own setting unless it fixes them).
 inline Simulation simulation(const Scene& scene, Method method, double dt, int substeps = 1) {
   SimulationSettings s;
   s.method = method;
   s.dt = dt;
-  s.substeps = substeps;
+  s.substeps = std::max(1, substeps);
+  s.auto_substeps = substeps == 0;
+  s.safety = scene.safety;
   s.step.tolerance = scene.tolerance;
   return Simulation(scene.model, scene.state, s);
 }

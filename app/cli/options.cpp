@@ -137,14 +137,15 @@ Prepared prepare(const std::string& scene_name, const SimOptions& o) {
   if (o.kd) set_damping(s.model, *o.kd);
   if (o.threads) set_thread_count(*o.threads);
 
-  p.settings.method = method ? *method : s.methods.front();
+  p.settings = settings_for(s);
+  if (method) p.settings.method = *method;
   p.settings.dt = o.dt ? *o.dt : s.dt;
   // Sub-steps: fixed by --substeps N or by the scene's file, else chosen from the stability
   // limit (with the scene's safe fraction) when the simulation first steps.
-  const int fixed = substeps ? *substeps : s.substeps;
-  p.settings.auto_substeps = fixed == 0;
-  p.settings.substeps = std::max(1, fixed);
-  p.settings.safety = s.safety;
+  if (substeps) {
+    p.settings.auto_substeps = false;
+    p.settings.substeps = *substeps;
+  }
   p.settings.step.tolerance = o.tol ? *o.tol : s.tolerance;
   const double duration = o.duration ? *o.duration : s.duration;
   if (!o.steps) {

@@ -164,7 +164,7 @@ void Session::advance_frame() {
   for (Lane& lane : lanes_) {
     Simulation& sim = lane.sim;
     if (sim.diverged()) continue;
-    if (lane.waiting()) continue;  // its sub-steps are not chosen yet: it starts when they are
+    if (background_ && lane.waiting()) continue;  // its sub-steps are not chosen yet: it starts when they are
     if (grabbed_ >= 0 && drag_target_) {
       if (paused_) sim.place(grabbed_, *drag_target_);
       else sim.move_grabbed(*drag_target_, frame_time);
@@ -198,7 +198,7 @@ void Session::step_once() {
   double latest = target_;
   update_analyses();
   for (Lane& lane : lanes_) {
-    if (lane.sim.diverged() || lane.waiting()) continue;
+    if (lane.sim.diverged() || (background_ && lane.waiting())) continue;
     lane.sim.step();
     if (lane.ik) iterate_ik(lane, 1);
     latest = std::max(latest, lane.sim.state().t);

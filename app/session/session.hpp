@@ -48,7 +48,8 @@ struct Lane {
   // The last state that looked sane (positions within a few scene sizes of where they started):
   // what a diverged lane is drawn as, never its blown-up geometry.
   State sane;
-  // Whether the lane waits for its first analysis before it steps (automatic sub-steps).
+  // Whether the lane waits for its first analysis before it steps (automatic sub-steps, in the
+  // session's background mode; otherwise the simulation makes it when it first steps).
   bool waiting() const { return sim.auto_substeps() && !analysis && !sim.has_stability(); }
 };
 

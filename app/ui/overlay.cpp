@@ -55,7 +55,7 @@ void draw_overlay(const app::Session& session, const draw::ViewCamera& camera, c
 
   // A lane waiting for its stability analysis (its sub-steps are chosen from it).
   bool waiting = false;
-  for (const app::Lane& lane : session.lanes()) waiting |= lane.waiting();
+  for (const app::Lane& lane : session.lanes()) waiting |= session.background_analysis() && lane.waiting();
   if (waiting) {
     const char* s = "analysing stability: choosing the sub-steps...";
     const ImVec2 size = ImGui::CalcTextSize(s);

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "springlab/colliders.hpp"
+#include "springlab/scene.hpp"
 #include "springlab/spring_kernel.hpp"
 
 namespace springlab {
@@ -40,6 +41,17 @@ std::string format(double value) {
 }  // namespace
 
 std::string describe_limit(const StabilityLimit& limit) { return describe(limit); }
+
+SimulationSettings settings_for(const Scene& scene) {
+  SimulationSettings s;
+  s.method = scene.methods.front();
+  s.dt = scene.dt;
+  s.auto_substeps = scene.substeps == 0;
+  s.substeps = std::max(1, scene.substeps);
+  s.safety = scene.safety;
+  s.step.tolerance = scene.tolerance;
+  return s;
+}
 
 std::string Divergence::message() const {
   std::ostringstream s;

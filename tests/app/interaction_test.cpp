@@ -20,11 +20,8 @@ namespace {
 
 app::Session session_of(const std::string& name, std::optional<Method> method = std::nullopt) {
   Scene scene = test::shipped(name);
-  SimulationSettings s;
-  s.method = method ? *method : scene.methods.front();
-  s.dt = scene.dt;
-  s.substeps = scene.substeps;
-  s.step.tolerance = scene.tolerance;
+  SimulationSettings s = settings_for(scene);
+  if (method) s.method = *method;
   return app::Session(std::move(scene), s, 60.0);
 }
 

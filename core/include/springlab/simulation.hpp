@@ -51,6 +51,11 @@ struct SimulationSettings {
   double audit_fraction = kAuditFraction;
 };
 
+// A scene's own settings: its first method, its step, its sub-steps (automatic unless it fixes
+// them) and safe fraction, its tolerance.
+struct Scene;
+SimulationSettings settings_for(const Scene& scene);
+
 // NUMERICS.md: a run has diverged when a position or velocity is not finite, or when the total
 // energy exceeds 1e6 times the scene's energy scale; an adaptive step below its floor too. The
 // kinetic energy is tested every step (cheap), the total every energy_check_interval steps.
