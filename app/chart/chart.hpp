@@ -20,7 +20,7 @@ struct Series {
   std::vector<bool> crossed;       // per point: drawn as a cross (a diverged run)
   float width = 2.0f;              // pixels
   // A series that left the sane range (a diverged lane): it does not set the axes' range, and is
-  // drawn up to where it leaves the plot, with a marker on the edge there.
+  // drawn up to where it leaves the plot, with a marker on the edge there; its legend entry is red.
   bool escapes = false;
 };
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "draw/palette.hpp"
+
 namespace springlab::chart {
 
 namespace {
@@ -140,7 +142,8 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
       if (s.label.empty()) continue;
       const float mid = y + 0.5f * line_h;
       list->AddLine(ImVec2(x, mid), ImVec2(x + 20, mid), color(s.color), 3.0f);
-      list->AddText(nullptr, 0.0f, ImVec2(x + 26, y), text, s.label.c_str(), nullptr, most);
+      list->AddText(nullptr, 0.0f, ImVec2(x + 26, y), s.escapes ? color(draw::kDiverged) : text, s.label.c_str(),
+                    nullptr, most);
       y += ImGui::CalcTextSize(s.label.c_str(), nullptr, false, most).y;
     }
   }

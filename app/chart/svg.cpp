@@ -135,7 +135,8 @@ std::string to_svg(const Chart& chart, int width, int height) {
         const double y = y0 + row++ * line + 0.5 * line;
         s << "<line x1=\"" << x << "\" y1=\"" << y << "\" x2=\"" << x + 22 << "\" y2=\"" << y << "\" stroke=\""
           << draw::hex(series.color) << "\" stroke-width=\"3\"" << (series.dashed ? " stroke-dasharray=\"5 3\"" : "")
-          << "/>\n<text x=\"" << x + 30 << "\" y=\"" << y + kFont * 0.35 << "\" fill=\"" << text << "\">"
+          << "/>\n<text x=\"" << x + 30 << "\" y=\"" << y + kFont * 0.35 << "\" fill=\""
+          << (series.escapes ? draw::hex(draw::kDiverged) : std::string(text)) << "\">"
           << escape(series.label) << "</text>\n";
       }
     }

@@ -140,13 +140,14 @@ chart::Series series(const std::string& label, const draw::Rgba& color, const ap
 }
 
 // A lane that diverged: its line does not set the chart's scale, leaves it with a marker on the
-// edge, and its legend says where and how far it went.
+// edge, and its legend entry (red: the chart's legend colours an escaping series so) gives the
+// value it reached. When it diverged is said beside the lane and in the clocks; kept short here,
+// a legend never wraps over the lines it names.
 void mark_diverged(chart::Series& s, const app::Lane& lane, const char* unit) {
   if (!lane.sim.diverged()) return;
   s.escapes = true;
   if (s.label.empty() || s.y.empty()) return;
-  s.label += std::string(lane.sim.divergence()->unstable ? " unstable " : " diverged ") +
-             fmt("%.3g s, ", lane.sim.divergence()->t) + fmt("%.2g ", s.y.back()) + unit;
+  s.label += fmt(" %.2g ", s.y.back()) + unit;
 }
 
 // IK scenes: how far each solver's end is from the target, frame by frame (log scale: the
@@ -426,8 +427,10 @@ void parameters(app::Session& session, UiState& ui, bool few) {
   for (const app::Lane& lane : session.lanes())
     if (lane.sim.auto_substeps() && lane.sim.substeps_capped() && lane.analysis) {
       const bool hopeless = lane.analysis->limit(lane.sim.settings().method).h == 0.0;
+      ImGui::PushTextWrapPos(0.0f);
       ImGui::TextColored(kNear, "%s: %s", method_info(lane.sim.settings().method).name,
                          hopeless ? "unstable at any step: sub-steps cannot help" : "sub-steps capped: still past its limit");
+      ImGui::PopTextWrapPos();
       break;
     }
   if (few) return;

@@ -17,9 +17,9 @@ constexpr double kTwoPi = 2.0 * kPi;
 constexpr double kNoDirection = 1e-12;
 
 const IkSolverInfo kSolvers[] = {
-    {IkSolver::CCD, "ccd", "Cyclic coordinate descent"},
+    {IkSolver::CCD, "ccd", "Cyclic coord. descent"},
     {IkSolver::FABRIK, "fabrik", "FABRIK"},
-    {IkSolver::DLS, "dls", "Damped least squares (Jacobian)"},
+    {IkSolver::DLS, "dls", "Damped least squares"},
 };
 
 Eigen::Vector2d direction(double phi) { return {std::cos(phi), std::sin(phi)}; }

@@ -34,6 +34,9 @@ struct Case {
   int frame = 0;
 };
 
+// CTest names each case by this, not by the struct's bytes.
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+
 std::vector<Case> load_cases() {
   std::vector<Case> cases;
   std::ifstream in(std::string(SPRINGLAB_SOURCE_DIR) + "/tests/golden/cases.txt");
