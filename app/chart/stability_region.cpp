@@ -140,19 +140,26 @@ Chart stability_region(const StabilityAnalysis& analysis, const std::vector<Regi
     c.x.label = "Re(h lambda)";
     c.y.label = "Im(h lambda)";
     const std::vector<Complex> lambdas = spectrum(analysis);
-    // The view: the regions (about 3 across) and the dots, whichever is larger, at most 40.
-    double reach = 3.0;
+    // The view: the dots with room around them (at small h they sit near 0, where the regions'
+    // edges decide), at least 1 across (where the regions differ) and at most 40.
+    double reach = 1.0;
     for (const RegionLane& l : shown)
-      for (Complex z : lambdas) reach = std::max(reach, 1.1 * std::abs(l.h * z));
+      for (Complex z : lambdas) reach = std::max(reach, 1.5 * std::abs(l.h * z));
     reach = std::min(reach, 40.0);
     const double x0 = -reach, x1 = 0.25 * reach, y0 = -reach, y1 = reach;
     c.x.min = x0;
     c.x.max = x1;
     c.y.min = y0;
     c.y.max = y1;
-    for (const RegionLane& l : shown)
-      region([&](double x, double y) { return stable_at(l.method, Complex(x, y)); }, x0, x1, y0, y1,
-             draw::method_color(l.method), region_verdict(analysis, l), c.series);
+    // An explicit method's region lies within |z| <= 3 (RK4's reaches 2.83): sampled there, its
+    // edge is smooth however far the view reaches. Implicit Euler's is everything but a disc.
+    for (const RegionLane& l : shown) {
+      const bool bounded = !method_info(l.method).implicit;
+      region([&](double x, double y) { return stable_at(l.method, Complex(x, y)); },
+             bounded ? std::max(x0, -3.0) : x0, bounded ? std::min(x1, 0.5) : x1, bounded ? std::max(y0, -3.0) : y0,
+             bounded ? std::min(y1, 3.0) : y1, draw::method_color(l.method), region_verdict(analysis, l), c.series);
+    }
+    std::vector<Series> outsides;  // drawn last: a red dot is never hidden under another lane's
     for (const RegionLane& l : shown) {
       Series inside, outside;
       inside.color = draw::method_color(l.method);
@@ -169,8 +176,9 @@ Chart stability_region(const StabilityAnalysis& analysis, const std::vector<Regi
         s.y.insert(s.y.end(), {z.imag(), nan});
       }
       c.series.push_back(std::move(inside));
-      c.series.push_back(std::move(outside));
+      outsides.push_back(std::move(outside));
     }
+    for (Series& o : outsides) c.series.push_back(std::move(o));
     return c;
   }
 
@@ -190,9 +198,12 @@ Chart stability_region(const StabilityAnalysis& analysis, const std::vector<Regi
   c.x.max = xmax;
   c.y.min = 0.0;
   c.y.max = ymax;
+  // Every region here lies within h w <= 2, h c <= 2 (the closed forms of NUMERICS.md): sampled
+  // there, its edge stays smooth when the modes stretch the view.
   for (const RegionLane& l : shown)
-    region([&](double x, double y) { return stable_at(l.method, x, y); }, 0.0, xmax, 0.0, ymax,
-           draw::method_color(l.method), region_verdict(analysis, l), c.series);
+    region([&](double x, double y) { return stable_at(l.method, x, y); }, 0.0, std::min(xmax, 2.2), 0.0,
+           std::min(ymax, 2.2), draw::method_color(l.method), region_verdict(analysis, l), c.series);
+  std::vector<Series> outsides;
   for (const RegionLane& l : shown) {
     Series inside, outside;
     inside.color = draw::method_color(l.method);
@@ -209,8 +220,9 @@ Chart stability_region(const StabilityAnalysis& analysis, const std::vector<Regi
       s.y.insert(s.y.end(), {Y, nan});
     }
     c.series.push_back(std::move(inside));
-    c.series.push_back(std::move(outside));
+    outsides.push_back(std::move(outside));
   }
+  for (Series& o : outsides) c.series.push_back(std::move(o));
   return c;
 }
 

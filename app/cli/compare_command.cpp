@@ -11,6 +11,7 @@
 
 #include "chart/compare_charts.hpp"
 #include "chart/imgui_chart.hpp"
+#include "chart/stability_region.hpp"
 #include "chart/svg.hpp"
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
@@ -92,9 +93,30 @@ void write_csvs(const std::filesystem::path& dir, const SweepResult& r) {
   summary.commit();
 }
 
-void write_charts(const std::filesystem::path& dir, const SweepResult& r, const std::string& scene, bool software) {
+// The stability-region charts (stability_region.hpp) of the sweep's fixed-step methods, each at
+// the step `run` takes with the scene's dt (its sub-steps as the drift runs chose them): one
+// chart per plane, none for a scene without oscillating modes.
+std::vector<chart::NamedChart> region_charts(const Prepared& p, const SweepResult& r) {
+  std::vector<chart::NamedChart> out;
+  const StabilityAnalysis analysis(p.scene.model, p.scene.state);
+  if (!analysis.oscillates()) return out;
+  std::vector<chart::RegionLane> complex, oscillator;
+  for (const MethodSummary& m : r.methods) {
+    if (method_info(m.method).adaptive) continue;
+    int substeps = p.settings.substeps;
+    for (const DriftTrace& d : r.drift)
+      if (d.method == m.method) substeps = d.substeps;
+    const chart::RegionLane lane{m.method, p.settings.dt / substeps};
+    (chart::region_plane(m.method) == chart::RegionPlane::Complex ? complex : oscillator).push_back(lane);
+  }
+  if (!complex.empty()) out.push_back({"stability-region", chart::stability_region(analysis, complex)});
+  if (!oscillator.empty())
+    out.push_back({"stability-region-oscillator", chart::stability_region(analysis, oscillator)});
+  return out;
+}
+
+void write_charts(const std::filesystem::path& dir, const std::vector<chart::NamedChart>& charts, bool software) {
   constexpr int kWidth = 1200, kHeight = 760;
-  const auto charts = chart::compare_charts(r, scene);
   for (const auto& named : charts) {
     AtomicFile svg(dir / (named.name + ".svg"), "chart");
     const std::string text = chart::to_svg(named.chart, kWidth, kHeight);
@@ -167,7 +189,12 @@ int compare(const CompareOptions& o) {
   });
   progress.finish();
   write_csvs(o.out, r);
-  if (!o.no_charts) write_charts(o.out, r, p.scene.name, o.software);
+  std::vector<chart::NamedChart> charts;
+  if (!o.no_charts) {
+    charts = chart::compare_charts(r, p.scene.name);
+    for (chart::NamedChart& region : region_charts(p, r)) charts.push_back(std::move(region));
+    write_charts(o.out, charts, o.software);
+  }
 
   std::printf("scene      %s: %d particles, %d springs; w_max = %.4g rad/s\n", p.scene.name.c_str(),
               p.scene.model.particle_count(), p.scene.model.spring_count(), r.w_max);
@@ -203,8 +230,10 @@ int compare(const CompareOptions& o) {
     std::printf("\ndrift      at dt = %s, sub-steps (%s): %s\n", step_text(dt).c_str(),
                 p.settings.auto_substeps ? "auto" : "fixed", list.c_str());
   }
-  std::printf("\nwritten    %s/results.csv, summary.csv%s\n", o.out.c_str(),
-              o.no_charts ? "" : ", work-precision, convergence, stability, energy-drift (.png, .svg)");
+  std::string names;
+  for (const chart::NamedChart& c : charts) names += ", " + c.name;
+  std::printf("\nwritten    %s/results.csv, summary.csv%s%s\n", o.out.c_str(), names.c_str(),
+              charts.empty() ? "" : " (.png, .svg)");
   return kOk;
 }
 

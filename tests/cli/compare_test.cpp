@@ -52,6 +52,15 @@ TEST(Compare, OnTheSpringWritesResultsSummaryAndCharts) {
   for (const char* part : {"reference: exact solution", "symplectic-euler", "0.2 s", "0.2828 s", "never", "always"})
     EXPECT_NE(r.out.find(part), std::string::npos) << part << "\n" << r.out;
   EXPECT_NE(read_file(dir / "convergence.svg").find("rk4 (order"), std::string::npos);
+  // The stability regions at the scene's step h = 1/120 s: w = 10 rad/s, so h w = 0.0833 against
+  // RK4's 2.828 (h may grow x33.9) and symplectic Euler's 2 (x24); explicit Euler has no step.
+  const std::string complex = read_file(dir / "stability-region.svg");
+  EXPECT_NE(complex.find("rk4: every mode inside; h may grow x33.9"), std::string::npos);
+  EXPECT_NE(complex.find("euler: unstable at any step"), std::string::npos);
+  const std::string oscillator = read_file(dir / "stability-region-oscillator.svg");
+  EXPECT_NE(oscillator.find("symplectic-euler: every mode inside; h may grow x24"), std::string::npos);
+  EXPECT_TRUE(fs::exists(dir / "stability-region.png"));
+  EXPECT_TRUE(fs::exists(dir / "stability-region-oscillator.png"));
   const app::Image png = app::read_png(dir / "convergence.png");
   EXPECT_EQ(png.width, 1200);
 }
@@ -79,6 +88,17 @@ TEST_P(EveryScene, IsChartedWithoutError) {
     EXPECT_TRUE(fs::exists(dir / (std::string(chart) + ".png"))) << chart;
     EXPECT_TRUE(fs::exists(dir / (std::string(chart) + ".svg"))) << chart;
   }
+  // The stability regions for a scene with springs; none for a particle system (no oscillating
+  // modes); never a NaN or infinite coordinate in any chart.
+  const bool springs = scene.model.spring_count() > 0;
+  for (const char* chart : {"stability-region", "stability-region-oscillator"})
+    EXPECT_EQ(fs::exists(dir / (std::string(chart) + ".svg")), springs) << chart;
+  for (const auto& e : fs::directory_iterator(dir.path))
+    if (e.path().extension() == ".svg") {
+      const std::string svg = read_file(e.path());
+      EXPECT_EQ(svg.find("nan"), std::string::npos) << e.path();
+      EXPECT_EQ(svg.find("inf\""), std::string::npos) << e.path();
+    }
 }
 
 std::vector<std::string> scenes() {
