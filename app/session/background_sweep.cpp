@@ -7,9 +7,7 @@ BackgroundSweep::~BackgroundSweep() {
   join();
 }
 
-void BackgroundSweep::join() {
-  if (worker_.joinable()) worker_.join();
-}
+void BackgroundSweep::join() { worker_.join(); }
 
 void BackgroundSweep::cancel() {
   cancel_ = true;
@@ -25,7 +23,7 @@ void BackgroundSweep::start(const Model& model, const State& state, const SweepS
   }
   cancel_ = false;
   running_ = true;
-  worker_ = std::thread([this, model, state, settings] {
+  worker_.start([this, model, state, settings] {
     SweepResult result = run_sweep(model, state, settings, [this](const SweepRun& run, int done, int total) {
       std::lock_guard lock(mutex_);
       if (run.h > 0) partial_.runs.push_back(run);

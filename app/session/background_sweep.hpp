@@ -1,13 +1,14 @@
 // A sweep (core/sweep.hpp) run on a worker thread while the app goes on drawing: started on a
 // copy of the scene as it is now, it reports progress and its runs as they finish (so the charts
-// fill in while a class watches), and can be cancelled at any moment.
+// fill in while a class watches), and can be cancelled at any moment. Without threads
+// (util/worker.hpp) start() returns when the sweep is done.
 #pragma once
 
 #include <atomic>
 #include <mutex>
-#include <thread>
 
 #include "springlab/sweep.hpp"
+#include "util/worker.hpp"
 
 namespace springlab::app {
 
@@ -30,7 +31,7 @@ class BackgroundSweep {
 
  private:
   void join();
-  std::thread worker_;
+  Worker worker_;
   std::atomic<bool> cancel_{false}, running_{false};
   mutable std::mutex mutex_;
   SweepResult partial_;

@@ -25,8 +25,6 @@
 // are bit-identical for any thread count.
 #pragma once
 
-#include <omp.h>
-
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -37,6 +35,7 @@
 #include "springlab/fields.hpp"
 #include "springlab/forces.hpp"
 #include "springlab/spring_kernel.hpp"
+#include "threads.hpp"
 
 namespace springlab {
 
@@ -448,8 +447,8 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
   // own are done, sweeps the blocks left at the back of another run: the cores of this machine
   // slow down one at a time, and the faster one helps rather than waits. A run's unclaimed
   // blocks are one atomic word, the pass's number (24 bits), front and back (20 bits each).
-  const bool parallel = springs + n >= kParallelThreshold && omp_get_max_threads() > 1;
-  plan.runs.resize(std::max(1, parallel ? omp_get_max_threads() : 1));
+  const bool parallel = springs + n >= kParallelThreshold && threads::max_team() > 1;
+  plan.runs.resize(std::max(1, parallel ? threads::max_team() : 1));
   const std::uint64_t tag = pass_number & 0xFFFFFFu;
   const auto word = [tag](std::uint64_t front, std::uint64_t back) {
     return tag << 40 | front << 20 | back;
@@ -484,7 +483,7 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
   };
   if (parallel) {
 #pragma omp parallel
-    pass(omp_get_num_threads(), omp_get_thread_num());
+    pass(threads::team_size(), threads::team_index());
   } else {
     pass(1, 0);
   }

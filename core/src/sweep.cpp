@@ -1,7 +1,5 @@
 #include "springlab/sweep.hpp"
 
-#include <omp.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -13,6 +11,7 @@
 #include "springlab/energy.hpp"
 #include "springlab/exact.hpp"
 #include "springlab/simulation.hpp"
+#include "threads.hpp"
 
 namespace springlab {
 
@@ -110,9 +109,9 @@ Trajectory rk4_trajectory(const Model& model, const State& initial, double h, in
 // is parallel across runs instead).
 void parallel_for(int jobs, int workers, const std::function<void(int)>& job, const std::atomic<bool>* cancel) {
   std::atomic<int> next{0};
-  const int caller_threads = omp_get_max_threads();
+  const int caller_threads = threads::max_team();
   const auto work = [&] {
-    omp_set_num_threads(1);
+    threads::set_max_team(1);
     for (int j; (j = next++) < jobs;) {
       if (cancel && cancel->load()) return;
       job(j);
@@ -122,7 +121,7 @@ void parallel_for(int jobs, int workers, const std::function<void(int)>& job, co
   for (int w = 1; w < workers; ++w) threads.emplace_back(work);
   work();
   for (auto& t : threads) t.join();
-  omp_set_num_threads(caller_threads);
+  threads::set_max_team(caller_threads);
 }
 
 std::string format(double x) {
@@ -175,7 +174,8 @@ SweepResult run_sweep(const Model& model, const State& initial, const SweepSetti
   const std::vector<int> divisors = step_divisors(settings.h_min, H, settings.points);
   result.sample_interval = H;
   result.samples = std::max(1, static_cast<int>(std::lround(settings.duration / H)));
-  const int workers = settings.workers > 0 ? settings.workers : static_cast<int>(std::thread::hardware_concurrency());
+  // Without threads (threads.hpp) every run is made on the caller's.
+  const int workers = !threads::kAvailable ? 1 : settings.workers > 0 ? settings.workers : threads::hardware_workers();
 
   // The reference.
   Trajectory reference;

@@ -38,8 +38,6 @@
 // product, conjugate gradients); the step.
 #include "implicit_euler.hpp"
 
-#include <omp.h>
-
 #include <algorithm>
 #include <cmath>
 #include <span>

@@ -1,0 +1,48 @@
+// The browser computes the same physics: the state after a fixed run of shipped scenes, hashed to
+// the bit (state_hash), is pinned here, and this test runs both natively (core_tests, one
+// thread) and compiled to WebAssembly in Chromium (tests/web). Both have IEEE doubles, no FMA
+// contraction (-ffp-contract=off) and the same summation order, so the bits agree; a change to
+// the physics changes the pins on purpose (the native run prints the new value).
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "springlab/forces.hpp"
+#include "support.hpp"
+
+namespace springlab {
+namespace {
+
+struct Pinned {
+  const char* scene;
+  std::vector<std::string> overrides;
+  Method method;
+  int steps;
+  std::uint64_t hash;
+};
+
+TEST(StateHash, SameBitsNativeAndInTheBrowser) {
+  const Pinned cases[] = {
+      {"spring", {}, Method::Euler, 1000, 0x0ull},
+      {"rope", {}, Method::SymplecticEuler, 2000, 0x0ull},
+      {"rope", {}, Method::RK4, 500, 0x0ull},
+      {"cloth", {}, Method::Verlet, 300, 0x0ull},
+      {"cloth", {}, Method::ImplicitEuler, 30, 0x0ull},
+      {"jelly", {}, Method::Midpoint, 300, 0x0ull},
+  };
+  set_thread_count(1);
+  for (const Pinned& c : cases) {
+    const Scene scene = test::shipped(c.scene, c.overrides);
+    Simulation sim = test::simulation(scene, c.method, scene.dt);
+    sim.advance(c.steps);
+    const std::uint64_t hash = state_hash(sim.state());
+    EXPECT_EQ(hash, c.hash) << c.scene << ", " << method_info(c.method).name << ", " << c.steps
+                            << " steps: 0x" << std::hex << hash;
+  }
+  set_thread_count(0);
+}
+
+}  // namespace
+}  // namespace springlab
