@@ -227,7 +227,7 @@ void with_law(double kd, bool measured, const F& f) {
 // Waits until `flag` holds `value` (acquire): spins briefly, as the wait is usually short, then
 // yields, so that a thread that is not running (more threads than cores) gets the core.
 inline void wait_for(std::uint32_t& flag, std::uint32_t value) {
-  std::atomic_ref<std::uint32_t> ref(flag);
+  threads::atomic_ref<std::uint32_t> ref(flag);
   for (int spins = 0; ref.load(std::memory_order_acquire) != value; ++spins) {
     if (spins < 4096) {
 #if defined(__x86_64__) || defined(__i386__)
@@ -397,7 +397,7 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
       });
     }
     if (measured) block_power[blk] = simd::sum(power);
-    std::atomic_ref<std::uint32_t>(done[blk]).store(pass_number, std::memory_order_release);
+    threads::atomic_ref<std::uint32_t>(done[blk]).store(pass_number, std::memory_order_release);
   };
 
   // Step 2 of a block, chunk by chunk: the external forces of the particles the chunk's springs
@@ -455,7 +455,7 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
   };
   // Claims a block of run r, from the front (its owner) or the back; -1 when none is left.
   const auto claim = [&](int r, bool front) {
-    std::atomic_ref<std::uint64_t> run(plan.runs[r]);
+    threads::atomic_ref<std::uint64_t> run(plan.runs[r]);
     std::uint64_t old = run.load(std::memory_order_relaxed);
     for (;;) {
       const int f = static_cast<int>(old >> 20 & 0xFFFFF), b = static_cast<int>(old & 0xFFFFF);
@@ -468,7 +468,7 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
   // thread of an enclosing parallel region, whose numbers are not this pass's.)
   const auto pass = [&](int threads, int thread) {
     const int first = blocks * thread / threads, last = blocks * (thread + 1) / threads;
-    std::atomic_ref<std::uint64_t>(plan.runs[thread]).store(word(first, last),
+    threads::atomic_ref<std::uint64_t>(plan.runs[thread]).store(word(first, last),
                                                             std::memory_order_relaxed);
     if (first < last) {
       start(last - 1);
@@ -477,7 +477,7 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
     for (int blk; (blk = claim(thread, true)) >= 0;) sweep(blk);
     for (int other = 1; other < threads; ++other)
       for (int blk; (blk = claim((thread + other) % threads, false)) >= 0;) {
-        std::atomic_ref<std::uint64_t>(plan.stolen).fetch_add(1, std::memory_order_relaxed);
+        threads::atomic_ref<std::uint64_t>(plan.stolen).fetch_add(1, std::memory_order_relaxed);
         sweep(blk);
       }
   };

@@ -8,6 +8,8 @@
 // pass sums in the same order for any thread count (force_pass.hpp).
 #pragma once
 
+#include <atomic>
+
 #if SPRINGLAB_OPENMP
 #include <omp.h>
 
@@ -15,6 +17,48 @@
 #endif
 
 namespace springlab::threads {
+
+// std::atomic_ref, or, where the standard library has none yet (emscripten 3.1.6's libc++), the
+// same operations on the compiler's atomic builtins (GCC and Clang).
+#if defined(__cpp_lib_atomic_ref)
+template <typename T>
+using atomic_ref = std::atomic_ref<T>;
+#else
+template <typename T>
+class atomic_ref {
+ public:
+  explicit atomic_ref(T& object) : p_(&object) {}
+  T load(std::memory_order order = std::memory_order_seq_cst) const { return __atomic_load_n(p_, builtin(order)); }
+  void store(T value, std::memory_order order = std::memory_order_seq_cst) const {
+    __atomic_store_n(p_, value, builtin(order));
+  }
+  T fetch_add(T value, std::memory_order order = std::memory_order_seq_cst) const {
+    return __atomic_fetch_add(p_, value, builtin(order));
+  }
+  bool compare_exchange_weak(T& expected, T desired, std::memory_order order = std::memory_order_seq_cst) const {
+    return __atomic_compare_exchange_n(p_, &expected, desired, true, builtin(order), builtin(failure(order)));
+  }
+
+ private:
+  static constexpr int builtin(std::memory_order order) {
+    switch (order) {
+      case std::memory_order_relaxed: return __ATOMIC_RELAXED;
+      case std::memory_order_consume: return __ATOMIC_CONSUME;
+      case std::memory_order_acquire: return __ATOMIC_ACQUIRE;
+      case std::memory_order_release: return __ATOMIC_RELEASE;
+      case std::memory_order_acq_rel: return __ATOMIC_ACQ_REL;
+      default: return __ATOMIC_SEQ_CST;
+    }
+  }
+  // A failed exchange only loads: no release in its order.
+  static constexpr std::memory_order failure(std::memory_order order) {
+    return order == std::memory_order_acq_rel ? std::memory_order_acquire
+           : order == std::memory_order_release ? std::memory_order_relaxed
+                                                : order;
+  }
+  T* p_;
+};
+#endif
 
 #if SPRINGLAB_OPENMP
 inline constexpr bool kAvailable = true;

@@ -1,0 +1,250 @@
+// springlab in a real browser: serves build-web/ on loopback, drives Debian's Chromium headlessly
+// (WebGL2 on SwiftShader) and checks the app as a user meets it, then runs the core's tests
+// compiled to WebAssembly. Prints a line per check; exits with the number of failures.
+//   node tests/web/browser_test.cjs [check name filter]
+// Screenshots and diff images go to build-web/_build/web-test/; SPRINGLAB_UPDATE_GOLDENS=1 writes
+// the golden images (tests/web/golden/) instead of comparing with them (look at them first).
+"use strict";
+const fs = require("fs");
+const os = require("os");
+const path = require("path");
+const { serve, launch, openApp, status, waitFrames, key, pauseAtStart, compareImages, pixels, consoleErrors } =
+  require("./page.cjs");
+
+const root = path.resolve(__dirname, "../..");
+const site = path.join(root, "build-web");
+const out = path.join(site, "_build", "web-test");
+const goldens = path.join(__dirname, "golden");
+const update = process.env.SPRINGLAB_UPDATE_GOLDENS === "1";
+fs.mkdirSync(out, { recursive: true });
+
+function expect(condition, what) {
+  if (!condition) throw new Error(what);
+}
+
+// A screenshot compared with its golden image: at most `tolerance` of the pixels may differ (the
+// panels' timings and frame rates are live text).
+async function matchesGolden(browser, page, name, tolerance = 0.01) {
+  const shot = await page.screenshot({ type: "png" });
+  fs.writeFileSync(path.join(out, name + ".png"), shot);
+  const golden = path.join(goldens, name + ".png");
+  if (update) {
+    fs.mkdirSync(goldens, { recursive: true });
+    fs.writeFileSync(golden, shot);
+    return;
+  }
+  expect(fs.existsSync(golden), `no golden image ${golden} (SPRINGLAB_UPDATE_GOLDENS=1 writes it)`);
+  const cmp = await compareImages(browser, fs.readFileSync(golden), shot);
+  if (cmp.diff) fs.writeFileSync(path.join(out, name + "-diff.png"), cmp.diff);
+  expect(!cmp.sizeMismatch, `${name}: size ${cmp.sizeMismatch}`);
+  expect(cmp.fraction <= tolerance,
+         `${name}: ${(100 * cmp.fraction).toFixed(2)} % of pixels differ from the golden image (at most ` +
+         `${100 * tolerance} %); see ${path.join(out, name + "-diff.png")}`);
+}
+
+// The share of pixels that differ between two screenshots.
+async function difference(browser, a, b) {
+  return (await compareImages(browser, a, b)).fraction;
+}
+
+// The bounding box of the pixels that differ from the background in an area of a screenshot.
+function scenePixels(img, x0, y0, x1, y1, test) {
+  const found = [];
+  for (let y = y0; y < y1; y++)
+    for (let x = x0; x < x1; x++) {
+      const i = 4 * (y * img.w + x);
+      if (test(img.data[i], img.data[i + 1], img.data[i + 2])) found.push([x, y]);
+    }
+  return found;
+}
+
+const checks = [];
+const check = (name, run) => checks.push({ name, run });
+
+check("the rope scene renders (golden image)", async ({ browser, base }) => {
+  const page = await openApp(browser, base, "scene=rope");
+  await pauseAtStart(page);
+  const s = await status(page);
+  expect(s.scene === "rope" && s.method === "euler" && s.message === "", `status ${JSON.stringify(s)}`);
+  await matchesGolden(browser, page, "rope");
+  await page.close();
+});
+
+check("dragging a particle moves it", async ({ browser, base }) => {
+  const page = await openApp(browser, base, "scene=rope");
+  await pauseAtStart(page);
+  await key(page, "KeyH");  // no panels: the scene fills the page
+  const before = await page.screenshot({ type: "png" });
+  const img = await pixels(browser, before);
+  // The rope's spheres: near-white pixels in the scene (below the overlay's first lines).
+  const white = scenePixels(img, 0, 60, img.w, img.h, (r, g, b) => r > 200 && g > 200 && b > 200);
+  expect(white.length > 50, `no rope found (${white.length} white pixels)`);
+  const end = white.reduce((a, p) => (p[0] > a[0] ? p : a));  // the free end: the rightmost sphere
+  const to = [end[0] - 100, end[1] + 150];
+  await page.mouse.move(end[0] - 2, end[1]);
+  await page.mouse.down();
+  for (let k = 1; k <= 10; k++) {
+    await page.mouse.move(end[0] - 2 + (to[0] - end[0] + 2) * k / 10, end[1] + (to[1] - end[1]) * k / 10);
+    await waitFrames(page, 1);
+  }
+  await waitFrames(page, 3);
+  const during = await page.screenshot({ type: "png" });
+  await page.mouse.up();
+  fs.writeFileSync(path.join(out, "drag-before.png"), before);
+  fs.writeFileSync(path.join(out, "drag-during.png"), during);
+  const after = await pixels(browser, during);
+  const near = (im, x, y, r) =>
+    scenePixels(im, Math.max(0, x - r), Math.max(0, y - r), Math.min(im.w, x + r), Math.min(im.h, y + r),
+                (R, G, B) => R > 200 && G > 200 && B > 200).length;
+  const atTarget = near(after, to[0], to[1], 14), atStart = near(after, end[0], end[1], 8);
+  expect(atTarget > 10, `nothing white where the particle was dragged to (${atTarget} pixels near ${to})`);
+  expect(atStart < near(img, end[0], end[1], 8), `the particle's old place is unchanged (${atStart} pixels)`);
+  await page.close();
+});
+
+check("method and dt from the link take effect", async ({ browser, base }) => {
+  const link = "scene=spring&method=rk4&dt=0.004";
+  const a = await openApp(browser, base, link), b = await openApp(browser, base, link);
+  const d = await openApp(browser, base, "scene=spring");
+  const sa = await status(a);
+  expect(sa.method === "rk4" && sa.dt === 0.004 && sa.message === "", `status ${JSON.stringify(sa)}`);
+  expect((await status(d)).method !== "rk4", "the default method is rk4 too: pick another for this test");
+  for (const p of [a, b, d]) await pauseAtStart(p);
+  const [ia, ib, id] = [await a.screenshot(), await b.screenshot(), await d.screenshot()];
+  fs.writeFileSync(path.join(out, "link-rk4.png"), ia);
+  const same = await difference(browser, ia, ib), other = await difference(browser, ia, id);
+  expect(same < 0.01, `the same link twice differs in ${(100 * same).toFixed(2)} % of pixels`);
+  expect(other > same + 0.002, `rk4 at dt 0.004 looks like the default (${(100 * other).toFixed(2)} % differ)`);
+  for (const p of [a, b, d]) await p.close();
+});
+
+check("method and dt from the panels take effect", async ({ browser, base }) => {
+  const page = await openApp(browser, base, "scene=spring");
+  const before = await status(page);
+  // The method: key 5 is the fifth method of the table (rk4).
+  await key(page, "Digit5");
+  // dt: a ctrl-click on its slider types a value (Dear ImGui), as a user would.
+  const box = await page.evaluate(() => window.springlabDtSlider || null);
+  const at = box || { x: 85, y: 0 };
+  const s1 = await status(page);
+  expect(s1.method === "rk4" && before.method !== "rk4", `method: ${before.method} -> ${s1.method}`);
+  const slider = await findSlider(browser, page, "dt");
+  await page.keyboard.down("Control");
+  await page.mouse.click(slider.x, slider.y);
+  await page.keyboard.up("Control");
+  await waitFrames(page, 2);
+  await page.keyboard.down("Control");
+  await page.keyboard.press("KeyA");
+  await page.keyboard.up("Control");
+  await page.keyboard.type("0.002");
+  await page.keyboard.press("Enter");
+  await waitFrames(page, 3);
+  const s2 = await status(page);
+  fs.writeFileSync(path.join(out, "panel-dt.png"), await page.screenshot());
+  expect(Math.abs(s2.dt - 0.002) < 1e-12, `dt after typing 0.002 into its slider: ${s2.dt} (was ${s1.dt}); at ${at.x}`);
+  await page.close();
+});
+
+check("a compare link shows the lanes", async ({ browser, base }) => {
+  const page = await openApp(browser, base, "scene=rope&compare=euler,verlet,rk4");
+  const s = await status(page);
+  expect(s.lanes.map((l) => l.method).join(",") === "euler,verlet,rk4", `lanes ${JSON.stringify(s.lanes)}`);
+  await pauseAtStart(page);
+  await matchesGolden(browser, page, "rope-compare");
+  await page.close();
+});
+
+check("a bad link says which parameter and opens the default scene", async ({ browser, base }) => {
+  for (const [link, words] of [["scene=ropee", ["scene 'ropee'", "rope"]], ["scene=rope&dt=-1", ["dt", "(0, 1]"]],
+                               ["method=eulr", ["method", "euler"]], ["speed=2", ["unknown parameter 'speed'"]],
+                               ["compare=euler", ["compare", "2 to 4"]], ["ks=abc", ["ks", "number"]]]) {
+    const page = await openApp(browser, base, link);
+    const s = await status(page);
+    for (const w of words) expect(s.message.includes(w), `${link}: message '${s.message}' lacks '${w}'`);
+    expect(s.scene === "rope" && s.lanes.length === 1, `${link}: opened ${s.scene}`);
+    if (link === "scene=rope&dt=-1") fs.writeFileSync(path.join(out, "bad-link.png"), await page.screenshot());
+    await page.close();
+  }
+});
+
+check("a bad scene file gives the message and the scene keeps running", async ({ browser, base }) => {
+  const page = await openApp(browser, base, "scene=rope");
+  const bad = path.join(os.tmpdir(), "springlab-bad-scene.json");
+  fs.writeFileSync(bad, '{ "particles": [ { "position": [0, 0] } ] }');
+  const input = await page.$("#scene-file");
+  await input.uploadFile(bad);
+  await page.waitForFunction(() => JSON.parse(Module.ccall("springlab_status", "string", [], [])).message !== "",
+                             { timeout: 10000 });
+  const s1 = await status(page);
+  await waitFrames(page, 10);
+  const s2 = await status(page);
+  fs.writeFileSync(path.join(out, "bad-file.png"), await page.screenshot());
+  expect(s1.message.includes("springlab-bad-scene.json"), `message '${s1.message}' does not name the file`);
+  expect(s2.scene === "rope" && s2.lanes[0].t > s1.lanes[0].t, `rope stopped: ${JSON.stringify(s2)}`);
+  // And a good one opens.
+  const good = path.join(os.tmpdir(), "my-spring.json");
+  fs.copyFileSync(path.join(root, "assets/scenes/spring.json"), good);
+  await input.uploadFile(good);
+  await page.waitForFunction(() => JSON.parse(Module.ccall("springlab_status", "string", [], [])).scene.includes("my-spring"),
+                             { timeout: 10000 });
+  await page.close();
+});
+
+check("copy link gives the link of what is shown", async ({ browser, base }) => {
+  const page = await openApp(browser, base, "scene=rope&compare=euler,verlet&ks=5000");
+  // The button is in the top right corner.
+  const shot = await pixels(browser, await page.screenshot());
+  await page.mouse.click(shot.w - 160, 22);
+  await page.waitForFunction(() => typeof window.springlabLink === "string", { timeout: 5000 });
+  const link = await page.evaluate(() => window.springlabLink);
+  expect(/#scene=rope&compare=euler,verlet&ks=5000$/.test(link), `link ${link}`);
+  await page.close();
+});
+
+check("the core's tests pass compiled to WebAssembly", async ({ browser, base }) => {
+  const page = await browser.newPage();
+  page.on("pageerror", (e) => consoleErrors.push(`gtest: ${e.message}`));
+  await page.goto(`${base}/_build/tests/gtest.html`);
+  await page.waitForFunction("window.gtestResult !== undefined", { timeout: 600000, polling: 500 });
+  const [result, log] = await page.evaluate(() => [window.gtestResult, window.gtestLog]);
+  fs.writeFileSync(path.join(out, "core-tests-web.txt"), log.join("\n") + "\n");
+  const summary = log.filter((l) => /^\[  (PASSED|FAILED) |tests? ran/.test(l)).join("; ");
+  expect(result === 0, `${result} failed: ${log.filter((l) => l.startsWith("[  FAILED")).join("; ")}`);
+  console.log(`    ${summary}`);
+  await page.close();
+});
+
+check("the console has no errors", async () => {
+  expect(consoleErrors.length === 0, consoleErrors.join("\n"));
+});
+
+// The screen position of a slider of the left panel, by its label's place in the layout: found
+// by clicking nothing, only reading where Dear ImGui drew the label (the page reports it).
+async function findSlider(browser, page, label) {
+  const pos = await page.evaluate((l) => JSON.parse(Module.ccall("springlab_widget", "string", ["string"], [l])), label);
+  expect(pos && pos.w > 0, `no widget '${label}' on the panel`);
+  return { x: pos.x + pos.w / 2, y: pos.y + pos.h / 2 };
+}
+
+(async () => {
+  const filter = process.argv[2] || "";
+  const { server, base } = await serve(site);
+  const browser = await launch();
+  let failed = 0;
+  const start = Date.now();
+  for (const c of checks) {
+    if (!c.name.includes(filter) && c.name !== "the console has no errors") continue;
+    const t0 = Date.now();
+    try {
+      await c.run({ browser, base });
+      console.log(`ok    ${c.name} (${((Date.now() - t0) / 1000).toFixed(1)} s)`);
+    } catch (e) {
+      failed++;
+      console.log(`FAIL  ${c.name}: ${e.message}`);
+    }
+  }
+  console.log(`${checks.length - failed} of ${checks.length} browser checks passed in ${((Date.now() - start) / 1000).toFixed(0)} s`);
+  await browser.close();
+  server.close();
+  process.exit(failed);
+})();
