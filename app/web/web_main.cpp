@@ -21,7 +21,9 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <string>
+#include <utility>
 
 #include "platform/interactive_app.hpp"
 #include "springlab/error.hpp"
@@ -43,10 +45,17 @@ struct Page {
   FramePacer pacer{1.0 / 60.0, 0.25 / 60.0};
   double ui_scale = 1.0;  // the control's (--ui-scale); the panels' is this times the pixel ratio
   double pixel_ratio = 1.0;
+  std::optional<double> next_ui_scale;  // applied before the next frame (the fonts are in use during one)
   std::string link;  // the last copied
   long frames = 0;
 };
 Page* g_page = nullptr;
+
+void set_ui_scale(Page& page, double scale) {
+  page.ui_scale = std::clamp(scale, 0.5, 4.0);
+  page.app->set_scale(static_cast<float>(page.ui_scale * page.pixel_ratio));
+  ImGui_ImplOpenGL3_DestroyDeviceObjects();  // the font texture, remade at the new size
+}
 
 // The canvas's pixels: its CSS box (index.html sizes it to the window) times the pixel ratio.
 // GLFW's window size is the canvas's size in pixels, so the mouse and ImGui count pixels too.
@@ -59,14 +68,14 @@ void fit_canvas(Page& page) {
   int cur_w = 0, cur_h = 0;
   glfwGetWindowSize(page.window, &cur_w, &cur_h);
   if (w != cur_w || h != cur_h) glfwSetWindowSize(page.window, w, h);
-  if (ratio != page.pixel_ratio) {
+  if (ratio != page.pixel_ratio) {  // (zoomed, or moved to another screen)
     page.pixel_ratio = ratio;
-    page.app->set_scale(static_cast<float>(page.ui_scale * ratio));
-    ImGui_ImplOpenGL3_DestroyDeviceObjects();  // the font texture, remade at the new size
+    set_ui_scale(page, page.ui_scale);
   }
 }
 
-// The browser's own controls: share the link of what is shown, open a scene file.
+// The browser's own controls: share the link of what is shown, open a scene file, and the UI
+// scale (the desktop's --ui-scale, which a link's ui-scale sets too).
 void share_window(Page& page) {
   const float scale = page.app->scale();
   const ImGuiViewport* screen = ImGui::GetMainViewport();
@@ -83,6 +92,19 @@ void share_window(Page& page) {
     }
     ImGui::SameLine();
     if (ImGui::Button("Open scene file...")) choose_scene_file();
+    ImGui::SameLine();
+    static constexpr double kScales[] = {0.75, 1.0, 1.25, 1.5, 2.0, 2.5, 3.0};
+    char current[16];
+    std::snprintf(current, sizeof current, "UI %g", page.ui_scale);
+    ImGui::SetNextItemWidth(ImGui::CalcTextSize("UI 1.25").x + ImGui::GetFrameHeight() * 1.6f);
+    if (ImGui::BeginCombo("##ui-scale", current)) {
+      for (double s : kScales) {
+        char item[16];
+        std::snprintf(item, sizeof item, "UI %g", s);
+        if (ImGui::Selectable(item, s == page.ui_scale)) page.next_ui_scale = s;
+      }
+      ImGui::EndCombo();
+    }
     if (!page.link.empty()) {
       // Selectable text: what was copied, to see or to copy by hand.
       ImGui::SetNextItemWidth(std::min(520.0f * scale, screen->Size.x * 0.5f));
@@ -98,6 +120,7 @@ void frame() {
   Page& page = *g_page;
   if (!page.pacer.take()) return;
   fit_canvas(page);
+  if (page.next_ui_scale) set_ui_scale(page, *std::exchange(page.next_ui_scale, std::nullopt));
   FrameSize size;
   glfwGetFramebufferSize(page.window, &size.fb_width, &size.fb_height);
   glfwGetWindowSize(page.window, &size.win_width, &size.win_height);
@@ -159,13 +182,10 @@ EMSCRIPTEN_KEEPALIVE void springlab_open_scene_text(const char* file_name, const
   g_page->app->open_after_frame(path.string());
 }
 
-// The page's UI-scale control: the desktop's --ui-scale (0.5 to 4, times the pixel ratio).
+// The UI scale from the page's script: the desktop's --ui-scale (0.5 to 4, times the pixel ratio).
 EMSCRIPTEN_KEEPALIVE void springlab_set_ui_scale(double scale) {
   using namespace springlab::app::web;
-  if (!g_page || !std::isfinite(scale)) return;
-  g_page->ui_scale = std::clamp(scale, 0.5, 4.0);
-  g_page->app->set_scale(static_cast<float>(g_page->ui_scale * g_page->pixel_ratio));
-  ImGui_ImplOpenGL3_DestroyDeviceObjects();
+  if (g_page && std::isfinite(scale)) g_page->next_ui_scale = scale;
 }
 
 // What is shown, as JSON, for the page's tests: scene, method, dt, lanes and their times, the

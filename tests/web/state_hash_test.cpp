@@ -25,12 +25,12 @@ struct Pinned {
 
 TEST(StateHash, SameBitsNativeAndInTheBrowser) {
   const Pinned cases[] = {
-      {"spring", {}, Method::Euler, 1000, 0x0ull},
-      {"rope", {}, Method::SymplecticEuler, 2000, 0x0ull},
-      {"rope", {}, Method::RK4, 500, 0x0ull},
-      {"cloth", {}, Method::Verlet, 300, 0x0ull},
-      {"cloth", {}, Method::ImplicitEuler, 30, 0x0ull},
-      {"jelly", {}, Method::Midpoint, 300, 0x0ull},
+      {"spring", {}, Method::Euler, 1000, 0x3c76da071af44f11ull},
+      {"rope", {}, Method::SymplecticEuler, 2000, 0xa78519cf3fe4ff0cull},
+      {"rope", {}, Method::RK4, 500, 0x730573bf42f010fcull},
+      {"cloth", {}, Method::Verlet, 300, 0xe2226b9677c3a37bull},
+      {"cloth", {}, Method::ImplicitEuler, 30, 0x1daadc547b4fd6f7ull},
+      {"jelly", {}, Method::Midpoint, 300, 0x0b31035898caea59ull},
   };
   set_thread_count(1);
   for (const Pinned& c : cases) {
