@@ -82,6 +82,7 @@ AppSettings settings_from_link(const std::string& fragment) {
     else if (key == "kd") s.sim.kd = number(key, value);
     else if (key == "compare") s.compare = parse_compare(value, "link: compare");
     else if (key == "script") s.script = value;
+    else if (key == "set") s.sim.sets.push_back(value);  // set=cloth.width%3D64, as --set
     else if (key == "ui-scale") {
       s.ui_scale = number(key, value);
       check_option("link: ui-scale", s.ui_scale, 0.5, 4.0, false);
@@ -112,14 +113,17 @@ Opened open_settings(const AppSettings& settings) {
   }
 }
 
-std::string link_of(const InteractiveApp& app, double ui_scale) {
+std::string link_of(const InteractiveApp& app, const std::vector<std::string>& sets, double ui_scale) {
   const Session& session = app.session();
   const Lane& lane = session.primary();
   std::string link = "scene=" + percent_encoded(app.scene_name());
+  for (const std::string& set : sets) link += "&set=" + percent_encoded(set);
   // What the scene's own file says, to leave out of the link what has not changed.
   std::optional<Prepared> file;
   try {
-    file = prepare(app.scene_name(), {});
+    SimOptions as_opened;
+    as_opened.sets = sets;
+    file = prepare(app.scene_name(), as_opened);
   } catch (const InputError&) {
   }
   const auto differs = [](double a, double b) { return std::abs(a - b) > 1e-12 * std::max(std::abs(a), std::abs(b)); };

@@ -1,10 +1,12 @@
 // The page's link as the app's settings, and back: `index.html#scene=rope&method=euler&dt=1e-4
-// &substeps=4&ks=7500&kd=0.75&compare=euler,verlet&script=rope-drag-euler-to-rk4&ui-scale=1.25`.
+// &substeps=4&ks=7500&kd=0.75&compare=euler,verlet&script=rope-drag-euler-to-rk4&ui-scale=1.25`,
+// and set=KEY%3DVALUE (as many as wanted) for any other scene field, as the command line's --set.
 // Every value gets the checks the command line's flags get (platform/scene_options.hpp).
 #pragma once
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "platform/app_settings.hpp"
 #include "platform/interactive_app.hpp"
@@ -23,11 +25,11 @@ struct Opened {
 };
 Opened open_settings(const AppSettings& settings);
 
-// The fragment that reopens what `app` shows now: its scene, and whatever differs from the
-// scene's file (method, dt, fixed sub-steps, k_s, k_d, compare lanes).
-std::string link_of(const InteractiveApp& app, double ui_scale);
+// The fragment that reopens what `app` shows now: its scene (with the `sets` it was opened with),
+// and whatever differs from that (method, dt, fixed sub-steps, k_s, k_d, compare lanes).
+std::string link_of(const InteractiveApp& app, const std::vector<std::string>& sets, double ui_scale);
 
 // The names a link takes, for messages.
-inline constexpr const char* kLinkParameters = "scene, method, dt, substeps, ks, kd, compare, script, ui-scale";
+inline constexpr const char* kLinkParameters = "scene, method, dt, substeps, ks, kd, compare, script, set, ui-scale";
 
 }  // namespace springlab::app::web

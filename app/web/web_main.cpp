@@ -24,6 +24,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "platform/interactive_app.hpp"
 #include "springlab/error.hpp"
@@ -46,6 +47,7 @@ struct Page {
   double ui_scale = 1.0;  // the control's (--ui-scale); the panels' is this times the pixel ratio
   double pixel_ratio = 1.0;
   std::optional<double> next_ui_scale;  // applied before the next frame (the fonts are in use during one)
+  std::vector<std::string> sets;  // the link's set=..., while its scene is shown
   std::string link;  // the last copied
   long frames = 0;
 };
@@ -86,7 +88,7 @@ void share_window(Page& page) {
                                  ImGuiWindowFlags_NoNav;
   if (ImGui::Begin("##share", nullptr, flags)) {
     if (ImGui::Button("Copy link")) {
-      page.link = page_address() + "#" + link_of(*page.app, page.ui_scale);
+      page.link = page_address() + "#" + link_of(*page.app, page.sets, page.ui_scale);
       copy_to_clipboard(page.link);
       set_page_link(page.link);
     }
@@ -128,7 +130,7 @@ void frame() {
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   page.app->frame(size, [&page] { share_window(page); });
-  page.app->take_opened();
+  if (page.app->take_opened()) page.sets.clear();  // another scene, opened as its file says
   if (++page.frames == 1) first_frame_shown();
 }
 
@@ -147,6 +149,7 @@ std::unique_ptr<InteractiveApp> app_for_link(Page& page) {
     opened = open_settings(settings);
   }
   page.ui_scale = settings.ui_scale;
+  page.sets = settings.sim.sets;
   page.pixel_ratio = std::clamp(emscripten_get_device_pixel_ratio(), 0.5, 4.0);
   const float scale = static_cast<float>(page.ui_scale * page.pixel_ratio);
   ui::apply_theme(scale);
@@ -212,6 +215,10 @@ EMSCRIPTEN_KEEPALIVE const char* springlab_status() {
   std::snprintf(number, sizeof number, ",\"ks\":%.17g,\"kd\":%.17g", session.stiffness(), session.damping());
   json += number;
   std::snprintf(number, sizeof number, ",\"frames\":%ld,\"scale\":%.4g", g_page->frames, g_page->app->scale());
+  json += number;
+  const ui::FrameStats& stats = g_page->app->stats();
+  std::snprintf(number, sizeof number, ",\"sim_ms\":%.4g,\"draw_ms\":%.4g,\"fps\":%.4g,\"realtime\":%.4g", stats.sim_ms,
+                stats.draw_ms, stats.fps, stats.realtime);
   json += number;
   json += ",\"paused\":" + std::string(session.paused() ? "true" : "false");
   json += ",\"message\":" + quoted(g_page->app->ui().message);
