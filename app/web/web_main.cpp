@@ -50,6 +50,7 @@ struct Page {
   std::vector<std::string> sets;  // the link's set=..., while its scene is shown
   std::string link;  // the last copied
   long frames = 0;
+  ImVec4 copy_button;  // where Copy link is (x, y, width, height), for the page's tests
 };
 Page* g_page = nullptr;
 
@@ -87,7 +88,10 @@ void share_window(Page& page) {
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
                                  ImGuiWindowFlags_NoNav;
   if (ImGui::Begin("##share", nullptr, flags)) {
-    if (ImGui::Button("Copy link")) {
+    const bool copy = ImGui::Button("Copy link");
+    page.copy_button = {ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
+                        ImGui::GetItemRectSize().y};
+    if (copy) {
       page.link = page_address() + "#" + link_of(*page.app, page.sets, page.ui_scale);
       copy_to_clipboard(page.link);
       set_page_link(page.link);
@@ -207,7 +211,7 @@ EMSCRIPTEN_KEEPALIVE const char* springlab_status() {
     }
     return out + "\"";
   };
-  char number[64];
+  char number[256];
   json = "{\"scene\":" + quoted(g_page->app->scene_name());
   json += ",\"method\":" + quoted(method_info(session.method()).name);
   std::snprintf(number, sizeof number, ",\"dt\":%.17g", session.primary().sim.settings().dt);
@@ -219,6 +223,9 @@ EMSCRIPTEN_KEEPALIVE const char* springlab_status() {
   const ui::FrameStats& stats = g_page->app->stats();
   std::snprintf(number, sizeof number, ",\"sim_ms\":%.4g,\"draw_ms\":%.4g,\"fps\":%.4g,\"realtime\":%.4g", stats.sim_ms,
                 stats.draw_ms, stats.fps, stats.realtime);
+  json += number;
+  const ImVec4& b = g_page->copy_button;
+  std::snprintf(number, sizeof number, ",\"copy_link\":[%g,%g,%g,%g]", b.x, b.y, b.z, b.w);
   json += number;
   json += ",\"paused\":" + std::string(session.paused() ? "true" : "false");
   json += ",\"message\":" + quoted(g_page->app->ui().message);

@@ -62,10 +62,12 @@ async function waitFrames(page, n) {
                              { timeout: 30000 }, start, n);
 }
 
-// A key as the app sees it (the canvas has the focus).
+// A key as the app sees it: held for two frames (the app reads the keyboard once a frame).
 async function key(page, name) {
   await page.focus("#canvas");
-  await page.keyboard.press(name);
+  await page.keyboard.down(name);
+  await waitFrames(page, 2);
+  await page.keyboard.up(name);
   await waitFrames(page, 2);
 }
 
