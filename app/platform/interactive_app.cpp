@@ -73,6 +73,7 @@ void InteractiveApp::show(Prepared p, const std::string& name) {
   ui.scene_name = name;
   ui.compare_choice = compare;
   ui.presentation = presentation;
+  ui.platform_controls = std::move(ui_.platform_controls);
   for (Method m : session_->scene().methods)
     if (session_->scene().methods.size() >= 2) ui.compare_choice[static_cast<int>(m)] = true;
   ui_ = std::move(ui);
@@ -165,7 +166,7 @@ void InteractiveApp::simulate() {
   }
 }
 
-void InteractiveApp::frame(const FrameSize& size, const std::function<void()>& more_ui) {
+void InteractiveApp::frame(const FrameSize& size) {
   ImGui::NewFrame();
   const int win_w = size.win_width, win_h = size.win_height;
   const double to_fb = static_cast<double>(size.fb_width) / std::max(1, win_w);
@@ -194,7 +195,6 @@ void InteractiveApp::frame(const FrameSize& size, const std::function<void()>& m
                    {static_cast<int>(viewport.x / to_fb), static_cast<int>(viewport.y / to_fb),
                     static_cast<int>(viewport.width / to_fb), static_cast<int>(viewport.height / to_fb)},
                    ui_.scene_name, overlay);
-  if (more_ui) more_ui();
   if (requests.quit) quit_ = true;
   std::optional<std::string> load = requests.load;
   if (pending_) load = std::exchange(pending_, std::nullopt);

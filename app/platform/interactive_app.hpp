@@ -54,9 +54,11 @@ class InteractiveApp {
   InteractiveApp(Prepared first, const AppSettings& settings, std::optional<Script> script, float scale, int samples,
                  bool background);
 
-  // One frame: the mouse and the keys, the panels (and `more_ui`, the platform's own windows),
-  // one simulated frame, the scene and the panels drawn into the default framebuffer.
-  void frame(const FrameSize& size, const std::function<void()>& more_ui = {});
+  // One frame: the mouse and the keys, the panels, one simulated frame, the scene and the panels
+  // drawn into the default framebuffer.
+  void frame(const FrameSize& size);
+  // The platform's own controls in the panels, under the scene picker (ui::UiState).
+  void set_platform_controls(std::function<void()> draw) { ui_.platform_controls = std::move(draw); }
 
   // Opens a scene (a shipped name or a path) in place of the one shown, keeping the panels'
   // choices. When it cannot be opened, the scene shown goes on and the banner says why: false.

@@ -54,14 +54,19 @@ double number(const std::string& key, const std::string& text) {
   return x;
 }
 
-// A number as short as it reads back exactly.
+// A number as short as it reads back exactly, with no exponent unless that is shorter: 5000,
+// 0.0001, 7.5e-05.
 std::string shortest(double x) {
-  char text[32];
-  for (int digits = 1; digits <= 17; ++digits) {
-    std::snprintf(text, sizeof text, "%.*g", digits, x);
-    if (std::strtod(text, nullptr) == x) break;
-  }
-  return text;
+  const auto first_exact = [x](const char* format) {
+    char text[64];
+    for (int digits = 0; digits <= 17; ++digits) {
+      std::snprintf(text, sizeof text, format, digits, x);
+      if (std::strtod(text, nullptr) == x) break;
+    }
+    return std::string(text);
+  };
+  const std::string general = first_exact("%.*g"), fixed = first_exact("%.*f");
+  return fixed.size() <= general.size() ? fixed : general;
 }
 
 }  // namespace

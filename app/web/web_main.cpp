@@ -77,47 +77,37 @@ void fit_canvas(Page& page) {
   }
 }
 
-// The browser's own controls: share the link of what is shown, open a scene file, and the UI
-// scale (the desktop's --ui-scale, which a link's ui-scale sets too).
-void share_window(Page& page) {
-  const float scale = page.app->scale();
-  const ImGuiViewport* screen = ImGui::GetMainViewport();
-  ImGui::SetNextWindowPos(ImVec2(screen->Size.x - 10.0f * scale, 10.0f * scale), ImGuiCond_Always, ImVec2(1.0f, 0.0f));
-  ImGui::SetNextWindowBgAlpha(0.85f);
-  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
-                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
-                                 ImGuiWindowFlags_NoNav;
-  if (ImGui::Begin("##share", nullptr, flags)) {
-    const bool copy = ImGui::Button("Copy link");
-    page.copy_button = {ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
-                        ImGui::GetItemRectSize().y};
-    if (copy) {
-      page.link = page_address() + "#" + link_of(*page.app, page.sets, page.ui_scale);
-      copy_to_clipboard(page.link);
-      set_page_link(page.link);
-    }
-    ImGui::SameLine();
-    if (ImGui::Button("Open scene file...")) choose_scene_file();
-    ImGui::SameLine();
-    static constexpr double kScales[] = {0.75, 1.0, 1.25, 1.5, 2.0, 2.5, 3.0};
-    char current[16];
-    std::snprintf(current, sizeof current, "UI %g", page.ui_scale);
-    ImGui::SetNextItemWidth(ImGui::CalcTextSize("UI 1.25").x + ImGui::GetFrameHeight() * 1.6f);
-    if (ImGui::BeginCombo("##ui-scale", current)) {
-      for (double s : kScales) {
-        char item[16];
-        std::snprintf(item, sizeof item, "UI %g", s);
-        if (ImGui::Selectable(item, s == page.ui_scale)) page.next_ui_scale = s;
-      }
-      ImGui::EndCombo();
-    }
-    if (!page.link.empty()) {
-      // Selectable text: what was copied, to see or to copy by hand.
-      ImGui::SetNextItemWidth(std::min(520.0f * scale, screen->Size.x * 0.5f));
-      ImGui::InputText("##link", page.link.data(), page.link.size() + 1, ImGuiInputTextFlags_ReadOnly);
-    }
+// The browser's own controls, under the panel's scene picker: share the link of what is shown,
+// open a scene file, and the UI scale (the desktop's --ui-scale, which a link's ui-scale sets too).
+void browser_controls(Page& page) {
+  const bool copy = ImGui::Button("Copy link");
+  page.copy_button = {ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
+                      ImGui::GetItemRectSize().y};
+  if (copy) {
+    page.link = page_address() + "#" + link_of(*page.app, page.sets, page.ui_scale);
+    copy_to_clipboard(page.link);
+    set_page_link(page.link);
   }
-  ImGui::End();
+  ImGui::SameLine();
+  if (ImGui::Button("Open file...")) choose_scene_file();
+  ImGui::SameLine();
+  static constexpr double kScales[] = {0.75, 1.0, 1.25, 1.5, 2.0, 2.5, 3.0};
+  char current[16];
+  std::snprintf(current, sizeof current, "UI %g", page.ui_scale);
+  ImGui::SetNextItemWidth(ImGui::CalcTextSize("UI 1.25").x + ImGui::GetFrameHeight() * 1.6f);
+  if (ImGui::BeginCombo("##ui-scale", current)) {
+    for (double s : kScales) {
+      char item[16];
+      std::snprintf(item, sizeof item, "UI %g", s);
+      if (ImGui::Selectable(item, s == page.ui_scale)) page.next_ui_scale = s;  // (the fonts are in use now)
+    }
+    ImGui::EndCombo();
+  }
+  if (!page.link.empty()) {
+    // What was copied, as text to see or to copy by hand.
+    ImGui::SetNextItemWidth(-1.0f);
+    ImGui::InputText("##link", page.link.data(), page.link.size() + 1, ImGuiInputTextFlags_ReadOnly);
+  }
 }
 
 // --- The frame -----------------------------------------------------------------------------
@@ -133,7 +123,7 @@ void frame() {
   if (size.fb_width <= 0 || size.fb_height <= 0) return;
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
-  page.app->frame(size, [&page] { share_window(page); });
+  page.app->frame(size);
   if (page.app->take_opened()) page.sets.clear();  // another scene, opened as its file says
   if (++page.frames == 1) first_frame_shown();
 }
@@ -162,6 +152,7 @@ std::unique_ptr<InteractiveApp> app_for_link(Page& page) {
   auto app = std::make_unique<InteractiveApp>(std::move(opened->prepared), settings, std::move(opened->script),
                                               scale, 0, true);
   if (!problem.empty()) app->say(problem);
+  app->set_platform_controls([&page] { browser_controls(page); });
   return app;
 }
 
