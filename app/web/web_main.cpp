@@ -50,6 +50,7 @@ struct Page {
   std::vector<std::string> sets;  // the link's set=..., while its scene is shown
   std::string link;  // the last copied
   long frames = 0;
+  double frame_ms = 0.0;  // the last frame's whole time in the app (the browser composites after)
   ImVec4 copy_button;  // where Copy link is (x, y, width, height), for the page's tests
 };
 Page* g_page = nullptr;
@@ -121,9 +122,11 @@ void frame() {
   glfwGetFramebufferSize(page.window, &size.fb_width, &size.fb_height);
   glfwGetWindowSize(page.window, &size.win_width, &size.win_height);
   if (size.fb_width <= 0 || size.fb_height <= 0) return;
+  const double start = emscripten_get_now();
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   page.app->frame(size);
+  page.frame_ms = emscripten_get_now() - start;
   if (page.app->take_opened()) page.sets.clear();  // another scene, opened as its file says
   if (++page.frames == 1) first_frame_shown();
 }
@@ -212,8 +215,8 @@ EMSCRIPTEN_KEEPALIVE const char* springlab_status() {
   std::snprintf(number, sizeof number, ",\"frames\":%ld,\"scale\":%.4g", g_page->frames, g_page->app->scale());
   json += number;
   const ui::FrameStats& stats = g_page->app->stats();
-  std::snprintf(number, sizeof number, ",\"sim_ms\":%.4g,\"draw_ms\":%.4g,\"fps\":%.4g,\"realtime\":%.4g", stats.sim_ms,
-                stats.draw_ms, stats.fps, stats.realtime);
+  std::snprintf(number, sizeof number, ",\"frame_ms\":%.4g,\"sim_ms\":%.4g,\"draw_ms\":%.4g,\"fps\":%.4g,\"realtime\":%.4g",
+                g_page->frame_ms, stats.sim_ms, stats.draw_ms, stats.fps, stats.realtime);
   json += number;
   const ImVec4& b = g_page->copy_button;
   std::snprintf(number, sizeof number, ",\"copy_link\":[%g,%g,%g,%g]", b.x, b.y, b.z, b.w);

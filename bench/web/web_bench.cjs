@@ -24,17 +24,19 @@ const steps = (process.env.SPRINGLAB_BENCH_STEPS || "").split(";").filter(Boolea
     const page = await openApp(browser, base, link);
     await sleep(3000);  // past the first analyses and the JIT's warm-up
     const first = await status(page), t0 = Date.now();
-    let sim = 0, draw = 0, n = 0;
+    let sim = 0, draw = 0, frame = 0, n = 0;
     while (Date.now() - t0 < 5000) {
       await sleep(250);
       const s = await status(page);
       sim += s.sim_ms;
       draw += s.draw_ms;
+      frame += s.frame_ms;
       n++;
     }
     const last = await status(page);
     const fps = (last.frames - first.frames) / ((Date.now() - t0) / 1000);
-    console.log(`${name}_fps=${fps.toFixed(1)} ${name}_sim_ms=${(sim / n).toFixed(2)} ${name}_draw_ms=${(draw / n).toFixed(2)} ` +
+    console.log(`${name}_fps=${fps.toFixed(1)} ${name}_frame_ms=${(frame / n).toFixed(2)} ` +
+                `${name}_sim_ms=${(sim / n).toFixed(2)} ${name}_draw_ms=${(draw / n).toFixed(2)} ` +
                 `${name}_realtime=${last.realtime.toFixed(2)}`);
     await page.close();
   }
