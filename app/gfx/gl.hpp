@@ -14,8 +14,8 @@
 
 namespace springlab::gfx {
 
-// The shaders' language: the sources in shaders/ are GLSL 3.30 core, which ES 3.00 reads once
-// their first line says so and gives floats a precision (program.cpp).
+// Whether the context is OpenGL ES (the browser's WebGL2). The shaders are written once, in GLSL
+// 3.30 core; program.cpp gives them ES 3.00's first line and precisions there.
 inline constexpr bool kGles = SPRINGLAB_GLES;
 
 }  // namespace springlab::gfx

@@ -88,6 +88,10 @@ AppSettings settings_from_link(const std::string& fragment) {
     else if (key == "compare") s.compare = parse_compare(value, "link: compare");
     else if (key == "script") s.script = value;
     else if (key == "set") s.sim.sets.push_back(value);  // set=cloth.width%3D64, as --set
+    else if (key == "accuracy") {
+      if (value != "0" && value != "1") throw InputError("link: accuracy: must be 1 (open the Compare panel and start its sweep) or 0, got '" + value + "'");
+      s.accuracy = value == "1";
+    }
     else if (key == "ui-scale") {
       s.ui_scale = number(key, value);
       check_option("link: ui-scale", s.ui_scale, 0.5, 4.0, false);

@@ -167,6 +167,21 @@ check("a compare link shows the lanes", async ({ browser, base }) => {
   await page.close();
 });
 
+check("every shipped scene opens and runs", async ({ browser, base }) => {
+  const scenes = fs.readdirSync(path.join(root, "assets/scenes")).filter((f) => f.endsWith(".json"))
+    .map((f) => f.replace(/\.json$/, ""));
+  for (const scene of scenes) {
+    const page = await openApp(browser, base, "scene=" + scene);
+    const s1 = await status(page);
+    await waitFrames(page, 10);
+    const s2 = await status(page);
+    expect(s1.scene === scene && s1.message === "", `${scene}: ${JSON.stringify(s1)}`);
+    // Running: its clock goes on (a lane waiting for its first analysis starts within these frames).
+    expect(s2.lanes.every((l, i) => l.t > s1.lanes[i].t || l.t > 0), `${scene} does not run: ${JSON.stringify(s2.lanes)}`);
+    await page.close();
+  }
+});
+
 check("a bad link says which parameter and opens the default scene", async ({ browser, base }) => {
   for (const [link, words] of [["scene=ropee", ["scene 'ropee'", "rope"]], ["scene=rope&dt=-1", ["dt", "(0, 1]"]],
                                ["method=eulr", ["method", "euler"]], ["speed=2", ["unknown parameter 'speed'"]],
