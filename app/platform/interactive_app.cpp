@@ -183,6 +183,7 @@ void InteractiveApp::frame(const FrameSize& size) {
   const ui::Requests requests = ui::draw_panels(session, ui_, stats_, win_w, win_h);
   const float scale = ui_.scale;
   accuracy_.open = ui_.accuracy;
+  accuracy_.sweep.advance();  // (without threads: the sweep's next pieces; else nothing)
   ui::draw_compare_panel(accuracy_, session, scale, 380.0f * scale, 20.0f * scale, win_w - 400.0f * scale,
                          win_h * 0.62f);
   ui_.accuracy = accuracy_.open;
