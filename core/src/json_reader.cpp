@@ -85,8 +85,8 @@ double as_number(const json& value, const std::string& pointer, const std::strin
   return x;
 }
 
-std::int64_t as_integer(const json& value, const std::string& pointer, const std::string& where, std::int64_t lo,
-                std::int64_t hi) {
+std::int64_t as_integer(const json& value, const std::string& pointer, const std::string& where,
+                        std::int64_t lo, std::int64_t hi) {
   const std::string allowed =
       "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
   if (!value.is_number()) fail_at(where, pointer, allowed + ", " + describe(value));

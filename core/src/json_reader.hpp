@@ -83,8 +83,8 @@ std::string describe(const json& value);
 // Checks and returns an element's value as a number, with the same message style.
 double as_number(const json& value, const std::string& pointer, const std::string& where,
                  Range range);
-std::int64_t as_integer(const json& value, const std::string& pointer, const std::string& where, std::int64_t lo,
-                std::int64_t hi);
+std::int64_t as_integer(const json& value, const std::string& pointer, const std::string& where,
+                        std::int64_t lo, std::int64_t hi);
 [[noreturn]] void fail_at(const std::string& where, const std::string& pointer,
                           const std::string& what);
 
