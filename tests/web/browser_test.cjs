@@ -70,8 +70,10 @@ check("the rope scene renders (golden image)", async ({ browser, base }) => {
   await page.close();
 });
 
-check("dragging a particle moves it", async ({ browser, base }) => {
-  const page = await openApp(browser, base, "scene=rope");
+// Drags the rope's free end with the mouse, or with a finger (index.html turns one finger into
+// the left button), and checks that it moved there.
+async function dragTheRope(browser, base, finger) {
+  const page = await openApp(browser, base, "scene=rope", { touch: finger });
   await pauseAtStart(page);
   await key(page, "KeyH");  // no panels: the scene fills the page
   const before = await page.screenshot({ type: "png" });
@@ -81,17 +83,24 @@ check("dragging a particle moves it", async ({ browser, base }) => {
   expect(white.length > 50, `no rope found (${white.length} white pixels)`);
   const end = white.reduce((a, p) => (p[0] > a[0] ? p : a));  // the free end: the rightmost sphere
   const to = [end[0] - 100, end[1] + 150];
-  await page.mouse.move(end[0] - 2, end[1]);
-  await page.mouse.down();
+  const at = (k) => [end[0] - 2 + (to[0] - end[0] + 2) * k / 10, end[1] + (to[1] - end[1]) * k / 10];
+  if (finger) await page.touchscreen.touchStart(...at(0));
+  else {
+    await page.mouse.move(...at(0));
+    await page.mouse.down();
+  }
   for (let k = 1; k <= 10; k++) {
-    await page.mouse.move(end[0] - 2 + (to[0] - end[0] + 2) * k / 10, end[1] + (to[1] - end[1]) * k / 10);
+    if (finger) await page.touchscreen.touchMove(...at(k));
+    else await page.mouse.move(...at(k));
     await waitFrames(page, 1);
   }
   await waitFrames(page, 3);
   const during = await page.screenshot({ type: "png" });
-  await page.mouse.up();
-  fs.writeFileSync(path.join(out, "drag-before.png"), before);
-  fs.writeFileSync(path.join(out, "drag-during.png"), during);
+  if (finger) await page.touchscreen.touchEnd();
+  else await page.mouse.up();
+  const name = finger ? "touch-drag" : "drag";
+  fs.writeFileSync(path.join(out, `${name}-before.png`), before);
+  fs.writeFileSync(path.join(out, `${name}-during.png`), during);
   // Paused, nothing else moves: the picture changes where the particle was and where it went (a
   // held particle is drawn highlighted), and far from both it does not.
   const after = await pixels(browser, during);
@@ -110,7 +119,10 @@ check("dragging a particle moves it", async ({ browser, base }) => {
   expect(atStart > 20, `the particle's old place is unchanged (${atStart} pixels changed near ${end})`);
   expect(far === 0, `${far} pixels changed far from the drag`);
   await page.close();
-});
+}
+
+check("dragging a particle with the mouse moves it", ({ browser, base }) => dragTheRope(browser, base, false));
+check("dragging a particle with a finger moves it", ({ browser, base }) => dragTheRope(browser, base, true));
 
 check("method and dt from the link take effect", async ({ browser, base }) => {
   // One page at a time: a page in the background gets no animation frames.

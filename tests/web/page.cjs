@@ -41,9 +41,9 @@ function launch() {
 const consoleErrors = [];
 
 // Opens the app at `fragment` (without '#') and waits for its first frames.
-async function openApp(browser, base, fragment, { width = 1280, height = 720, scale = 1 } = {}) {
+async function openApp(browser, base, fragment, { width = 1280, height = 720, scale = 1, touch = false } = {}) {
   const page = await browser.newPage();
-  await page.setViewport({ width, height, deviceScaleFactor: scale });
+  await page.setViewport({ width, height, deviceScaleFactor: scale, hasTouch: touch });
   page.on("console", (m) => { if (m.type() === "error") consoleErrors.push(`${fragment}: ${m.text()}`); });
   page.on("pageerror", (e) => consoleErrors.push(`${fragment}: ${e.message}`));
   await page.goto(`${base}/index.html${fragment ? "#" + fragment : ""}`);
