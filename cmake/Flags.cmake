@@ -13,7 +13,14 @@ add_compile_options($<$<CXX_COMPILER_ID:GNU>:-Wno-psabi>)
 # AVX2 doubles the width of the vectorised spring loops. Only used when the build machine has it
 # (the binary is meant for the machine it is built on, as scripts/ build it).
 include(CheckCXXSourceRuns)
-if(NOT DEFINED SPRINGLAB_HAVE_AVX2)
+if(EMSCRIPTEN)
+  # WebAssembly's 128-bit SIMD (every current browser has it): f64x4 becomes two f64x2. Exceptions
+  # as WebAssembly's own (the loaders' InputError), not emulated through JavaScript, which would
+  # slow every call that might throw.
+  set(SPRINGLAB_HAVE_AVX2 OFF)
+  add_compile_options(-msimd128 -fwasm-exceptions)
+  add_link_options(-fwasm-exceptions)
+elseif(NOT DEFINED SPRINGLAB_HAVE_AVX2)
   check_cxx_source_runs("int main() { return __builtin_cpu_supports(\"avx2\") ? 0 : 1; }"
                         SPRINGLAB_HAVE_AVX2)
 endif()

@@ -2,7 +2,8 @@
 # Installs what is missing, builds, and runs every test with CTest: the normal build's suite
 # (labels core, cli, golden, app, soak), then the checking build's (scripts/sanitize.sh: the core
 # tests under AddressSanitizer and UndefinedBehaviorSanitizer, and a bounded run of each fuzz
-# target). CI runs this with no options.
+# target), then the browser build's (scripts/web.sh --test: the app in headless Chromium, and the
+# core's tests compiled to WebAssembly; a few minutes). CI runs this with no options.
 # Usage: scripts/test.sh [ctest options, e.g. -L core or -R Stability]
 #   With ctest options, only the normal suite runs, with those options (a quick check while
 #   working); scripts/sanitize.sh takes the same options for the checking build.
@@ -13,4 +14,5 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 (cd "${SPRINGLAB_BUILD_DIR:-$root/build}" && ctest --output-on-failure --parallel "$(nproc)" --timeout 600 "$@")
 if [[ $# -eq 0 ]]; then
   "$root/scripts/sanitize.sh"
+  "$root/scripts/web.sh" --test
 fi

@@ -5,40 +5,16 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "platform/option_ranges.hpp"
 #include "springlab/error.hpp"
 #include "springlab/forces.hpp"
-#include "util/data_dir.hpp"
 
 namespace springlab::app {
-
-namespace {
-// The integer options' ranges: checked as the text is read, and again in prepare().
-struct WholeRange {
-  double lo, hi;
-};
-constexpr WholeRange kSubsteps{1, 100000}, kSteps{1, 1e12}, kThreads{0, 1024};
-}  // namespace
 
 CLI::Validator whole_number(double lo, double hi) {
   std::ostringstream bounds;
   bounds << "[" << lo << ", " << hi << "]";
-  const std::string range = bounds.str();
-  return CLI::Validator(
-      [lo, hi, range](std::string& text) -> std::string {
-        char* end = nullptr;
-        const double x = std::strtod(text.c_str(), &end);
-        const bool number = !text.empty() && *end == '\0';
-        if (number && std::isfinite(x) && x == std::floor(x) && x >= lo && x <= hi) {
-          text = std::to_string(static_cast<long long>(x));  // "1e6" reads as 1000000
-          return "";
-        }
-        std::ostringstream s;
-        s << "must be a whole number in " << range << ", got ";
-        if (number) s << x;
-        else s << "'" << text << "'";
-        return s.str();
-      },
-      range);
+  return CLI::Validator([lo, hi](std::string& text) { return parse_whole_number(text, lo, hi); }, bounds.str());
 }
 
 void add_sim_options(CLI::App& c, SimOptions& o, bool with_length) {
@@ -90,79 +66,6 @@ void warn_if_unstable(Simulation& sim, const std::string& scene) {
                scene.c_str(), sim.h(), method.c_str(),
                limit.exact ? "stability limit" : "proven stable step (the exact limit may be higher)", limit.h,
                sim.h() * sim.stability().w_max(), limit.exact ? "it will most likely diverge" : "it may diverge", fix);
-}
-
-void check_option(const char* name, double value, double lo, double hi, bool lo_open,
-                  const char* unit) {
-  if (std::isfinite(value) && (lo_open ? value > lo : value >= lo) && value <= hi) return;
-  std::ostringstream s;
-  s << name << ": must be in " << (lo_open ? "(" : "[") << lo << ", " << hi << "]" << unit
-    << ", got " << value;
-  throw InputError(s.str());
-}
-
-Prepared prepare(const std::string& scene_name, const SimOptions& o) {
-  Prepared p;
-  // Options first: a bad option is reported before any file is read.
-  if (o.dt) check_option("--dt", *o.dt, 0.0, 1.0, true, " s");
-  std::optional<int> substeps;  // fixed; none: automatic
-  if (o.substeps && *o.substeps != "auto") {
-    std::string text = *o.substeps;
-    const std::string error = whole_number(kSubsteps.lo, kSubsteps.hi)(text);
-    if (!error.empty()) throw InputError("--substeps: " + error + " (or auto)");
-    substeps = std::stoi(text);
-  }
-  if (o.steps) check_option("--steps", static_cast<double>(*o.steps), kSteps.lo, kSteps.hi, false);
-  if (o.duration) check_option("--duration", *o.duration, 0.0, 1e7, true, " s");
-  if (o.ks) check_option("--ks", *o.ks, 0.0, 1e12, false, " N/m");
-  if (o.kd) check_option("--kd", *o.kd, 0.0, 1e12, false, " N s/m");
-  if (o.tol) check_option("--tol", *o.tol, 0.0, 1.0, true);
-  if (o.threads) check_option("--threads", *o.threads, kThreads.lo, kThreads.hi, false);
-  std::optional<Method> method;
-  if (o.method) {
-    method = find_method(*o.method);
-    if (!method) {
-      std::vector<std::string> names;
-      for (const auto& m : methods()) names.emplace_back(m.name);
-      const std::string near = closest_match(*o.method, names.data(), names.size());
-      throw InputError("--method: unknown method '" + *o.method + "'" +
-                       (near.empty() ? "" : "; did you mean '" + near + "'?") +
-                       " (methods: " + method_names() + ")");
-    }
-  }
-
-  p.scene = load_scene(resolve_scene(scene_name), o.sets);
-  Scene& s = p.scene;
-  if (o.ks) set_stiffness(s.model, *o.ks);
-  if (o.kd) set_damping(s.model, *o.kd);
-  if (o.threads) set_thread_count(*o.threads);
-
-  p.settings = settings_for(s);
-  if (method) p.settings.method = *method;
-  p.settings.dt = o.dt ? *o.dt : s.dt;
-  // Sub-steps: fixed by --substeps N or by the scene's file, else chosen from the stability
-  // limit (with the scene's safe fraction) when the simulation first steps.
-  if (substeps) {
-    p.settings.auto_substeps = false;
-    p.settings.substeps = *substeps;
-  }
-  p.settings.step.tolerance = o.tol ? *o.tol : s.tolerance;
-  const double duration = o.duration ? *o.duration : s.duration;
-  if (!o.steps) {
-    // Checked before the conversion: a tiny dt ("dt": 1e-300) made a count no integer holds.
-    const double steps = std::ceil(duration / p.settings.dt - 1e-9);
-    if (!(steps <= kSteps.hi)) {
-      std::ostringstream m;
-      m << "scene '" << s.file << "': a duration of " << duration << " s at dt = " << p.settings.dt
-        << " s would take " << steps << " steps; the limit is " << kSteps.hi
-        << ": use a larger --dt, a shorter --duration, or --steps";
-      throw InputError(m.str());
-    }
-  }
-  p.steps = o.steps ? *o.steps
-                    : static_cast<std::int64_t>(std::ceil(duration / p.settings.dt - 1e-9));
-  if (p.steps < 1) p.steps = 1;
-  return p;
 }
 
 void require_integration(const Scene& scene, const char* command) {

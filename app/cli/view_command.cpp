@@ -14,8 +14,7 @@ namespace springlab::app {
 namespace {
 
 struct ViewCli {
-  std::string scene = "rope";
-  SimOptions sim;
+  AppSettings app;
   WindowOptions window;
   std::optional<std::string> compare, size;
   std::optional<long> frames;
@@ -24,7 +23,7 @@ struct ViewCli {
 int view(ViewCli& o) {
   if (o.frames) check_option("--frames", static_cast<double>(*o.frames), 1, 1e7, false);
   o.window.frames = o.frames;
-  check_option("--ui-scale", o.window.ui_scale, 0.5, 4.0, false);
+  check_option("--ui-scale", o.app.ui_scale, 0.5, 4.0, false);
   if (o.window.msaa != -1) check_option("--msaa", o.window.msaa, 0, 16, false);
   if (o.window.screenshot && !o.frames)
     throw InputError("--screenshot: needs --frames N (the screenshot is taken after the N-th frame)");
@@ -35,29 +34,20 @@ int view(ViewCli& o) {
         o.window.height < 240 || o.window.width > 7680 || o.window.height > 4320)
       throw InputError("--size: must be WIDTHxHEIGHT, from 320x240 to 7680x4320, got '" + *o.size + "'");
   }
-  if (o.compare) {
-    std::stringstream s(*o.compare);
-    for (std::string name; std::getline(s, name, ',');) {
-      const auto m = find_method(name);
-      if (!m) throw InputError("--compare: unknown method '" + name + "' (methods: " + method_names() + ")");
-      o.window.compare.push_back(*m);
-    }
-    if (o.window.compare.size() < 2 || o.window.compare.size() > 4)
-      throw InputError("--compare: give 2 to 4 methods separated by commas, e.g. euler,verlet");
-  }
-  o.window.threads_given = o.sim.threads.has_value();
-  return run_window(prepare(o.scene, o.sim), o.window);
+  if (o.compare) o.app.compare = parse_compare(*o.compare, "--compare");
+  o.window.threads_given = o.app.sim.threads.has_value();
+  return run_window(o.app, o.window);
 }
 
 void add_options(CLI::App& c, ViewCli& o) {
-  add_sim_options(c, o.sim, false);
-  c.add_option("--script", o.window.script, "play a scripted demo (JSON)");
+  add_sim_options(c, o.app.sim, false);
+  c.add_option("--script", o.app.script, "play a scripted demo (JSON)");
   c.add_option("--compare", o.compare, "start in compare mode with 2 to 4 methods, e.g. euler,verlet");
   c.add_option("--frames", o.frames, "run N frames, then exit (with --screenshot: write one)");
   c.add_option("--screenshot", o.window.screenshot, "after --frames N frames, write the window to this PNG");
-  c.add_option("--ui-scale", o.window.ui_scale, "size of the panels and text (times the monitor's scale)");
+  c.add_option("--ui-scale", o.app.ui_scale, "size of the panels and text (times the monitor's scale)");
   c.add_option("--size", o.size, "window size WIDTHxHEIGHT (default 1280x720)");
-  c.add_flag("--accuracy", o.window.accuracy, "open the accuracy-against-cost panel and start its sweep");
+  c.add_flag("--accuracy", o.app.accuracy, "open the accuracy-against-cost panel and start its sweep");
   c.add_option("--msaa", o.window.msaa, "multisampling (default: 4 on a GPU, 0 on a software rasteriser)");
 }
 
@@ -66,7 +56,7 @@ void add_options(CLI::App& c, ViewCli& o) {
 Command add_view_command(CLI::App& app) {
   auto o = std::make_shared<ViewCli>();
   CLI::App* c = app.add_subcommand("view", "the interactive app (opens a window)");
-  c->add_option("scene", o->scene, "scene name or JSON file (default: rope)");
+  c->add_option("scene", o->app.scene, "scene name or JSON file (default: rope)");
   add_options(*c, *o);
   return [o] { return view(*o); };
 }

@@ -21,8 +21,17 @@ std::string source(const std::string& file) {
   return s.str();
 }
 
+// The desktop's GLSL 3.30 core as GLSL ES 3.00 (WebGL2): the same source under a new first line,
+// with the precisions ES leaves for the program to choose (high: positions in metres and depth).
+std::string for_this_gl(std::string text) {
+  if (!kGles) return text;
+  const std::size_t eol = text.find('\n');
+  if (text.rfind("#version", 0) == 0 && eol != std::string::npos) text.erase(0, eol + 1);
+  return "#version 300 es\nprecision highp float;\nprecision highp int;\n" + text;
+}
+
 GLuint compile(GLenum type, const std::string& file) {
-  const std::string text = source(file);
+  const std::string text = for_this_gl(source(file));
   const char* p = text.c_str();
   GLuint shader = glCreateShader(type);
   glShaderSource(shader, 1, &p, nullptr);

@@ -106,7 +106,6 @@ Renderer::~Renderer() {
 void Renderer::draw(const draw::Frame& frame, int fb_width, int fb_height) {
   glViewport(0, 0, fb_width, fb_height);
   glClearColor(frame.background.r, frame.background.g, frame.background.b, 1.0f);
-  glClearDepth(1.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   const draw::Viewport& v = frame.viewport;
   const int width = v.width > 0 ? v.width : fb_width, height = v.height > 0 ? v.height : fb_height;
@@ -114,7 +113,9 @@ void Renderer::draw(const draw::Frame& frame, int fb_width, int fb_height) {
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LEQUAL);
   glDisable(GL_CULL_FACE);
-  glEnable(GL_MULTISAMPLE);
+#if !SPRINGLAB_GLES
+  glEnable(GL_MULTISAMPLE);  // (ES has no switch: a target with samples is multisampled)
+#endif
   draw_planes(frame);
   draw_meshes(frame);
   draw_lines(frame, width, height);

@@ -1,5 +1,7 @@
 #include "session/background_sweep.hpp"
 
+#include <chrono>
+
 namespace springlab::app {
 
 BackgroundSweep::~BackgroundSweep() {
@@ -7,13 +9,24 @@ BackgroundSweep::~BackgroundSweep() {
   join();
 }
 
-void BackgroundSweep::join() {
-  if (worker_.joinable()) worker_.join();
-}
+void BackgroundSweep::join() { worker_.join(); }
 
 void BackgroundSweep::cancel() {
   cancel_ = true;
   join();
+  if (steps_) {
+    steps_.reset();
+    std::lock_guard lock(mutex_);
+    partial_.cancelled = true;
+    running_ = false;
+  }
+}
+
+void BackgroundSweep::record(const SweepRun& run, int done, int total) {
+  std::lock_guard lock(mutex_);
+  if (run.h > 0) partial_.runs.push_back(run);
+  done_ = done;
+  total_ = total;
 }
 
 void BackgroundSweep::start(const Model& model, const State& state, const SweepSettings& settings) {
@@ -25,12 +38,13 @@ void BackgroundSweep::start(const Model& model, const State& state, const SweepS
   }
   cancel_ = false;
   running_ = true;
-  worker_ = std::thread([this, model, state, settings] {
+  if constexpr (!kWorkerThreads) {
+    steps_.emplace(model, state, settings);
+    return;
+  }
+  worker_.start([this, model, state, settings] {
     SweepResult result = run_sweep(model, state, settings, [this](const SweepRun& run, int done, int total) {
-      std::lock_guard lock(mutex_);
-      if (run.h > 0) partial_.runs.push_back(run);
-      done_ = done;
-      total_ = total;
+      record(run, done, total);
     }, &cancel_);
     {
       std::lock_guard lock(mutex_);
@@ -38,6 +52,18 @@ void BackgroundSweep::start(const Model& model, const State& state, const SweepS
     }
     running_ = false;
   });
+}
+
+void BackgroundSweep::advance(double budget_ms) {
+  if (!steps_) return;
+  const auto start = std::chrono::steady_clock::now();
+  const auto on_run = [this](const SweepRun& run, int done, int total) { record(run, done, total); };
+  while (steps_->step(on_run))
+    if (std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() > budget_ms) return;
+  std::lock_guard lock(mutex_);
+  partial_ = steps_->result();
+  steps_.reset();
+  running_ = false;
 }
 
 SweepResult BackgroundSweep::snapshot() const {

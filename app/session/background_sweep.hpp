@@ -1,13 +1,16 @@
 // A sweep (core/sweep.hpp) run on a worker thread while the app goes on drawing: started on a
 // copy of the scene as it is now, it reports progress and its runs as they finish (so the charts
-// fill in while a class watches), and can be cancelled at any moment.
+// fill in while a class watches), and can be cancelled at any moment. Without threads
+// (util/worker.hpp: the browser) the frame loop runs it instead, a few pieces a frame through
+// advance(): the same runs, filling in the same way.
 #pragma once
 
 #include <atomic>
 #include <mutex>
-#include <thread>
+#include <optional>
 
 #include "springlab/sweep.hpp"
+#include "util/worker.hpp"
 
 namespace springlab::app {
 
@@ -22,6 +25,9 @@ class BackgroundSweep {
   void start(const Model& model, const State& state, const SweepSettings& settings);
   void cancel();
   bool running() const { return running_; }
+  // Without threads: the sweep's next pieces, for about `budget_ms` (at least one). Called every
+  // frame; with threads it does nothing.
+  void advance(double budget_ms = 8.0);
 
   // A copy of what is known so far: the runs finished, and at the end the summaries.
   SweepResult snapshot() const;
@@ -30,7 +36,9 @@ class BackgroundSweep {
 
  private:
   void join();
-  std::thread worker_;
+  void record(const SweepRun& run, int done, int total);
+  Worker worker_;
+  std::optional<SweepInSteps> steps_;  // without threads
   std::atomic<bool> cancel_{false}, running_{false};
   mutable std::mutex mutex_;
   SweepResult partial_;

@@ -2,7 +2,8 @@
 
 #include <atomic>
 #include <mutex>
-#include <thread>
+
+#include "util/worker.hpp"
 
 namespace springlab::app {
 
@@ -16,12 +17,12 @@ void StabilityJob::start(const Model& model, const State& state, std::uint64_t v
   auto shared = std::make_shared<Shared>();
   shared->result.version = version;
   shared_ = shared;
-  std::thread([shared, model, state] {
+  Worker::detach([shared, model, state] {
     auto analysis = std::make_shared<const StabilityAnalysis>(model, state);
     std::lock_guard lock(shared->mutex);
     shared->result.analysis = std::move(analysis);
     shared->done = true;
-  }).detach();
+  });
 }
 
 bool StabilityJob::running() const { return shared_ && !shared_->done; }

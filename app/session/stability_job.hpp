@@ -1,7 +1,8 @@
 // A stability analysis (springlab/stability.hpp) made on a worker thread, so that the app's frame
 // loop never waits for one (a 64 x 64 cloth's takes seconds): started on a copy of a lane's model
 // and state, collected when done. The thread is detached and owns what it works on: a job left
-// behind (the scene changed again, the app closed) finishes on its own and is dropped.
+// behind (the scene changed again, the app closed) finishes on its own and is dropped. Without
+// threads (util/worker.hpp) the analysis is made at once and is ready on the next take().
 #pragma once
 
 #include <cstdint>

@@ -475,6 +475,7 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
         if (ImGui::Selectable(name.c_str(), name == ui.scene_name)) requests.load = name;
       ImGui::EndCombo();
     }
+    if (ui.platform_controls) ui.platform_controls();
     const std::string& about = session.scene().description;
     const std::size_t stop = about.find(". ");
     ImGui::PushTextWrapPos(0.0f);

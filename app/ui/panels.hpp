@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -52,6 +53,9 @@ struct UiState {
   char open_path[512] = "";
   std::string message;  // shown in a banner until dismissed (a file that failed to load)
   std::array<bool, 9> compare_choice{};
+  // A platform's own controls, drawn under the scene picker (the browser's Copy link, file
+  // picker and UI scale); none on the desktop.
+  std::function<void()> platform_controls;
 };
 
 struct Requests {

@@ -81,7 +81,7 @@ void read_emitter(ObjectReader& r, const std::string& name, generators::Builder&
   e.start = r.number("start", 0.0, non_negative(1e7));
   e.stop = r.number("stop", 1e7, non_negative(1e7));
   if (e.stop < e.start) r.fail("stop", "must not come before \"start\" (" + json(e.start).dump() + " s)");
-  e.seed = static_cast<std::uint64_t>(r.integer("seed", 1, 0, 1L << 53));
+  e.seed = static_cast<std::uint64_t>(r.integer("seed", 1, 0, std::int64_t{1} << 53));
   e.spawn = read_spawn(r, 0.0);
   e.colors = read_colors(r);
   e.pool = make_pool(r, "max", 1000, b, e.position, e.spawn.mass);

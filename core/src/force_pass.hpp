@@ -25,8 +25,6 @@
 // are bit-identical for any thread count.
 #pragma once
 
-#include <omp.h>
-
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -37,6 +35,7 @@
 #include "springlab/fields.hpp"
 #include "springlab/forces.hpp"
 #include "springlab/spring_kernel.hpp"
+#include "threads.hpp"
 
 namespace springlab {
 
@@ -228,7 +227,7 @@ void with_law(double kd, bool measured, const F& f) {
 // Waits until `flag` holds `value` (acquire): spins briefly, as the wait is usually short, then
 // yields, so that a thread that is not running (more threads than cores) gets the core.
 inline void wait_for(std::uint32_t& flag, std::uint32_t value) {
-  std::atomic_ref<std::uint32_t> ref(flag);
+  threads::atomic_ref<std::uint32_t> ref(flag);
   for (int spins = 0; ref.load(std::memory_order_acquire) != value; ++spins) {
     if (spins < 4096) {
 #if defined(__x86_64__) || defined(__i386__)
@@ -398,7 +397,7 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
       });
     }
     if (measured) block_power[blk] = simd::sum(power);
-    std::atomic_ref<std::uint32_t>(done[blk]).store(pass_number, std::memory_order_release);
+    threads::atomic_ref<std::uint32_t>(done[blk]).store(pass_number, std::memory_order_release);
   };
 
   // Step 2 of a block, chunk by chunk: the external forces of the particles the chunk's springs
@@ -448,15 +447,15 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
   // own are done, sweeps the blocks left at the back of another run: the cores of this machine
   // slow down one at a time, and the faster one helps rather than waits. A run's unclaimed
   // blocks are one atomic word, the pass's number (24 bits), front and back (20 bits each).
-  const bool parallel = springs + n >= kParallelThreshold && omp_get_max_threads() > 1;
-  plan.runs.resize(std::max(1, parallel ? omp_get_max_threads() : 1));
+  const bool parallel = springs + n >= kParallelThreshold && threads::max_team() > 1;
+  plan.runs.resize(std::max(1, parallel ? threads::max_team() : 1));
   const std::uint64_t tag = pass_number & 0xFFFFFFu;
   const auto word = [tag](std::uint64_t front, std::uint64_t back) {
     return tag << 40 | front << 20 | back;
   };
   // Claims a block of run r, from the front (its owner) or the back; -1 when none is left.
   const auto claim = [&](int r, bool front) {
-    std::atomic_ref<std::uint64_t> run(plan.runs[r]);
+    threads::atomic_ref<std::uint64_t> run(plan.runs[r]);
     std::uint64_t old = run.load(std::memory_order_relaxed);
     for (;;) {
       const int f = static_cast<int>(old >> 20 & 0xFFFFF), b = static_cast<int>(old & 0xFFFFF);
@@ -469,7 +468,7 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
   // thread of an enclosing parallel region, whose numbers are not this pass's.)
   const auto pass = [&](int threads, int thread) {
     const int first = blocks * thread / threads, last = blocks * (thread + 1) / threads;
-    std::atomic_ref<std::uint64_t>(plan.runs[thread]).store(word(first, last),
+    threads::atomic_ref<std::uint64_t>(plan.runs[thread]).store(word(first, last),
                                                             std::memory_order_relaxed);
     if (first < last) {
       start(last - 1);
@@ -478,13 +477,13 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
     for (int blk; (blk = claim(thread, true)) >= 0;) sweep(blk);
     for (int other = 1; other < threads; ++other)
       for (int blk; (blk = claim((thread + other) % threads, false)) >= 0;) {
-        std::atomic_ref<std::uint64_t>(plan.stolen).fetch_add(1, std::memory_order_relaxed);
+        threads::atomic_ref<std::uint64_t>(plan.stolen).fetch_add(1, std::memory_order_relaxed);
         sweep(blk);
       }
   };
   if (parallel) {
 #pragma omp parallel
-    pass(omp_get_num_threads(), omp_get_thread_num());
+    pass(threads::team_size(), threads::team_index());
   } else {
     pass(1, 0);
   }

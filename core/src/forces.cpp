@@ -1,8 +1,7 @@
 #include "springlab/forces.hpp"
 
-#include <omp.h>
-
 #include "force_pass.hpp"
+#include "threads.hpp"
 
 namespace springlab {
 
@@ -23,9 +22,9 @@ void evaluate_forces(const Model& model, const Points& x, const Points& v, Point
 }
 
 void set_thread_count(int threads) {
-  omp_set_num_threads(threads > 0 ? threads : omp_get_num_procs());
+  threads::set_max_team(threads > 0 ? threads : threads::processors());
 }
 
-int thread_count() { return omp_get_max_threads(); }
+int thread_count() { return threads::max_team(); }
 
 }  // namespace springlab

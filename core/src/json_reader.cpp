@@ -85,8 +85,8 @@ double as_number(const json& value, const std::string& pointer, const std::strin
   return x;
 }
 
-long as_integer(const json& value, const std::string& pointer, const std::string& where, long lo,
-                long hi) {
+std::int64_t as_integer(const json& value, const std::string& pointer, const std::string& where,
+                        std::int64_t lo, std::int64_t hi) {
   const std::string allowed =
       "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
   if (!value.is_number()) fail_at(where, pointer, allowed + ", " + describe(value));
@@ -94,7 +94,7 @@ long as_integer(const json& value, const std::string& pointer, const std::string
   if (!std::isfinite(x) || x != std::floor(x) || x < static_cast<double>(lo) ||
       x > static_cast<double>(hi))
     fail_at(where, pointer, allowed + ", got " + number_text(x));
-  return static_cast<long>(x);
+  return static_cast<std::int64_t>(x);
 }
 
 ObjectReader::ObjectReader(const json& object, std::string pointer, std::string where)
@@ -126,13 +126,13 @@ double ObjectReader::number(const char* key, double fallback, Range range) {
   return has(key) ? as_number(object_[key], path(key), where_, range) : fallback;
 }
 
-long ObjectReader::integer(const char* key, long lo, long hi) {
+std::int64_t ObjectReader::integer(const char* key, std::int64_t lo, std::int64_t hi) {
   if (!has(key))
     fail(key, "is required: an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
   return as_integer(object_[key], path(key), where_, lo, hi);
 }
 
-long ObjectReader::integer(const char* key, long fallback, long lo, long hi) {
+std::int64_t ObjectReader::integer(const char* key, std::int64_t fallback, std::int64_t lo, std::int64_t hi) {
   return has(key) ? as_integer(object_[key], path(key), where_, lo, hi) : fallback;
 }
 

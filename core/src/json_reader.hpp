@@ -7,6 +7,7 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <cstdint>
 #include <initializer_list>
 #include <optional>
 #include <string>
@@ -41,8 +42,8 @@ class ObjectReader {
   bool has(const char* key);
   double number(const char* key, Range range);  // required
   double number(const char* key, double fallback, Range range);
-  long integer(const char* key, long lo, long hi);  // required
-  long integer(const char* key, long fallback, long lo, long hi);
+  std::int64_t integer(const char* key, std::int64_t lo, std::int64_t hi);  // required
+  std::int64_t integer(const char* key, std::int64_t fallback, std::int64_t lo, std::int64_t hi);
   bool boolean(const char* key, bool fallback);
   Vec3 vec3(const char* key);  // required
   Vec3 vec3(const char* key, const Vec3& fallback);
@@ -82,8 +83,8 @@ std::string describe(const json& value);
 // Checks and returns an element's value as a number, with the same message style.
 double as_number(const json& value, const std::string& pointer, const std::string& where,
                  Range range);
-long as_integer(const json& value, const std::string& pointer, const std::string& where, long lo,
-                long hi);
+std::int64_t as_integer(const json& value, const std::string& pointer, const std::string& where,
+                        std::int64_t lo, std::int64_t hi);
 [[noreturn]] void fail_at(const std::string& where, const std::string& pointer,
                           const std::string& what);
 

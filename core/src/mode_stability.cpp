@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "springlab/stability.hpp"
+#include "sqrt_of_real.hpp"
 
 namespace springlab {
 
@@ -88,7 +89,7 @@ double runge_kutta_exit(int p, Complex lambda) {
 
 // The two roots of lambda^2 + gamma lambda + kappa = 0.
 void mode_eigenvalues(double gamma, double kappa, Complex& first, Complex& second) {
-  const Complex root = std::sqrt(Complex(0.25 * gamma * gamma - kappa, 0.0));
+  const Complex root = sqrt_of_real(0.25 * gamma * gamma - kappa);
   first = -0.5 * gamma + root;
   second = -0.5 * gamma - root;
 }

@@ -16,6 +16,7 @@
 
 #include "lanczos.hpp"
 #include "linearised.hpp"
+#include "sqrt_of_real.hpp"
 
 namespace springlab {
 
@@ -187,7 +188,7 @@ StabilityLimit range_limit(Method method, const Linearised& lin, RangeTrace& tra
   const double gamma = s.gamma + extra * s.kappa;
   // The root that sets the limit: either of a complex pair (conjugates), the larger of a real
   // pair (every method here is limited by |lambda| on the negative real axis).
-  const Complex root = std::sqrt(Complex(0.25 * gamma * gamma - s.kappa, 0.0));
+  const Complex root = sqrt_of_real(0.25 * gamma * gamma - s.kappa);
   out.residual = residual(lin, s.x, -0.5 * gamma - root, extra);
   out.exact = out.residual <= kEigenvectorResidual;
   out.mode = mode_of(lin, s.x, s.gamma, s.kappa);

@@ -1,7 +1,5 @@
 #include "springlab/sweep.hpp"
 
-#include <omp.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -13,6 +11,7 @@
 #include "springlab/energy.hpp"
 #include "springlab/exact.hpp"
 #include "springlab/simulation.hpp"
+#include "threads.hpp"
 
 namespace springlab {
 
@@ -110,9 +109,9 @@ Trajectory rk4_trajectory(const Model& model, const State& initial, double h, in
 // is parallel across runs instead).
 void parallel_for(int jobs, int workers, const std::function<void(int)>& job, const std::atomic<bool>* cancel) {
   std::atomic<int> next{0};
-  const int caller_threads = omp_get_max_threads();
+  const int caller_threads = threads::max_team();
   const auto work = [&] {
-    omp_set_num_threads(1);
+    threads::set_max_team(1);
     for (int j; (j = next++) < jobs;) {
       if (cancel && cancel->load()) return;
       job(j);
@@ -122,7 +121,7 @@ void parallel_for(int jobs, int workers, const std::function<void(int)>& job, co
   for (int w = 1; w < workers; ++w) threads.emplace_back(work);
   work();
   for (auto& t : threads) t.join();
-  omp_set_num_threads(caller_threads);
+  threads::set_max_team(caller_threads);
 }
 
 std::string format(double x) {
@@ -164,101 +163,116 @@ double fitted_order(const std::vector<SweepRun>& runs, Method method, double flo
   return denom > 0 ? (n * sxy - sx * sy) / denom : std::numeric_limits<double>::quiet_NaN();
 }
 
-SweepResult run_sweep(const Model& model, const State& initial, const SweepSettings& settings,
-                      const std::function<void(const SweepRun&, int, int)>& on_run,
-                      const std::atomic<bool>* cancel) {
-  SweepResult result;
-  std::vector<Method> list = settings.methods;
-  if (list.empty())
-    for (const MethodInfo& m : methods()) list.push_back(m.id);
-  const double H = settings.h_max;
-  const std::vector<int> divisors = step_divisors(settings.h_min, H, settings.points);
-  result.sample_interval = H;
-  result.samples = std::max(1, static_cast<int>(std::lround(settings.duration / H)));
-  const int workers = settings.workers > 0 ? settings.workers : static_cast<int>(std::thread::hardware_concurrency());
+// --- The sweep's jobs: planned once, then run by run_sweep on worker threads or by SweepInSteps
+// one at a time.
 
-  // The reference.
+namespace {
+
+struct SweepJob {
+  Method method;
+  int divisor;       // fixed step: h = H / divisor
+  double tolerance;  // adaptive: NaN otherwise
+};
+
+// What every job of a sweep shares, and the result they fill in.
+struct SweepPlan {
+  const Model& model;
+  const State& initial;
+  SweepSettings settings;
+  std::vector<Method> list;
+  double H = 0.0;
+  std::vector<int> divisors;
   Trajectory reference;
-  reference.free = free_particles(model);
-  if (const auto exact = ExactOscillator::detect(model, initial)) {
+  std::vector<SweepJob> jobs;
+  std::shared_ptr<const StabilityAnalysis> analysis;
+  int stability_jobs = 0, drift_jobs = 0, total = 0;
+  SweepResult result;
+
+  SweepPlan(const Model& m, const State& s, const SweepSettings& settings_)
+      : model(m), initial(s), settings(settings_) {
+    list = settings.methods;
+    if (list.empty())
+      for (const MethodInfo& info : methods()) list.push_back(info.id);
+    H = settings.h_max;
+    divisors = step_divisors(settings.h_min, H, settings.points);
+    result.sample_interval = H;
+    result.samples = std::max(1, static_cast<int>(std::lround(settings.duration / H)));
+    reference.free = free_particles(model);
+  }
+
+  // The reference: the exact solution where the scene has one (then no RK4 runs are needed).
+  bool exact_reference() {
+    const auto exact = ExactOscillator::detect(model, initial);
+    if (!exact) return false;
     for (int k = 1; k <= result.samples; ++k)
       reference.samples.push_back(take(exact->at(initial.t + k * H), reference.free));
     result.reference = "exact solution";
-  } else {
+    return true;
+  }
+  // Else RK4 at a step 16 times smaller than the finest charted (j = 0), checked against RK4 at
+  // twice that step (j = 1).
+  Trajectory rk4_reference(int j) const {
     const int fine = divisors.back() * 16;
     const double h_ref = H / fine;
-    std::vector<Trajectory> both(2);
-    parallel_for(2, std::min(2, workers), [&](int j) {
-      both[j] = rk4_trajectory(model, initial, j == 0 ? h_ref : 2 * h_ref, j == 0 ? fine : fine / 2, result.samples);
-    }, nullptr);
-    reference = std::move(both[0]);
+    return rk4_trajectory(model, initial, j == 0 ? h_ref : 2 * h_ref, j == 0 ? fine : fine / 2, result.samples);
+  }
+  void set_rk4_reference(Trajectory fine, const Trajectory& coarse) {
+    reference = std::move(fine);
     double difference = 0.0;
     for (int k = 0; k < result.samples; ++k)
-      difference = std::max(difference, rms(reference.samples[k], both[1].samples[k]));
+      difference = std::max(difference, rms(reference.samples[k], coarse.samples[k]));
     result.reference_error = difference / 15.0;  // RK4: halving the step divides the error by 16
-    result.reference = "rk4 at h = " + format(h_ref) + " s (estimated error " + format(result.reference_error) + " m)";
+    result.reference = "rk4 at h = " + format(H / (divisors.back() * 16)) + " s (estimated error " +
+                       format(result.reference_error) + " m)";
   }
-  const Points start = take(initial, reference.free);
-  for (const Points& p : reference.samples) result.motion = std::max(result.motion, rms(p, start));
 
   // The jobs: every method at every step (or tolerance), then stability, then drift.
-  struct Job {
-    Method method;
-    int divisor;       // fixed step: h = H / divisor
-    double tolerance;  // adaptive: NaN otherwise
-  };
-  std::vector<Job> jobs;
-  for (Method m : list) {
-    // Every method at fixed steps (the order), and the adaptive ones over their tolerances too
-    // (what they cost for the accuracy they choose).
-    for (int d : divisors) jobs.push_back({m, d, std::numeric_limits<double>::quiet_NaN()});
-    if (!method_info(m).adaptive) continue;
-    for (int k = 0; k < settings.points; ++k) {
-      const double f = settings.points > 1 ? static_cast<double>(k) / (settings.points - 1) : 0.0;
-      jobs.push_back({m, 1, settings.tol_max * std::pow(settings.tol_min / settings.tol_max, f)});
+  void plan_jobs() {
+    const Points start = take(initial, reference.free);
+    for (const Points& p : reference.samples) result.motion = std::max(result.motion, rms(p, start));
+    for (Method m : list) {
+      // Every method at fixed steps (the order), and the adaptive ones over their tolerances too
+      // (what they cost for the accuracy they choose).
+      for (int d : divisors) jobs.push_back({m, d, std::numeric_limits<double>::quiet_NaN()});
+      if (!method_info(m).adaptive) continue;
+      for (int k = 0; k < settings.points; ++k) {
+        const double f = settings.points > 1 ? static_cast<double>(k) / (settings.points - 1) : 0.0;
+        jobs.push_back({m, 1, settings.tol_max * std::pow(settings.tol_min / settings.tol_max, f)});
+      }
     }
+    analysis = std::make_shared<const StabilityAnalysis>(model, initial);
+    result.w_max = analysis->w_max();
+    const bool drift = settings.drift_h > 0.0 && settings.drift_duration > 0.0;
+    stability_jobs = settings.stability ? static_cast<int>(list.size()) : 0;
+    drift_jobs = drift ? static_cast<int>(list.size()) : 0;
+    total = static_cast<int>(jobs.size()) + stability_jobs + drift_jobs;
+    result.runs.resize(jobs.size());
+    result.methods.resize(list.size());
+    result.drift.resize(drift_jobs);
   }
-  const auto shared = std::make_shared<const StabilityAnalysis>(model, initial);
-  const StabilityAnalysis& analysis = *shared;
-  result.w_max = analysis.w_max();
-  const bool drift = settings.drift_h > 0.0 && settings.drift_duration > 0.0;
-  const int stability_jobs = settings.stability ? static_cast<int>(list.size()) : 0;
-  const int drift_jobs = drift ? static_cast<int>(list.size()) : 0;
-  const int total = static_cast<int>(jobs.size()) + stability_jobs + drift_jobs;
 
-  result.runs.resize(jobs.size());
-  result.methods.resize(list.size());
-  result.drift.resize(drift_jobs);
-  std::mutex mutex;
-  int done = 0;
-  const auto finished = [&](const SweepRun* run) {
-    std::lock_guard lock(mutex);
-    ++done;
-    if (on_run) on_run(run ? *run : SweepRun{}, done, total);
-  };
-
-  parallel_for(total, workers, [&](int j) {
+  // Runs job j (any thread; jobs write only their own part of the result). Returns its run, if
+  // it is one.
+  const SweepRun* run_job(int j) {
     if (j < static_cast<int>(jobs.size())) {
-      const Job& job = jobs[j];
+      const SweepJob& job = jobs[j];
       result.runs[j] = run_one(model, initial, job.method, H / job.divisor, job.divisor, result.samples,
                                job.tolerance, settings.step, reference, settings.repeats);
       if (!std::isnan(job.tolerance)) result.runs[j].h = H;
-      finished(&result.runs[j]);
-      return;
+      return &result.runs[j];
     }
     j -= static_cast<int>(jobs.size());
     if (j < stability_jobs) {
       MethodSummary& s = result.methods[j];
       s.method = list[j];
-      const StabilityLimit& limit = analysis.limit(list[j]);
+      const StabilityLimit& limit = analysis->limit(list[j]);
       s.theoretical_stable_h = limit.h;
       s.theory_exact = limit.exact;
       const MeasuredLimit measured =
-          measured_limit(list[j], model, initial, limit, analysis.w_max(), settings.step, settings.stability_budget);
+          measured_limit(list[j], model, initial, limit, analysis->w_max(), settings.step, settings.stability_budget);
       s.measured_stable_h = measured.h;
       s.measured_resolution = measured.resolution;
-      finished(nullptr);
-      return;
+      return nullptr;
     }
     j -= stability_jobs;
     DriftTrace& trace = result.drift[j];
@@ -273,7 +287,7 @@ SweepResult run_sweep(const Model& model, const State& initial, const SweepSetti
     s.track_dissipation = true;
     s.audit_fraction = 0.0;  // the drift is what the chart shows, however far it goes
     Simulation sim(model, initial, s);
-    sim.set_stability(shared);  // the same scene: chooses the sub-steps
+    sim.set_stability(analysis);  // the same scene: chooses the sub-steps
     trace.substeps = sim.settings().substeps;
     const double scale = sim.energy_scale(), e0 = sim.energy().total();
     const auto steps = static_cast<std::int64_t>(std::llround(settings.drift_duration / settings.drift_h));
@@ -288,18 +302,99 @@ SweepResult run_sweep(const Model& model, const State& initial, const SweepSetti
       trace.t.push_back(sim.state().t);
       trace.drift.push_back((sim.energy().total() + sim.dissipated() - e0) / scale);
     }
-    finished(nullptr);
-  }, cancel);
-  result.cancelled = cancel && cancel->load();
+    return nullptr;
+  }
 
   // Orders, over the runs above the reference's error (and round-off) and below a tenth of the
   // motion.
-  for (std::size_t k = 0; k < list.size(); ++k) {
-    result.methods[k].method = list[k];
-    const double floor = std::max(100.0 * result.reference_error, 1e-12 * std::max(1.0, result.motion));
-    result.methods[k].order = fitted_order(result.runs, list[k], floor, 0.1 * result.motion, &result.methods[k].fitted_points);
+  void finish(bool cancelled) {
+    result.cancelled = cancelled;
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      result.methods[k].method = list[k];
+      const double floor = std::max(100.0 * result.reference_error, 1e-12 * std::max(1.0, result.motion));
+      result.methods[k].order =
+          fitted_order(result.runs, list[k], floor, 0.1 * result.motion, &result.methods[k].fitted_points);
+    }
   }
-  return result;
+};
+
+}  // namespace
+
+SweepResult run_sweep(const Model& model, const State& initial, const SweepSettings& settings,
+                      const std::function<void(const SweepRun&, int, int)>& on_run,
+                      const std::atomic<bool>* cancel) {
+  SweepPlan plan(model, initial, settings);
+  // Without threads (threads.hpp) every run is made on the caller's.
+  const int workers = !threads::kAvailable ? 1 : settings.workers > 0 ? settings.workers : threads::hardware_workers();
+  if (!plan.exact_reference()) {
+    std::vector<Trajectory> both(2);
+    parallel_for(2, std::min(2, workers), [&](int j) { both[j] = plan.rk4_reference(j); }, nullptr);
+    plan.set_rk4_reference(std::move(both[0]), both[1]);
+  }
+  plan.plan_jobs();
+  std::mutex mutex;
+  int done = 0;
+  parallel_for(plan.total, workers, [&](int j) {
+    const SweepRun* run = plan.run_job(j);
+    std::lock_guard lock(mutex);
+    ++done;
+    if (on_run) on_run(run ? *run : SweepRun{}, done, plan.total);
+  }, cancel);
+  plan.finish(cancel && cancel->load());
+  return std::move(plan.result);
+}
+
+struct SweepInSteps::Impl {
+  Model model;
+  State initial;
+  SweepPlan plan;
+  int phase = 0;  // 0: the reference, 1: its check, 2: the jobs' plan, then job (phase - 3)
+  Trajectory fine;
+  bool done = false;
+  Impl(const Model& m, const State& s, const SweepSettings& settings) : model(m), initial(s), plan(model, initial, settings) {}
+};
+
+SweepInSteps::SweepInSteps(const Model& model, const State& initial, const SweepSettings& settings)
+    : impl_(std::make_unique<Impl>(model, initial, settings)) {}
+SweepInSteps::~SweepInSteps() = default;
+SweepInSteps::SweepInSteps(SweepInSteps&&) noexcept = default;
+SweepInSteps& SweepInSteps::operator=(SweepInSteps&&) noexcept = default;
+
+bool SweepInSteps::step(const std::function<void(const SweepRun&, int done, int total)>& on_run) {
+  Impl& s = *impl_;
+  SweepPlan& plan = s.plan;
+  if (s.done) return false;
+  switch (s.phase) {
+    case 0:
+      if (plan.exact_reference()) s.phase = 1;  // nothing to check: the jobs' plan next
+      else s.fine = plan.rk4_reference(0);
+      break;
+    case 1:
+      plan.set_rk4_reference(std::move(s.fine), plan.rk4_reference(1));
+      break;
+    case 2:
+      plan.plan_jobs();
+      break;
+    default: {
+      const int j = s.phase - 3;
+      const SweepRun* run = plan.run_job(j);
+      if (on_run) on_run(run ? *run : SweepRun{}, j + 1, plan.total);
+      break;
+    }
+  }
+  ++s.phase;
+  if (s.phase >= 3 && s.phase - 3 == plan.total) {
+    plan.finish(false);
+    s.done = true;
+  }
+  return !s.done;
+}
+
+bool SweepInSteps::done() const { return impl_->done; }
+const SweepResult& SweepInSteps::result() const { return impl_->plan.result; }
+std::pair<int, int> SweepInSteps::progress() const {
+  const int phase = impl_->phase;
+  return {std::max(0, phase - 3), impl_->plan.total};
 }
 
 }  // namespace springlab

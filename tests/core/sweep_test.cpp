@@ -83,6 +83,44 @@ TEST(Sweep, TheNumberOfWorkersChangesNoResult) {
   for (std::size_t k = 0; k < one.drift.size(); ++k) EXPECT_EQ(one.drift[k].drift, two.drift[k].drift);
 }
 
+// Taken a piece at a time (SweepInSteps, the browser's app has no threads), the same sweep.
+TEST(Sweep, InStepsItIsTheSameSweep) {
+  const Scene cloth = test::shipped("cloth", {"cloth.width=8", "cloth.height=8"});
+  SweepSettings s;
+  s.methods = {Method::SymplecticEuler, Method::RK45};
+  s.h_min = cloth.dt / 4;
+  s.h_max = cloth.dt;
+  s.points = 3;
+  s.duration = 0.2;
+  s.stability_budget = 2e6;
+  s.drift_h = cloth.dt;
+  s.drift_duration = 0.2;
+  const SweepResult whole = run_sweep(cloth.model, cloth.state, s);
+  SweepInSteps steps(cloth.model, cloth.state, s);
+  int reported = 0, last_done = 0;
+  while (steps.step([&](const SweepRun&, int done, int total) {
+    EXPECT_EQ(done, last_done + 1);
+    EXPECT_EQ(total, steps.progress().second);
+    last_done = done;
+    ++reported;
+  })) {
+  }
+  const SweepResult& r = steps.result();
+  EXPECT_TRUE(steps.done());
+  EXPECT_EQ(reported, steps.progress().second);
+  EXPECT_EQ(r.reference, whole.reference);
+  ASSERT_EQ(r.runs.size(), whole.runs.size());
+  for (std::size_t k = 0; k < r.runs.size(); ++k) EXPECT_EQ(r.runs[k].error, whole.runs[k].error);
+  const auto same = [](double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); };
+  ASSERT_EQ(r.methods.size(), whole.methods.size());
+  for (std::size_t k = 0; k < r.methods.size(); ++k) {
+    EXPECT_TRUE(same(r.methods[k].measured_stable_h, whole.methods[k].measured_stable_h)) << k;
+    EXPECT_TRUE(same(r.methods[k].order, whole.methods[k].order)) << k;
+  }
+  ASSERT_EQ(r.drift.size(), whole.drift.size());
+  for (std::size_t k = 0; k < r.drift.size(); ++k) EXPECT_EQ(r.drift[k].drift, whole.drift[k].drift);
+}
+
 TEST(Sweep, CancelStopsItEarly) {
   const Scene spring = test::shipped("spring");
   std::atomic<bool> cancel{false};

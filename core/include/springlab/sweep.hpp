@@ -14,6 +14,8 @@
 #include <atomic>
 #include <functional>
 #include <limits>
+#include <memory>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -99,6 +101,30 @@ struct SweepResult {
 SweepResult run_sweep(const Model& model, const State& initial, const SweepSettings& settings,
                       const std::function<void(const SweepRun&, int done, int total)>& on_run = {},
                       const std::atomic<bool>* cancel = nullptr);
+
+// The same sweep taken a piece at a time by its caller, for an app without threads (the
+// browser's runs pieces between its frames, the charts filling in as on the desktop): first the
+// reference, then its check, then the jobs' plan (the stability analysis), then one job a call.
+// The same jobs as run_sweep's, and the same result.
+class SweepInSteps {
+ public:
+  SweepInSteps(const Model& model, const State& initial, const SweepSettings& settings);
+  ~SweepInSteps();
+  SweepInSteps(SweepInSteps&&) noexcept;
+  SweepInSteps& operator=(SweepInSteps&&) noexcept;
+
+  // Does the next piece; calls `on_run` after a job as run_sweep does. False once all is done.
+  bool step(const std::function<void(const SweepRun&, int done, int total)>& on_run = {});
+  bool done() const;
+  // Jobs done and in all (0 of 0 until the plan is made).
+  std::pair<int, int> progress() const;
+  // The runs so far; everything, the fitted orders too, once done.
+  const SweepResult& result() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 // The slope of log(error) against log(step) over the fixed-step runs of one method that are
 // stable, well above the reference's error and round-off, and below a tenth of the motion

@@ -38,10 +38,9 @@
 // product, conjugate gradients); the step.
 #include "implicit_euler.hpp"
 
-#include <omp.h>
-
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -274,7 +273,7 @@ struct ImplicitSolver {
   std::span<const int> pinned_in(int begin, int end) const {
     const auto first = std::lower_bound(pinned.begin(), pinned.end(), begin);
     const auto last = std::lower_bound(first, pinned.end(), end);
-    return {first, last};
+    return {std::to_address(first), static_cast<std::size_t>(last - first)};  // (LLVM 14's span takes no iterators)
   }
 
   // The sum of the blocks' parts of a dot product, in block order: the same on every thread and

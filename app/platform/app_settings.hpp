@@ -1,0 +1,23 @@
+// What the interactive app starts with, on any platform: the scene and its options, the compare
+// lanes, a script to play, the panels' scale. A plain struct: the command line (`springlab view`)
+// fills it from its flags, the browser from the page's link (app/web/url_config.hpp).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "platform/scene_options.hpp"
+
+namespace springlab::app {
+
+struct AppSettings {
+  std::string scene = "rope";  // a shipped scene's name or a path
+  SimOptions sim;
+  std::vector<Method> compare;  // empty, or 2 to 4 lanes
+  std::optional<std::string> script;
+  double ui_scale = 1.0;  // times the display's own scale
+  bool accuracy = false;  // open the Compare panel and start its sweep
+};
+
+}  // namespace springlab::app

@@ -1,0 +1,220 @@
+#include "platform/interactive_app.hpp"
+
+// GL first (epoxy or ES 3), then GLFW without its own GL header: its key codes are the ones
+// Dear ImGui's GLFW backend reports, on the desktop and in the browser alike.
+#include "gfx/gl.hpp"
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "draw/scene_frame.hpp"
+#include "ui/actions.hpp"
+#include "ui/overlay.hpp"
+#include "ui/theme.hpp"
+#include "util/data_dir.hpp"
+
+namespace springlab::app {
+
+// --- Pacing --------------------------------------------------------------------------------
+
+namespace {
+Clock::duration seconds(double s) {
+  return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s));
+}
+}  // namespace
+
+FramePacer::FramePacer(double period_s, double early_s)
+    : period_(seconds(period_s)), early_(seconds(early_s)), next_(Clock::now()) {}
+
+double FramePacer::seconds_to_next() const {
+  return std::chrono::duration<double>(next_ - early_ - Clock::now()).count();
+}
+
+bool FramePacer::take() {
+  const auto now = Clock::now();
+  if (now < next_ - early_) return false;
+  next_ = std::max(next_ + period_, now - period_);
+  return true;
+}
+
+// --- The app -------------------------------------------------------------------------------
+
+InteractiveApp::InteractiveApp(Prepared first, const AppSettings& settings, std::optional<Script> script,
+                               float scale, int samples, bool background)
+    : samples_(samples), background_(background) {
+  ui_.scale = scale;
+  const std::string name = first.scene.name;
+  show(std::move(first), name);
+  if (!settings.compare.empty()) session_->set_compare(settings.compare);
+  if (script) session_->play(std::move(*script));
+  if (settings.accuracy) {
+    ui_.accuracy = true;
+    accuracy_.start(*session_);
+  }
+}
+
+void InteractiveApp::show(Prepared p, const std::string& name) {
+  const auto compare = ui_.compare_choice;
+  const bool presentation = ui_.presentation;
+  const float scale = ui_.scale;
+  session_ = std::make_unique<Session>(std::move(p.scene), p.settings, 60.0);
+  // Interactive: stability analyses on a worker thread, the frame loop never waiting for one.
+  // Scripted (--frames): made where needed, so that the same run gives the same frames.
+  session_->set_background_analysis(background_);
+  ui::UiState ui;
+  ui.scale = scale;
+  ui.view = draw::ViewOptions::for_scene(session_->scene());
+  ui.ranges = ui::Ranges::of(*session_);
+  ui.scenes = shipped_scenes();
+  ui.scene_name = name;
+  ui.compare_choice = compare;
+  ui.presentation = presentation;
+  ui.platform_controls = std::move(ui_.platform_controls);
+  for (Method m : session_->scene().methods)
+    if (session_->scene().methods.size() >= 2) ui.compare_choice[static_cast<int>(m)] = true;
+  ui_ = std::move(ui);
+}
+
+bool InteractiveApp::open(const std::string& scene) {
+  try {
+    Prepared next = prepare(scene, {});
+    accuracy_.sweep.cancel();
+    show(std::move(next), scene);
+    drag_.reset();
+    opened_ = scene;
+    return true;
+  } catch (const std::exception& e) {
+    ui_.message = e.what();
+    return false;
+  }
+}
+
+void InteractiveApp::set_scale(float scale) {
+  ui_.scale = scale;
+  ImGui::GetStyle() = ImGuiStyle();  // apply_theme scales the sizes it is given
+  ui::apply_theme(scale);
+}
+
+// Mouse on the scene: left drags a particle, right orbits (pans in 2D), middle pans, wheel zooms.
+void InteractiveApp::mouse(const draw::ViewCamera& camera, const draw::Viewport& viewport, double to_fb) {
+  const ImGuiIO& io = ImGui::GetIO();
+  Session& session = *session_;
+  const ui::Pointer pointer{io.MousePos.x * to_fb, io.MousePos.y * to_fb};
+  if (!io.WantCaptureMouse) {
+    if (ImGui::IsMouseClicked(ImGuiMouseButton_Left))
+      drag_ = ui::press(session, camera, viewport, pointer, 14.0 * ui_.scale);
+    const ImVec2 d = io.MouseDelta;
+    if (ImGui::IsMouseDragging(ImGuiMouseButton_Right, 0.0f)) {
+      if (ui_.view.camera.view == View::Planar) ui::pan(ui_.view.camera, camera, d.x * to_fb, d.y * to_fb);
+      else ui::orbit(ui_.view.camera, d.x, d.y);
+    }
+    if (ImGui::IsMouseDragging(ImGuiMouseButton_Middle, 0.0f))
+      ui::pan(ui_.view.camera, camera, d.x * to_fb, d.y * to_fb);
+    if (io.MouseWheel != 0.0f) ui::zoom(ui_.view.camera, io.MouseWheel);
+  }
+  if (drag_ && ImGui::IsMouseDown(ImGuiMouseButton_Left)) ui::move(session, camera, viewport, pointer, *drag_);
+  if (drag_ && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+    ui::release(session);
+    drag_.reset();
+  }
+}
+
+// The keys of the help overlay, as actions.
+void InteractiveApp::keyboard() {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (io.WantTextInput) return;
+  const std::pair<int, ui::Action> keys[] = {
+      {GLFW_KEY_SPACE, ui::Action::TogglePause}, {GLFW_KEY_S, ui::Action::Step},
+      {GLFW_KEY_R, ui::Action::Reset},           {GLFW_KEY_C, ui::Action::ToggleCompare},
+      {GLFW_KEY_H, ui::Action::TogglePanels},    {GLFW_KEY_F1, ui::Action::ToggleHelp},
+      {GLFW_KEY_A, ui::Action::ToggleAccuracy},  {GLFW_KEY_G, ui::Action::ToggleRegion},
+      {GLFW_KEY_M, ui::Action::ToggleMode},      {GLFW_KEY_P, ui::Action::TogglePresentation}};
+  for (const auto& [key, action] : keys)
+    if (ImGui::IsKeyPressed(key, false)) ui::perform(action, *session_, ui_);
+  for (int k = 0; k < 9; ++k)
+    if (ImGui::IsKeyPressed(GLFW_KEY_1 + k, false))
+      ui::perform(static_cast<ui::Action>(static_cast<int>(ui::Action::Method1) + k), *session_, ui_);
+  if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) quit_ = true;
+}
+
+void InteractiveApp::simulate() {
+  Session& session = *session_;
+  const Counters before = session.primary().sim.counters();
+  const auto sim_start = Clock::now();
+  session.advance_frame();
+  stats_.sim_ms = std::chrono::duration<double, std::milli>(Clock::now() - sim_start).count();
+  const Counters& after = session.primary().sim.counters();
+  stats_.force_evals = after.force_evals - before.force_evals;
+  stats_.linear_solves = after.linear_solves - before.linear_solves;
+  stats_.solver_iterations = after.solver_iterations - before.solver_iterations;
+  // The real-time factor over the last second: simulated time (what the lanes reached) against
+  // the wall clock. Below 1 the simulation cannot keep up and the app slows down with it,
+  // rather than drop simulated time; the panels say by how much.
+  pace_.emplace_back(Clock::now(), session.simulated_target());
+  while (pace_.size() > 2 && pace_.front().first < pace_.back().first - std::chrono::seconds(1)) pace_.pop_front();
+  if (pace_.size() >= 2 && !session.paused()) {
+    const double wall = std::chrono::duration<double>(pace_.back().first - pace_.front().first).count();
+    const double simulated = (pace_.back().second - pace_.front().second) / std::max(1e-9, session.speed());
+    if (wall > 0.25) {
+      stats_.realtime = simulated / wall;
+      stats_.fps = (pace_.size() - 1) / wall;
+    }
+  }
+}
+
+void InteractiveApp::frame(const FrameSize& size) {
+  ImGui::NewFrame();
+  const int win_w = size.win_width, win_h = size.win_height;
+  const double to_fb = static_cast<double>(size.fb_width) / std::max(1, win_w);
+
+  // The scene's part of the framebuffer (the panels' layout is in window units).
+  draw::Viewport viewport = ui::scene_viewport(ui_, win_w, win_h);
+  viewport = {static_cast<int>(viewport.x * to_fb), static_cast<int>(viewport.y * to_fb),
+              static_cast<int>(viewport.width * to_fb), static_cast<int>(viewport.height * to_fb)};
+  const draw::ViewCamera camera = draw::view_camera(ui_.view.camera, viewport.width, viewport.height);
+  mouse(camera, viewport, to_fb);
+  keyboard();
+
+  Session& session = *session_;
+  const ui::Requests requests = ui::draw_panels(session, ui_, stats_, win_w, win_h);
+  const float scale = ui_.scale;
+  accuracy_.open = ui_.accuracy;
+  accuracy_.sweep.advance();  // (without threads: the sweep's next pieces; else nothing)
+  ui::draw_compare_panel(accuracy_, session, scale, 380.0f * scale, 20.0f * scale, win_w - 400.0f * scale,
+                         win_h * 0.62f);
+  ui_.accuracy = accuracy_.open;
+  ui_.view.line_scale = ui_.presentation ? 1.6f : 1.0f;
+  ui::OverlayOptions overlay;
+  overlay.scale = scale * (ui_.presentation ? ui::kPresentationScale : 1.0f);
+  overlay.caption = !ui_.panels;
+  overlay.realtime = stats_.realtime;
+  ui::draw_overlay(session, camera,
+                   {static_cast<int>(viewport.x / to_fb), static_cast<int>(viewport.y / to_fb),
+                    static_cast<int>(viewport.width / to_fb), static_cast<int>(viewport.height / to_fb)},
+                   ui_.scene_name, overlay);
+  if (requests.quit) quit_ = true;
+  std::optional<std::string> load = requests.load;
+  if (pending_) load = std::exchange(pending_, std::nullopt);
+
+  simulate();
+
+  // Draw it, the panels over it, into the default framebuffer.
+  const auto draw_start = Clock::now();
+  ImGui::Render();
+  target_.resize(size.fb_width, size.fb_height, samples_);
+  target_.bind_for_drawing();
+  renderer_.draw(draw::build_frame(session, ui_.view, viewport), size.fb_width, size.fb_height);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  target_.resolve();
+  target_.blit_to_window(size.fb_width, size.fb_height);
+  stats_.draw_ms = std::chrono::duration<double, std::milli>(Clock::now() - draw_start).count();
+
+  // A new scene, when asked: the current one keeps running if it does not load.
+  if (load) open(*load);
+}
+
+}  // namespace springlab::app

@@ -1,0 +1,50 @@
+// The scene to open and the options that set it up (method, dt, sub-steps, k_s, k_d, ...), and
+// turning them into a ready scene and settings with every value checked. Platform-neutral: the
+// command line fills SimOptions from its flags, the browser from the page's link; both get the
+// same checks and the same messages ("--dt: must be in (0, 1] s, got -1").
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "springlab/methods.hpp"
+#include "springlab/scene.hpp"
+#include "springlab/simulation.hpp"
+
+namespace springlab::app {
+
+struct SimOptions {
+  std::optional<std::string> method;
+  std::optional<double> dt;
+  std::optional<std::string> substeps;  // a whole number, or "auto"
+  std::optional<std::int64_t> steps;
+  std::optional<double> duration;
+  std::optional<double> ks, kd, tol;
+  std::vector<std::string> sets;
+  std::optional<int> threads;
+};
+
+struct Prepared {
+  Scene scene;
+  SimulationSettings settings;
+  std::int64_t steps = 0;  // from --steps, or --duration (or the scene's) / dt
+};
+
+// Loads the scene (name or path), applies --set, --ks, --kd, --method, --dt, --substeps, --tol
+// and --threads, and checks every value. Throws InputError.
+Prepared prepare(const std::string& scene, const SimOptions& options);
+
+// Checks an option's value: "--dt: must be in (0, 1] s, got -1". Throws InputError.
+void check_option(const char* name, double value, double lo, double hi, bool lo_open,
+                  const char* unit = "");
+
+// A whole number written any way ("1e6") within [lo, hi], as its plain digits in `text`; or the
+// reason it is not: "must be a whole number in [1, 1e+12], got 2.5" (text left as it was).
+std::string parse_whole_number(std::string& text, double lo, double hi);
+
+// Compare lanes from "euler,verlet": 2 to 4 known methods. Throws InputError naming `option`.
+std::vector<Method> parse_compare(const std::string& text, const char* option);
+
+}  // namespace springlab::app

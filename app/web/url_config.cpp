@@ -1,0 +1,159 @@
+#include "web/url_config.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+#include <vector>
+
+#include "springlab/error.hpp"
+#include "util/data_dir.hpp"
+
+namespace springlab::app::web {
+
+namespace {
+
+std::string percent_decoded(const std::string& text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '+') {
+      out += ' ';
+    } else if (text[i] == '%' && i + 2 < text.size() && std::isxdigit(static_cast<unsigned char>(text[i + 1])) &&
+               std::isxdigit(static_cast<unsigned char>(text[i + 2]))) {
+      out += static_cast<char>(std::stoi(text.substr(i + 1, 2), nullptr, 16));
+      i += 2;
+    } else {
+      out += text[i];
+    }
+  }
+  return out;
+}
+
+// Keeps what a link may hold as it is (letters, digits, "-._~,"), the rest as %XX.
+std::string percent_encoded(const std::string& text) {
+  std::string out;
+  for (unsigned char c : text) {
+    if (std::isalnum(c) || c == '-' || c == '.' || c == '_' || c == '~' || c == ',' || c == '/') {
+      out += static_cast<char>(c);
+    } else {
+      char hex[4];
+      std::snprintf(hex, sizeof hex, "%%%02X", c);
+      out += hex;
+    }
+  }
+  return out;
+}
+
+double number(const std::string& key, const std::string& text) {
+  char* end = nullptr;
+  const double x = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(x))
+    throw InputError("link: " + key + ": must be a number, got '" + text + "'");
+  return x;
+}
+
+// A number as short as it reads back exactly, with no exponent unless that is shorter: 5000,
+// 0.0001, 7.5e-05.
+std::string shortest(double x) {
+  const auto first_exact = [x](const char* format) {
+    char text[64];
+    for (int digits = 0; digits <= 17; ++digits) {
+      std::snprintf(text, sizeof text, format, digits, x);
+      if (std::strtod(text, nullptr) == x) break;
+    }
+    return std::string(text);
+  };
+  const std::string general = first_exact("%.*g"), fixed = first_exact("%.*f");
+  return fixed.size() <= general.size() ? fixed : general;
+}
+
+}  // namespace
+
+AppSettings settings_from_link(const std::string& fragment) {
+  AppSettings s;
+  std::stringstream in(fragment.starts_with("#") ? fragment.substr(1) : fragment);
+  for (std::string pair; std::getline(in, pair, '&');) {
+    if (pair.empty()) continue;
+    const std::size_t eq = pair.find('=');
+    const std::string key = percent_decoded(pair.substr(0, eq));
+    const std::string value = eq == std::string::npos ? "" : percent_decoded(pair.substr(eq + 1));
+    if (key == "scene") s.scene = value;
+    else if (key == "method") s.sim.method = value;
+    else if (key == "dt") s.sim.dt = number(key, value);
+    else if (key == "substeps") s.sim.substeps = value;
+    else if (key == "ks") s.sim.ks = number(key, value);
+    else if (key == "kd") s.sim.kd = number(key, value);
+    else if (key == "compare") s.compare = parse_compare(value, "link: compare");
+    else if (key == "script") s.script = value;
+    else if (key == "set") s.sim.sets.push_back(value);  // set=cloth.width%3D64, as --set
+    else if (key == "accuracy") {
+      if (value != "0" && value != "1") throw InputError("link: accuracy: must be 1 (open the Compare panel and start its sweep) or 0, got '" + value + "'");
+      s.accuracy = value == "1";
+    }
+    else if (key == "ui-scale") {
+      s.ui_scale = number(key, value);
+      check_option("link: ui-scale", s.ui_scale, 0.5, 4.0, false);
+    } else {
+      throw InputError("link: unknown parameter '" + key + "' (parameters: " + kLinkParameters + ")");
+    }
+  }
+  return s;
+}
+
+Opened open_settings(const AppSettings& settings) {
+  try {
+    Opened opened{prepare(settings.scene, settings.sim), std::nullopt};
+    if (settings.script) {
+      // A shipped script by name (assets/scripts/NAME.json), or a path.
+      std::string path = *settings.script;
+      if (path.find('/') == std::string::npos && !path.ends_with(".json"))
+        path = (data_dir() / "assets" / "scripts" / (path + ".json")).string();
+      opened.script = load_script(path, opened.prepared.scene);
+    }
+    return opened;
+  } catch (const InputError& e) {
+    // The command line's messages name its flags ("--dt: ..."): a link names its parameters.
+    std::string message = e.what();
+    if (message.starts_with("--")) message.erase(0, 2);
+    else if (settings.script && message.find("script") != std::string::npos) message = "script: " + message;
+    throw InputError(message.starts_with("link: ") ? message : "link: " + message);
+  }
+}
+
+std::string link_of(const InteractiveApp& app, const std::vector<std::string>& sets, double ui_scale) {
+  const Session& session = app.session();
+  const Lane& lane = session.primary();
+  std::string link = "scene=" + percent_encoded(app.scene_name());
+  for (const std::string& set : sets) link += "&set=" + percent_encoded(set);
+  // What the scene's own file says, to leave out of the link what has not changed.
+  std::optional<Prepared> file;
+  try {
+    SimOptions as_opened;
+    as_opened.sets = sets;
+    file = prepare(app.scene_name(), as_opened);
+  } catch (const InputError&) {
+  }
+  const auto differs = [](double a, double b) { return std::abs(a - b) > 1e-12 * std::max(std::abs(a), std::abs(b)); };
+  const Model& model = file ? file->scene.model : lane.sim.model();
+  const double file_ks = model.materials.empty() ? 0.0 : model.materials.front().ks;
+  const double file_kd = model.materials.empty() ? 0.0 : model.materials.front().kd;
+  if (session.comparing()) {
+    std::string lanes;
+    for (const Lane& l : session.lanes()) lanes += (lanes.empty() ? "" : ",") + std::string(method_info(l.sim.settings().method).name);
+    link += "&compare=" + lanes;
+  } else if (!file || session.method() != file->settings.method) {
+    link += "&method=" + std::string(method_info(session.method()).name);
+  }
+  const double dt = lane.sim.settings().dt;
+  if (!file || differs(dt, file->settings.dt)) link += "&dt=" + shortest(dt);
+  if (!session.auto_substeps() && (!file || file->settings.auto_substeps || lane.sim.settings().substeps != file->settings.substeps))
+    link += "&substeps=" + std::to_string(lane.sim.settings().substeps);
+  if (differs(session.stiffness(), file_ks)) link += "&ks=" + shortest(session.stiffness());
+  if (differs(session.damping(), file_kd)) link += "&kd=" + shortest(session.damping());
+  if (differs(ui_scale, 1.0)) link += "&ui-scale=" + shortest(ui_scale);
+  return link;
+}
+
+}  // namespace springlab::app::web

@@ -1,0 +1,36 @@
+// The page's link as the app's settings, and back: `index.html#scene=rope&method=euler&dt=1e-4
+// &substeps=4&ks=7500&kd=0.75&compare=euler,verlet&script=rope-drag-euler-to-rk4&ui-scale=1.25`,
+// set=KEY%3DVALUE (as many as wanted) for any other scene field, as the command line's --set, and
+// accuracy=1 to open the Compare panel and start its sweep (--accuracy).
+// Every value gets the checks the command line's flags get (platform/scene_options.hpp).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "platform/app_settings.hpp"
+#include "platform/interactive_app.hpp"
+
+namespace springlab::app::web {
+
+// The settings a link's fragment (what follows '#', percent-encoded) asks for. Throws InputError
+// naming the parameter and what it allows: "link: dt: must be a number, got 'fast'".
+AppSettings settings_from_link(const std::string& fragment);
+
+// A prepared scene for those settings, and the script it plays. Throws InputError as the command
+// line does, with "link: " and the parameter's name (no "--") in front.
+struct Opened {
+  Prepared prepared;
+  std::optional<Script> script;
+};
+Opened open_settings(const AppSettings& settings);
+
+// The fragment that reopens what `app` shows now: its scene (with the `sets` it was opened with),
+// and whatever differs from that (method, dt, fixed sub-steps, k_s, k_d, compare lanes).
+std::string link_of(const InteractiveApp& app, const std::vector<std::string>& sets, double ui_scale);
+
+// The names a link takes, for messages.
+inline constexpr const char* kLinkParameters = "scene, method, dt, substeps, ks, kd, compare, script, set, accuracy, ui-scale";
+
+}  // namespace springlab::app::web

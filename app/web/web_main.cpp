@@ -1,0 +1,272 @@
+// springlab in the browser: the interactive app (platform/interactive_app.hpp) in a WebGL2
+// canvas. Only what the browser does differently is here: an OpenGL ES 3 context from
+// emscripten's GLFW, a canvas sized to its CSS box times the device pixel ratio (sharp text), the
+// frame loop of the page's animation frames, the settings from the page's link, and the files
+// the page hands over (a scene from the file picker or dropped on the page).
+//
+// Sections: the page's state; the frame; the functions the page calls; main.
+#include <emscripten.h>
+#include <emscripten/html5.h>
+
+#include "gfx/gl.hpp"
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "platform/interactive_app.hpp"
+#include "springlab/error.hpp"
+#include "ui/theme.hpp"
+#include "web/browser.hpp"
+#include "web/url_config.hpp"
+
+namespace springlab::app::web {
+
+namespace {
+
+// --- The page's state ----------------------------------------------------------------------
+
+struct Page {
+  GLFWwindow* window = nullptr;
+  std::unique_ptr<InteractiveApp> app;
+  // A browser's animation frames come at the display's rate (60, 120 Hz) with some jitter: one
+  // simulated frame every 1/60 s, due a quarter of a frame early.
+  FramePacer pacer{1.0 / 60.0, 0.25 / 60.0};
+  double ui_scale = 1.0;  // the control's (--ui-scale); the panels' is this times the pixel ratio
+  double pixel_ratio = 1.0;
+  std::optional<double> next_ui_scale;  // applied before the next frame (the fonts are in use during one)
+  std::vector<std::string> sets;  // the link's set=..., while its scene is shown
+  std::string link;  // the last copied
+  long frames = 0;
+  double frame_ms = 0.0;  // the last frame's whole time in the app (the browser composites after)
+  ImVec4 copy_button;  // where Copy link is (x, y, width, height), for the page's tests
+};
+Page* g_page = nullptr;
+
+void set_ui_scale(Page& page, double scale) {
+  page.ui_scale = std::clamp(scale, 0.5, 4.0);
+  page.app->set_scale(static_cast<float>(page.ui_scale * page.pixel_ratio));
+  ImGui_ImplOpenGL3_DestroyDeviceObjects();  // the font texture, remade at the new size
+}
+
+// The canvas's pixels: its CSS box (index.html sizes it to the window) times the pixel ratio.
+// GLFW's window size is the canvas's size in pixels, so the mouse and ImGui count pixels too.
+void fit_canvas(Page& page) {
+  double css_w = 0, css_h = 0;
+  emscripten_get_element_css_size("#canvas", &css_w, &css_h);
+  const double ratio = std::clamp(emscripten_get_device_pixel_ratio(), 0.5, 4.0);
+  const int w = std::max(1, static_cast<int>(std::lround(css_w * ratio)));
+  const int h = std::max(1, static_cast<int>(std::lround(css_h * ratio)));
+  int cur_w = 0, cur_h = 0;
+  glfwGetWindowSize(page.window, &cur_w, &cur_h);
+  if (w != cur_w || h != cur_h) glfwSetWindowSize(page.window, w, h);
+  if (ratio != page.pixel_ratio) {  // (zoomed, or moved to another screen)
+    page.pixel_ratio = ratio;
+    set_ui_scale(page, page.ui_scale);
+  }
+}
+
+// The browser's own controls, under the panel's scene picker: share the link of what is shown,
+// open a scene file, and the UI scale (the desktop's --ui-scale, which a link's ui-scale sets too).
+void browser_controls(Page& page) {
+  const bool copy = ImGui::Button("Copy link");
+  page.copy_button = {ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
+                      ImGui::GetItemRectSize().y};
+  if (copy) {
+    page.link = page_address() + "#" + link_of(*page.app, page.sets, page.ui_scale);
+    copy_to_clipboard(page.link);
+    set_page_link(page.link);
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Open file...")) choose_scene_file();
+  ImGui::SameLine();
+  static constexpr double kScales[] = {0.75, 1.0, 1.25, 1.5, 2.0, 2.5, 3.0};
+  char current[16];
+  std::snprintf(current, sizeof current, "UI %g", page.ui_scale);
+  ImGui::SetNextItemWidth(ImGui::CalcTextSize("UI 1.25").x + ImGui::GetFrameHeight() * 1.6f);
+  if (ImGui::BeginCombo("##ui-scale", current)) {
+    for (double s : kScales) {
+      char item[16];
+      std::snprintf(item, sizeof item, "UI %g", s);
+      if (ImGui::Selectable(item, s == page.ui_scale)) page.next_ui_scale = s;  // (the fonts are in use now)
+    }
+    ImGui::EndCombo();
+  }
+  if (!page.link.empty()) {
+    // What was copied, as text to see or to copy by hand.
+    ImGui::SetNextItemWidth(-1.0f);
+    ImGui::InputText("##link", page.link.data(), page.link.size() + 1, ImGuiInputTextFlags_ReadOnly);
+  }
+}
+
+// --- The frame -----------------------------------------------------------------------------
+
+void frame() {
+  Page& page = *g_page;
+  if (!page.pacer.take()) return;
+  fit_canvas(page);
+  if (page.next_ui_scale) set_ui_scale(page, *std::exchange(page.next_ui_scale, std::nullopt));
+  FrameSize size;
+  glfwGetFramebufferSize(page.window, &size.fb_width, &size.fb_height);
+  glfwGetWindowSize(page.window, &size.win_width, &size.win_height);
+  if (size.fb_width <= 0 || size.fb_height <= 0) return;
+  const double start = emscripten_get_now();
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  page.app->frame(size);
+  page.frame_ms = emscripten_get_now() - start;
+  if (page.app->take_opened()) page.sets.clear();  // another scene, opened as its file says
+  if (++page.frames == 1) first_frame_shown();
+}
+
+// The app for the page's link; a link that cannot be followed opens the default scene instead,
+// with one message saying which parameter is wrong and what it allows.
+std::unique_ptr<InteractiveApp> app_for_link(Page& page) {
+  AppSettings settings;
+  std::string problem;
+  std::optional<Opened> opened;
+  try {
+    settings = settings_from_link(location_fragment());
+    opened = open_settings(settings);
+  } catch (const std::exception& e) {
+    problem = e.what();
+    settings = AppSettings();
+    opened = open_settings(settings);
+  }
+  page.ui_scale = settings.ui_scale;
+  page.sets = settings.sim.sets;
+  page.pixel_ratio = std::clamp(emscripten_get_device_pixel_ratio(), 0.5, 4.0);
+  const float scale = static_cast<float>(page.ui_scale * page.pixel_ratio);
+  ui::apply_theme(scale);
+  // No multisampling: SwiftShader and many laptops' GPUs draw it slowly, and the lines and
+  // spheres are drawn with their own smooth edges.
+  auto app = std::make_unique<InteractiveApp>(std::move(opened->prepared), settings, std::move(opened->script),
+                                              scale, 0, true);
+  if (!problem.empty()) app->say(problem);
+  app->set_platform_controls([&page] { browser_controls(page); });
+  return app;
+}
+
+}  // namespace
+
+}  // namespace springlab::app::web
+
+// --- The functions the page calls ------------------------------------------------------------
+
+extern "C" {
+
+// A scene file's text from the page (file picker or drop): written where the desktop would read
+// it and opened with the same loader and checks; a bad file leaves the scene running and says why.
+EMSCRIPTEN_KEEPALIVE void springlab_open_scene_text(const char* file_name, const char* text) {
+  using namespace springlab::app::web;
+  if (!g_page) return;
+  namespace fs = std::filesystem;
+  std::string name = fs::path(file_name ? file_name : "").filename().string();
+  if (name.empty()) name = "scene.json";
+  const fs::path dir = "/user";
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  const fs::path path = dir / name;
+  std::ofstream(path, std::ios::binary) << (text ? text : "");
+  g_page->app->open_after_frame(path.string());
+}
+
+// The UI scale from the page's script: the desktop's --ui-scale (0.5 to 4, times the pixel ratio).
+EMSCRIPTEN_KEEPALIVE void springlab_set_ui_scale(double scale) {
+  using namespace springlab::app::web;
+  if (g_page && std::isfinite(scale)) g_page->next_ui_scale = scale;
+}
+
+// What is shown, as JSON, for the page's tests: scene, method, dt, lanes and their times, the
+// banner's message, the frame count.
+EMSCRIPTEN_KEEPALIVE const char* springlab_status() {
+  using namespace springlab;
+  using namespace springlab::app::web;
+  static std::string json;
+  if (!g_page) return "{}";
+  const app::Session& session = g_page->app->session();
+  const auto quoted = [](const std::string& s) {
+    std::string out = "\"";
+    for (char c : s) {
+      if (c == '"' || c == '\\') out += '\\';
+      if (static_cast<unsigned char>(c) >= 0x20) out += c;
+    }
+    return out + "\"";
+  };
+  char number[256];
+  json = "{\"scene\":" + quoted(g_page->app->scene_name());
+  json += ",\"method\":" + quoted(method_info(session.method()).name);
+  std::snprintf(number, sizeof number, ",\"dt\":%.17g", session.primary().sim.settings().dt);
+  json += number;
+  std::snprintf(number, sizeof number, ",\"ks\":%.17g,\"kd\":%.17g", session.stiffness(), session.damping());
+  json += number;
+  std::snprintf(number, sizeof number, ",\"frames\":%ld,\"scale\":%.4g", g_page->frames, g_page->app->scale());
+  json += number;
+  const ui::FrameStats& stats = g_page->app->stats();
+  std::snprintf(number, sizeof number, ",\"frame_ms\":%.4g,\"sim_ms\":%.4g,\"draw_ms\":%.4g,\"fps\":%.4g,\"realtime\":%.4g",
+                g_page->frame_ms, stats.sim_ms, stats.draw_ms, stats.fps, stats.realtime);
+  json += number;
+  const ImVec4& b = g_page->copy_button;
+  std::snprintf(number, sizeof number, ",\"copy_link\":[%g,%g,%g,%g]", b.x, b.y, b.z, b.w);
+  json += number;
+  json += ",\"paused\":" + std::string(session.paused() ? "true" : "false");
+  json += ",\"message\":" + quoted(g_page->app->ui().message);
+  json += ",\"lanes\":[";
+  for (std::size_t i = 0; i < session.lanes().size(); ++i) {
+    const app::Lane& lane = session.lanes()[i];
+    std::snprintf(number, sizeof number, "%s{\"method\":\"%s\",\"t\":%.17g,\"diverged\":%s}", i ? "," : "",
+                  method_info(lane.sim.settings().method).name, lane.sim.state().t,
+                  lane.sim.diverged() ? "true" : "false");
+    json += number;
+  }
+  json += "]}";
+  return json.c_str();
+}
+
+}  // extern "C"
+
+// --- main ----------------------------------------------------------------------------------
+
+int main() {
+  using namespace springlab::app::web;
+  if (!glfwInit()) {
+    std::fprintf(stderr, "springlab: GLFW could not start in this page\n");
+    return 1;
+  }
+  glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 0);
+  static Page page;
+  page.window = glfwCreateWindow(1280, 720, "springlab", nullptr, nullptr);
+  if (!page.window) {
+    std::fprintf(stderr, "springlab: this browser gives no WebGL2 context\n");
+    return 1;
+  }
+  glfwMakeContextCurrent(page.window);
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;  // nothing to save between visits
+  io.LogFilename = nullptr;
+  ImGui_ImplGlfw_InitForOpenGL(page.window, true);
+  ImGui_ImplOpenGL3_Init("#version 300 es");
+
+  page.app = app_for_link(page);
+  g_page = &page;
+  // The page's animation frames drive the loop; main returns and the page keeps running.
+  emscripten_set_main_loop(frame, 0, false);
+  return 0;
+}

@@ -1,0 +1,84 @@
+// The core's one seam to threads: every question about them (how many a parallel loop may use,
+// which one this is) and every worker thread a sweep starts go through here.
+//
+// Built with OpenMP (SPRINGLAB_OPENMP, the default) these are OpenMP's answers. Without it (the
+// browser build: WebAssembly without threads) the core runs on one thread: the functions below
+// answer as a team of one would, and the `#pragma omp` loops are plain loops (their `omp simd`
+// hints still vectorise under -fopenmp-simd). Results are the same bits either way: the force
+// pass sums in the same order for any thread count (force_pass.hpp).
+#pragma once
+
+#include <atomic>
+
+#if SPRINGLAB_OPENMP
+#include <omp.h>
+
+#include <thread>
+#endif
+
+namespace springlab::threads {
+
+// std::atomic_ref, or, where the standard library has none yet (emscripten 3.1.6's libc++), the
+// same operations on the compiler's atomic builtins (GCC and Clang).
+#if defined(__cpp_lib_atomic_ref)
+template <typename T>
+using atomic_ref = std::atomic_ref<T>;
+#else
+template <typename T>
+class atomic_ref {
+ public:
+  explicit atomic_ref(T& object) : p_(&object) {}
+  T load(std::memory_order order = std::memory_order_seq_cst) const { return __atomic_load_n(p_, builtin(order)); }
+  void store(T value, std::memory_order order = std::memory_order_seq_cst) const {
+    __atomic_store_n(p_, value, builtin(order));
+  }
+  T fetch_add(T value, std::memory_order order = std::memory_order_seq_cst) const {
+    return __atomic_fetch_add(p_, value, builtin(order));
+  }
+  bool compare_exchange_weak(T& expected, T desired, std::memory_order order = std::memory_order_seq_cst) const {
+    return __atomic_compare_exchange_n(p_, &expected, desired, true, builtin(order), builtin(failure(order)));
+  }
+
+ private:
+  static constexpr int builtin(std::memory_order order) {
+    switch (order) {
+      case std::memory_order_relaxed: return __ATOMIC_RELAXED;
+      case std::memory_order_consume: return __ATOMIC_CONSUME;
+      case std::memory_order_acquire: return __ATOMIC_ACQUIRE;
+      case std::memory_order_release: return __ATOMIC_RELEASE;
+      case std::memory_order_acq_rel: return __ATOMIC_ACQ_REL;
+      default: return __ATOMIC_SEQ_CST;
+    }
+  }
+  // A failed exchange only loads: no release in its order.
+  static constexpr std::memory_order failure(std::memory_order order) {
+    return order == std::memory_order_acq_rel ? std::memory_order_acquire
+           : order == std::memory_order_release ? std::memory_order_relaxed
+                                                : order;
+  }
+  T* p_;
+};
+#endif
+
+#if SPRINGLAB_OPENMP
+inline constexpr bool kAvailable = true;
+// Threads a parallel loop started now would have (omp_get_max_threads).
+inline int max_team() { return omp_get_max_threads(); }
+inline void set_max_team(int threads) { omp_set_num_threads(threads); }
+// Inside a parallel loop: its team's size and this thread's number.
+inline int team_size() { return omp_get_num_threads(); }
+inline int team_index() { return omp_get_thread_num(); }
+inline int processors() { return omp_get_num_procs(); }
+// Worker threads a sweep may run its runs on at once.
+inline int hardware_workers() { return static_cast<int>(std::thread::hardware_concurrency()); }
+#else
+inline constexpr bool kAvailable = false;
+inline int max_team() { return 1; }
+inline void set_max_team(int) {}
+inline int team_size() { return 1; }
+inline int team_index() { return 0; }
+inline int processors() { return 1; }
+inline int hardware_workers() { return 1; }
+#endif
+
+}  // namespace springlab::threads

@@ -1,0 +1,285 @@
+// springlab in a real browser: serves build-web/ on loopback, drives Debian's Chromium headlessly
+// (WebGL2 on SwiftShader) and checks the app as a user meets it, then runs the core's tests
+// compiled to WebAssembly. Prints a line per check; exits with the number of failures.
+//   node tests/web/browser_test.cjs [check name filter]
+// Screenshots and diff images go to build-web/_build/web-test/; SPRINGLAB_UPDATE_GOLDENS=1 writes
+// the golden images (tests/web/golden/) instead of comparing with them (look at them first).
+"use strict";
+const fs = require("fs");
+const os = require("os");
+const path = require("path");
+const { serve, launch, openApp, status, waitFrames, key, pauseAtStart, compareImages, pixels, consoleErrors } =
+  require("./page.cjs");
+
+const root = path.resolve(__dirname, "../..");
+const site = path.join(root, "build-web");
+const out = path.join(site, "_build", "web-test");
+const goldens = path.join(__dirname, "golden");
+const update = process.env.SPRINGLAB_UPDATE_GOLDENS === "1";
+fs.mkdirSync(out, { recursive: true });
+
+function expect(condition, what) {
+  if (!condition) throw new Error(what);
+}
+
+// A screenshot compared with its golden image: at most `tolerance` of the pixels may differ (the
+// panels' timings and frame rates are live text).
+async function matchesGolden(browser, page, name, tolerance = 0.01) {
+  const shot = await page.screenshot({ type: "png" });
+  fs.writeFileSync(path.join(out, name + ".png"), shot);
+  const golden = path.join(goldens, name + ".png");
+  if (update) {
+    fs.mkdirSync(goldens, { recursive: true });
+    fs.writeFileSync(golden, shot);
+    return;
+  }
+  expect(fs.existsSync(golden), `no golden image ${golden} (SPRINGLAB_UPDATE_GOLDENS=1 writes it)`);
+  const cmp = await compareImages(browser, fs.readFileSync(golden), shot);
+  if (cmp.diff) fs.writeFileSync(path.join(out, name + "-diff.png"), cmp.diff);
+  expect(!cmp.sizeMismatch, `${name}: size ${cmp.sizeMismatch}`);
+  expect(cmp.fraction <= tolerance,
+         `${name}: ${(100 * cmp.fraction).toFixed(2)} % of pixels differ from the golden image (at most ` +
+         `${100 * tolerance} %); see ${path.join(out, name + "-diff.png")}`);
+}
+
+// The share of pixels that differ between two screenshots.
+async function difference(browser, a, b) {
+  return (await compareImages(browser, a, b)).fraction;
+}
+
+// The bounding box of the pixels that differ from the background in an area of a screenshot.
+function scenePixels(img, x0, y0, x1, y1, test) {
+  const found = [];
+  for (let y = y0; y < y1; y++)
+    for (let x = x0; x < x1; x++) {
+      const i = 4 * (y * img.w + x);
+      if (test(img.data[i], img.data[i + 1], img.data[i + 2])) found.push([x, y]);
+    }
+  return found;
+}
+
+const checks = [];
+const check = (name, run) => checks.push({ name, run });
+
+check("the rope scene renders (golden image)", async ({ browser, base }) => {
+  const page = await openApp(browser, base, "scene=rope");
+  await pauseAtStart(page);
+  const s = await status(page);
+  expect(s.scene === "rope" && s.method === "euler" && s.message === "", `status ${JSON.stringify(s)}`);
+  await matchesGolden(browser, page, "rope");
+  await page.close();
+});
+
+// Drags the rope's free end with the mouse, or with a finger (index.html turns one finger into
+// the left button), and checks that it moved there.
+async function dragTheRope(browser, base, finger) {
+  const page = await openApp(browser, base, "scene=rope", { touch: finger });
+  await pauseAtStart(page);
+  await key(page, "KeyH");  // no panels: the scene fills the page
+  const before = await page.screenshot({ type: "png" });
+  const img = await pixels(browser, before);
+  // The rope's spheres: near-white pixels in the scene (below the overlay's first lines).
+  const white = scenePixels(img, 0, 60, img.w, img.h, (r, g, b) => r > 200 && g > 200 && b > 200);
+  expect(white.length > 50, `no rope found (${white.length} white pixels)`);
+  const end = white.reduce((a, p) => (p[0] > a[0] ? p : a));  // the free end: the rightmost sphere
+  const to = [end[0] - 100, end[1] + 150];
+  const at = (k) => [end[0] - 2 + (to[0] - end[0] + 2) * k / 10, end[1] + (to[1] - end[1]) * k / 10];
+  if (finger) await page.touchscreen.touchStart(...at(0));
+  else {
+    await page.mouse.move(...at(0));
+    await page.mouse.down();
+  }
+  for (let k = 1; k <= 10; k++) {
+    if (finger) await page.touchscreen.touchMove(...at(k));
+    else await page.mouse.move(...at(k));
+    await waitFrames(page, 1);
+  }
+  await waitFrames(page, 3);
+  const during = await page.screenshot({ type: "png" });
+  if (finger) await page.touchscreen.touchEnd();
+  else await page.mouse.up();
+  const name = finger ? "touch-drag" : "drag";
+  fs.writeFileSync(path.join(out, `${name}-before.png`), before);
+  fs.writeFileSync(path.join(out, `${name}-during.png`), during);
+  // Paused, nothing else moves: the picture changes where the particle was and where it went (a
+  // held particle is drawn highlighted), and far from both it does not.
+  const after = await pixels(browser, during);
+  const changed = (x, y, r) => {
+    let n = 0;
+    for (let j = Math.max(0, y - r); j < Math.min(img.h, y + r); j++)
+      for (let i = Math.max(0, x - r); i < Math.min(img.w, x + r); i++) {
+        const k = 4 * (j * img.w + i);
+        if (Math.abs(img.data[k] - after.data[k]) + Math.abs(img.data[k + 1] - after.data[k + 1]) +
+            Math.abs(img.data[k + 2] - after.data[k + 2]) > 90) n++;
+      }
+    return n;
+  };
+  const atTarget = changed(to[0], to[1], 12), atStart = changed(end[0], end[1], 6), far = changed(200, 400, 60);
+  expect(atTarget > 80, `the particle did not arrive where it was dragged (${atTarget} pixels changed near ${to})`);
+  expect(atStart > 20, `the particle's old place is unchanged (${atStart} pixels changed near ${end})`);
+  expect(far === 0, `${far} pixels changed far from the drag`);
+  await page.close();
+}
+
+check("dragging a particle with the mouse moves it", ({ browser, base }) => dragTheRope(browser, base, false));
+check("dragging a particle with a finger moves it", ({ browser, base }) => dragTheRope(browser, base, true));
+
+check("method and dt from the link take effect", async ({ browser, base }) => {
+  // One page at a time: a page in the background gets no animation frames.
+  const shot = async (link) => {
+    const page = await openApp(browser, base, link);
+    await pauseAtStart(page);
+    const s = await status(page), png = await page.screenshot();
+    await page.close();
+    return [s, png];
+  };
+  const link = "scene=spring&method=rk4&dt=0.004";
+  const [sa, ia] = await shot(link), [, ib] = await shot(link), [sd, id] = await shot("scene=spring");
+  fs.writeFileSync(path.join(out, "link-rk4.png"), ia);
+  fs.writeFileSync(path.join(out, "link-default.png"), id);
+  expect(sa.method === "rk4" && sa.dt === 0.004 && sa.message === "", `status ${JSON.stringify(sa)}`);
+  expect(sd.method !== "rk4", "the default method is rk4 too: pick another for this test");
+  const same = await difference(browser, ia, ib), other = await difference(browser, ia, id);
+  expect(same < 0.01, `the same link twice differs in ${(100 * same).toFixed(2)} % of pixels`);
+  expect(other > same + 0.002, `rk4 at dt 0.004 looks like the default (${(100 * other).toFixed(2)} % differ)`);
+});
+
+check("method and dt from the panels take effect", async ({ browser, base }) => {
+  const page = await openApp(browser, base, "scene=rope");
+  const before = await status(page);
+  // dt: a ctrl-click on its slider (where the rope scene's panel has it at scale 1 in a 1280 x 720
+  // page: panel-method-dt.png shows it) types a value, as in Dear ImGui anywhere. Each key and
+  // button is held for frames: the app reads the keyboard's state once a frame.
+  await page.keyboard.down("Control");
+  await waitFrames(page, 2);
+  await page.mouse.move(122, 354);
+  await page.mouse.down();
+  await waitFrames(page, 2);
+  await page.mouse.up();
+  await waitFrames(page, 2);
+  await page.keyboard.up("Control");
+  await waitFrames(page, 2);
+  await page.keyboard.type("5e-05");  // replaces the selected value
+  await key(page, "Enter");
+  // The method: key 5 is the fifth method of the table (rk4).
+  await key(page, "Digit5");
+  const after = await status(page);
+  fs.writeFileSync(path.join(out, "panel-method-dt.png"), await page.screenshot());
+  expect(Math.abs(after.dt / 5e-5 - 1) < 1e-6, `dt after typing 5e-05 into its slider: ${after.dt} (was ${before.dt})`);
+  expect(after.method === "rk4" && before.method !== "rk4", `method: ${before.method} -> ${after.method}`);
+  await page.close();
+});
+
+check("a compare link shows the lanes", async ({ browser, base }) => {
+  const page = await openApp(browser, base, "scene=rope&compare=euler,verlet,rk4");
+  const s = await status(page);
+  expect(s.lanes.map((l) => l.method).join(",") === "euler,verlet,rk4", `lanes ${JSON.stringify(s.lanes)}`);
+  await pauseAtStart(page);
+  await matchesGolden(browser, page, "rope-compare");
+  await page.close();
+});
+
+check("every shipped scene opens and runs", async ({ browser, base }) => {
+  const scenes = fs.readdirSync(path.join(root, "assets/scenes")).filter((f) => f.endsWith(".json"))
+    .map((f) => f.replace(/\.json$/, ""));
+  for (const scene of scenes) {
+    const page = await openApp(browser, base, "scene=" + scene);
+    const s1 = await status(page);
+    await waitFrames(page, 10);
+    const s2 = await status(page);
+    expect(s1.scene === scene && s1.message === "", `${scene}: ${JSON.stringify(s1)}`);
+    // Running: its clock goes on (a lane waiting for its first analysis starts within these frames).
+    expect(s2.lanes.every((l, i) => l.t > s1.lanes[i].t || l.t > 0), `${scene} does not run: ${JSON.stringify(s2.lanes)}`);
+    await page.close();
+  }
+});
+
+check("a bad link says which parameter and opens the default scene", async ({ browser, base }) => {
+  for (const [link, words] of [["scene=ropee", ["scene 'ropee'", "rope"]], ["scene=rope&dt=-1", ["dt", "(0, 1]"]],
+                               ["method=eulr", ["method", "euler"]], ["speed=2", ["unknown parameter 'speed'"]],
+                               ["compare=euler", ["compare", "2 to 4"]], ["ks=abc", ["ks", "number"]]]) {
+    const page = await openApp(browser, base, link);
+    const s = await status(page);
+    for (const w of words) expect(s.message.includes(w), `${link}: message '${s.message}' lacks '${w}'`);
+    expect(s.scene === "rope" && s.lanes.length === 1, `${link}: opened ${s.scene}`);
+    if (link === "scene=rope&dt=-1") fs.writeFileSync(path.join(out, "bad-link.png"), await page.screenshot());
+    await page.close();
+  }
+});
+
+check("a bad scene file gives the message and the scene keeps running", async ({ browser, base }) => {
+  const page = await openApp(browser, base, "scene=rope");
+  const bad = path.join(os.tmpdir(), "springlab-bad-scene.json");
+  fs.writeFileSync(bad, '{ "particles": [ { "position": [0, 0] } ] }');
+  const input = await page.$("#scene-file");
+  await input.uploadFile(bad);
+  await page.waitForFunction(() => JSON.parse(Module.ccall("springlab_status", "string", [], [])).message !== "",
+                             { timeout: 10000 });
+  const s1 = await status(page);
+  await waitFrames(page, 10);
+  const s2 = await status(page);
+  fs.writeFileSync(path.join(out, "bad-file.png"), await page.screenshot());
+  expect(s1.message.includes("springlab-bad-scene.json"), `message '${s1.message}' does not name the file`);
+  expect(s2.scene === "rope" && s2.lanes[0].t > s1.lanes[0].t, `rope stopped: ${JSON.stringify(s2)}`);
+  // And a good one opens.
+  const good = path.join(os.tmpdir(), "my-spring.json");
+  fs.copyFileSync(path.join(root, "assets/scenes/spring.json"), good);
+  await input.uploadFile(good);
+  await page.waitForFunction(() => JSON.parse(Module.ccall("springlab_status", "string", [], [])).scene.includes("my-spring"),
+                             { timeout: 10000 });
+  await page.close();
+});
+
+check("copy link gives the link of what is shown", async ({ browser, base }) => {
+  const page = await openApp(browser, base, "scene=rope&compare=euler,verlet&ks=5000");
+  const [x, y, w, h] = (await status(page)).copy_link;
+  await page.mouse.move(x + w / 2, y + h / 2);
+  await page.mouse.down();
+  await waitFrames(page, 2);
+  await page.mouse.up();
+  await page.waitForFunction(() => typeof window.springlabLink === "string", { timeout: 5000 });
+  const link = await page.evaluate(() => window.springlabLink);
+  expect(/#scene=rope&compare=euler,verlet&ks=5000$/.test(link), `link ${link}`);
+  await page.close();
+});
+
+check("the core's tests pass compiled to WebAssembly", async ({ browser, base }) => {
+  const page = await browser.newPage();
+  page.on("pageerror", (e) => consoleErrors.push(`gtest: ${e.message}`));
+  await page.goto(`${base}/_build/tests/gtest.html`);
+  await page.waitForFunction("window.gtestResult !== undefined", { timeout: 600000, polling: 500 });
+  const [result, log] = await page.evaluate(() => [window.gtestResult, window.gtestLog]);
+  fs.writeFileSync(path.join(out, "core-tests-web.txt"), log.join("\n") + "\n");
+  const summary = log.filter((l) => /^\[  (PASSED|FAILED) |tests? ran/.test(l)).join("; ");
+  expect(result === 0, `${result} failed: ${log.filter((l) => l.startsWith("[  FAILED")).join("; ")}`);
+  console.log(`    ${summary}`);
+  await page.close();
+});
+
+check("the console has no errors", async () => {
+  expect(consoleErrors.length === 0, consoleErrors.join("\n"));
+});
+
+(async () => {
+  const filter = process.argv[2] || "";
+  const { server, base } = await serve(site);
+  const browser = await launch();
+  let failed = 0, ran = 0;
+  const start = Date.now();
+  for (const c of checks) {
+    if (!c.name.includes(filter) && c.name !== "the console has no errors") continue;
+    ran++;
+    const t0 = Date.now();
+    try {
+      await c.run({ browser, base });
+      console.log(`ok    ${c.name} (${((Date.now() - t0) / 1000).toFixed(1)} s)`);
+    } catch (e) {
+      failed++;
+      console.log(`FAIL  ${c.name}: ${e.message}`);
+    }
+  }
+  console.log(`${ran - failed} of ${ran} browser checks passed in ${((Date.now() - start) / 1000).toFixed(0)} s`);
+  await browser.close();
+  server.close();
+  process.exit(failed);
+})();

@@ -1,0 +1,137 @@
+// What the browser tests share: a static server for build-web/ on loopback, Debian's Chromium
+// through puppeteer-core (headless, WebGL2 on SwiftShader), the app's page opened at a link and
+// driven, and images compared with a golden one (with a tolerance, and a diff image on failure).
+"use strict";
+const fs = require("fs");
+const http = require("http");
+const path = require("path");
+const puppeteer = require("puppeteer-core");
+
+const types = {
+  ".html": "text/html", ".js": "text/javascript", ".wasm": "application/wasm", ".data": "application/octet-stream",
+  ".png": "image/png", ".json": "application/json",
+};
+
+// Serves `dir` on 127.0.0.1 at a free port; resolves to { server, base }.
+function serve(dir) {
+  const server = http.createServer((req, res) => {
+    const file = path.join(dir, decodeURIComponent(new URL(req.url, "http://x").pathname));
+    if (!file.startsWith(dir) || !fs.existsSync(file) || fs.statSync(file).isDirectory()) {
+      res.writeHead(404);
+      res.end();
+      return;
+    }
+    res.writeHead(200, { "Content-Type": types[path.extname(file)] || "application/octet-stream" });
+    fs.createReadStream(file).pipe(res);
+  });
+  return new Promise((resolve) => server.listen(0, "127.0.0.1", () =>
+    resolve({ server, base: `http://127.0.0.1:${server.address().port}` })));
+}
+
+function launch() {
+  return puppeteer.launch({
+    executablePath: process.env.CHROMIUM || "/usr/bin/chromium",
+    headless: "new",
+    args: ["--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--window-size=1280,720",
+           "--disable-dev-shm-usage"],
+  });
+}
+
+// Every console error and uncaught exception of every page, for the final check.
+const consoleErrors = [];
+
+// Opens the app at `fragment` (without '#') and waits for its first frames.
+async function openApp(browser, base, fragment, { width = 1280, height = 720, scale = 1, touch = false } = {}) {
+  const page = await browser.newPage();
+  await page.setViewport({ width, height, deviceScaleFactor: scale, hasTouch: touch });
+  page.on("console", (m) => { if (m.type() === "error") consoleErrors.push(`${fragment}: ${m.text()}`); });
+  page.on("pageerror", (e) => consoleErrors.push(`${fragment}: ${e.message}`));
+  await page.goto(`${base}/index.html${fragment ? "#" + fragment : ""}`);
+  await page.waitForFunction("window.springlabReady === true", { timeout: 60000 });
+  await waitFrames(page, 5);
+  return page;
+}
+
+async function status(page) {
+  return JSON.parse(await page.evaluate(() => Module.ccall("springlab_status", "string", [], [])));
+}
+
+async function waitFrames(page, n) {
+  const start = (await status(page)).frames;
+  await page.waitForFunction((s, k) => JSON.parse(Module.ccall("springlab_status", "string", [], [])).frames >= s + k,
+                             { timeout: 30000 }, start, n);
+}
+
+// A key as the app sees it: held for two frames (the app reads the keyboard once a frame).
+async function key(page, name) {
+  await page.focus("#canvas");
+  await page.keyboard.down(name);
+  await waitFrames(page, 2);
+  await page.keyboard.up(name);
+  await waitFrames(page, 2);
+}
+
+// Paused at the scene's start: the same picture every time (the clock shown is the scene's).
+async function pauseAtStart(page) {
+  if (!(await status(page)).paused) await key(page, "Space");
+  await key(page, "KeyR");
+  await waitFrames(page, 3);
+}
+
+// Compares two PNG buffers in a browser page (a 2D canvas decodes them): the share of pixels whose
+// channels differ by more than `threshold`, and a diff image (differing pixels in red).
+async function compareImages(browser, a, b, threshold = 40) {
+  const page = await browser.newPage();
+  const result = await page.evaluate(async (a64, b64, threshold) => {
+    const load = async (b64) => {
+      const img = new Image();
+      img.src = "data:image/png;base64," + b64;
+      await img.decode();
+      const c = document.createElement("canvas");
+      c.width = img.width;
+      c.height = img.height;
+      const g = c.getContext("2d");
+      g.drawImage(img, 0, 0);
+      return { w: img.width, h: img.height, data: g.getImageData(0, 0, img.width, img.height).data, c, g };
+    };
+    const A = await load(a64), B = await load(b64);
+    if (A.w !== B.w || A.h !== B.h) return { sizeMismatch: `${A.w}x${A.h} against ${B.w}x${B.h}`, fraction: 1 };
+    const diff = A.g.getImageData(0, 0, A.w, A.h);
+    let differing = 0;
+    for (let i = 0; i < A.data.length; i += 4) {
+      const d = Math.max(Math.abs(A.data[i] - B.data[i]), Math.abs(A.data[i + 1] - B.data[i + 1]),
+                         Math.abs(A.data[i + 2] - B.data[i + 2]));
+      const grey = (A.data[i] + A.data[i + 1] + A.data[i + 2]) / 12;
+      diff.data[i] = d > threshold ? 255 : grey;
+      diff.data[i + 1] = d > threshold ? 0 : grey;
+      diff.data[i + 2] = d > threshold ? 0 : grey;
+      diff.data[i + 3] = 255;
+      if (d > threshold) differing++;
+    }
+    A.g.putImageData(diff, 0, 0);
+    return { fraction: differing / (A.w * A.h), diff: A.c.toDataURL("image/png").split(",")[1] };
+  }, a.toString("base64"), b.toString("base64"), threshold);
+  await page.close();
+  if (result.diff) result.diff = Buffer.from(result.diff, "base64");
+  return result;
+}
+
+// Pixels of a PNG screenshot as RGBA rows, decoded by the browser.
+async function pixels(browser, png) {
+  const page = await browser.newPage();
+  const out = await page.evaluate(async (b64) => {
+    const img = new Image();
+    img.src = "data:image/png;base64," + b64;
+    await img.decode();
+    const c = document.createElement("canvas");
+    c.width = img.width;
+    c.height = img.height;
+    const g = c.getContext("2d");
+    g.drawImage(img, 0, 0);
+    return { w: img.width, h: img.height, data: Array.from(g.getImageData(0, 0, img.width, img.height).data) };
+  }, png.toString("base64"));
+  await page.close();
+  return out;
+}
+
+module.exports = { serve, launch, openApp, status, waitFrames, key, pauseAtStart, compareImages, pixels, consoleErrors };
