@@ -101,6 +101,8 @@ int run_window(const AppSettings& settings, const WindowOptions& o) {
     int shown_w = 0, shown_h = 0;
     const auto start = Clock::now();
     long frames = 0;
+    auto first_frame = start;
+    double first_t = 0.0;
     while (!glfwWindowShouldClose(window)) {
       if (!o.frames) {
         // Paced by the wall clock: one simulated frame every 1/60 s, whatever the display does.
@@ -126,6 +128,10 @@ int run_window(const AppSettings& settings, const WindowOptions& o) {
       if (const auto opened = app.take_opened())
         glfwSetWindowTitle(window, ("springlab - " + app.session().scene().name).c_str());
       ++frames;
+      if (frames == 1) {  // the steady figures start after the first frame (the scene's analysis)
+        first_frame = Clock::now();
+        first_t = app.session().primary().sim.state().t;
+      }
       if (o.frames && frames >= *o.frames) {
         if (o.screenshot) screenshot(*o.screenshot, size.fb_width, size.fb_height);
         glfwSwapBuffers(window);
@@ -140,6 +146,12 @@ int run_window(const AppSettings& settings, const WindowOptions& o) {
       const Session& session = app.session();
       std::printf("frames     %ld in %.3g s: %.1f frames/s (%dx%d, %d samples, %s)\n", frames, wall, frames / wall,
                   shown_w, shown_h, samples, gl_renderer.c_str());
+      // Each frame advances 1/60 s here, as fast as it can: the real-time factor is what the
+      // window would show (above 1, it waits for the display instead).
+      const double steady = std::chrono::duration<double>(Clock::now() - first_frame).count();
+      if (frames > 1 && steady > 0.0)
+        std::printf("steady     %.1f frames/s, %.3gx real time (after the first frame)\n", (frames - 1) / steady,
+                    (session.primary().sim.state().t - first_t) / steady);
       for (const Lane& lane : session.lanes())
         std::printf("lane       %s at t = %.4g s%s\n", method_info(lane.sim.settings().method).name,
                     lane.sim.state().t, lane.sim.diverged() ? " (diverged)" : "");
