@@ -16,6 +16,9 @@ cd "$build"
 export UBSAN_OPTIONS="print_stacktrace=1${UBSAN_OPTIONS:+:$UBSAN_OPTIONS}"
 # Two tests at once, each with its OpenMP threads: waiting threads sleep instead of spinning.
 export OMP_WAIT_POLICY="${OMP_WAIT_POLICY:-passive}"
+# The limits test's runs within a quarter of the normal build's work (the sanitizers slow every
+# step several times): the same checks, on shorter stretches of each run.
+export SPRINGLAB_LIMITS_BUDGET="${SPRINGLAB_LIMITS_BUDGET:-5e7}"
 # Left out here, and only here: Determinism.ThreadCountDoesNotChangeABit runs a 48 x 48 cloth
 # with five methods at 1, 2 and 3 threads, and two of them diverge, each divergence estimating
 # w_max by power iteration for its message; a few seconds in the Release build, over 15 minutes
