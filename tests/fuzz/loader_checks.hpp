@@ -54,7 +54,9 @@ inline void check_scene(const Scene& s) {
     require(range.first >= 0 && range.second > 0 && range.first + range.second <= n,
             "named generators index particles");
   require(!s.methods.empty(), "at least one method");
-  require(s.dt > 0 && s.dt <= 1 && s.substeps >= 1, "a usable step");
+  // substeps 0 is "auto": chosen from the stability analysis, within (0, 10] times its limit.
+  require(s.dt > 0 && s.dt <= 1 && s.substeps >= 0, "a usable step");
+  require(s.safety > 0 && s.safety <= 10, "a usable safety fraction");
   require(s.duration > 0 && std::isfinite(s.duration), "a finite duration");
 }
 
