@@ -19,13 +19,6 @@ Result view(const std::string& args, const fs::path& cwd = ".") {
   return springlab_with("xvfb-run -a -s '-screen 0 1280x720x24' ", "view " + args, cwd);
 }
 
-std::vector<std::string> scenes() {
-  std::vector<std::string> names;
-  for (const auto& e : fs::directory_iterator(std::string(SPRINGLAB_SOURCE_DIR) + "/assets/scenes"))
-    if (e.path().extension() == ".json") names.push_back(e.path().stem().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
 
 // Distinct colours, and bright (text) pixels, in a rectangle of an image.
 struct Content {
@@ -63,12 +56,8 @@ TEST_P(EveryScene, OpensAndShowsTheSceneAndThePanels) {
   EXPECT_GT(content(im, 380, 0, 1280, 450).colours, 10u);
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, EveryScene, ::testing::ValuesIn(scenes()), [](const auto& info) {
-  std::string name = info.param;
-  for (char& c : name)
-    if (c == '-') c = '_';
-  return name;
-});
+INSTANTIATE_TEST_SUITE_P(Scenes, EveryScene, ::testing::ValuesIn(shipped_scenes()),
+                         [](const auto& info) { return scene_test_name(info.param); });
 
 TEST(View, AScriptDragsAParticleAndSwitchesTheMethod) {
   TempDir dir;

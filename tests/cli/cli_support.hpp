@@ -4,10 +4,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace springlab::test {
 
@@ -24,6 +26,21 @@ inline std::string read_file(const std::filesystem::path& path) {
 }
 
 // A fresh folder for one test, removed at the end.
+// The shipped scenes' names (assets/scenes/*.json), sorted: the parameters of the tests that run
+// every scene, named for GoogleTest by scene_test_name ("cloth-sphere" -> "cloth_sphere").
+inline std::vector<std::string> shipped_scenes() {
+  std::vector<std::string> names;
+  for (const auto& e : std::filesystem::directory_iterator(std::string(SPRINGLAB_SOURCE_DIR) + "/assets/scenes"))
+    if (e.path().extension() == ".json") names.push_back(e.path().stem().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+inline std::string scene_test_name(std::string name) {
+  for (char& c : name)
+    if (c == '-') c = '_';
+  return name;
+}
+
 struct TempDir {
   std::filesystem::path path;
   TempDir() {

@@ -101,20 +101,9 @@ TEST_P(EveryScene, IsChartedWithoutError) {
     }
 }
 
-std::vector<std::string> scenes() {
-  std::vector<std::string> names;
-  for (const auto& e : fs::directory_iterator(std::string(SPRINGLAB_SOURCE_DIR) + "/assets/scenes"))
-    if (e.path().extension() == ".json") names.push_back(e.path().stem().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
 
-INSTANTIATE_TEST_SUITE_P(Scenes, EveryScene, ::testing::ValuesIn(scenes()), [](const auto& info) {
-  std::string n = info.param;
-  for (char& c : n)
-    if (c == '-') c = '_';
-  return n;
-});
+INSTANTIATE_TEST_SUITE_P(Scenes, EveryScene, ::testing::ValuesIn(shipped_scenes()),
+                         [](const auto& info) { return scene_test_name(info.param); });
 
 TEST(Compare, BadOptionsExitTwo) {
   TempDir dir;

@@ -13,13 +13,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::vector<std::string> scenes() {
-  std::vector<std::string> names;
-  for (const auto& e : fs::directory_iterator(std::string(SPRINGLAB_SOURCE_DIR) + "/assets/scenes"))
-    if (e.path().extension() == ".json") names.push_back(e.path().stem().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
 
 void expect_holds(const Result& r, const std::string& what) {
   EXPECT_EQ(r.status, 0) << what << "\n" << r.out << r.err;
@@ -34,12 +27,8 @@ TEST_P(ShippedScene, HoldsForItsWholeDurationWithNoOptions) {
   expect_holds(springlab("run " + GetParam()), GetParam());
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, ShippedScene, ::testing::ValuesIn(scenes()), [](const auto& info) {
-  std::string name = info.param;
-  for (char& c : name)
-    if (c == '-') c = '_';
-  return name;
-});
+INSTANTIATE_TEST_SUITE_P(Scenes, ShippedScene, ::testing::ValuesIn(shipped_scenes()),
+                         [](const auto& info) { return scene_test_name(info.param); });
 
 // Each fixed-step method on the rope with nothing but --method: the sub-steps follow the method.
 TEST(Defaults, EveryExplicitMethodHoldsOnTheRope) {
