@@ -382,9 +382,12 @@ void clocks(app::Session& session, const FrameStats& stats) {
     ImGui::SameLine();
     ImGui::TextColored(kNear, "slow motion x%g", session.speed());
   }
+  // The real-time factor of a running simulation (paused, the last one is stale), on the same
+  // line if it fits there, else on the next.
   const std::string slow = realtime_text(stats.realtime);
-  if (!slow.empty()) {
+  if (!slow.empty() && !session.paused()) {
     ImGui::SameLine();
+    if (ImGui::GetContentRegionAvail().x < ImGui::CalcTextSize(slow.c_str()).x) ImGui::NewLine();
     ImGui::TextColored(kNear, "%s", slow.c_str());
   }
 }
