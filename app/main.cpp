@@ -37,6 +37,7 @@ int main(int argc, char** argv) {
   commands["view"] = add_view_command(app);
   commands["compare"] = add_compare_command(app);
   commands["bench"] = add_bench_command(app);
+  commands["lesson"] = add_lesson_command(app);
 
   try {
     app.parse(argc, argv);

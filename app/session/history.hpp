@@ -32,8 +32,10 @@ struct History {
   Series x, v;        // the watched particle: its coordinate along the watched axis, and velocity
   Series exact_x;     // the exact solution there, where the scene has one (else empty)
   Series ik_error;    // IK scenes: the distance from the chain's end to the target (m)
+  Series step;        // adaptive methods: the internal step their controller chose (s)
+  Series rejected;    // adaptive methods: tries thrown away so far
   void clear() {
-    for (Series* s : {&t, &kinetic, &potential, &total, &dissipated, &x, &v, &exact_x, &ik_error}) s->clear();
+    for (Series* s : {&t, &kinetic, &potential, &total, &dissipated, &x, &v, &exact_x, &ik_error, &step, &rejected}) s->clear();
   }
 };
 

@@ -102,6 +102,7 @@ void Session::iterate_ik(Lane& lane, int iterations) {
 }
 
 void Session::set_solver(IkSolver solver) {
+  ++edits_;
   solver_ = solver;
   if (comparing() || !scene_.ik) return;
   Lane& lane = lanes_.front();
@@ -110,6 +111,7 @@ void Session::set_solver(IkSolver solver) {
 }
 
 void Session::set_compare_solvers(const std::vector<IkSolver>& solvers) {
+  ++edits_;
   if (!scene_.ik) return;
   release();
   lanes_.clear();
@@ -136,6 +138,8 @@ void Session::sample(Lane& lane) {
   h.v.push(sim.state().v(watched_, watched_axis_));
   if (lane.exact) h.exact_x.push(lane.exact->at(t).x(watched_, watched_axis_));
   if (lane.ik) h.ik_error.push(lane.ik->status.error);
+  h.step.push(sim.adaptive_step());
+  h.rejected.push(static_cast<double>(sim.counters().rejected));
   // Trails follow sane states only (a diverged lane's last good one may be far off).
   const bool sane = !sim.diverged() && lane.sane.t == t;
   for (std::size_t k = 0; k < lane.trails.size() && sane; ++k) {
@@ -209,6 +213,7 @@ void Session::step_once() {
 }
 
 void Session::set_compare(const std::vector<Method>& methods) {
+  ++edits_;
   std::vector<Method> list = methods;
   if (list.size() > kMaxLanes) list.resize(kMaxLanes);
   if (list.empty()) list = {lanes_.front().sim.settings().method};
@@ -225,32 +230,38 @@ void Session::model_changed(Lane& lane) {
 }
 
 void Session::set_method(Method method) {
+  ++edits_;
   settings_.method = method;
   if (!comparing()) lanes_.front().sim.set_method(method);
 }
 
 void Session::set_dt(double dt) {
+  ++edits_;
   settings_.dt = dt;
   for (Lane& l : lanes_) l.sim.set_dt(dt);
 }
 
 void Session::set_substeps(int substeps) {
+  ++edits_;
   settings_.substeps = substeps;
   settings_.auto_substeps = false;
   for (Lane& l : lanes_) l.sim.set_substeps(substeps);
 }
 
 void Session::set_auto_substeps() {
+  ++edits_;
   settings_.auto_substeps = true;
   for (Lane& l : lanes_) l.sim.set_auto_substeps(settings_.safety);
 }
 
 void Session::set_tolerance(double tolerance) {
+  ++edits_;
   settings_.step.tolerance = tolerance;
   for (Lane& l : lanes_) l.sim.set_step_settings(settings_.step);
 }
 
 void Session::set_stiffness(double ks) {
+  ++edits_;
   for (Lane& l : lanes_) {
     l.sim.set_stiffness(ks);
     model_changed(l);
@@ -258,6 +269,7 @@ void Session::set_stiffness(double ks) {
 }
 
 void Session::set_damping(double kd) {
+  ++edits_;
   for (Lane& l : lanes_) {
     l.sim.set_damping(kd);
     model_changed(l);
@@ -265,6 +277,7 @@ void Session::set_damping(double kd) {
 }
 
 void Session::set_gravity(const Vec3& g) {
+  ++edits_;
   for (Lane& l : lanes_) {
     l.sim.set_gravity(g);
     model_changed(l);
@@ -272,6 +285,7 @@ void Session::set_gravity(const Vec3& g) {
 }
 
 void Session::set_drag(double drag) {
+  ++edits_;
   for (Lane& l : lanes_) {
     l.sim.set_drag(drag);
     model_changed(l);
@@ -279,17 +293,22 @@ void Session::set_drag(double drag) {
 }
 
 void Session::set_friction(double mu) {
+  ++edits_;
   for (Lane& l : lanes_) l.sim.set_friction(mu);
 }
 
 void Session::set_mass(double mass) {
+  ++edits_;
   for (Lane& l : lanes_) {
     l.sim.set_mass(mass);
     model_changed(l);
   }
 }
 
-void Session::set_speed(double speed) { speed_ = std::clamp(speed, 1.0 / 16.0, 4.0); }
+void Session::set_speed(double speed) {
+  ++edits_;
+  speed_ = std::clamp(speed, 1.0 / 16.0, 4.0);
+}
 
 void Session::reset() {
   release();
@@ -353,6 +372,7 @@ int Session::nearest(const Vec3& point) const {
 }
 
 void Session::grab(int particle) {
+  ++edits_;
   if (particle < 0 || particle >= scene_.model.particle_count()) return;
   grabbed_ = particle;
   drag_target_ = primary().sim.state().x.row(particle).transpose();
@@ -384,6 +404,11 @@ void Session::watch(int particle) {
 void Session::play(Script script) {
   script_ = std::move(script);
   next_event_ = 0;
+  path_.reset();
+}
+
+void Session::stop_script() {
+  script_.reset();
   path_.reset();
 }
 

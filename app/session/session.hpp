@@ -146,8 +146,14 @@ class Session {
   int watched_axis() const { return watched_axis_; }
   void watch(int particle);
 
+  // Changes made through the functions above (parameters, methods, lanes, grabs; not pausing,
+  // stepping or resetting): a lesson compares it around the user's input to see that the class
+  // took over.
+  std::uint64_t edits() const { return edits_; }
+
   // Scripts.
   void play(Script script);
+  void stop_script();  // the script's remaining events are dropped; what is held stays held
   const std::optional<Script>& script() const { return script_; }
   std::size_t script_next() const { return next_event_; }
 
@@ -177,6 +183,7 @@ class Session {
   std::size_t next_event_ = 0;
   std::optional<std::pair<double, std::vector<std::pair<double, Vec3>>>> path_;  // start, waypoints
   bool background_ = false;
+  std::uint64_t edits_ = 0;
   double sane_reach_ = 0.0;  // how far from the scene's start a sane state's particles stay
 };
 

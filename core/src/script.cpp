@@ -4,7 +4,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "json_reader.hpp"
+#include "script_events.hpp"
 
 namespace springlab {
 
@@ -130,6 +130,13 @@ ScriptEvent read_event(ObjectReader& r, const Scene& scene) {
 
 }  // namespace
 
+std::vector<ScriptEvent> read_events(std::vector<ObjectReader> events, const Scene& scene) {
+  std::vector<ScriptEvent> out;
+  for (auto& e : events) out.push_back(read_event(e, scene));
+  std::stable_sort(out.begin(), out.end(), [](const ScriptEvent& a, const ScriptEvent& b) { return a.t < b.t; });
+  return out;
+}
+
 std::string ScriptEvent::describe() const {
   std::string s = "t = " + fmt(t) + " s: ";
   switch (kind) {
@@ -183,9 +190,7 @@ Script parse_script(const std::string& text, const std::string& file, const Scen
   script.description = top.text("description", "");
   auto events = top.objects("events");
   if (events.empty()) top.fail("events", "is required: a non-empty array of events");
-  for (auto& e : events) script.events.push_back(read_event(e, scene));
-  std::stable_sort(script.events.begin(), script.events.end(),
-                   [](const ScriptEvent& a, const ScriptEvent& b) { return a.t < b.t; });
+  script.events = read_events(std::move(events), scene);
   return script;
 }
 

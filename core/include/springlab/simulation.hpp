@@ -105,6 +105,8 @@ class Simulation {
   const SimulationSettings& settings() const { return settings_; }
   double h() const { return settings_.dt / settings_.substeps; }
   const Counters& counters() const { return ws_.counters; }
+  // An adaptive method's internal step, as its controller last chose it (0 before the first).
+  double adaptive_step() const { return ws_.adaptive_step; }
   std::int64_t steps_taken() const { return steps_; }
   const std::optional<Divergence>& divergence() const { return divergence_; }
   // The same with the stability analysis's limit in it (made now if it was not kept).

@@ -1,0 +1,285 @@
+#include "lesson/lesson_checks.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "lesson/lesson_library.hpp"
+#include "springlab/sweep.hpp"
+#include "ui/compare_panel.hpp"
+
+namespace springlab::app {
+
+namespace {
+
+using K = LessonClaim::Kind;
+
+std::string fmt(const char* format, double x) {
+  char s[64];
+  std::snprintf(s, sizeof s, format, x);
+  return s;
+}
+
+// What a lane did, frame by frame (index k: after k frames).
+struct Record {
+  std::vector<double> energy, steps, adaptive_step, rejected, x_error;
+  std::vector<Vec3> momentum;
+  std::vector<double> internal;  // kinetic about the centre of mass + spring
+  std::vector<double> time;      // simulated
+  int diverged_at = -1;          // the frame that first showed it diverged
+  double scale = 1.0;
+};
+
+void record(const Lane& lane, int frame, Record& r) {
+  const Simulation& sim = lane.sim;
+  const Model& m = sim.model();
+  const State& s = sim.state();
+  const Energy e = sim.energy();
+  r.energy.push_back(e.total());
+  r.steps.push_back(static_cast<double>(sim.steps_taken()) * sim.settings().substeps);
+  r.adaptive_step.push_back(sim.adaptive_step());
+  r.rejected.push_back(static_cast<double>(sim.counters().rejected));
+  r.time.push_back(s.t);
+  r.x_error.push_back(lane.history.exact_x.size() > 0 ? std::abs(lane.history.x.back() - lane.history.exact_x.back()) : 0.0);
+  Vec3 p = Vec3::Zero();
+  double mass = 0.0;
+  for (int i = 0; i < s.particle_count(); ++i)
+    if (!m.pinned(i)) {
+      p += m.mass[i] * s.v.row(i).transpose();
+      mass += m.mass[i];
+    }
+  r.momentum.push_back(p);
+  r.internal.push_back(mass > 0.0 ? e.kinetic - 0.5 * p.squaredNorm() / mass + e.spring : 0.0);
+  if (r.diverged_at < 0 && sim.diverged()) r.diverged_at = frame;
+  r.scale = sim.energy_scale();
+}
+
+// The lane a claim names (a method's or a solver's name), or the first.
+const Lane& lane_of(const Session& session, const std::string& name) {
+  for (const Lane& lane : session.lanes()) {
+    const std::string own = lane.ik ? ik_solver_info(lane.ik->solver).name : method_info(lane.sim.settings().method).name;
+    if (own == name) return lane;
+  }
+  return session.lanes().front();
+}
+
+// Slope of ln E against the step count over frames [i0, i1]: ln of the growth a step.
+double growth_per_step(const Record& r, int i0, int i1) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  int n = 0;
+  for (int k = i0; k <= i1; ++k) {
+    if (!(r.energy[k] > 0.0)) continue;
+    const double x = r.steps[k] - r.steps[i0], y = std::log(r.energy[k]);
+    sx += x, sy += y, sxx += x * x, sxy += x * y, ++n;
+  }
+  const double d = n * sxx - sx * sx;
+  return n >= 3 && d > 0 ? (n * sxy - sx * sy) / d : std::numeric_limits<double>::quiet_NaN();
+}
+
+ClaimResult orders(const LessonClaim& claim, const Session& session) {
+  ClaimResult out{claim, true, ""};
+  ui::ComparePanel panel;
+  for (const auto& [name, order] : claim.orders) panel.methods[static_cast<int>(*find_method(name))] = true;
+  SweepSettings settings = panel.settings(session);
+  settings.workers = 1;  // the same result whatever the machine (only the seconds differ)
+  settings.stability = false;
+  const SweepResult result = run_sweep(session.primary().sim.model(), session.scene().state, settings);
+  for (const MethodSummary& m : result.methods) {
+    const std::string name = method_info(m.method).name;
+    const double expected = claim.orders.at(name);
+    out.measured += name + fmt(" %.2f ", m.order);
+    if (!(std::abs(m.order - expected) <= claim.within)) out.passed = false;
+  }
+  if (claim.best.empty()) return out;
+  // Each method's error at the largest cost every method reaches, on its log-log line.
+  double cost = std::numeric_limits<double>::infinity(), floor = 0.0;
+  for (const MethodSummary& m : result.methods) {
+    double most = 0.0, least = std::numeric_limits<double>::infinity();
+    for (const SweepRun& run : result.runs)
+      if (run.method == m.method && !run.diverged) {
+        most = std::max(most, static_cast<double>(run.counters.force_evals));
+        least = std::min(least, static_cast<double>(run.counters.force_evals));
+      }
+    cost = std::min(cost, most);
+    floor = std::max(floor, least);
+  }
+  cost = std::max(cost, floor);
+  std::string best;
+  double best_error = std::numeric_limits<double>::infinity();
+  for (const MethodSummary& m : result.methods) {
+    std::vector<std::pair<double, double>> line;  // (ln cost, ln error)
+    for (const SweepRun& run : result.runs)
+      if (run.method == m.method && !run.diverged && run.error > 0.0)
+        line.emplace_back(std::log(static_cast<double>(run.counters.force_evals)), std::log(run.error));
+    std::sort(line.begin(), line.end());
+    if (line.empty()) continue;
+    const double c = std::clamp(std::log(cost), line.front().first, line.back().first);
+    double error = line.back().second;
+    for (std::size_t k = 1; k < line.size(); ++k)
+      if (c <= line[k].first) {
+        const double s = (c - line[k - 1].first) / std::max(1e-300, line[k].first - line[k - 1].first);
+        error = line[k - 1].second + s * (line[k].second - line[k - 1].second);
+        break;
+      }
+    if (error < best_error) best_error = error, best = method_info(m.method).name;
+  }
+  out.measured += "; least error at " + fmt("%.3g", cost) + " force evaluations: " + best + fmt(" (%.2g m)", std::exp(best_error));
+  if (best != claim.best) out.passed = false;
+  return out;
+}
+
+ClaimResult judge(const LessonClaim& c, const Session& session, const std::vector<Record>& records, double fps,
+                  int frames) {
+  ClaimResult out{c, false, ""};
+  const Lane& lane = lane_of(session, c.lane);
+  const Record& r = records[&lane - session.lanes().data()];
+  const int i0 = std::clamp(static_cast<int>(std::lround(c.from * fps)), 0, frames);
+  int i1 = std::clamp(static_cast<int>(std::lround(c.to.value_or(frames / fps) * fps)), i0, frames);
+  // Energy and motion claims look at the lane while it is sane: up to the frame before it diverged.
+  const int sane_end = r.diverged_at < 0 ? i1 : std::clamp(r.diverged_at - 1, i0, i1);
+  const double scale = std::max(r.scale, 1e-300);
+
+  switch (c.kind) {
+    case K::EnergyGrows:
+    case K::EnergyDecays: {
+      const bool grows = c.kind == K::EnergyGrows;
+      if (c.per_step) {
+        const double g = std::exp(growth_per_step(r, i0, sane_end));
+        out.measured = fmt("x%.6f a step", g) + fmt(" (expected x%.6f)", *c.per_step);
+        out.passed = std::abs(g - *c.per_step) <= c.within * std::abs(*c.per_step - 1);
+      } else {
+        const double change = (r.energy[sane_end] - r.energy[i0]) / scale;
+        out.measured = fmt("changed by %.3g of the energy scale", change);
+        out.passed = grows ? change > 0.05 : change < -0.05;
+      }
+      break;
+    }
+    case K::EnergyBounded: {
+      double worst = 0.0;
+      for (int k = i0; k <= sane_end; ++k) worst = std::max(worst, std::abs(r.energy[k] - r.energy[i0]) / scale);
+      out.measured = fmt("within %.3g of the energy scale", worst);
+      out.passed = worst <= c.within && r.diverged_at < 0;
+      break;
+    }
+    case K::Diverges:
+      out.measured = r.diverged_at < 0 ? "did not diverge"
+                                       : fmt("diverged at t = %.3g s", lane.sim.divergence()->t) +
+                                             fmt(" (seen in frame %.0f)", r.diverged_at);
+      out.passed = r.diverged_at >= 0 && r.diverged_at <= std::lround(*c.by * fps);
+      break;
+    case K::Holds:
+      out.measured = r.diverged_at < 0 ? fmt("held to t = %.3g s", r.time.back())
+                                       : fmt("diverged at t = %.3g s", lane.sim.divergence()->t);
+      out.passed = r.diverged_at < 0;
+      break;
+    case K::FollowsExact: {
+      double worst = 0.0;
+      for (int k = i0; k <= i1; ++k) worst = std::max(worst, r.x_error[k]);
+      out.measured = fmt("max |x - x_exact| = %.3g m", worst);
+      out.passed = worst <= c.within && r.diverged_at < 0;
+      break;
+    }
+    case K::Limit: {
+      const double h = const_cast<Simulation&>(lane.sim).stable_step();
+      out.measured = fmt("stated limit h = %.5g s", h);
+      out.passed = std::abs(h / c.h - 1.0) <= c.within;
+      break;
+    }
+    case K::StepsAdapt: {
+      double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+      for (int k = std::max(i0, 1); k <= sane_end; ++k)
+        if (r.adaptive_step[k] > 0.0) lo = std::min(lo, r.adaptive_step[k]), hi = std::max(hi, r.adaptive_step[k]);
+      const double rejected = r.rejected[sane_end] - r.rejected[i0];
+      out.measured = fmt("%.0f tries rejected", rejected) + fmt(", step from %.3g", lo) + fmt(" to %.3g s", hi);
+      out.passed = rejected > 0 && hi >= c.ratio * lo;
+      break;
+    }
+    case K::MomentumKept: {
+      const double p0 = r.momentum[i0].norm();
+      const double change = (r.momentum[sane_end] - r.momentum[i0]).norm() / std::max(p0, 1e-300);
+      out.measured = fmt("|P| = %.4g kg m/s", p0) + fmt(", changed by %.2g of it", change);
+      out.passed = p0 > 0.0 && change <= c.within;
+      break;
+    }
+    case K::DragSlows: {
+      const Model& m = lane.sim.model();
+      double mass = 0.0;
+      int n = 0;
+      for (int i = 0; i < m.particle_count(); ++i)
+        if (!m.pinned(i)) mass += m.mass[i], ++n;
+      const double expected = std::exp(-m.drag * n * (r.time[sane_end] - r.time[i0]) / mass);
+      const double measured = r.momentum[sane_end].norm() / std::max(r.momentum[i0].norm(), 1e-300);
+      out.measured = fmt("speed ratio %.4f", measured) + fmt(" (exp(-k_drag n t / M) = %.4f)", expected);
+      out.passed = std::abs(measured / expected - 1.0) <= c.within;
+      break;
+    }
+    case K::InternalDecays: {
+      const double ratio = r.internal[sane_end] / std::max(r.internal[i0], 1e-300);
+      out.measured = fmt("internal energy %.4g J", r.internal[i0]) + fmt(" -> %.3g J", r.internal[sane_end]) +
+                     fmt(" (%.3g of it)", ratio);
+      out.passed = r.internal[i0] > 0.0 && ratio <= c.below;
+      break;
+    }
+    case K::OutOfReach: {
+      const IkLane& ik = *lane.ik;
+      const Eigen::Vector2d base = ik.chain.base, to = ik.target - base;
+      const double reach = ik.chain.reach();
+      const Eigen::Vector2d along = base + to.normalized() * reach;
+      const double off = (ik.chain.effector() - along).norm();
+      out.measured = fmt("target %.3g m from the base", to.norm()) + fmt(", reach %.3g m", reach) +
+                     fmt(", end %.3g m off the straight line", off);
+      out.passed = !ik.status.reachable && to.norm() > reach && off <= 0.01 * reach;
+      break;
+    }
+    case K::PosesDiffer: {
+      double closest = std::numeric_limits<double>::infinity();
+      bool converged = true;
+      const auto lanes = session.lanes();
+      for (std::size_t a = 0; a < lanes.size(); ++a) {
+        converged = converged && lanes[a].ik->status.converged;
+        for (std::size_t b = a + 1; b < lanes.size(); ++b) {
+          const auto pa = lanes[a].ik->chain.positions(), pb = lanes[b].ik->chain.positions();
+          double apart = 0.0;
+          for (std::size_t j = 0; j < pa.size(); ++j) apart = std::max(apart, (pa[j] - pb[j]).norm());
+          closest = std::min(closest, apart);
+        }
+      }
+      out.measured = std::string(converged ? "all reached the target" : "not all reached the target") +
+                     fmt(", the closest two poses %.3g m apart", closest);
+      out.passed = converged && closest >= c.min;
+      break;
+    }
+    case K::Orders: return orders(c, session);
+    case K::Particles: break;  // measured while playing (check_step)
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<ClaimResult> check_step(const LessonStep& step, double fps) {
+  std::unique_ptr<Session> session = step_session(step, fps, false);
+  const int frames = static_cast<int>(std::lround(step.duration * fps));
+  std::vector<Record> records(session->lanes().size());
+  std::vector<ClaimResult> results(step.claims.size());
+  const auto take = [&](int frame) {
+    for (std::size_t k = 0; k < records.size(); ++k) record(session->lanes()[k], frame, records[k]);
+    for (std::size_t k = 0; k < step.claims.size(); ++k) {
+      const LessonClaim& c = step.claims[k];
+      if (c.kind != K::Particles || std::lround(*c.at * fps) != frame) continue;
+      const int n = session->primary().sim.emission().alive_count();
+      results[k] = {c, std::abs(n / c.about - 1.0) <= c.within, std::to_string(n) + " alive"};
+    }
+  };
+  take(0);
+  for (int k = 1; k <= frames; ++k) {
+    session->advance_frame();
+    take(k);
+  }
+  for (std::size_t k = 0; k < step.claims.size(); ++k)
+    if (step.claims[k].kind != K::Particles) results[k] = judge(step.claims[k], *session, records, fps, frames);
+  return results;
+}
+
+}  // namespace springlab::app

@@ -1,0 +1,72 @@
+#include "lesson/lesson_library.hpp"
+
+#include <algorithm>
+#include <filesystem>
+
+#include "springlab/error.hpp"
+#include "util/data_dir.hpp"
+
+namespace springlab::app {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> shipped_lesson_files() {
+  std::vector<std::string> files;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(data_dir() / "assets" / "lessons", ec))
+    if (entry.path().extension() == ".json") files.push_back(entry.path().string());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+Lesson open_lesson(const std::string& name) {
+  const LessonSceneOpener open = [](const std::string& scene, const std::vector<std::string>& sets) {
+    return load_scene(resolve_scene(scene), sets);
+  };
+  std::error_code ec;
+  if (fs::is_regular_file(name, ec)) return load_lesson(name, open);
+  const std::vector<std::string> files = shipped_lesson_files();
+  std::vector<std::string> names;
+  for (std::size_t k = 0; k < files.size(); ++k) {
+    names.push_back(lesson_name(files[k]));
+    if (names.back() == name || std::to_string(k + 1) == name) return load_lesson(files[k], open);
+  }
+  std::string list;
+  for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+  const std::string near = closest_match(name, names.data(), names.size());
+  throw InputError("lesson '" + name + "': no such file, and no shipped lesson of that name" +
+                   (near.empty() ? "" : "; did you mean '" + near + "'?") + " (shipped: " + list + ")");
+}
+
+StepSetup setup_step(const LessonStep& step) {
+  SimOptions o;
+  if (step.method) o.method = method_info(*step.method).name;
+  o.dt = step.dt;
+  if (step.substeps) o.substeps = *step.substeps == 0 ? "auto" : std::to_string(*step.substeps);
+  o.ks = step.ks;
+  o.kd = step.kd;
+  o.sets = step.sets;
+  StepSetup setup{prepare(step.scene, o), {}, {}};
+  for (const std::string& lane : step.compare) {
+    if (setup.prepared.scene.ik) setup.solvers.push_back(*find_ik_solver(lane));
+    else setup.compare.push_back(*find_method(lane));
+  }
+  return setup;
+}
+
+void begin_step(Session& session, const LessonStep& step, const StepSetup& setup) {
+  if (!setup.compare.empty()) session.set_compare(setup.compare);
+  if (!setup.solvers.empty()) session.set_compare_solvers(setup.solvers);
+  session.set_speed(step.speed);
+  if (!step.script.events.empty()) session.play(step.script);
+}
+
+std::unique_ptr<Session> step_session(const LessonStep& step, double fps, bool background) {
+  StepSetup setup = setup_step(step);
+  auto session = std::make_unique<Session>(setup.prepared.scene, setup.prepared.settings, fps);
+  session->set_background_analysis(background);
+  begin_step(*session, step, setup);
+  return session;
+}
+
+}  // namespace springlab::app
