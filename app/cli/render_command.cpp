@@ -1,6 +1,8 @@
-// springlab render SCENE --out DIR | --video FILE.mp4: headless frames or video (no display, no
-// GPU needed). Frame k shows the scene at presentation time k / fps (session.hpp); the output
+// springlab render SCENE | --lesson NAME --out DIR | --video FILE.mp4: headless frames or video
+// (no display, no GPU needed). Frame k shows the scene at presentation time k / fps (session.hpp);
+// a lesson's steps follow one another, each for its duration, under the lesson's band. The output
 // appears only when complete.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -15,6 +17,9 @@
 #include "draw/scene_frame.hpp"
 #include "gfx/offscreen.hpp"
 #include "io/frame_writer.hpp"
+#include "lesson/lesson_library.hpp"
+#include "ui/compare_panel.hpp"
+#include "ui/lesson_band.hpp"
 #include "springlab/error.hpp"
 #include "springlab/script.hpp"
 #include "ui/overlay.hpp"
@@ -29,7 +34,7 @@ namespace {
 struct RenderOptions {
   std::string scene;
   SimOptions sim;
-  std::optional<std::string> out, video, script, size = "1280x720", compare, select;
+  std::optional<std::string> out, video, script, size = "1280x720", compare, select, lesson;
   std::optional<std::int64_t> frames;
   std::optional<double> duration;
   double fps = 60.0;
@@ -85,9 +90,71 @@ struct MadeFolder {
   }
 };
 
+// One continuous piece of a render: a session with what is drawn over it. A scene is one shot;
+// a lesson is one a step, each from its step's start, with the lesson's band across the top.
+struct Shot {
+  std::unique_ptr<Session> session;
+  ui::UiState ui;
+  std::unique_ptr<ui::ComparePanel> accuracy;  // a lesson step that shows the accuracy chart
+  std::optional<ui::LessonBand> band;
+  std::int64_t frames = 0;
+};
+
+// The UI state a shot starts with.
+ui::UiState shot_ui(const Session& session, const std::string& scene_name, float scale) {
+  ui::UiState ui;
+  ui.scale = scale;
+  ui.view = draw::ViewOptions::for_scene(session.scene());
+  ui.ranges = ui::Ranges::of(session);
+  ui.scene_name = scene_name;
+  ui.scenes = shipped_scenes();
+  return ui;
+}
+
+// Step k of a lesson as a shot: its session, its chart, region and mode, its band; the accuracy
+// sweep, if it shows one, run to the end first (the frames do not depend on how fast it runs).
+Shot lesson_shot(const Lesson& lesson, int k, int number, int count, double fps, float scale) {
+  const LessonStep& step = lesson.steps[k];
+  Shot shot;
+  shot.session = step_session(step, fps, false);
+  shot.ui = shot_ui(*shot.session, shot.session->scene().name, scale);
+  shot.ui.lesson = lesson.name;
+  shot.ui.band = ui::lesson_band_height(scale);
+  shot.ui.lesson_chart = step.chart;
+  shot.ui.region = step.region;
+  shot.ui.view.mode = step.mode;
+  if (step.accuracy) {
+    shot.accuracy = std::make_unique<ui::ComparePanel>();
+    shot.accuracy->open = true;
+    for (const LessonClaim& c : step.claims)
+      for (const auto& [name, order] : c.orders) shot.accuracy->methods[static_cast<int>(*find_method(name))] = true;
+    shot.accuracy->start(*shot.session);
+    shot.accuracy->sweep.wait();
+  }
+  ui::LessonBand band;
+  band.number = number;
+  band.count = count;
+  band.title = lesson.title;
+  band.step = k;
+  for (const LessonStep& s : lesson.steps) band.durations.push_back(s.duration);
+  band.step_title = step.title;
+  band.caption = step.caption;
+  band.prompt = step.prompt;
+  band.interactive = false;
+  shot.band = band;
+  shot.frames = std::max<std::int64_t>(1, std::llround(step.duration * fps));
+  return shot;
+}
+
 int render(const RenderOptions& o) {
   if (o.out.has_value() == o.video.has_value())
     throw InputError("render: give exactly one of --out DIR (PNG frames) and --video FILE.mp4");
+  if (o.lesson.has_value() == !o.scene.empty())
+    throw InputError("render: give a SCENE or --lesson NAME (springlab lesson list), and not both");
+  if (o.lesson && (o.script || o.compare || o.sim.method || o.sim.dt || o.sim.substeps || o.sim.ks || o.sim.kd ||
+                   !o.sim.sets.empty()))
+    throw InputError("render --lesson: the lesson sets each step's scene, methods, parameters and script; "
+                     "leave out --script, --compare, --method, --dt, --substeps, --ks, --kd and --set");
   int width = 0, height = 0;
   parse_size(*o.size, width, height);
   check_option("--fps", o.fps, 1.0, 240.0, false);
@@ -106,22 +173,56 @@ int render(const RenderOptions& o) {
       selected.insert(k);
     }
   }
+  const float scale = static_cast<float>(o.ui_scale ? *o.ui_scale : std::max(0.6, height / 720.0));
 
-  SimOptions sim_options = o.sim;
-  Prepared p = prepare(o.scene, sim_options);
-  std::vector<Method> compare;
-  std::vector<IkSolver> compare_solvers;
-  if (o.compare) {
-    if (p.scene.ik) compare_solvers = parse_solvers(*o.compare);
-    else compare = parse_methods(*o.compare);
+  // What to render: one scene, or a lesson's steps one after another.
+  std::vector<Shot> shots;
+  std::optional<Lesson> lesson;
+  int lesson_number = 0, lesson_count = 0;
+  std::string name;
+  std::int64_t frames = 0;
+  if (o.lesson) {
+    lesson = open_lesson(*o.lesson);
+    const std::vector<std::string> files = shipped_lesson_files();
+    lesson_count = static_cast<int>(files.size());
+    const auto at = std::find(files.begin(), files.end(), lesson->file);
+    if (at != files.end()) lesson_number = static_cast<int>(at - files.begin()) + 1;
+    name = "lesson " + lesson->name;
+    shots.resize(lesson->steps.size());  // made as each step starts
+    for (std::size_t k = 0; k < shots.size(); ++k) {
+      shots[k].frames = std::max<std::int64_t>(1, std::llround(lesson->steps[k].duration * o.fps));
+      frames += shots[k].frames;
+    }
+    if (o.duration) frames = std::min(frames, std::max<std::int64_t>(1, std::llround(*o.duration * o.fps)));
+    if (o.frames) frames = std::min(frames, *o.frames);
+  } else {
+    Prepared p = prepare(o.scene, o.sim);
+    std::vector<Method> compare;
+    std::vector<IkSolver> compare_solvers;
+    if (o.compare) {
+      if (p.scene.ik) compare_solvers = parse_solvers(*o.compare);
+      else compare = parse_methods(*o.compare);
+    }
+    std::optional<Script> script;
+    if (o.script) script = load_script(*o.script, p.scene);
+    const double duration = o.duration ? *o.duration : script ? std::max(script->end_time() + 1.0, 1.0) : p.scene.duration;
+    frames = o.frames ? *o.frames : std::max<std::int64_t>(1, std::llround(duration * o.fps));
+    name = p.scene.name;
+    Shot shot;
+    shot.session = std::make_unique<Session>(std::move(p.scene), p.settings, o.fps);
+    if (!compare.empty()) shot.session->set_compare(compare);
+    if (!compare_solvers.empty()) shot.session->set_compare_solvers(compare_solvers);
+    if (script) shot.session->play(*script);
+    for (Lane& lane : shot.session->lanes()) warn_if_unstable(lane.sim, name);
+    shot.ui = shot_ui(*shot.session, name, scale);
+    shot.frames = frames;
+    shots.push_back(std::move(shot));
   }
-  std::optional<Script> script;
-  if (o.script) script = load_script(*o.script, p.scene);
-  const double duration = o.duration ? *o.duration : script ? std::max(script->end_time() + 1.0, 1.0) : p.scene.duration;
-  const std::int64_t frames = o.frames ? *o.frames : std::max<std::int64_t>(1, std::llround(duration * o.fps));
   if (!selected.empty() && *selected.rbegin() >= frames)
     throw InputError("--select: frame " + std::to_string(*selected.rbegin()) + " is past the last frame (" +
                      std::to_string(frames - 1) + ")");
+  // A lesson is drawn with the panels (its chart is the point of many steps) under its band.
+  const bool panels = o.ui || lesson;
 
   // Outputs first: a folder that cannot be written, or no ffmpeg, fails before any work.
   std::unique_ptr<FrameWriter> writer;
@@ -137,25 +238,12 @@ int render(const RenderOptions& o) {
     writer = mp4_video(*o.video, width, height, o.fps);
   }
 
-  const std::string scene_name = p.scene.name;
-  Session session(std::move(p.scene), p.settings, o.fps);
-  if (!compare.empty()) session.set_compare(compare);
-  if (!compare_solvers.empty()) session.set_compare_solvers(compare_solvers);
-  if (script) session.play(*script);
-  for (Lane& lane : session.lanes()) warn_if_unstable(lane.sim, scene_name);
-  ui::UiState ui;
-  ui.scale = static_cast<float>(o.ui_scale ? *o.ui_scale : std::max(0.6, height / 720.0));
-  ui.view = draw::ViewOptions::for_scene(session.scene());
-  ui.ranges = ui::Ranges::of(session);
-  ui.scene_name = scene_name;
-  ui.scenes = shipped_scenes();
-
   // Dear ImGui draws the panels (--ui) and, always, the caption and the compare legend.
-  gfx::Offscreen offscreen(o.software, width, height, ui.scale, o.fps);
+  gfx::Offscreen offscreen(o.software, width, height, scale, o.fps);
   // Mesa's software rasteriser draws with every core, and ffmpeg encodes beside it: the
   // simulation takes one core unless told (threads waiting for work would only take turns away).
   if (!o.sim.threads && gfx::software_renderer(offscreen.renderer_name())) set_thread_count(1);
-  Progress progress("render " + scene_name, frames);
+  Progress progress("render " + name, frames);
   ui::FrameStats stats;
   const auto start = std::chrono::steady_clock::now();
   std::int64_t written = 0;
@@ -174,8 +262,19 @@ int render(const RenderOptions& o) {
     progress.update(*drawn + 1);
     drawn.reset();
   };
+  std::size_t current = 0;
+  std::int64_t shot_start = 0;  // the frame the current shot starts at
   for (std::int64_t k = 0; k < frames; ++k) {
-    if (k > 0) {
+    if (k - shot_start >= shots[current].frames) {  // the next step of a lesson
+      shot_start += shots[current].frames;
+      shots[current].session.reset();
+      ++current;
+    }
+    Shot& shot = shots[current];
+    if (!shot.session) {
+      shot = lesson_shot(*lesson, static_cast<int>(current), lesson_number, lesson_count, o.fps, scale);
+    } else if (k > shot_start) {
+      Session& session = *shot.session;
       const std::int64_t before = session.primary().sim.counters().force_evals;
       const auto t0 = std::chrono::steady_clock::now();
       session.advance_frame();
@@ -184,15 +283,24 @@ int render(const RenderOptions& o) {
     }
     if (drawn) collect();
     if (!selected.empty() && !selected.count(k)) continue;
+    Session& session = *shot.session;
     const auto t0 = std::chrono::steady_clock::now();
-    const draw::Viewport viewport = o.ui ? ui::scene_viewport(ui, width, height) : draw::Viewport{0, 0, width, height};
-    const draw::Frame frame = draw::build_frame(session, ui.view, viewport);
+    const draw::Viewport viewport =
+        panels || shot.band ? ui::scene_viewport(shot.ui, width, height) : draw::Viewport{0, 0, width, height};
+    const draw::Frame frame = draw::build_frame(session, shot.ui.view, viewport);
     offscreen.draw(frame, [&] {
-      if (o.ui) ui::draw_panels(session, ui, stats, width, height);
+      if (panels) ui::draw_panels(session, shot.ui, stats, width, height);
+      if (shot.accuracy)
+        ui::draw_compare_panel(*shot.accuracy, session, scale, 380.0f * scale, shot.ui.band + 20.0f * scale,
+                               width - 400.0f * scale, height * 0.55f);
+      if (shot.band) {
+        shot.band->elapsed = session.presentation_time();
+        ui::draw_lesson_band(*shot.band, static_cast<float>(width), scale);
+      }
       ui::OverlayOptions overlay;
-      overlay.scale = ui.scale;
-      overlay.caption = !o.ui;
-      ui::draw_overlay(session, frame.camera, viewport, scene_name, overlay);
+      overlay.scale = scale;
+      overlay.caption = !panels;
+      ui::draw_overlay(session, frame.camera, viewport, shot.ui.scene_name, overlay);
     });
     draw_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     drawn = k;
@@ -201,17 +309,20 @@ int render(const RenderOptions& o) {
   writer->finish();
   progress.finish();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const Session& last = *shots[current].session;
   std::printf("rendered %lld frame%s of %s (%dx%d, %g frames/s, t = 0 to %.4g s) in %.3g s: %.3g frames/s, on %s\n",
-              static_cast<long long>(written), written == 1 ? "" : "s", scene_name.c_str(), width, height, o.fps,
-              session.primary().sim.state().t, wall, wall > 0 ? written / wall : 0.0, offscreen.renderer_name().c_str());
+              static_cast<long long>(written), written == 1 ? "" : "s", name.c_str(), width, height, o.fps,
+              lesson ? static_cast<double>(frames) / o.fps : last.primary().sim.state().t, wall,
+              wall > 0 ? written / wall : 0.0, offscreen.renderer_name().c_str());
   std::printf("output     %s\n", (o.out ? *o.out : *o.video).c_str());
-  for (const Lane& lane : session.lanes())
+  if (lesson) return kOk;  // (its steps diverge where they mean to)
+  for (const Lane& lane : last.lanes())
     std::printf("substeps   %s: %d (%s)\n", method_info(lane.sim.settings().method).name, lane.sim.settings().substeps,
                 !lane.sim.auto_substeps() ? "fixed" : lane.sim.substeps_capped() ? "auto, capped" : "auto");
-  for (Lane& lane : session.lanes())
+  for (Lane& lane : shots[current].session->lanes())
     if (lane.sim.diverged()) {
       std::fflush(stdout);
-      std::fprintf(stderr, "springlab: %s: %s\n", scene_name.c_str(), lane.sim.explain_divergence()->message().c_str());
+      std::fprintf(stderr, "springlab: %s: %s\n", name.c_str(), lane.sim.explain_divergence()->message().c_str());
       return kDiverged;
     }
   return kOk;
@@ -222,7 +333,8 @@ int render(const RenderOptions& o) {
 Command add_render_command(CLI::App& app) {
   auto o = std::make_shared<RenderOptions>();
   CLI::App* c = app.add_subcommand("render", "headless frames (PNG) or video (mp4), no display needed");
-  c->add_option("scene", o->scene, "scene name or JSON file")->required();
+  c->add_option("scene", o->scene, "scene name or JSON file (or --lesson)");
+  c->add_option("--lesson", o->lesson, "record a lesson, its captions burned in (springlab lesson list)");
   add_sim_options(*c, o->sim, false);
   c->add_option("--out", o->out, "write frame_00000.png, ... into this folder");
   c->add_option("--video", o->video, "write an mp4 (H.264) through ffmpeg");

@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "draw/scene_frame.hpp"
+#include "lesson/lesson_library.hpp"
+#include "springlab/error.hpp"
 #include "ui/actions.hpp"
 #include "ui/overlay.hpp"
 #include "ui/theme.hpp"
@@ -47,6 +49,14 @@ InteractiveApp::InteractiveApp(Prepared first, const AppSettings& settings, std:
                                float scale, int samples, bool background)
     : samples_(samples), background_(background) {
   ui_.scale = scale;
+  for (const std::string& file : shipped_lesson_files()) {
+    try {
+      Lesson lesson = open_lesson(file);
+      ui_.lessons.emplace_back(lesson.name, lesson.title);
+    } catch (const std::exception&) {
+      // (a shipped lesson that does not load is left out of the menu; the tests load them all)
+    }
+  }
   const std::string name = first.scene.name;
   show(std::move(first), name);
   if (!settings.compare.empty()) session_->set_compare(settings.compare);
@@ -55,6 +65,104 @@ InteractiveApp::InteractiveApp(Prepared first, const AppSettings& settings, std:
     ui_.accuracy = true;
     accuracy_.start(*session_);
   }
+  if (settings.lesson) {
+    Lesson lesson = open_lesson(*settings.lesson);
+    if (settings.lesson_step < 1 || settings.lesson_step > static_cast<int>(lesson.steps.size()))
+      throw InputError("--step: lesson '" + lesson.name + "' has steps 1 to " + std::to_string(lesson.steps.size()) +
+                       ", got " + std::to_string(settings.lesson_step));
+    start_lesson(std::move(lesson), settings.lesson_step - 1);
+  }
+}
+
+// --- Lessons -------------------------------------------------------------------------------
+
+void InteractiveApp::start_lesson(Lesson lesson, int step) {
+  const int steps = static_cast<int>(lesson.steps.size());
+  lesson_ = std::move(lesson);
+  ui_.lesson = lesson_->name;
+  // Its place in the course, if it is a shipped lesson (a file of one's own has none).
+  const std::vector<std::string> files = shipped_lesson_files();
+  const auto at = std::find(files.begin(), files.end(), lesson_->file);
+  lesson_number_ = at == files.end() ? 0 : static_cast<int>(at - files.begin()) + 1;
+  lesson_step(std::clamp(step, 0, steps - 1));
+}
+
+void InteractiveApp::lesson_step(int k) {
+  if (!lesson_) return;
+  const LessonStep& step = lesson_->steps[k];
+  StepSetup setup;
+  try {
+    setup = setup_step(step);
+  } catch (const std::exception& e) {
+    ui_.message = e.what();  // (a lesson file changed on disc since it was opened)
+    return;
+  }
+  accuracy_.sweep.cancel();
+  show(std::move(setup.prepared), step.scene);
+  begin_step(*session_, step, setup);
+  drag_.reset();
+  step_ = k;
+  interrupted_ = false;
+  ui_.lesson = lesson_->name;
+  ui_.band = ui::lesson_band_height(ui_.scale);
+  ui_.lesson_chart = step.chart;
+  ui_.region = step.region;
+  ui_.view.mode = step.mode;
+  ui_.accuracy = accuracy_.open = step.accuracy;
+  if (step.accuracy) {
+    // The methods whose orders the step claims (none named: every method).
+    accuracy_.methods = {};
+    for (const LessonClaim& c : step.claims)
+      for (const auto& [name, order] : c.orders) accuracy_.methods[static_cast<int>(*find_method(name))] = true;
+    accuracy_.chart = 0;  // work-precision
+    accuracy_.start(*session_);
+  }
+}
+
+void InteractiveApp::next_step() {
+  if (!lesson_) return;
+  if (step_ + 1 < static_cast<int>(lesson_->steps.size())) return lesson_step(step_ + 1);
+  // After the last step: the next lesson of the course, if there is one.
+  const std::vector<std::string> files = shipped_lesson_files();
+  if (lesson_number_ > 0 && lesson_number_ < static_cast<int>(files.size())) {
+    try {
+      return start_lesson(open_lesson(files[lesson_number_]));
+    } catch (const std::exception& e) {
+      ui_.message = e.what();
+      return;
+    }
+  }
+  end_lesson();
+}
+
+void InteractiveApp::previous_step() {
+  if (lesson_ && step_ > 0) lesson_step(step_ - 1);
+}
+
+void InteractiveApp::end_lesson() {
+  lesson_.reset();
+  interrupted_ = false;
+  ui_.lesson.clear();
+  ui_.band = 0.0f;
+  ui_.lesson_chart.reset();
+  session_->stop_script();
+}
+
+ui::LessonBand InteractiveApp::band() const {
+  ui::LessonBand b;
+  b.number = lesson_number_;
+  b.count = static_cast<int>(ui_.lessons.size());
+  b.last_lesson = lesson_number_ == 0 || lesson_number_ >= b.count;
+  b.title = lesson_->title;
+  b.step = step_;
+  for (const LessonStep& s : lesson_->steps) b.durations.push_back(s.duration);
+  const LessonStep& step = lesson_->steps[step_];
+  b.step_title = step.title;
+  b.caption = step.caption;
+  b.prompt = step.prompt;
+  b.elapsed = session_->presentation_time();
+  b.interrupted = interrupted_;
+  return b;
 }
 
 void InteractiveApp::show(Prepared p, const std::string& name) {
@@ -74,6 +182,10 @@ void InteractiveApp::show(Prepared p, const std::string& name) {
   ui.compare_choice = compare;
   ui.presentation = presentation;
   ui.platform_controls = std::move(ui_.platform_controls);
+  ui.lessons = std::move(ui_.lessons);
+  ui.lesson = ui_.lesson;
+  ui.band = ui_.band;
+  ui.lesson_chart = ui_.lesson_chart;
   for (Method m : session_->scene().methods)
     if (session_->scene().methods.size() >= 2) ui.compare_choice[static_cast<int>(m)] = true;
   ui_ = std::move(ui);
@@ -139,6 +251,12 @@ void InteractiveApp::keyboard() {
     if (ImGui::IsKeyPressed(GLFW_KEY_1 + k, false))
       ui::perform(static_cast<ui::Action>(static_cast<int>(ui::Action::Method1) + k), *session_, ui_);
   if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) quit_ = true;
+  if (lesson_) {
+    for (int key : {GLFW_KEY_RIGHT, GLFW_KEY_PAGE_DOWN, GLFW_KEY_N})
+      if (ImGui::IsKeyPressed(key, false)) lesson_move_ = [this] { next_step(); };
+    for (int key : {GLFW_KEY_LEFT, GLFW_KEY_PAGE_UP, GLFW_KEY_B})
+      if (ImGui::IsKeyPressed(key, false)) lesson_move_ = [this] { previous_step(); };
+  }
 }
 
 void InteractiveApp::simulate() {
@@ -176,15 +294,35 @@ void InteractiveApp::frame(const FrameSize& size) {
   viewport = {static_cast<int>(viewport.x * to_fb), static_cast<int>(viewport.y * to_fb),
               static_cast<int>(viewport.width * to_fb), static_cast<int>(viewport.height * to_fb)};
   const draw::ViewCamera camera = draw::view_camera(ui_.view.camera, viewport.width, viewport.height);
+  // What the class changes (a drag, a slider, a key) interrupts a lesson: compared around the input.
+  const std::uint64_t edits = session_->edits();
   mouse(camera, viewport, to_fb);
   keyboard();
 
   Session& session = *session_;
   const ui::Requests requests = ui::draw_panels(session, ui_, stats_, win_w, win_h);
   const float scale = ui_.scale;
+  if (lesson_) {
+    const ui::BandRequests asked = ui::draw_lesson_band(band(), static_cast<float>(win_w), scale);
+    if (asked.back) lesson_move_ = [this] { previous_step(); };
+    if (asked.next) lesson_move_ = [this] { next_step(); };
+    if (asked.resume) lesson_move_ = [this] { resume_lesson(); };
+    if (asked.end) lesson_move_ = [this] { end_lesson(); };
+  }
+  if (requests.lesson) {
+    const std::string name = *requests.lesson;
+    lesson_move_ = [this, name] {
+      if (name.empty()) return end_lesson();
+      try {
+        start_lesson(open_lesson(name));
+      } catch (const std::exception& e) {
+        ui_.message = e.what();
+      }
+    };
+  }
   accuracy_.open = ui_.accuracy;
   accuracy_.sweep.advance();  // (without threads: the sweep's next pieces; else nothing)
-  ui::draw_compare_panel(accuracy_, session, scale, 380.0f * scale, 20.0f * scale, win_w - 400.0f * scale,
+  ui::draw_compare_panel(accuracy_, session, scale, 380.0f * scale, ui_.band + 20.0f * scale, win_w - 400.0f * scale,
                          win_h * 0.62f);
   ui_.accuracy = accuracy_.open;
   ui_.view.line_scale = ui_.presentation ? 1.6f : 1.0f;
@@ -199,6 +337,10 @@ void InteractiveApp::frame(const FrameSize& size) {
   if (requests.quit) quit_ = true;
   std::optional<std::string> load = requests.load;
   if (pending_) load = std::exchange(pending_, std::nullopt);
+  if (lesson_ && !interrupted_ && (session.edits() != edits || load)) {
+    interrupted_ = true;
+    session.stop_script();
+  }
 
   simulate();
 
@@ -213,8 +355,10 @@ void InteractiveApp::frame(const FrameSize& size) {
   target_.blit_to_window(size.fb_width, size.fb_height);
   stats_.draw_ms = std::chrono::duration<double, std::milli>(Clock::now() - draw_start).count();
 
-  // A new scene, when asked: the current one keeps running if it does not load.
+  // A new scene, when asked: the current one keeps running if it does not load. A move in a
+  // lesson, when asked.
   if (load) open(*load);
+  if (lesson_move_) std::exchange(lesson_move_, std::nullopt).value()();
 }
 
 }  // namespace springlab::app

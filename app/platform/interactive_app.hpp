@@ -19,9 +19,11 @@
 #include "gfx/renderer.hpp"
 #include "platform/app_settings.hpp"
 #include "session/session.hpp"
+#include "springlab/lesson.hpp"
 #include "springlab/script.hpp"
 #include "ui/compare_panel.hpp"
 #include "ui/interaction.hpp"
+#include "ui/lesson_band.hpp"
 #include "ui/panels.hpp"
 
 namespace springlab::app {
@@ -81,11 +83,27 @@ class InteractiveApp {
   std::optional<std::string> take_opened() { return std::exchange(opened_, std::nullopt); }
   const ui::FrameStats& stats() const { return stats_; }
 
+  // Lessons. start_lesson opens a lesson at a step (from 0); lesson_step moves to another of its
+  // steps (a new session from the step's start, its script playing); a drag or a change made by
+  // the class interrupts the lesson (its script stops) until resume_lesson replays the step.
+  // Keys: right / page down / N the next step, left / page up / B the one before (presenters'
+  // clickers send page up and down).
+  void start_lesson(Lesson lesson, int step = 0);
+  void lesson_step(int step);
+  void next_step();
+  void previous_step();
+  void resume_lesson() { lesson_step(step_); }
+  void end_lesson();
+  const std::optional<Lesson>& lesson() const { return lesson_; }
+  int step() const { return step_; }
+  bool interrupted() const { return interrupted_; }
+
  private:
   void show(Prepared prepared, const std::string& name);
   void mouse(const draw::ViewCamera& camera, const draw::Viewport& viewport, double to_fb);
   void keyboard();
   void simulate();
+  ui::LessonBand band() const;
 
   std::unique_ptr<Session> session_;
   ui::UiState ui_;
@@ -98,6 +116,10 @@ class InteractiveApp {
   ui::FrameStats stats_;
   std::deque<std::pair<Clock::time_point, double>> pace_;  // (wall, simulated target) a frame
   std::optional<std::string> pending_, opened_;
+  std::optional<Lesson> lesson_;
+  int step_ = 0, lesson_number_ = 0;  // lesson_number_: its place in the course (0: not shipped)
+  bool interrupted_ = false;
+  std::optional<std::function<void()>> lesson_move_;  // a move between steps, made after the frame
   bool quit_ = false;
 };
 

@@ -22,6 +22,11 @@ void BackgroundSweep::cancel() {
   }
 }
 
+void BackgroundSweep::wait() {
+  join();
+  while (steps_) advance(1e9);
+}
+
 void BackgroundSweep::record(const SweepRun& run, int done, int total) {
   std::lock_guard lock(mutex_);
   if (run.h > 0) partial_.runs.push_back(run);

@@ -24,6 +24,8 @@ class BackgroundSweep {
   // Starts a sweep of (model, state); a sweep already running is cancelled first.
   void start(const Model& model, const State& state, const SweepSettings& settings);
   void cancel();
+  // Waits for the sweep to finish (without threads: runs the rest of it now).
+  void wait();
   bool running() const { return running_; }
   // Without threads: the sweep's next pieces, for about `budget_ms` (at least one). Called every
   // frame; with threads it does nothing.

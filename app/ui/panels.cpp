@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "chart/imgui_chart.hpp"
 #include "chart/stability_region.hpp"
@@ -167,15 +168,10 @@ void ik_chart(app::Session& session, float width, float height) {
   chart::chart_widget("##ik", error, ImVec2(width, height));
 }
 
-void charts(app::Session& session, float width, float height, bool presentation) {
-  if (session.scene().ik) return ik_chart(session, width, height);
+chart::Chart energy_chart(const app::Session& session) {
   const bool compare = session.comparing();
-  const int count = presentation ? 1 : 3;
-  const float w = (width - (count - 1) * ImGui::GetStyle().ItemSpacing.x) / count;
-  const float line = presentation ? 3.0f : 2.0f;
   const draw::Rgba white{0.95f, 0.95f, 0.95f, 1}, ke{1.0f, 0.55f, 0.25f, 1}, pe{0.45f, 0.7f, 1.0f, 1},
       lost{0.7f, 0.7f, 0.7f, 1};
-
   chart::Chart energy;
   energy.title = "Energy";
   energy.x.label = "t (s)";
@@ -198,37 +194,96 @@ void charts(app::Session& session, float width, float height, bool presentation)
     const std::size_t from = energy.series.size() - (compare ? 2 : 4);
     for (std::size_t k = from; k < energy.series.size(); ++k) mark_diverged(energy.series[k], lane, "J");
   }
-  for (chart::Series& s : energy.series) s.width = line;
-  chart::chart_widget("##energy", energy, ImVec2(w, height));
-  if (presentation) return;
-  ImGui::SameLine();
+  return energy;
+}
 
-  const char* axis = "xyz";
+const char* const kAxes = "xyz";
+
+chart::Chart position_chart(const app::Session& session) {
   const int a = session.watched_axis();
   chart::Chart position;
-  position.title = "Particle " + std::to_string(session.watched()) + ", " + std::string(1, axis[a]) + "(t)";
+  position.title = "Particle " + std::to_string(session.watched()) + ", " + std::string(1, kAxes[a]) + "(t)";
   position.x.label = "t (s)";
-  position.y.label = std::string(1, axis[a]) + " (m)";
+  position.y.label = std::string(1, kAxes[a]) + " (m)";
   for (const app::Lane& lane : session.lanes()) {
     const draw::Rgba c = draw::method_color(lane.sim.settings().method);
     position.series.push_back(series(method_info(lane.sim.settings().method).name, c, lane.history.t, lane.history.x));
     mark_diverged(position.series.back(), lane, "m");
   }
   if (session.primary().history.exact_x.size() > 0)
-    position.series.push_back(series("exact", white, session.primary().history.t, session.primary().history.exact_x, true));
-  chart::chart_widget("##position", position, ImVec2(w, height));
-  ImGui::SameLine();
+    position.series.push_back(series("exact", draw::Rgba{0.95f, 0.95f, 0.95f, 1}, session.primary().history.t,
+                                     session.primary().history.exact_x, true));
+  return position;
+}
 
+chart::Chart phase_chart(const app::Session& session) {
   chart::Chart phase;
   phase.title = "Phase";
-  phase.x.label = std::string(1, axis[a]) + " (m)";
+  phase.x.label = std::string(1, kAxes[session.watched_axis()]) + " (m)";
   phase.y.label = "v (m/s)";
   phase.legend = false;
   for (const app::Lane& lane : session.lanes()) {
     if (lane.sim.diverged()) continue;  // its phase plot would set the scale to its blow-up
     phase.series.push_back(series("", draw::method_color(lane.sim.settings().method), lane.history.x, lane.history.v));
   }
-  chart::chart_widget("##phase", phase, ImVec2(w, height));
+  return phase;
+}
+
+// Adaptive lanes: the internal step their controller chose, frame by frame (log scale), and a
+// cross on each frame in which it threw tries away.
+chart::Chart steps_chart(const app::Session& session) {
+  chart::Chart steps;
+  steps.title = "The adaptive step: accepted (line), frames with rejected tries (x)";
+  steps.x.label = "t (s)";
+  steps.y.label = "internal step (s)";
+  steps.y.log = true;
+  for (const app::Lane& lane : session.lanes()) {
+    if (!method_info(lane.sim.settings().method).adaptive) continue;
+    const app::History& h = lane.history;
+    chart::Series step = series(std::string(method_info(lane.sim.settings().method).name) + " step", 
+                                draw::method_color(lane.sim.settings().method), h.t, h.step);
+    chart::Series rejected;
+    rejected.label = "rejected";
+    rejected.color = draw::kDiverged;
+    for (std::size_t k = 1; k < step.x.size(); ++k) {
+      const std::size_t i = h.rejected.size() - step.x.size() + k;
+      if (h.rejected[i] > h.rejected[i - 1] && step.y[k] > 0.0) {
+        rejected.x.push_back(step.x[k]);
+        rejected.y.push_back(step.y[k]);
+        rejected.crossed.push_back(true);
+      }
+    }
+    for (double& y : step.y) y = y > 0.0 ? y : std::numeric_limits<double>::quiet_NaN();  // before the first step
+    steps.series.push_back(std::move(step));
+    if (!rejected.x.empty()) steps.series.push_back(std::move(rejected));
+  }
+  return steps;
+}
+
+// The charts: energy, the watched particle's position (with the exact solution) and its phase
+// plot side by side; one (energy) in presentation mode; in a lesson, the one its step shows.
+void charts(app::Session& session, float width, float height, bool presentation, std::optional<LessonChart> only) {
+  if (session.scene().ik) return ik_chart(session, width, height);
+  std::vector<chart::Chart> shown;
+  if (only) {
+    shown.push_back(*only == LessonChart::Energy     ? energy_chart(session)
+                    : *only == LessonChart::Position ? position_chart(session)
+                    : *only == LessonChart::Phase    ? phase_chart(session)
+                                                     : steps_chart(session));
+  } else {
+    shown.push_back(energy_chart(session));
+    if (!presentation) {
+      shown.push_back(position_chart(session));
+      shown.push_back(phase_chart(session));
+    }
+  }
+  const float w = (width - (shown.size() - 1) * ImGui::GetStyle().ItemSpacing.x) / shown.size();
+  const float line = presentation || only ? 3.0f : 2.0f;
+  for (std::size_t k = 0; k < shown.size(); ++k) {
+    if (k > 0) ImGui::SameLine();
+    for (chart::Series& s : shown[k].series) s.width = line;
+    chart::chart_widget(("##chart" + std::to_string(k)).c_str(), shown[k], ImVec2(w, height));
+  }
 }
 
 // The stability region of the lanes' methods, with the scene's modes at their steps (G).
@@ -293,12 +348,13 @@ float layout_scale(const UiState& ui) { return ui.scale * (ui.presentation ? kPr
 }  // namespace
 
 draw::Viewport scene_viewport(const UiState& ui, int width, int height) {
-  if (!ui.panels) return {0, 0, width, height};
+  const int band = std::min(static_cast<int>(ui.band), height / 2);
+  if (!ui.panels) return {0, band, width, height - band};
   const float s = layout_scale(ui);
   const int left = static_cast<int>((kLeftWidth + 2 * kPad) * s);
   const int bottom = static_cast<int>((kChartHeight + 2 * kPad) * s);
-  if (width - left < 64 || height - bottom < 64) return {0, 0, width, height};
-  return {left, 0, width - left, height - bottom};
+  if (width - left < 64 || height - bottom - band < 64) return {0, band, width, height - band};
+  return {left, band, width - left, height - bottom - band};
 }
 
 // An IK scene's controls: the solver, side by side or not, iterations a frame, and each lane's
@@ -467,8 +523,9 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
 
   if (ui.panels) {
     // Controls.
-    ImGui::SetNextWindowPos(ImVec2(pad, pad));
-    ImGui::SetNextWindowSize(ImVec2(left_w, static_cast<float>(height) - 2 * pad));
+    const float top = std::min(ui.band, 0.5f * height);  // under the lesson's band
+    ImGui::SetNextWindowPos(ImVec2(pad, top + pad));
+    ImGui::SetNextWindowSize(ImVec2(left_w, static_cast<float>(height) - top - 2 * pad));
     ImGui::Begin("springlab", nullptr, (ui.panels_over_scene ? kPanel : kDocked) | ImGuiWindowFlags_NoTitleBar);
     ImGui::PushItemWidth(-130.0f * s);
 
@@ -477,6 +534,20 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
       for (const std::string& name : ui.scenes)
         if (ImGui::Selectable(name.c_str(), name == ui.scene_name)) requests.load = name;
       ImGui::EndCombo();
+    }
+    // The lessons: the lecture, step by step (the band across the top then leads).
+    if (!ui.lessons.empty()) {
+      std::string current = "(none: explore freely)";
+      for (std::size_t k = 0; k < ui.lessons.size(); ++k)
+        if (ui.lessons[k].first == ui.lesson) current = std::to_string(k + 1) + "  " + ui.lessons[k].second;
+      if (ImGui::BeginCombo("lesson", current.c_str())) {
+        if (ImGui::Selectable("(none: explore freely)", ui.lesson.empty())) requests.lesson = "";
+        for (std::size_t k = 0; k < ui.lessons.size(); ++k) {
+          const std::string label = std::to_string(k + 1) + "  " + ui.lessons[k].second;
+          if (ImGui::Selectable(label.c_str(), ui.lessons[k].first == ui.lesson)) requests.lesson = ui.lessons[k].first;
+        }
+        ImGui::EndCombo();
+      }
     }
     if (ui.platform_controls) ui.platform_controls();
     const std::string& about = session.scene().description;
@@ -568,9 +639,9 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
     ImGui::SetNextWindowPos(ImVec2(charts_x, static_cast<float>(height) - chart_h - pad));
     ImGui::SetNextWindowSize(ImVec2(static_cast<float>(width) - charts_x - pad, chart_h));
     ImGui::Begin("Charts", nullptr, (ui.panels_over_scene ? kPanel : kDocked) | ImGuiWindowFlags_NoTitleBar);
-    charts(session, ImGui::GetContentRegionAvail().x, ImGui::GetContentRegionAvail().y, ui.presentation);
+    charts(session, ImGui::GetContentRegionAvail().x, ImGui::GetContentRegionAvail().y, ui.presentation, ui.lesson_chart);
     ImGui::End();
-    region_window(session, ui, charts_x, pad, 0.55f * (width - charts_x), 0.55f * height);
+    region_window(session, ui, charts_x, top + pad, 0.55f * (width - charts_x), 0.55f * height);
   }
 
   // Divergence in the single view: a banner, and the way out.

@@ -20,6 +20,7 @@
 
 #include "draw/scene_frame.hpp"
 #include "session/session.hpp"
+#include "springlab/lesson.hpp"
 
 namespace springlab::ui {
 
@@ -56,10 +57,19 @@ struct UiState {
   // A platform's own controls, drawn under the scene picker (the browser's Copy link, file
   // picker and UI scale); none on the desktop.
   std::function<void()> platform_controls;
+
+  // Lessons: the picker's list ("hooke", "Hooke's spring and its exact motion"), the one being
+  // taught (its name, or ""), the chart its step shows (alone, the width of the charts' panel),
+  // and the height of the band across the top that holds its caption (window units; 0: none).
+  std::vector<std::pair<std::string, std::string>> lessons;
+  std::string lesson;
+  std::optional<LessonChart> lesson_chart;
+  float band = 0.0f;
 };
 
 struct Requests {
   std::optional<std::string> load;  // a scene name or file to open
+  std::optional<std::string> lesson;  // a lesson to start ("" ends the one taught)
   bool quit = false;
 };
 

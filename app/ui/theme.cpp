@@ -14,14 +14,18 @@ void apply_theme(float scale) {
   io.Fonts->Clear();
   const char* font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
   std::error_code ec;
-  // Two sizes: the panels' and presentation mode's (kPresentationScale larger, drawn at its own
-  // size rather than stretched, so that it stays sharp on a projector).
-  for (const float size : {1.0f, kPresentationScale}) {
+  // Three sizes: the panels', presentation mode's (kPresentationScale larger) and the lesson
+  // captions' (kCaptionScale), each drawn at its own size rather than stretched, so that it stays
+  // sharp on a projector. The glyphs: Latin-1, Greek, punctuation, super- and subscripts, arrows
+  // and math operators (core/src/lesson.cpp lets a caption use exactly these).
+  static const ImWchar glyphs[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x205E, 0x2070, 0x209F,
+                                   0x2190, 0x21FF, 0x2200, 0x22FF, 0};
+  for (const float size : {1.0f, kPresentationScale, kCaptionScale}) {
     if (std::filesystem::exists(font, ec)) {
       ImFontConfig config;
       config.OversampleH = 2;
       config.OversampleV = 2;
-      io.Fonts->AddFontFromFileTTF(font, kFontSize * scale * size, &config);
+      io.Fonts->AddFontFromFileTTF(font, kFontSize * scale * size, &config, glyphs);
     } else {
       ImFontConfig config;
       config.SizePixels = std::round(13.0f * scale * size);  // ProggyClean at a whole size stays crisp enough

@@ -11,4 +11,8 @@ void apply_theme(float scale);
 // The font's pixel size at scale 1.
 inline constexpr float kFontSize = 17.0f;
 
+// The fonts, in ImGui's atlas order: the panels', presentation mode's, the lesson captions'.
+enum FontIndex { kPanelFont = 0, kPresentationFont = 1, kCaptionFont = 2 };
+inline constexpr float kCaptionScale = 1.5f;
+
 }  // namespace springlab::ui

@@ -286,9 +286,9 @@ std::string LessonClaim::describe() const {
     case K::FollowsExact: return who + "follows the exact solution within " + fmt(within) + " m";
     case K::Limit: return who + "stated stability limit h = " + fmt(h) + " s";
     case K::StepsAdapt: return who + "rejects tries, step varies x" + fmt(ratio) + " or more";
-    case K::MomentumKept: return "momentum kept";
+    case K::MomentumKept: return "momentum and angular momentum kept";
     case K::DragSlows: return "centre of mass slows as exp(-k_drag t / m)";
-    case K::InternalDecays: return "internal motion decays below " + fmt(below) + " of its energy";
+    case K::InternalDecays: return "the wiggles (motion besides the rigid one) keep under " + fmt(below) + " of their kinetic energy";
     case K::OutOfReach: return who + "target out of reach, chain straight towards it";
     case K::PosesDiffer: return "solvers reach the target in poses " + fmt(min) + " m apart or more";
     case K::Orders: {

@@ -42,9 +42,9 @@ struct LessonClaim {
     FollowsExact,     // the watched particle stays within `within` m of the exact solution
     Limit,            // the stated stability limit is `h` to within `within` (relative)
     StepsAdapt,       // an adaptive lane rejects tries, and its step varies by `ratio` or more
-    MomentumKept,     // the free particles' total momentum is unchanged to `within` (relative)
+    MomentumKept,     // the free particles' momentum and angular momentum are unchanged to `within`
     DragSlows,        // the centre of mass slows as exp(-k_drag t / m), to `within` (relative)
-    InternalDecays,   // the motion relative to the centre of mass loses all but `below` of its energy
+    InternalDecays,   // the motion besides the rigid one loses all but `below` of its energy
     OutOfReach,       // the IK target is out of reach and the chain points straight at it
     PosesDiffer,      // every IK lane reaches the target, in poses `min` m apart or more
     Orders,           // measured convergence orders, and the most accurate method for its cost

@@ -1,0 +1,35 @@
+// The lesson's band across the top of the window: which lesson and step, the caption (large, in
+// its own font, never over the scene: the scene's viewport starts below the band), the class's
+// "try this" prompt, and a progress bar with one segment a step. In the app it has back, next and
+// end buttons, and, once the class has taken over (a drag, a slider), a way back into the lesson;
+// burned into a video it has none.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace springlab::ui {
+
+struct LessonBand {
+  int number = 0, count = 0;  // the lesson's place in the course (0: a lesson file of one's own)
+  std::string title;
+  int step = 0;                   // from 0
+  std::vector<double> durations;  // s, every step's
+  std::string step_title, caption, prompt;
+  double elapsed = 0.0;  // s of presentation time into the step
+  bool interrupted = false;
+  bool interactive = true;  // buttons (the app) or none (a video)
+  bool last_lesson = true;  // no next lesson after this one
+};
+
+struct BandRequests {
+  bool back = false, next = false, resume = false, end = false;
+};
+
+// The band's height at `scale`, in window units: a title row, two caption lines, the prompt and
+// the progress bar (core/include/springlab/lesson.hpp limits a caption to what fits).
+float lesson_band_height(float scale);
+
+BandRequests draw_lesson_band(const LessonBand& band, float width, float scale);
+
+}  // namespace springlab::ui
