@@ -120,7 +120,7 @@ Shot lesson_shot(const Lesson& lesson, int k, int number, int count, double fps,
   shot.ui = shot_ui(*shot.session, shot.session->scene().name, scale);
   shot.ui.lesson = lesson.name;
   shot.ui.band = ui::lesson_band_height(scale);
-  shot.ui.lesson_chart = step.chart;
+  shot.ui.lesson_charts = step.charts;
   shot.ui.region = step.region;
   shot.ui.view.mode = step.mode;
   if (step.accuracy) {

@@ -6,6 +6,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
+#include "lesson/lesson_library.hpp"
 #include "springlab/error.hpp"
 #include "window/window_app.hpp"
 
@@ -35,6 +36,8 @@ int view(ViewCli& o) {
       throw InputError("--size: must be WIDTHxHEIGHT, from 320x240 to 7680x4320, got '" + *o.size + "'");
   }
   if (o.compare) o.app.compare = parse_compare(*o.compare, "--compare");
+  // A lesson is checked before any window opens: a bad one is bad input, display or not.
+  if (o.app.lesson) check_lesson_step(open_lesson(*o.app.lesson), o.app.lesson_step, "--step");
   o.window.threads_given = o.app.sim.threads.has_value();
   return run_window(o.app, o.window);
 }

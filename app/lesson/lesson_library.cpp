@@ -38,6 +38,12 @@ Lesson open_lesson(const std::string& name) {
                    (near.empty() ? "" : "; did you mean '" + near + "'?") + " (shipped: " + list + ")");
 }
 
+void check_lesson_step(const Lesson& lesson, int step, const std::string& option) {
+  if (step < 1 || step > static_cast<int>(lesson.steps.size()))
+    throw InputError(option + ": lesson '" + lesson.name + "' has steps 1 to " + std::to_string(lesson.steps.size()) +
+                     ", got " + std::to_string(step));
+}
+
 StepSetup setup_step(const LessonStep& step) {
   SimOptions o;
   if (step.method) o.method = method_info(*step.method).name;

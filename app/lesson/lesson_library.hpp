@@ -19,6 +19,10 @@ std::vector<std::string> shipped_lesson_files();
 // naming the shipped lessons.
 Lesson open_lesson(const std::string& name_or_path);
 
+// Checks a step number from 1 given with `option` ("--step", "link: step"). Throws InputError:
+// "--step: lesson 'hooke' has steps 1 to 2, got 5".
+void check_lesson_step(const Lesson& lesson, int step, const std::string& option);
+
 // What a step starts with: the scene prepared with the step's settings, the lanes side by side
 // (methods, or an IK scene's solvers), the script.
 struct StepSetup {

@@ -67,9 +67,7 @@ InteractiveApp::InteractiveApp(Prepared first, const AppSettings& settings, std:
   }
   if (settings.lesson) {
     Lesson lesson = open_lesson(*settings.lesson);
-    if (settings.lesson_step < 1 || settings.lesson_step > static_cast<int>(lesson.steps.size()))
-      throw InputError("--step: lesson '" + lesson.name + "' has steps 1 to " + std::to_string(lesson.steps.size()) +
-                       ", got " + std::to_string(settings.lesson_step));
+    check_lesson_step(lesson, settings.lesson_step, "--step");
     start_lesson(std::move(lesson), settings.lesson_step - 1);
   }
 }
@@ -105,7 +103,7 @@ void InteractiveApp::lesson_step(int k) {
   interrupted_ = false;
   ui_.lesson = lesson_->name;
   ui_.band = ui::lesson_band_height(ui_.scale);
-  ui_.lesson_chart = step.chart;
+  ui_.lesson_charts = step.charts;
   ui_.region = step.region;
   ui_.view.mode = step.mode;
   ui_.accuracy = accuracy_.open = step.accuracy;
@@ -144,7 +142,7 @@ void InteractiveApp::end_lesson() {
   interrupted_ = false;
   ui_.lesson.clear();
   ui_.band = 0.0f;
-  ui_.lesson_chart.reset();
+  ui_.lesson_charts.clear();
   session_->stop_script();
 }
 
@@ -185,7 +183,7 @@ void InteractiveApp::show(Prepared p, const std::string& name) {
   ui.lessons = std::move(ui_.lessons);
   ui.lesson = ui_.lesson;
   ui.band = ui_.band;
-  ui.lesson_chart = ui_.lesson_chart;
+  ui.lesson_charts = ui_.lesson_charts;
   for (Method m : session_->scene().methods)
     if (session_->scene().methods.size() >= 2) ui.compare_choice[static_cast<int>(m)] = true;
   ui_ = std::move(ui);

@@ -260,33 +260,35 @@ chart::Chart steps_chart(const app::Session& session) {
   return steps;
 }
 
-// The charts: energy, the watched particle's position (with the exact solution) and its phase
-// plot side by side; one (energy) in presentation mode; in a lesson, the one its step shows.
-void charts(app::Session& session, float width, float height, bool presentation, std::optional<LessonChart> only) {
-  if (session.scene().ik) return ik_chart(session, width, height);
-  std::vector<chart::Chart> shown;
-  if (only) {
-    shown.push_back(*only == LessonChart::Energy     ? energy_chart(session)
-                    : *only == LessonChart::Position ? position_chart(session)
-                    : *only == LessonChart::Phase    ? phase_chart(session)
-                                                     : steps_chart(session));
-  } else {
-    shown.push_back(energy_chart(session));
-    if (!presentation) {
-      shown.push_back(position_chart(session));
-      shown.push_back(phase_chart(session));
-    }
+// The stability region of the lanes' methods with the scene's modes at their steps: one chart a
+// plane (the complex plane's methods, then the oscillator plane's), or why there is none.
+std::vector<chart::Chart> region_charts(app::Session& session, std::string& none) {
+  std::vector<chart::Chart> out;
+  const StabilityAnalysis* analysis = shown_analysis(session, session.lanes()[0]);
+  if (!analysis) {
+    none = "analysing the scene's stability...";
+    return out;
   }
-  const float w = (width - (shown.size() - 1) * ImGui::GetStyle().ItemSpacing.x) / shown.size();
-  const float line = presentation || only ? 3.0f : 2.0f;
+  std::vector<chart::RegionLane> planes[2];
+  for (app::Lane& lane : session.lanes())
+    if (!method_info(lane.sim.settings().method).adaptive)
+      planes[static_cast<int>(chart::region_plane(lane.sim.settings().method))].push_back(
+          {lane.sim.settings().method, lane.sim.h()});
+  for (int k = 0; k < 2; ++k)
+    if (!planes[k].empty()) out.push_back(chart::stability_region(*analysis, planes[k]));
+  if (out.empty()) none = "an adaptive method chooses its own steps: it has no region";
+  return out;
+}
+
+// Charts side by side over the room left in the window.
+void charts_row(const std::vector<chart::Chart>& shown, float width, float height) {
+  const float w = (width - (shown.size() - 1) * ImGui::GetStyle().ItemSpacing.x) / std::max<std::size_t>(1, shown.size());
   for (std::size_t k = 0; k < shown.size(); ++k) {
     if (k > 0) ImGui::SameLine();
-    for (chart::Series& s : shown[k].series) s.width = line;
     chart::chart_widget(("##chart" + std::to_string(k)).c_str(), shown[k], ImVec2(w, height));
   }
 }
 
-// The stability region of the lanes' methods, with the scene's modes at their steps (G).
 void region_window(app::Session& session, UiState& ui, float x, float y, float width, float height) {
   if (!ui.region) return;
   ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Appearing);
@@ -295,31 +297,46 @@ void region_window(app::Session& session, UiState& ui, float x, float y, float w
     ImGui::End();
     return;
   }
-  const StabilityAnalysis* analysis = shown_analysis(session, session.lanes()[0]);
-  if (!analysis) {
-    ImGui::TextDisabled("analysing the scene's stability...");
-  } else {
-    // One chart a plane: the complex plane's methods, then the oscillator plane's.
-    std::vector<chart::RegionLane> planes[2];
-    for (app::Lane& lane : session.lanes())
-      if (!method_info(lane.sim.settings().method).adaptive)
-        planes[static_cast<int>(chart::region_plane(lane.sim.settings().method))].push_back(
-            {lane.sim.settings().method, lane.sim.h()});
-    const int charts = !planes[0].empty() + !planes[1].empty();
-    if (charts == 0) ImGui::TextDisabled("an adaptive method chooses its own steps: it has no region");
-    const ImVec2 room = ImGui::GetContentRegionAvail();
-    const float w = (room.x - (charts - 1) * ImGui::GetStyle().ItemSpacing.x) / std::max(1, charts);
-    bool first = true;
-    for (int k = 0; k < 2; ++k) {
-      if (planes[k].empty()) continue;
-      if (!first) ImGui::SameLine();
-      first = false;
-      chart::Chart c = chart::stability_region(*analysis, planes[k]);
-      chart::chart_widget(k == 0 ? "##complex-plane" : "##oscillator-plane", c, ImVec2(w, room.y));
-    }
-  }
+  std::string none;
+  std::vector<chart::Chart> shown = region_charts(session, none);
+  if (!none.empty()) ImGui::TextDisabled("%s", none.c_str());
+  const ImVec2 room = ImGui::GetContentRegionAvail();
+  charts_row(shown, room.x, room.y);
   ImGui::End();
 }
+
+// The charts: energy, the watched particle's position (with the exact solution) and its phase
+// plot side by side; one (energy) in presentation mode; in a lesson, the ones its step shows.
+// For a class (presentation, lessons) the lines are thicker; the stability regions keep theirs.
+void charts(app::Session& session, float width, float height, bool presentation, const std::vector<LessonChart>& only) {
+  if (session.scene().ik) return ik_chart(session, width, height);
+  std::vector<chart::Chart> shown;
+  std::string none;
+  const float line = presentation || !only.empty() ? 3.0f : 0.0f;
+  const auto add = [&](chart::Chart c) {
+    if (line > 0.0f)
+      for (chart::Series& s : c.series) s.width = line;
+    shown.push_back(std::move(c));
+  };
+  for (LessonChart c : only) {
+    if (c == LessonChart::Energy) add(energy_chart(session));
+    if (c == LessonChart::Position) add(position_chart(session));
+    if (c == LessonChart::Phase) add(phase_chart(session));
+    if (c == LessonChart::Steps) add(steps_chart(session));
+    if (c == LessonChart::Region)
+      for (chart::Chart& r : region_charts(session, none)) shown.push_back(std::move(r));
+  }
+  if (only.empty()) {
+    add(energy_chart(session));
+    if (!presentation) {
+      shown.push_back(position_chart(session));
+      shown.push_back(phase_chart(session));
+    }
+  }
+  if (shown.empty()) ImGui::TextDisabled("%s", none.c_str());
+  charts_row(shown, width, height);
+}
+
 
 }  // namespace
 
@@ -639,7 +656,7 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
     ImGui::SetNextWindowPos(ImVec2(charts_x, static_cast<float>(height) - chart_h - pad));
     ImGui::SetNextWindowSize(ImVec2(static_cast<float>(width) - charts_x - pad, chart_h));
     ImGui::Begin("Charts", nullptr, (ui.panels_over_scene ? kPanel : kDocked) | ImGuiWindowFlags_NoTitleBar);
-    charts(session, ImGui::GetContentRegionAvail().x, ImGui::GetContentRegionAvail().y, ui.presentation, ui.lesson_chart);
+    charts(session, ImGui::GetContentRegionAvail().x, ImGui::GetContentRegionAvail().y, ui.presentation, ui.lesson_charts);
     ImGui::End();
     region_window(session, ui, charts_x, top + pad, 0.55f * (width - charts_x), 0.55f * height);
   }

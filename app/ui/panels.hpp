@@ -59,11 +59,11 @@ struct UiState {
   std::function<void()> platform_controls;
 
   // Lessons: the picker's list ("hooke", "Hooke's spring and its exact motion"), the one being
-  // taught (its name, or ""), the chart its step shows (alone, the width of the charts' panel),
+  // taught (its name, or ""), the charts its step shows (filling the charts' panel),
   // and the height of the band across the top that holds its caption (window units; 0: none).
   std::vector<std::pair<std::string, std::string>> lessons;
   std::string lesson;
-  std::optional<LessonChart> lesson_chart;
+  std::vector<LessonChart> lesson_charts;
   float band = 0.0f;
 };
 

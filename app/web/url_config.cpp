@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "springlab/error.hpp"
+#include "lesson/lesson_library.hpp"
 #include "util/data_dir.hpp"
 
 namespace springlab::app::web {
@@ -88,6 +89,13 @@ AppSettings settings_from_link(const std::string& fragment) {
     else if (key == "compare") s.compare = parse_compare(value, "link: compare");
     else if (key == "script") s.script = value;
     else if (key == "set") s.sim.sets.push_back(value);  // set=cloth.width%3D64, as --set
+    else if (key == "lesson") s.lesson = value;
+    else if (key == "step") {
+      const double step = number(key, value);
+      if (!(step >= 1 && step <= 12 && step == std::floor(step)))
+        throw InputError("link: step: must be a lesson's step number, 1 to 12, got '" + value + "'");
+      s.lesson_step = static_cast<int>(step);
+    }
     else if (key == "accuracy") {
       if (value != "0" && value != "1") throw InputError("link: accuracy: must be 1 (open the Compare panel and start its sweep) or 0, got '" + value + "'");
       s.accuracy = value == "1";
@@ -112,17 +120,23 @@ Opened open_settings(const AppSettings& settings) {
         path = (data_dir() / "assets" / "scripts" / (path + ".json")).string();
       opened.script = load_script(path, opened.prepared.scene);
     }
+    if (settings.lesson) check_lesson_step(open_lesson(*settings.lesson), settings.lesson_step, "link: step");
     return opened;
   } catch (const InputError& e) {
     // The command line's messages name its flags ("--dt: ..."): a link names its parameters.
     std::string message = e.what();
     if (message.starts_with("--")) message.erase(0, 2);
     else if (settings.script && message.find("script") != std::string::npos) message = "script: " + message;
+    else if (settings.lesson && message.starts_with("lesson ")) message = "lesson: " + message;
     throw InputError(message.starts_with("link: ") ? message : "link: " + message);
   }
 }
 
 std::string link_of(const InteractiveApp& app, const std::vector<std::string>& sets, double ui_scale) {
+  // In a lesson (the class has not taken over): the lesson at its step.
+  if (app.lesson() && !app.interrupted())
+    return "lesson=" + percent_encoded(app.lesson()->name) + "&step=" + std::to_string(app.step() + 1) +
+           (std::abs(ui_scale - 1.0) > 1e-12 ? "&ui-scale=" + shortest(ui_scale) : "");
   const Session& session = app.session();
   const Lane& lane = session.primary();
   std::string link = "scene=" + percent_encoded(app.scene_name());

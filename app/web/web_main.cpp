@@ -222,6 +222,10 @@ EMSCRIPTEN_KEEPALIVE const char* springlab_status() {
   std::snprintf(number, sizeof number, ",\"copy_link\":[%g,%g,%g,%g]", b.x, b.y, b.z, b.w);
   json += number;
   json += ",\"paused\":" + std::string(session.paused() ? "true" : "false");
+  json += ",\"lesson\":" + quoted(g_page->app->lesson() ? g_page->app->lesson()->name : "");
+  std::snprintf(number, sizeof number, ",\"step\":%d,\"interrupted\":%s", g_page->app->step() + 1,
+                g_page->app->interrupted() ? "true" : "false");
+  json += number;
   json += ",\"message\":" + quoted(g_page->app->ui().message);
   json += ",\"lanes\":[";
   for (std::size_t i = 0; i < session.lanes().size(); ++i) {

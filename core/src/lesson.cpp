@@ -219,9 +219,23 @@ LessonStep read_step(ObjectReader& r, const std::string& folder, const LessonSce
   }
   step.duration = r.number("duration", {0.0, 600.0, true, false});
   step.speed = r.number("speed", 1.0, {1.0 / 16.0, 4.0});
-  const std::string chart = r.choice("chart", "energy", {"energy", "position", "phase", "steps"});
-  step.chart = chart == "energy" ? LessonChart::Energy : chart == "position" ? LessonChart::Position
-               : chart == "phase" ? LessonChart::Phase : LessonChart::Steps;
+  if (const json* c = r.raw("chart")) {  // a name, or one or two in an array
+    const std::vector<std::pair<std::string, LessonChart>> charts = {
+        {"energy", LessonChart::Energy}, {"position", LessonChart::Position}, {"phase", LessonChart::Phase},
+        {"steps", LessonChart::Steps},   {"region", LessonChart::Region}};
+    std::vector<std::string> names;
+    if (c->is_string()) names = {c->get<std::string>()};
+    else if (c->is_array()) names = strings(r, "chart");
+    if (names.empty() || names.size() > 2)
+      r.fail("chart", "must be one or two of energy, position, phase, steps and region, " + json_reader::describe(*c));
+    step.charts.clear();
+    for (const std::string& n : names) {
+      const auto at = std::find_if(charts.begin(), charts.end(), [&](const auto& x) { return x.first == n; });
+      if (at == charts.end())
+        r.fail("chart", "must be one or two of energy, position, phase, steps and region, got \"" + n + "\"");
+      step.charts.push_back(at->second);
+    }
+  }
   for (const std::string& s : strings(r, "show")) {
     if (s == "region") step.region = true;
     else if (s == "accuracy") step.accuracy = true;

@@ -109,5 +109,19 @@ TEST(View, BadOptionsExitTwo) {
   }
 }
 
+// A lesson in the window: its band across the top (the caption's text), the scene and the panels
+// below it, from the step asked for.
+TEST(View, TeachesALessonWithItsCaptionAboveTheScene) {
+  TempDir dir;
+  const fs::path shot = dir / "shot.png";
+  const Result r = view("--lesson damping-buys-a-limit --step 2 --frames 20 --screenshot " + shot.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const app::Image im = app::read_png(shot);
+  ASSERT_EQ(im.width, 1280);
+  EXPECT_GT(content(im, 0, 30, 1280, 100).bright, 2000u);   // the caption, large
+  EXPECT_GT(content(im, 380, 160, 1280, 450).colours, 10u);  // the scene, under the band
+  EXPECT_GT(content(im, 0, 170, 360, 720).bright, 500u);    // the controls
+}
+
 }  // namespace
 }  // namespace springlab::test

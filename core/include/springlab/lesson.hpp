@@ -62,8 +62,10 @@ struct LessonClaim {
   std::string describe() const;  // "euler: energy grows by x1.01 a step", for reports
 };
 
-// Chart a step shows (the app's single chart in lesson mode).
-enum class LessonChart { Energy, Position, Phase, Steps };
+// Charts a step shows (in the app's charts panel, side by side): energy, the watched particle's
+// position (with the exact solution), its phase plot, an adaptive method's steps, the stability
+// region with the scene's modes.
+enum class LessonChart { Energy, Position, Phase, Steps, Region };
 
 struct LessonStep {
   std::string title;
@@ -75,7 +77,7 @@ struct LessonStep {
   std::optional<int> substeps;  // 0: automatic
   double duration = 6.0;        // s of presentation time
   double speed = 1.0;
-  LessonChart chart = LessonChart::Energy;
+  std::vector<LessonChart> charts{LessonChart::Energy};  // one or two
   bool region = false, accuracy = false, mode = false;  // the stability region, the accuracy panel, the limiting mode
   Script script;                // may have no events
   std::string caption, prompt;  // prompt: "try this", may be empty

@@ -1,0 +1,65 @@
+// Every shipped lesson's text fits the band it is drawn in at 1280 x 720 (ui/lesson_band.hpp):
+// the caption in two lines of its own font, the prompt on one line, the title row beside its
+// buttons; measured with Dear ImGui's own text layout and the app's fonts (no GL needed).
+#include <gtest/gtest.h>
+#include <imgui.h>
+
+#include <cfloat>
+
+#include "lesson/lesson_library.hpp"
+#include "ui/lesson_band.hpp"
+#include "ui/theme.hpp"
+
+namespace springlab::test {
+namespace {
+
+struct Fonts {
+  Fonts() {
+    ImGui::CreateContext();
+    ui::apply_theme(1.0f);
+    unsigned char* pixels = nullptr;
+    int w = 0, h = 0;
+    ImGui::GetIO().Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);  // builds the atlas
+  }
+  ~Fonts() { ImGui::DestroyContext(); }
+  // Lines `text` takes in `font` wrapped at `width` pixels.
+  static int lines(int font, const std::string& text, float width) {
+    ImFont* f = ImGui::GetIO().Fonts->Fonts[font];
+    const ImVec2 size = f->CalcTextSizeA(f->FontSize, FLT_MAX, width, text.c_str(), text.c_str() + text.size());
+    return static_cast<int>(size.y / f->FontSize + 0.5f);
+  }
+};
+
+TEST(LessonBand, EveryShippedLessonsTextFitsAt1280x720) {
+  Fonts fonts;
+  ASSERT_GT(ImGui::GetIO().Fonts->Fonts.Size, ui::kCaptionFont);
+  const float inner = 1280.0f - 2 * 12.0f;  // the band's padding
+  // (The measure itself: kMaxCaption characters of ordinary words do not fit one line, twice as
+  // many do not fit two.)
+  std::string words;
+  while (words.size() < static_cast<std::size_t>(kMaxCaption)) words += "spring ";
+  EXPECT_EQ(Fonts::lines(ui::kCaptionFont, words, inner), 2);
+  EXPECT_GE(Fonts::lines(ui::kCaptionFont, words + words, inner), 3);
+  const auto files = app::shipped_lesson_files();
+  ASSERT_GE(files.size(), 10u);
+  for (const std::string& file : files) {
+    const Lesson lesson = app::open_lesson(file);
+    for (const LessonStep& step : lesson.steps) {
+      EXPECT_LE(Fonts::lines(ui::kCaptionFont, step.caption, inner), 2) << lesson.name << ": " << step.caption;
+      if (!step.prompt.empty())
+        EXPECT_EQ(Fonts::lines(ui::kPanelFont, "Try this: " + step.prompt, inner), 1) << lesson.name << ": " << step.prompt;
+      // The title row leaves room for its three buttons (about 300 pixels).
+      const std::string row = "Lesson 10 of 10  \u00b7  " + lesson.title + "   \u2014   step 1 of 2: " + step.title;
+      EXPECT_EQ(Fonts::lines(ui::kPanelFont, row, inner - 300.0f), 1) << lesson.name << ": " << row;
+    }
+  }
+}
+
+// The band's own arithmetic: its height holds the rows it lays out, at any scale.
+TEST(LessonBand, HeightGrowsWithTheScale) {
+  EXPECT_NEAR(ui::lesson_band_height(2.0f), 2.0f * ui::lesson_band_height(1.0f), 1e-3f);
+  EXPECT_GT(ui::lesson_band_height(1.0f), 2 * ui::kFontSize * ui::kCaptionScale + 2 * ui::kFontSize);
+}
+
+}  // namespace
+}  // namespace springlab::test

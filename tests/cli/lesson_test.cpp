@@ -1,0 +1,137 @@
+// The lessons: every shipped lesson played headlessly, each claim its captions make checked on
+// what happened (lesson/lesson_checks.hpp measures them against the physics: growth factors
+// a step from the methods' amplification, exp(-k_drag n t / M), exact solutions, limits, orders);
+// the course's order; `springlab lesson`, `render --lesson` and `view --lesson` as a user runs
+// them, and a bad lesson's one message.
+#include <gtest/gtest.h>
+
+#include "cli/cli_support.hpp"
+#include "lesson/lesson_checks.hpp"
+#include "lesson/lesson_library.hpp"
+
+namespace springlab::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The lecture's order (GAMES101, animation and simulation; assets/lessons/README.md).
+const std::vector<std::string> kCourse = {"hooke",       "damping-vs-drag",    "euler-explodes",
+                                          "damping-buys-a-limit", "midpoint-modified-euler", "adaptive-step",
+                                          "implicit-stiff", "rk4-work-precision", "particle-systems",
+                                          "inverse-kinematics"};
+
+class ShippedLesson : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ShippedLesson, EveryClaimOfItsCaptionsHoldsWhenPlayed) {
+  const Lesson lesson = app::open_lesson(GetParam());
+  for (std::size_t s = 0; s < lesson.steps.size(); ++s) {
+    const LessonStep& step = lesson.steps[s];
+    EXPECT_FALSE(step.claims.empty()) << lesson.name << " step " << s + 1 << " claims nothing a test can check";
+    for (const app::ClaimResult& r : app::check_step(step))
+      EXPECT_TRUE(r.passed) << lesson.name << " step " << s + 1 << ": " << r.claim.describe() << ": " << r.measured;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Lessons, ShippedLesson, ::testing::ValuesIn(kCourse),
+                         [](const auto& info) { return scene_test_name(info.param); });
+
+TEST(Lessons, TheCourseFollowsTheLecture) {
+  const Result r = springlab("lesson list");
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::istringstream lines(r.out);
+  std::vector<std::string> names;
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream words(line);
+    int number = 0;
+    std::string name;
+    words >> number >> name;
+    EXPECT_EQ(number, static_cast<int>(names.size()) + 1) << line;
+    names.push_back(name);
+  }
+  EXPECT_EQ(names, kCourse);
+}
+
+TEST(Lessons, CheckPrintsEachClaimWithWhatWasMeasured) {
+  const Result r = springlab("lesson check euler-explodes");
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("ok    euler: energy grows by x1.028 a step: x1.027778 a step (expected x1.027778)"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("4 of 4 claims hold"), std::string::npos) << r.out;
+}
+
+TEST(Lessons, AClaimThatDoesNotHoldFailsTheCheck) {
+  TempDir dir;
+  // Symplectic Euler on the spring keeps its energy: claiming it grows is false.
+  write_file(dir / "wrong.json", R"({"title": "Wrong", "summary": "A false claim.", "steps": [
+    {"title": "SE", "scene": "spring", "method": "symplectic-euler", "duration": 2, "caption": "It grows.",
+     "claims": [{"claim": "energy-grows"}]}]})");
+  const Result r = springlab("lesson check " + (dir / "wrong.json").string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.out.find("FAIL  energy grows"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("0 of 1 claims hold"), std::string::npos) << r.out;
+}
+
+TEST(Lessons, ABadLessonGetsOneMessageNamingTheFileAndTheFieldAndExitsTwo) {
+  TempDir dir;
+  const fs::path file = dir / "bad.json";
+  write_file(file, R"({"title": "Bad", "summary": "s", "steps": [
+    {"title": "t", "scene": "spring", "kd": -1, "duration": 2, "caption": "c"}]})");
+  const std::string expected = "springlab: lesson '" + file.string() + "': /steps/0/kd: must be";
+  for (const std::string& command : {"lesson check " + file.string(), "render --lesson " + file.string() + " --out " +
+                                         (dir / "frames").string(),
+                                     "view --lesson " + file.string() + " --frames 1"}) {
+    const Result r = springlab(command);
+    EXPECT_EQ(r.status, 2) << command;
+    EXPECT_EQ(r.err.rfind(expected, 0), 0u) << command << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+  EXPECT_FALSE(fs::exists(dir / "frames"));  // nothing half-written
+}
+
+TEST(Lessons, BadLessonOptionsExitTwo) {
+  TempDir dir;
+  const std::string out = " --out " + (dir / "f").string();
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"render --lesson hoke" + out, "lesson 'hoke': no such file, and no shipped lesson of that name; did you mean 'hooke'?"},
+      {"render" + out, "render: give a SCENE or --lesson NAME"},
+      {"render spring --lesson hooke" + out, "render: give a SCENE or --lesson NAME"},
+      {"render --lesson hooke --method rk4" + out, "render --lesson: the lesson sets each step's"},
+      {"view --lesson hooke --step 3 --frames 1", "--step: lesson 'hooke' has steps 1 to 2, got 3"},
+      {"lesson check nope", "lesson 'nope': no such file"},
+  };
+  for (const auto& [command, message] : cases) {
+    const Result r = springlab(command);
+    EXPECT_EQ(r.status, 2) << command;
+    EXPECT_NE(r.err.find(message), std::string::npos) << command << ": " << r.err;
+  }
+}
+
+TEST(Lessons, RenderPlaysEveryStepForItsDuration) {
+  TempDir dir;
+  // euler-explodes: one step of 6 s; hooke: two of 6 s. At 5 frames a second: 30 and 60 frames.
+  for (const auto& [lesson, frames] : std::vector<std::pair<std::string, int>>{{"euler-explodes", 30}, {"hooke", 60}}) {
+    const fs::path out = dir / lesson;
+    const Result r = springlab("render --lesson " + lesson + " --fps 5 --size 320x180 --software --out " + out.string());
+    ASSERT_EQ(r.status, 0) << r.err;
+    int count = 0;
+    for (const auto& e : fs::directory_iterator(out)) count += e.path().extension() == ".png";
+    EXPECT_EQ(count, frames) << lesson;
+    EXPECT_NE(r.out.find("rendered " + std::to_string(frames) + " frames of lesson " + lesson), std::string::npos) << r.out;
+  }
+}
+
+TEST(Lessons, RenderWritesAVideoWithTheCaptionsBurnedIn) {
+  if (std::system("command -v ffprobe > /dev/null") != 0) GTEST_SKIP() << "ffprobe (package ffmpeg) is missing";
+  TempDir dir;
+  const auto video = dir / "hooke.mp4";
+  const Result r = springlab("render --lesson hooke --duration 1 --fps 20 --size 640x360 --software --video " + video.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string probe = "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+                            "stream=codec_name,width,height,nb_read_frames -of csv=p=0 '" +
+                            video.string() + "' > '" + (dir / "probe").string() + "'";
+  ASSERT_EQ(std::system(probe.c_str()), 0);
+  EXPECT_EQ(read_file(dir / "probe"), "h264,640,360,20\n");
+}
+
+}  // namespace
+}  // namespace springlab::test
