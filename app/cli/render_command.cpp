@@ -294,7 +294,7 @@ int render(const RenderOptions& o) {
         ui::draw_compare_panel(*shot.accuracy, session, scale, 380.0f * scale, shot.ui.band + 20.0f * scale,
                                width - 400.0f * scale, height * 0.55f);
       if (shot.band) {
-        shot.band->elapsed = session.presentation_time();
+        shot.band->elapsed = session.simulated_target() / session.speed();  // (as the app's)
         ui::draw_lesson_band(*shot.band, static_cast<float>(width), scale);
       }
       ui::OverlayOptions overlay;

@@ -158,7 +158,7 @@ ui::LessonBand InteractiveApp::band() const {
   b.step_title = step.title;
   b.caption = step.caption;
   b.prompt = step.prompt;
-  b.elapsed = session_->presentation_time();
+  b.elapsed = session_->simulated_target() / step.speed;  // (stands still while paused)
   b.interrupted = interrupted_;
   return b;
 }

@@ -16,7 +16,7 @@ struct LessonBand {
   int step = 0;                   // from 0
   std::vector<double> durations;  // s, every step's
   std::string step_title, caption, prompt;
-  double elapsed = 0.0;  // s of presentation time into the step
+  double elapsed = 0.0;  // s into the step: simulated time over the step's speed (paused, it stands still)
   bool interrupted = false;
   bool interactive = true;  // buttons (the app) or none (a video)
   bool last_lesson = true;  // no next lesson after this one

@@ -127,7 +127,6 @@ Opened open_settings(const AppSettings& settings) {
     std::string message = e.what();
     if (message.starts_with("--")) message.erase(0, 2);
     else if (settings.script && message.find("script") != std::string::npos) message = "script: " + message;
-    else if (settings.lesson && message.starts_with("lesson ")) message = "lesson: " + message;
     throw InputError(message.starts_with("link: ") ? message : "link: " + message);
   }
 }

@@ -197,7 +197,8 @@ check("every shipped scene opens and runs", async ({ browser, base }) => {
 check("a bad link says which parameter and opens the default scene", async ({ browser, base }) => {
   for (const [link, words] of [["scene=ropee", ["scene 'ropee'", "rope"]], ["scene=rope&dt=-1", ["dt", "(0, 1]"]],
                                ["method=eulr", ["method", "euler"]], ["speed=2", ["unknown parameter 'speed'"]],
-                               ["compare=euler", ["compare", "2 to 4"]], ["ks=abc", ["ks", "number"]]]) {
+                               ["compare=euler", ["compare", "2 to 4"]], ["ks=abc", ["ks", "number"]],
+                               ["lesson=hooke&step=3", ["step", "steps 1 to 2"]]]) {
     const page = await openApp(browser, base, link);
     const s = await status(page);
     for (const w of words) expect(s.message.includes(w), `${link}: message '${s.message}' lacks '${w}'`);
@@ -241,6 +242,37 @@ check("copy link gives the link of what is shown", async ({ browser, base }) => 
   const link = await page.evaluate(() => window.springlabLink);
   expect(/#scene=rope&compare=euler,verlet&ks=5000$/.test(link), `link ${link}`);
   await page.close();
+});
+
+check("a lesson link teaches it: next and back, the class takes over, it resumes", async ({ browser, base }) => {
+  const page = await openApp(browser, base, "lesson=hooke");
+  let s = await status(page);
+  expect(s.lesson === "hooke" && s.step === 1 && s.scene === "spring" && s.method === "rk4" && s.message === "",
+         `status ${JSON.stringify(s)}`);
+  await pauseAtStart(page);  // (pausing and resetting are not taking over)
+  s = await status(page);
+  expect(!s.interrupted, "pausing interrupted the lesson");
+  await matchesGolden(browser, page, "lesson-hooke");
+  await key(page, "ArrowRight");  // step 2: the same spring with damping
+  s = await status(page);
+  expect(s.step === 2 && s.kd === 2 && !s.interrupted, `after the right arrow: ${JSON.stringify(s)}`);
+  await key(page, "Digit4");  // the class picks another method (the table's fourth): the lesson waits
+  s = await status(page);
+  expect(s.step === 2 && s.interrupted && s.method !== "rk4", `after a method key: ${JSON.stringify(s)}`);
+  await key(page, "PageUp");  // back to step 1, the lesson leading again
+  s = await status(page);
+  expect(s.step === 1 && !s.interrupted && s.method === "rk4" && s.kd === 0, `after page up: ${JSON.stringify(s)}`);
+  await page.close();
+  // A link to a step, and a bad one.
+  const second = await openApp(browser, base, "lesson=2&step=2");
+  s = await status(second);
+  expect(s.lesson === "damping-vs-drag" && s.step === 2 && s.scene === "jelly", `lesson=2&step=2: ${JSON.stringify(s)}`);
+  await second.close();
+  const bad = await openApp(browser, base, "lesson=hoke");
+  s = await status(bad);
+  expect(s.message.includes("lesson 'hoke'") && s.message.includes("hooke") && s.lesson === "",
+         `lesson=hoke: ${JSON.stringify(s)}`);
+  await bad.close();
 });
 
 check("the core's tests pass compiled to WebAssembly", async ({ browser, base }) => {
