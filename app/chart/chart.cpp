@@ -76,13 +76,18 @@ void axis_range(const Chart& chart, bool x_axis, double& lo, double& hi) {
   const Axis& axis = x_axis ? chart.x : chart.y;
   lo = std::numeric_limits<double>::infinity();
   hi = -lo;
-  for (const Series& s : chart.series) {
-    if (s.escapes && !x_axis) continue;  // a diverged lane does not set the scale
-    for (double v : x_axis ? s.x : s.y) {
-      if (!std::isfinite(v) || (axis.log && v <= 0)) continue;
-      lo = std::min(lo, v);
-      hi = std::max(hi, v);
+  // A diverged lane does not set the scale, unless every lane diverged (the single view after a
+  // divergence): then the scale is theirs, so that the growth that led to it shows.
+  for (const bool escaping_too : {false, true}) {
+    for (const Series& s : chart.series) {
+      if (s.escapes && !x_axis && !escaping_too) continue;
+      for (double v : x_axis ? s.x : s.y) {
+        if (!std::isfinite(v) || (axis.log && v <= 0)) continue;
+        lo = std::min(lo, v);
+        hi = std::max(hi, v);
+      }
     }
+    if (std::isfinite(lo) || x_axis) break;
   }
   if (axis.min) lo = *axis.min;
   if (axis.max) hi = *axis.max;
@@ -97,7 +102,9 @@ void axis_range(const Chart& chart, bool x_axis, double& lo, double& hi) {
     return;
   }
   if (hi - lo < 1e-12 * std::max(1.0, std::abs(hi))) {
-    const double pad = std::max(1e-9, 0.5 * std::abs(hi));
+    // No spread: around the value, or -1 to 1 around zero or round-off (a chart's first sample,
+    // at t = 0, of a scene at rest: its energy 1e-27 J would make ticks of 1e-27).
+    const double pad = std::abs(hi) > 1e-6 ? 0.5 * std::abs(hi) : 1.0;
     lo -= pad;
     hi += pad;
   }

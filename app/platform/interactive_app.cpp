@@ -205,6 +205,7 @@ bool InteractiveApp::open(const std::string& scene) {
 
 void InteractiveApp::set_scale(float scale) {
   ui_.scale = scale;
+  if (lesson_) ui_.band = ui::lesson_band_height(scale);
   ImGui::GetStyle() = ImGuiStyle();  // apply_theme scales the sizes it is given
   ui::apply_theme(scale);
 }

@@ -664,16 +664,35 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
   // Divergence in the single view: a banner, and the way out.
   const Simulation& first = session.primary().sim;
   if (!session.comparing() && first.diverged()) {
-    ImGui::SetNextWindowPos(ImVec2(0.5f * width, 0.30f * height), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    ImGui::SetNextWindowSize(ImVec2(560.0f * s, 0.0f));
+    // In a lesson, where diverging is often the point, one line at the foot of the scene (the
+    // explanation on hover), never over the caption or what it describes.
+    const bool lesson = ui.band > 0.0f;
+    const draw::Viewport scene = scene_viewport(ui, width, height);
+    if (lesson)
+      ImGui::SetNextWindowPos(ImVec2(scene.x + 0.5f * scene.width, static_cast<float>(scene.y + scene.height) - pad),
+                              ImGuiCond_Always, ImVec2(0.5f, 1.0f));
+    else
+      ImGui::SetNextWindowPos(ImVec2(0.5f * width, 0.30f * height), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowSize(ImVec2(lesson ? 0.0f : 560.0f * s, 0.0f));
     ImGui::PushStyleColor(ImGuiCol_WindowBg, ImVec4(0.35f, 0.05f, 0.05f, 0.95f));
     ImGui::Begin("Diverged", nullptr, kPanel | ImGuiWindowFlags_AlwaysAutoResize);
     ImGui::Text(first.divergence()->unstable ? "The simulation went numerically unstable at t = %.4g s"
                                              : "The simulation diverged at t = %.4g s",
                 first.divergence()->t);
-    ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextUnformatted(first.divergence()->message().c_str());  // the limit once analysed
-    ImGui::PopTextWrapPos();
+    if (lesson) {
+      if (ImGui::IsItemHovered()) {
+        ImGui::BeginTooltip();
+        ImGui::PushTextWrapPos(520.0f * s);
+        ImGui::TextUnformatted(first.divergence()->message().c_str());
+        ImGui::PopTextWrapPos();
+        ImGui::EndTooltip();
+      }
+      ImGui::SameLine();
+    } else {
+      ImGui::PushTextWrapPos(0.0f);
+      ImGui::TextUnformatted(first.divergence()->message().c_str());  // the limit once analysed
+      ImGui::PopTextWrapPos();
+    }
     if (ImGui::Button("Reset (R)")) session.reset();
     ImGui::End();
     ImGui::PopStyleColor();
@@ -699,6 +718,8 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
                              {"G", "the stability region, with the scene's modes"},
                              {"M", "show the mode that limits the step"},
                              {"P", "presentation mode: larger, for a projector"},
+                             {"\u2192  PgDn  N", "lesson: the next step"},
+                             {"\u2190  PgUp  B", "lesson: the step before"},
                              {"F1", "this help"},
                              {"left drag", "move a particle (release lets it go with its speed)"},
                              {"right drag", "orbit the camera (3D) / pan (2D)"},
