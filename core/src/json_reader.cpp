@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 
 namespace springlab {
@@ -53,6 +55,29 @@ std::string Range::text() const {
 
 bool Range::contains(double x) const {
   return (lo_open ? x > lo : x >= lo) && (hi_open ? x < hi : x <= hi);
+}
+
+json parse_document(const std::string& text, const std::string& where) {
+  try {
+    return json::parse(text);
+  } catch (const json::exception& e) {
+    // nlohmann's message names the line and column; drop its "[json.exception...] " prefix.
+    std::string what = e.what();
+    const auto start = what.find("] ");
+    throw InputError(where + ": not valid JSON: " + (start == std::string::npos ? what : what.substr(start + 2)));
+  }
+}
+
+std::string read_document(const std::string& path, const std::string& what) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(what + " '" + path + "': is a folder, not a " + what + " file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(what + " '" + path + "': cannot be read (no such file, or no permission)");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError(what + " '" + path + "': reading failed");
+  return text.str();
 }
 
 std::string dump(const json& value) {

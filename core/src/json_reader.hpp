@@ -73,6 +73,13 @@ class ObjectReader {
   std::vector<std::string> known_;
 };
 
+// A document's text parsed, or an InputError: "<where>: not valid JSON: <what and where in it>".
+json parse_document(const std::string& text, const std::string& where);
+
+// A file's whole text, or an InputError: "<what> '<path>': cannot be read (...)" (a folder, a
+// missing file, no permission, a failed read). `what` names the kind: "scene", "script", "lesson".
+std::string read_document(const std::string& path, const std::string& what);
+
 // A value as JSON text for messages. A string set with --set may hold bytes that are not UTF-8
 // (a file's cannot: the parser refuses them); they are shown as U+FFFD instead of throwing.
 std::string dump(const json& value);

@@ -3,9 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
-#include <fstream>
 #include <numeric>
-#include <sstream>
 
 #include "script_events.hpp"
 #include "springlab/exact.hpp"
@@ -331,14 +329,7 @@ std::string lesson_name(const std::string& file_name) {
 
 Lesson parse_lesson(const std::string& text, const std::string& file, const LessonSceneOpener& open) {
   const std::string where = "lesson '" + file + "'";
-  json doc;
-  try {
-    doc = json::parse(text);
-  } catch (const json::exception& e) {
-    std::string what = e.what();
-    const auto start = what.find("] ");
-    throw InputError(where + ": not valid JSON: " + (start == std::string::npos ? what : what.substr(start + 2)));
-  }
+  json doc = json_reader::parse_document(text, where);
   if (!doc.is_object()) throw InputError(where + ": must be a JSON object with title, summary and steps");
   Lesson lesson;
   lesson.file = file;
@@ -357,11 +348,7 @@ Lesson parse_lesson(const std::string& text, const std::string& file, const Less
 }
 
 Lesson load_lesson(const std::string& path, const LessonSceneOpener& open) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("lesson '" + path + "': cannot be read (no such file, or no permission)");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_lesson(text.str(), path, open);
+  return parse_lesson(json_reader::read_document(path, "lesson"), path, open);
 }
 
 }  // namespace springlab

@@ -1,7 +1,6 @@
 #include "springlab/scene.hpp"
 
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <sstream>
 
@@ -179,15 +178,7 @@ IkScene read_ik_scene(ObjectReader& r, generators::Builder& b) {
 Scene parse_scene(const std::string& text, const std::string& file,
                   const std::vector<std::string>& overrides) {
   const std::string where = "scene '" + file + "'";
-  json doc;
-  try {
-    doc = json::parse(text);
-  } catch (const json::exception& e) {
-    // nlohmann's message names the line and column; drop its "[json.exception...] " prefix.
-    std::string what = e.what();
-    const auto start = what.find("] ");
-    throw InputError(where + ": not valid JSON: " + (start == std::string::npos ? what : what.substr(start + 2)));
-  }
+  json doc = json_reader::parse_document(text, where);
   for (const std::string& o : overrides) apply_override(doc, o, file);
 
   Scene scene;
@@ -374,15 +365,7 @@ Scene parse_scene(const std::string& text, const std::string& file,
 }
 
 Scene load_scene(const std::string& path, const std::vector<std::string>& overrides) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw InputError("scene '" + path + "': is a folder, not a scene file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("scene '" + path + "': cannot be read (no such file, or no permission)");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw InputError("scene '" + path + "': reading failed");
-  return parse_scene(text.str(), path, overrides);
+  return parse_scene(json_reader::read_document(path, "scene"), path, overrides);
 }
 
 }  // namespace springlab

@@ -1,7 +1,6 @@
 #include "springlab/script.hpp"
 
 #include <algorithm>
-#include <fstream>
 #include <sstream>
 
 #include "script_events.hpp"
@@ -174,14 +173,7 @@ double Script::end_time() const {
 
 Script parse_script(const std::string& text, const std::string& file, const Scene& scene) {
   const std::string where = "script '" + file + "'";
-  json doc;
-  try {
-    doc = json::parse(text);
-  } catch (const json::exception& e) {
-    std::string what = e.what();
-    const auto start = what.find("] ");
-    throw InputError(where + ": not valid JSON: " + (start == std::string::npos ? what : what.substr(start + 2)));
-  }
+  json doc = json_reader::parse_document(text, where);
   Script script;
   script.file = file;
   ObjectReader top(doc, "", where);
@@ -195,11 +187,7 @@ Script parse_script(const std::string& text, const std::string& file, const Scen
 }
 
 Script load_script(const std::string& path, const Scene& scene) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("script '" + path + "': cannot be read (no such file, or no permission)");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_script(text.str(), path, scene);
+  return parse_script(json_reader::read_document(path, "script"), path, scene);
 }
 
 Vec3 path_position(const std::vector<std::pair<double, Vec3>>& path, double elapsed) {

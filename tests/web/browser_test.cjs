@@ -152,7 +152,7 @@ check("method and dt from the panels take effect", async ({ browser, base }) => 
   // button is held for frames: the app reads the keyboard's state once a frame.
   await page.keyboard.down("Control");
   await waitFrames(page, 2);
-  await page.mouse.move(122, 354);
+  await page.mouse.move(122, 384);
   await page.mouse.down();
   await waitFrames(page, 2);
   await page.mouse.up();
