@@ -11,6 +11,9 @@ set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 "$root/scripts/setup.sh"
 "$root/scripts/build.sh"
+# Two tests at once, each with its OpenMP threads: waiting threads sleep instead of spinning (a
+# spinning team took the cores from the other test: the suite ran 254 s instead of 175 s).
+export OMP_WAIT_POLICY="${OMP_WAIT_POLICY:-passive}"
 (cd "${SPRINGLAB_BUILD_DIR:-$root/build}" && ctest --output-on-failure --parallel "$(nproc)" --timeout 600 "$@")
 if [[ $# -eq 0 ]]; then
   "$root/scripts/sanitize.sh"

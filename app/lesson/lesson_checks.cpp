@@ -27,6 +27,7 @@ std::string fmt(const char* format, double x) {
 struct Record {
   std::vector<double> energy, steps, adaptive_step, rejected, x_error;
   std::vector<Vec3> momentum, angular;
+  std::vector<std::int64_t> born;  // particles born so far (emitters)
   std::vector<double> internal;  // kinetic energy besides the rigid motion's
   std::vector<double> time;      // simulated
   int diverged_at = -1;          // the frame that first showed it diverged
@@ -73,6 +74,7 @@ void record(const Lane& lane, int frame, Record& r) {
   }
   r.momentum.push_back(p);
   r.angular.push_back(l);
+  r.born.push_back(sim.emission().born());
   r.internal.push_back(mass > 0.0 ? std::max(0.0, e.kinetic - rigid) : 0.0);
   if (r.diverged_at < 0 && sim.diverged()) r.diverged_at = frame;
   r.scale = sim.energy_scale();
@@ -284,6 +286,21 @@ ClaimResult judge(const LessonClaim& c, const Session& session, const std::vecto
       break;
     }
     case K::Orders: return orders(c, session);
+    case K::Bursts: {
+      // Every frame with more than half a burst's births: whole bursts of `count`, and at most a
+      // shell born beside them.
+      int bursts = 0, odd = 0;
+      for (int k = std::max(i0, 1); k <= i1; ++k) {
+        const std::int64_t births = r.born[k] - r.born[k - 1];
+        if (births <= c.count / 2) continue;
+        bursts += static_cast<int>(births / c.count);
+        if (births % c.count > 1) ++odd;
+      }
+      out.measured = std::to_string(bursts) + " bursts" +
+                     (odd ? ", " + std::to_string(odd) + " frames with births not a whole number of bursts" : "");
+      out.passed = bursts > 0 && odd == 0;
+      break;
+    }
     case K::Particles: break;  // measured while playing (check_step)
   }
   return out;

@@ -21,6 +21,12 @@ std::string fmt(double x) {
   return s;
 }
 
+std::string precise(double x) {
+  char s[32];
+  std::snprintf(s, sizeof s, "%.7g", x);
+  return s;
+}
+
 // The code points of UTF-8 text (the parser has checked it is UTF-8).
 std::vector<char32_t> code_points(const std::string& text) {
   std::vector<char32_t> out;
@@ -89,7 +95,8 @@ const std::vector<std::pair<std::string, LessonClaim::Kind>>& claim_kinds() {
       {"diverges", K::Diverges},          {"holds", K::Holds},                {"follows-exact", K::FollowsExact},
       {"limit", K::Limit},                {"steps-adapt", K::StepsAdapt},     {"momentum-kept", K::MomentumKept},
       {"drag-slows", K::DragSlows},       {"internal-decays", K::InternalDecays}, {"out-of-reach", K::OutOfReach},
-      {"poses-differ", K::PosesDiffer},   {"orders", K::Orders},              {"particles", K::Particles}};
+      {"poses-differ", K::PosesDiffer},   {"orders", K::Orders},              {"particles", K::Particles},
+      {"bursts", K::Bursts}};
   return kinds;
 }
 
@@ -184,6 +191,10 @@ LessonClaim read_claim(ObjectReader& r, const LessonStep& step, const Scene& sce
         r.fail("best", "must be one of the methods in \"orders\" (" + c.best + " is not)");
       break;
     }
+    case K::Bursts:
+      c.count = static_cast<int>(r.integer("count", 1, 10000));
+      if (scene.model.emitters.empty()) r.fail("claim", "bursts needs a scene with emitters; '" + scene.name + "' has none");
+      break;
     case K::Particles:
       c.about = r.number("about", json_reader::positive(kMaxParticles));
       c.within = r.number("within", 0.1, json_reader::positive(1.0));
@@ -290,8 +301,8 @@ std::string LessonClaim::describe() const {
   using K = Kind;
   const std::string who = lane.empty() ? "" : lane + ": ";
   switch (kind) {
-    case K::EnergyGrows: return who + "energy grows" + (per_step ? " by x" + fmt(*per_step) + " a step" : "");
-    case K::EnergyDecays: return who + "energy decays" + (per_step ? " by x" + fmt(*per_step) + " a step" : "");
+    case K::EnergyGrows: return who + "energy grows" + (per_step ? " by x" + precise(*per_step) + " a step" : "");
+    case K::EnergyDecays: return who + "energy decays" + (per_step ? " by x" + precise(*per_step) + " a step" : "");
     case K::EnergyBounded: return who + "energy stays within " + fmt(within) + " of its scale";
     case K::Diverges: return who + "diverges by t = " + fmt(*by) + " s";
     case K::Holds: return who + "holds (no divergence, no instability)";
@@ -299,7 +310,7 @@ std::string LessonClaim::describe() const {
     case K::Limit: return who + "stated stability limit h = " + fmt(h) + " s";
     case K::StepsAdapt: return who + "rejects tries, step varies x" + fmt(ratio) + " or more";
     case K::MomentumKept: return "momentum and angular momentum kept";
-    case K::DragSlows: return "centre of mass slows as exp(-k_drag t / m)";
+    case K::DragSlows: return "centre of mass slows as exp(-k_drag n t / M)";
     case K::InternalDecays: return "the wiggles (motion besides the rigid one) keep under " + fmt(below) + " of their kinetic energy";
     case K::OutOfReach: return who + "target out of reach, chain straight towards it";
     case K::PosesDiffer: return "solvers reach the target in poses " + fmt(min) + " m apart or more";
@@ -309,6 +320,7 @@ std::string LessonClaim::describe() const {
       return s + (best.empty() ? "" : "; most accurate for its cost: " + best);
     }
     case K::Particles: return "about " + fmt(about) + " particles at t = " + fmt(*at) + " s";
+    case K::Bursts: return "bursts of " + std::to_string(count) + " particles";
   }
   return "";
 }

@@ -114,6 +114,8 @@ TEST(Lesson, EachMistakeGetsOneMessageNamingTheFileAndTheField) {
       {R"("scene": "spring", "duration": 2, "caption": "x", "claims": [{"claim": "diverges", "by": 3}])", "/steps/0/claims/0/by: must be"},
       {R"("scene": "spring", "duration": 2, "caption": "x", "claims": [{"claim": "holds", "from": 1, "to": 0.5}])",
        "/steps/0/claims/0/to: must come after from"},
+      {R"("scene": "spring", "duration": 2, "caption": "x", "claims": [{"claim": "bursts", "count": 10}])",
+       "/steps/0/claims/0/claim: bursts needs a scene with emitters"},
       {R"("scene": "spring", "duration": 2, "caption": "x", "claims": [{"claim": "orders", "orders": {"euler": 1, "rk45": 5}}])",
        "/steps/0/claims/0/orders/rk45: must be a fixed-step method"},
       {R"("scene": "spring", "duration": 2, "caption": "x", "claims": [{"claim": "orders", "orders": {"euler": 1, "rk4": 4}, "best": "midpoint"}])",

@@ -49,6 +49,7 @@ struct LessonClaim {
     PosesDiffer,      // every IK lane reaches the target, in poses `min` m apart or more
     Orders,           // measured convergence orders, and the most accurate method for its cost
     Particles,        // about `about` particles alive at `at`, to within `within` (relative)
+    Bursts,           // particles burst: `count` born at once, and at least one such burst
   };
   Kind kind = Kind::Holds;
   std::string lane;  // a method or solver name of the step; "" for the first lane
@@ -56,6 +57,7 @@ struct LessonClaim {
   std::optional<double> to, by, at;
   std::optional<double> per_step;
   double within = 0.0, h = 0.0, ratio = 2.0, below = 0.0, min = 0.0, about = 0.0;
+  int count = 0;
   std::map<std::string, double> orders;  // method name -> order
   std::string best;                      // Orders: the method with the least error for its cost
 
