@@ -76,18 +76,37 @@ void axis_range(const Chart& chart, bool x_axis, double& lo, double& hi) {
   const Axis& axis = x_axis ? chart.x : chart.y;
   lo = std::numeric_limits<double>::infinity();
   hi = -lo;
-  // A diverged lane does not set the scale, unless every lane diverged (the single view after a
-  // divergence): then the scale is theirs, so that the growth that led to it shows.
-  for (const bool escaping_too : {false, true}) {
-    for (const Series& s : chart.series) {
-      if (s.escapes && !x_axis && !escaping_too) continue;
-      for (double v : x_axis ? s.x : s.y) {
-        if (!std::isfinite(v) || (axis.log && v <= 0)) continue;
-        lo = std::min(lo, v);
-        hi = std::max(hi, v);
-      }
+  // The range of a series' values on this axis (infinite when it has none).
+  const auto extent = [&](const Series& s, double& a, double& b) {
+    a = std::numeric_limits<double>::infinity();
+    b = -a;
+    for (double v : x_axis ? s.x : s.y) {
+      if (!std::isfinite(v) || (axis.log && v <= 0)) continue;
+      a = std::min(a, v);
+      b = std::max(b, v);
     }
-    if (std::isfinite(lo) || x_axis) break;
+  };
+  for (const Series& s : chart.series) {
+    if (s.escapes && !x_axis) continue;
+    double a, b;
+    extent(s, a, b);
+    lo = std::min(lo, a);
+    hi = std::max(hi, b);
+  }
+  // A diverged lane sets the scale too where it stays within kEscapeReach times the others'
+  // (explicit Euler's energy growing 25-fold before the audit stops it beside symplectic Euler's:
+  // its growth is the point), or where every lane diverged (the single view after a divergence).
+  if (!x_axis) {
+    const bool none = !std::isfinite(lo);
+    const double reach = none ? 0.0 : kEscapeReach * std::max({hi - lo, std::abs(lo), std::abs(hi)});
+    for (const Series& s : chart.series) {
+      if (!s.escapes) continue;
+      double a, b;
+      extent(s, a, b);
+      if (!std::isfinite(a) || (!none && std::max(std::abs(a), std::abs(b)) > reach)) continue;
+      lo = std::min(lo, a);
+      hi = std::max(hi, b);
+    }
   }
   if (axis.min) lo = *axis.min;
   if (axis.max) hi = *axis.max;

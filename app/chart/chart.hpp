@@ -19,10 +19,13 @@ struct Series {
   bool markers = false;            // a dot on each point
   std::vector<bool> crossed;       // per point: drawn as a cross (a diverged run)
   float width = 2.0f;              // pixels
-  // A series that left the sane range (a diverged lane): it does not set the axes' range, and is
-  // drawn up to where it leaves the plot, with a marker on the edge there; its legend entry is red.
+  // A series that left the sane range (a diverged lane): it does not set the axes' range (unless
+  // it stays within kEscapeReach times the others' values, or every series escapes), and is drawn
+  // up to where it leaves the plot, with a marker on the edge there; its legend entry is red.
   bool escapes = false;
 };
+
+inline constexpr double kEscapeReach = 100.0;
 
 struct Axis {
   std::string label;  // with units: "step h (s)"
