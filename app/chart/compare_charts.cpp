@@ -37,10 +37,12 @@ double ceiling_of(const SweepResult& r) {
 
 }  // namespace
 
-Chart work_precision(const SweepResult& r, const std::string& scene) {
+double work(const Counters& c) { return static_cast<double>(c.force_evals + c.solver_iterations); }
+
+Chart work_precision(const SweepResult& r, const std::string& scene, Cost cost) {
   Chart c;
   c.title = "Work-precision on " + scene + ": error against cost (lower left is better)";
-  c.x.label = "wall time of the run (s)";
+  c.x.label = cost == Cost::Time ? "wall time of the run (s)" : "work: force evaluations + linear-solver iterations";
   c.x.log = true;
   c.y.label = "error: largest RMS position error over the samples (m)";
   c.y.log = true;
@@ -54,7 +56,7 @@ Chart work_precision(const SweepResult& r, const std::string& scene) {
     for (const SweepRun& run : r.runs) {
       // Adaptive methods at their tolerances: the accuracy they choose, at the price they pay.
       if (run.method != m.method || adaptive == std::isnan(run.tolerance)) continue;
-      s.x.push_back(std::max(run.seconds, 1e-6));
+      s.x.push_back(cost == Cost::Time ? std::max(run.seconds, 1e-6) : std::max(work(run.counters), 1.0));
       s.y.push_back(run.diverged ? ceiling : run.error);
       s.crossed.push_back(run.diverged);
     }
@@ -184,7 +186,8 @@ Chart energy_drift(const SweepResult& r, const std::string& scene) {
 }
 
 std::vector<NamedChart> compare_charts(const SweepResult& result, const std::string& scene) {
-  std::vector<NamedChart> out{{"work-precision", work_precision(result, scene)},
+  std::vector<NamedChart> out{{"work-precision", work_precision(result, scene, Cost::Time)},
+                              {"work-precision-work", work_precision(result, scene, Cost::Work)},
                               {"convergence", convergence(result, scene)},
                               {"stability", stability(result, scene)}};
   if (!result.drift.empty()) out.push_back({"energy-drift", energy_drift(result, scene)});

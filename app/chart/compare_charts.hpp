@@ -1,5 +1,6 @@
 // The charts of a sweep (springlab compare, and the app's Compare panel), as chart::Chart data:
-// work-precision (error against time), convergence (error against step, with the fitted orders
+// work-precision (error against wall time, and against work: force evaluations plus linear-solver
+// iterations, the same on every machine and every run), convergence (error against step, with the fitted orders
 // and reference slopes), stability (measured against theoretical largest stable step) and energy
 // drift over a long run. One colour per method, as everywhere in springlab.
 #pragma once
@@ -12,13 +13,16 @@
 
 namespace springlab::chart {
 
-Chart work_precision(const SweepResult& result, const std::string& scene);
+enum class Cost { Time, Work };
+// A run's work: force evaluations plus linear-solver iterations (each about one evaluation's).
+double work(const Counters& counters);
+Chart work_precision(const SweepResult& result, const std::string& scene, Cost cost);
 Chart convergence(const SweepResult& result, const std::string& scene);
 Chart stability(const SweepResult& result, const std::string& scene);
 Chart energy_drift(const SweepResult& result, const std::string& scene);
 
 struct NamedChart {
-  std::string name;  // file stem: "work-precision"
+  std::string name;  // file stem: "work-precision", "work-precision-work", ...
   Chart chart;
 };
 std::vector<NamedChart> compare_charts(const SweepResult& result, const std::string& scene);

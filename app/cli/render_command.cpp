@@ -2,6 +2,8 @@
 // (no display, no GPU needed). Frame k shows the scene at presentation time k / fps (session.hpp);
 // a lesson's steps follow one another, each for its duration, under the lesson's band. The output
 // appears only when complete.
+#include <imgui.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -126,6 +128,7 @@ Shot lesson_shot(const Lesson& lesson, int k, int number, int count, double fps,
   if (step.accuracy) {
     shot.accuracy = std::make_unique<ui::ComparePanel>();
     shot.accuracy->open = true;
+    shot.accuracy->chart = 1;  // error against work: the same pixels on every machine
     for (const LessonClaim& c : step.claims)
       for (const auto& [name, order] : c.orders) shot.accuracy->methods[static_cast<int>(*find_method(name))] = true;
     shot.accuracy->start(*shot.session);
@@ -290,9 +293,11 @@ int render(const RenderOptions& o) {
     const draw::Frame frame = draw::build_frame(session, shot.ui.view, viewport);
     offscreen.draw(frame, [&] {
       if (panels) ui::draw_panels(session, shot.ui, stats, width, height);
-      if (shot.accuracy)
-        ui::draw_compare_panel(*shot.accuracy, session, scale, 380.0f * scale, shot.ui.band + 20.0f * scale,
-                               width - 400.0f * scale, height * 0.55f);
+      if (shot.accuracy) {  // in the scene's and the charts' place, as in the app's lesson
+        ImGui::SetNextWindowBgAlpha(1.0f);
+        ui::draw_compare_panel(*shot.accuracy, session, scale, viewport.x + 8.0f * scale, viewport.y + 8.0f * scale,
+                               width - viewport.x - 16.0f * scale, height - viewport.y - 16.0f * scale);
+      }
       if (shot.band) {
         shot.band->elapsed = session.simulated_target() / session.speed();  // (as the app's)
         ui::draw_lesson_band(*shot.band, static_cast<float>(width), scale);

@@ -8,6 +8,7 @@
 #include <Eigen/Dense>
 
 #include "lesson/lesson_library.hpp"
+#include "chart/compare_charts.hpp"
 #include "springlab/sweep.hpp"
 #include "ui/compare_panel.hpp"
 
@@ -123,8 +124,8 @@ ClaimResult orders(const LessonClaim& claim, const Session& session) {
     double most = 0.0, least = std::numeric_limits<double>::infinity();
     for (const SweepRun& run : result.runs)
       if (run.method == m.method && !run.diverged) {
-        most = std::max(most, static_cast<double>(run.counters.force_evals));
-        least = std::min(least, static_cast<double>(run.counters.force_evals));
+        most = std::max(most, chart::work(run.counters));
+        least = std::min(least, chart::work(run.counters));
       }
     cost = std::min(cost, most);
     floor = std::max(floor, least);
@@ -136,7 +137,7 @@ ClaimResult orders(const LessonClaim& claim, const Session& session) {
     std::vector<std::pair<double, double>> line;  // (ln cost, ln error)
     for (const SweepRun& run : result.runs)
       if (run.method == m.method && !run.diverged && run.error > 0.0)
-        line.emplace_back(std::log(static_cast<double>(run.counters.force_evals)), std::log(run.error));
+        line.emplace_back(std::log(chart::work(run.counters)), std::log(run.error));
     std::sort(line.begin(), line.end());
     if (line.empty()) continue;
     const double c = std::clamp(std::log(cost), line.front().first, line.back().first);
@@ -149,7 +150,7 @@ ClaimResult orders(const LessonClaim& claim, const Session& session) {
       }
     if (error < best_error) best_error = error, best = method_info(m.method).name;
   }
-  out.measured += "; least error at " + fmt("%.3g", cost) + " force evaluations: " + best + fmt(" (%.2g m)", std::exp(best_error));
+  out.measured += "; least error at the work of " + fmt("%.3g", cost) + " force evaluations: " + best + fmt(" (%.2g m)", std::exp(best_error));
   if (best != claim.best) out.passed = false;
   return out;
 }

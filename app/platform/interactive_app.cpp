@@ -112,7 +112,7 @@ void InteractiveApp::lesson_step(int k) {
     accuracy_.methods = {};
     for (const LessonClaim& c : step.claims)
       for (const auto& [name, order] : c.orders) accuracy_.methods[static_cast<int>(*find_method(name))] = true;
-    accuracy_.chart = 0;  // work-precision
+    accuracy_.chart = 1;  // error against work: the same on every machine
     accuracy_.start(*session_);
   }
 }
@@ -321,8 +321,15 @@ void InteractiveApp::frame(const FrameSize& size) {
   }
   accuracy_.open = ui_.accuracy;
   accuracy_.sweep.advance();  // (without threads: the sweep's next pieces; else nothing)
-  ui::draw_compare_panel(accuracy_, session, scale, 380.0f * scale, ui_.band + 20.0f * scale, win_w - 400.0f * scale,
-                         win_h * 0.62f);
+  if (lesson_) {  // the step is about this chart: it takes the scene's and the charts' place
+    const draw::Viewport area = ui::scene_viewport(ui_, win_w, win_h);
+    ImGui::SetNextWindowBgAlpha(1.0f);  // (the charts under it do not show through)
+    ui::draw_compare_panel(accuracy_, session, scale, area.x + 8.0f * scale, area.y + 8.0f * scale,
+                           win_w - area.x - 16.0f * scale, win_h - area.y - 16.0f * scale);
+  } else {
+    ui::draw_compare_panel(accuracy_, session, scale, 380.0f * scale, 20.0f * scale, win_w - 400.0f * scale,
+                           win_h * 0.62f);
+  }
   ui_.accuracy = accuracy_.open;
   ui_.view.line_scale = ui_.presentation ? 1.6f : 1.0f;
   ui::OverlayOptions overlay;

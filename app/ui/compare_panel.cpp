@@ -77,12 +77,12 @@ void draw_compare_panel(ComparePanel& panel, const app::Session& session, float 
                         "each against the exact solution or a fine RK4 run.", panel.step_range);
   } else {
     const auto charts = chart::compare_charts(result, session.scene().name);
-    const char* tabs[] = {"work-precision", "convergence", "stability", "energy drift"};
-    for (int k = 0; k < 4; ++k) {
+    const char* tabs[] = {"error vs time", "error vs work", "convergence", "stability", "energy drift"};
+    for (int k = 0; k < 5; ++k) {
       if (k > 0) ImGui::SameLine();
       if (ImGui::RadioButton(tabs[k], panel.chart == k)) panel.chart = k;
     }
-    if (running && panel.chart >= 2) ImGui::TextDisabled("(measured at the end of the sweep)");
+    if (running && panel.chart >= 3) ImGui::TextDisabled("(measured at the end of the sweep)");
     const int k = std::min(panel.chart, static_cast<int>(charts.size()) - 1);
     chart::chart_widget("##sweep", charts[k].chart, ImGui::GetContentRegionAvail());
   }

@@ -32,7 +32,8 @@ TEST(Compare, OnTheSpringWritesResultsSummaryAndCharts) {
   const Result r = springlab("compare spring --software --points 5 --duration 1 --drift-duration 2 --out " +
                              dir.path.string());
   ASSERT_EQ(r.status, 0) << r.err;
-  for (const char* file : {"results.csv", "summary.csv", "work-precision.png", "work-precision.svg", "convergence.png",
+  for (const char* file : {"results.csv", "summary.csv", "work-precision.png", "work-precision.svg",
+                           "work-precision-work.png", "work-precision-work.svg", "convergence.png",
                            "convergence.svg", "stability.png", "stability.svg", "energy-drift.png", "energy-drift.svg"})
     EXPECT_TRUE(fs::exists(dir / file)) << file;
   const auto summary = csv(dir / "summary.csv");
@@ -84,7 +85,7 @@ TEST_P(EveryScene, IsChartedWithoutError) {
     return;
   }
   ASSERT_EQ(r.status, 0) << r.err;
-  for (const char* chart : {"work-precision", "convergence", "stability", "energy-drift"}) {
+  for (const char* chart : {"work-precision", "work-precision-work", "convergence", "stability", "energy-drift"}) {
     EXPECT_TRUE(fs::exists(dir / (std::string(chart) + ".png"))) << chart;
     EXPECT_TRUE(fs::exists(dir / (std::string(chart) + ".svg"))) << chart;
   }

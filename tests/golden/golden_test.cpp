@@ -133,13 +133,13 @@ INSTANTIATE_TEST_SUITE_P(Cases, Golden, ::testing::ValuesIn(load_cases()), [](co
   return name;
 });
 
-// The deterministic charts of `compare spring` (not work-precision: it plots wall time).
+// The deterministic charts of `compare spring` (not work-precision against wall time).
 TEST(GoldenCharts, OfTheSpring) {
   TempDir dir;
   const Result r = springlab("compare spring --software --points 6 --duration 1 --drift-duration 5 "
                              "--tol-range 1e-9:1e-5 --out '" + dir.path.string() + "'");
   ASSERT_EQ(r.status, 0) << r.err;
-  for (const char* chart : {"convergence", "stability", "energy-drift"}) {
+  for (const char* chart : {"work-precision-work", "convergence", "stability", "energy-drift"}) {
     const fs::path actual_path = dir / (std::string(chart) + ".png");
     const fs::path reference = golden_dir() / ("charts-spring-" + std::string(chart) + ".png");
     if (std::getenv("SPRINGLAB_UPDATE_GOLDENS")) {
