@@ -25,6 +25,9 @@ export OMP_WAIT_POLICY="${OMP_WAIT_POLICY:-passive}"
 # cloth is above the parallel threshold and has four particle blocks). The same for the limits
 # test (Scenes/Limits.*: every shipped scene run at 0.95 and 1.25 of each method's limit, tens
 # of seconds in Release, past the 600 s timeout under the sanitizers); the analysis it checks
-# is run here by the stability tests.
+# is run here by the stability tests. And the two longest bisections of the stable step by runs
+# (Analysis.RunsFindTheAnalysisLimits, Sweep.OnTheSpringOrdersAndStabilityLimits...: a minute
+# each here, a few seconds in Release): measured_limit and the sweep run here in the other Sweep
+# and Analysis tests.
 ctest --output-on-failure --parallel "$(nproc)" --timeout 600 -L 'core|fuzz' \
-  -E '^Determinism\.ThreadCountDoesNotChangeABit$|^Scenes/Limits\.' "$@"
+  -E '^Determinism\.ThreadCountDoesNotChangeABit$|^Scenes/Limits\.|^Analysis\.RunsFindTheAnalysisLimits$|^Sweep\.OnTheSpringOrdersAndStabilityLimitsAreThoseOfNumericsMd$' "$@"
