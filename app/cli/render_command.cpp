@@ -120,31 +120,15 @@ Shot lesson_shot(const Lesson& lesson, int k, int number, int count, double fps,
   Shot shot;
   shot.session = step_session(step, fps, false);
   shot.ui = shot_ui(*shot.session, shot.session->scene().name, scale);
-  shot.ui.lesson = lesson.name;
-  shot.ui.band = ui::lesson_band_height(scale);
-  shot.ui.lesson_charts = step.charts;
-  shot.ui.region = step.region;
-  shot.ui.view.mode = step.mode;
+  auto accuracy = std::make_unique<ui::ComparePanel>();
+  ui::show_step(shot.ui, *accuracy, lesson, k);
   if (step.accuracy) {
-    shot.accuracy = std::make_unique<ui::ComparePanel>();
-    shot.accuracy->open = true;
-    shot.accuracy->chart = 1;  // error against work: the same pixels on every machine
-    for (const LessonClaim& c : step.claims)
-      for (const auto& [name, order] : c.orders) shot.accuracy->methods[static_cast<int>(*find_method(name))] = true;
-    shot.accuracy->start(*shot.session);
-    shot.accuracy->sweep.wait();
+    accuracy->start(*shot.session);
+    accuracy->sweep.wait();
+    shot.accuracy = std::move(accuracy);
   }
-  ui::LessonBand band;
-  band.number = number;
-  band.count = count;
-  band.title = lesson.title;
-  band.step = k;
-  for (const LessonStep& s : lesson.steps) band.durations.push_back(s.duration);
-  band.step_title = step.title;
-  band.caption = step.caption;
-  band.prompt = step.prompt;
-  band.interactive = false;
-  shot.band = band;
+  shot.band = ui::band_of(lesson, k, number, count);
+  shot.band->interactive = false;
   shot.frames = std::max<std::int64_t>(1, std::llround(step.duration * fps));
   return shot;
 }
@@ -186,10 +170,8 @@ int render(const RenderOptions& o) {
   std::int64_t frames = 0;
   if (o.lesson) {
     lesson = open_lesson(*o.lesson);
-    const std::vector<std::string> files = shipped_lesson_files();
-    lesson_count = static_cast<int>(files.size());
-    const auto at = std::find(files.begin(), files.end(), lesson->file);
-    if (at != files.end()) lesson_number = static_cast<int>(at - files.begin()) + 1;
+    lesson_count = static_cast<int>(shipped_lesson_files().size());
+    lesson_number = course_number(*lesson);
     name = "lesson " + lesson->name;
     shots.resize(lesson->steps.size());  // made as each step starts
     for (std::size_t k = 0; k < shots.size(); ++k) {

@@ -38,6 +38,12 @@ Lesson open_lesson(const std::string& name) {
                    (near.empty() ? "" : "; did you mean '" + near + "'?") + " (shipped: " + list + ")");
 }
 
+int course_number(const Lesson& lesson) {
+  const std::vector<std::string> files = shipped_lesson_files();
+  const auto at = std::find(files.begin(), files.end(), lesson.file);
+  return at == files.end() ? 0 : static_cast<int>(at - files.begin()) + 1;
+}
+
 void check_lesson_step(const Lesson& lesson, int step, const std::string& option) {
   if (step < 1 || step > static_cast<int>(lesson.steps.size()))
     throw InputError(option + ": lesson '" + lesson.name + "' has steps 1 to " + std::to_string(lesson.steps.size()) +

@@ -19,6 +19,9 @@ std::vector<std::string> shipped_lesson_files();
 // naming the shipped lessons.
 Lesson open_lesson(const std::string& name_or_path);
 
+// A lesson's place in the course, from 1 (0: not a shipped lesson, a file of one's own).
+int course_number(const Lesson& lesson);
+
 // Checks a step number from 1 given with `option` ("--step", "link: step"). Throws InputError:
 // "--step: lesson 'hooke' has steps 1 to 2, got 5".
 void check_lesson_step(const Lesson& lesson, int step, const std::string& option);

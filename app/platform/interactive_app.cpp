@@ -78,10 +78,7 @@ void InteractiveApp::start_lesson(Lesson lesson, int step) {
   const int steps = static_cast<int>(lesson.steps.size());
   lesson_ = std::move(lesson);
   ui_.lesson = lesson_->name;
-  // Its place in the course, if it is a shipped lesson (a file of one's own has none).
-  const std::vector<std::string> files = shipped_lesson_files();
-  const auto at = std::find(files.begin(), files.end(), lesson_->file);
-  lesson_number_ = at == files.end() ? 0 : static_cast<int>(at - files.begin()) + 1;
+  lesson_number_ = course_number(*lesson_);
   lesson_step(std::clamp(step, 0, steps - 1));
 }
 
@@ -101,20 +98,8 @@ void InteractiveApp::lesson_step(int k) {
   drag_.reset();
   step_ = k;
   interrupted_ = false;
-  ui_.lesson = lesson_->name;
-  ui_.band = ui::lesson_band_height(ui_.scale);
-  ui_.lesson_charts = step.charts;
-  ui_.region = step.region;
-  ui_.view.mode = step.mode;
-  ui_.accuracy = accuracy_.open = step.accuracy;
-  if (step.accuracy) {
-    // The methods whose orders the step claims (none named: every method).
-    accuracy_.methods = {};
-    for (const LessonClaim& c : step.claims)
-      for (const auto& [name, order] : c.orders) accuracy_.methods[static_cast<int>(*find_method(name))] = true;
-    accuracy_.chart = 1;  // error against work: the same on every machine
-    accuracy_.start(*session_);
-  }
+  ui::show_step(ui_, accuracy_, *lesson_, k);
+  if (step.accuracy) accuracy_.start(*session_);
 }
 
 void InteractiveApp::next_step() {
@@ -147,18 +132,8 @@ void InteractiveApp::end_lesson() {
 }
 
 ui::LessonBand InteractiveApp::band() const {
-  ui::LessonBand b;
-  b.number = lesson_number_;
-  b.count = static_cast<int>(ui_.lessons.size());
-  b.last_lesson = lesson_number_ == 0 || lesson_number_ >= b.count;
-  b.title = lesson_->title;
-  b.step = step_;
-  for (const LessonStep& s : lesson_->steps) b.durations.push_back(s.duration);
-  const LessonStep& step = lesson_->steps[step_];
-  b.step_title = step.title;
-  b.caption = step.caption;
-  b.prompt = step.prompt;
-  b.elapsed = session_->simulated_target() / step.speed;  // (stands still while paused)
+  ui::LessonBand b = ui::band_of(*lesson_, step_, lesson_number_, static_cast<int>(ui_.lessons.size()));
+  b.elapsed = session_->simulated_target() / lesson_->steps[step_].speed;  // (stands still while paused)
   b.interrupted = interrupted_;
   return b;
 }

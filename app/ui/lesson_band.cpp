@@ -99,4 +99,34 @@ BandRequests draw_lesson_band(const LessonBand& band, float width, float scale) 
   return out;
 }
 
+LessonBand band_of(const Lesson& lesson, int k, int number, int count) {
+  LessonBand b;
+  b.number = number;
+  b.count = count;
+  b.last_lesson = number == 0 || number >= count;
+  b.title = lesson.title;
+  b.step = k;
+  for (const LessonStep& s : lesson.steps) b.durations.push_back(s.duration);
+  const LessonStep& step = lesson.steps[k];
+  b.step_title = step.title;
+  b.caption = step.caption;
+  b.prompt = step.prompt;
+  return b;
+}
+
+void show_step(UiState& ui, ComparePanel& accuracy, const Lesson& lesson, int k) {
+  const LessonStep& step = lesson.steps[k];
+  ui.lesson = lesson.name;
+  ui.band = lesson_band_height(ui.scale);
+  ui.lesson_charts = step.charts;
+  ui.region = step.region;
+  ui.view.mode = step.mode;
+  ui.accuracy = accuracy.open = step.accuracy;
+  if (!step.accuracy) return;
+  accuracy.methods = {};
+  for (const LessonClaim& c : step.claims)
+    for (const auto& [name, order] : c.orders) accuracy.methods[static_cast<int>(*find_method(name))] = true;
+  accuracy.chart = 1;  // error against work
+}
+
 }  // namespace springlab::ui

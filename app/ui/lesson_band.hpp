@@ -8,6 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "springlab/lesson.hpp"
+#include "ui/compare_panel.hpp"
+#include "ui/panels.hpp"
+
 namespace springlab::ui {
 
 struct LessonBand {
@@ -31,5 +35,15 @@ struct BandRequests {
 float lesson_band_height(float scale);
 
 BandRequests draw_lesson_band(const LessonBand& band, float width, float scale);
+
+// The band of step `step` (from 0) of a lesson, `number` of `count` in the course (elapsed and
+// interrupted are the caller's to set).
+LessonBand band_of(const Lesson& lesson, int step, int number, int count);
+
+// What a step shows, set in the panels' state: the band's room, its charts, the stability region,
+// the limiting mode, and the accuracy panel (open or not; its methods those an `orders` claim
+// names, none: every method; error against work, the same on every machine). Starting the
+// accuracy sweep is the caller's.
+void show_step(UiState& ui, ComparePanel& accuracy, const Lesson& lesson, int step);
 
 }  // namespace springlab::ui
