@@ -12,20 +12,9 @@
 #include "springlab/error.hpp"
 #include "util/atomic_file.hpp"
 
-namespace {
-
-extern "C" void on_signal(int signal) {
-  springlab::app::remove_pending_outputs();
-  std::signal(signal, SIG_DFL);
-  std::raise(signal);
-}
-
-}  // namespace
-
 int main(int argc, char** argv) {
   using namespace springlab::app;
-  std::signal(SIGINT, on_signal);
-  std::signal(SIGTERM, on_signal);
+  remove_pending_outputs_on_interrupt();
   std::signal(SIGPIPE, SIG_IGN);
 
   CLI::App app("springlab: mass-spring and particle simulation for teaching", "springlab");

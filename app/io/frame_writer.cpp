@@ -123,7 +123,11 @@ class Mp4Video final : public FrameWriter {
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_adddup2(&actions, fds[0], 0);
     posix_spawn_file_actions_addclose(&actions, fds[1]);
-    const int rc = posix_spawn(&pid_, ffmpeg.c_str(), &actions, nullptr, const_cast<char**>(argv), environ);
+    posix_spawnattr_t attributes;
+    posix_spawnattr_init(&attributes);
+    unblock_interrupts_in_child(attributes);
+    const int rc = posix_spawn(&pid_, ffmpeg.c_str(), &actions, &attributes, const_cast<char**>(argv), environ);
+    posix_spawnattr_destroy(&attributes);
     posix_spawn_file_actions_destroy(&actions);
     ::close(fds[0]);
     if (rc != 0) {

@@ -1,8 +1,10 @@
 // Output that appears whole or not at all: written under a temporary name in the same folder
 // and renamed over the final name only when complete. Destroyed without commit() (an error, an
-// exception), or on SIGINT/SIGTERM (remove_pending_outputs in the signal handler), the
-// temporary file is removed.
+// exception), or on SIGINT/SIGTERM/SIGHUP (remove_pending_outputs_on_interrupt), the temporary
+// file is removed.
 #pragma once
+
+#include <spawn.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -24,6 +26,8 @@ class TemporaryPath {
   const std::string& what() const { return what_; }
   // Renames the temporary file to the final name. Throws std::runtime_error on failure.
   void commit();
+  // Opens the temporary file for writing (nullptr on failure, errno set); never after an interrupt.
+  std::FILE* create() const;
 
  private:
   std::filesystem::path final_, temp_;
@@ -47,7 +51,12 @@ class AtomicFile {
   std::FILE* file_ = nullptr;
 };
 
-// Removes every temporary file not yet committed (async-signal-safe).
-void remove_pending_outputs();
+// Call first thing in main: from then on SIGINT, SIGTERM and SIGHUP are taken by one thread that
+// removes every temporary file not yet committed and then lets the signal end the process.
+void remove_pending_outputs_on_interrupt();
+
+// For a child spawned after the call above (ffmpeg): it starts with no signal blocked, so that
+// Ctrl-C stops it too.
+void unblock_interrupts_in_child(posix_spawnattr_t& attributes);
 
 }  // namespace springlab::app
