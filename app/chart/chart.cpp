@@ -20,7 +20,8 @@ std::string format_tick(double value, double step) {
       std::snprintf(s, sizeof s, "%.*f", std::min(decimals, 12), value);
       return s;
     }
-    std::snprintf(s, sizeof s, "%.4g", value);
+    // %.5g, not %.4g: 10000 stays "10000" (%.4g writes "1e+04", beside "1e5" from the branch below).
+    std::snprintf(s, sizeof s, "%.5g", value);
   } else {  // 1e-6, 2.5e7: a short mantissa and a bare exponent
     int exponent = static_cast<int>(std::floor(std::log10(a)));
     double mantissa = value / std::pow(10.0, exponent);

@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "draw/palette.hpp"
+#include "ui/text_wrap.hpp"
 
 namespace springlab::chart {
 
@@ -23,6 +26,19 @@ struct Mapping {
     return a + static_cast<float>(t) * (b - a);
   }
 };
+
+// The title, or as many of its words as fit `width` followed by an ellipsis.
+std::string fitted_title(const Chart& chart, float width) {
+  const auto fits = [&](const std::string& t) { return ImGui::CalcTextSize(t.c_str()).x <= width; };
+  if (fits(chart.title)) return chart.title;
+  std::string cut = chart.title;
+  for (std::size_t space = cut.rfind(' '); space != std::string::npos && space > 0; space = cut.rfind(' ')) {
+    cut.resize(space);
+    while (!cut.empty() && (cut.back() == ',' || cut.back() == ':' || cut.back() == '(')) cut.pop_back();
+    if (fits(cut + "\u2026")) return cut + "\u2026";
+  }
+  return cut;
+}
 
 }  // namespace
 
@@ -49,8 +65,7 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
   if (right - left < 20 || bottom - top < 20) return;
   const Mapping mx{xlo, xhi, chart.x.log, left, right}, my{ylo, yhi, chart.y.log, bottom, top};
 
-  if (!chart.title.empty())
-    list->AddText(ImVec2(origin.x, origin.y), text, chart.title.c_str());
+  if (!chart.title.empty()) list->AddText(ImVec2(origin.x, origin.y), text, fitted_title(chart, size.x).c_str());
   list->AddText(ImVec2(origin.x, top - line_h * 1.1f), text, chart.y.label.c_str());
   const ImVec2 xl = ImGui::CalcTextSize(chart.x.label.c_str());
   list->AddText(ImVec2(0.5f * (left + right) - 0.5f * xl.x, bottom + line_h * 1.15f), text, chart.x.label.c_str());
@@ -60,8 +75,10 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
     const float x = mx(t.value);
     list->AddLine(ImVec2(x, top), ImVec2(x, bottom), t.major ? grid : ImGui::GetColorU32(ImGuiCol_Border, 0.2f));
     if (!t.label.empty()) {
+      // Centred under its tick, but kept inside the chart (the last one sits on the right edge).
       const ImVec2 s = ImGui::CalcTextSize(t.label.c_str());
-      list->AddText(ImVec2(x - 0.5f * s.x, bottom + 0.15f * line_h), text, t.label.c_str());
+      const float at = std::clamp(x - 0.5f * s.x, origin.x, origin.x + size.x - s.x - 2.0f);
+      list->AddText(ImVec2(at, bottom + 0.15f * line_h), text, t.label.c_str());
     }
   }
   for (const Tick& t : yt) {
@@ -127,24 +144,26 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
     // At most the plot's width: a longer label wraps onto a second line.
     const float most = std::max(60.0f, right - left - 40.0f);
     float width = 0.0f, height = 0.0f;
-    for (const Series& s : chart.series)
-      if (!s.label.empty()) {
-        const ImVec2 size = ImGui::CalcTextSize(s.label.c_str(), nullptr, false, most);
-        width = std::max(width, size.x);
-        height += size.y;
-      }
+    std::vector<std::string> labels;  // wrapped at spaces, never inside a number ("x1.33")
+    for (const Series& s : chart.series) {
+      labels.push_back(ui::wrap_at_spaces(s.label, ImGui::GetFont(), ImGui::GetFontSize(), most));
+      if (s.label.empty()) continue;
+      const ImVec2 size = ImGui::CalcTextSize(labels.back().c_str());
+      width = std::max(width, size.x);
+      height += size.y;
+    }
     const float x = right - width - 34.0f;
     float y = top + 4.0f;
     if (height > 0.0f)
       list->AddRectFilled(ImVec2(x - 6, y - 2), ImVec2(right - 4, y + height + 2), ImGui::GetColorU32(ImGuiCol_WindowBg, 0.85f),
                           3.0f);
-    for (const Series& s : chart.series) {
+    for (std::size_t k = 0; k < chart.series.size(); ++k) {
+      const Series& s = chart.series[k];
       if (s.label.empty()) continue;
       const float mid = y + 0.5f * line_h;
       list->AddLine(ImVec2(x, mid), ImVec2(x + 20, mid), color(s.color), 3.0f);
-      list->AddText(nullptr, 0.0f, ImVec2(x + 26, y), s.escapes ? color(draw::kDiverged) : text, s.label.c_str(),
-                    nullptr, most);
-      y += ImGui::CalcTextSize(s.label.c_str(), nullptr, false, most).y;
+      list->AddText(ImVec2(x + 26, y), s.escapes ? color(draw::kDiverged) : text, labels[k].c_str());
+      y += ImGui::CalcTextSize(labels[k].c_str()).y;
     }
   }
   list->PopClipRect();
@@ -154,6 +173,12 @@ void chart_widget(const char* id, const Chart& chart, ImVec2 size) {
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   ImGui::InvisibleButton(id, size);
   draw_imgui(ImGui::GetWindowDrawList(), origin, size, chart);
+  // A title cut to the chart's width is read whole by pointing at the chart.
+  if (ImGui::IsItemHovered() && fitted_title(chart, size.x) != chart.title) {
+    ImGui::BeginTooltip();
+    ui::text_wrapped(chart.title, {}, 30.0f * ImGui::GetFontSize());  // about 30 em
+    ImGui::EndTooltip();
+  }
 }
 
 }  // namespace springlab::chart

@@ -65,9 +65,13 @@ std::string to_svg(const Chart& chart, int width, int height) {
     const double x = mx(t.value);
     s << "<line x1=\"" << x << "\" y1=\"" << top << "\" x2=\"" << x << "\" y2=\"" << bottom << "\" stroke=\"" << grid
       << "\" stroke-opacity=\"" << (t.major ? 1.0 : 0.45) << "\"/>\n";
-    if (!t.label.empty())
-      s << "<text x=\"" << x << "\" y=\"" << bottom + line << "\" fill=\"" << text << "\" text-anchor=\"middle\">"
+    if (!t.label.empty()) {
+      // Centred under its tick, but kept inside the picture (the last one sits on the right edge).
+      const double half = 0.5 * t.label.size() * kChar;
+      const double at = std::clamp(x, half + 2.0, width - half - 4.0);
+      s << "<text x=\"" << at << "\" y=\"" << bottom + line << "\" fill=\"" << text << "\" text-anchor=\"middle\">"
         << escape(t.label) << "</text>\n";
+    }
   }
   for (const Tick& t : yt) {
     const double y = my(t.value);

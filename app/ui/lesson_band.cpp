@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include "ui/text_wrap.hpp"
 #include "ui/theme.hpp"
 
 namespace springlab::ui {
@@ -62,9 +63,8 @@ BandRequests draw_lesson_band(const LessonBand& band, float width, float scale) 
   ImGuiIO& io = ImGui::GetIO();
   const bool caption_font = io.Fonts->Fonts.Size > kCaptionFont;
   if (caption_font) ImGui::PushFont(io.Fonts->Fonts[kCaptionFont]);
-  ImGui::PushTextWrapPos(width - kPad * scale);
-  ImGui::TextUnformatted(band.caption.c_str());
-  ImGui::PopTextWrapPos();
+  const std::string caption = wrap_at_spaces(band.caption, ImGui::GetFont(), ImGui::GetFontSize(), width - 2 * kPad * scale);
+  ImGui::TextUnformatted(caption.c_str());
   if (caption_font) ImGui::PopFont();
 
   // What the class may try, or the way back once it has taken over; on the band's last row.

@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "draw/camera.hpp"
 #include "draw/palette.hpp"
@@ -16,6 +19,58 @@ ImU32 u32(const draw::Rgba& c) { return ImGui::ColorConvertFloat4ToU32(ImVec4(c.
 
 std::string lane_name(const app::Lane& lane) {
   return lane.ik ? ik_solver_info(lane.ik->solver).label : method_info(lane.sim.settings().method).label;
+}
+
+const ImU32 kText = IM_COL32(240, 242, 245, 255), kBack = IM_COL32(10, 12, 14, 190);
+
+// The compare legend, top right: each lane's colour, name and its own clock (a lane that diverged
+// stopped).
+struct Legend {
+  std::vector<std::string> rows;
+  ImVec2 at;     // the first row's swatch
+  ImVec4 box;    // its background: x0, y0, x1, y1
+};
+
+Legend legend_of(const app::Session& session, const draw::Viewport& viewport, float scale) {
+  const float pad = 10.0f * scale, line = ImGui::GetTextLineHeightWithSpacing();
+  Legend legend;
+  float width = 0.0f;
+  for (const app::Lane& lane : session.lanes()) {
+    std::string row = lane_name(lane);
+    char s[96];
+    if (lane.ik) {
+      std::snprintf(s, sizeof s, "  %d it., error %.2g m%s", lane.ik->status.iterations, lane.ik->status.error,
+                    lane.ik->status.converged ? "" : lane.ik->status.stalled ? " (stuck)" : "");
+    } else if (lane.sim.diverged()) {
+      std::snprintf(s, sizeof s, "  %s at t = %.3g s", lane.sim.divergence()->unstable ? "went unstable" : "diverged",
+                    lane.sim.divergence()->t);
+    } else {
+      std::snprintf(s, sizeof s, "  t = %.3f s", lane.sim.state().t);
+    }
+    row += s;
+    width = std::max(width, ImGui::CalcTextSize(row.c_str()).x);
+    legend.rows.push_back(row);
+  }
+  const float swatch = 22.0f * scale;
+  legend.at = ImVec2(viewport.x + viewport.width - pad - width - swatch - 10.0f * scale, viewport.y + pad);
+  legend.box = ImVec4(legend.at.x - 8, legend.at.y - 4, viewport.x + viewport.width - pad + 4,
+                      legend.at.y + legend.rows.size() * line + 2);
+  return legend;
+}
+
+void draw_legend(const app::Session& session, const Legend& legend, float scale) {
+  ImDrawList* dl = ImGui::GetForegroundDrawList();
+  const float line = ImGui::GetTextLineHeightWithSpacing(), swatch = 22.0f * scale;
+  dl->AddRectFilled(ImVec2(legend.box.x, legend.box.y), ImVec2(legend.box.z, legend.box.w), kBack, 4.0f);
+  for (std::size_t k = 0; k < legend.rows.size(); ++k) {
+    const app::Lane& lane = session.lanes()[k];
+    const float y = legend.at.y + k * line;
+    const draw::Rgba c = lane.ik ? draw::solver_color(lane.ik->solver) : draw::method_color(lane.sim.settings().method);
+    dl->AddLine(ImVec2(legend.at.x, y + 0.5f * line), ImVec2(legend.at.x + swatch, y + 0.5f * line), u32(c),
+                4.0f * scale);
+    dl->AddText(ImVec2(legend.at.x + swatch + 8.0f * scale, y), lane.sim.diverged() ? u32(draw::kDiverged) : kText,
+                legend.rows[k].c_str());
+  }
 }
 }  // namespace
 
@@ -30,8 +85,8 @@ void draw_overlay(const app::Session& session, const draw::ViewCamera& camera, c
                   const std::string& scene_name, const OverlayOptions& options) {
   ImDrawList* dl = ImGui::GetForegroundDrawList();
   const float scale = options.scale;
-  const float pad = 10.0f * scale, line = ImGui::GetTextLineHeightWithSpacing();
-  const ImU32 text = IM_COL32(240, 242, 245, 255), back = IM_COL32(10, 12, 14, 190);
+  const float pad = 10.0f * scale;
+  const ImU32 text = kText, back = kBack;
   const ImU32 red = u32(draw::kDiverged);
 
   if (options.caption) {
@@ -65,8 +120,11 @@ void draw_overlay(const app::Session& session, const draw::ViewCamera& camera, c
   }
 
   // A red label beside each lane that diverged, at the top of its last sane state (one under
-  // another where they would overlap).
+  // another, or under the legend, where they would overlap).
+  std::optional<Legend> legend;
+  if (session.comparing()) legend = legend_of(session, viewport, scale);
   std::vector<ImVec4> placed;
+  if (legend) placed.push_back(legend->box);
   for (const app::Lane& lane : session.lanes()) {
     if (!lane.sim.diverged()) continue;
     char s[160];
@@ -78,50 +136,22 @@ void draw_overlay(const app::Session& session, const draw::ViewCamera& camera, c
     float y = viewport.y + static_cast<float>(at.y()) - size.y - 8.0f * scale;
     x = std::clamp(x, viewport.x + pad, viewport.x + viewport.width - pad - size.x);
     y = std::clamp(y, viewport.y + pad, viewport.y + viewport.height - pad - size.y);
-    for (bool moved = true; moved;) {
-      moved = false;
-      for (const ImVec4& r : placed)
-        if (x < r.z && x + size.x > r.x && y < r.w && y + size.y > r.y) {
-          y = r.w + 4.0f;
-          moved = true;
-        }
+    // Its background (5 px either side, 2 above and below) clear of every one placed: moved under
+    // the one it meets, 2 px apart (each move passes one box for good, so at most one a box).
+    for (std::size_t moves = 0; moves <= placed.size(); ++moves) {
+      const auto meets = [&](const ImVec4& r) {
+        return x - 5 < r.z && x + size.x + 5 > r.x && y - 2 < r.w && y + size.y + 2 > r.y;
+      };
+      const auto hit = std::find_if(placed.begin(), placed.end(), meets);
+      if (hit == placed.end()) break;
+      y = hit->w + 4.0f;
     }
-    placed.push_back(ImVec4(x, y, x + size.x, y + size.y));
+    placed.push_back(ImVec4(x - 5, y - 2, x + size.x + 5, y + size.y + 2));
     dl->AddRectFilled(ImVec2(x - 5, y - 2), ImVec2(x + size.x + 5, y + size.y + 2), back, 4.0f);
     dl->AddText(ImVec2(x, y), red, s);
   }
 
-  if (!session.comparing()) return;
-  // The legend: each lane's colour, name and its own clock (a lane that diverged stopped).
-  std::vector<std::string> rows;
-  float width = 0.0f;
-  for (const app::Lane& lane : session.lanes()) {
-    std::string row = lane_name(lane);
-    char s[96];
-    if (lane.ik) {
-      std::snprintf(s, sizeof s, "  %d it., error %.2g m%s", lane.ik->status.iterations, lane.ik->status.error,
-                    lane.ik->status.converged ? "" : lane.ik->status.stalled ? " (stuck)" : "");
-    } else if (lane.sim.diverged()) {
-      std::snprintf(s, sizeof s, "  %s at t = %.3g s", lane.sim.divergence()->unstable ? "went unstable" : "diverged",
-                    lane.sim.divergence()->t);
-    } else {
-      std::snprintf(s, sizeof s, "  t = %.3f s", lane.sim.state().t);
-    }
-    row += s;
-    width = std::max(width, ImGui::CalcTextSize(row.c_str()).x);
-    rows.push_back(row);
-  }
-  const float swatch = 22.0f * scale;
-  const ImVec2 p(viewport.x + viewport.width - pad - width - swatch - 10.0f * scale, viewport.y + pad);
-  dl->AddRectFilled(ImVec2(p.x - 8, p.y - 4), ImVec2(viewport.x + viewport.width - pad + 4, p.y + rows.size() * line + 2),
-                    back, 4.0f);
-  for (std::size_t k = 0; k < rows.size(); ++k) {
-    const app::Lane& lane = session.lanes()[k];
-    const float y = p.y + k * line;
-    const draw::Rgba c = lane.ik ? draw::solver_color(lane.ik->solver) : draw::method_color(lane.sim.settings().method);
-    dl->AddLine(ImVec2(p.x, y + 0.5f * line), ImVec2(p.x + swatch, y + 0.5f * line), u32(c), 4.0f * scale);
-    dl->AddText(ImVec2(p.x + swatch + 8.0f * scale, y), lane.sim.diverged() ? red : text, rows[k].c_str());
-  }
+  if (legend) draw_legend(session, *legend, scale);
 }
 
 }  // namespace springlab::ui

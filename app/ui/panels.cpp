@@ -10,6 +10,7 @@
 #include "chart/stability_region.hpp"
 #include "draw/palette.hpp"
 #include "ui/overlay.hpp"
+#include "ui/text_wrap.hpp"
 
 namespace springlab::ui {
 
@@ -110,18 +111,16 @@ void gauge(app::Session& session, app::Lane& lane, float width, bool explain) {
   ImGui::TextColored(color, "%s", verdict.c_str());
   if (ImGui::IsItemHovered() && limit) ImGui::SetTooltip("%s", m.stability);
   if (!explain || !limit) return;
-  ImGui::PushTextWrapPos(0.0f);
   if (analysis && !analysis->oscillates()) {
-    ImGui::TextDisabled("no oscillating modes (%s); %s", analysis->no_modes_reason().c_str(), describe(*limit).c_str());
+    text_wrapped_disabled("no oscillating modes (" + analysis->no_modes_reason() + "); " + describe(*limit));
   } else if (limit->mode && std::isfinite(limit->h) && limit->h > 0.0) {
     char mode[96];
     std::snprintf(mode, sizeof mode, " (its mode: %.4g rad/s, damping ratio %.2g)", limit->mode->w,
                   limit->mode->damping_ratio());
-    ImGui::TextDisabled("%s%s", describe(*limit).c_str(), mode);
+    text_wrapped_disabled(describe(*limit) + mode);
   } else {
-    ImGui::TextDisabled("%s", describe(*limit).c_str());
+    text_wrapped_disabled(describe(*limit));
   }
-  ImGui::PopTextWrapPos();
 }
 
 chart::Series series(const std::string& label, const draw::Rgba& color, const app::Series& x, const app::Series& y,
@@ -405,16 +404,14 @@ void ik_controls(app::Session& session) {
     ImGui::Text("%s in %d, error %.2g m", state, l.status.iterations, l.status.error);
   }
   const IkStatus& first = session.primary().ik->status;
-  ImGui::PushTextWrapPos(0.0f);
   if (!first.reachable)
-    ImGui::TextColored(kNear, "The target is out of reach: no pose puts the end on it. The chain stretches "
-                              "straight towards it, as close as it can get.");
+    text_wrapped("The target is out of reach: no pose puts the end on it. The chain stretches "
+                 "straight towards it, as close as it can get.", kNear);
   else if (session.comparing())
-    ImGui::TextDisabled("One target, several poses: each solver, from the same start, settles on its own "
-                        "answer. Inverse kinematics has many solutions, or none.");
+    text_wrapped_disabled("One target, several poses: each solver, from the same start, settles on its own "
+                          "answer. Inverse kinematics has many solutions, or none.");
   else
-    ImGui::TextDisabled("Drag the red target. Press C to see the solvers side by side.");
-  ImGui::PopTextWrapPos();
+    text_wrapped_disabled("Drag the red target. Press C to see the solvers side by side.");
 }
 
 namespace {
@@ -503,10 +500,9 @@ void parameters(app::Session& session, UiState& ui, bool few) {
   for (const app::Lane& lane : session.lanes())
     if (lane.sim.auto_substeps() && lane.sim.substeps_capped() && lane.analysis) {
       const bool hopeless = lane.analysis->limit(lane.sim.settings().method).h == 0.0;
-      ImGui::PushTextWrapPos(0.0f);
-      ImGui::TextColored(kNear, "%s: %s", method_info(lane.sim.settings().method).name,
-                         hopeless ? "unstable at any step: sub-steps cannot help" : "sub-steps capped: still past its limit");
-      ImGui::PopTextWrapPos();
+      text_wrapped(std::string(method_info(lane.sim.settings().method).name) + ": " +
+                       (hopeless ? "unstable at any step: sub-steps cannot help" : "sub-steps capped: still past its limit"),
+                   kNear);
       break;
     }
   if (few) return;
@@ -569,14 +565,10 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
     if (ui.platform_controls) ui.platform_controls();
     const std::string& about = session.scene().description;
     const std::size_t stop = about.find(". ");
-    ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextDisabled("%s", stop == std::string::npos ? about.c_str() : (about.substr(0, stop + 1) + " (...)").c_str());
-    ImGui::PopTextWrapPos();
+    text_wrapped_disabled(stop == std::string::npos ? about : about.substr(0, stop + 1) + " (...)");
     if (ImGui::IsItemHovered() && stop != std::string::npos) {
       ImGui::BeginTooltip();
-      ImGui::PushTextWrapPos(420.0f * s);
-      ImGui::TextUnformatted(about.c_str());
-      ImGui::PopTextWrapPos();
+      text_wrapped(about, {}, 420.0f * s);
       ImGui::EndTooltip();
     }
     ImGui::Separator();
@@ -682,16 +674,12 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
     if (lesson) {
       if (ImGui::IsItemHovered()) {
         ImGui::BeginTooltip();
-        ImGui::PushTextWrapPos(520.0f * s);
-        ImGui::TextUnformatted(first.divergence()->message().c_str());
-        ImGui::PopTextWrapPos();
+        text_wrapped(first.divergence()->message(), {}, 520.0f * s);
         ImGui::EndTooltip();
       }
       ImGui::SameLine();
     } else {
-      ImGui::PushTextWrapPos(0.0f);
-      ImGui::TextUnformatted(first.divergence()->message().c_str());  // the limit once analysed
-      ImGui::PopTextWrapPos();
+      text_wrapped(first.divergence()->message());  // the limit once analysed
     }
     if (ImGui::Button("Reset (R)")) session.reset();
     ImGui::End();
@@ -702,9 +690,7 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
     ImGui::SetNextWindowPos(ImVec2(0.5f * width, 0.12f * height), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowSize(ImVec2(600.0f * s, 0.0f));
     ImGui::Begin("Message", nullptr, kPanel | ImGuiWindowFlags_AlwaysAutoResize);
-    ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextColored(kNear, "%s", ui.message.c_str());
-    ImGui::PopTextWrapPos();
+    text_wrapped(ui.message, kNear, 600.0f * s - 2.0f * ImGui::GetStyle().WindowPadding.x);
     if (ImGui::Button("OK")) ui.message.clear();
     ImGui::End();
   }

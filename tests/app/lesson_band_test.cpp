@@ -4,10 +4,12 @@
 #include <gtest/gtest.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <cfloat>
 
 #include "lesson/lesson_library.hpp"
 #include "ui/lesson_band.hpp"
+#include "ui/text_wrap.hpp"
 #include "ui/theme.hpp"
 
 namespace springlab::test {
@@ -22,13 +24,40 @@ struct Fonts {
     ImGui::GetIO().Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);  // builds the atlas
   }
   ~Fonts() { ImGui::DestroyContext(); }
-  // Lines `text` takes in `font` wrapped at `width` pixels.
+  // Lines `text` takes in `font` wrapped at `width` pixels, as the band wraps it.
   static int lines(int font, const std::string& text, float width) {
     ImFont* f = ImGui::GetIO().Fonts->Fonts[font];
-    const ImVec2 size = f->CalcTextSizeA(f->FontSize, FLT_MAX, width, text.c_str(), text.c_str() + text.size());
-    return static_cast<int>(size.y / f->FontSize + 0.5f);
+    const std::string wrapped = ui::wrap_at_spaces(text, f, f->FontSize, width);
+    for (std::size_t a = 0, b = 0; a <= wrapped.size(); a = b + 1) {  // and each line fits
+      b = std::min(wrapped.find('\n', a), wrapped.size());
+      const float w = f->CalcTextSizeA(f->FontSize, FLT_MAX, 0.0f, wrapped.data() + a, wrapped.data() + b).x;
+      EXPECT_LE(w, width) << wrapped.substr(a, b - a);
+    }
+    return 1 + static_cast<int>(std::count(wrapped.begin(), wrapped.end(), '\n'));
   }
 };
+
+// Breaks fall only at spaces, every one where the next word would pass the width: a number stays
+// whole ("0.973": Dear ImGui's own wrap breaks after a full stop).
+TEST(LessonBand, WrapsOnlyAtSpacesAndAsLateAsItCan) {
+  Fonts fonts;
+  ImFont* f = ImGui::GetIO().Fonts->Fonts[ui::kCaptionFont];
+  const auto width = [&](const std::string& s) { return f->CalcTextSizeA(f->FontSize, FLT_MAX, 0.0f, s.c_str()).x; };
+  const std::string text = "its energy by 1 / (1 + (h\u03c9)\u00b2) = 0.973. Stable, but not true.";
+  for (float w = width("(h\u03c9)\u00b2)"); w < width(text) + 10.0f; w += 7.0f) {
+    const std::string wrapped = ui::wrap_at_spaces(text, f, f->FontSize, w);
+    std::string joined = wrapped;
+    std::replace(joined.begin(), joined.end(), '\n', ' ');
+    ASSERT_EQ(joined, text) << w;  // only spaces became breaks
+    for (std::size_t a = 0, b = 0; b < wrapped.size(); a = b + 1) {
+      b = std::min(wrapped.find('\n', a), wrapped.size());
+      if (b == wrapped.size()) break;
+      const std::size_t next = std::min(wrapped.find_first_of(" \n", b + 1), wrapped.size());
+      EXPECT_GT(width(wrapped.substr(a, b - a) + " " + wrapped.substr(b + 1, next - b - 1)), w) << wrapped;
+    }
+  }
+  EXPECT_EQ(ui::wrap_at_spaces("one\ntwo", f, f->FontSize, 1000.0f), "one\ntwo");
+}
 
 TEST(LessonBand, EveryShippedLessonsTextFitsAt1280x720) {
   Fonts fonts;
@@ -46,8 +75,9 @@ TEST(LessonBand, EveryShippedLessonsTextFitsAt1280x720) {
     const Lesson lesson = app::open_lesson(file);
     for (const LessonStep& step : lesson.steps) {
       EXPECT_LE(Fonts::lines(ui::kCaptionFont, step.caption, inner), 2) << lesson.name << ": " << step.caption;
-      if (!step.prompt.empty())
+      if (!step.prompt.empty()) {
         EXPECT_EQ(Fonts::lines(ui::kPanelFont, "Try this: " + step.prompt, inner), 1) << lesson.name << ": " << step.prompt;
+      }
       // The title row leaves room for its three buttons (about 300 pixels).
       const std::string row = "Lesson 10 of 10  \u00b7  " + lesson.title + "   \u2014   step 1 of 2: " + step.title;
       EXPECT_EQ(Fonts::lines(ui::kPanelFont, row, inner - 300.0f), 1) << lesson.name << ": " << row;

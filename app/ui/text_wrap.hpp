@@ -1,0 +1,23 @@
+// Text wrapped at spaces only. Dear ImGui's own wrap (1.86) also breaks after punctuation, so it
+// splits numbers: "its mode: 504." on one line and "7 rad/s" on the next, "= 0." and "973".
+#pragma once
+
+#include <imgui.h>
+
+#include <string>
+
+namespace springlab::ui {
+
+// `text` with a line break wherever the next word would pass `width` pixels in `font` at `size`
+// (a word wider than `width` gets a line of its own); its own line breaks kept, runs of spaces
+// made one.
+std::string wrap_at_spaces(const std::string& text, const ImFont* font, float size, float width);
+
+// Draws `text` in the current font, wrapped at spaces to `width` pixels (0: to the window's edge),
+// in `color` (the style's text colour when its alpha is 0).
+void text_wrapped(const std::string& text, ImVec4 color = ImVec4(0, 0, 0, 0), float width = 0.0f);
+
+// The same in the style's disabled colour: a note, an explanation.
+void text_wrapped_disabled(const std::string& text, float width = 0.0f);
+
+}  // namespace springlab::ui
