@@ -81,12 +81,15 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
       list->AddText(ImVec2(at, bottom + 0.15f * line_h), text, t.label.c_str());
     }
   }
+  const ImVec2 yl = ImGui::CalcTextSize(chart.y.label.c_str());
   for (const Tick& t : yt) {
     const float y = my(t.value);
     list->AddLine(ImVec2(left, y), ImVec2(right, y), t.major ? grid : ImGui::GetColorU32(ImGuiCol_Border, 0.2f));
     if (!t.label.empty()) {
       const ImVec2 s = ImGui::CalcTextSize(t.label.c_str());
-      list->AddText(ImVec2(left - s.x - 6.0f, y - 0.5f * s.y), text, t.label.c_str());
+      // A tick at the very top would write over the axis' label above it: that one goes unlabelled.
+      const bool under_label = y - 0.5f * s.y < top - 0.1f * line_h && left - s.x - 6.0f < origin.x + yl.x;
+      if (!under_label) list->AddText(ImVec2(left - s.x - 6.0f, y - 0.5f * s.y), text, t.label.c_str());
     }
   }
   list->AddRect(ImVec2(left, top), ImVec2(right, bottom), faint);

@@ -77,7 +77,10 @@ std::string to_svg(const Chart& chart, int width, int height) {
     const double y = my(t.value);
     s << "<line x1=\"" << left << "\" y1=\"" << y << "\" x2=\"" << right << "\" y2=\"" << y << "\" stroke=\"" << grid
       << "\" stroke-opacity=\"" << (t.major ? 1.0 : 0.45) << "\"/>\n";
-    if (!t.label.empty())
+    // A tick at the very top would write over the axis' label above it: that one goes unlabelled.
+    const bool under_label = y - kFont * 0.45 < top - line * 0.35 + kFont * 0.2 &&
+                             left - 8 - t.label.size() * kChar < 12 + chart.y.label.size() * kChar;
+    if (!t.label.empty() && !under_label)
       s << "<text x=\"" << left - 8 << "\" y=\"" << y + kFont * 0.35 << "\" fill=\"" << text << "\" text-anchor=\"end\">"
         << escape(t.label) << "</text>\n";
   }
