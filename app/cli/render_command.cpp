@@ -270,6 +270,7 @@ int render(const RenderOptions& o) {
     if (!selected.empty() && !selected.count(k)) continue;
     Session& session = *shot.session;
     const auto t0 = std::chrono::steady_clock::now();
+    if (shot.band) shot.ui.band = ui::lesson_band_height(*shot.band, static_cast<float>(width), scale);
     const draw::Viewport viewport =
         panels || shot.band ? ui::scene_viewport(shot.ui, width, height) : draw::Viewport{0, 0, width, height};
     const draw::Frame frame = draw::build_frame(session, shot.ui.view, viewport);

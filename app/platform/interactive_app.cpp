@@ -262,6 +262,8 @@ void InteractiveApp::frame(const FrameSize& size) {
   ImGui::NewFrame();
   const int win_w = size.win_width, win_h = size.win_height;
   const double to_fb = static_cast<double>(size.fb_width) / std::max(1, win_w);
+  // The lesson's band as tall as its caption needs at this width.
+  if (lesson_) ui_.band = ui::lesson_band_height(band(), static_cast<float>(win_w), ui_.scale);
 
   // The scene's part of the framebuffer (the panels' layout is in window units).
   draw::Viewport viewport = ui::scene_viewport(ui_, win_w, win_h);

@@ -15,16 +15,32 @@ constexpr float kPad = 12.0f, kBar = 8.0f, kGap = 6.0f;
 const ImVec4 kPrompt(0.55f, 0.85f, 1.0f, 1.0f), kTookOver(1.0f, 0.75f, 0.2f, 1.0f);
 }  // namespace
 
-float lesson_band_height(float scale) {
-  const float row = kFontSize + 8.0f;                      // a framed row (buttons)
-  const float caption = 2.0f * kFontSize * kCaptionScale * 1.17f;  // two lines of the caption's font
+float lesson_band_height(float scale, int caption_lines) {
+  const float row = kFontSize + 8.0f;                                         // a framed row (buttons)
+  const float caption = std::max(2, caption_lines) * kFontSize * kCaptionScale * 1.17f;  // the caption's font
   const float prompt = kFontSize * 1.25f;
   return (2 * kPad + row + caption + prompt + kBar + 3 * kGap) * scale;
 }
 
+namespace {
+// The caption as drawn: in its font, wrapped at spaces to the band's inner width.
+std::string caption_text(const std::string& caption, float width, float scale) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (io.Fonts->Fonts.Size <= kCaptionFont) return caption;
+  const ImFont* font = io.Fonts->Fonts[kCaptionFont];
+  if (!font->IsLoaded()) return caption;  // the atlas not built yet: no glyphs to measure
+  return wrap_at_spaces(caption, font, font->FontSize * font->Scale, width - 2 * kPad * scale);
+}
+}  // namespace
+
+float lesson_band_height(const LessonBand& band, float width, float scale) {
+  const std::string caption = caption_text(band.caption, width, scale);
+  return lesson_band_height(scale, 1 + static_cast<int>(std::count(caption.begin(), caption.end(), '\n')));
+}
+
 BandRequests draw_lesson_band(const LessonBand& band, float width, float scale) {
   BandRequests out;
-  const float height = lesson_band_height(scale);
+  const float height = lesson_band_height(band, width, scale);
   ImGui::SetNextWindowPos(ImVec2(0, 0));
   ImGui::SetNextWindowSize(ImVec2(width, height));
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(kPad * scale, kPad * scale));
@@ -63,8 +79,7 @@ BandRequests draw_lesson_band(const LessonBand& band, float width, float scale) 
   ImGuiIO& io = ImGui::GetIO();
   const bool caption_font = io.Fonts->Fonts.Size > kCaptionFont;
   if (caption_font) ImGui::PushFont(io.Fonts->Fonts[kCaptionFont]);
-  const std::string caption = wrap_at_spaces(band.caption, ImGui::GetFont(), ImGui::GetFontSize(), width - 2 * kPad * scale);
-  ImGui::TextUnformatted(caption.c_str());
+  ImGui::TextUnformatted(caption_text(band.caption, width, scale).c_str());
   if (caption_font) ImGui::PopFont();
 
   // What the class may try, or the way back once it has taken over; on the band's last row.

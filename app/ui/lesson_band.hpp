@@ -30,9 +30,14 @@ struct BandRequests {
   bool back = false, next = false, resume = false, end = false;
 };
 
-// The band's height at `scale`, in window units: a title row, two caption lines, the prompt and
-// the progress bar (core/include/springlab/lesson.hpp limits a caption to what fits).
-float lesson_band_height(float scale);
+// The band's height at `scale`, in window units: a title row, the caption's lines (two at least,
+// so that the scene keeps its place from step to step; core/include/springlab/lesson.hpp limits a
+// caption to two at 1280 x 720), the prompt and the progress bar.
+float lesson_band_height(float scale, int caption_lines = 2);
+
+// The height of `band` across a window `width` wide: a narrower window (a laptop's browser) wraps
+// the caption onto more lines, and the band grows to hold them rather than cut them off.
+float lesson_band_height(const LessonBand& band, float width, float scale);
 
 BandRequests draw_lesson_band(const LessonBand& band, float width, float scale);
 

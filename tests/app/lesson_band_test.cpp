@@ -85,6 +85,24 @@ TEST(LessonBand, EveryShippedLessonsTextFitsAt1280x720) {
   }
 }
 
+// A narrow window (a laptop's browser) wraps a caption onto more lines: the band grows to hold
+// them all, and never shrinks below two, so the scene keeps its place from step to step.
+TEST(LessonBand, GrowsWithItsCaptionInANarrowWindow) {
+  Fonts fonts;
+  ui::LessonBand band;
+  band.caption = "Its springs' k_s = 380000 N/m at h = 1/60 s: h\u03c9_max is about 90, far past every explicit "
+                 "method's limit. Explicit lanes explode; implicit Euler holds.";
+  EXPECT_EQ(ui::lesson_band_height(band, 1280.0f, 1.0f), ui::lesson_band_height(1.0f, 2));
+  for (const float width : {760.0f, 600.0f, 420.0f}) {
+    const int lines = Fonts::lines(ui::kCaptionFont, band.caption, width - 2 * 12.0f);
+    EXPECT_GT(lines, 2) << width;
+    EXPECT_EQ(ui::lesson_band_height(band, width, 1.0f), ui::lesson_band_height(1.0f, lines)) << width;
+  }
+  EXPECT_GT(ui::lesson_band_height(1.0f, 3), ui::lesson_band_height(1.0f, 2));
+  band.caption = "Short.";
+  EXPECT_EQ(ui::lesson_band_height(band, 1280.0f, 1.0f), ui::lesson_band_height(1.0f, 2));
+}
+
 // The band's own arithmetic: its height holds the rows it lays out, at any scale.
 TEST(LessonBand, HeightGrowsWithTheScale) {
   EXPECT_NEAR(ui::lesson_band_height(2.0f), 2.0f * ui::lesson_band_height(1.0f), 1e-3f);
