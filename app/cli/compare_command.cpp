@@ -67,7 +67,7 @@ void write_csvs(const std::filesystem::path& dir, const SweepResult& r) {
   AtomicFile results(dir / "results.csv", "results");
   std::fprintf(results.file(),
                "method,step,tolerance,mean_step,error,seconds,force_evals,linear_solves,solver_iterations,"
-               "accepted,rejected,diverged,diverged_at,energy_created,unstable\n");
+               "accepted,rejected,diverged,diverged_at,energy_rise,unstable\n");
   for (const SweepRun& run : r.runs)
     std::fprintf(results.file(), "%s,%s,%s,%s,%s,%s,%lld,%lld,%lld,%lld,%lld,%d,%s,%s,%d\n", method_info(run.method).name,
                  number(run.h).c_str(), std::isnan(run.tolerance) ? "" : number(run.tolerance).c_str(),
@@ -76,7 +76,7 @@ void write_csvs(const std::filesystem::path& dir, const SweepResult& r) {
                  static_cast<long long>(run.counters.linear_solves), static_cast<long long>(run.counters.solver_iterations),
                  static_cast<long long>(run.counters.accepted), static_cast<long long>(run.counters.rejected),
                  run.diverged ? 1 : 0, run.diverged ? number(run.diverged_at).c_str() : "",
-                 number(run.created).c_str(), run.unstable ? 1 : 0);
+                 number(run.rise).c_str(), run.unstable ? 1 : 0);
   results.commit();
   AtomicFile summary(dir / "summary.csv", "summary");
   std::fprintf(summary.file(), "method,order_table,order_measured,fitted_points,stable_step_measured,"

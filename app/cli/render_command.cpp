@@ -307,12 +307,14 @@ int render(const RenderOptions& o) {
   for (const Lane& lane : last.lanes())
     std::printf("substeps   %s: %d (%s)\n", method_info(lane.sim.settings().method).name, lane.sim.settings().substeps,
                 !lane.sim.auto_substeps() ? "fixed" : lane.sim.substeps_capped() ? "auto, capped" : "auto");
-  for (Lane& lane : shots[current].session->lanes())
-    if (lane.sim.diverged()) {
+  for (Lane& lane : shots[current].session->lanes()) {
+    if (lane.sim.diverged()) lane.sim.explain_divergence();
+    if (const Divergence* trouble = lane.sim.trouble()) {
       std::fflush(stdout);
-      std::fprintf(stderr, "springlab: %s: %s\n", name.c_str(), lane.sim.explain_divergence()->message().c_str());
+      std::fprintf(stderr, "springlab: %s: %s\n", name.c_str(), trouble->message().c_str());
       return kDiverged;
     }
+  }
   return kOk;
 }
 

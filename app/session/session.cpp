@@ -9,6 +9,9 @@ namespace springlab::app {
 Session::Session(Scene scene, SimulationSettings settings, double fps)
     : scene_(std::move(scene)), settings_(settings), fps_(fps) {
   settings_.track_dissipation = true;
+  // An unstable lane goes on, marked (Simulation::trouble()), until it diverges or is reset: the
+  // class sees where the instability leads; `run` stops there instead.
+  settings_.audit_stops = false;
   if (scene_.ik) {
     solver_ = scene_.ik->solvers.front();
     ik_iterations_ = scene_.ik->iterations_per_frame;

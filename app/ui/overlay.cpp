@@ -41,9 +41,8 @@ Legend legend_of(const app::Session& session, const draw::Viewport& viewport, fl
     if (lane.ik) {
       std::snprintf(s, sizeof s, "  %d it., error %.2g m%s", lane.ik->status.iterations, lane.ik->status.error,
                     lane.ik->status.converged ? "" : lane.ik->status.stalled ? " (stuck)" : "");
-    } else if (lane.sim.diverged()) {
-      std::snprintf(s, sizeof s, "  %s at t = %.3g s", lane.sim.divergence()->unstable ? "went unstable" : "diverged",
-                    lane.sim.divergence()->t);
+    } else if (const Divergence* trouble = lane.sim.trouble()) {
+      std::snprintf(s, sizeof s, "  %s at t = %.3g s", trouble->unstable ? "went unstable" : "diverged", trouble->t);
     } else {
       std::snprintf(s, sizeof s, "  t = %.3f s", lane.sim.state().t);
     }
@@ -68,7 +67,7 @@ void draw_legend(const app::Session& session, const Legend& legend, float scale)
     const draw::Rgba c = lane.ik ? draw::solver_color(lane.ik->solver) : draw::method_color(lane.sim.settings().method);
     dl->AddLine(ImVec2(legend.at.x, y + 0.5f * line), ImVec2(legend.at.x + swatch, y + 0.5f * line), u32(c),
                 4.0f * scale);
-    dl->AddText(ImVec2(legend.at.x + swatch + 8.0f * scale, y), lane.sim.diverged() ? u32(draw::kDiverged) : kText,
+    dl->AddText(ImVec2(legend.at.x + swatch + 8.0f * scale, y), lane.sim.trouble() ? u32(draw::kDiverged) : kText,
                 legend.rows[k].c_str());
   }
 }
@@ -126,10 +125,11 @@ void draw_overlay(const app::Session& session, const draw::ViewCamera& camera, c
   std::vector<ImVec4> placed;
   if (legend) placed.push_back(legend->box);
   for (const app::Lane& lane : session.lanes()) {
-    if (!lane.sim.diverged()) continue;
+    const Divergence* trouble = lane.sim.trouble();
+    if (!trouble) continue;
     char s[160];
     std::snprintf(s, sizeof s, "%s %s at t = %.3g s", lane_name(lane).c_str(),
-                  lane.sim.divergence()->unstable ? "went unstable" : "diverged", lane.sim.divergence()->t);
+                  trouble->unstable ? "went unstable" : "diverged", trouble->t);
     const Eigen::Vector3d at = draw::project(camera, draw::label_anchor(lane), viewport.width, viewport.height);
     const ImVec2 size = ImGui::CalcTextSize(s);
     float x = viewport.x + static_cast<float>(at.x()) - 0.5f * size.x;

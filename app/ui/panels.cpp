@@ -81,10 +81,10 @@ void gauge(app::Session& session, app::Lane& lane, float width, bool explain) {
                     ratio);
     }
   }
-  if (sim.diverged()) {
+  if (const Divergence* trouble = sim.trouble()) {
     color = kBeyond;
-    verdict = explain ? fmt(sim.divergence()->unstable ? "unstable at %.3g s" : "diverged at %.3g s", sim.divergence()->t)
-                      : std::string(sim.divergence()->unstable ? "unstable" : "diverged");
+    verdict = explain ? fmt(trouble->unstable ? "unstable at %.3g s" : "diverged at %.3g s", trouble->t)
+                      : std::string(trouble->unstable ? "unstable" : "diverged");
   }
   const ImGuiStyle& style = ImGui::GetStyle();
   const float label_w = ImGui::CalcTextSize("Symplectic Euler ").x;
@@ -655,7 +655,7 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
 
   // Divergence in the single view: a banner, and the way out.
   const Simulation& first = session.primary().sim;
-  if (!session.comparing() && first.diverged()) {
+  if (const Divergence* trouble = first.trouble(); !session.comparing() && trouble) {
     // In a lesson, where diverging is often the point, one line at the foot of the scene (the
     // explanation on hover), never over the caption or what it describes.
     const bool lesson = ui.band > 0.0f;
@@ -668,18 +668,18 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
     ImGui::SetNextWindowSize(ImVec2(lesson ? 0.0f : 560.0f * s, 0.0f));
     ImGui::PushStyleColor(ImGuiCol_WindowBg, ImVec4(0.35f, 0.05f, 0.05f, 0.95f));
     ImGui::Begin("Diverged", nullptr, kPanel | ImGuiWindowFlags_AlwaysAutoResize);
-    ImGui::Text(first.divergence()->unstable ? "The simulation went numerically unstable at t = %.4g s"
-                                             : "The simulation diverged at t = %.4g s",
-                first.divergence()->t);
+    ImGui::Text(trouble->unstable ? "The simulation went numerically unstable at t = %.4g s"
+                                  : "The simulation diverged at t = %.4g s",
+                trouble->t);
     if (lesson) {
       if (ImGui::IsItemHovered()) {
         ImGui::BeginTooltip();
-        text_wrapped(first.divergence()->message(), {}, 520.0f * s);
+        text_wrapped(trouble->message(), {}, 520.0f * s);
         ImGui::EndTooltip();
       }
       ImGui::SameLine();
     } else {
-      text_wrapped(first.divergence()->message());  // the limit once analysed
+      text_wrapped(trouble->message());  // the limit once analysed
     }
     if (ImGui::Button("Reset (R)")) session.reset();
     ImGui::End();

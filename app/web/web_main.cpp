@@ -230,9 +230,9 @@ EMSCRIPTEN_KEEPALIVE const char* springlab_status() {
   json += ",\"lanes\":[";
   for (std::size_t i = 0; i < session.lanes().size(); ++i) {
     const app::Lane& lane = session.lanes()[i];
-    std::snprintf(number, sizeof number, "%s{\"method\":\"%s\",\"t\":%.17g,\"diverged\":%s}", i ? "," : "",
-                  method_info(lane.sim.settings().method).name, lane.sim.state().t,
-                  lane.sim.diverged() ? "true" : "false");
+    std::snprintf(number, sizeof number, "%s{\"method\":\"%s\",\"t\":%.17g,\"diverged\":%s,\"unstable\":%s}",
+                  i ? "," : "", method_info(lane.sim.settings().method).name, lane.sim.state().t,
+                  lane.sim.diverged() ? "true" : "false", lane.sim.instability() ? "true" : "false");
     json += number;
   }
   json += "]}";

@@ -154,13 +154,13 @@ int run_window(const AppSettings& settings, const WindowOptions& o) {
                     (session.primary().sim.state().t - first_t) / steady);
       for (const Lane& lane : session.lanes())
         std::printf("lane       %s at t = %.4g s%s\n", method_info(lane.sim.settings().method).name,
-                    lane.sim.state().t, lane.sim.diverged() ? " (diverged)" : "");
+                    lane.sim.state().t, lane.sim.diverged() ? " (diverged)" : lane.sim.instability() ? " (unstable)" : "");
       for (const Session::DragRecord& d : session.drags())
         std::printf("dragged    particle %d from (%.4g, %.4g, %.4g) to (%.4g, %.4g, %.4g): %.4g m\n", d.particle,
                     d.from.x(), d.from.y(), d.from.z(), d.to.x(), d.to.y(), d.to.z(), (d.to - d.from).norm());
       if (o.screenshot) std::printf("screenshot %s\n", o.screenshot->c_str());
       for (const Lane& lane : session.lanes())
-        if (lane.sim.diverged()) result = 3;
+        if (lane.sim.trouble()) result = 3;
     }
   }
   ImGui_ImplOpenGL3_Shutdown();

@@ -24,6 +24,7 @@
 #include <Eigen/SparseCore>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <vector>
 
@@ -236,6 +237,39 @@ State equilibrium(const Model& model, const State& state) {
     if (!moved) break;  // no step lowers the potential: as balanced as rounding allows
   }
   return rest;
+}
+
+// The held parts' potential is least at their balance (for the motions about it the audit
+// weighs); a part held by nothing keeps its springs' potential >= 0, and its weight is bounded by
+// the lowest floor facing up against gravity (a particle stays on its positive side, its centre a
+// radius above). With no such floor it can fall forever, and a field's potential has no least
+// value the audit could use: no bound.
+double lowest_energy(const Model& model, const State& rest) {
+  constexpr double kMinusInf = -std::numeric_limits<double>::infinity();
+  if (!model.attractors.empty()) return kMinusInf;
+  const Balance balance(model);
+  const double g = model.gravity.norm();
+  double floor = std::numeric_limits<double>::infinity();  // height against gravity
+  if (g > 0.0) {
+    const Vec3 up = -model.gravity / g;
+    for (const PlaneCollider& p : model.planes)
+      if (p.normal.dot(up) >= 1.0 - 1e-9) floor = std::min(floor, p.point.dot(up) + model.particle_radius);
+  }
+  std::vector<char> held(model.particle_count(), 0);
+  for (int i = 0; i < model.particle_count(); ++i) held[i] = model.pinned(i) || balance.weighed[i];
+  double e = 0.0;
+  for (int s = 0; s < model.spring_count(); ++s) {
+    const int a = model.spring_a[s], b = model.spring_b[s];
+    if (held[a] && held[b])
+      e += spring_energy(rest.x.row(a).transpose(), rest.x.row(b).transpose(), model.ks(s), model.rest_length[s]);
+  }
+  for (int i = 0; i < model.particle_count(); ++i) {
+    if (model.pinned(i) || !(g > 0.0)) continue;
+    if (held[i]) e -= model.mass[i] * model.gravity.dot(rest.x.row(i).transpose());
+    else if (std::isfinite(floor)) e += model.mass[i] * g * floor;
+    else return kMinusInf;
+  }
+  return e;
 }
 
 }  // namespace springlab

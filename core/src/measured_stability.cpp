@@ -1,6 +1,7 @@
 // Stability measured on the methods' own steps (stability.hpp): the amplification of one step
 // of the oscillator, and a scene's largest stable step found by running it.
 #include <Eigen/Eigenvalues>
+#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -45,19 +46,24 @@ bool every_part_held(const Model& model) {
   return true;
 }
 
-}  // namespace
+// One step of the method on the oscillator x'' = -w^2 x - c x' as a matrix: on (x, v) for the
+// one-step methods; Verlet runs a recurrence on (x, x_prev, a), its restart from (x, v) only
+// once, so it is measured with that history. `size` is 2 or 3.
+struct OscillatorStep {
+  Eigen::Matrix3d matrix = Eigen::Matrix3d::Zero();
+  int size = 2;
+};
 
-double amplification(Method method, double w, double c, double h, double verlet_damping) {
+OscillatorStep oscillator_step(Method method, double w, double c, double h, double verlet_damping) {
   const Model model = oscillator(w, c, verlet_damping);
   const StepSettings settings;
   // Motion along the spring is exactly linear whatever the offset, so the offset only has to be
   // large enough for (x - 1) / delta to keep its digits (1e-13 relative), and small enough that
   // no stage crosses the anchor near the limits (amplitudes grow like (h w)^4 per step).
   const double delta = 1e-3;
-  // The step as it runs: from (x, v) for the one-step methods; Verlet runs a recurrence on
-  // (x, x_prev, a), its restart from (x, v) only once, so it is measured with that history.
   const bool verlet = method == Method::Verlet;
-  const int size = verlet ? 3 : 2;
+  OscillatorStep out;
+  out.size = verlet ? 3 : 2;
   State rest;
   rest.resize(2);
   rest.x.setZero();
@@ -65,12 +71,11 @@ double amplification(Method method, double w, double c, double h, double verlet_
   rest.x(1, 0) = 1.0;
   Workspace history;
   if (verlet) {
-    State out = rest;
-    step(method, model, rest, out, h, settings, history);  // at rest: x_prev = x, a = 0
+    State next = rest;
+    step(method, model, rest, next, h, settings, history);  // at rest: x_prev = x, a = 0
   }
-  Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
-  for (int column = 0; column < size; ++column) {
-    State in = rest, out = rest;
+  for (int column = 0; column < out.size; ++column) {
+    State in = rest, next = rest;
     Workspace ws;
     if (verlet) {
       ws.x_prev = history.x_prev;
@@ -81,15 +86,60 @@ double amplification(Method method, double w, double c, double h, double verlet_
     if (column == 0) in.x(1, 0) += delta;
     if (column == 1) (verlet ? ws.x_prev(1, 0) : in.v(1, 0)) += delta;
     if (column == 2) ws.a_now(1, 0) += delta;
-    step(method, model, in, out, h, settings, ws);
-    M(0, column) = (out.x(1, 0) - 1.0) / delta;
-    M(1, column) = (verlet ? ws.x_prev(1, 0) - 1.0 : out.v(1, 0)) / delta;
-    if (verlet) M(2, column) = ws.a_now(1, 0) / delta;
+    step(method, model, in, next, h, settings, ws);
+    out.matrix(0, column) = (next.x(1, 0) - 1.0) / delta;
+    out.matrix(1, column) = (verlet ? ws.x_prev(1, 0) - 1.0 : next.v(1, 0)) / delta;
+    if (verlet) out.matrix(2, column) = ws.a_now(1, 0) / delta;
   }
+  return out;
+}
+
+}  // namespace
+
+double amplification(Method method, double w, double c, double h, double verlet_damping) {
+  const OscillatorStep s = oscillator_step(method, w, c, h, verlet_damping);
   double rho = 0.0;
-  const Eigen::VectorXcd mu = Eigen::EigenSolver<Eigen::MatrixXd>(M.topLeftCorner(size, size), false).eigenvalues();
+  const Eigen::VectorXcd mu = Eigen::EigenSolver<Eigen::MatrixXd>(s.matrix.topLeftCorner(s.size, s.size), false).eigenvalues();
   for (const auto& z : mu) rho = std::max(rho, std::abs(z));
   return rho;
+}
+
+// In the energy norm, |(x, v)|^2 = kappa x^2 + v^2 (twice the mode's energy), the step is
+// T = D S D^-1 with D = diag(sqrt(kappa), 1), and the growth is sup over n of |T^n|^2 (the
+// spectral norm). With T = V diag(mu) V^-1, |T^n| <= cond(V) rho^n: once that falls to the
+// largest |T^n| seen, no later power can exceed it.
+double transient_growth(Method method, double gamma, double kappa, double h, double verlet_damping) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  if (!(kappa > 0.0)) return 1.0;  // a first-order decay (drag alone): its speed only falls
+  if (method == Method::Verlet) return kInf;  // its state holds a history: no energy norm of its own
+  const OscillatorStep s = oscillator_step(method, std::sqrt(kappa), std::max(gamma, 0.0), h, verlet_damping);
+  const Eigen::Matrix2d D = Eigen::Vector2d(std::sqrt(kappa), 1.0).asDiagonal();
+  const Eigen::Matrix2d T = D * s.matrix.topLeftCorner<2, 2>() * D.inverse();
+  const Eigen::EigenSolver<Eigen::Matrix2d> eigen(T);
+  double rho = 0.0;
+  for (int k = 0; k < 2; ++k) rho = std::max(rho, std::abs(eigen.eigenvalues()[k]));
+  if (!(rho <= 1.0 + 1e-12)) return kInf;
+  const Eigen::Matrix2cd V = eigen.eigenvectors();
+  const Eigen::JacobiSVD<Eigen::Matrix2cd> svd(V);
+  const double smallest = svd.singularValues()(1);
+  const double condition = smallest > 1e-12 * svd.singularValues()(0) ? svd.singularValues()(0) / smallest : kInf;
+  // |P|^2 of a 2 x 2 matrix: the larger eigenvalue of P^T P, from its trace (the entries'
+  // squares) and determinant (det(P)^2).
+  const auto norm2 = [](const Eigen::Matrix2d& P) {
+    const double f = P.squaredNorm(), d = P.determinant();
+    return 0.5 * (f + std::sqrt(std::max(f * f - 4.0 * d * d, 0.0)));
+  };
+  constexpr int kPowers = 1000000;
+  Eigen::Matrix2d power = Eigen::Matrix2d::Identity();
+  double largest = 1.0, bound = condition * condition;  // squared: cond(V)^2 rho^2n
+  for (int n = 1; n <= kPowers; ++n) {
+    power = T * power;
+    largest = std::max(largest, norm2(power));
+    bound *= rho * rho;
+    if (bound <= largest) return largest;
+  }
+  // Still not decided (rho within about 1e-6 of 1 and V ill-conditioned): cond(V)^2 bounds it.
+  return std::isfinite(condition) ? std::max(largest, condition * condition) : kInf;
 }
 
 MeasuredLimit measured_limit(Method method, const Model& model, const State& state, const StabilityLimit& expected,

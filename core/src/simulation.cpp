@@ -104,25 +104,30 @@ void Simulation::reset() {
   has_stiffness_ = false;
   for (const SpringMaterial& m : model_.materials) has_stiffness_ |= m.ks > 0.0;
   baseline_ = energy().total();
-  external_ = created_ = 0.0;
-  audit_.reset();
+  external_ = 0.0;
+  instability_.reset();
+  audit_changed();
 }
 
-// The audit looks for the slow instabilities of oscillating modes, which can saturate: those of
-// the methods that damping makes stable (explicit Euler, midpoint, modified Euler: past their
-// limits a mode grows at a rate proportional to how far past, and may settle into a buzz), and
-// RK4 (whose damped limit cycles it catches). Symplectic Euler and Verlet fail fast past their
-// limits (their roots leave the unit disc through -1, at a rate growing like the square root of
-// how far past), which the divergence test sees; near their limits their energy swings by up to
-// 1 / (1 - (h w / 2)^2) on a mode, and the dissipation measured on their inflated velocities
-// overstates what damping takes, so the audit would misread them. Implicit Euler only takes
-// energy out (a solver that did not converge could put some in: it is audited). Scenes without
-// springs have no oscillating modes (the energy a method gains in free flight and bounces is
-// first-order error, not instability), and the adaptive methods control their own steps.
+// The audit looks for instabilities that saturate as well as those that blow up: those of the
+// methods that damping makes stable (explicit Euler, midpoint, modified Euler: past their limits
+// a mode grows at a rate proportional to how far past, and may settle into a buzz), RK4 (whose
+// damped limit cycles it catches) and implicit Euler (a solve that did not converge could put
+// energy in). Symplectic Euler and Verlet fail fast past their limits (their roots leave the unit
+// disc through -1, at a rate growing like the square root of how far past), which the divergence
+// test sees, and their step has no energy norm of its own to bound (Verlet keeps a history).
+// Scenes without springs have no oscillating modes (the energy a method gains in free flight and
+// bounces is first-order error, not instability), and the adaptive methods control their own
+// steps. A held particle is moved by the user, not the method: the audit waits for its release.
 bool Simulation::audited() const {
   const Method m = settings_.method;
   return settings_.audit_fraction > 0.0 && !method_info(m).adaptive && m != Method::SymplecticEuler &&
-         m != Method::Verlet && has_stiffness_;
+         m != Method::Verlet && has_stiffness_ && grabbed_ < 0;
+}
+
+void Simulation::audit_changed() {
+  audit_.reset();
+  allowance_.reset();
 }
 
 template <typename Change>
@@ -136,30 +141,42 @@ void Simulation::from_outside(const Change& change) {
   }
 }
 
+const EnergyAudit::Allowance& Simulation::audit_allowance() {
+  if (!allowance_) {
+    const StabilityAnalysis& analysis = stability();
+    allowance_ = EnergyAudit::Allowance{analysis.transient_growth(settings_.method, h(), model_.verlet_damping).factor,
+                                        analysis.lowest_energy()};
+  }
+  return *allowance_;
+}
+
 void Simulation::audit(double total) {
-  created_ = total + dissipated_ - baseline_;
-  const double net = total - baseline_;  // E - E0 - W
   if (!audited()) return;
-  const std::optional<EnergyAudit::Stretch> stretch = audit_.record(current_.t, steps_, created_, net);
-  const double threshold = settings_.audit_fraction * energy_scale_;
-  if (!stretch || !(stretch->rise[0] > threshold)) return;
-  // Something was created: more than a stable method at this step could create for what damping
-  // took out? (The analysis says how close to its limit the step is.)
-  if (!stability_ && !settings_.analyse_when_needed) return;  // asked again at the next window
-  const StabilityLimit& limit = stability_limit();
-  const double allowance = allowed_creation_ratio(settings_.method, h(), limit, model_.verlet_damping);
-  const double rise = stretch->rise_for(allowance);
-  if (!(rise > threshold)) return;
+  const double floor = settings_.audit_fraction * energy_scale_;
+  audit_.record(current_.t, steps_, total - baseline_, total, floor);
+  if (!audit_.pending() || instability_) return;
+  // A window rose above an earlier low: beyond what a stable step allows? (The analysis says; in
+  // the app it is made on a worker thread, and the windows wait for it.)
+  if (!stability_ && !settings_.analyse_when_needed) return;
+  const EnergyAudit::Allowance& allowance = audit_allowance();
+  const std::optional<EnergyAudit::Finding> found = audit_.decide(allowance, floor);
+  if (!found) return;
   std::ostringstream reason;
-  reason << "the method created energy from nothing since step " << stretch->step << " (t = " << format(stretch->t)
-         << " s): " << format(stretch->rise[0]) << " J, more than " << settings_.audit_fraction
-         << " of the scene's energy scale (" << format(energy_scale_) << " J) beyond what a stable method at this step "
-         << "creates for what damping, drag and contacts take out";
-  diverge(reason.str());
-  divergence_->unstable = true;
-  divergence_->created = stretch->rise[0];
-  divergence_->started_step = stretch->step;
-  divergence_->started_t = stretch->t;
+  reason << "the energy (less the work done on the scene) rose by " << format(found->rise) << " J in "
+         << format(current_.t - found->low_t) << " s from its low at t = " << format(found->low_t)
+         << " s, where no stable step raises it by more than " << format(found->allowed) << " J (";
+  if (found->growth > 1.0)
+    reason << "its stable modes' energy grows at most x" << format(found->growth) << " at this step: twice "
+           << format(found->growth - 1.0) << " of the " << format(found->motion) << " J of motion there, plus ";
+  else
+    reason << "no stable mode's energy can grow at this step; only rounding, ";
+  reason << settings_.audit_fraction << " of the scene's energy scale of " << format(energy_scale_) << " J)";
+  Divergence d = report(reason.str());
+  d.unstable = true;
+  d.audit = *found;
+  explain(d);  // the analysis is there: it gave the allowance
+  instability_ = d;
+  if (settings_.audit_stops) divergence_ = std::move(d);
 }
 
 bool Simulation::step() {
@@ -167,7 +184,8 @@ bool Simulation::step() {
   if (settings_.auto_substeps && !stability_ && settings_.analyse_when_needed) stability();  // chooses them
   const double h = this->h();
   const bool audit = audited();
-  const bool dissipation = settings_.track_dissipation || audit;  // the audit's bookkeeping
+  const bool dissipation = settings_.track_dissipation;
+  const bool outside = dissipation || audit;  // the work from outside, for the net energy
   ws_.measure_power = dissipation;
   for (int k = 0; k < settings_.substeps; ++k) {
     try {
@@ -199,12 +217,19 @@ bool Simulation::step() {
     next_.t = t_since_ + static_cast<double>(++substeps_done_) * h;
     const ContactResult contact = resolve_contacts(model_, next_);
     if (contact.contacts > 0) ws_.invalidate();
-    if (dissipation) {
+    if (outside) {
+      // Work from outside: contacts push particles out of colliders (raising their potential),
+      // a swirl puts energy in (the charts count both with what damping takes), and a held
+      // particle's prescribed motion does work on the rest through its springs: -f . v, f their
+      // force on it.
+      const double pushed = contact.potential_gained + (model_.attractors.empty() ? 0.0 : h * field_power(model_, current_));
+      baseline_ += pushed;
+      external_ += pushed;
       // The power at the step's start (the explicit methods measured it in their force pass),
-      // over h; what contacts took; what a swirl put in. A held particle's prescribed motion
-      // does work on the rest through its springs: -f . v, f their force on it.
-      dissipated_ += h * (ws_.input_power ? *ws_.input_power : dissipation_power(model_, current_)) +
-                     contact.kinetic_lost - contact.potential_gained - h * field_power(model_, current_);
+      // over h, and what contacts took.
+      if (dissipation)
+        dissipated_ += h * (ws_.input_power ? *ws_.input_power : dissipation_power(model_, current_)) +
+                       contact.kinetic_lost - pushed;
       if (grabbed_ >= 0) {
         const double work = -h * held_force(model_, current_, grabbed_, grabbed_springs_).dot(
                                      current_.v.row(grabbed_).transpose());
@@ -216,7 +241,7 @@ bool Simulation::step() {
     if (!emission_.empty()) {
       bool changed = false;
       const auto births_and_deaths = [&] { changed = emission_.update(model_, current_); };
-      if (dissipation) from_outside(births_and_deaths);
+      if (outside) from_outside(births_and_deaths);
       else births_and_deaths();
       if (changed) {
         ws_.invalidate();
@@ -240,7 +265,7 @@ bool Simulation::step() {
       diverge(reason.str());
       return false;
     }
-    if (dissipation) {
+    if (audit) {
       this->audit(total);
       if (divergence_) return false;
     }
@@ -254,28 +279,35 @@ std::int64_t Simulation::advance(std::int64_t steps) {
   return taken;
 }
 
-void Simulation::diverge(std::string reason) {
+Divergence Simulation::report(std::string reason) const {
   Divergence d;
   d.step = steps_;
   d.t = current_.t;
   d.method = settings_.method;
   d.h = h();
   d.reason = std::move(reason);
-  divergence_ = std::move(d);
+  return d;
+}
+
+void Simulation::diverge(std::string reason) {
+  divergence_ = report(std::move(reason));
   // The limit, from the analysis if there is one already (a large scene's takes seconds, which
   // a batch of runs or the app's frame loop should not wait for): explain_divergence() makes it.
   if (stability_) explain_divergence();
 }
 
+void Simulation::explain(Divergence& d) {
+  if (d.analysed) return;
+  // The analysis of the scene as it is (kept, or made from the last good state, which is finite).
+  const StabilityAnalysis& analysis = stability();
+  d.w_max = analysis.w_max();
+  d.limit = analysis.limit(settings_.method);
+  d.stable_h = d.limit.h;
+  d.analysed = true;
+}
+
 const std::optional<Divergence>& Simulation::explain_divergence() {
-  if (divergence_ && !divergence_->analysed) {
-    // The analysis of the scene as it is (kept, or made from the last good state, which is finite).
-    const StabilityAnalysis& analysis = stability();
-    divergence_->w_max = analysis.w_max();
-    divergence_->limit = analysis.limit(settings_.method);
-    divergence_->stable_h = divergence_->limit.h;
-    divergence_->analysed = true;
-  }
+  if (divergence_) explain(*divergence_);
   return divergence_;
 }
 
@@ -289,6 +321,7 @@ const StabilityAnalysis& Simulation::stability() {
 
 void Simulation::set_stability(std::shared_ptr<const StabilityAnalysis> analysis) {
   stability_ = std::move(analysis);
+  allowance_.reset();
   choose_substeps();
 }
 
@@ -305,18 +338,19 @@ void Simulation::substeps_changed(int substeps) {
   t_since_ = current_.t;
   substeps_done_ = 0;
   ws_.invalidate();
-  audit_.reset();  // a new step: what a stable run may create changes
+  audit_changed();  // a new step: what a stable run may do changes
 }
 
 void Simulation::model_changed() {
   ws_.invalidate();
   stability_.reset();
   ++model_version_;
+  audit_changed();
 }
 
 void Simulation::set_method(Method method) {
   settings_.method = method;
-  audit_.reset();  // a new step: what a stable run may create changes
+  audit_changed();  // a new step: what a stable run may do changes
   ws_.invalidate();
   ws_.adaptive_step = 0.0;
   choose_substeps();
@@ -324,7 +358,7 @@ void Simulation::set_method(Method method) {
 
 void Simulation::set_dt(double dt) {
   settings_.dt = dt;
-  audit_.reset();
+  audit_changed();
   t_since_ = current_.t;
   substeps_done_ = 0;
   ws_.invalidate();

@@ -47,7 +47,7 @@ double rms(const Points& a, const Points& b) {
 // reference, or infinity once it diverges.
 SweepRun run_one(const Model& model, const State& initial, Method method, double h, int every,
                  int samples, double tolerance, const StepSettings& base, const Trajectory& reference,
-                 int repeats) {
+                 int repeats, const std::shared_ptr<const StabilityAnalysis>& analysis) {
   SweepRun run;
   run.method = method;
   run.h = h;
@@ -58,14 +58,14 @@ SweepRun run_one(const Model& model, const State& initial, Method method, double
     s.method = method;
     s.dt = h;
     s.step = base;
-    // The audit's bookkeeping without its stop: the error is measured over the whole run, and
-    // the energy the method created says whether the run was numerically unstable.
-    s.track_dissipation = true;
-    s.audit_fraction = 0.0;
+    // The audit without its stop: the error is measured over the whole run, and the audit says
+    // whether the run was numerically unstable (with the sweep's one analysis of the scene).
+    s.audit_stops = false;
     // An adaptive method without a tolerance runs at fixed steps: every try accepted. (Not an
     // infinite one: times a zero coordinate in RK45's error norm it would make NaN.)
     if (method_info(method).adaptive) s.step.tolerance = std::isnan(tolerance) ? 1e300 : tolerance;
     Simulation sim(model, initial, s);
+    if (analysis) sim.set_stability(analysis);
     double error = 0.0;
     const auto start = std::chrono::steady_clock::now();
     bool diverged = false;
@@ -81,8 +81,8 @@ SweepRun run_one(const Model& model, const State& initial, Method method, double
     run.diverged = diverged;
     run.error = diverged ? kInf : error;
     if (diverged) run.diverged_at = sim.divergence()->t;
-    run.created = sim.created_energy();
-    run.unstable = diverged || run.created > kAuditFraction * sim.energy_scale();
+    run.rise = sim.instability() ? sim.instability()->audit.rise : 0.0;
+    run.unstable = diverged || sim.instability().has_value();
     const double internal = static_cast<double>(std::max<std::int64_t>(1, sim.counters().accepted));
     run.mean_step = method_info(method).adaptive ? sim.state().t / internal : h / s.substeps;
     if (diverged) break;  // a diverging run is not worth timing again
@@ -257,7 +257,7 @@ struct SweepPlan {
     if (j < static_cast<int>(jobs.size())) {
       const SweepJob& job = jobs[j];
       result.runs[j] = run_one(model, initial, job.method, H / job.divisor, job.divisor, result.samples,
-                               job.tolerance, settings.step, reference, settings.repeats);
+                               job.tolerance, settings.step, reference, settings.repeats, analysis);
       if (!std::isnan(job.tolerance)) result.runs[j].h = H;
       return &result.runs[j];
     }

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "cli/cli_support.hpp"
+#include "springlab/energy_audit.hpp"
 
 namespace springlab::test {
 namespace {
@@ -117,14 +118,16 @@ TEST(Run, AnInstabilityCaughtByTheAuditExitsThreeToo) {
   TempDir dir;
   const Result r = springlab("run spring --method euler --dt 0.01 --duration 100 --csv " + (dir / "t.csv").string());
   EXPECT_EQ(r.status, 3);
-  for (const char* part : {"went numerically unstable during step", "created", "since step", "t = ", "euler",
+  for (const char* part : {"went numerically unstable during step", "rose by", "from its low at t = ", "euler",
                            "h = 0.01 s", "unstable at any step", "symplectic-euler"})
     EXPECT_NE(r.err.find(part), std::string::npos) << part << "\n" << r.err;
   // The warning (no step is small enough for explicit Euler without damping), then the report.
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 2) << r.err;
   const auto rows = lines(read_file(dir / "t.csv"));
-  EXPECT_GT(rows.size(), 100u);
-  EXPECT_LT(rows.size(), 1000u);  // stopped within seconds, not at 1e6 times the scale
+  // Stopped within a second (three of the audit's windows once the rise passes its floor, on the
+  // first step), not at 1e6 times the scale (step 1728).
+  EXPECT_GT(rows.size(), 3 * EnergyAudit::kWindow / 0.01);
+  EXPECT_LT(rows.size(), 1.0 / 0.01 + 2);
 }
 
 struct BadInput {

@@ -143,8 +143,8 @@ TEST(Stability, TheAuditCatchesAnInstabilityThatSaturates) {
   ASSERT_TRUE(audited.diverged());
   const Divergence& d = *audited.divergence();
   EXPECT_TRUE(d.unstable);
-  EXPECT_GT(d.created, kAuditFraction * audited.energy_scale());
-  EXPECT_LE(d.started_step, d.step);
+  EXPECT_GT(d.audit.rise, kAuditFraction * audited.energy_scale());
+  EXPECT_LT(d.audit.low_step, d.step);
   EXPECT_NE(d.message().find("numerically unstable"), std::string::npos) << d.message();
 }
 

@@ -26,7 +26,7 @@ struct Pinned {
 
 TEST(StateHash, SameBitsNativeAndInTheBrowser) {
   const Pinned cases[] = {
-      {"spring", {}, Method::Euler, 1000, 0x3c76da071af44f11ull},
+      {"spring", {}, Method::Euler, 1000, 0x94ae06ff9ec92590ull},
       {"rope", {}, Method::SymplecticEuler, 2000, 0xa78519cf3fe4ff0cull},
       {"rope", {}, Method::RK4, 500, 0x730573bf42f010fcull},
       {"cloth", {}, Method::Verlet, 300, 0xe2226b9677c3a37bull},
@@ -38,8 +38,12 @@ TEST(StateHash, SameBitsNativeAndInTheBrowser) {
   set_thread_count(1);
   for (const Pinned& c : cases) {
     const Scene scene = test::shipped(c.scene, c.overrides);
-    Simulation sim = test::simulation(scene, c.method, scene.dt);
-    sim.advance(c.steps);
+    SimulationSettings s;
+    s.method = c.method;
+    s.dt = scene.dt;
+    s.audit_fraction = 0.0;  // the physics' bits: explicit Euler's growth on `spring` is the point
+    Simulation sim(scene.model, scene.state, s);
+    ASSERT_EQ(sim.advance(c.steps), c.steps) << c.scene;
     const std::uint64_t hash = state_hash(sim.state());
     EXPECT_EQ(hash, c.hash) << c.scene << ", " << method_info(c.method).name << ", " << c.steps
                             << " steps: 0x" << std::hex << hash;

@@ -24,10 +24,8 @@
 
 namespace springlab {
 
-// The energy audit (energy_audit.hpp): a run counts as numerically unstable once the energy the
-// method created has risen by more than this fraction of the scene's energy scale, and by more
-// than a stable method at its step could create for what damping took out. Chosen so that every stable run of the shipped scenes
-// stays below it and the instabilities that saturate are caught (README, "The energy audit").
+// The energy audit (energy_audit.hpp): a rise of the net energy counts only beyond what a stable
+// step allows plus this fraction of the scene's energy scale (rounding, contacts' pushes).
 inline constexpr double kAuditFraction = 1e-3;
 
 struct SimulationSettings {
@@ -46,9 +44,13 @@ struct SimulationSettings {
   StepSettings step;
   int energy_check_interval = 16;  // steps between divergence checks of the total energy
   bool track_dissipation = false;  // integrate the dissipated power (free with the explicit methods)
-  // The audit's fraction (0: no audit). An audit tracks the dissipation whatever the flag above.
-  // Which methods it watches, and why: Simulation::audited().
+  // The audit's floor as a fraction of the energy scale (0: no audit). Which methods it watches,
+  // and why: Simulation::audited().
   double audit_fraction = kAuditFraction;
+  // What a finding does: stops the run as a divergence (`run`), or is only reported
+  // (Simulation::instability()) while the run goes on: the app keeps an unstable lane moving,
+  // marked, so that the class sees where it goes; a sweep measures the error over the whole run.
+  bool audit_stops = true;
 };
 
 // A scene's own settings: its first method, its step, its sub-steps (automatic unless it fixes
@@ -75,11 +77,9 @@ struct Divergence {
   double w_max = 0.0;
   double stable_h = 0.0;  // the method's largest stable step (limit.h)
   StabilityLimit limit;
-  // Caught by the energy audit: the energy the method created, and where that stretch started.
+  // Caught by the energy audit (energy_audit.hpp): what it found.
   bool unstable = false;
-  double created = 0.0;
-  std::int64_t started_step = 0;
-  double started_t = 0.0;
+  EnergyAudit::Finding audit;
   std::string reason;
 
   std::string message() const;  // one paragraph for people
@@ -136,9 +136,20 @@ class Simulation {
   // Changes every time the model or the pinning changes (a counter, compared by the app).
   std::uint64_t model_version() const { return model_version_; }
 
-  // The energy audit: what the method created so far (J), and the work done from outside.
-  double created_energy() const { return created_; }
+  // The work done from outside since the start (J): drags, parameter changes, births and deaths,
+  // contacts' pushes, fields. The net energy E - E0 - W never rises in the physics.
   double external_work() const { return external_; }
+  double net_energy() const { return energy().total() - baseline_; }
+  // The energy audit's finding as a report (unstable, with the limit once analysed), kept whether
+  // or not it stopped the run (settings.audit_stops).
+  const std::optional<Divergence>& instability() const { return instability_; }
+  // What is wrong with the run, if anything: its divergence, else the audit's report.
+  const Divergence* trouble() const {
+    return divergence_ ? &*divergence_ : instability_ ? &*instability_ : nullptr;
+  }
+  // What the audit allows at the current step and method (computed from the analysis when first
+  // asked after a change).
+  const EnergyAudit::Allowance& audit_allowance();
 
   // Changes. Each takes effect at the next step.
   void set_method(Method method);
@@ -176,7 +187,10 @@ class Simulation {
   void from_outside(const Change& change);
   bool audited() const;
   void audit(double total);
+  void audit_changed();  // the step, the method or the model changed: the audit starts again
   void diverge(std::string reason);
+  Divergence report(std::string reason) const;
+  void explain(Divergence& d);
 
   Model model_;
   // The model as built, for reset(), without its springs: they never change, so the simulation
@@ -197,10 +211,11 @@ class Simulation {
   int grabbed_ = -1;
   bool grabbed_was_pinned_ = false;
   std::vector<int> grabbed_springs_;  // the springs of the held particle (its drag's work)
-  // The audit: the initial energy plus the work done from outside; what the method created at
-  // the last check; where that was last under a hundredth of the threshold.
-  double baseline_ = 0.0, external_ = 0.0, created_ = 0.0;
+  // The audit: the initial energy plus the work done from outside, and that work alone.
+  double baseline_ = 0.0, external_ = 0.0;
   EnergyAudit audit_;
+  std::optional<EnergyAudit::Allowance> allowance_;  // for the current step, method and analysis
+  std::optional<Divergence> instability_;
   bool has_stiffness_ = false;
   bool substeps_capped_ = false;
 };

@@ -35,6 +35,7 @@
 #pragma once
 
 #include <complex>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -59,6 +60,11 @@ double runge_kutta_limit(Method method, std::complex<double> lambda);
 // function applied to that oscillator as it runs (Verlet with the history it keeps): what the
 // closed forms are checked against.
 double amplification(Method method, double w, double c, double h, double verlet_damping = 0.0);
+// The most a stable step can raise the mode's energy, over any number of steps: sup over n of
+// |S^n|^2 in the energy norm (kappa x^2 + v^2) / 2, S that step as a matrix. 1 for a normal
+// contraction; above 1 where S is far from normal (near critical damping, near a limit);
+// infinity where the mode grows (and for Verlet, whose state holds a history).
+double transient_growth(Method method, double gamma, double kappa, double h, double verlet_damping = 0.0);
 
 // ---- The equilibrium ----------------------------------------------------------------------------
 
@@ -69,6 +75,9 @@ double amplification(Method method, double w, double c, double h, double verlet_
 // 20000 free coordinates) is balanced by relaxation alone, to about 1e-3 of its springs' force
 // at 1 % strain.
 State equilibrium(const Model& model, const State& state);
+// A lower bound on the total energy of the scene whose equilibrium is `rest` (above:
+// StabilityAnalysis::lowest_energy()).
+double lowest_energy(const Model& model, const State& rest);
 
 // ---- A scene's limits ---------------------------------------------------------------------------
 
@@ -117,6 +126,19 @@ class StabilityAnalysis {
 
   const StabilityLimit& limit(Method method) const;
 
+  // What the energy audit (energy_audit.hpp) allows a stable run: over the scene's modes (dense
+  // scenes: every eigenpair; large ones: the traced boundary of W), the largest transient growth
+  // of those the method at step h keeps stable, and how many it does not.
+  struct Growth {
+    double factor = 1.0;
+    int growing = 0;
+  };
+  Growth transient_growth(Method method, double h, double verlet_damping = 0.0) const;
+  // A lower bound on the scene's total energy: the equilibrium's for the parts held by a pin (the
+  // least potential near it), springs at rest and each particle on the lowest floor for the parts
+  // that are not; -infinity when nothing bounds it (a part that can fall forever, a field).
+  double lowest_energy() const { return lowest_energy_; }
+
   // For the stability-region chart. The eigenvalues of the first-order system (dense scenes:
   // all of them; large ones: none). The modes as (gamma, kappa) points: dense scenes, one per
   // eigenvalue (gamma = -2 Re lambda, kappa = |lambda|^2 for a complex pair; a real pair as
@@ -135,6 +157,8 @@ class StabilityAnalysis {
   std::vector<StabilityLimit> limits_;  // one per method, in table order
   std::vector<std::complex<double>> eigenvalues_;
   std::vector<ModePoint> modes_;
+  std::vector<ModePoint> growth_modes_;  // (gamma, kappa) of each mode, real eigenvalues included
+  double lowest_energy_ = -std::numeric_limits<double>::infinity();
 };
 
 // ---- Automatic sub-steps ------------------------------------------------------------------------

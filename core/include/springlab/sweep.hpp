@@ -57,9 +57,10 @@ struct SweepRun {
   Counters counters;
   bool diverged = false;
   double diverged_at = std::numeric_limits<double>::quiet_NaN();
-  // The energy audit (simulation.hpp): what the method created over the run (J), and whether
-  // that is past the audit's threshold (or the run diverged): numerically unstable.
-  double created = 0.0;
+  // The energy audit (energy_audit.hpp), run without stopping the run: how far the net energy
+  // rose above an earlier low where no stable step lets it (J; 0 if it never did), and whether
+  // it did or the run diverged: numerically unstable.
+  double rise = 0.0;
   bool unstable = false;
 };
 
