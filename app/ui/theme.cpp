@@ -17,7 +17,7 @@ void apply_theme(float scale) {
   // Three sizes: the panels', presentation mode's (kPresentationScale larger) and the lesson
   // captions' (kCaptionScale), each drawn at its own size rather than stretched, so that it stays
   // sharp on a projector. The glyphs: Latin-1, Greek, punctuation, super- and subscripts, arrows
-  // and math operators (core/src/lesson.cpp lets a caption use exactly these).
+  // and math operators (core/src/loading/lesson.cpp lets a caption use exactly these).
   static const ImWchar glyphs[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x205E, 0x2070, 0x209F,
                                    0x2190, 0x21FF, 0x2200, 0x22FF, 0};
   for (const float size : {1.0f, kPresentationScale, kCaptionScale}) {

@@ -10,7 +10,7 @@
 #include <complex>
 #include <numbers>
 
-#include "ik_scene.hpp"
+#include "loading/ik_scene.hpp"
 #include "springlab/error.hpp"
 #include "springlab/ik.hpp"
 

@@ -1,6 +1,6 @@
 // Forces on every particle: springs, gravity, drag and the fields, gathered without races.
 //
-// The pass (core/src/force_pass.hpp) cuts the particles into fixed blocks, shared out among the
+// The pass (core/src/dynamics/force_pass.hpp) cuts the particles into fixed blocks, shared out among the
 // threads as runs of consecutive blocks; each spring belongs to the block of its a-end, and
 // the forces of springs reaching into a later block wait in a buffer until that block takes
 // them. Every particle's sum is taken in an order fixed by the blocks alone, so results are

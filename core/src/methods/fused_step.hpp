@@ -8,7 +8,7 @@
 // and with simd::f64x4 (four particles), the same arithmetic either way.
 #pragma once
 
-#include "../force_pass.hpp"
+#include "dynamics/force_pass.hpp"
 #include "springlab/methods.hpp"
 #include "springlab/simd.hpp"
 

@@ -44,7 +44,7 @@
 #include <span>
 #include <vector>
 
-#include "force_pass.hpp"
+#include "dynamics/force_pass.hpp"
 #include "springlab/spring_kernel.hpp"
 #include "steps.hpp"
 

@@ -1,4 +1,4 @@
-// The step functions of the method table (methods.cpp), one per file in this folder.
+// The step functions of the method table (table.cpp), one per file in this folder.
 #pragma once
 
 #include "springlab/methods.hpp"

@@ -1,4 +1,4 @@
-#include "ik_scene.hpp"
+#include "loading/ik_scene.hpp"
 
 #include <sstream>
 

@@ -1,4 +1,4 @@
-#include "linearised.hpp"
+#include "stability/linearised.hpp"
 
 #include <cmath>
 

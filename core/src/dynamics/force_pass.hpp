@@ -35,7 +35,7 @@
 #include "springlab/fields.hpp"
 #include "springlab/forces.hpp"
 #include "springlab/spring_kernel.hpp"
-#include "threads.hpp"
+#include "dynamics/threads.hpp"
 
 namespace springlab {
 

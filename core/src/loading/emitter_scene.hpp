@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "generators.hpp"
-#include "json_reader.hpp"
+#include "loading/generators.hpp"
+#include "loading/json_reader.hpp"
 #include "springlab/fields.hpp"
 
 namespace springlab {

@@ -28,7 +28,7 @@
 #include <numeric>
 #include <vector>
 
-#include "linearised.hpp"
+#include "stability/linearised.hpp"
 #include "springlab/forces.hpp"
 #include "springlab/spring_kernel.hpp"
 #include "springlab/stability.hpp"

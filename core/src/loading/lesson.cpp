@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <numeric>
 
-#include "script_events.hpp"
+#include "loading/script_events.hpp"
 #include "springlab/exact.hpp"
 
 namespace springlab {

@@ -1,4 +1,4 @@
-#include "generators.hpp"
+#include "loading/generators.hpp"
 
 #include <Eigen/Geometry>
 #include <cmath>

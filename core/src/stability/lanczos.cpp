@@ -1,4 +1,4 @@
-#include "lanczos.hpp"
+#include "stability/lanczos.hpp"
 
 #include <Eigen/Core>
 #include <algorithm>

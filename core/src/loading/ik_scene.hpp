@@ -12,7 +12,7 @@
 //       optional, default none. A starting angle must lie within its joint's limits.
 #pragma once
 
-#include "json_reader.hpp"
+#include "loading/json_reader.hpp"
 #include "springlab/ik.hpp"
 
 namespace springlab {

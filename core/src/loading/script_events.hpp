@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "json_reader.hpp"
+#include "loading/json_reader.hpp"
 #include "springlab/script.hpp"
 
 namespace springlab {

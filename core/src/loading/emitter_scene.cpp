@@ -1,4 +1,4 @@
-#include "emitter_scene.hpp"
+#include "loading/emitter_scene.hpp"
 
 #include <cmath>
 #include <numbers>

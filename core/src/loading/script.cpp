@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
-#include "script_events.hpp"
+#include "loading/script_events.hpp"
 
 namespace springlab {
 

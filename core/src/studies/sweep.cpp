@@ -11,7 +11,7 @@
 #include "springlab/energy.hpp"
 #include "springlab/exact.hpp"
 #include "springlab/simulation.hpp"
-#include "threads.hpp"
+#include "dynamics/threads.hpp"
 
 namespace springlab {
 

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "json_reader.hpp"
+#include "loading/json_reader.hpp"
 #include "springlab/scene.hpp"
 
 namespace springlab::generators {

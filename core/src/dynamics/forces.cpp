@@ -1,7 +1,7 @@
 #include "springlab/forces.hpp"
 
-#include "force_pass.hpp"
-#include "threads.hpp"
+#include "dynamics/force_pass.hpp"
+#include "dynamics/threads.hpp"
 
 namespace springlab {
 

@@ -9,7 +9,7 @@
 #include <limits>
 
 #include "springlab/stability.hpp"
-#include "sqrt_of_real.hpp"
+#include "stability/sqrt_of_real.hpp"
 
 namespace springlab {
 

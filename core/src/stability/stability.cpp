@@ -14,9 +14,9 @@
 #include <numbers>
 #include <sstream>
 
-#include "lanczos.hpp"
-#include "linearised.hpp"
-#include "sqrt_of_real.hpp"
+#include "stability/lanczos.hpp"
+#include "stability/linearised.hpp"
+#include "stability/sqrt_of_real.hpp"
 
 namespace springlab {
 

@@ -4,10 +4,10 @@
 #include <map>
 #include <sstream>
 
-#include "emitter_scene.hpp"
-#include "generators.hpp"
-#include "ik_scene.hpp"
-#include "json_reader.hpp"
+#include "loading/emitter_scene.hpp"
+#include "loading/generators.hpp"
+#include "loading/ik_scene.hpp"
+#include "loading/json_reader.hpp"
 #include "springlab/stability.hpp"
 
 namespace springlab {
