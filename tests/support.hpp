@@ -43,7 +43,7 @@ inline void jitter(State& s, double dx, double dv, unsigned seed) {
     }
 }
 
-// The reference oscillator of NUMERICS.md with optional damping: anchor at the origin, unit mass
+// The reference oscillator of docs/numerics.md ("Accuracy and cost") with optional damping: anchor at the origin, unit mass
 // at (1.5, 0, 0), rest length 1, k_s, k_d.
 inline Scene oscillator(double ks = 100.0, double kd = 0.0) {
   Scene s = shipped("spring");
@@ -52,7 +52,7 @@ inline Scene oscillator(double ks = 100.0, double kd = 0.0) {
   return s;
 }
 
-// The test oscillator of NUMERICS.md's stability section, x'' = -w^2 x - c x', exactly linear at
+// The test oscillator of docs/numerics.md's "Stability", x'' = -w^2 x - c x', exactly linear at
 // any amplitude: the notes' idealised spring (rest length 0), anchor at the origin, the unit mass
 // at (0.5, 0, 0). On `spring` itself (rest length 1) a method that pumps the amplitude past 1
 // sends the particle through its anchor, where the double well k (|x| - 1)^2 / 2 lowers the
@@ -78,7 +78,7 @@ inline Scene coincident_pair(bool pinned, double ks, double kd) {
   return s;
 }
 
-// Largest over the steps of the RMS over free particles of |x - x_exact| (NUMERICS.md).
+// Largest over the steps of the RMS over free particles of |x - x_exact| (docs/numerics.md, "Accuracy and cost").
 inline double error_against_exact(const Scene& scene, Method method, double h, double duration,
                                   double tolerance = 1e-4) {
   const auto exact = ExactOscillator::detect(scene.model, scene.state);

@@ -198,7 +198,7 @@ Chart stability_region(const StabilityAnalysis& analysis, const std::vector<Regi
   c.x.max = xmax;
   c.y.min = 0.0;
   c.y.max = ymax;
-  // Every region here lies within h w <= 2, h c <= 2 (the closed forms of NUMERICS.md): sampled
+  // Every region here lies within h w <= 2, h c <= 2 (the closed forms of docs/numerics.md, "One damped mode"): sampled
   // there, its edge stays smooth when the modes stretch the view.
   for (const RegionLane& l : shown)
     region([&](double x, double y) { return stable_at(l.method, x, y); }, 0.0, std::min(xmax, 2.2), 0.0,

@@ -50,7 +50,7 @@ struct Lane {
   State sane;
   // Whether the lane waits for its first analysis before it steps (automatic sub-steps, in the
   // session's background mode; otherwise the simulation makes it when it first steps).
-  bool waiting() const { return sim.auto_substeps() && !analysis && !sim.has_stability(); }
+  bool waiting() const { return !sim.ready(); }
 };
 
 class Session {
@@ -62,7 +62,8 @@ class Session {
 
   // Background mode (the interactive window): each lane's stability analysis is made on a worker
   // thread when the scene changes, the lane stepping on with the sub-steps it had meanwhile (a
-  // lane with automatic sub-steps waits for its first). Off (render, the tests, `view --frames`),
+  // lane with automatic sub-steps starts at once with those of a quick bound, quick_limit(), and
+  // waits only where that cannot tell). Off (render, the tests, `view --frames`),
   // an analysis is made where it is needed, and the same inputs give the same frames.
   void set_background_analysis(bool on);
   bool background_analysis() const { return background_; }

@@ -480,9 +480,13 @@ void parameters(app::Session& session, UiState& ui, bool few) {
   std::string shown = std::to_string(substeps);
   if (session.auto_substeps()) {
     shown = "auto (" + shown;
+    bool bound = sim.substeps_provisional();
     if (session.comparing())
-      for (std::size_t k = 1; k < session.lanes().size(); ++k) shown += ", " + std::to_string(session.lanes()[k].sim.settings().substeps);
-    shown += ")";
+      for (std::size_t k = 1; k < session.lanes().size(); ++k) {
+        shown += ", " + std::to_string(session.lanes()[k].sim.settings().substeps);
+        bound |= session.lanes()[k].sim.substeps_provisional();
+      }
+    shown += bound ? ", bound)" : ")";  // from the quick bound until the analysis ends
   }
   ImGui::PushItemWidth(ImGui::CalcItemWidth() - ImGui::CalcTextSize("auto").x - ImGui::GetFrameHeight() -
                        2 * ImGui::GetStyle().ItemInnerSpacing.x);

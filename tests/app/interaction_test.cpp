@@ -289,5 +289,30 @@ TEST(ComparePanel, SweepsTheSceneOnScreenInTheBackgroundAndCancels) {
   EXPECT_LT(done, total);
 }
 
+// No wait: with its analysis on a worker thread (the window), a 64 x 64 cloth's lane with
+// automatic sub-steps moves in its first frame, on the sub-steps of the quick bound, never fewer
+// than the analysis then chooses (a smaller step), and moves to the analysis' own when it ends.
+TEST(Interaction, ALaneStartsAtOnceAndTakesTheAnalysedStepWhenItComes) {
+  Scene scene = test::shipped("cloth", {"cloth.width=64", "cloth.height=64"});
+  app::Session session(std::move(scene), settings_for(test::shipped("cloth")), 60.0);
+  session.set_background_analysis(true);
+  session.advance_frame();
+  const Simulation& sim = session.primary().sim;
+  EXPECT_GT(sim.state().t, 0.0) << "the lane waited for its analysis";
+  ASSERT_TRUE(sim.substeps_provisional());
+  const int quick = sim.settings().substeps;
+  for (int k = 0; k < 600 && sim.substeps_provisional(); ++k) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    session.advance_frame();
+  }
+  ASSERT_FALSE(sim.substeps_provisional()) << "no analysis within a minute";
+  ASSERT_TRUE(sim.has_stability());
+  const StabilityAnalysis& analysis = *sim.stability_if_any();
+  EXPECT_EQ(sim.settings().substeps,
+            choose_substeps(analysis.limit(sim.settings().method), sim.settings().dt, sim.settings().safety).substeps);
+  EXPECT_GE(quick, sim.settings().substeps);
+  EXPECT_FALSE(sim.diverged());
+}
+
 }  // namespace
 }  // namespace springlab::ui

@@ -1,5 +1,5 @@
 // Accuracy on the reference spring against its exact solution: every fixed-step method's order
-// measured by halving the step (NUMERICS.md: within 0.2), and the adaptive methods' error falling
+// measured by halving the step (docs/numerics.md, "Accuracy and cost": within 0.2), and the adaptive methods' error falling
 // with their tolerance, with their step counts checked against what the controllers must do.
 #include <gtest/gtest.h>
 

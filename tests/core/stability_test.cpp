@@ -64,7 +64,7 @@ TEST(ModeLimit, AmplificationFactorsAreTheKnownOnes) {
   EXPECT_NEAR(amplification(Method::Midpoint, w, 0, h), std::sqrt(1 + s * s / 4), 1e-9);
   EXPECT_NEAR(amplification(Method::ModifiedEuler, w, 0, h), std::sqrt(1 + s / 2), 1e-9);
   EXPECT_NEAR(amplification(Method::ImplicitEuler, w, 0, h), 1 / std::sqrt(1 + s), 1e-9);
-  EXPECT_NEAR(amplification(Method::RK4, w, 0, 0.29), 1.19, 0.005);  // NUMERICS.md
+  EXPECT_NEAR(amplification(Method::RK4, w, 0, 0.29), 1.19, 0.005);  // docs/numerics.md, "The undamped oscillator"
 }
 
 // Runs `steps` steps; true if the run did not diverge (nor go numerically unstable).
@@ -235,7 +235,7 @@ TEST(Analysis, EigenvaluesEqualADenseReferenceSolvers) {
   for (std::size_t k = 0; k < ref.size(); ++k) EXPECT_LT(std::abs(mine[k] - ref[k]), 1e-6 * std::abs(ref[k])) << k;
 }
 
-// NUMERICS.md's oscillator, at its equilibrium (rest length): the analysis gives the closed
+// docs/numerics.md's oscillator, at its equilibrium (rest length): the analysis gives the closed
 // forms to 1e-6.
 TEST(Analysis, TheSingleSpringHasTheClosedFormLimits) {
   const double w = 10.0;
@@ -422,6 +422,30 @@ TEST(Analysis, RunsFindTheAnalysisLimits) {
     EXPECT_NEAR(measured.h, limit.h, (measured.resolution + 1e-3) * limit.h);
   }
   EXPECT_TRUE(std::isinf(measured_limit(Method::ImplicitEuler, s.model, s.state, a.limit(Method::ImplicitEuler), a.w_max()).h));
+}
+
+// The quick bound a lane starts with while the analysis runs (quick_limit) is safe: never above
+// the exact limit on the shipped scenes with springs, for every fixed-step method; and it tells
+// (is above 0) for the methods stable without damping. How far below: printed.
+TEST(QuickLimit, IsNeverAboveTheLimit) {
+  for (const char* name : {"spring", "damped-spring", "rope", "chain", "cloth", "cloth-sphere", "jelly", "stiff"}) {
+    const Scene scene = test::shipped(name);
+    const StabilityAnalysis a(scene.model, scene.state);
+    std::printf("  %-14s", name);
+    for (Method m : kFixedStep) {
+      const StabilityLimit& limit = a.limit(m);
+      const StabilityLimit quick = quick_limit(m, scene.model, scene.state);
+      SCOPED_TRACE(std::string(name) + ", " + method_info(m).name + ": " + describe(limit));
+      EXPECT_FALSE(quick.exact);
+      if (limit.exact) EXPECT_LE(quick.h, limit.h * (1.0 + 1e-12));
+      if (m == Method::SymplecticEuler || m == Method::Verlet || m == Method::RK4) EXPECT_GT(quick.h, 0.0);
+      if (limit.h > 0.0 && std::isfinite(limit.h)) std::printf(" %s %.2f", method_info(m).name, quick.h / limit.h);
+    }
+    std::printf("\n");
+  }
+  const Scene spring = test::shipped("spring");
+  EXPECT_TRUE(std::isinf(quick_limit(Method::ImplicitEuler, spring.model, spring.state).h));
+  EXPECT_TRUE(std::isnan(quick_limit(Method::RK45, spring.model, spring.state).h));
 }
 
 }  // namespace

@@ -57,6 +57,8 @@ double dissipation_power(const Model& model, const State& state);
 // Power (W) the fields put in: sum m a_swirl . v over the free particles (a swirl is not a
 // gradient, so it feeds energy in or takes it out; the pull's work is in the potential).
 double field_power(const Model& model, const State& state);
+// The power a wind puts in through the drag: k_drag sum wind . v over the free particles (W).
+double wind_power(const Model& model, const State& state);
 
 // The force the springs exert on one particle (with their damping), from its springs' list:
 // what a held particle's prescribed motion works against (its work is -f . v).

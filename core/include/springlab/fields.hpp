@@ -1,4 +1,4 @@
-// Force fields a particle scene may declare beside gravity and drag (NUMERICS.md: only where
+// Force fields a particle scene may declare beside gravity and drag (docs/numerics.md, "The model": only where
 // declared): an attractor, optionally swirling (a vortex). Accelerations, so f = m a.
 //
 // With d = c - x and q = |d|^2 + eps^2 (eps, the softening, keeps the pull finite at the centre):

@@ -3,7 +3,7 @@
 //
 // Every step function advances a state by exactly h (adaptive methods take as many internal
 // steps as their tolerance needs to get there), reading `in` and writing `out`, and counts its
-// work in the workspace. NUMERICS.md gives each update; the files in src/methods/ implement
+// work in the workspace. docs/numerics.md ("Integrators") gives each update; the files in src/methods/ implement
 // them, one method a file.
 #pragma once
 

@@ -39,7 +39,8 @@ struct SimulationSettings {
   double safety = kSafeFraction;
   // A step that needs the analysis (automatic sub-steps, the audit) makes it there and then; the
   // app instead makes it on a worker thread and hands it over (set_stability), stepping on
-  // meanwhile with the sub-steps it has.
+  // meanwhile: automatic sub-steps come first from a quick bound (stability.hpp, quick_limit),
+  // then from the analysis when it arrives.
   bool analyse_when_needed = true;
   StepSettings step;
   int energy_check_interval = 16;  // steps between divergence checks of the total energy
@@ -58,7 +59,7 @@ struct SimulationSettings {
 struct Scene;
 SimulationSettings settings_for(const Scene& scene);
 
-// NUMERICS.md: a run has diverged when a position or velocity is not finite, or when the total
+// docs/numerics.md, "Divergence": a run has diverged when a position or velocity is not finite, or when the total
 // energy exceeds 1e6 times the scene's energy scale; an adaptive step below its floor too. The
 // kinetic energy is tested every step (cheap), the total every energy_check_interval steps.
 // The audit (above) reports a run that went numerically unstable the same way, even when the
@@ -93,7 +94,7 @@ class Simulation {
   Simulation(Model model, State initial, SimulationSettings settings);
 
   // One step of dt. Returns false (and does nothing) once the run has diverged; the state is then
-  // the last good one.
+  // the last good one. Does nothing either while it is not ready() (the app's lane waits).
   bool step();
   // Up to `steps` steps; returns how many were taken.
   std::int64_t advance(std::int64_t steps);
@@ -131,7 +132,12 @@ class Simulation {
   // Automatic sub-steps: whether on, and whether the choice reached kMaxAutoSubsteps.
   bool auto_substeps() const { return settings_.auto_substeps; }
   bool substeps_capped() const { return substeps_capped_; }
-  void set_analyse_when_needed(bool on) { settings_.analyse_when_needed = on; }
+  // Automatic sub-steps chosen from the quick bound while the analysis is awaited.
+  bool substeps_provisional() const { return provisional_; }
+  // Whether a step can be taken now without the analysis: false only for automatic sub-steps
+  // with neither the analysis nor a quick bound that tells (the app's lane waits).
+  bool ready() const { return !settings_.auto_substeps || stability_ || provisional_ || settings_.analyse_when_needed; }
+  void set_analyse_when_needed(bool on);
   // The model and state an analysis must be made from to be the one stability() would make.
   // Changes every time the model or the pinning changes (a counter, compared by the app).
   std::uint64_t model_version() const { return model_version_; }
@@ -218,6 +224,8 @@ class Simulation {
   std::optional<Divergence> instability_;
   bool has_stiffness_ = false;
   bool substeps_capped_ = false;
+  bool provisional_ = false;   // the sub-steps come from quick_limit()
+  bool quick_tried_ = false;   // since the last change: quick_limit() could not tell
 };
 
 }  // namespace springlab

@@ -1,4 +1,4 @@
-// Accuracy against cost (NUMERICS.md, "Accuracy and cost"): every method run on one scene over a
+// Accuracy against cost (docs/numerics.md, "Accuracy and cost"): every method run on one scene over a
 // range of steps (adaptive methods: of tolerances), each run's error against a reference, its
 // cost, the order fitted to its errors, its largest stable step measured and from theory, and
 // the energy each method gains or loses over a long run. What `springlab compare` and the app's

@@ -203,6 +203,14 @@ double dissipation_power(const Model& model, const State& state) {
   return power;
 }
 
+double wind_power(const Model& model, const State& state) {
+  if (model.drag == 0.0 || model.wind.isZero()) return 0.0;
+  double power = 0.0;
+  for (int i = 0; i < model.particle_count(); ++i)
+    if (!model.pinned(i)) power += model.wind.dot(state.v.row(i).transpose());
+  return model.drag * power;
+}
+
 double field_power(const Model& model, const State& state) {
   double power = 0.0;
   for (const Attractor& f : model.attractors) {

@@ -97,6 +97,7 @@ void Simulation::reset() {
   dissipated_ = 0.0;
   divergence_.reset();
   stability_.reset();
+  provisional_ = quick_tried_ = false;
   ++model_version_;
   grabbed_ = -1;
   grabbed_springs_.clear();
@@ -107,6 +108,7 @@ void Simulation::reset() {
   external_ = 0.0;
   instability_.reset();
   audit_changed();
+  choose_substeps();
 }
 
 // The audit looks for instabilities that saturate as well as those that blow up: those of the
@@ -181,7 +183,11 @@ void Simulation::audit(double total) {
 
 bool Simulation::step() {
   if (divergence_) return false;
-  if (settings_.auto_substeps && !stability_ && settings_.analyse_when_needed) stability();  // chooses them
+  if (settings_.auto_substeps && !stability_) {
+    if (settings_.analyse_when_needed) stability();  // chooses them
+    else if (!provisional_) choose_substeps();       // from the quick bound, while it comes
+    if (!ready()) return true;                       // nothing tells a safe step yet: wait
+  }
   const double h = this->h();
   const bool audit = audited();
   const bool dissipation = settings_.track_dissipation;
@@ -219,12 +225,14 @@ bool Simulation::step() {
     if (contact.contacts > 0) ws_.invalidate();
     if (outside) {
       // Work from outside: contacts push particles out of colliders (raising their potential),
-      // a swirl puts energy in (the charts count both with what damping takes), and a held
+      // a swirl or a wind puts energy in (the charts count them with what damping takes), and a held
       // particle's prescribed motion does work on the rest through its springs: -f . v, f their
       // force on it.
       const double pushed = contact.potential_gained + (model_.attractors.empty() ? 0.0 : h * field_power(model_, current_));
-      baseline_ += pushed;
-      external_ += pushed;
+      // A wind's work through the drag (which the dissipated power already nets out).
+      const double blown = h * wind_power(model_, current_);
+      baseline_ += pushed + blown;
+      external_ += pushed + blown;
       // The power at the step's start (the explicit methods measured it in their force pass),
       // over h, and what contacts took.
       if (dissipation)
@@ -326,9 +334,21 @@ void Simulation::set_stability(std::shared_ptr<const StabilityAnalysis> analysis
 }
 
 void Simulation::choose_substeps() {
-  if (!settings_.auto_substeps || !stability_) return;
-  const SubstepChoice choice =
-      springlab::choose_substeps(stability_->limit(settings_.method), settings_.dt, settings_.safety);
+  if (!settings_.auto_substeps) return;
+  StabilityLimit limit;
+  if (stability_) {
+    limit = stability_->limit(settings_.method);
+    provisional_ = false;
+  } else {
+    // Awaiting the analysis (made elsewhere): the quick bound, if it tells, meanwhile.
+    provisional_ = false;
+    if (settings_.analyse_when_needed || quick_tried_) return;
+    limit = quick_limit(settings_.method, model_, current_);
+    quick_tried_ = true;
+    if (!(limit.h > 0.0)) return;
+    provisional_ = true;
+  }
+  const SubstepChoice choice = springlab::choose_substeps(limit, settings_.dt, settings_.safety);
   substeps_capped_ = choice.capped;
   if (choice.substeps != settings_.substeps) substeps_changed(choice.substeps);
 }
@@ -344,12 +364,20 @@ void Simulation::substeps_changed(int substeps) {
 void Simulation::model_changed() {
   ws_.invalidate();
   stability_.reset();
+  provisional_ = quick_tried_ = false;
   ++model_version_;
   audit_changed();
+  choose_substeps();  // from the quick bound, where the analysis is made elsewhere
+}
+
+void Simulation::set_analyse_when_needed(bool on) {
+  settings_.analyse_when_needed = on;
+  choose_substeps();
 }
 
 void Simulation::set_method(Method method) {
   settings_.method = method;
+  quick_tried_ = false;
   audit_changed();  // a new step: what a stable run may do changes
   ws_.invalidate();
   ws_.adaptive_step = 0.0;
@@ -358,6 +386,7 @@ void Simulation::set_method(Method method) {
 
 void Simulation::set_dt(double dt) {
   settings_.dt = dt;
+  quick_tried_ = false;
   audit_changed();
   t_since_ = current_.t;
   substeps_done_ = 0;

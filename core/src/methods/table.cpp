@@ -13,7 +13,7 @@ constexpr double kNever = 0.0;
 constexpr double kAlways = std::numeric_limits<double>::infinity();
 constexpr double kControlled = std::numeric_limits<double>::quiet_NaN();
 
-// The one table. Stability limits are on the undamped oscillator (NUMERICS.md); with damping the
+// The one table. Stability limits are on the undamped oscillator (docs/numerics.md, "The undamped oscillator"); with damping the
 // limit is computed by stability.cpp from each method's own step.
 const MethodInfo kMethods[] = {
     {Method::Euler, "euler", "Explicit Euler", 1, "1", kNever,

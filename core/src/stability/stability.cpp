@@ -396,4 +396,40 @@ SubstepChoice choose_substeps(const StabilityLimit& limit, double dt, double fra
   return choice;
 }
 
+StabilityLimit quick_limit(Method method, const Model& model, const State& state) {
+  StabilityLimit limit;
+  limit.method = method;
+  limit.exact = false;
+  const MethodInfo& info = method_info(method);
+  if (info.adaptive || info.implicit) {
+    limit.h = info.adaptive ? kNaN : kInf;
+    return limit;
+  }
+  const Linearised lin(model, state);
+  const double kappa = lin.stiffness_bound(), gamma_hi = lin.damping_bound();
+  double heaviest = 0.0;
+  for (int i : lin.free_particles()) heaviest = std::max(heaviest, model.mass[i]);
+  const double gamma_lo = heaviest > 0.0 ? std::min(model.drag / heaviest, gamma_hi) : 0.0;
+  const double d = model.verlet_damping;
+  limit.h = kInf;
+  const auto at = [&](double gamma, double k) { limit.h = std::min(limit.h, mode_limit(method, gamma, k, d)); };
+  switch (method) {
+    case Method::Euler:
+    case Method::ModifiedEuler:
+    case Method::SymplecticEuler:
+    case Method::Verlet:
+      for (double g : {gamma_lo, gamma_hi})
+        for (double k : {0.0, kappa}) at(g, k);
+      break;
+    default: {
+      constexpr int kGrid = 48;
+      for (int i = 0; i <= kGrid; ++i)
+        for (int j = 0; j <= kGrid; ++j)
+          at(gamma_lo + (gamma_hi - gamma_lo) * i / kGrid, kappa * std::pow(static_cast<double>(j) / kGrid, 2.0));
+      limit.h *= 0.9;
+    }
+  }
+  return limit;
+}
+
 }  // namespace springlab
