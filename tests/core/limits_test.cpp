@@ -5,7 +5,7 @@
 //
 // Runs are as the scene ships, for its duration, within a budget of work (a 1000-node rope under
 // explicit Euler at 2e-6 s would take 5 million steps: the test runs as much of it as the budget
-// allows, and says so; scripts/limits.sh runs them all to the end, in about an hour). The two single springs are
+// allows, and says so, the energy audit's windows shortened to look six times within it; scripts/limits.sh runs them all to the end, in about an hour). The two single springs are
 // run at a tenth of their shipped amplitude: the limit is that of small motions, and near the
 // limits of symplectic Euler and RK4 the numerical orbit of the shipped one (half the rest length)
 // passes through the anchor into the spring's other well, where RK4 even keeps up a limit cycle
@@ -14,8 +14,10 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <memory>
 #include <sstream>
 
+#include "springlab/energy_audit.hpp"
 #include "springlab/stability.hpp"
 #include "support.hpp"
 
@@ -60,22 +62,33 @@ struct Outcome {
   bool held = true;  // no divergence, no instability from the audit
   double t = 0.0;    // simulated
   bool whole = true;  // ran the scene's whole duration
+  std::int64_t windows = 0;  // the audit's windows in the run
+  std::int64_t possible = 0;  // as many as the run had room for (8 checks each at least)
   std::string said;
 };
 
-Outcome run(const Scene& scene, Method method, double h) {
-  SimulationSettings s;
-  s.method = method;
-  s.dt = h;
-  Simulation sim(scene.model, scene.state, s);
+// A run as long as the scene's duration, or as the budget allows; the audit's windows as short as
+// needed for at least six of them in it (a run the budget cuts to 0.07 s of simulated time, shorter
+// than the audit's own 0.25 s windows, would otherwise hold without the audit ever looking).
+Outcome run(const Scene& scene, Method method, double h, const std::shared_ptr<const StabilityAnalysis>& analysis) {
   const double evals = method == Method::Midpoint ? 2 : method == Method::RK4 ? 4 : 1;
   const double size = scene.model.particle_count() + scene.model.spring_count();
   const auto wanted = static_cast<std::int64_t>(std::ceil(scene.duration / h));
   const auto allowed = static_cast<std::int64_t>(std::min(9e18, budget() / (evals * size)));
+  const std::int64_t steps = std::min(wanted, allowed);
+  SimulationSettings s;
+  s.method = method;
+  s.dt = h;
+  s.audit_window = std::min(EnergyAudit::kWindow, steps * h / 6.0);
+  Simulation sim(scene.model, scene.state, s);
+  sim.set_stability(analysis);  // the scene's, made once (the audit asks for it when a window rises)
   Outcome o;
   o.whole = wanted <= allowed;
-  sim.advance(std::min(wanted, allowed));
+  sim.advance(steps);
   o.t = sim.state().t;
+  o.windows = sim.audit_windows();
+  const std::int64_t checks = size <= kSmallScene ? steps : steps / 16;
+  o.possible = std::min<std::int64_t>(6, checks / EnergyAudit::kChecks);
   o.held = !sim.diverged();
   if (!o.held) o.said = sim.divergence()->message();
   return o;
@@ -128,7 +141,8 @@ class Limits : public ::testing::TestWithParam<LimitCase> {};
 TEST_P(Limits, HoldJustInsideAndGrowAsPredictedJustOutside) {
   const LimitCase& c = GetParam();
   const Scene scene = test::shipped(c.scene, c.overrides);
-  const StabilityAnalysis analysis(scene.model, scene.state);
+  const auto shared = std::make_shared<const StabilityAnalysis>(scene.model, scene.state);
+  const StabilityAnalysis& analysis = *shared;
   ASSERT_TRUE(analysis.oscillates()) << c.name();
   for (Method m : kMethods) {
     const StabilityLimit& limit = analysis.limit(m);
@@ -136,16 +150,19 @@ TEST_P(Limits, HoldJustInsideAndGrowAsPredictedJustOutside) {
     if (!(limit.h > 0.0 && std::isfinite(limit.h))) {
       // Unstable at any step (an undamped spring under explicit Euler): it fails at a small one.
       if (limit.h == 0.0) {
-        EXPECT_FALSE(run(scene, m, 0.5 / analysis.w_max()).held);
+        EXPECT_FALSE(run(scene, m, 0.5 / analysis.w_max(), shared).held);
       }
       continue;
     }
-    const Outcome inside = run(scene, m, 0.95 * limit.h);
+    const Outcome inside = run(scene, m, 0.95 * limit.h, shared);
     EXPECT_TRUE(inside.held) << inside.said;
+    // The audit looked, window after window, and stayed silent (symplectic Euler and Verlet are
+    // not audited: the divergence test watches them).
+    if (m != Method::SymplecticEuler && m != Method::Verlet) EXPECT_GE(inside.windows, inside.possible - 1);
     std::printf("  %-28s %-17s %-34s 0.95: held %.3g s%s", c.name().c_str(), method_info(m).name,
                 describe(limit).c_str(), inside.t, inside.whole ? "" : " (budget)");
 
-    const Outcome outside = run(scene, m, 1.25 * limit.h);
+    const Outcome outside = run(scene, m, 1.25 * limit.h, shared);
     if (!outside.held) {
       std::printf(", 1.25: diverged at %.3g s\n", outside.t);
       continue;

@@ -54,7 +54,12 @@ class EnergyAudit {
     double low_t = 0.0;
   };
 
+  // Windows of at least `window` seconds (and kChecks checks); a test shortens them to see the
+  // audit at work within a short run.
+  explicit EnergyAudit(double window = kWindow) : window_(window) {}
   void reset();
+  // Windows closed since the last reset().
+  std::int64_t windows() const { return windows_; }
   // One check: the time, the step, the net energy N and the total energy E.
   void record(double t, std::int64_t step, double net, double total, double floor);
   // Windows rose more than the floor above an earlier low and wait for a verdict, which needs the
@@ -81,6 +86,7 @@ class EnergyAudit {
     double high = 0.0;
     Low before;
   };
+  double window_ = kWindow;
   Window open_;
   bool open_empty_ = true;
   std::int64_t windows_ = 0;  // closed

@@ -52,6 +52,9 @@ struct SimulationSettings {
   // (Simulation::instability()) while the run goes on: the app keeps an unstable lane moving,
   // marked, so that the class sees where it goes; a sweep measures the error over the whole run.
   bool audit_stops = true;
+  // The audit's window in seconds (energy_audit.hpp; tests shorten it to see the audit at work
+  // within a run a budget cuts short).
+  double audit_window = EnergyAudit::kWindow;
 };
 
 // A scene's own settings: its first method, its step, its sub-steps (automatic unless it fixes
@@ -149,6 +152,8 @@ class Simulation {
   // The energy audit's finding as a report (unstable, with the limit once analysed), kept whether
   // or not it stopped the run (settings.audit_stops).
   const std::optional<Divergence>& instability() const { return instability_; }
+  // The audit's windows closed since it last started again (0: it has not looked yet).
+  std::int64_t audit_windows() const { return audit_.windows(); }
   // What is wrong with the run, if anything: its divergence, else the audit's report.
   const Divergence* trouble() const {
     return divergence_ ? &*divergence_ : instability_ ? &*instability_ : nullptr;

@@ -20,7 +20,7 @@ void EnergyAudit::record(double t, std::int64_t step, double net, double total, 
   }
   if (net < open_.low.net) open_.low = {net, total, t, step};
   open_.high = std::max(open_.high, net);
-  if (++open_.checks < kChecks || t - open_.t0 < kWindow) return;
+  if (++open_.checks < kChecks || t - open_.t0 < window_) return;
   open_empty_ = true;
   const std::int64_t index = windows_++;
   if (lowest_ && open_.high - lowest_->net > floor) {
