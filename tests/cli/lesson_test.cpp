@@ -71,6 +71,65 @@ TEST(Lessons, AClaimThatDoesNotHoldFailsTheCheck) {
   EXPECT_NE(r.out.find("0 of 1 claims hold"), std::string::npos) << r.out;
 }
 
+// Every kind of claim can fail: one false claim of each kind, each in a step of its own, played
+// and checked, and every one reported FAIL with what it measured (the shipped lessons show each
+// kind holding; this shows the check is not a formality). Each is false for a physical reason:
+// the exact cosine is not followed by symplectic Euler at h w = 0.5; a damped spring's energy is
+// not level; an undamped spring's under RK4 does not fall by 5 % of the scale, and implicit Euler's
+// falls by 0.973 a step, not 0.9; drag changes momentum; an undamped box keeps its wobble; gravity
+// speeds the centre that drag alone would slow; explicit Euler's energy grows 1.0278 a step, not
+// 1.05; symplectic Euler holds; explicit Euler does not; the damped spring's limit is 0.02 s;
+// RK4 never rejects a step; Euler's order is 1, not 2, and RK4 is the most accurate; the
+// fountain holds about 1280 drops, not 5000; a firework bursts into 160 sparks, not 100; a
+// target within reach is reached; no two poses are 5 m apart.
+TEST(Lessons, EveryKindOfClaimCanFail) {
+  TempDir dir;
+  // (Two lessons: at most 12 steps each.)
+  write_file(dir / "false1.json", R"({"title": "False", "summary": "False claims, one of each kind.", "steps": [
+    {"title": "follows-exact", "scene": "spring", "method": "symplectic-euler", "dt": 0.05, "substeps": 1,
+     "duration": 3, "caption": "c", "claims": [{"claim": "follows-exact", "within": 0.001}]},
+    {"title": "energy-bounded", "scene": "spring", "method": "rk4", "kd": 2, "duration": 3, "caption": "c",
+     "claims": [{"claim": "energy-bounded", "within": 0.01}]},
+    {"title": "energy-decays", "scene": "spring", "method": "rk4", "substeps": 1, "duration": 3, "caption": "c",
+     "claims": [{"claim": "energy-decays"}]},
+    {"title": "energy-decays per step", "scene": "spring", "method": "implicit-euler", "dt": 0.016666666666666666,
+     "substeps": 1, "duration": 2, "caption": "c", "claims": [{"claim": "energy-decays", "per_step": 0.9}]},
+    {"title": "momentum-kept", "scene": "jelly", "set": {"gravity": [0, 0, 0], "drag": 0.5, "colliders": [],
+     "jelly.velocity": [1, 0, 0]}, "method": "symplectic-euler", "duration": 2, "caption": "c",
+     "claims": [{"claim": "momentum-kept", "from": 0.1}]},
+    {"title": "internal-decays", "scene": "jelly", "set": {"jelly.damping": 0, "drag": 0}, "method": "symplectic-euler",
+     "duration": 3, "caption": "c", "claims": [{"claim": "internal-decays", "from": 1.0, "below": 0.05}]},
+    {"title": "drag-slows", "scene": "jelly", "set": {"drag": 0.008, "colliders": [], "jelly.velocity": [0.4, 0, 0]},
+     "method": "symplectic-euler", "duration": 2, "caption": "c", "claims": [{"claim": "drag-slows", "from": 0.1}]},
+    {"title": "energy-grows", "scene": "spring", "method": "euler", "dt": 0.016666666666666666, "substeps": 1,
+     "duration": 2, "caption": "c", "claims": [{"claim": "energy-grows", "per_step": 1.05, "to": 0.75}]},
+    {"title": "diverges", "scene": "spring", "method": "symplectic-euler", "dt": 0.016666666666666666, "substeps": 1,
+     "duration": 3, "caption": "c", "claims": [{"claim": "diverges", "by": 3}]}]})");
+  write_file(dir / "false2.json", R"({"title": "False too", "summary": "The other kinds.", "steps": [
+    {"title": "holds", "scene": "spring", "method": "euler", "dt": 0.016666666666666666, "substeps": 1,
+     "duration": 3, "caption": "c", "claims": [{"claim": "holds"}]},
+    {"title": "limit", "scene": "damped-spring", "method": "euler", "dt": 0.015, "substeps": 1, "duration": 1,
+     "caption": "c", "claims": [{"claim": "limit", "h": 0.03, "within": 0.01}]},
+    {"title": "steps-adapt", "scene": "spring", "method": "rk4", "substeps": 1, "duration": 2, "caption": "c",
+     "claims": [{"claim": "steps-adapt", "ratio": 2}]},
+    {"title": "orders", "scene": "spring", "method": "rk4", "dt": 0.004166666666666667, "substeps": 1, "duration": 1,
+     "caption": "c", "claims": [{"claim": "orders", "orders": {"euler": 2, "rk4": 4}}]},
+    {"title": "orders best", "scene": "spring", "method": "rk4", "dt": 0.004166666666666667, "substeps": 1,
+     "duration": 1, "caption": "c", "claims": [{"claim": "orders", "orders": {"euler": 1, "rk4": 4}, "best": "euler"}]},
+    {"title": "particles", "scene": "fountain", "duration": 8, "caption": "c",
+     "claims": [{"claim": "particles", "about": 5000, "within": 0.08, "at": 7}]},
+    {"title": "bursts", "scene": "fireworks", "duration": 8, "caption": "c", "claims": [{"claim": "bursts", "count": 100}]},
+    {"title": "out-of-reach", "scene": "ik-arm", "duration": 3, "caption": "c", "claims": [{"claim": "out-of-reach"}]},
+    {"title": "poses-differ", "scene": "ik-arm", "compare": ["ccd", "fabrik", "dls"], "duration": 3, "caption": "c",
+     "claims": [{"claim": "poses-differ", "min": 5}]}]})");
+  const Result r = springlab("lesson check " + (dir / "false1.json").string() + " " + (dir / "false2.json").string());
+  EXPECT_EQ(r.status, 1) << r.out << r.err;
+  int fails = 0;
+  for (std::size_t at = r.out.find("FAIL  "); at != std::string::npos; at = r.out.find("FAIL  ", at + 1)) ++fails;
+  EXPECT_EQ(fails, 18) << r.out;
+  EXPECT_EQ(r.out.find("ok  "), std::string::npos) << r.out;
+}
+
 TEST(Lessons, ABadLessonGetsOneMessageNamingTheFileAndTheFieldAndExitsTwo) {
   TempDir dir;
   const fs::path file = dir / "bad.json";
