@@ -131,8 +131,27 @@ TEST(Render, ScriptErrorsNameTheScriptAndTheField) {
   }
 }
 
-// Starts a render, waits for its output to appear, interrupts it, and returns what is left.
-std::vector<fs::path> interrupt(const std::vector<std::string>& args, const fs::path& dir, int signal) {
+// An interrupted render: what it had written as the signal was sent (each file and its size),
+// how it ended (a status as waitpid gives it), and what it left.
+struct Interrupted {
+  std::vector<std::pair<fs::path, std::uintmax_t>> before;
+  int status = 0;
+  std::vector<fs::path> left;
+};
+
+std::vector<std::pair<fs::path, std::uintmax_t>> files_and_sizes(const fs::path& dir) {
+  std::vector<std::pair<fs::path, std::uintmax_t>> files;
+  std::error_code error;  // (a file may be renamed or removed while this looks)
+  for (const auto& e : fs::directory_iterator(dir, error)) {
+    const std::uintmax_t size = fs::file_size(e.path(), error);
+    files.emplace_back(e.path(), error ? 0 : size);
+  }
+  return files;
+}
+
+// Starts a render, waits until it has written some bytes, lets it run a little longer,
+// interrupts it, and says what it had written, how it ended and what it left.
+Interrupted interrupt(const std::vector<std::string>& args, const fs::path& dir, int signal) {
   std::vector<const char*> argv{SPRINGLAB_EXECUTABLE};
   for (const auto& a : args) argv.push_back(a.c_str());
   argv.push_back(nullptr);
@@ -148,30 +167,56 @@ std::vector<fs::path> interrupt(const std::vector<std::string>& args, const fs::
   EXPECT_EQ(posix_spawn(&pid, argv[0], &actions, &attributes, const_cast<char**>(argv.data()), environ), 0);
   posix_spawn_file_actions_destroy(&actions);
   posix_spawnattr_destroy(&attributes);
-  for (int k = 0; k < 500 && count_files(dir) == 0; ++k) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  const auto written = [&] {
+    for (const auto& [path, size] : files_and_sizes(dir))
+      if (size > 0) return true;
+    return false;
+  };
+  for (int k = 0; k < 500 && !written(); ++k) std::this_thread::sleep_for(std::chrono::milliseconds(10));
   std::this_thread::sleep_for(std::chrono::milliseconds(600));
+  Interrupted r;
+  r.before = files_and_sizes(dir);
   ::kill(-pid, signal);  // Ctrl-C reaches the whole group: springlab and its ffmpeg
-  int status = 0;
-  ::waitpid(pid, &status, 0);
+  ::waitpid(pid, &r.status, 0);
   std::this_thread::sleep_for(std::chrono::milliseconds(200));
-  std::vector<fs::path> left;
-  for (const auto& e : fs::directory_iterator(dir)) left.push_back(e.path());
-  return left;
+  for (const auto& e : fs::directory_iterator(dir)) r.left.push_back(e.path());
+  return r;
+}
+
+// The signal ended it, as without a handler: it was still running when the signal came.
+::testing::AssertionResult died_of(int status, int signal) {
+  if (WIFSIGNALED(status) && WTERMSIG(status) == signal) return ::testing::AssertionSuccess();
+  if (WIFEXITED(status))
+    return ::testing::AssertionFailure() << "it had exited with status " << WEXITSTATUS(status) << " before the signal";
+  return ::testing::AssertionFailure() << "wait status " << status;
 }
 
 TEST(Render, InterruptedVideoLeavesNothing) {
+  // Without ffmpeg the render refuses --video at once (WithoutFfmpegVideoFailsAtOnce...): there
+  // would be no encoding to interrupt, and an empty folder would prove nothing.
+  if (std::system("command -v ffmpeg > /dev/null") != 0)
+    GTEST_SKIP() << "ffmpeg is not installed (apt-get install ffmpeg), so no video is encoded and there is no "
+                    "encoding to interrupt";
   TempDir dir;
-  const auto left = interrupt({"render", "cloth", "--software", "--frames", "100000", "--size", "320x180", "--video",
-                               (dir / "v.mp4").string()}, dir.path, SIGINT);
-  EXPECT_TRUE(left.empty()) << left.front();
+  const Interrupted r = interrupt({"render", "cloth", "--software", "--frames", "100000", "--size", "320x180", "--video",
+                                   (dir / "v.mp4").string()}, dir.path, SIGINT);
+  // It was encoding when the signal came: ffmpeg had written part of the video, under a
+  // temporary name beside v.mp4, and the signal is what ended springlab.
+  ASSERT_EQ(r.before.size(), 1u) << "the render never started writing the video";
+  EXPECT_NE(r.before[0].first.filename(), "v.mp4") << "the video was written under its final name";
+  EXPECT_GT(r.before[0].second, 0u) << r.before[0].first << ": ffmpeg had encoded nothing";
+  EXPECT_TRUE(died_of(r.status, SIGINT));
+  // And nothing is left: not the temporary file, not v.mp4.
+  EXPECT_TRUE(r.left.empty()) << r.left.front();
 }
 
 TEST(Render, InterruptedFramesLeaveOnlyWholeFrames) {
   TempDir dir;
-  const auto left = interrupt({"render", "cloth", "--software", "--frames", "100000", "--size", "320x180", "--out",
-                               dir.path.string()}, dir.path, SIGTERM);
-  EXPECT_FALSE(left.empty());
-  for (const fs::path& p : left) {
+  const Interrupted r = interrupt({"render", "cloth", "--software", "--frames", "100000", "--size", "320x180", "--out",
+                                   dir.path.string()}, dir.path, SIGTERM);
+  EXPECT_TRUE(died_of(r.status, SIGTERM));
+  EXPECT_FALSE(r.left.empty());
+  for (const fs::path& p : r.left) {
     EXPECT_EQ(p.filename().string().rfind("frame_", 0), 0u) << p;  // no temporary file
     EXPECT_NO_THROW(app::read_png(p)) << p;                       // and every frame whole
   }

@@ -64,7 +64,9 @@ TEST(TransientGrowth, BoundsWhatTheMethodsOwnStepsGain) {
     SCOPED_TRACE(std::string(method_info(c.method).name) + " c = " + std::to_string(c.c) + " h = " + std::to_string(h));
     ASSERT_TRUE(std::isfinite(g));
     EXPECT_LE(by_runs, g * (1.0 + 1e-9));  // never more than the bound
-    if (g > 1.01) EXPECT_GE(by_runs, 1.0 + 0.9 * (g - 1.0));  // and the bound is (almost) reached
+    if (g > 1.01) {
+      EXPECT_GE(by_runs, 1.0 + 0.9 * (g - 1.0));  // and the bound is (almost) reached
+    }
   }
   // A normal contraction cannot raise a mode's energy at all: implicit Euler's step on a
   // damped mode (its linearised solve is exact on a linear spring).

@@ -452,8 +452,12 @@ TEST(QuickLimit, IsNeverAboveTheLimit) {
       const StabilityLimit quick = quick_limit(m, scene.model, scene.state);
       SCOPED_TRACE(std::string(name) + ", " + method_info(m).name + ": " + describe(limit));
       EXPECT_FALSE(quick.exact);
-      if (limit.exact) EXPECT_LE(quick.h, limit.h * (1.0 + 1e-12));
-      if (m == Method::SymplecticEuler || m == Method::Verlet || m == Method::RK4) EXPECT_GT(quick.h, 0.0);
+      if (limit.exact) {
+        EXPECT_LE(quick.h, limit.h * (1.0 + 1e-12));
+      }
+      if (m == Method::SymplecticEuler || m == Method::Verlet || m == Method::RK4) {
+        EXPECT_GT(quick.h, 0.0);
+      }
       if (limit.h > 0.0 && std::isfinite(limit.h)) std::printf(" %s %.2f", method_info(m).name, quick.h / limit.h);
     }
     std::printf("\n");

@@ -38,6 +38,9 @@ struct ForcePlan {
   // Per block: the number of the last pass that has computed its springs (step 1 in
   // force_pass.hpp), which another thread waits for before taking their kept forces.
   std::vector<std::uint32_t> done;
+  // Per block: the number of the last pass whose step 1 a thread has claimed (its run's owner, or
+  // a thread whose step 2 needs it first: no thread ever waits for one that has not come).
+  std::vector<std::uint32_t> started;
   std::uint32_t passes = 0;
   // Per thread: the blocks of its run not yet claimed for step 2, [front, back), with the pass
   // they belong to (force_pass.hpp: the owner takes them from the front, a thread that has

@@ -1,11 +1,13 @@
 #include "springlab/energy.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <vector>
 
 #include "springlab/simd.hpp"
 #include "springlab/spring_kernel.hpp"
+#include "dynamics/threads.hpp"
 
 namespace springlab {
 
@@ -44,9 +46,12 @@ double ordered_sum(int pieces, const Part& part) {
     for (int p = 0; p < pieces; ++p) sum += part(p);
     return sum;
   }
+  // Pieces claimed one at a time by whichever thread of the team is running (threads.hpp).
   std::vector<double> parts(pieces);
-#pragma omp parallel for schedule(static)
-  for (int p = 0; p < pieces; ++p) parts[p] = part(p);
+  std::atomic<int> next{0};
+  threads::Team::run(threads::max_team(), [&](int, int) {
+    for (int p; (p = next.fetch_add(1, std::memory_order_relaxed)) < pieces;) parts[p] = part(p);
+  });
   double sum = 0.0;
   for (double v : parts) sum += v;
   return sum;

@@ -257,6 +257,7 @@ inline void make_plan(const Model& model, ForcePlan& plan) {
   plan.incoming.assign(blocks, {});
   plan.source.resize(blocks);
   plan.done.assign(blocks, 0);
+  plan.started.assign(blocks, 0);
   plan.passes = 0;
   plan.reach = 0;
   for (const SpringSpan& span : model.spans) plan.reach = std::max(plan.reach, span.b0 - span.a0);
@@ -382,6 +383,7 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
   // and kept for those blocks, then published (release) for the threads whose step 2 waits.
   const std::uint32_t pass_number = ++plan.passes;
   std::uint32_t* done = plan.done.data();
+  std::uint32_t* started = plan.started.data();
   const auto start = [&](int blk) {
     const int begin = begin_of(blk), end = end_of(blk);
     f64x4 power{};
@@ -399,6 +401,22 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
     if (measured) block_power[blk] = simd::sum(power);
     threads::atomic_ref<std::uint32_t>(done[blk]).store(pass_number, std::memory_order_release);
   };
+  // Step 1 of a block by the first thread to claim it: false if another had.
+  const auto try_start = [&](int blk) {
+    threads::atomic_ref<std::uint32_t> claim(started[blk]);
+    std::uint32_t old = claim.load(std::memory_order_relaxed);
+    while (old != pass_number)
+      if (claim.compare_exchange_weak(old, pass_number, std::memory_order_relaxed)) {
+        start(blk);
+        return true;
+      }
+    return false;
+  };
+  // Step 1 of a block done, by this thread if no other has claimed it (never waiting for a thread
+  // that has not come: only for one that is doing it).
+  const auto ensure_started = [&](int blk) {
+    if (!try_start(blk)) wait_for(done[blk], pass_number);
+  };
 
   // Step 2 of a block, chunk by chunk: the external forces of the particles the chunk's springs
   // reach (those step 1 did not start), the springs with both ends in the block and their a-ends
@@ -406,7 +424,7 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
   // (waited for: another thread may start them), then finish(chunk).
   const auto sweep = [&](int blk) {
     const int begin = begin_of(blk), end = end_of(blk);
-    wait_for(done[blk], pass_number);  // its own step 1, when another thread's run held it
+    ensure_started(blk);  // its own step 1, done here if its run's owner has not come
     bool waited = false;
     int started = begin;  // external forces are in F below this
     f64x4 power{};
@@ -430,7 +448,7 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
         const int lo = std::max(piece.lo, first - span.b0), hi = std::min(piece.hi, last - span.b0);
         if (lo >= hi) continue;
         if (!waited) {
-          for (int src = plan.source[blk]; src < blk; ++src) wait_for(done[src], pass_number);
+          for (int src = plan.source[blk]; src < blk; ++src) ensure_started(src);
           waited = true;
         }
         for (int c = 0; c < 3; ++c) subtract(F[c] + span.b0 + lo, SF[c] + span.first + lo, hi - lo);
@@ -440,19 +458,26 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
     if (measured) block_power[blk] += simd::sum(power);
   };
 
-  // Run by every thread of the team, or by the caller alone (a parallel region costs an
-  // allocation and a wake-up even with one thread). Each thread has a run of blocks. It starts
-  // them all (step 1, short: the springs leaving each block), its last first, since the next
-  // run's first block waits for it. Then it sweeps them (step 2) from the front, and when its
-  // own are done, sweeps the blocks left at the back of another run: the cores of this machine
-  // slow down one at a time, and the faster one helps rather than waits. A run's unclaimed
-  // blocks are one atomic word, the pass's number (24 bits), front and back (20 bits each).
+  // Run by every thread of the team (threads.hpp: the helpers that come), or by the caller alone.
+  // Each thread has a run of blocks. It starts them all (step 1, short: the springs leaving each
+  // block), its last first, since the next run's first block waits for it. Then it sweeps them
+  // (step 2) from the front, and when its own are done, sweeps the blocks left at the back of
+  // another run: the cores of this machine slow down one at a time, and the faster one helps
+  // rather than waits; a helper kept off its core by another program does nothing and is not
+  // waited for (its blocks' step 1 is done by whoever needs it first, its run swept from the
+  // back). A run's unclaimed blocks are one atomic word, the pass's number (24 bits), front and
+  // back (20 bits each), set for every run before the team starts.
   const bool parallel = springs + n >= kParallelThreshold && threads::max_team() > 1;
-  plan.runs.resize(std::max(1, parallel ? threads::max_team() : 1));
+  const int team = parallel ? threads::max_team() : 1;
+  plan.runs.resize(team);
   const std::uint64_t tag = pass_number & 0xFFFFFFu;
   const auto word = [tag](std::uint64_t front, std::uint64_t back) {
     return tag << 40 | front << 20 | back;
   };
+  const auto first_of = [&](int thread, int threads) { return blocks * thread / threads; };
+  for (int r = 0; r < team; ++r)
+    threads::atomic_ref<std::uint64_t>(plan.runs[r]).store(word(first_of(r, team), first_of(r + 1, team)),
+                                                           std::memory_order_relaxed);
   // Claims a block of run r, from the front (its owner) or the back; -1 when none is left.
   const auto claim = [&](int r, bool front) {
     threads::atomic_ref<std::uint64_t> run(plan.runs[r]);
@@ -464,29 +489,22 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
       if (run.compare_exchange_weak(old, claimed, std::memory_order_relaxed)) return front ? f : b - 1;
     }
   };
-  // (The team's size and this thread's number are passed in: alone, the caller may itself be a
-  // thread of an enclosing parallel region, whose numbers are not this pass's.)
-  const auto pass = [&](int threads, int thread) {
-    const int first = blocks * thread / threads, last = blocks * (thread + 1) / threads;
-    threads::atomic_ref<std::uint64_t>(plan.runs[thread]).store(word(first, last),
-                                                            std::memory_order_relaxed);
+  // A thread's number is its run's; the runs are the team's whoever comes to do them (alone, the
+  // caller does its own and then every other).
+  const auto pass = [&](int, int thread) {
+    const int first = first_of(thread, team), last = first_of(thread + 1, team);
     if (first < last) {
-      start(last - 1);
-      for (int blk = first; blk < last - 1; ++blk) start(blk);
+      try_start(last - 1);
+      for (int blk = first; blk < last - 1; ++blk) try_start(blk);
     }
     for (int blk; (blk = claim(thread, true)) >= 0;) sweep(blk);
-    for (int other = 1; other < threads; ++other)
-      for (int blk; (blk = claim((thread + other) % threads, false)) >= 0;) {
+    for (int other = 1; other < team; ++other)
+      for (int blk; (blk = claim((thread + other) % team, false)) >= 0;) {
         threads::atomic_ref<std::uint64_t>(plan.stolen).fetch_add(1, std::memory_order_relaxed);
         sweep(blk);
       }
   };
-  if (parallel) {
-#pragma omp parallel
-    pass(threads::team_size(), threads::team_index());
-  } else {
-    pass(1, 0);
-  }
+  threads::Team::run(team, pass);
 }
 
 }  // namespace springlab

@@ -1,0 +1,128 @@
+// The team (threads.hpp): helpers that join a job only while it is open, so that none is ever
+// waited for unless it holds work.
+#include "dynamics/threads.hpp"
+
+#include <chrono>
+#include <condition_variable>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace springlab::threads {
+
+#if SPRINGLAB_OPENMP
+
+namespace {
+
+inline void pause() {
+#if defined(__x86_64__) || defined(__i386__)
+  __builtin_ia32_pause();
+#endif
+}
+
+// Jobs are numbered (generation); the caller publishes one (job, threads) and wakes the helpers,
+// runs its own share, then closes it (closed = its number) and waits until no helper is inside.
+// A helper enters by counting itself inside and then checking that the job is still open: either
+// it counted itself before the caller looked (the caller waits for it) or it sees the job closed
+// and leaves (sequentially consistent order on `inside` and `closed`).
+struct Pool {
+  std::mutex growing;  // helpers are started under it
+  std::vector<std::thread> helpers;
+  std::atomic<bool> busy{false};
+  std::atomic<std::uint64_t> generation{0}, closed{0};
+  // Helpers asleep wait on `wake` (under `sleep`); `sleepers` counts those about to, so that the
+  // caller takes the lock and notifies only when one might be waiting (the same order argument:
+  // a helper counts itself before it looks at the generation under the lock).
+  std::mutex sleep;
+  std::condition_variable wake;
+  std::atomic<int> sleepers{0};
+  std::atomic<int> inside{0};
+  std::atomic<bool> quit{false};
+  const Team::Job* job = nullptr;
+  int threads = 1;
+
+  ~Pool() {
+    quit.store(true);
+    generation.fetch_add(1);
+    ring();
+    for (std::thread& t : helpers) t.join();
+  }
+
+  // After a new generation: wakes the helpers that sleep.
+  void ring() {
+    if (sleepers.load() == 0) return;
+    { std::lock_guard lock(sleep); }
+    wake.notify_all();
+  }
+
+  // `seen`: the last generation before the helper was started (it may start running only after
+  // the job that started it was published, or after the pool began to close).
+  void serve(int index, std::uint64_t seen) {
+    using Clock = std::chrono::steady_clock;
+    for (;;) {
+      // A new job soon (a step's next pass): spin; none for a while: sleep until one.
+      const auto since = Clock::now();
+      std::uint64_t g;
+      for (int spins = 0; (g = generation.load(std::memory_order_acquire)) == seen && !quit.load(); ++spins) {
+        if (spins < 64 || (spins & 63) || Clock::now() - since < std::chrono::microseconds(50)) {
+          pause();
+          continue;
+        }
+        sleepers.fetch_add(1);
+        {
+          std::unique_lock lock(sleep);
+          wake.wait(lock, [&] { return generation.load() != seen || quit.load(); });
+        }
+        sleepers.fetch_sub(1);
+      }
+      seen = g;
+      if (quit.load()) return;
+      inside.fetch_add(1);
+      if (closed.load() < g && index < threads) (*job)(threads, index);
+      inside.fetch_sub(1);
+    }
+  }
+};
+
+Pool& pool() {
+  static Pool p;
+  return p;
+}
+
+}  // namespace
+
+void Team::run(int threads, const Job& job) {
+  Pool& p = pool();
+  if (threads <= 1 || p.busy.exchange(true, std::memory_order_acquire)) {
+    job(1, 0);
+    return;
+  }
+  {
+    std::lock_guard lock(p.growing);
+    while (static_cast<int>(p.helpers.size()) < threads - 1) {
+      const int index = static_cast<int>(p.helpers.size()) + 1;
+      const std::uint64_t seen = p.generation.load();
+      p.helpers.emplace_back([&p, index, seen] { p.serve(index, seen); });
+    }
+  }
+  p.job = &job;
+  p.threads = threads;
+  const std::uint64_t g = p.generation.fetch_add(1) + 1;
+  p.ring();
+  job(threads, 0);
+  p.closed.store(g);
+  for (int spins = 0; p.inside.load() != 0; ++spins) {
+    if (spins < 4096) pause();
+    else std::this_thread::yield();
+  }
+  p.busy.store(false, std::memory_order_release);
+}
+
+#else
+
+void Team::run(int, const Job& job) { job(1, 0); }
+
+#endif
+
+}  // namespace springlab::threads
