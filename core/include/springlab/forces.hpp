@@ -67,5 +67,12 @@ void evaluate_forces(const Model& model, const Points& x, const Points& v, Point
 // Threads used by the force loops (and every parallel loop of the core); 0 = all cores.
 void set_thread_count(int threads);
 int thread_count();
+// The calling thread's parallel passes so far: run by the team of threads, run on it alone (after
+// a wait for a helper that another program kept off its core, the team goes without helpers for a
+// while: dynamics/threads.hpp), and those waits.
+struct TeamCounts {
+  long team = 0, alone = 0, yields = 0;
+};
+TeamCounts team_counts();
 
 }  // namespace springlab

@@ -228,15 +228,7 @@ void with_law(double kd, bool measured, const F& f) {
 // yields, so that a thread that is not running (more threads than cores) gets the core.
 inline void wait_for(std::uint32_t& flag, std::uint32_t value) {
   threads::atomic_ref<std::uint32_t> ref(flag);
-  for (int spins = 0; ref.load(std::memory_order_acquire) != value; ++spins) {
-    if (spins < 4096) {
-#if defined(__x86_64__) || defined(__i386__)
-      __builtin_ia32_pause();
-#endif
-    } else {
-      std::this_thread::yield();
-    }
-  }
+  threads::Team::wait([&] { return ref.load(std::memory_order_acquire) == value; });
 }
 
 inline void subtract(double* __restrict out, const double* __restrict f, int count) {

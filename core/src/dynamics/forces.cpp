@@ -27,4 +27,9 @@ void set_thread_count(int threads) {
 
 int thread_count() { return threads::max_team(); }
 
+TeamCounts team_counts() {
+  const threads::Team::Counts c = threads::Team::counts();
+  return {c.team, c.alone, c.yields};
+}
+
 }  // namespace springlab

@@ -90,14 +90,35 @@ Pool& pool() {
   return p;
 }
 
+// The calling thread's waits that had to yield, during its current job.
+thread_local int g_yields = 0;
+// The caller's jobs still to run alone, and how many the next time (the caller's own: each thread
+// that runs jobs judges the load by its own waits).
+thread_local long g_alone = 0, g_backoff = 0;
+thread_local Team::Counts g_counts;
+constexpr long kFirstBackoff = 2048, kLongestBackoff = 65536;
+
 }  // namespace
+
+void Team::yielded() {
+  ++g_yields;
+  ++g_counts.yields;
+}
+Team::Counts Team::counts() { return g_counts; }
 
 void Team::run(int threads, const Job& job) {
   Pool& p = pool();
+  if (threads > 1 && g_alone > 0) {
+    --g_alone;
+    threads = 1;
+  }
   if (threads <= 1 || p.busy.exchange(true, std::memory_order_acquire)) {
+    ++g_counts.alone;
     job(1, 0);
     return;
   }
+  ++g_counts.team;
+  g_yields = 0;
   {
     std::lock_guard lock(p.growing);
     while (static_cast<int>(p.helpers.size()) < threads - 1) {
@@ -112,16 +133,22 @@ void Team::run(int threads, const Job& job) {
   p.ring();
   job(threads, 0);
   p.closed.store(g);
-  for (int spins = 0; p.inside.load() != 0; ++spins) {
-    if (spins < 4096) pause();
-    else std::this_thread::yield();
-  }
+  wait([&] { return p.inside.load() == 0; });
   p.busy.store(false, std::memory_order_release);
+  // A helper that held work was not running: another program has a core. Alone for a while.
+  if (g_yields > 0) {
+    g_backoff = g_backoff == 0 ? kFirstBackoff : std::min(2 * g_backoff, kLongestBackoff);
+    g_alone = g_backoff;
+  } else {
+    g_backoff = 0;
+  }
 }
 
 #else
 
 void Team::run(int, const Job& job) { job(1, 0); }
+void Team::yielded() {}
+Team::Counts Team::counts() { return {}; }
 
 #endif
 

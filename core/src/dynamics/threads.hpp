@@ -11,6 +11,7 @@
 
 #include <atomic>
 #include <functional>
+#include <thread>
 
 #if SPRINGLAB_OPENMP
 #include <omp.h>
@@ -96,6 +97,23 @@ inline int hardware_workers() { return 1; }
 // then sleeps until the next one.
 class Team {
  public:
+  // Waits until `done()`: spins briefly (the wait is usually a few microseconds), then yields the
+  // core, which tells the team that a thread it waited for was not running: another program has
+  // the core, and the next jobs run on the caller alone for a while (doubling, up to about a
+  // second of them, each time it happens again; a job run as a team without it starts afresh).
+  template <typename Done>
+  static void wait(const Done& done) {
+    for (int spins = 0; !done(); ++spins) {
+      if (spins < 4096) {
+#if defined(__x86_64__) || defined(__i386__)
+        __builtin_ia32_pause();
+#endif
+      } else {
+        yielded();
+        std::this_thread::yield();
+      }
+    }
+  }
   using Job = std::function<void(int threads, int thread)>;
   // Runs job(threads, thread) on the caller as thread 0 and on each of helpers 1 to threads - 1
   // that joins before the caller's job(threads, 0) returns; returns once that has returned and no
@@ -103,6 +121,15 @@ class Team {
   // wait for a thread to arrive, only for a piece of work a thread has claimed). A second run()
   // while one is under way (another thread's) runs job(1, 0) at once.
   static void run(int threads, const Job& job);
+  // The calling thread's jobs so far: run as a team, run alone (its own choice, after a wait that
+  // had to yield, or the team busy with another thread's), and the waits that yielded.
+  struct Counts {
+    long team = 0, alone = 0, yields = 0;
+  };
+  static Counts counts();
+
+ private:
+  static void yielded();
 };
 
 }  // namespace springlab::threads
