@@ -10,6 +10,7 @@
 
 #include "cli/commands.hpp"
 #include "springlab/error.hpp"
+#include "session/stability_job.hpp"
 #include "util/atomic_file.hpp"
 
 int main(int argc, char** argv) {
@@ -39,6 +40,10 @@ int main(int argc, char** argv) {
     return kBadInput;
   }
 
+  // Every stability analysis the app left running is cancelled and joined before main returns.
+  struct Shutdown {
+    ~Shutdown() { StabilityJob::shutdown(); }
+  } shutdown;
   try {
     for (const auto& [name, command] : commands)
       if (app.got_subcommand(name)) return command();

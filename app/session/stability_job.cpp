@@ -2,6 +2,8 @@
 
 #include <atomic>
 #include <mutex>
+#include <thread>
+#include <vector>
 
 #include "util/worker.hpp"
 
@@ -9,20 +11,94 @@ namespace springlab::app {
 
 struct StabilityJob::Shared {
   std::mutex mutex;
-  std::atomic<bool> done{false};
+  std::atomic<bool> done{false}, cancel{false};
   Result result;
 };
 
+namespace {
+
+// Every job's thread, until joined: finished ones when the next starts, all of them at shutdown().
+struct Threads {
+  std::mutex mutex;
+  struct Entry {
+    std::thread thread;
+    std::shared_ptr<StabilityJob::Shared> shared;
+  };
+  std::vector<Entry> entries;
+
+  // Joins the finished ones (never waits for one still running).
+  void reap() {
+    std::vector<std::thread> finished;
+    {
+      std::lock_guard lock(mutex);
+      for (auto it = entries.begin(); it != entries.end();) {
+        if (it->shared->done) {
+          finished.push_back(std::move(it->thread));
+          it = entries.erase(it);
+        } else {
+          ++it;
+        }
+      }
+    }
+    for (std::thread& t : finished) t.join();
+  }
+
+  // Cancels every job and joins every thread.
+  void join_all() {
+    std::vector<Entry> all;
+    {
+      std::lock_guard lock(mutex);
+      all.swap(entries);
+    }
+    for (Entry& e : all) e.shared->cancel = true;
+    for (Entry& e : all) e.thread.join();
+  }
+  // At exit, after main (a test's process, or a main that did not call shutdown()).
+  ~Threads() { join_all(); }
+};
+
+Threads& threads() {
+  static Threads t;
+  return t;
+}
+
+
+}  // namespace
+
+StabilityJob::~StabilityJob() { cancel(); }
+
+StabilityJob& StabilityJob::operator=(StabilityJob&& other) noexcept {
+  if (this != &other) {
+    cancel();
+    shared_ = std::move(other.shared_);
+  }
+  return *this;
+}
+
+void StabilityJob::cancel() {
+  if (shared_ && !shared_->done) shared_->cancel = true;
+  shared_.reset();
+}
+
 void StabilityJob::start(const Model& model, const State& state, std::uint64_t version) {
+  cancel();
   auto shared = std::make_shared<Shared>();
   shared->result.version = version;
   shared_ = shared;
-  Worker::detach([shared, model, state] {
-    auto analysis = std::make_shared<const StabilityAnalysis>(model, state);
+  auto work = [shared, model, state] {
+    auto analysis = std::make_shared<const StabilityAnalysis>(model, state, kDenseDofs, &shared->cancel);
     std::lock_guard lock(shared->mutex);
-    shared->result.analysis = std::move(analysis);
+    if (!analysis->cancelled()) shared->result.analysis = std::move(analysis);
     shared->done = true;
-  });
+  };
+  if constexpr (kWorkerThreads) {
+    Threads& all = threads();
+    all.reap();
+    std::lock_guard lock(all.mutex);
+    all.entries.push_back({std::thread(std::move(work)), shared});
+  } else {
+    work();
+  }
 }
 
 bool StabilityJob::running() const { return shared_ && !shared_->done; }
@@ -32,7 +108,16 @@ std::optional<StabilityJob::Result> StabilityJob::take() {
   std::lock_guard lock(shared_->mutex);
   Result result = std::move(shared_->result);
   shared_.reset();
+  if (!result.analysis) return std::nullopt;  // cancelled
   return result;
+}
+
+void StabilityJob::shutdown() { threads().join_all(); }
+
+int StabilityJob::threads_alive() {
+  Threads& all = threads();
+  std::lock_guard lock(all.mutex);
+  return static_cast<int>(all.entries.size());
 }
 
 }  // namespace springlab::app

@@ -34,6 +34,7 @@
 // The limiting mode (its frequency, damping ratio and shape) comes with each limit.
 #pragma once
 
+#include <atomic>
 #include <complex>
 #include <limits>
 #include <memory>
@@ -111,8 +112,12 @@ inline constexpr int kDenseDofs = 240;
 class StabilityAnalysis {
  public:
   // `dense_dofs`: up to how many free coordinates every eigenvalue is computed (the tests make
-  // the large scenes' path run on small ones, to check it against the dense one).
-  StabilityAnalysis(const Model& model, const State& state, int dense_dofs = kDenseDofs);
+  // the large scenes' path run on small ones, to check it against the dense one). `cancel`, when
+  // set while it runs (from another thread), stops it within milliseconds (a factorisation
+  // under way is finished first): it is then cancelled() and says nothing.
+  StabilityAnalysis(const Model& model, const State& state, int dense_dofs = kDenseDofs,
+                    const std::atomic<bool>* cancel = nullptr);
+  bool cancelled() const { return cancelled_; }
 
   // Whether the scene has oscillating modes (springs with stiffness on free particles); if not,
   // why ("no springs", "every particle is pinned"), and the limits come from the drag alone.
@@ -150,7 +155,8 @@ class StabilityAnalysis {
   const std::vector<ModePoint>& modes() const { return modes_; }
 
  private:
-  bool oscillates_ = false, dense_ = false;
+  bool oscillates_ = false, dense_ = false, cancelled_ = false;
+  void analyse(const Model& model, const State& state, int dense_dofs);
   std::string no_modes_;
   double w_max_ = 0.0, w_bound_ = 0.0, seconds_ = 0.0;
   int dofs_ = 0;

@@ -38,16 +38,9 @@ struct Pool {
   std::condition_variable wake;
   std::atomic<int> sleepers{0};
   std::atomic<int> inside{0};
-  std::atomic<bool> quit{false};
   const Team::Job* job = nullptr;
   int threads = 1;
 
-  ~Pool() {
-    quit.store(true);
-    generation.fetch_add(1);
-    ring();
-    for (std::thread& t : helpers) t.join();
-  }
 
   // After a new generation: wakes the helpers that sleep.
   void ring() {
@@ -64,7 +57,7 @@ struct Pool {
       // A new job soon (a step's next pass): spin; none for a while: sleep until one.
       const auto since = Clock::now();
       std::uint64_t g;
-      for (int spins = 0; (g = generation.load(std::memory_order_acquire)) == seen && !quit.load(); ++spins) {
+      for (int spins = 0; (g = generation.load(std::memory_order_acquire)) == seen; ++spins) {
         if (spins < 64 || (spins & 63) || Clock::now() - since < std::chrono::microseconds(50)) {
           pause();
           continue;
@@ -72,12 +65,11 @@ struct Pool {
         sleepers.fetch_add(1);
         {
           std::unique_lock lock(sleep);
-          wake.wait(lock, [&] { return generation.load() != seen || quit.load(); });
+          wake.wait(lock, [&] { return generation.load() != seen; });
         }
         sleepers.fetch_sub(1);
       }
       seen = g;
-      if (quit.load()) return;
       inside.fetch_add(1);
       if (closed.load() < g && index < threads) (*job)(threads, index);
       inside.fetch_sub(1);
@@ -85,9 +77,11 @@ struct Pool {
   }
 };
 
+// Never destroyed: a thread that still runs a job while the program's statics are destroyed (a
+// worker the app has not joined) finds the pool as it was; the helpers end with the process.
 Pool& pool() {
-  static Pool p;
-  return p;
+  static Pool* p = new Pool;
+  return *p;
 }
 
 // The calling thread's waits that had to yield, during its current job.

@@ -28,6 +28,7 @@
 #include <numeric>
 #include <vector>
 
+#include "stability/cancel.hpp"
 #include "stability/linearised.hpp"
 #include "springlab/forces.hpp"
 #include "springlab/spring_kernel.hpp"
@@ -137,6 +138,7 @@ void relax(const Model& model, const Balance& balance, State& rest, double toler
   double kinetic = 0.0, h = 0.0;
   constexpr int kBudget = 20000, kLook = 50;
   for (int k = 0; k < kBudget; ++k) {
+    if (k % 64 == 0) check_cancel();
     if (k % 500 == 0) {
       // The step from Gershgorin's bound at the positions now (tension raises it).
       const double w = std::sqrt(Linearised(model, rest).stiffness_bound());
@@ -204,6 +206,7 @@ State equilibrium(const Model& model, const State& state) {
   double energy = balance.potential(rest.x);
   int factorisations = 0;
   for (int iteration = 0; iteration < 200 && factorisations < kFactorisations; ++iteration) {
+    check_cancel();
     const Eigen::VectorXd f = balance.force(rest.x);
     if (f.lpNorm<Eigen::Infinity>() <= tolerance) break;
     bool moved = false;

@@ -6,6 +6,8 @@
 #include <limits>
 #include <vector>
 
+#include "stability/cancel.hpp"
+
 namespace springlab {
 
 namespace {
@@ -104,6 +106,7 @@ TopEigenpair top_eigenpair(const SymmetricOperator& apply, const Points& start, 
   double lambda = -std::numeric_limits<double>::infinity(), scale = 0.0, last = lambda;
   begin();
   for (int k = 0; k < max_steps; ++k) {
+    if (k % 32 == 0) check_cancel();
     if (k < keep) kept.push_back(q);
     double a = 0.0, b = 0.0;
     lanczos_step(beta.empty() ? 0.0 : beta.back(), a, b);

@@ -14,6 +14,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "stability/cancel.hpp"
 #include "stability/lanczos.hpp"
 #include "stability/linearised.hpp"
 #include "stability/sqrt_of_real.hpp"
@@ -84,6 +85,7 @@ class RangeTrace {
   // A neighbour's vector starts it (they are close), with a tenth of a fixed random vector so
   // that no direction is missing from the start: the top may have moved to another mode.
   Sample at(double phi, const Points& near) const {
+    check_cancel();
     const double a = std::cos(phi) / k_, b = c_ > 0.0 ? std::sin(phi) / c_ : 0.0;
     const Points start = near + 0.1 * random_;
     const TopEigenpair top = top_eigenpair([&](const Points& x, Points& y) { lin_.apply(a, b, x, y); }, start,
@@ -271,7 +273,17 @@ std::string describe(const StabilityLimit& limit) {
   return s.str();
 }
 
-StabilityAnalysis::StabilityAnalysis(const Model& model, const State& state, int dense_dofs) {
+StabilityAnalysis::StabilityAnalysis(const Model& model, const State& state, int dense_dofs,
+                                     const std::atomic<bool>* cancel) {
+  const CancelScope scope(cancel);
+  try {
+    analyse(model, state, dense_dofs);
+  } catch (const Cancelled&) {
+    cancelled_ = true;
+  }
+}
+
+void StabilityAnalysis::analyse(const Model& model, const State& state, int dense_dofs) {
   const auto started = std::chrono::steady_clock::now();
   for (const MethodInfo& m : methods()) {
     StabilityLimit limit;
