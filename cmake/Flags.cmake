@@ -33,11 +33,18 @@ endif()
 # numbers in the reports (-g1), and -O1, the sanitizers' advice, which also builds several times
 # faster than -O3 (core/CMakeLists.txt then leaves out its -O3).
 option(SPRINGLAB_SANITIZE "Build with AddressSanitizer and UndefinedBehaviorSanitizer" OFF)
+# Which: address (with undefined, the default) or thread (ThreadSanitizer: scripts/stress.sh).
+set(SPRINGLAB_SANITIZER "address" CACHE STRING "With SPRINGLAB_SANITIZE: address or thread")
 if(SPRINGLAB_SANITIZE)
   add_compile_options(-O1 -g1 -UNDEBUG)
   # At -O1 clang does not vectorise the `omp simd` loops, and would say so at every one.
   add_compile_options($<$<CXX_COMPILER_ID:Clang>:-Wno-pass-failed>)
   add_compile_definitions(SPRINGLAB_SANITIZE)  # for the few tests that bound a time
-  add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all)
-  add_link_options(-fsanitize=address,undefined)
+  if(SPRINGLAB_SANITIZER STREQUAL "thread")
+    add_compile_options(-fsanitize=thread -fno-omit-frame-pointer)
+    add_link_options(-fsanitize=thread)
+  else()
+    add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all)
+    add_link_options(-fsanitize=address,undefined)
+  endif()
 endif()

@@ -9,6 +9,7 @@
 
 #include "springlab/energy.hpp"
 #include "springlab/stability.hpp"
+#include "stability/cancel.hpp"
 
 namespace springlab {
 
@@ -197,6 +198,7 @@ MeasuredLimit measured_limit(Method method, const Model& model, const State& sta
     Workspace ws;
     spent += static_cast<double>(steps) * size;
     for (long k = 0; k < steps; ++k) {
+      if ((k & 255) == 0) check_cancel();
       step(method, runs, a, b, h, settings, ws);
       std::swap(a, b);
       if ((k & 15) != 15 && k + 1 < steps) continue;

@@ -1,5 +1,7 @@
 #include "springlab/sweep.hpp"
 
+#include "stability/cancel.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -12,6 +14,7 @@
 #include "springlab/exact.hpp"
 #include "springlab/simulation.hpp"
 #include "dynamics/threads.hpp"
+#include "stability/cancel.hpp"
 
 namespace springlab {
 
@@ -70,6 +73,7 @@ SweepRun run_one(const Model& model, const State& initial, Method method, double
     const auto start = std::chrono::steady_clock::now();
     bool diverged = false;
     for (int k = 0; k < samples && !diverged; ++k) {
+      check_cancel();
       if (sim.advance(every) < every) {
         diverged = true;
         break;
@@ -99,6 +103,7 @@ Trajectory rk4_trajectory(const Model& model, const State& initial, double h, in
   s.audit_fraction = 0.0;  // the reference is checked by its own convergence
   Simulation sim(model, initial, s);
   for (int k = 0; k < samples; ++k) {
+    check_cancel();
     sim.advance(every);
     t.samples.push_back(take(sim.state(), t.free));
   }
@@ -106,15 +111,20 @@ Trajectory rk4_trajectory(const Model& model, const State& initial, double h, in
 }
 
 // Runs jobs on `workers` threads, each of which runs its force loops on one thread (the sweep
-// is parallel across runs instead).
+// is parallel across runs instead). Cancelled, each stops within a sample of the run it makes
+// (its loops call check_cancel(): stability/cancel.hpp).
 void parallel_for(int jobs, int workers, const std::function<void(int)>& job, const std::atomic<bool>* cancel) {
   std::atomic<int> next{0};
   const int caller_threads = threads::max_team();
   const auto work = [&] {
     threads::set_max_team(1);
-    for (int j; (j = next++) < jobs;) {
-      if (cancel && cancel->load()) return;
-      job(j);
+    const CancelScope scope(cancel);
+    try {
+      for (int j; (j = next++) < jobs;) {
+        if (cancel && cancel->load()) return;
+        job(j);
+      }
+    } catch (const Cancelled&) {
     }
   };
   std::vector<std::thread> threads;
@@ -295,6 +305,7 @@ struct SweepPlan {
     trace.t.push_back(initial.t);
     trace.drift.push_back(0.0);
     for (std::int64_t k = 0; k < steps; k += every) {
+      check_cancel();
       if (sim.advance(every) < every) {
         trace.diverged = true;
         break;
@@ -328,10 +339,22 @@ SweepResult run_sweep(const Model& model, const State& initial, const SweepSetti
   const int workers = !threads::kAvailable ? 1 : settings.workers > 0 ? settings.workers : threads::hardware_workers();
   if (!plan.exact_reference()) {
     std::vector<Trajectory> both(2);
-    parallel_for(2, std::min(2, workers), [&](int j) { both[j] = plan.rk4_reference(j); }, nullptr);
+    parallel_for(2, std::min(2, workers), [&](int j) { both[j] = plan.rk4_reference(j); }, cancel);
+    if (cancel && cancel->load()) {
+      plan.result.cancelled = true;
+      return std::move(plan.result);
+    }
     plan.set_rk4_reference(std::move(both[0]), both[1]);
   }
-  plan.plan_jobs();
+  {
+    const CancelScope scope(cancel);
+    try {
+      plan.plan_jobs();
+    } catch (const Cancelled&) {
+      plan.result.cancelled = true;
+      return std::move(plan.result);
+    }
+  }
   std::mutex mutex;
   int done = 0;
   parallel_for(plan.total, workers, [&](int j) {
