@@ -230,6 +230,7 @@ int render(const RenderOptions& o) {
   if (!o.sim.threads && gfx::software_renderer(offscreen.renderer_name())) set_thread_count(1);
   Progress progress("render " + name, frames);
   ui::FrameStats stats;
+  stats.timed = false;  // the same pixels for the same inputs
   const auto start = std::chrono::steady_clock::now();
   std::int64_t written = 0;
   // Frame k is drawn, then the simulation advances to frame k + 1 while the rasteriser's threads

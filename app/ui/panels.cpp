@@ -604,7 +604,10 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
       parameters(session, ui, few);
     }
     if (!few) {
-      ImGui::TextDisabled("%s", fmt("a frame: %.1f ms simulating, ", stats.sim_ms).append(fmt("%.1f drawing", stats.draw_ms)).c_str());
+      if (stats.timed)
+        ImGui::TextDisabled("%s", fmt("a frame: %.1f ms simulating, ", stats.sim_ms).append(fmt("%.1f drawing", stats.draw_ms)).c_str());
+      else
+        ImGui::TextDisabled("a frame: %lld force evaluations", static_cast<long long>(stats.force_evals));
       if (!session.scene().ik) {
         if (ImGui::Button(ui.accuracy ? "Hide accuracy (A)" : "Accuracy vs cost (A)")) ui.accuracy = !ui.accuracy;
         ImGui::SameLine();

@@ -31,6 +31,9 @@ struct FrameStats {
   std::int64_t force_evals = 0, linear_solves = 0, solver_iterations = 0;
   double realtime = 1.0;
   double fps = 0.0;  // frames shown a second of wall time (0: not measured, headless)
+  // Whether the wall-clock times are shown: not in `render`'s frames, which must be the same
+  // pixels for the same inputs (golden images): its work is shown instead.
+  bool timed = true;
 };
 
 // Slider ranges, from the scene as loaded.

@@ -15,18 +15,13 @@
 // metric, a share of all the pixels, passed spring-f060 rendered one frame early, 0.49 % of the
 // pixels, stiff-f060's frames 59 and 61, 0.46 % and 0.44 %, and RK4's whole convergence curve,
 // 0.19 %, against a limit of 0.5 %).
-// One exception: frames with the app's panels (--ui, and lessons) show in the left panel the
-// live line "a frame: N ms simulating, N drawing", wall-clock times that differ from run to run.
-// That column (as wide as ui::scene_viewport leaves it) is judged as a whole instead: it fails
-// when more than kPanel of its drawn pixels differ.
-//
+// Frames with the app's panels (--ui, and lessons) are judged the same way: `render` shows the
+// work a frame took there, not the wall-clock times the app shows (which differed from run to
+// run: up to 52 px of the left panel, 684 with the process slowed).
 // Measured on this build (every case rendered at its frame and at the frames before and after,
 // and with the scene painted over; the charts rendered with RK4 left out, with --points 7, and
 // with each method's plotted curve erased or moved, its legend kept):
-//   no change (the references, rendered again): worst window 0 in every case and chart; the
-//     left panel: up to 52 px (0.14 % of its drawn pixels) from the timing line; with the
-//     process paused every 0.3 ms so that the line read 15.4 ms instead of 0.1 ms (a wider
-//     number that shifts the rest of the line): 684 px, 2.3 %.
+//   no change (the references, rendered again): worst window 0 in every case and chart.
 //   one frame off: worst window >= 15.6 % in every case: jelly-f000 + 1 (where only the
 //     caption's time and a 1 mm fall change) 15.6 %, cloth-sphere-f000 + 1 15.7 %,
 //     lesson-rk4-work-precision-f090 + 1 (the accuracy chart covers the scene) 26.4 %, all
@@ -41,7 +36,7 @@
 //     (RK4's dot).
 // So kWindow = 5 % sits at less than half the smallest of those changes (11.1 %, a dot) and a
 // third of the smallest frame-off change (15.6 %), with no window above 0 in the unchanged
-// renders; kPanel = 5 % is twice the slowed timing line's 2.3 % (a missing panel is 100 %).
+// renders.
 //
 // Also: the same frame renders to identical bytes twice in one process, in two processes, and
 // whatever the number of rasteriser or simulation threads.
@@ -69,7 +64,6 @@ namespace fs = std::filesystem;
 constexpr int kChannel = 24;          // of 255
 constexpr double kWindow = 0.05;      // of a window's drawn pixels
 constexpr double kMinDrawn = 0.10;    // of a window's pixels: the least a window counts as drawn
-constexpr double kPanel = 0.05;       // of the left panel's drawn pixels
 constexpr int kWindowPer270 = 24;     // a window's side, in pixels per 270 of the frame's height
 
 struct Case {
@@ -112,31 +106,13 @@ fs::path render(const Case& c, const fs::path& dir) {
   return dir / frame_file(c.frame);
 }
 
-// The width of the left panel in a frame rendered with `args` (0: no panels), as the render lays
-// it out: its UI scale is --ui-scale or height / 720, at least 0.6 (render_command.cpp).
-int panel_width(const std::string& args, int width, int height) {
-  std::istringstream s(args);
-  bool panels = false;
-  double scale = std::max(0.6, height / 720.0);
-  for (std::string word; s >> word;) {
-    if (word == "--ui" || word == "--lesson") panels = true;
-    if (word == "--ui-scale") s >> scale;
-  }
-  if (!panels) return 0;
-  ui::UiState ui;
-  ui.scale = static_cast<float>(scale);
-  return ui::scene_viewport(ui, width, height).x;
-}
-
 struct Difference {
   std::size_t differing = 0, total = 0;
   double window = 0.0;  // the worst window's score
   int wx = 0, wy = 0, side = 0;
   int wdiffering = 0, wdrawn = 0;
-  std::size_t panel_differing = 0, panel_drawn = 0;
-  double panel = 0.0;
   app::Image diff;
-  bool failed() const { return window > kWindow || panel > kPanel; }
+  bool failed() const { return window > kWindow; }
 };
 
 int channel_difference(const std::uint8_t* a, const std::uint8_t* b) {
@@ -145,8 +121,7 @@ int channel_difference(const std::uint8_t* a, const std::uint8_t* b) {
   return worst;
 }
 
-// `panel`: the width of the left column judged as a whole (the live timing line), 0 for none.
-Difference compare(const app::Image& expected, const app::Image& actual, int panel = 0) {
+Difference compare(const app::Image& expected, const app::Image& actual) {
   Difference d;
   const int w = expected.width, h = expected.height;
   d.total = static_cast<std::size_t>(w) * h;
@@ -175,7 +150,6 @@ Difference compare(const app::Image& expected, const app::Image& actual, int pan
       const bool differs = channel_difference(e, a) > kChannel;
       const bool drawn = differs || channel_difference(e, background) > kChannel || channel_difference(a, background) > kChannel;
       d.differing += differs;
-      if (x < panel) d.panel_differing += differs, d.panel_drawn += drawn;
       differ_sum[at(x + 1, y + 1)] = differs + differ_sum[at(x, y + 1)] + differ_sum[at(x + 1, y)] - differ_sum[at(x, y)];
       drawn_sum[at(x + 1, y + 1)] = drawn + drawn_sum[at(x, y + 1)] + drawn_sum[at(x + 1, y)] - drawn_sum[at(x, y)];
       std::uint8_t* out = d.diff.rgba.data() + 4 * p;
@@ -186,9 +160,8 @@ Difference compare(const app::Image& expected, const app::Image& actual, int pan
       }
       out[3] = 255;
     }
-  d.panel = d.panel_drawn ? static_cast<double>(d.panel_differing) / d.panel_drawn : 0.0;
-  // The windows, right of the panel: full size (the last of a row or column against the edge).
-  const int side = std::min({std::max(8, h * kWindowPer270 / 270), h, w - panel});
+  // The windows: full size (the last of a row or column against the edge).
+  const int side = std::min({std::max(8, h * kWindowPer270 / 270), h, w});
   const auto starts = [side](int from, int to) {
     std::vector<int> s;
     for (int v = from;; v += side / 2) {
@@ -202,7 +175,7 @@ Difference compare(const app::Image& expected, const app::Image& actual, int pan
   };
   d.side = side;
   for (const int y : starts(0, h))
-    for (const int x : starts(panel, w)) {
+    for (const int x : starts(0, w)) {
       const int differing = sum(differ_sum, x, y), drawn = sum(drawn_sum, x, y);
       const double score = differing / std::max<double>(drawn, kMinDrawn * side * side);
       if (score > d.window) d.window = score, d.wx = x, d.wy = y, d.wdiffering = differing, d.wdrawn = drawn;
@@ -218,16 +191,13 @@ Difference compare(const app::Image& expected, const app::Image& actual, int pan
   return d;
 }
 
-// What a failure says: the worst window, and the panel's share.
-std::string describe(const Difference& d, int panel) {
+// What a failure says: the worst window.
+std::string describe(const Difference& d) {
   std::ostringstream s;
   s.precision(3);
   s << "the worst " << d.side << "x" << d.side << " window, at (" << d.wx << ", " << d.wy << "), has " << d.wdiffering
     << " of its " << d.wdrawn << " drawn pixels different by more than " << kChannel << " (" << 100.0 * d.window
     << "%, limit " << 100.0 * kWindow << "%)";
-  if (panel > 0)
-    s << "; the left panel (x < " << panel << "): " << d.panel_differing << " of " << d.panel_drawn << " drawn pixels ("
-      << 100.0 * d.panel << "%, limit " << 100.0 * kPanel << "%)";
   s << "; " << d.differing << " of " << d.total << " pixels in all";
   return s.str();
 }
@@ -250,15 +220,14 @@ TEST_P(Golden, MatchesItsReference) {
   const app::Image actual = app::read_png(actual_path);
   ASSERT_EQ(actual.width, expected.width);
   ASSERT_EQ(actual.height, expected.height);
-  const int panel = panel_width(c.args, expected.width, expected.height);
-  const Difference d = compare(expected, actual, panel);
+  const Difference d = compare(expected, actual);
   if (d.failed()) {
     fs::create_directories(failure_dir());
     const fs::path out_actual = failure_dir() / (c.name + "-actual.png");
     const fs::path out_diff = failure_dir() / (c.name + "-diff.png");
     app::write_png(out_actual, actual, 6);
     app::write_png(out_diff, d.diff, 6);
-    ADD_FAILURE() << c.name << ": " << describe(d, panel) << ".\n  reference: " << reference
+    ADD_FAILURE() << c.name << ": " << describe(d) << ".\n  reference: " << reference
                   << "\n  actual:    " << out_actual << "\n  diff:      " << out_diff
                   << "\n  If the change is intended: scripts/update-goldens.sh";
   }
@@ -294,7 +263,7 @@ TEST(GoldenCharts, OfTheSpring) {
       fs::create_directories(failure_dir());
       app::write_png(failure_dir() / ("charts-spring-" + std::string(chart) + "-actual.png"), actual, 6);
       app::write_png(failure_dir() / ("charts-spring-" + std::string(chart) + "-diff.png"), d.diff, 6);
-      ADD_FAILURE() << chart << ": " << describe(d, 0) << "; see " << failure_dir();
+      ADD_FAILURE() << chart << ": " << describe(d) << "; see " << failure_dir();
     }
   }
 }
