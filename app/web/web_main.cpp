@@ -28,6 +28,7 @@
 
 #include "platform/interactive_app.hpp"
 #include "springlab/error.hpp"
+#include "ui/panels.hpp"
 #include "ui/theme.hpp"
 #include "web/browser.hpp"
 #include "web/url_config.hpp"
@@ -52,6 +53,7 @@ struct Page {
   long frames = 0;
   double frame_ms = 0.0;  // the last frame's whole time in the app (the browser composites after)
   ImVec4 copy_button;  // where Copy link is (x, y, width, height), for the page's tests
+  draw::Viewport scene;  // where the scene is drawn (CSS pixels from the top left), for the tests
 };
 Page* g_page = nullptr;
 
@@ -127,6 +129,7 @@ void frame() {
   ImGui_ImplGlfw_NewFrame();
   page.app->frame(size);
   page.frame_ms = emscripten_get_now() - start;
+  page.scene = ui::scene_viewport(page.app->ui(), size.win_width, size.win_height);
   if (page.app->take_opened()) page.sets.clear();  // another scene, opened as its file says
   if (++page.frames == 1) first_frame_shown();
 }
@@ -220,6 +223,9 @@ EMSCRIPTEN_KEEPALIVE const char* springlab_status() {
   json += number;
   const ImVec4& b = g_page->copy_button;
   std::snprintf(number, sizeof number, ",\"copy_link\":[%g,%g,%g,%g]", b.x, b.y, b.z, b.w);
+  json += number;
+  const draw::Viewport& v = g_page->scene;
+  std::snprintf(number, sizeof number, ",\"viewport\":[%d,%d,%d,%d]", v.x, v.y, v.width, v.height);
   json += number;
   json += ",\"paused\":" + std::string(session.paused() ? "true" : "false");
   json += ",\"lesson\":" + quoted(g_page->app->lesson() ? g_page->app->lesson()->name : "");

@@ -79,8 +79,13 @@ async function pauseAtStart(page) {
 }
 
 // Compares two PNG buffers in a browser page (a 2D canvas decodes them): the share of pixels whose
-// channels differ by more than `threshold`, and a diff image (differing pixels in red).
-async function compareImages(browser, a, b, threshold = 40) {
+// channels differ by more than `threshold`, and a diff image (differing pixels in red). With
+// `region` ([x, y, w, h], where the scene is drawn) also the worst window's score there, as the
+// native golden test judges (tests/golden/golden_test.cpp): square windows of side height * 24 /
+// 270 overlapping by half, each scored by its differing pixels over its drawn ones (off the
+// background, the golden's most common colour, in either image, or differing; at least a tenth of
+// the window): `windowScore`, and the worst window's place `window`.
+async function compareImages(browser, a, b, threshold = 40, region = null) {
   const page = await browser.newPage();
   const result = await page.evaluate(async (a64, b64, threshold) => {
     const load = async (b64) => {
@@ -108,9 +113,45 @@ async function compareImages(browser, a, b, threshold = 40) {
       diff.data[i + 3] = 255;
       if (d > threshold) differing++;
     }
+    let windowScore = 0, window = null;
+    if (region) {
+      const [rx, ry, rw, rh] = region.map(Math.round);
+      const counts = new Map();
+      for (let y = ry; y < ry + rh; y += 4)
+        for (let x = rx; x < rx + rw; x += 4) {
+          const i = 4 * (y * A.w + x), c = (A.data[i] << 16) | (A.data[i + 1] << 8) | A.data[i + 2];
+          counts.set(c, (counts.get(c) || 0) + 1);
+        }
+      let bg = 0, most = -1;
+      for (const [c, n] of counts) if (n > most) { bg = c; most = n; }
+      const off = (D, i) => Math.max(Math.abs(D[i] - (bg >> 16 & 255)), Math.abs(D[i + 1] - (bg >> 8 & 255)),
+                                     Math.abs(D[i + 2] - (bg & 255))) > threshold;
+      const side = Math.max(8, Math.min(Math.round(A.h * 24 / 270), rw, rh));
+      const starts = (from, to) => {
+        const s = [];
+        for (let v = from; ; v += side / 2) {
+          s.push(Math.min(v, to - side));
+          if (v + side >= to) break;
+        }
+        return s;
+      };
+      for (const wy of starts(ry, ry + rh))
+        for (const wx of starts(rx, rx + rw)) {
+          let differ = 0, drawn = 0;
+          for (let y = wy; y < wy + side; y++)
+            for (let x = wx; x < wx + side; x++) {
+              const i = 4 * (y * A.w + x);
+              const d = diff.data[i] === 255 && diff.data[i + 1] === 0;  // marked differing above
+              differ += d;
+              drawn += d || off(A.data, i) || off(B.data, i);
+            }
+          const score = differ / Math.max(drawn, 0.1 * side * side);
+          if (score > windowScore) { windowScore = score; window = [wx, wy, side, differ, drawn]; }
+        }
+    }
     A.g.putImageData(diff, 0, 0);
-    return { fraction: differing / (A.w * A.h), diff: A.c.toDataURL("image/png").split(",")[1] };
-  }, a.toString("base64"), b.toString("base64"), threshold);
+    return { fraction: differing / (A.w * A.h), windowScore, window, diff: A.c.toDataURL("image/png").split(",")[1] };
+  }, a.toString("base64"), b.toString("base64"), threshold, region);
   await page.close();
   if (result.diff) result.diff = Buffer.from(result.diff, "base64");
   return result;
