@@ -87,7 +87,7 @@ async function pauseAtStart(page) {
 // the window): `windowScore`, and the worst window's place `window`.
 async function compareImages(browser, a, b, threshold = 40, region = null) {
   const page = await browser.newPage();
-  const result = await page.evaluate(async (a64, b64, threshold) => {
+  const result = await page.evaluate(async (a64, b64, threshold, region) => {
     const load = async (b64) => {
       const img = new Image();
       img.src = "data:image/png;base64," + b64;
