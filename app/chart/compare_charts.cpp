@@ -48,7 +48,7 @@ Chart work_precision(const SweepResult& r, const std::string& scene, Cost cost) 
   c.y.log = true;
   const double ceiling = ceiling_of(r);
   for (const MethodSummary& m : r.methods) {
-    const bool adaptive = method_info(m.method).adaptive;
+    const bool adaptive = method_info(m.method).adaptive();
     Series s;
     s.label = std::string(method_info(m.method).name) + (adaptive ? " (over tolerances)" : "");
     s.color = draw::method_color(m.method);

@@ -12,15 +12,10 @@ namespace {
 
 using Complex = std::complex<double>;
 
-// Stable at z = h lambda (the complex plane's methods), by the stability function.
+// Stable at z = h lambda (the complex plane's methods), by the row's stability function.
 bool stable_at(Method method, Complex z) {
-  switch (method) {
-    case Method::Euler: return std::abs(1.0 + z) <= 1.0;
-    case Method::Midpoint: return std::abs(1.0 + z + z * z / 2.0) <= 1.0;
-    case Method::RK4: return std::abs(1.0 + z + z * z / 2.0 + z * z * z / 6.0 + z * z * z * z / 24.0) <= 1.0;
-    case Method::ImplicitEuler: return std::abs(1.0 - z) >= 1.0;
-    default: return false;
-  }
+  const Tableau* tableau = method_info(method).tableau;
+  return tableau && std::abs(tableau->stability_function(z)) <= 1.0;
 }
 
 // Stable for a mode at (X, Y) = (h w, h c) (the oscillator plane's methods): mode_limit() of the
@@ -104,15 +99,13 @@ double room(const StabilityAnalysis& analysis, const RegionLane& lane) {
 }  // namespace
 
 RegionPlane region_plane(Method method) {
-  return method == Method::SymplecticEuler || method == Method::Verlet || method == Method::ModifiedEuler
-             ? RegionPlane::Oscillator
-             : RegionPlane::Complex;
+  return method_info(method).family == MethodFamily::Partitioned ? RegionPlane::Oscillator : RegionPlane::Complex;
 }
 
 std::string region_verdict(const StabilityAnalysis& analysis, const RegionLane& lane) {
   char s[160];
   const MethodInfo& m = method_info(lane.method);
-  if (m.adaptive) return std::string(m.name) + " chooses its own steps: no region";
+  if (m.adaptive()) return std::string(m.name) + " chooses its own steps: no region";
   const double factor = room(analysis, lane);
   if (std::isinf(factor)) return std::string(m.name) + ": stable at any step";
   if (factor == 0.0) return std::string(m.name) + ": unstable at any step (a mode sits outside for every h)";
@@ -132,7 +125,7 @@ Chart stability_region(const StabilityAnalysis& analysis, const std::vector<Regi
   const RegionPlane plane = region_plane(lanes.front().method);
   std::vector<RegionLane> shown;
   for (const RegionLane& l : lanes)
-    if (region_plane(l.method) == plane && !method_info(l.method).adaptive) shown.push_back(l);
+    if (region_plane(l.method) == plane && !method_info(l.method).adaptive()) shown.push_back(l);
   const draw::Rgba red = draw::kDiverged;
 
   if (plane == RegionPlane::Complex) {
@@ -154,7 +147,7 @@ Chart stability_region(const StabilityAnalysis& analysis, const std::vector<Regi
     // An explicit method's region lies within |z| <= 3 (RK4's reaches 2.83): sampled there, its
     // edge is smooth however far the view reaches. Implicit Euler's is everything but a disc.
     for (const RegionLane& l : shown) {
-      const bool bounded = !method_info(l.method).implicit;
+      const bool bounded = !method_info(l.method).implicit();
       region([&](double x, double y) { return stable_at(l.method, Complex(x, y)); },
              bounded ? std::max(x0, -3.0) : x0, bounded ? std::min(x1, 0.5) : x1, bounded ? std::max(y0, -3.0) : y0,
              bounded ? std::min(y1, 3.0) : y1, draw::method_color(l.method), region_verdict(analysis, l), c.series);

@@ -102,7 +102,7 @@ std::vector<chart::NamedChart> region_charts(const Prepared& p, const SweepResul
   if (!analysis.oscillates()) return out;
   std::vector<chart::RegionLane> complex, oscillator;
   for (const MethodSummary& m : r.methods) {
-    if (method_info(m.method).adaptive) continue;
+    if (method_info(m.method).adaptive()) continue;
     int substeps = p.settings.substeps;
     for (const DriftTrace& d : r.drift)
       if (d.method == m.method) substeps = d.substeps;

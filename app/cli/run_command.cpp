@@ -149,7 +149,7 @@ int run(const RunOptions& o) {
   if (c.linear_solves)
     std::printf(", %lld linear solves (%lld CG iterations)", static_cast<long long>(c.linear_solves),
                 static_cast<long long>(c.solver_iterations));
-  if (m.adaptive)
+  if (m.adaptive())
     std::printf(", %lld accepted and %lld rejected internal steps",
                 static_cast<long long>(c.accepted), static_cast<long long>(c.rejected));
   std::printf("\n");

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "draw/frame.hpp"
@@ -17,19 +18,27 @@ namespace springlab::draw {
 // RK4, Verlet and implicit Euler) take its five most distinct hues, for protanopes and
 // deuteranopes too: vermilion, sky blue, bluish green, yellow and reddish purple; the rest take
 // orange, light grey, blue and a violet, and are seldom beside the ones they resemble.
+// By the method's row in the table (methods()), in its order; a row past the list takes a hue
+// of its own, turned by the golden angle from the last.
 inline Rgba method_color(Method m) {
-  switch (m) {
-    case Method::Euler: return {0.90f, 0.38f, 0.00f, 1};            // vermilion  #E66100
-    case Method::SymplecticEuler: return {0.34f, 0.71f, 0.91f, 1};  // sky blue   #56B4E9
-    case Method::RK4: return {0.00f, 0.66f, 0.48f, 1};              // bluish green #00A87A
-    case Method::Verlet: return {0.94f, 0.89f, 0.26f, 1};           // yellow     #F0E442
-    case Method::ImplicitEuler: return {0.85f, 0.52f, 0.78f, 1};    // reddish purple #D985C7
-    case Method::Midpoint: return {0.90f, 0.62f, 0.00f, 1};         // orange     #E69F00
-    case Method::ModifiedEuler: return {0.78f, 0.78f, 0.78f, 1};    // light grey
-    case Method::AdaptiveEuler: return {0.20f, 0.50f, 0.85f, 1};    // blue
-    case Method::RK45: return {0.62f, 0.50f, 0.98f, 1};             // violet
-  }
-  return {1, 1, 1, 1};
+  static constexpr Rgba kByRow[] = {
+      {0.90f, 0.38f, 0.00f, 1},  // euler: vermilion  #E66100
+      {0.34f, 0.71f, 0.91f, 1},  // symplectic-euler: sky blue   #56B4E9
+      {0.90f, 0.62f, 0.00f, 1},  // midpoint: orange     #E69F00
+      {0.78f, 0.78f, 0.78f, 1},  // modified-euler: light grey
+      {0.00f, 0.66f, 0.48f, 1},  // rk4: bluish green #00A87A
+      {0.20f, 0.50f, 0.85f, 1},  // adaptive-euler: blue
+      {0.62f, 0.50f, 0.98f, 1},  // rk45: violet
+      {0.85f, 0.52f, 0.78f, 1},  // implicit-euler: reddish purple #D985C7
+      {0.94f, 0.89f, 0.26f, 1},  // verlet: yellow     #F0E442
+  };
+  const auto row = static_cast<std::size_t>(m);
+  if (row < std::size(kByRow)) return kByRow[row];
+  const float hue = std::fmod(0.61803398875f * static_cast<float>(row), 1.0f);
+  const auto channel = [&](float offset) {
+    return 0.55f + 0.35f * std::cos(6.28318530718f * (hue + offset));
+  };
+  return {channel(0.0f), channel(-1.0f / 3.0f), channel(1.0f / 3.0f), 1};
 }
 
 // The IK solvers, distinct from one another in compare mode (the same hues).

@@ -108,7 +108,7 @@ double growth_per_step(const Record& r, int i0, int i1) {
 ClaimResult orders(const LessonClaim& claim, const Session& session) {
   ClaimResult out{claim, true, ""};
   ui::ComparePanel panel;
-  for (const auto& [name, order] : claim.orders) panel.methods[static_cast<int>(*find_method(name))] = true;
+  for (const auto& [name, order] : claim.orders) panel.methods.set(*find_method(name), true);
   SweepSettings settings = panel.settings(session);
   settings.workers = 1;  // the same result whatever the machine (only the seconds differ)
   settings.stability = false;

@@ -160,7 +160,7 @@ void InteractiveApp::show(Prepared p, const std::string& name) {
   ui.band = ui_.band;
   ui.lesson_charts = ui_.lesson_charts;
   for (Method m : session_->scene().methods)
-    if (session_->scene().methods.size() >= 2) ui.compare_choice[static_cast<int>(m)] = true;
+    if (session_->scene().methods.size() >= 2) ui.compare_choice.set(m, true);
   ui_ = std::move(ui);
 }
 
@@ -221,7 +221,8 @@ void InteractiveApp::keyboard() {
       {GLFW_KEY_M, ui::Action::ToggleMode},      {GLFW_KEY_P, ui::Action::TogglePresentation}};
   for (const auto& [key, action] : keys)
     if (ImGui::IsKeyPressed(key, false)) ui::perform(action, *session_, ui_);
-  for (int k = 0; k < 9; ++k)
+  // Keys 1 to 9: the table's first nine rows.
+  for (int k = 0; k < std::min<int>(9, static_cast<int>(methods().size())); ++k)
     if (ImGui::IsKeyPressed(GLFW_KEY_1 + k, false))
       ui::perform(static_cast<ui::Action>(static_cast<int>(ui::Action::Method1) + k), *session_, ui_);
   if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) quit_ = true;

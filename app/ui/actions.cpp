@@ -37,7 +37,7 @@ void perform(Action action, app::Session& session, UiState& ui) {
       if (session.scene().ik) {  // keys 1 to 3 pick a solver
         if (k < static_cast<int>(ik_solvers().size())) session.set_solver(ik_solvers()[k].id);
       } else {
-        session.set_method(methods()[k].id);
+        if (k < static_cast<int>(methods().size())) session.set_method(methods()[k].id);
       }
       break;
     }

@@ -13,7 +13,7 @@ namespace springlab::ui {
 SweepSettings ComparePanel::settings(const app::Session& session) const {
   SweepSettings s;
   for (const MethodInfo& m : springlab::methods())
-    if (methods[static_cast<int>(m.id)]) s.methods.push_back(m.id);
+    if (methods.has(m.id)) s.methods.push_back(m.id);
   const Simulation& sim = session.primary().sim;
   const double dt = sim.settings().dt;
   s.h_max = 2 * dt;
@@ -65,7 +65,8 @@ void draw_compare_panel(ComparePanel& panel, const app::Session& session, float 
       ImGui::TableNextColumn();
       const draw::Rgba c = draw::method_color(m.id);
       ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(c.r, c.g, c.b, 1));
-      ImGui::Checkbox(m.name, &panel.methods[static_cast<int>(m.id)]);
+      bool on = panel.methods.has(m.id);
+      if (ImGui::Checkbox(m.name, &on)) panel.methods.set(m.id, on);
       ImGui::PopStyleColor();
     }
     ImGui::EndTable();

@@ -5,6 +5,7 @@
 #include <array>
 
 #include "session/background_sweep.hpp"
+#include "ui/method_choice.hpp"
 #include "session/session.hpp"
 
 namespace springlab::ui {
@@ -14,7 +15,7 @@ struct ComparePanel {
   int points = 6;
   float duration = 1.0f;          // s simulated by each run
   float step_range = 16.0f;       // from dt / range to 2 dt
-  std::array<bool, 9> methods{};  // which to sweep (none ticked: all)
+  MethodChoice methods;  // which to sweep (none ticked: all)
   int chart = 0;                  // the tab shown: compare_charts' order (0: error vs time, 1: vs work)
   app::BackgroundSweep sweep;
 

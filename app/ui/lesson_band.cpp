@@ -140,7 +140,7 @@ void show_step(UiState& ui, ComparePanel& accuracy, const Lesson& lesson, int k)
   if (!step.accuracy) return;
   accuracy.methods = {};
   for (const LessonClaim& c : step.claims)
-    for (const auto& [name, order] : c.orders) accuracy.methods[static_cast<int>(*find_method(name))] = true;
+    for (const auto& [name, order] : c.orders) accuracy.methods.set(*find_method(name), true);
   accuracy.chart = 1;  // error against work
 }
 

@@ -237,7 +237,7 @@ chart::Chart steps_chart(const app::Session& session) {
   steps.y.label = "internal step (s)";
   steps.y.log = true;
   for (const app::Lane& lane : session.lanes()) {
-    if (!method_info(lane.sim.settings().method).adaptive) continue;
+    if (!method_info(lane.sim.settings().method).adaptive()) continue;
     const app::History& h = lane.history;
     chart::Series step = series(std::string(method_info(lane.sim.settings().method).name) + " step", 
                                 draw::method_color(lane.sim.settings().method), h.t, h.step);
@@ -270,7 +270,7 @@ std::vector<chart::Chart> region_charts(app::Session& session, std::string& none
   }
   std::vector<chart::RegionLane> planes[2];
   for (app::Lane& lane : session.lanes())
-    if (!method_info(lane.sim.settings().method).adaptive)
+    if (!method_info(lane.sim.settings().method).adaptive())
       planes[static_cast<int>(chart::region_plane(lane.sim.settings().method))].push_back(
           {lane.sim.settings().method, lane.sim.h()});
   for (int k = 0; k < 2; ++k)
@@ -353,7 +353,7 @@ Ranges Ranges::of(const app::Session& session) {
 std::vector<Method> compare_methods(const UiState& ui) {
   std::vector<Method> out;
   for (const MethodInfo& m : methods())
-    if (ui.compare_choice[static_cast<int>(m.id)] && out.size() < app::Session::kMaxLanes) out.push_back(m.id);
+    if (ui.compare_choice.has(m.id) && out.size() < app::Session::kMaxLanes) out.push_back(m.id);
   return out;
 }
 
@@ -517,7 +517,7 @@ void parameters(app::Session& session, UiState& ui, bool few) {
   }
   if (slider("drag (N s/m)", drag, 0.0, std::max(1.0, 100 * ui.ranges.drag), true)) session.set_drag(drag);
   if (sim.model().has_colliders() && slider("friction", mu, 0.0, 2.0, false, "%.2f")) session.set_friction(mu);
-  if (method_info(session.method()).adaptive && slider("tolerance", tol, 1e-10, 1e-1, true, "%.1e"))
+  if (method_info(session.method()).adaptive() && slider("tolerance", tol, 1e-10, 1e-1, true, "%.1e"))
     session.set_tolerance(tol);
   int speed_exp = static_cast<int>(std::lround(std::log2(session.speed())));
   const char* speeds[] = {"1/16", "1/8", "1/4", "1/2", "1", "2", "4"};
@@ -625,7 +625,8 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
             ImGui::TableNextColumn();
             ImGui::PushStyleColor(ImGuiCol_Text, v4(draw::method_color(m.id)));
             ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(3 * s, 1 * s));
-            ImGui::Checkbox(m.name, &ui.compare_choice[static_cast<int>(m.id)]);
+            bool on = ui.compare_choice.has(m.id);
+            if (ImGui::Checkbox(m.name, &on)) ui.compare_choice.set(m.id, on);
             ImGui::PopStyleVar();
             ImGui::PopStyleColor();
           }

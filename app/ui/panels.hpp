@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "draw/scene_frame.hpp"
+#include "ui/method_choice.hpp"
 #include "session/session.hpp"
 #include "springlab/lesson.hpp"
 
@@ -56,7 +57,7 @@ struct UiState {
   std::string scene_name;
   char open_path[512] = "";
   std::string message;  // shown in a banner until dismissed (a file that failed to load)
-  std::array<bool, 9> compare_choice{};
+  MethodChoice compare_choice;
   // A platform's own controls, drawn under the scene picker (the browser's Copy link, file
   // picker and UI scale); none on the desktop.
   std::function<void()> platform_controls;

@@ -272,8 +272,8 @@ TEST(ComparePanel, SweepsTheSceneOnScreenInTheBackgroundAndCancels) {
   ComparePanel panel;
   panel.points = 3;
   panel.duration = 0.5f;
-  panel.methods[static_cast<int>(Method::RK4)] = true;
-  panel.methods[static_cast<int>(Method::Euler)] = true;
+  panel.methods.set(Method::RK4, true);
+  panel.methods.set(Method::Euler, true);
   const SweepSettings s = panel.settings(session);
   EXPECT_EQ(s.methods.size(), 2u);
   EXPECT_DOUBLE_EQ(s.h_max, 2 * session.primary().sim.settings().dt);
@@ -287,7 +287,7 @@ TEST(ComparePanel, SweepsTheSceneOnScreenInTheBackgroundAndCancels) {
   // A long sweep, cancelled: it stops, keeping what it had.
   panel.points = 10;
   panel.duration = 5.0f;
-  for (bool& m : panel.methods) m = true;
+  for (const MethodInfo& m : methods()) panel.methods.set(m.id, true);
   panel.start(session);
   std::this_thread::sleep_for(std::chrono::milliseconds(20));
   panel.sweep.cancel();

@@ -40,7 +40,7 @@ TEST(Sweep, OnTheSpringOrdersAndStabilityLimitsAreThoseOfNumericsMd) {
     const MethodInfo& info = method_info(m.method);
     EXPECT_NEAR(m.order, info.order, 0.2) << info.name << " (" << m.fitted_points << " points)";
     if (std::isnan(m.theoretical_stable_h)) {
-      EXPECT_TRUE(info.adaptive);
+      EXPECT_TRUE(info.adaptive());
     } else if (m.theoretical_stable_h == 0.0 || std::isinf(m.theoretical_stable_h)) {
       EXPECT_EQ(m.measured_stable_h, m.theoretical_stable_h) << info.name;
     } else {

@@ -21,6 +21,7 @@
 #include "springlab/forces.hpp"
 #include "springlab/model.hpp"
 #include "springlab/state.hpp"
+#include "springlab/tableau.hpp"
 
 namespace springlab {
 
@@ -72,7 +73,7 @@ struct Workspace {
 
   Counters counters;
   SpringForces spring_forces;
-  std::array<Points, 7> kx, kv;  // Runge-Kutta stage derivatives (dx/dt, dv/dt)
+  std::vector<Points> kx, kv;    // Runge-Kutta stage derivatives (dx/dt, dv/dt), one a stage
   Points tx, tv, ux, uv;         // stage and trial states
 
   // Verlet: the previous positions and a(x) at the current positions, valid while `verlet_ready`.
@@ -117,6 +118,24 @@ struct StepFailure : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// How a method steps, which decides how its stability is found, drawn and watched.
+enum class MethodFamily {
+  RungeKutta,   // explicit Runge-Kutta: its tableau gives R(z); a mode is stable while |R(h lambda)| <= 1
+  Partitioned,  // x and v in turn (no R(z)): a closed form per damped mode, the oscillator plane
+  Implicit,     // solves for the new state: A-stable, |R(z)| <= 1 on the whole left half plane
+  Adaptive,     // chooses its own steps: no fixed-step limit
+};
+
+// The largest stable h on one damped mode x'' = -kappa x - gamma x', in closed form.
+using ModeLimit = double (*)(double gamma, double kappa, double verlet_damping);
+
+// A partitioned method whose modes are stable exactly while a h^2 kappa + b h gamma <= c: the
+// scene's limit is where a h^2 K^ + b h C^ first reaches c I (stability.cpp, definite_limit).
+struct DefiniteForm {
+  double a, b, c;
+};
+using DefiniteRule = DefiniteForm (*)(double verlet_damping);
+
 struct MethodInfo {
   Method id;
   const char* name;         // as typed on the command line
@@ -127,9 +146,28 @@ struct MethodInfo {
   // infinity = always, NaN = not a fixed-step method (the step size is controlled).
   double undamped_limit;
   const char* stability;  // one line: why, for the stability gauge
-  bool adaptive;
-  bool implicit;
+  MethodFamily family;
   StepFunction step;
+  // Runge-Kutta and implicit rows: the tableau (R(z) in tableau.hpp, the region chart's edge).
+  const Tableau* tableau = nullptr;
+  // The mode's limit in closed form where there is one (every partitioned row; for a
+  // Runge-Kutta row a shortcut the contract test holds to R(z)); otherwise from R(z).
+  ModeLimit mode_limit = nullptr;
+  // Partitioned rows: the definite form, if the limit is one; otherwise the least over the
+  // scene's numerical range, the damping seen as C^ + damping_shift h K^ (modified Euler: 1/2).
+  DefiniteRule definite = nullptr;
+  double damping_shift = 0.0;
+  // Its mode limit is least at a corner of any box of (gamma, kappa) (monotone closed forms):
+  // the quick bound takes the corners, exact; otherwise a grid, with a margin.
+  bool corner_bound = false;
+  // The energy audit watches it (simulation.cpp, audited()): not where the divergence test
+  // sees instability at once (symplectic Euler, Verlet) nor the adaptive ones.
+  bool audited = false;
+
+  bool adaptive() const { return family == MethodFamily::Adaptive; }
+  bool implicit() const { return family == MethodFamily::Implicit; }
+  // Never stable without damping, so damping can buy a limit.
+  bool damping_helps() const { return undamped_limit == 0.0; }
 };
 
 std::span<const MethodInfo> methods();

@@ -123,8 +123,7 @@ void Simulation::reset() {
 // steps. A held particle is moved by the user, not the method: the audit waits for its release.
 bool Simulation::audited() const {
   const Method m = settings_.method;
-  return settings_.audit_fraction > 0.0 && !method_info(m).adaptive && m != Method::SymplecticEuler &&
-         m != Method::Verlet && has_stiffness_ && grabbed_ < 0;
+  return settings_.audit_fraction > 0.0 && method_info(m).audited && has_stiffness_ && grabbed_ < 0;
 }
 
 void Simulation::audit_changed() {

@@ -180,7 +180,7 @@ LessonClaim read_claim(ObjectReader& r, const LessonStep& step, const Scene& sce
       const json* raw = r.raw("orders");
       for (const auto& [method, value] : raw->items()) {
         const auto m = find_method(method);
-        if (!m || method_info(*m).adaptive)
+        if (!m || method_info(*m).adaptive())
           orders.fail(method.c_str(), "must be a fixed-step method (" + method_names() + ")");
         c.orders[method] = orders.number(method.c_str(), {0.5, 8.0});
       }

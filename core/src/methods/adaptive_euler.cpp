@@ -21,6 +21,7 @@ void adaptive_euler(const Model& model, const State& in, State& out, double h,
                     const StepSettings& settings, Workspace& ws) {
   out.x = in.x;
   out.v = in.v;
+  if (ws.kv.size() < 2) ws.kv.resize(2);
   Points& a0 = ws.kv[0];
   Points& a1 = ws.kv[1];
   double T = adaptive::first_try(ws, h);

@@ -5,14 +5,11 @@
 
 namespace springlab::steps {
 
-namespace {
-constexpr rk::Tableau kMidpoint = {2, {{0}, {0.5}}, {0.0, 1.0}};
-}
-
 void midpoint(const Model& model, const State& in, State& out, double h, const StepSettings&,
               Workspace& ws) {
-  rk::stages(model, in.x, in.v, h, kMidpoint, ws);
-  rk::combine(in.x, in.v, h, kMidpoint.b, kMidpoint.stages, ws, out.x, out.v);
+  const Tableau& tableau = *method_info(Method::Midpoint).tableau;  // the row's own (table.cpp)
+  rk::stages(model, in.x, in.v, h, tableau, ws);
+  rk::combine(in.x, in.v, h, tableau.b, ws, out.x, out.v);
   out.t = in.t + h;
 }
 

@@ -6,16 +6,11 @@
 
 namespace springlab::steps {
 
-namespace {
-constexpr rk::Tableau kRK4 = {4,
-                              {{0}, {0.5}, {0.0, 0.5}, {0.0, 0.0, 1.0}},
-                              {1.0 / 6.0, 1.0 / 3.0, 1.0 / 3.0, 1.0 / 6.0}};
-}
-
 void rk4(const Model& model, const State& in, State& out, double h, const StepSettings&,
          Workspace& ws) {
-  rk::stages(model, in.x, in.v, h, kRK4, ws);
-  rk::combine(in.x, in.v, h, kRK4.b, kRK4.stages, ws, out.x, out.v);
+  const Tableau& tableau = *method_info(Method::RK4).tableau;  // the row's own (table.cpp)
+  rk::stages(model, in.x, in.v, h, tableau, ws);
+  rk::combine(in.x, in.v, h, tableau.b, ws, out.x, out.v);
   out.t = in.t + h;
 }
 

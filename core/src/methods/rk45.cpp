@@ -15,8 +15,7 @@ namespace springlab::steps {
 
 namespace {
 
-constexpr rk::Tableau kDormandPrince = {
-    7,
+const Tableau kDormandPrince(
     {{0},
      {1.0 / 5.0},
      {3.0 / 40.0, 9.0 / 40.0},
@@ -24,7 +23,7 @@ constexpr rk::Tableau kDormandPrince = {
      {19372.0 / 6561.0, -25360.0 / 2187.0, 64448.0 / 6561.0, -212.0 / 729.0},
      {9017.0 / 3168.0, -355.0 / 33.0, 46732.0 / 5247.0, 49.0 / 176.0, -5103.0 / 18656.0},
      {35.0 / 384.0, 0.0, 500.0 / 1113.0, 125.0 / 192.0, -2187.0 / 6784.0, 11.0 / 84.0}},
-    {35.0 / 384.0, 0.0, 500.0 / 1113.0, 125.0 / 192.0, -2187.0 / 6784.0, 11.0 / 84.0, 0.0}};
+    {35.0 / 384.0, 0.0, 500.0 / 1113.0, 125.0 / 192.0, -2187.0 / 6784.0, 11.0 / 84.0, 0.0});
 
 // Fifth-order weights minus the embedded fourth-order ones.
 constexpr double kErrorWeights[7] = {71.0 / 57600.0,      0.0,         -71.0 / 16695.0,
@@ -69,7 +68,7 @@ void rk45(const Model& model, const State& in, State& out, double h, const StepS
     const bool last = T >= remaining * (1.0 - 1e-12);
     const double step = last ? remaining : T;
     rk::stages(model, out.x, out.v, step, kDormandPrince, ws, first_known);
-    rk::combine(out.x, out.v, step, kDormandPrince.b, 7, ws, ws.ux, ws.uv);
+    rk::combine(out.x, out.v, step, kDormandPrince.b, ws, ws.ux, ws.uv);
     const double err = error_norm(model, out.x, out.v, ws.ux, ws.uv, step, ws, settings.tolerance);
     if (!(err <= 1.0)) {  // also rejects NaN
       ++ws.counters.rejected;

@@ -4,6 +4,10 @@ namespace springlab::rk {
 
 void stages(const Model& model, const Points& x, const Points& v, double h, const Tableau& tableau,
             Workspace& ws, bool first_known) {
+  if (ws.kx.size() < static_cast<std::size_t>(tableau.stages)) {
+    ws.kx.resize(static_cast<std::size_t>(tableau.stages));
+    ws.kv.resize(static_cast<std::size_t>(tableau.stages));
+  }
   if (!first_known) {
     ws.kx[0] = v;
     accelerations(model, x, v, ws.kv[0], ws);
@@ -12,7 +16,7 @@ void stages(const Model& model, const Points& x, const Points& v, double h, cons
     ws.tx = x;
     ws.tv = v;
     for (int j = 0; j < i; ++j) {
-      const double w = h * tableau.A[i][j];
+      const double w = h * tableau.A(i, j);
       if (w == 0.0) continue;
       ws.tx += w * ws.kx[j];
       ws.tv += w * ws.kv[j];
@@ -22,11 +26,11 @@ void stages(const Model& model, const Points& x, const Points& v, double h, cons
   }
 }
 
-void combine(const Points& x, const Points& v, double h, const double* weights, int stages,
-             const Workspace& ws, Points& x1, Points& v1) {
+void combine(const Points& x, const Points& v, double h, const std::vector<double>& weights, const Workspace& ws,
+             Points& x1, Points& v1) {
   x1 = x;
   v1 = v;
-  for (int i = 0; i < stages; ++i) {
+  for (std::size_t i = 0; i < weights.size(); ++i) {
     const double w = h * weights[i];
     if (w == 0.0) continue;
     x1 += w * ws.kx[i];

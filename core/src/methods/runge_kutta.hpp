@@ -5,24 +5,17 @@
 #pragma once
 
 #include "springlab/methods.hpp"
+#include "springlab/tableau.hpp"
 
 namespace springlab::rk {
 
-inline constexpr int kMaxStages = 7;
-
-struct Tableau {
-  int stages;
-  double A[kMaxStages][kMaxStages];  // strictly lower triangular
-  double b[kMaxStages];
-};
-
-// Fills ws.kx[0..stages), ws.kv[0..stages) for the step of size h from (x, v). When
+// Fills ws.kx[0..stages), ws.kv[0..stages) (explicit tableaux; grown to the stages) for the step of size h from (x, v). When
 // `first_known` the first stage's derivative is already in ws.kx[0], ws.kv[0].
 void stages(const Model& model, const Points& x, const Points& v, double h, const Tableau& tableau,
             Workspace& ws, bool first_known = false);
 
 // (x1, v1) = (x, v) + h sum_i w[i] k_i. x1, v1 must not alias x, v.
-void combine(const Points& x, const Points& v, double h, const double* weights, int stages,
-             const Workspace& ws, Points& x1, Points& v1);
+void combine(const Points& x, const Points& v, double h, const std::vector<double>& weights, const Workspace& ws,
+             Points& x1, Points& v1);
 
 }  // namespace springlab::rk

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "methods/steps.hpp"
+#include "stability/mode_limits.hpp"
 
 namespace springlab {
 
@@ -13,42 +14,69 @@ constexpr double kNever = 0.0;
 constexpr double kAlways = std::numeric_limits<double>::infinity();
 constexpr double kControlled = std::numeric_limits<double>::quiet_NaN();
 
-// The one table. Stability limits are on the undamped oscillator (docs/numerics.md, "The undamped oscillator"); with damping the
-// limit is computed by stability.cpp from each method's own step.
+// The Runge-Kutta rows' tableaux (defined before the table that points at them).
+const Tableau kEulerTableau({{0.0}}, {1.0});
+const Tableau kMidpointTableau({{0.0}, {0.5}}, {0.0, 1.0});
+const Tableau kRK4Tableau({{0.0}, {0.5}, {0.0, 0.5}, {0.0, 0.0, 1.0}}, {1.0 / 6.0, 1.0 / 3.0, 1.0 / 3.0, 1.0 / 6.0});
+const Tableau kImplicitEulerTableau({{1.0}}, {1.0});
+
+DefiniteForm symplectic_euler_form(double) { return {1.0, 2.0, 4.0}; }
+DefiniteForm verlet_form(double d) { return {1.0, 4.0 - d, 4.0 - 2.0 * d}; }
+
+using F = MethodFamily;
+
+// The one table. Stability limits are on the undamped oscillator (docs/numerics.md, "The
+// undamped oscillator"); with damping the limit is computed by the stability analysis from what
+// each row gives: its tableau's R(z), its closed form, its definite form.
 const MethodInfo kMethods[] = {
-    {Method::Euler, "euler", "Explicit Euler", 1, "1", kNever,
-     "explicit Euler gains energy at any step without damping (growth sqrt(1 + (h w)^2) a step)",
-     false, false, steps::euler},
-    {Method::SymplecticEuler, "symplectic-euler", "Symplectic Euler", 1, "1", 2.0,
-     "symplectic Euler is stable for h w < 2; its energy oscillates but does not drift", false,
-     false, steps::symplectic_euler},
-    {Method::Midpoint, "midpoint", "Midpoint", 2, "2", kNever,
-     "midpoint gains energy at any step without damping, slowly: sqrt(1 + (h w)^4 / 4) a step",
-     false, false, steps::midpoint},
-    {Method::ModifiedEuler, "modified-euler", "Modified Euler", 1, "1", kNever,
-     "modified Euler gains energy at any step without damping (growth sqrt(1 + (h w)^2 / 2))",
-     false, false, steps::modified_euler},
-    {Method::RK4, "rk4", "RK4", 4, "4", 2.0 * std::sqrt(2.0),
-     "RK4 is stable for h w <= 2 sqrt(2) = 2.83, slightly dissipative below it", false, false,
-     steps::rk4},
-    {Method::AdaptiveEuler, "adaptive-euler", "Adaptive Euler", 1,
-     "2 per accepted step (a rejected try needs none)", kControlled,
-     "adaptive Euler controls each step's error, not its energy: undamped, it still gains energy",
-     true, false, steps::adaptive_euler},
-    {Method::RK45, "rk45", "RK45 (Dormand-Prince)", 5, "6 per accepted step (first same as last)",
-     kControlled, "RK45 chooses its own steps to meet the tolerance; stiff scenes make them tiny",
-     true, false, steps::rk45},
-    {Method::ImplicitEuler, "implicit-euler", "Implicit Euler", 1, "1 + a linear solve", kAlways,
-     "implicit Euler is stable at any step; it damps: amplification 1 / sqrt(1 + (h w)^2)", false,
-     true, steps::implicit_euler},
-    {Method::Verlet, "verlet", "Verlet", 2, "1", 2.0,
-     "Verlet is stable for h w < 2; its energy oscillates but does not drift", false, false,
-     steps::verlet},
+    {.id = Method::Euler, .name = "euler", .label = "Explicit Euler", .order = 1, .evaluations = "1",
+     .undamped_limit = kNever,
+     .stability = "explicit Euler gains energy at any step without damping (growth sqrt(1 + (h w)^2) a step)",
+     .family = F::RungeKutta, .step = steps::euler, .tableau = &kEulerTableau, .mode_limit = modes::euler,
+     .corner_bound = true, .audited = true},
+    {.id = Method::SymplecticEuler, .name = "symplectic-euler", .label = "Symplectic Euler", .order = 1,
+     .evaluations = "1", .undamped_limit = 2.0,
+     .stability = "symplectic Euler is stable for h w < 2; its energy oscillates but does not drift",
+     .family = F::Partitioned, .step = steps::symplectic_euler, .mode_limit = modes::symplectic_euler,
+     .definite = symplectic_euler_form, .corner_bound = true},
+    {.id = Method::Midpoint, .name = "midpoint", .label = "Midpoint", .order = 2, .evaluations = "2",
+     .undamped_limit = kNever,
+     .stability = "midpoint gains energy at any step without damping, slowly: sqrt(1 + (h w)^4 / 4) a step",
+     .family = F::RungeKutta, .step = steps::midpoint, .tableau = &kMidpointTableau, .audited = true},
+    {.id = Method::ModifiedEuler, .name = "modified-euler", .label = "Modified Euler", .order = 1,
+     .evaluations = "1", .undamped_limit = kNever,
+     .stability = "modified Euler gains energy at any step without damping (growth sqrt(1 + (h w)^2 / 2))",
+     .family = F::Partitioned, .step = steps::modified_euler, .mode_limit = modes::modified_euler,
+     .damping_shift = 0.5, .corner_bound = true, .audited = true},
+    {.id = Method::RK4, .name = "rk4", .label = "RK4", .order = 4, .evaluations = "4",
+     .undamped_limit = 2.0 * std::sqrt(2.0),
+     .stability = "RK4 is stable for h w <= 2 sqrt(2) = 2.83, slightly dissipative below it",
+     .family = F::RungeKutta, .step = steps::rk4, .tableau = &kRK4Tableau, .audited = true},
+    {.id = Method::AdaptiveEuler, .name = "adaptive-euler", .label = "Adaptive Euler", .order = 1,
+     .evaluations = "2 per accepted step (a rejected try needs none)", .undamped_limit = kControlled,
+     .stability = "adaptive Euler controls each step's error, not its energy: undamped, it still gains energy",
+     .family = F::Adaptive, .step = steps::adaptive_euler},
+    {.id = Method::RK45, .name = "rk45", .label = "RK45 (Dormand-Prince)", .order = 5,
+     .evaluations = "6 per accepted step (first same as last)", .undamped_limit = kControlled,
+     .stability = "RK45 chooses its own steps to meet the tolerance; stiff scenes make them tiny",
+     .family = F::Adaptive, .step = steps::rk45},
+    {.id = Method::ImplicitEuler, .name = "implicit-euler", .label = "Implicit Euler", .order = 1,
+     .evaluations = "1 + a linear solve", .undamped_limit = kAlways,
+     .stability = "implicit Euler is stable at any step; it damps: amplification 1 / sqrt(1 + (h w)^2)",
+     .family = F::Implicit, .step = steps::implicit_euler, .tableau = &kImplicitEulerTableau, .audited = true},
+    {.id = Method::Verlet, .name = "verlet", .label = "Verlet", .order = 2, .evaluations = "1",
+     .undamped_limit = 2.0,
+     .stability = "Verlet is stable for h w < 2; its energy oscillates but does not drift",
+     .family = F::Partitioned, .step = steps::verlet, .mode_limit = modes::verlet, .definite = verlet_form,
+     .corner_bound = true},
 };
 
 }  // namespace
 
 std::span<const MethodInfo> methods() { return kMethods; }
+
+// Rows in the enum's order: a method's row is found by its id.
+static_assert(std::size(kMethods) == static_cast<std::size_t>(Method::Verlet) + 1);
 
 const MethodInfo& method_info(Method method) { return kMethods[static_cast<int>(method)]; }
 
@@ -75,7 +103,7 @@ void step(Method method, const Model& model, const State& in, State& out, double
   ws.step_probe.reset();
   ws.input_power.reset();
   info.step(model, in, out, h, settings, ws);
-  if (!info.adaptive) ++ws.counters.accepted;
+  if (!info.adaptive()) ++ws.counters.accepted;
 }
 
 }  // namespace springlab

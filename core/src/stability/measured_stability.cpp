@@ -147,7 +147,7 @@ MeasuredLimit measured_limit(Method method, const Model& model, const State& sta
                              double w_max, const StepSettings& settings, double budget) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   MeasuredLimit out;
-  if (method_info(method).adaptive) {
+  if (method_info(method).adaptive()) {
     out.h = std::numeric_limits<double>::quiet_NaN();
     return out;
   }

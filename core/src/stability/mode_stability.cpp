@@ -2,13 +2,15 @@
 // gamma = c): the largest h such that every step size up to it keeps the spectral radius of the
 // method's step at most 1. Closed forms from each method's characteristic polynomial, checked
 // by Jury's conditions (a monic quadratic mu^2 + a1 mu + a0 has both roots in the unit disc
-// exactly when |a0| <= 1 and |a1| <= 1 + a0); the Runge-Kutta methods of order 2 and 4 by the
-// first positive root of |R(h lambda)|^2 - 1.
+// exactly when |a0| <= 1 and |a1| <= 1 + a0); the Runge-Kutta methods by the first positive root of
+// |R(h lambda)|^2 - 1, R their tableau's stability polynomial (tableau.hpp).
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <vector>
 
 #include "springlab/stability.hpp"
+#include "stability/mode_limits.hpp"
 #include "stability/sqrt_of_real.hpp"
 
 namespace springlab {
@@ -18,27 +20,25 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 using Complex = std::complex<double>;
 
-// |R(h lambda)|^2 - 1 = sum_{m >= 1} c_m h^m for R(z) = sum_{j <= p} z^j / j!, with
-// c_m = sum_{j + k = m} Re(lambda^j conj(lambda)^k) / (j! k!). Divided by h it starts at
+// |R(h lambda)|^2 - 1 = sum_{m >= 1} c_m h^m for R(z) = sum_{j <= p} gamma_j z^j, with
+// c_m = sum_{j + k = m} gamma_j gamma_k Re(lambda^j conj(lambda)^k). Divided by h it starts at
 // c_1 = 2 Re(lambda), so its sign near h = 0 is not lost to rounding.
 struct GrowthPolynomial {
-  double c[9] = {};  // c[1] .. c[2p]
+  std::vector<double> c;  // c[1] .. c[2p]
   int degree = 0;
-  GrowthPolynomial(int p, Complex lambda) {
+  GrowthPolynomial(const std::vector<double>& gamma, Complex lambda) {
+    const int p = static_cast<int>(gamma.size()) - 1;
     degree = 2 * p;
-    Complex powers[5] = {1.0};
-    double factorial[5] = {1.0};
-    for (int j = 1; j <= p; ++j) {
-      powers[j] = powers[j - 1] * lambda;
-      factorial[j] = factorial[j - 1] * j;
-    }
-    // A coefficient that is a sum of terms cancelling to rounding (on the imaginary axis the
+    c.assign(static_cast<std::size_t>(degree + 1), 0.0);
+    std::vector<Complex> powers{1.0};
+    for (int j = 1; j <= p; ++j) powers.push_back(powers.back() * lambda);
+    // A coefficient that is a sum of terms cancelling to rounding (on the imaginary axis RK4's
     // first five do: R is an approximation of e^z, |e^(iy)| = 1) is exactly zero.
-    double gross[9] = {};
+    std::vector<double> gross(c.size(), 0.0);
     for (int j = 0; j <= p; ++j)
       for (int k = 0; k <= p; ++k)
         if (j + k > 0) {
-          const double term = (powers[j] * std::conj(powers[k])).real() / (factorial[j] * factorial[k]);
+          const double term = gamma[j] * gamma[k] * (powers[j] * std::conj(powers[k])).real();
           c[j + k] += term;
           gross[j + k] += std::abs(term);
         }
@@ -64,11 +64,15 @@ struct GrowthPolynomial {
 };
 
 // The first h > 0 at which |R(h lambda)| exceeds 1 (infinity if none up to 100 / |lambda|).
-double runge_kutta_exit(int p, Complex lambda) {
+double runge_kutta_exit(const std::vector<double>& gamma, Complex lambda) {
   const double size = std::abs(lambda);
   if (!(size > 0.0)) return kInf;
   if (lambda.real() > 0.0) return 0.0;
-  const GrowthPolynomial poly(p, lambda);
+  if (gamma.size() == 2) {
+    // R(z) = 1 + gamma_1 z: |1 + h gamma_1 lambda| <= 1 up to h = -2 Re(lambda) / (gamma_1 |lambda|^2).
+    return lambda.real() >= 0.0 ? 0.0 : -2.0 * lambda.real() / (gamma[1] * std::norm(lambda));
+  }
+  const GrowthPolynomial poly(gamma, lambda);
   double lo = 1e-12 / size;
   if (poly.grows(lo)) return 0.0;
   double hi = 0.0;
@@ -96,64 +100,61 @@ void mode_eigenvalues(double gamma, double kappa, Complex& first, Complex& secon
 
 }  // namespace
 
+namespace modes {
+
+double euler(double gamma, double kappa, double) {
+  // mu = 1 + h lambda: mu^2 - (2 - h gamma) mu + 1 - h gamma + h^2 kappa. Jury: a0 <= 1 is
+  // h <= gamma / kappa; 1 - a1 + a0 >= 0 is h^2 kappa - 2 h gamma + 4 >= 0, which binds only
+  // for an overdamped mode (real lambda): h <= 2 / |lambda|, the larger |lambda|.
+  if (kappa == 0.0) return 2.0 / gamma;
+  const double disc = gamma * gamma - 4.0 * kappa;
+  if (disc < 0.0) return gamma / kappa;
+  return 4.0 / (gamma + std::sqrt(disc));
+}
+
+double modified_euler(double gamma, double kappa, double) {
+  // With s = 1 - mu: s^2 - s (h gamma + h^2 kappa / 2) + h^2 kappa = 0 (v1 = v + h a,
+  // x1 = x + h (v + v1) / 2). Jury: a0 <= 1 is h kappa / 2 <= gamma; 1 - a1 + a0 >= 0 is
+  // h gamma <= 2.
+  if (kappa == 0.0) return 2.0 / gamma;
+  if (gamma == 0.0) return 0.0;
+  return std::min(2.0 * gamma / kappa, 2.0 / gamma);
+}
+
+double symplectic_euler(double gamma, double kappa, double) {
+  // mu^2 - (2 - h gamma - h^2 kappa) mu + 1 - h gamma: a complex pair has |mu|^2 = 1 - h gamma
+  // <= 1, so the roots leave the disc through -1, where 4 - 2 h gamma - h^2 kappa = 0.
+  return 4.0 / (gamma + std::sqrt(gamma * gamma + 4.0 * kappa));
+}
+
+double verlet(double gamma, double kappa, double d) {
+  // Position Verlet as verlet.cpp runs it (velocities predicted for the damping), a cubic in
+  // mu whose roots leave the disc through -1 (checked against the step in the tests), where
+  //   h^2 kappa + (4 - d) h gamma - (4 - 2 d) = 0.
+  const double b = (4.0 - d) * gamma, c = 4.0 - 2.0 * d;
+  return 2.0 * c / (b + std::sqrt(b * b + 4.0 * kappa * c));
+}
+
+}  // namespace modes
+
 double mode_limit(Method method, double gamma, double kappa, double verlet_damping) {
-  if (method_info(method).adaptive) return std::numeric_limits<double>::quiet_NaN();
+  const MethodInfo& info = method_info(method);
+  if (info.adaptive()) return std::numeric_limits<double>::quiet_NaN();
   gamma = std::max(gamma, 0.0);
   kappa = std::max(kappa, 0.0);
   if (gamma == 0.0 && kappa == 0.0) return kInf;  // a free motion: nothing to oscillate
-  switch (method) {
-    case Method::Euler: {
-      // mu = 1 + h lambda: mu^2 - (2 - h gamma) mu + 1 - h gamma + h^2 kappa. Jury: a0 <= 1 is
-      // h <= gamma / kappa; 1 - a1 + a0 >= 0 is h^2 kappa - 2 h gamma + 4 >= 0, which binds only
-      // for an overdamped mode (real lambda): h <= 2 / |lambda|, the larger |lambda|.
-      const double disc = gamma * gamma - 4.0 * kappa;
-      if (disc < 0.0) return gamma / kappa;
-      return 4.0 / (gamma + std::sqrt(disc));
-    }
-    case Method::ModifiedEuler: {
-      // With s = 1 - mu: s^2 - s (h gamma + h^2 kappa / 2) + h^2 kappa = 0 (v1 = v + h a,
-      // x1 = x + h (v + v1) / 2). Jury: a0 <= 1 is h kappa / 2 <= gamma; 1 - a1 + a0 >= 0 is
-      // h gamma <= 2.
-      if (kappa == 0.0) return 2.0 / gamma;
-      if (gamma == 0.0) return 0.0;
-      return std::min(2.0 * gamma / kappa, 2.0 / gamma);
-    }
-    case Method::SymplecticEuler:
-      // mu^2 - (2 - h gamma - h^2 kappa) mu + 1 - h gamma: a complex pair has |mu|^2 = 1 - h gamma
-      // <= 1, so the roots leave the disc through -1, where 4 - 2 h gamma - h^2 kappa = 0.
-      return 4.0 / (gamma + std::sqrt(gamma * gamma + 4.0 * kappa));
-    case Method::Verlet: {
-      // Position Verlet as verlet.cpp runs it (velocities predicted for the damping), a cubic in
-      // mu whose roots leave the disc through -1 (checked against the step in the tests), where
-      //   h^2 kappa + (4 - d) h gamma - (4 - 2 d) = 0.
-      const double d = verlet_damping, b = (4.0 - d) * gamma, c = 4.0 - 2.0 * d;
-      return 2.0 * c / (b + std::sqrt(b * b + 4.0 * kappa * c));
-    }
-    case Method::Midpoint:
-    case Method::RK4: {
-      const int p = method == Method::Midpoint ? 2 : 4;
-      Complex first, second;
-      mode_eigenvalues(gamma, kappa, first, second);
-      return std::min(runge_kutta_exit(p, first), runge_kutta_exit(p, second));
-    }
-    case Method::ImplicitEuler:
-      return kInf;
-    default:
-      return std::numeric_limits<double>::quiet_NaN();
-  }
+  if (info.mode_limit) return info.mode_limit(gamma, kappa, verlet_damping);
+  if (info.implicit()) return kInf;
+  Complex first, second;
+  mode_eigenvalues(gamma, kappa, first, second);
+  return std::min(runge_kutta_limit(method, first), runge_kutta_limit(method, second));
 }
 
 double runge_kutta_limit(Method method, std::complex<double> lambda) {
-  switch (method) {
-    case Method::Euler: {
-      const double size2 = std::norm(lambda);
-      if (!(size2 > 0.0)) return kInf;
-      return lambda.real() >= 0.0 ? 0.0 : -2.0 * lambda.real() / size2;
-    }
-    case Method::Midpoint: return runge_kutta_exit(2, lambda);
-    case Method::RK4: return runge_kutta_exit(4, lambda);
-    default: return std::numeric_limits<double>::quiet_NaN();
-  }
+  const MethodInfo& info = method_info(method);
+  if (info.implicit()) return kInf;
+  if (info.family != MethodFamily::RungeKutta) return std::numeric_limits<double>::quiet_NaN();
+  return runge_kutta_exit(info.tableau->stability_polynomial(), lambda);
 }
 
 double stable_step(Method method, double w, double c, double verlet_damping) {

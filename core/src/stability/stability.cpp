@@ -185,8 +185,9 @@ StabilityLimit range_limit(Method method, const Linearised& lin, RangeTrace& tra
   const auto limit = [&](const Sample& s) { return mode_limit(method, s.gamma, s.kappa); };
   const Sample s = trace.least(limit);
   out.h = limit(s);
-  // Modified Euler is explicit Euler on the damping C^ + (h / 2) K^.
-  const double extra = method == Method::ModifiedEuler && std::isfinite(out.h) ? 0.5 * out.h : 0.0;
+  // A method stable as explicit Euler on the damping C^ + shift h K^ (modified Euler: shift 1/2).
+  const double shift = method_info(method).damping_shift;
+  const double extra = shift > 0.0 && std::isfinite(out.h) ? shift * out.h : 0.0;
   const double gamma = s.gamma + extra * s.kappa;
   // The root that sets the limit: either of a complex pair (conjugates), the larger of a real
   // pair (every method here is limited by |lambda| on the negative real axis).
@@ -265,9 +266,7 @@ std::string describe(const StabilityLimit& limit) {
   if (std::isnan(limit.h)) return "the method chooses its own step sizes";
   if (std::isinf(limit.h)) return "stable at any step";
   if (limit.h == 0.0) {
-    const bool damping_helps = limit.method == Method::Euler || limit.method == Method::ModifiedEuler ||
-                               limit.method == Method::Midpoint;
-    return damping_helps ? "unstable at any step (not enough damping)" : "unstable at any step";
+    return method_info(limit.method).damping_helps() ? "unstable at any step (not enough damping)" : "unstable at any step";
   }
   s << (limit.exact ? "stable up to h = " : "stable at least up to h = ") << limit.h << " s";
   return s.str();
@@ -288,7 +287,7 @@ void StabilityAnalysis::analyse(const Model& model, const State& state, int dens
   for (const MethodInfo& m : methods()) {
     StabilityLimit limit;
     limit.method = m.id;
-    limit.h = m.adaptive ? kNaN : m.implicit ? kInf : 0.0;
+    limit.h = m.adaptive() ? kNaN : m.implicit() ? kInf : 0.0;
     limits_.push_back(limit);
   }
   const State rest = equilibrium(model, state);
@@ -307,7 +306,7 @@ void StabilityAnalysis::analyse(const Model& model, const State& state, int dens
                                             : "no spring with stiffness holds a free particle";
     const double decay = lin.damping_bound();
     for (StabilityLimit& limit : limits_)
-      if (!method_info(limit.method).adaptive && !method_info(limit.method).implicit)
+      if (!method_info(limit.method).adaptive() && !method_info(limit.method).implicit())
         limit.h = mode_limit(limit.method, decay, 0.0, model.verlet_damping);
     if (decay > 0.0) modes_.push_back({decay, 0.0});
     growth_modes_ = modes_;
@@ -323,10 +322,15 @@ void StabilityAnalysis::analyse(const Model& model, const State& state, int dens
   w_max_ = std::sqrt(std::max(stiffest.kappa, 0.0));
 
   const auto set = [&](StabilityLimit limit) { limits_[static_cast<int>(limit.method)] = std::move(limit); };
-  set(definite_limit(Method::SymplecticEuler, 1.0, 2.0, 4.0, lin, stiffest));
-  const double d = model.verlet_damping;
-  set(definite_limit(Method::Verlet, 1.0, 4.0 - d, 4.0 - 2.0 * d, lin, stiffest));
-  set(range_limit(Method::ModifiedEuler, lin, trace));
+  for (const MethodInfo& m : methods()) {
+    if (m.family != MethodFamily::Partitioned) continue;
+    if (m.definite) {
+      const DefiniteForm f = m.definite(model.verlet_damping);
+      set(definite_limit(m.id, f.a, f.b, f.c, lin, stiffest));
+    } else {
+      set(range_limit(m.id, lin, trace));
+    }
+  }
 
   if (dense_) {
     const Eigen::MatrixXd K = lin.dense_stiffness(), C = lin.dense_damping();
@@ -357,7 +361,9 @@ void StabilityAnalysis::analyse(const Model& model, const State& state, int dens
         growth_modes_.push_back({lin.damping(y), lin.stiffness(y)});
       }
     }
-    for (Method m : {Method::Euler, Method::Midpoint, Method::RK4}) {
+    for (const MethodInfo& info : methods()) {
+      if (info.family != MethodFamily::RungeKutta) continue;
+      const Method m = info.id;
       StabilityLimit limit;
       limit.method = m;
       limit.h = kInf;
@@ -376,7 +382,8 @@ void StabilityAnalysis::analyse(const Model& model, const State& state, int dens
       set(std::move(limit));
     }
   } else {
-    for (Method m : {Method::Euler, Method::Midpoint, Method::RK4}) set(range_limit(m, lin, trace));
+    for (const MethodInfo& m : methods())
+      if (m.family == MethodFamily::RungeKutta) set(range_limit(m.id, lin, trace));
     for (const Sample& s : trace.samples()) modes_.push_back({s.gamma, s.kappa});
     growth_modes_ = modes_;
   }
@@ -413,8 +420,8 @@ StabilityLimit quick_limit(Method method, const Model& model, const State& state
   limit.method = method;
   limit.exact = false;
   const MethodInfo& info = method_info(method);
-  if (info.adaptive || info.implicit) {
-    limit.h = info.adaptive ? kNaN : kInf;
+  if (info.adaptive() || info.implicit()) {
+    limit.h = info.adaptive() ? kNaN : kInf;
     return limit;
   }
   const Linearised lin(model, state);
@@ -425,21 +432,15 @@ StabilityLimit quick_limit(Method method, const Model& model, const State& state
   const double d = model.verlet_damping;
   limit.h = kInf;
   const auto at = [&](double gamma, double k) { limit.h = std::min(limit.h, mode_limit(method, gamma, k, d)); };
-  switch (method) {
-    case Method::Euler:
-    case Method::ModifiedEuler:
-    case Method::SymplecticEuler:
-    case Method::Verlet:
-      for (double g : {gamma_lo, gamma_hi})
-        for (double k : {0.0, kappa}) at(g, k);
-      break;
-    default: {
-      constexpr int kGrid = 48;
-      for (int i = 0; i <= kGrid; ++i)
-        for (int j = 0; j <= kGrid; ++j)
-          at(gamma_lo + (gamma_hi - gamma_lo) * i / kGrid, kappa * std::pow(static_cast<double>(j) / kGrid, 2.0));
-      limit.h *= 0.9;
-    }
+  if (info.corner_bound) {
+    for (double g : {gamma_lo, gamma_hi})
+      for (double k : {0.0, kappa}) at(g, k);
+  } else {
+    constexpr int kGrid = 48;
+    for (int i = 0; i <= kGrid; ++i)
+      for (int j = 0; j <= kGrid; ++j)
+        at(gamma_lo + (gamma_hi - gamma_lo) * i / kGrid, kappa * std::pow(static_cast<double>(j) / kGrid, 2.0));
+    limit.h *= 0.9;
   }
   return limit;
 }

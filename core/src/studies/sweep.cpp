@@ -66,7 +66,7 @@ SweepRun run_one(const Model& model, const State& initial, Method method, double
     s.audit_stops = false;
     // An adaptive method without a tolerance runs at fixed steps: every try accepted. (Not an
     // infinite one: times a zero coordinate in RK45's error norm it would make NaN.)
-    if (method_info(method).adaptive) s.step.tolerance = std::isnan(tolerance) ? 1e300 : tolerance;
+    if (method_info(method).adaptive()) s.step.tolerance = std::isnan(tolerance) ? 1e300 : tolerance;
     Simulation sim(model, initial, s);
     if (analysis) sim.set_stability(analysis);
     double error = 0.0;
@@ -88,7 +88,7 @@ SweepRun run_one(const Model& model, const State& initial, Method method, double
     run.rise = sim.instability() ? sim.instability()->audit.rise : 0.0;
     run.unstable = diverged || sim.instability().has_value();
     const double internal = static_cast<double>(std::max<std::int64_t>(1, sim.counters().accepted));
-    run.mean_step = method_info(method).adaptive ? sim.state().t / internal : h / s.substeps;
+    run.mean_step = method_info(method).adaptive() ? sim.state().t / internal : h / s.substeps;
     if (diverged) break;  // a diverging run is not worth timing again
   }
   return run;
@@ -244,7 +244,7 @@ struct SweepPlan {
       // Every method at fixed steps (the order), and the adaptive ones over their tolerances too
       // (what they cost for the accuracy they choose).
       for (int d : divisors) jobs.push_back({m, d, std::numeric_limits<double>::quiet_NaN()});
-      if (!method_info(m).adaptive) continue;
+      if (!method_info(m).adaptive()) continue;
       for (int k = 0; k < settings.points; ++k) {
         const double f = settings.points > 1 ? static_cast<double>(k) / (settings.points - 1) : 0.0;
         jobs.push_back({m, 1, settings.tol_max * std::pow(settings.tol_min / settings.tol_max, f)});

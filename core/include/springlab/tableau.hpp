@@ -1,0 +1,33 @@
+// A Runge-Kutta method as its Butcher tableau, and what follows from it alone: its stability
+// function R(z), the factor one step multiplies y' = lambda y by, z = h lambda.
+//   stage i:  Y_i = y + h sum_j a_ij F(Y_j),   y1 = y + h sum_i b_i F(Y_i)
+//   R(z) = 1 + z b^T (I - z A)^{-1} 1
+// For an explicit tableau (A strictly lower triangular) R is the polynomial
+//   R(z) = sum_{j=0}^{s} gamma_j z^j,   gamma_0 = 1,  gamma_j = b^T A^{j-1} 1,
+// whose first p + 1 coefficients are 1 / j! for a method of order p (docs/numerics.md,
+// "Stability functions").
+#pragma once
+
+#include <complex>
+#include <vector>
+
+namespace springlab {
+
+struct Tableau {
+  int stages = 0;
+  std::vector<double> a;  // stages x stages, row by row
+  std::vector<double> b;  // stages
+
+  Tableau() = default;
+  Tableau(std::vector<std::vector<double>> rows, std::vector<double> weights);
+
+  double A(int i, int j) const { return a[static_cast<std::size_t>(i * stages + j)]; }
+  // Every stage from the ones before it only.
+  bool is_explicit() const;
+  // R(z), by solving (I - z A) k = 1.
+  std::complex<double> stability_function(std::complex<double> z) const;
+  // gamma_0 .. gamma_s (explicit tableaux only).
+  std::vector<double> stability_polynomial() const;
+};
+
+}  // namespace springlab

@@ -1,0 +1,52 @@
+#include "springlab/tableau.hpp"
+
+#include <Eigen/Dense>
+#include <stdexcept>
+
+namespace springlab {
+
+Tableau::Tableau(std::vector<std::vector<double>> rows, std::vector<double> weights)
+    : stages(static_cast<int>(weights.size())), b(std::move(weights)) {
+  if (rows.size() != b.size()) throw std::invalid_argument("a tableau needs as many rows of A as weights b");
+  a.assign(static_cast<std::size_t>(stages * stages), 0.0);
+  for (int i = 0; i < stages; ++i) {
+    if (rows[i].size() > b.size()) throw std::invalid_argument("a row of A is longer than b");
+    for (std::size_t j = 0; j < rows[i].size(); ++j) a[static_cast<std::size_t>(i * stages) + j] = rows[i][j];
+  }
+}
+
+bool Tableau::is_explicit() const {
+  for (int i = 0; i < stages; ++i)
+    for (int j = i; j < stages; ++j)
+      if (A(i, j) != 0.0) return false;
+  return true;
+}
+
+std::complex<double> Tableau::stability_function(std::complex<double> z) const {
+  using Matrix = Eigen::MatrixXcd;
+  Matrix m = Matrix::Identity(stages, stages);
+  for (int i = 0; i < stages; ++i)
+    for (int j = 0; j < stages; ++j) m(i, j) -= z * A(i, j);
+  const Eigen::VectorXcd k = m.partialPivLu().solve(Eigen::VectorXcd::Ones(stages));
+  std::complex<double> bk = 0.0;
+  for (int i = 0; i < stages; ++i) bk += b[static_cast<std::size_t>(i)] * k[i];
+  return 1.0 + z * bk;
+}
+
+std::vector<double> Tableau::stability_polynomial() const {
+  std::vector<double> gamma{1.0};
+  std::vector<double> power(static_cast<std::size_t>(stages), 1.0);  // A^{j-1} 1
+  for (int j = 1; j <= stages; ++j) {
+    double g = 0.0;
+    for (int i = 0; i < stages; ++i) g += b[static_cast<std::size_t>(i)] * power[static_cast<std::size_t>(i)];
+    gamma.push_back(g);
+    std::vector<double> next(static_cast<std::size_t>(stages), 0.0);
+    for (int i = 0; i < stages; ++i)
+      for (int k = 0; k < stages; ++k) next[static_cast<std::size_t>(i)] += A(i, k) * power[static_cast<std::size_t>(k)];
+    power = std::move(next);
+  }
+  while (gamma.size() > 1 && gamma.back() == 0.0) gamma.pop_back();
+  return gamma;
+}
+
+}  // namespace springlab
