@@ -82,7 +82,7 @@ void BM_ClothStep(benchmark::State& state) {
 std::vector<std::int64_t> explicit_methods() {
   std::vector<std::int64_t> ids;
   for (const MethodInfo& m : methods())
-    if (!m.implicit) ids.push_back(static_cast<std::int64_t>(m.id));
+    if (!m.implicit()) ids.push_back(static_cast<std::int64_t>(m.id));
   return ids;
 }
 

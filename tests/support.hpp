@@ -3,12 +3,31 @@
 
 #include <random>
 #include <string>
+#include <vector>
 
 #include "springlab/exact.hpp"
 #include "springlab/scene.hpp"
 #include "springlab/simulation.hpp"
 
 namespace springlab::test {
+
+// The table's rows that pass a test of their row (MethodInfo): the tests read the table, so a
+// new row is tested where its kind is, with no list to edit.
+template <typename Keep>
+std::vector<Method> methods_where(Keep keep) {
+  std::vector<Method> out;
+  for (const MethodInfo& m : methods())
+    if (keep(m)) out.push_back(m.id);
+  return out;
+}
+// Explicit with a fixed step: the rows with a finite stability limit.
+inline std::vector<Method> explicit_fixed_step() {
+  return methods_where([](const MethodInfo& m) { return !m.adaptive() && !m.implicit(); });
+}
+// Every fixed-step row, implicit included.
+inline std::vector<Method> fixed_step() {
+  return methods_where([](const MethodInfo& m) { return !m.adaptive(); });
+}
 
 inline std::string scene_path(const std::string& name) {
   return std::string(SPRINGLAB_SOURCE_DIR) + "/assets/scenes/" + name + ".json";

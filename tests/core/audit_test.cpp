@@ -213,8 +213,7 @@ Silence run_for(const Scene& scene, Method method, double h, double duration) {
 TEST(AuditSilence, EveryStableSingleSpring) {
   const double ratios[] = {0.02, 0.05, 0.1, 0.2, 0.4, 0.7, 1.0};
   const double fractions[] = {0.2, 0.5, 0.8, 0.9, 0.95, 0.98};
-  const Method fixed[] = {Method::Euler, Method::SymplecticEuler, Method::Midpoint, Method::ModifiedEuler,
-                          Method::RK4,   Method::ImplicitEuler,   Method::Verlet};
+  const std::vector<Method> fixed = test::fixed_step();
   int runs = 0;
   for (bool linear : {true, false}) {
     for (double zeta : ratios) {
@@ -249,7 +248,8 @@ TEST(AuditSilence, TheRopeAndTheClothJustInsideTheirLimits) {
     for (const auto& m : analysis.modes())
       if (m.kappa > 0.0) slowest = std::min(slowest, std::sqrt(m.kappa));
     const double duration = analysis.dense() ? 20.0 * 2.0 * M_PI / slowest : scene.duration;
-    for (Method m : {Method::Euler, Method::Midpoint, Method::ModifiedEuler, Method::RK4}) {
+    // The audited methods with a limit (the others are the divergence test's, or have none).
+    for (Method m : test::methods_where([](const MethodInfo& i) { return i.audited && !i.implicit(); })) {
       const double h = 0.9 * analysis.limit(m).h;
       const Silence s = run_for(scene, m, h, duration);
       EXPECT_TRUE(s.held) << name << ", " << method_info(m).name << " at h = " << h << " for " << duration << " s: " << s.said;

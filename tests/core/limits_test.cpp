@@ -48,8 +48,7 @@ std::vector<LimitCase> cases() {
           {"cloth", {"cloth.width=64", "cloth.height=64"}}};
 }
 
-constexpr Method kMethods[] = {Method::Euler,         Method::SymplecticEuler, Method::Midpoint,
-                               Method::ModifiedEuler, Method::RK4,             Method::Verlet};
+const std::vector<Method> kMethods = test::explicit_fixed_step();
 
 // Particle- and spring-steps a run may take (about a second here); SPRINGLAB_LIMITS_BUDGET sets
 // another (scripts/limits.sh: enough for every run's whole duration).

@@ -18,8 +18,7 @@
 namespace springlab {
 namespace {
 
-constexpr Method kFixedStep[] = {Method::Euler,         Method::SymplecticEuler, Method::Midpoint,
-                                 Method::ModifiedEuler, Method::RK4,             Method::Verlet};
+const std::vector<Method> kFixedStep = test::explicit_fixed_step();
 
 TEST(ModeLimit, MatchesTheClosedForms) {
   const double w = 10.0;
