@@ -210,13 +210,14 @@ State equilibrium(const Model& model, const State& state) {
     const Eigen::VectorXd f = balance.force(rest.x);
     if (f.lpNorm<Eigen::Infinity>() <= tolerance) break;
     bool moved = false;
-    for (int attempt = 0; attempt < 40 && factorisations < kFactorisations; ++attempt, ++factorisations) {
+    for (int attempt = 0; attempt < 40 && factorisations < kFactorisations; ++attempt) {
       const Eigen::SparseMatrix<double> A = balance.system(rest.x, mu);
       if (!analysed) {
         solver.analyzePattern(A);
         analysed = true;
       }
       solver.factorize(A);
+      ++factorisations;  // every one counts against the budget, the accepted ones too
       if (solver.info() != Eigen::Success) {
         mu = std::max(10.0 * mu, mu_floor);
         continue;
