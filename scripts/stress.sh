@@ -32,7 +32,7 @@ suppressions="$root/scripts/sanitizer-suppressions"
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:halt_on_error=1${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
 export LSAN_OPTIONS="suppressions=$suppressions/lsan.txt:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-export TSAN_OPTIONS="suppressions=$suppressions/tsan.txt:halt_on_error=1:second_deadlock_stack=1"
+export TSAN_OPTIONS="suppressions=$suppressions/tsan.txt:halt_on_error=1:second_deadlock_stack=1:ignore_noninstrumented_modules=1"
 export OMP_WAIT_POLICY=passive
 springlab="$build/springlab"
 out="$(mktemp -d)"

@@ -62,7 +62,6 @@ Threads& threads() {
   return t;
 }
 
-
 }  // namespace
 
 StabilityJob::~StabilityJob() { cancel(); }
@@ -105,9 +104,15 @@ bool StabilityJob::running() const { return shared_ && !shared_->done; }
 
 std::optional<StabilityJob::Result> StabilityJob::take() {
   if (!shared_ || !shared_->done) return std::nullopt;
-  std::lock_guard lock(shared_->mutex);
-  Result result = std::move(shared_->result);
-  shared_.reset();
+  // The last owner may be this one (the thread finished and was reaped): it must outlive the
+  // lock on its mutex. (Reset under the lock, it freed the mutex the lock then unlocked: a
+  // write into freed memory, found by ThreadSanitizer in the stress test.)
+  const std::shared_ptr<Shared> shared = std::move(shared_);
+  Result result;
+  {
+    std::lock_guard lock(shared->mutex);
+    result = std::move(shared->result);
+  }
   if (!result.analysis) return std::nullopt;  // cancelled
   return result;
 }
