@@ -340,5 +340,24 @@ TEST(Interaction, AClosedSessionLeavesNoAnalysisRunning) {
   std::printf("  shutdown joined the cancelled analysis in %.3f s\n", waited);
 }
 
+// The frame loop may take a result after its thread has finished and been joined: the job then
+// holds the last reference to what it shared with the thread, and taking it must not free that
+// while still using it (take() did, releasing a lock on a freed mutex: the heap corruption seen
+// once; scripts/stress.sh runs this test under AddressSanitizer and ThreadSanitizer, which report
+// it at once).
+TEST(StabilityJobs, AResultTakenAfterItsThreadIsJoinedIsWhole) {
+  const Scene spring = test::shipped("spring");
+  app::StabilityJob job;
+  job.start(spring.model, spring.state, 7);
+  while (job.running()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  app::StabilityJob::shutdown();  // joins the thread, and the registry lets go of its share
+  EXPECT_EQ(app::StabilityJob::threads_alive(), 0);
+  const auto result = job.take();
+  ASSERT_TRUE(result);
+  EXPECT_EQ(result->version, 7u);
+  EXPECT_NEAR(result->analysis->w_max(), 10.0, 1e-9);  // k_s = 100, m = 1
+  EXPECT_FALSE(job.take());  // once
+}
+
 }  // namespace
 }  // namespace springlab::ui
