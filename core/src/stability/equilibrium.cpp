@@ -1,7 +1,7 @@
 // The static balance a scene settles into (stability.hpp), in two stages.
 //
 // Dynamic relaxation first, for the large motions (a cloth held by two corners swinging from
-// flat to hanging): the scene stepped with symplectic Euler at h = 1 / w_bound (inside its limit
+// flat to hanging): the scene stepped with symplectic Euler at h = 1 / w_max (half its limit
 // 2 / w_max), without damping, and every time its kinetic energy stops rising all velocities
 // are set to zero (kinetic damping: the energy taken out is the most there is to take). A step
 // costs one pass of the force loop, so thousands of them cost less than one factorisation of a
@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "stability/cancel.hpp"
+#include "stability/lanczos.hpp"
 #include "stability/linearised.hpp"
 #include "springlab/forces.hpp"
 #include "springlab/spring_kernel.hpp"
@@ -139,11 +140,17 @@ void relax(const Model& model, const Balance& balance, State& rest, double toler
   constexpr int kBudget = 20000, kLook = 50;
   for (int k = 0; k < kBudget; ++k) {
     if (k % 64 == 0) check_cancel();
-    if (k % 500 == 0) {
-      // The step from Gershgorin's bound at the positions now (tension raises it).
-      const double w = std::sqrt(Linearised(model, rest).stiffness_bound());
-      if (!(w > 0.0)) return;
-      h = 1.0 / w;
+    if (k % 2000 == 0) {
+      // The step from the highest frequency at the positions now (tension raises it): Lanczos
+      // from below, to a few per cent, with a tenth more for what it may miss, and never above
+      // Gershgorin's bound; h = 1 / w, half the limit 2 / w_max (Gershgorin's bound alone is
+      // up to twice w_max on a cloth, and the relaxation takes that many more passes).
+      const Linearised lin(model, rest);
+      const double bound = lin.stiffness_bound();
+      if (!(bound > 0.0)) return;
+      const TopEigenpair top = top_eigenpair([&](const Points& x, Points& y) { lin.apply(1.0 / bound, 0.0, x, y); },
+                                             lin.random_vector(0x2545F4914F6CDD1Dull), 60, 1e-3);
+      h = 1.0 / std::sqrt(bound * std::min(1.0, 1.1 * top.value));
     }
     evaluate_forces(springs, rest.x, zero, f, buffer, ForceOutput::Force);
     double largest = 0.0, energy = 0.0;
