@@ -9,8 +9,8 @@
 #   - `view --lesson` of a lesson under Xvfb with its analyses on worker threads, ended by
 #     SIGTERM after a few seconds (while one may be in flight).
 # Any report stops it with the sanitizer's output. Reports from the GL driver (Mesa) and the
-# OpenMP runtime (not built with the sanitizer) are suppressed (scripts/sanitizer-suppressions/);
-# springlab's own code is not.
+# OpenMP runtime (not built with the sanitizer) are suppressed (scripts/sanitizer-suppressions/),
+# and under ASan the driver is kept loaded (keep_loaded.c); springlab's own code is not.
 # Usage: scripts/stress.sh [asan|tsan] [ROUNDS (default 1)] [SECONDS (default 20)]
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -36,6 +36,12 @@ export TSAN_OPTIONS="suppressions=$suppressions/tsan.txt:halt_on_error=1:second_
 export OMP_WAIT_POLICY=passive
 springlab="$build/springlab"
 out="$(mktemp -d)"
+# The app's own processes keep every library loaded under ASan (keep_loaded.c says why).
+preload=()
+if [[ "$kind" == asan ]]; then
+  clang -shared -fPIC -o "$build/keep_loaded.so" "$suppressions/keep_loaded.c"
+  preload=(env LD_PRELOAD="$build/keep_loaded.so")
+fi
 trap 'rm -rf "$out"' EXIT
 
 round=0
@@ -44,15 +50,15 @@ while ((rounds == 0 || round < rounds)); do
   echo "stress ($kind): round $round"
   SPRINGLAB_STRESS_SECONDS="$seconds" "$build/tests/app_tests" --gtest_filter='Stress.*:StabilityJobs.*' --gtest_brief=1
   while read -r lesson; do
-    "$springlab" render --lesson "$lesson" --software --size 320x180 --fps 15 --out "$out/$lesson" >/dev/null
+    "${preload[@]}" "$springlab" render --lesson "$lesson" --software --size 320x180 --fps 15 --out "$out/$lesson" >/dev/null
     rm -rf "${out:?}/$lesson"
   done < <("$springlab" lesson list | awk '{print $2}')
-  "$springlab" render --lesson implicit-stiff --software --size 320x180 --fps 15 --video "$out/l.mp4" >/dev/null
+  "${preload[@]}" "$springlab" render --lesson implicit-stiff --software --size 320x180 --fps 15 --video "$out/l.mp4" >/dev/null
   # The window, its analyses on worker threads, ended while they run.
   for view in "--lesson damping-buys-a-limit" "cloth --set cloth.width=64 --set cloth.height=64"; do
     status=0
     # shellcheck disable=SC2086
-    timeout -s TERM 8 xvfb-run -a -s "-screen 0 1280x720x24" "$springlab" view $view >/dev/null 2>"$out/view.err" ||
+    timeout -s TERM 8 xvfb-run -a -s "-screen 0 1280x720x24" "${preload[@]}" "$springlab" view $view >/dev/null 2>"$out/view.err" ||
       status=$?
     # 124: ended by the timeout's SIGTERM (the app's own status for it is 143, which xvfb-run may
     # report instead); anything else is a crash or a report.
