@@ -5,11 +5,13 @@
 #include <cstdio>
 #include <exception>
 #include <map>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
 #include "springlab/error.hpp"
+#include "springlab/version.hpp"
 #include "session/stability_job.hpp"
 #include "util/atomic_file.hpp"
 
@@ -19,6 +21,7 @@ int main(int argc, char** argv) {
   std::signal(SIGPIPE, SIG_IGN);
 
   CLI::App app("springlab: mass-spring and particle simulation for teaching", "springlab");
+  app.set_version_flag("--version", std::string("springlab ") + springlab::kVersion);
   app.require_subcommand(0, 1);
   std::map<std::string, Command> commands;
   commands["run"] = add_run_command(app);
@@ -34,6 +37,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     std::fprintf(stderr, "springlab: %s (see springlab --help)\n", e.what());

@@ -157,7 +157,9 @@ TEST_P(Limits, HoldJustInsideAndGrowAsPredictedJustOutside) {
     EXPECT_TRUE(inside.held) << inside.said;
     // The audit looked, window after window, and stayed silent (symplectic Euler and Verlet are
     // not audited: the divergence test watches them).
-    if (method_info(m).audited) EXPECT_GE(inside.windows, inside.possible - 1);
+    if (method_info(m).audited) {
+      EXPECT_GE(inside.windows, inside.possible - 1);
+    }
     std::printf("  %-28s %-17s %-34s 0.95: held %.3g s%s", c.name().c_str(), method_info(m).name,
                 describe(limit).c_str(), inside.t, inside.whole ? "" : " (budget)");
 

@@ -95,12 +95,17 @@ TEST(MethodTable, TheStatedLimitsAreTheRowsOwn) {
     if (m.adaptive()) continue;
     SCOPED_TRACE(m.name);
     // Undamped: the stated h w is where the row's own rule (R(z) or its closed form) says.
-    if (std::isfinite(m.undamped_limit)) EXPECT_NEAR(stable_step(m.id, 1.0, 0.0), m.undamped_limit, 1e-9);
-    else EXPECT_TRUE(std::isinf(stable_step(m.id, 1.0, 0.0)));
+    if (std::isfinite(m.undamped_limit)) {
+      EXPECT_NEAR(stable_step(m.id, 1.0, 0.0), m.undamped_limit, 1e-9);
+    } else {
+      EXPECT_TRUE(std::isinf(stable_step(m.id, 1.0, 0.0)));
+    }
     if (m.family != MethodFamily::RungeKutta) continue;
     // A Runge-Kutta row: |R(i y)| <= 1 up to the stated y and not beyond.
     const double y = m.undamped_limit;
-    if (y > 0.0) EXPECT_LE(std::abs(m.tableau->stability_function(Complex(0.0, y * (1 - 1e-9)))), 1.0 + 1e-12);
+    if (y > 0.0) {
+      EXPECT_LE(std::abs(m.tableau->stability_function(Complex(0.0, y * (1 - 1e-9)))), 1.0 + 1e-12);
+    }
     // Past it (where it is 0, never stable: just off 0, |R(i y)|^2 - 1 ~ y^2 or y^4 / 4).
     EXPECT_GT(std::abs(m.tableau->stability_function(Complex(0.0, y > 0.0 ? y * (1 + 1e-6) : 1e-3))), 1.0);
     // A closed form the row gives agrees with R(z) on damped modes (under- and overdamped).
