@@ -22,7 +22,7 @@ std::vector<Method> methods_where(Keep keep) {
 }
 // Explicit with a fixed step: the rows with a finite stability limit.
 inline std::vector<Method> explicit_fixed_step() {
-  return methods_where([](const MethodInfo& m) { return !m.adaptive() && !m.implicit(); });
+  return methods_where([](const MethodInfo& m) { return !m.adaptive() && !m.any_step(); });
 }
 // Every fixed-step row, implicit included.
 inline std::vector<Method> fixed_step() {

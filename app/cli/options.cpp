@@ -31,6 +31,10 @@ void add_sim_options(CLI::App& c, SimOptions& o, bool with_length) {
   c.add_option("--ks", o.ks, "set every spring's stiffness k_s (N/m)");
   c.add_option("--kd", o.kd, "set every spring's damping k_d (N s/m)");
   c.add_option("--tol", o.tol, "tolerance of the adaptive methods (default: the scene's)");
+  c.add_option("--iterations", o.iterations,
+               "xpbd: passes over the springs a step (default 1); local-global, vbd: iterations a step (default 10)")
+      ->transform(whole_number(kIterations.lo, kIterations.hi));
+  c.add_option("--rho", o.rho, "local-global: Chebyshev acceleration with this spectral radius, in [0, 1) (default 0: off)");
   c.add_option("--set", o.sets, "KEY=VALUE: any other scene field, e.g. cloth.width=64")
       ->allow_extra_args(false);
   c.add_option("--threads", o.threads, "threads for the force loops (default: all cores; render and view on a software rasteriser: 1)")

@@ -65,6 +65,12 @@ Prepared prepare(const std::string& scene_name, const SimOptions& o) {
   if (o.kd) check_option("--kd", *o.kd, 0.0, 1e12, false, " N s/m");
   if (o.tol) check_option("--tol", *o.tol, 0.0, 1.0, true);
   if (o.threads) check_option("--threads", *o.threads, kThreads.lo, kThreads.hi, false);
+  if (o.iterations) check_option("--iterations", *o.iterations, kIterations.lo, kIterations.hi, false);
+  if (o.rho && !(*o.rho >= 0.0 && *o.rho < 1.0)) {
+    std::ostringstream s;
+    s << "--rho: must be in [0, 1) (local-global's Chebyshev acceleration; 0: off), got " << *o.rho;
+    throw InputError(s.str());
+  }
   std::optional<Method> method;
   if (o.method) {
     method = find_method(*o.method);
@@ -94,6 +100,8 @@ Prepared prepare(const std::string& scene_name, const SimOptions& o) {
     p.settings.substeps = *substeps;
   }
   p.settings.step.tolerance = o.tol ? *o.tol : s.tolerance;
+  if (o.iterations) p.settings.step.iterations = *o.iterations;
+  if (o.rho) p.settings.step.chebyshev_rho = *o.rho;
   const double duration = o.duration ? *o.duration : s.duration;
   if (!o.steps) {
     // Checked before the conversion: a tiny dt ("dt": 1e-300) made a count no integer holds.

@@ -22,6 +22,8 @@ struct SimOptions {
   std::optional<std::int64_t> steps;
   std::optional<double> duration;
   std::optional<double> ks, kd, tol;
+  std::optional<int> iterations;  // xpbd, local-global, vbd
+  std::optional<double> rho;      // local-global's Chebyshev acceleration
   std::vector<std::string> sets;
   std::optional<int> threads;
 };

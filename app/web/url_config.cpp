@@ -8,6 +8,7 @@
 #include <sstream>
 #include <vector>
 
+#include "platform/option_ranges.hpp"
 #include "springlab/error.hpp"
 #include "lesson/lesson_library.hpp"
 #include "util/data_dir.hpp"
@@ -86,6 +87,13 @@ AppSettings settings_from_link(const std::string& fragment) {
     else if (key == "substeps") s.sim.substeps = value;
     else if (key == "ks") s.sim.ks = number(key, value);
     else if (key == "kd") s.sim.kd = number(key, value);
+    else if (key == "iterations") {
+      const double k = number(key, value);
+      if (!(k >= kIterations.lo && k <= kIterations.hi && k == std::floor(k)))
+        throw InputError("link: iterations: must be a whole number from 1 to 10000, got '" + value + "'");
+      s.sim.iterations = static_cast<int>(k);
+    }
+    else if (key == "rho") s.sim.rho = number(key, value);
     else if (key == "compare") s.compare = parse_compare(value, "link: compare");
     else if (key == "script") s.script = value;
     else if (key == "set") s.sim.sets.push_back(value);  // set=cloth.width%3D64, as --set
@@ -165,6 +173,9 @@ std::string link_of(const InteractiveApp& app, const std::vector<std::string>& s
     link += "&substeps=" + std::to_string(lane.sim.settings().substeps);
   if (differs(session.stiffness(), file_ks)) link += "&ks=" + shortest(session.stiffness());
   if (differs(session.damping(), file_kd)) link += "&kd=" + shortest(session.damping());
+  const StepSettings& step = lane.sim.settings().step;
+  if (step.iterations > 0) link += "&iterations=" + std::to_string(step.iterations);
+  if (step.chebyshev_rho > 0.0) link += "&rho=" + shortest(step.chebyshev_rho);
   if (differs(ui_scale, 1.0)) link += "&ui-scale=" + shortest(ui_scale);
   return link;
 }

@@ -50,6 +50,11 @@ TEST(MethodTable, EveryRowIsFoundByItsNameAndItsId) {
         EXPECT_TRUE(std::isnan(m.undamped_limit));
         EXPECT_FALSE(m.audited);
         break;
+      case MethodFamily::Iterative:
+        EXPECT_EQ(m.tableau, nullptr);
+        EXPECT_TRUE(std::isinf(m.undamped_limit));
+        EXPECT_FALSE(m.audited);
+        break;
     }
   }
   EXPECT_FALSE(find_method("no-such-method"));

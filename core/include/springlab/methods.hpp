@@ -35,6 +35,9 @@ enum class Method {
   RK45,
   ImplicitEuler,
   Verlet,
+  XPBD,
+  LocalGlobal,
+  VBD,
 };
 
 // Settings of the methods that have any; plain values with defaults.
@@ -49,6 +52,12 @@ struct StepSettings {
   // first-order, once-linearised approximation; at 1e-5 the solve changes cloth positions by
   // 1e-4 of the method's own error (implicit_euler.cpp).
   double solver_tolerance = 1e-5;
+  // xpbd, local-global, vbd: iterations a step (xpbd: Gauss-Seidel passes over the springs, one
+  // a sub-step in the small-steps form); 0: the method's own default (xpbd 1, the others 10).
+  int iterations = 0;
+  // local-global: Chebyshev acceleration (Wang 2015) with this estimate of the plain
+  // iteration's spectral radius, in [0, 1); 0: off.
+  double chebyshev_rho = 0.0;
 };
 
 // Work done, summed over steps. The machine-independent cost of a run.
@@ -61,7 +70,8 @@ struct Counters {
   std::int64_t rejected = 0;           // adaptive tries thrown away
 };
 
-struct ImplicitSolver;  // implicit_euler.cpp
+struct ImplicitSolver;    // implicit_euler.cpp
+struct IterativeSolvers;  // methods/iterative.hpp: xpbd, local-global, vbd
 
 // Scratch memory and the little history some methods keep between steps. Allocated on first
 // use and reused, so a step allocates nothing once running.
@@ -87,6 +97,9 @@ struct Workspace {
   bool fsal_ready = false;
 
   std::unique_ptr<ImplicitSolver> implicit;
+  std::unique_ptr<IterativeSolvers> iterative;
+  // vbd: the last step's velocity is known (its initial guess uses the acceleration).
+  bool vbd_ready = false;
 
   // The check of the state a step made (energy.hpp), when the step made it itself: the explicit
   // methods probe each block of particles as they finish it, while it is in cache, and sum the
@@ -106,6 +119,7 @@ struct Workspace {
   void invalidate() {
     verlet_ready = false;
     fsal_ready = false;
+    vbd_ready = false;
   }
 };
 
@@ -124,6 +138,10 @@ enum class MethodFamily {
   Partitioned,  // x and v in turn (no R(z)): a closed form per damped mode, the oscillator plane
   Implicit,     // solves for the new state: A-stable, |R(z)| <= 1 on the whole left half plane
   Adaptive,     // chooses its own steps: no fixed-step limit
+  // Solves the backward-Euler step approximately, by a fixed number of iterations (XPBD,
+  // local-global, vertex block descent): bounded at any step, with no R(z) of its own; what a
+  // large step costs is artificial damping and stretch, not stability.
+  Iterative,
 };
 
 // The largest stable h on one damped mode x'' = -kappa x - gamma x', in closed form.
@@ -166,6 +184,8 @@ struct MethodInfo {
 
   bool adaptive() const { return family == MethodFamily::Adaptive; }
   bool implicit() const { return family == MethodFamily::Implicit; }
+  // Stable at any step: no limit to find, no sub-steps to choose.
+  bool any_step() const { return family == MethodFamily::Implicit || family == MethodFamily::Iterative; }
   // Never stable without damping, so damping can buy a limit.
   bool damping_helps() const { return undamped_limit == 0.0; }
 };

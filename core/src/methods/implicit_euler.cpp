@@ -46,6 +46,7 @@
 
 #include "dynamics/force_pass.hpp"
 #include "springlab/spring_kernel.hpp"
+#include "iterative.hpp"
 #include "steps.hpp"
 
 namespace springlab {
@@ -467,7 +468,7 @@ struct ImplicitSolver {
   }
 };
 
-// Defined here, where ImplicitSolver is complete.
+// Defined here, where ImplicitSolver (and IterativeSolvers, iterative.hpp) are complete.
 Workspace::Workspace() = default;
 Workspace::~Workspace() = default;
 Workspace::Workspace(Workspace&&) noexcept = default;

@@ -18,6 +18,9 @@ SPRINGLAB_STEP(adaptive_euler);
 SPRINGLAB_STEP(rk45);
 SPRINGLAB_STEP(implicit_euler);
 SPRINGLAB_STEP(verlet);
+SPRINGLAB_STEP(xpbd);
+SPRINGLAB_STEP(local_global);
+SPRINGLAB_STEP(vbd);
 
 #undef SPRINGLAB_STEP
 

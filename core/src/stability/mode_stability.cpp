@@ -144,7 +144,7 @@ double mode_limit(Method method, double gamma, double kappa, double verlet_dampi
   kappa = std::max(kappa, 0.0);
   if (gamma == 0.0 && kappa == 0.0) return kInf;  // a free motion: nothing to oscillate
   if (info.mode_limit) return info.mode_limit(gamma, kappa, verlet_damping);
-  if (info.implicit()) return kInf;
+  if (info.any_step()) return kInf;
   Complex first, second;
   mode_eigenvalues(gamma, kappa, first, second);
   return std::min(runge_kutta_limit(method, first), runge_kutta_limit(method, second));
@@ -152,7 +152,7 @@ double mode_limit(Method method, double gamma, double kappa, double verlet_dampi
 
 double runge_kutta_limit(Method method, std::complex<double> lambda) {
   const MethodInfo& info = method_info(method);
-  if (info.implicit()) return kInf;
+  if (info.any_step()) return kInf;
   if (info.family != MethodFamily::RungeKutta) return std::numeric_limits<double>::quiet_NaN();
   return runge_kutta_exit(info.tableau->stability_polynomial(), lambda);
 }

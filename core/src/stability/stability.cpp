@@ -287,7 +287,7 @@ void StabilityAnalysis::analyse(const Model& model, const State& state, int dens
   for (const MethodInfo& m : methods()) {
     StabilityLimit limit;
     limit.method = m.id;
-    limit.h = m.adaptive() ? kNaN : m.implicit() ? kInf : 0.0;
+    limit.h = m.adaptive() ? kNaN : m.any_step() ? kInf : 0.0;
     limits_.push_back(limit);
   }
   const State rest = equilibrium(model, state);
@@ -306,7 +306,7 @@ void StabilityAnalysis::analyse(const Model& model, const State& state, int dens
                                             : "no spring with stiffness holds a free particle";
     const double decay = lin.damping_bound();
     for (StabilityLimit& limit : limits_)
-      if (!method_info(limit.method).adaptive() && !method_info(limit.method).implicit())
+      if (!method_info(limit.method).adaptive() && !method_info(limit.method).any_step())
         limit.h = mode_limit(limit.method, decay, 0.0, model.verlet_damping);
     if (decay > 0.0) modes_.push_back({decay, 0.0});
     growth_modes_ = modes_;
@@ -420,7 +420,7 @@ StabilityLimit quick_limit(Method method, const Model& model, const State& state
   limit.method = method;
   limit.exact = false;
   const MethodInfo& info = method_info(method);
-  if (info.adaptive() || info.implicit()) {
+  if (info.adaptive() || info.any_step()) {
     limit.h = info.adaptive() ? kNaN : kInf;
     return limit;
   }

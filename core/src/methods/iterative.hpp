@@ -1,0 +1,99 @@
+// What XPBD, local-global and vertex block descent share. Each solves, exactly in the limit of
+// its iterations or approximately, one backward-Euler step written as a minimisation (Martin et
+// al. 2011, "Example-based elastic materials"; Liu et al. 2013):
+//
+//   x1 = argmin_x  sum_i m~_i / (2 h^2) |x_i - y_i|^2  +  E(x)  +  D(x),    v1 = (x1 - x) / h
+//
+//   E = sum_s k_s (|x_b - x_a| - L)^2 / 2                  the springs' energy
+//   D = sum_s k_d / (2 h) (u_s . (dx_b - dx_a))^2           their damping, dx = x1 - x over the step,
+//                                                           u_s the spring's direction (lagged)
+//
+// Its stationary point is the backward-Euler step of the notes' model, f(x1, v1) with v1 =
+// (x1 - x) / h, with two choices made here and said once:
+//   - drag is implicit, through the mass: m~ = m + h k_drag, so that a large k_drag never
+//     overshoots (m (v1 - v) / h = ... - k_drag (v1 - wind) solved for v1);
+//   - gravity and the fields (attractors, swirl) are explicit, at the start of the step:
+//     y = x + h v~,   v~ = (m v + h (m a_ext(x) + k_drag wind)) / m~.
+// Pinned particles move with their prescribed velocity, x1 = x + h v, as in every method.
+//
+// Colliders act after the step, as for every method (Simulation::step).
+#pragma once
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+#include <cstdint>
+#include <vector>
+
+#include "springlab/methods.hpp"
+
+namespace springlab {
+
+namespace iterative {
+
+// y and m~ above, for every particle (pinned ones: y = x + h v).
+void predict(const Model& model, const State& in, double h, Points& y, std::vector<double>& mass);
+
+// The iterations a step takes: the setting, or the method's default (1 pass for XPBD, 10 for the
+// others).
+int iterations(const StepSettings& settings, Method method);
+
+// Writes x1 (already in out.x) into the state: v1 = (x1 - x) / h, pinned particles moved with
+// their velocity, t advanced.
+void finish(const Model& model, const State& in, State& out, double h);
+
+}  // namespace iterative
+
+// local_global.cpp: the prefactored global matrix and what it was made for.
+struct LocalGlobalSolver {
+  // What the factorisation depends on; compared each step, refactorised when any differs.
+  struct Key {
+    double h = 0.0, drag = 0.0;
+    std::vector<double> mass, inv_mass;
+    std::vector<SpringMaterial> materials;
+    const void* spans = nullptr;
+    int springs = -1;
+    bool operator==(const Key&) const;
+  } key;
+  std::vector<int> row;   // per particle: its row among the free particles, or -1 (pinned)
+  std::vector<int> free;  // the free particles, in order
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor;
+  bool factored = false;
+  std::int64_t factorisations = 0;
+  Eigen::MatrixXd rhs, solution;  // free x 3
+  Points previous, current;       // Chebyshev: x^(k-1), x^k
+};
+
+// vbd.cpp: the vertex colouring and each vertex's springs.
+struct VertexBlockDescent {
+  const void* spans = nullptr;  // of the model the colouring was made for
+  int particles = -1, springs = -1;
+  // Each vertex's springs (compressed rows): spring index and the other end.
+  std::vector<int> first, spring, other;
+  // Vertices grouped by colour: colour c is order[colour_first[c] .. colour_first[c + 1]).
+  std::vector<int> order, colour_first;
+  // The adaptive initial guess (Chen et al. 2024, section 3.5) needs the velocity of the step
+  // before: valid while Workspace::vbd_ready.
+  Points v_before;
+};
+
+// What the three keep between steps, one Workspace's worth.
+struct IterativeSolvers {
+  Points y;                       // the inertial prediction
+  std::vector<double> mass;       // m~
+  std::vector<double> lambda;     // xpbd: each spring's Lagrange multiplier in the sub-step
+  LocalGlobalSolver local_global;
+  VertexBlockDescent vbd;
+};
+
+// Greedy colouring of the particles so that no two of one colour share a spring (pinned ones
+// too: a drag pins and unpins particles, the colouring stays). Deterministic: particles in index order, each the
+// least colour its neighbours do not have. Returns the colours' first indices into `order`.
+void colour_vertices(const Model& model, VertexBlockDescent& out);
+
+// Chebyshev semi-iterative acceleration (Wang 2015, "A Chebyshev semi-iterative approach for
+// accelerating projective and position-based dynamics"), its weights:
+//   omega_1 = 1,  omega_2 = 2 / (2 - rho^2),  omega_(k+1) = 4 / (4 - rho^2 omega_k)
+// for iteration k (1-based), rho the estimated spectral radius of the plain iteration.
+double chebyshev_omega(int k, double rho, double omega_before);
+
+}  // namespace springlab

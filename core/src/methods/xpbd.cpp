@@ -1,0 +1,79 @@
+// XPBD in its small-steps form (Macklin, Mueller, Chentanez 2016, "XPBD: position-based
+// simulation of compliant constrained dynamics"; Macklin et al. 2019, "Small steps in physics
+// simulation"): each step is one sub-step that predicts, then makes `iterations` Gauss-Seidel
+// passes (default 1) over the springs as distance constraints, then takes v from the positions.
+//
+//   x = y (iterative.hpp),  lambda_s = 0
+//   each pass, each spring s in order:  C = |x_b - x_a| - L,  u = (x_b - x_a) / |x_b - x_a|
+//     dlambda = (-C - a~ lambda_s - gamma u . (dx_b - dx_a)) / ((1 + gamma)(w_a + w_b) + a~)
+//     lambda_s += dlambda,  x_a -= w_a dlambda u,  x_b += w_b dlambda u
+//   v1 = (x1 - x) / h
+//
+// with w = 1 / m~ (0 for pinned ends), dx = x - x_start over the step so far, and
+//   a~ = 1 / (k_s h^2)       the compliance alpha = 1 / k_s over h^2 (the paper's Eq. 4): as
+//                            h -> 0 a pass moves x by h^2 k_s C / m, the spring's own
+//                            acceleration, so XPBD tends to the spring model;
+//   gamma = a~ b~ / h = k_d / (k_s h)   the constraint damping of Eq. 26 with beta = k_d, the
+//                            notes' damping along the spring (b~ = h^2 beta).
+// So k_s is a stiffness (N/m) as everywhere, exactly so only as h -> 0 or as the passes grow:
+// with one pass a step XPBD's springs are softer than k_s (the "stretchy" cloth), which the
+// effective stiffness measures. A spring with k_s = 0 has no constraint (infinite compliance);
+// its damping alone is not modelled here.
+//
+// Passes are sequential (Gauss-Seidel in the model's spring order): the same bits for any thread
+// count.
+#include <cmath>
+
+#include "iterative.hpp"
+#include "springlab/spring_kernel.hpp"
+#include "steps.hpp"
+
+namespace springlab::steps {
+
+void xpbd(const Model& model, const State& in, State& out, double h, const StepSettings& settings,
+          Workspace& ws) {
+  if (!ws.iterative) ws.iterative = std::make_unique<IterativeSolvers>();
+  IterativeSolvers& S = *ws.iterative;
+  iterative::predict(model, in, h, S.y, S.mass);
+  out.resize(in.particle_count());
+  out.x = S.y;
+  const int springs = model.spring_count();
+  S.lambda.assign(springs, 0.0);
+
+  double* X[3] = {out.x.col(0).data(), out.x.col(1).data(), out.x.col(2).data()};
+  const double* X0[3] = {in.x.col(0).data(), in.x.col(1).data(), in.x.col(2).data()};
+  const auto w = [&](int i) { return model.pinned(i) ? 0.0 : 1.0 / S.mass[i]; };
+  const int passes = iterative::iterations(settings, Method::XPBD);
+  for (int pass = 0; pass < passes; ++pass) {
+    for (int s = 0; s < springs; ++s) {
+      const SpringMaterial& material = model.materials[model.spring_material[s]];
+      if (material.ks <= 0.0) continue;
+      const int a = model.spring_a[s], b = model.spring_b[s];
+      const double wa = w(a), wb = w(b);
+      if (wa + wb == 0.0) continue;
+      double d[3], l2 = 0.0;
+      for (int c = 0; c < 3; ++c) d[c] = X[c][b] - X[c][a], l2 += d[c] * d[c];
+      const double l = std::sqrt(l2);
+      const double rest = model.rest_length[s];
+      if (coincident(l, rest)) continue;
+      double u[3], rate = 0.0;
+      for (int c = 0; c < 3; ++c) {
+        u[c] = d[c] / l;
+        rate += u[c] * ((X[c][b] - X0[c][b]) - (X[c][a] - X0[c][a]));
+      }
+      const double compliance = 1.0 / (material.ks * h * h);
+      const double gamma = material.kd / (material.ks * h);
+      const double dlambda = (-(l - rest) - compliance * S.lambda[s] - gamma * rate) /
+                             ((1.0 + gamma) * (wa + wb) + compliance);
+      S.lambda[s] += dlambda;
+      for (int c = 0; c < 3; ++c) {
+        X[c][a] -= wa * dlambda * u[c];
+        X[c][b] += wb * dlambda * u[c];
+      }
+    }
+  }
+  ws.counters.solver_iterations += passes;
+  iterative::finish(model, in, out, h);
+}
+
+}  // namespace springlab::steps
