@@ -78,11 +78,12 @@ void BM_ClothStep(benchmark::State& state) {
   set_thread_count(0);
 }
 
-// Every explicit method of the one table (implicit Euler has BM_ImplicitCloth).
+// Every explicit method of the one table (implicit Euler has BM_ImplicitCloth, the iterative
+// methods BM_IterativeCloth in iterative_bench.cpp).
 std::vector<std::int64_t> explicit_methods() {
   std::vector<std::int64_t> ids;
   for (const MethodInfo& m : methods())
-    if (!m.implicit()) ids.push_back(static_cast<std::int64_t>(m.id));
+    if (!m.any_step()) ids.push_back(static_cast<std::int64_t>(m.id));
   return ids;
 }
 

@@ -18,7 +18,7 @@ namespace springlab::draw {
 // RK4, Verlet and implicit Euler) take its five most distinct hues, for protanopes and
 // deuteranopes too: vermilion, sky blue, bluish green, yellow and reddish purple; the rest take
 // orange, light grey, blue and a violet, and are seldom beside the ones they resemble; the
-// iterative rows (what games use) salmon, lime and goldenrod, apart from the lecture's.
+// iterative rows (what games use) salmon, lime and magenta, apart from the lecture's.
 // By the method's row in the table (methods()), in its order; a row past the list takes a hue
 // of its own, turned by the golden angle from the last.
 inline Rgba method_color(Method m) {
@@ -34,7 +34,7 @@ inline Rgba method_color(Method m) {
       {0.94f, 0.89f, 0.26f, 1},  // verlet: yellow     #F0E442
       {1.00f, 0.50f, 0.50f, 1},  // xpbd: salmon #FF8080
       {0.65f, 0.85f, 0.33f, 1},  // local-global: lime #A6D854
-      {0.72f, 0.53f, 0.04f, 1},  // vbd: dark goldenrod #B8860B
+      {0.94f, 0.20f, 0.90f, 1},  // vbd: magenta #F032E6
   };
   const auto row = static_cast<std::size_t>(m);
   if (row < std::size(kByRow)) return kByRow[row];

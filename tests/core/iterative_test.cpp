@@ -154,7 +154,7 @@ TEST(Iterative, BoundedAtOneStepAFrameOnEveryScene) {
           sim.advance(1);
           kinetic = std::max(kinetic, sim.energy().kinetic);
         }
-        EXPECT_FALSE(sim.diverged());
+        EXPECT_FALSE(sim.diverged()) << sim.divergence()->message();
         EXPECT_LT(kinetic, scale);
       }
   }

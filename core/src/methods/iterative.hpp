@@ -54,13 +54,14 @@ struct LocalGlobalSolver {
     int springs = -1;
     bool operator==(const Key&) const;
   } key;
-  std::vector<int> row;   // per particle: its row among the free particles, or -1 (pinned)
-  std::vector<int> free;  // the free particles, in order
+  std::vector<int> row;  // per particle: its row of the factor (its own order), or -1 (pinned)
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor;
+  std::vector<double> inv_d;  // 1 / D, D the factor's diagonal
   bool factored = false;
   std::int64_t factorisations = 0;
-  Eigen::MatrixXd rhs, solution;  // free x 3
-  Points previous, current;       // Chebyshev: x^(k-1), x^k
+  std::vector<double> rhs;   // the right side, then the solution: x y z a row, the factor's order
+  std::vector<double> wt;    // each spring's w t: all x, all y, all z
+  Points previous, current;  // Chebyshev: x^(k-1), x^k
 };
 
 // vbd.cpp: the vertex colouring and each vertex's springs.

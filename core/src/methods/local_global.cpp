@@ -24,7 +24,8 @@
 #include <cmath>
 #include <vector>
 
-#include "iterative.hpp"
+#include "dynamics/threads.hpp"
+#include "local_global.hpp"
 #include "springlab/error.hpp"
 #include "springlab/spring_kernel.hpp"
 #include "steps.hpp"
@@ -44,23 +45,24 @@ namespace {
 
 double spring_weight(const SpringMaterial& m, double h) { return h * h * m.ks + h * m.kd; }
 
+}  // namespace
+
+namespace local_global_parts {
+
 void factorise(const Model& model, double h, const std::vector<double>& mass, LocalGlobalSolver& S) {
   const int n = model.particle_count();
-  S.row.assign(n, -1);
-  S.free.clear();
+  std::vector<int> row(n, -1);
+  int rows = 0;
   for (int i = 0; i < n; ++i)
-    if (!model.pinned(i)) {
-      S.row[i] = static_cast<int>(S.free.size());
-      S.free.push_back(i);
-    }
-  const int rows = static_cast<int>(S.free.size());
+    if (!model.pinned(i)) row[i] = rows++;
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(rows + 4 * model.spring_count());
-  for (int r = 0; r < rows; ++r) entries.emplace_back(r, r, mass[S.free[r]]);
+  for (int i = 0; i < n; ++i)
+    if (row[i] >= 0) entries.emplace_back(row[i], row[i], mass[i]);
   for (int s = 0; s < model.spring_count(); ++s) {
     const double w = spring_weight(model.materials[model.spring_material[s]], h);
     if (w == 0.0) continue;
-    const int ra = S.row[model.spring_a[s]], rb = S.row[model.spring_b[s]];
+    const int ra = row[model.spring_a[s]], rb = row[model.spring_b[s]];
     if (ra >= 0) entries.emplace_back(ra, ra, w);
     if (rb >= 0) entries.emplace_back(rb, rb, w);
     if (ra >= 0 && rb >= 0) {
@@ -73,42 +75,122 @@ void factorise(const Model& model, double h, const std::vector<double>& mass, Lo
   S.factor.compute(matrix);
   if (S.factor.info() != Eigen::Success)  // M~ > 0 makes it definite: only a bad mass gets here
     throw StepFailure("local-global: the global matrix could not be factorised (a zero or negative mass?)");
+  // Rows in the factor's own (fill-reducing) order, so that the solve needs no permutation:
+  // Eigen's P b puts row r at P.indices()[r].
+  const auto& order = S.factor.permutationP().indices();
+  S.row.assign(n, -1);
+  for (int i = 0; i < n; ++i)
+    if (row[i] >= 0) S.row[i] = order.size() ? order[row[i]] : row[i];
+  const Eigen::VectorXd d = S.factor.vectorD();  // (a copy: vectorD() returns one)
+  S.inv_d.resize(rows);
+  for (int r = 0; r < rows; ++r) S.inv_d[r] = 1.0 / d[r];
   S.factored = true;
   ++S.factorisations;
-  S.rhs.resize(rows, 3);
-  S.solution.resize(rows, 3);
+  S.rhs.assign(3 * rows, 0.0);
 }
 
-// The right side of the global step from the iterate x (pinned rows of x hold their positions).
-void global_rhs(const Model& model, const State& in, double h, const Points& x, const Points& y,
-                const std::vector<double>& mass, LocalGlobalSolver& S) {
-  const int rows = static_cast<int>(S.free.size());
-  for (int c = 0; c < 3; ++c)
-    for (int r = 0; r < rows; ++r) S.rhs(r, c) = mass[S.free[r]] * y(S.free[r], c);
-  for (int s = 0; s < model.spring_count(); ++s) {
-    const SpringMaterial& material = model.materials[model.spring_material[s]];
-    const double w = spring_weight(material, h);
-    if (w == 0.0) continue;
-    const int a = model.spring_a[s], b = model.spring_b[s];
-    const int ra = S.row[a], rb = S.row[b];
-    if (ra < 0 && rb < 0) continue;
-    const Vec3 e = (x.row(b) - x.row(a)).transpose();
-    const Vec3 e0 = (in.x.row(b) - in.x.row(a)).transpose();
-    const double l = e.norm(), rest = model.rest_length[s];
-    const bool none = coincident(l, rest);  // no direction: no force, no damping
-    const Vec3 u = none ? Vec3::Zero() : Vec3(e / l);
-    const Vec3 d = none ? e : Vec3(rest * u);  // local step: the target at rest length
-    const Vec3 de = e - e0;
-    const Vec3 across = none ? de : Vec3(de - u * u.dot(de));
-    const Vec3 wt = (h * h * material.ks) * d + (h * material.kd) * (e0 + across);
-    if (rb >= 0) S.rhs.row(rb) += (ra >= 0 ? wt : Vec3(wt + w * x.row(a).transpose())).transpose();
-    if (ra >= 0) S.rhs.row(ra) -= (rb >= 0 ? wt : Vec3(wt - w * x.row(b).transpose())).transpose();
+// (L D L^T) z = b in place, b and z in the factor's order, three columns interleaved (x y z a
+// row): each entry of L read once for all three, where Eigen's solve reads L once a column.
+// L is unit lower triangular, compressed columns without the diagonal (SimplicialLDLT's).
+void solve_in_place(const LocalGlobalSolver& S, std::vector<double>& z) {
+  const auto& L = S.factor.matrixL().nestedExpression();
+  const int rows = static_cast<int>(L.cols());
+  const int* begin = L.outerIndexPtr();
+  const int* index = L.innerIndexPtr();
+  const double* value = L.valuePtr();
+  double* Z = z.data();
+  for (int j = 0; j < rows; ++j) {  // L y = b
+    const double y0 = Z[3 * j], y1 = Z[3 * j + 1], y2 = Z[3 * j + 2];
+    for (int p = begin[j]; p < begin[j + 1]; ++p) {
+      double* r = Z + 3 * index[p];
+      r[0] -= value[p] * y0, r[1] -= value[p] * y1, r[2] -= value[p] * y2;
+    }
+  }
+  for (int j = 0; j < rows; ++j) {  // D w = y
+    const double inv = S.inv_d[j];
+    Z[3 * j] *= inv, Z[3 * j + 1] *= inv, Z[3 * j + 2] *= inv;
+  }
+  for (int j = rows - 1; j >= 0; --j) {  // L^T z = w
+    double s0 = Z[3 * j], s1 = Z[3 * j + 1], s2 = Z[3 * j + 2];
+    for (int p = begin[j]; p < begin[j + 1]; ++p) {
+      const double* r = Z + 3 * index[p];
+      s0 -= value[p] * r[0], s1 -= value[p] * r[1], s2 -= value[p] * r[2];
+    }
+    Z[3 * j] = s0, Z[3 * j + 1] = s1, Z[3 * j + 2] = s2;
   }
 }
 
-}  // namespace
+// The local step for `count` springs of a span (spring k joins a0 + k and b0 + k), from the
+// iterate x and the start x0: each spring's w t (the file's header), x y z in wx, wy, wz. Plain
+// arrays along the span, without branches, so that it vectorises.
+void span_targets(const double* const x[3], const double* const x0[3], int a0, int b0, int count,
+                  double ks, double kd, double rest, double h, double* __restrict wx,
+                  double* __restrict wy, double* __restrict wz) {
+  const double k_s = h * h * ks, k_d = h * kd, near = coincident_length(rest);
+#pragma omp simd
+  for (int k = 0; k < count; ++k) {
+    const double ex = x[0][b0 + k] - x[0][a0 + k], ey = x[1][b0 + k] - x[1][a0 + k], ez = x[2][b0 + k] - x[2][a0 + k];
+    const double fx = x0[0][b0 + k] - x0[0][a0 + k], fy = x0[1][b0 + k] - x0[1][a0 + k], fz = x0[2][b0 + k] - x0[2][a0 + k];
+    const double l = std::sqrt(ex * ex + ey * ey + ez * ez);
+    // Coincident ends have no direction: no force (d = e) and no damping (P de = de).
+    const bool none = l <= near;
+    const double inv = none ? 0.0 : 1.0 / l;
+    const double ux = ex * inv, uy = ey * inv, uz = ez * inv;
+    const double along = ux * (ex - fx) + uy * (ey - fy) + uz * (ez - fz);  // u . de
+    const double target = none ? 1.0 : rest * inv;                          // d = target e
+    wx[k] = k_s * target * ex + k_d * (ex - ux * along);                    // e0 + P de = e - u (u . de)
+    wy[k] = k_s * target * ey + k_d * (ey - uy * along);
+    wz[k] = k_s * target * ez + k_d * (ez - uz * along);
+  }
+}
+
+// The right side of the global step from the iterate X (pinned rows hold their positions), into
+// S.rhs in the factor's order: each spring's w t (span by span, in parallel: each spring's own
+// numbers), then added to its ends' rows in the springs' order (the same bits for any thread
+// count).
+void global_rhs(const Model& model, const State& in, double h, const Points& X, const Points& y,
+                const std::vector<double>& mass, LocalGlobalSolver& S) {
+  const int n = model.particle_count(), springs = model.spring_count();
+  double* B = S.rhs.data();
+  const double* x[3] = {X.col(0).data(), X.col(1).data(), X.col(2).data()};
+  const double* x0[3] = {in.x.col(0).data(), in.x.col(1).data(), in.x.col(2).data()};
+  S.wt.resize(3 * static_cast<std::size_t>(springs));
+  double *wx = S.wt.data(), *wy = wx + springs, *wz = wy + springs;
+  const int spans = static_cast<int>(model.spans.size());
+#pragma omp parallel for schedule(static) if (springs >= 4096 && threads::kAvailable)
+  for (int k = 0; k < spans; ++k) {
+    const SpringSpan& span = model.spans[k];
+    const SpringMaterial& material = model.materials[span.material];
+    span_targets(x, x0, span.a0, span.b0, span.count, material.ks, material.kd, span.rest, h, wx + span.first,
+                 wy + span.first, wz + span.first);
+  }
+  for (int i = 0; i < n; ++i) {
+    const int r = S.row[i];
+    if (r < 0) continue;
+    for (int c = 0; c < 3; ++c) B[3 * r + c] = mass[i] * y(i, c);
+  }
+  for (int s = 0; s < springs; ++s) {
+    const int a = model.spring_a[s], b = model.spring_b[s];
+    const int ra = S.row[a], rb = S.row[b];
+    const double wt[3] = {wx[s], wy[s], wz[s]};
+    if (ra >= 0 && rb >= 0) {
+      for (int c = 0; c < 3; ++c) B[3 * rb + c] += wt[c], B[3 * ra + c] -= wt[c];
+      continue;
+    }
+    const double w = h * h * model.ks(s) + h * model.kd(s);  // a pinned end's position enters
+    if (rb >= 0)
+      for (int c = 0; c < 3; ++c) B[3 * rb + c] += wt[c] + w * x[c][a];
+    if (ra >= 0)
+      for (int c = 0; c < 3; ++c) B[3 * ra + c] -= wt[c] - w * x[c][b];
+  }
+}
+
+}  // namespace local_global_parts
 
 namespace steps {
+
+using namespace local_global_parts;
+
 
 void local_global(const Model& model, const State& in, State& out, double h, const StepSettings& settings,
                   Workspace& ws) {
@@ -130,21 +212,22 @@ void local_global(const Model& model, const State& in, State& out, double h, con
   if (rho > 0.0) S.previous = out.x;
   double omega = 1.0;
   const int iterations = iterative::iterations(settings, Method::LocalGlobal);
+  const int n = in.particle_count();
   for (int k = 1; k <= iterations; ++k) {
     global_rhs(model, in, h, out.x, I.y, I.mass, S);
-    S.solution = S.factor.solve(S.rhs);
+    solve_in_place(S, S.rhs);
     if (rho > 0.0) {
       omega = chebyshev_omega(k, rho, omega);
       S.current = out.x;
       for (int c = 0; c < 3; ++c)
-        for (std::size_t r = 0; r < S.free.size(); ++r) {
-          const int i = S.free[r];
-          out.x(i, c) = omega * (S.solution(r, c) - S.previous(i, c)) + S.previous(i, c);
-        }
+        for (int i = 0; i < n; ++i)
+          if (S.row[i] >= 0)
+            out.x(i, c) = omega * (S.rhs[3 * S.row[i] + c] - S.previous(i, c)) + S.previous(i, c);
       S.previous.swap(S.current);
     } else {
       for (int c = 0; c < 3; ++c)
-        for (std::size_t r = 0; r < S.free.size(); ++r) out.x(S.free[r], c) = S.solution(r, c);
+        for (int i = 0; i < n; ++i)
+          if (S.row[i] >= 0) out.x(i, c) = S.rhs[3 * S.row[i] + c];
     }
   }
   ws.counters.solver_iterations += iterations;

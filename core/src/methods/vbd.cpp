@@ -19,7 +19,6 @@
 // The first iterate is the paper's adaptive one: x + h v + h^2 a~, a~ the last step's
 // acceleration along gravity, clamped to [0, |g|] (a cloth at rest starts where it is, a falling
 // one falls), or y where that is not known.
-#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 
@@ -33,27 +32,42 @@ namespace springlab {
 namespace {
 
 // One vertex's Newton step, from positions X (updated in place) and the start of the step X0.
-void descend(const Model& model, const VertexBlockDescent& C, const IterativeSolvers& I, const State& in,
-             double h, int i, Points& X) {
+// Plain arrays: a vertex reads its dozen neighbours' coordinates from three columns.
+void descend(const Model& model, const VertexBlockDescent& C, const IterativeSolvers& I, double h,
+             int i, double* const X[3], const double* const X0[3]) {
   const double inertia = I.mass[i] / (h * h);
-  const Vec3 x = X.row(i).transpose();
-  const Vec3 dx_i = x - in.x.row(i).transpose();
-  Vec3 f = inertia * (I.y.row(i).transpose() - x);
-  Eigen::Matrix3d H = inertia * Eigen::Matrix3d::Identity();
+  const double x[3] = {X[0][i], X[1][i], X[2][i]};
+  const double dx_i[3] = {x[0] - X0[0][i], x[1] - X0[1][i], x[2] - X0[2][i]};
+  double f[3], H[6];  // H: xx yy zz xy xz yz
+  for (int c = 0; c < 3; ++c) f[c] = inertia * (I.y(i, c) - x[c]);
+  H[0] = H[1] = H[2] = inertia;
+  H[3] = H[4] = H[5] = 0.0;
   for (int k = C.first[i]; k < C.first[i + 1]; ++k) {
     const int s = C.spring[k], j = C.other[k];
     const SpringMaterial& material = model.materials[model.spring_material[s]];
-    const Vec3 d = X.row(j).transpose() - x;
-    const double l = d.norm(), rest = model.rest_length[s];
+    const double d[3] = {X[0][j] - x[0], X[1][j] - x[1], X[2][j] - x[2]};
+    const double l = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    const double rest = model.rest_length[s];
     if (coincident(l, rest)) continue;
-    const Vec3 u = d / l;
-    const double rate = u.dot(X.row(j).transpose() - in.x.row(j).transpose() - dx_i) / h;
-    f += (material.ks * (l - rest) + material.kd * rate) * u;
-    const Eigen::Matrix3d uu = u * u.transpose();
-    const double across = material.ks * std::max(0.0, 1.0 - rest / l);
-    H += (material.ks + material.kd / h - across) * uu + across * Eigen::Matrix3d::Identity();
+    const double inv = 1.0 / l;
+    const double u[3] = {d[0] * inv, d[1] * inv, d[2] * inv};
+    double rate = 0.0;
+    for (int c = 0; c < 3; ++c) rate += u[c] * ((X[c][j] - X0[c][j]) - dx_i[c]);
+    const double scale = material.ks * (l - rest) + material.kd * rate / h;
+    for (int c = 0; c < 3; ++c) f[c] += scale * u[c];
+    const double across = material.ks * std::max(0.0, 1.0 - rest * inv);
+    const double along = material.ks + material.kd / h - across;
+    H[0] += along * u[0] * u[0] + across, H[1] += along * u[1] * u[1] + across, H[2] += along * u[2] * u[2] + across;
+    H[3] += along * u[0] * u[1], H[4] += along * u[0] * u[2], H[5] += along * u[1] * u[2];
   }
-  X.row(i) += H.llt().solve(f).transpose();
+  // H^-1 f by cofactors (H >= m~ / h^2 I: definite, the determinant positive).
+  const double a = H[0], b = H[1], c = H[2], dd = H[3], e = H[4], g = H[5];
+  const double cxx = b * c - g * g, cyy = a * c - e * e, czz = a * b - dd * dd;
+  const double cxy = e * g - dd * c, cxz = dd * g - e * b, cyz = dd * e - a * g;
+  const double inv_det = 1.0 / (a * cxx + dd * cxy + e * cxz);
+  X[0][i] += (cxx * f[0] + cxy * f[1] + cxz * f[2]) * inv_det;
+  X[1][i] += (cxy * f[0] + cyy * f[1] + cyz * f[2]) * inv_det;
+  X[2][i] += (cxz * f[0] + cyz * f[1] + czz * f[2]) * inv_det;
 }
 
 }  // namespace
@@ -81,15 +95,17 @@ void vbd(const Model& model, const State& in, State& out, double h, const StepSe
     }
   }
 
+  double* const X[3] = {out.x.col(0).data(), out.x.col(1).data(), out.x.col(2).data()};
+  const double* const X0[3] = {in.x.col(0).data(), in.x.col(1).data(), in.x.col(2).data()};
   const int iterations = iterative::iterations(settings, Method::VBD);
   const int colours = static_cast<int>(C.colour_first.size()) - 1;
   for (int k = 0; k < iterations; ++k)
     for (int c = 0; c < colours; ++c) {
       const int begin = C.colour_first[c], end = C.colour_first[c + 1];
-#pragma omp parallel for schedule(static) if (end - begin >= 4096 && threads::kAvailable)
+#pragma omp parallel for schedule(static) if (end - begin >= 256 && threads::kAvailable)
       for (int q = begin; q < end; ++q) {
         const int i = C.order[q];
-        if (!model.pinned(i)) descend(model, C, I, in, h, i, out.x);
+        if (!model.pinned(i)) descend(model, C, I, h, i, X, X0);
       }
     }
   ws.counters.solver_iterations += iterations;
