@@ -263,6 +263,12 @@ void Session::set_tolerance(double tolerance) {
   for (Lane& l : lanes_) l.sim.set_step_settings(settings_.step);
 }
 
+void Session::set_iterations(int iterations) {
+  ++edits_;
+  settings_.step.iterations = iterations;
+  for (Lane& l : lanes_) l.sim.set_step_settings(settings_.step);
+}
+
 void Session::set_stiffness(double ks) {
   ++edits_;
   for (Lane& l : lanes_) {

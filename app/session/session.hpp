@@ -106,6 +106,7 @@ class Session {
   void set_auto_substeps();         // chosen again from each lane's limit
   bool auto_substeps() const { return settings_.auto_substeps; }
   void set_tolerance(double tolerance);
+  void set_iterations(int iterations);  // xpbd, local-global, vbd
   void set_stiffness(double ks);
   void set_damping(double kd);
   void set_gravity(const Vec3& g);

@@ -519,6 +519,12 @@ void parameters(app::Session& session, UiState& ui, bool few) {
   if (sim.model().has_colliders() && slider("friction", mu, 0.0, 2.0, false, "%.2f")) session.set_friction(mu);
   if (method_info(session.method()).adaptive() && slider("tolerance", tol, 1e-10, 1e-1, true, "%.1e"))
     session.set_tolerance(tol);
+  if (method_info(session.method()).family == MethodFamily::Iterative) {
+    // Iterations a step: the solver error against the cost (XPBD: passes over the springs).
+    int iterations = iterations_for(session.method(), sim.settings().step);
+    if (ImGui::SliderInt("iterations", &iterations, 1, 100, "%d", ImGuiSliderFlags_Logarithmic))
+      session.set_iterations(std::clamp(iterations, 1, 10000));
+  }
   int speed_exp = static_cast<int>(std::lround(std::log2(session.speed())));
   const char* speeds[] = {"1/16", "1/8", "1/4", "1/2", "1", "2", "4"};
   if (ImGui::SliderInt("speed", &speed_exp, -4, 2, speeds[speed_exp + 4])) session.set_speed(std::pow(2.0, speed_exp));

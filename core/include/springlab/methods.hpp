@@ -200,6 +200,10 @@ std::string method_names();
 void step(Method method, const Model& model, const State& in, State& out, double h,
           const StepSettings& settings, Workspace& ws);
 
+// The iterations an iterative row (xpbd, local-global, vbd) takes a step: the setting, or the
+// method's own default (xpbd 1 pass, the others 10).
+int iterations_for(Method method, const StepSettings& settings);
+
 // One evaluation of the accelerations, counted.
 void accelerations(const Model& model, const Points& x, const Points& v, Points& a, Workspace& ws);
 

@@ -29,11 +29,6 @@ void predict(const Model& model, const State& in, double h, Points& y, std::vect
   }
 }
 
-int iterations(const StepSettings& settings, Method method) {
-  if (settings.iterations > 0) return settings.iterations;
-  return method == Method::XPBD ? 1 : 10;
-}
-
 void finish(const Model& model, const State& in, State& out, double h) {
   const int n = in.particle_count();
   for (int i = 0; i < n; ++i) {
@@ -48,6 +43,11 @@ void finish(const Model& model, const State& in, State& out, double h) {
 }
 
 }  // namespace iterative
+
+int iterations_for(Method method, const StepSettings& settings) {
+  if (settings.iterations > 0) return settings.iterations;
+  return method == Method::XPBD ? 1 : 10;
+}
 
 void colour_vertices(const Model& model, VertexBlockDescent& out) {
   const int n = model.particle_count(), springs = model.spring_count();

@@ -33,10 +33,6 @@ namespace iterative {
 // y and m~ above, for every particle (pinned ones: y = x + h v).
 void predict(const Model& model, const State& in, double h, Points& y, std::vector<double>& mass);
 
-// The iterations a step takes: the setting, or the method's default (1 pass for XPBD, 10 for the
-// others).
-int iterations(const StepSettings& settings, Method method);
-
 // Writes x1 (already in out.x) into the state: v1 = (x1 - x) / h, pinned particles moved with
 // their velocity, t advanced.
 void finish(const Model& model, const State& in, State& out, double h);

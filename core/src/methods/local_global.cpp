@@ -211,7 +211,7 @@ void local_global(const Model& model, const State& in, State& out, double h, con
   const double rho = settings.chebyshev_rho;
   if (rho > 0.0) S.previous = out.x;
   double omega = 1.0;
-  const int iterations = iterative::iterations(settings, Method::LocalGlobal);
+  const int iterations = iterations_for(Method::LocalGlobal, settings);
   const int n = in.particle_count();
   for (int k = 1; k <= iterations; ++k) {
     global_rhs(model, in, h, out.x, I.y, I.mass, S);

@@ -97,7 +97,7 @@ void vbd(const Model& model, const State& in, State& out, double h, const StepSe
 
   double* const X[3] = {out.x.col(0).data(), out.x.col(1).data(), out.x.col(2).data()};
   const double* const X0[3] = {in.x.col(0).data(), in.x.col(1).data(), in.x.col(2).data()};
-  const int iterations = iterative::iterations(settings, Method::VBD);
+  const int iterations = iterations_for(Method::VBD, settings);
   const int colours = static_cast<int>(C.colour_first.size()) - 1;
   for (int k = 0; k < iterations; ++k)
     for (int c = 0; c < colours; ++c) {

@@ -43,7 +43,7 @@ void xpbd(const Model& model, const State& in, State& out, double h, const StepS
   double* X[3] = {out.x.col(0).data(), out.x.col(1).data(), out.x.col(2).data()};
   const double* X0[3] = {in.x.col(0).data(), in.x.col(1).data(), in.x.col(2).data()};
   const auto w = [&](int i) { return model.pinned(i) ? 0.0 : 1.0 / S.mass[i]; };
-  const int passes = iterative::iterations(settings, Method::XPBD);
+  const int passes = iterations_for(Method::XPBD, settings);
   for (int pass = 0; pass < passes; ++pass) {
     for (int s = 0; s < springs; ++s) {
       const SpringMaterial& material = model.materials[model.spring_material[s]];
