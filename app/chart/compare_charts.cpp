@@ -185,12 +185,39 @@ Chart energy_drift(const SweepResult& r, const std::string& scene) {
   return c;
 }
 
+Chart solver_convergence(const SweepResult& r, const std::string& scene) {
+  Chart c;
+  char title[200];
+  std::snprintf(title, sizeof title,
+                "Solver error on %s: one step of h = %.3g s against the converged implicit-Euler step", scene.c_str(),
+                r.solver.h);
+  c.title = title;
+  c.x.label = "iterations a step (XPBD: passes; implicit Euler: conjugate-gradient iterations)";
+  c.x.log = true;
+  c.y.label = "|x_k - x*| / |x* - x_0|";
+  c.y.log = true;
+  for (const SolverErrorCurve& curve : r.solver.curves) {
+    Series s;
+    s.label = method_info(curve.method).name;
+    if (curve.method == Method::ImplicitEuler) s.label += " (CG; linearised once: levels off)";
+    s.color = draw::method_color(curve.method);
+    s.markers = true;
+    for (std::size_t k = 0; k < curve.iterations.size(); ++k) {
+      s.x.push_back(curve.iterations[k]);
+      s.y.push_back(std::max(curve.error[k], 1e-16));
+    }
+    c.series.push_back(std::move(s));
+  }
+  return c;
+}
+
 std::vector<NamedChart> compare_charts(const SweepResult& result, const std::string& scene) {
   std::vector<NamedChart> out{{"work-precision", work_precision(result, scene, Cost::Time)},
                               {"work-precision-work", work_precision(result, scene, Cost::Work)},
                               {"convergence", convergence(result, scene)},
                               {"stability", stability(result, scene)}};
   if (!result.drift.empty()) out.push_back({"energy-drift", energy_drift(result, scene)});
+  if (!result.solver.curves.empty()) out.push_back({"solver-convergence", solver_convergence(result, scene)});
   return out;
 }
 

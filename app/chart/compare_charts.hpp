@@ -20,6 +20,9 @@ Chart work_precision(const SweepResult& result, const std::string& scene, Cost c
 Chart convergence(const SweepResult& result, const std::string& scene);
 Chart stability(const SweepResult& result, const std::string& scene);
 Chart energy_drift(const SweepResult& result, const std::string& scene);
+// The iterative methods' solver error against iterations (solver_error.hpp), apart from their
+// time-stepping error (the other charts).
+Chart solver_convergence(const SweepResult& result, const std::string& scene);
 
 struct NamedChart {
   std::string name;  // file stem: "work-precision", "work-precision-work", ...

@@ -35,7 +35,8 @@ TEST(Compare, OnTheSpringWritesResultsSummaryAndCharts) {
   ASSERT_EQ(r.status, 0) << r.err;
   for (const char* file : {"results.csv", "summary.csv", "work-precision.png", "work-precision.svg",
                            "work-precision-work.png", "work-precision-work.svg", "convergence.png",
-                           "convergence.svg", "stability.png", "stability.svg", "energy-drift.png", "energy-drift.svg"})
+                           "convergence.svg", "stability.png", "stability.svg", "energy-drift.png", "energy-drift.svg",
+                           "solver-convergence.png", "solver-convergence.svg"})
     EXPECT_TRUE(fs::exists(dir / file)) << file;
   const auto summary = csv(dir / "summary.csv");
   ASSERT_EQ(summary.size(), methods().size() + 1);  // header and every method

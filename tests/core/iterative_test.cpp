@@ -12,6 +12,7 @@
 #include "springlab/energy.hpp"
 #include "springlab/forces.hpp"
 #include "springlab/methods.hpp"
+#include "springlab/solver_error.hpp"
 
 namespace springlab {
 namespace {
@@ -118,6 +119,27 @@ TEST(Iterative, OneXpbdPassOnALinearSpringIsImplicitEuler) {
   const State out = one_step(s, Method::XPBD, h, 1);
   const double y = s.state.x(1, 0) + h * s.state.v(1, 0);
   EXPECT_NEAR(out.x(1, 0), y / (1.0 + h * h * 100.0), 1e-14);
+}
+
+// The solver-error study: its reference is the converged step (checked with the force pass);
+// local-global's error falls at every doubling of its iterations; implicit Euler's conjugate
+// gradients level off at the linearisation's error, above the converged methods' floor.
+TEST(Iterative, SolverErrorIsMeasuredAgainstTheConvergedStep) {
+  const Scene s = moving_cloth();
+  const SolverErrorStudy study = solver_error(s.model, s.state, 1.0 / 60.0, 64);
+  EXPECT_LT(study.residual, 1e-10);
+  ASSERT_EQ(study.curves.size(), 4u);
+  for (const SolverErrorCurve& c : study.curves) {
+    SCOPED_TRACE(method_info(c.method).name);
+    ASSERT_EQ(c.iterations.size(), 7u);  // 1, 2, 4, ..., 64
+    EXPECT_LT(c.error.back(), c.error.front());
+    if (c.method == Method::LocalGlobal)
+      for (std::size_t k = 1; k < c.error.size(); ++k) EXPECT_LT(c.error[k], c.error[k - 1]) << c.iterations[k];
+    if (c.method == Method::ImplicitEuler) {
+      EXPECT_NEAR(c.error[6], c.error[5], 0.1 * c.error[5]);  // 64 against 32 iterations: level
+      EXPECT_GT(c.error[6], 1e-3);
+    }
+  }
 }
 
 // The colouring: no spring joins two vertices of one colour, every vertex has one.

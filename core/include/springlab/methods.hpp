@@ -52,6 +52,9 @@ struct StepSettings {
   // first-order, once-linearised approximation; at 1e-5 the solve changes cloth positions by
   // 1e-4 of the method's own error (implicit_euler.cpp).
   double solver_tolerance = 1e-5;
+  // implicit-euler: the most conjugate-gradient iterations a solve may take; 0: six times the
+  // particles (reached only when the system is ill-posed). The solver-error study sets it.
+  int max_solver_iterations = 0;
   // xpbd, local-global, vbd: iterations a step (xpbd: Gauss-Seidel passes over the springs, one
   // a sub-step in the small-steps form); 0: the method's own default (xpbd 1, the others 10).
   int iterations = 0;

@@ -21,6 +21,7 @@
 
 #include "springlab/methods.hpp"
 #include "springlab/model.hpp"
+#include "springlab/solver_error.hpp"
 #include "springlab/stability.hpp"
 #include "springlab/state.hpp"
 
@@ -93,6 +94,9 @@ struct SweepResult {
   int samples = 0;
   double motion = 0.0;  // m: the largest RMS displacement of the reference from the start
   double w_max = 0.0;   // rad/s, the highest frequency at the equilibrium
+  // The iterative methods' solver error at one step a frame (h = 1/60 s, or the coarsest step
+  // if larger), from the scene after the sweep's duration (empty curves: none was swept).
+  SolverErrorStudy solver;
   bool cancelled = false;
 };
 

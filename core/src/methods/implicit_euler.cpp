@@ -498,7 +498,7 @@ void implicit_euler(const Model& model, const State& in, State& out, double h,
   S.resize(model, plan);
   out.resize(n);
   // As Eigen's conjugate gradients: twice the unknowns (never reached unless A is ill-posed).
-  const int max_iterations = 6 * n;
+  const int max_iterations = settings.max_solver_iterations > 0 ? settings.max_solver_iterations : 6 * n;
 
 #pragma omp parallel if (parallel(model))
   {

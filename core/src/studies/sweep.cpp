@@ -255,7 +255,9 @@ struct SweepPlan {
     const bool drift = settings.drift_h > 0.0 && settings.drift_duration > 0.0;
     stability_jobs = settings.stability ? static_cast<int>(list.size()) : 0;
     drift_jobs = drift ? static_cast<int>(list.size()) : 0;
-    total = static_cast<int>(jobs.size()) + stability_jobs + drift_jobs;
+    bool iterative = false;
+    for (Method m : list) iterative = iterative || method_info(m).family == MethodFamily::Iterative;
+    total = static_cast<int>(jobs.size()) + stability_jobs + drift_jobs + (iterative ? 1 : 0);
     result.runs.resize(jobs.size());
     result.methods.resize(list.size());
     result.drift.resize(drift_jobs);
@@ -285,6 +287,20 @@ struct SweepPlan {
       return nullptr;
     }
     j -= stability_jobs;
+    if (j >= drift_jobs) {
+      // The solver error of the iterative methods at one step a frame (h = 1/60 s, or the
+      // coarsest step if larger), from the scene in motion: implicit Euler at that step for the
+      // sweep's duration (from a scene at rest, one iteration solves a nearly uniform fall).
+      const double h = std::max(H, 1.0 / 60.0);
+      SimulationSettings s;
+      s.method = Method::ImplicitEuler;
+      s.dt = h;
+      s.step = settings.step;
+      Simulation sim(model, initial, s);
+      sim.advance(std::max<std::int64_t>(1, std::llround(settings.duration / h)));
+      result.solver = solver_error(model, sim.diverged() ? initial : sim.state(), h, 64, settings.step);
+      return nullptr;
+    }
     DriftTrace& trace = result.drift[j];
     trace.method = list[j];
     SimulationSettings s;
