@@ -10,6 +10,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
+#include "springlab/iterative_cost.hpp"
 #include "springlab/error.hpp"
 #include "util/atomic_file.hpp"
 #include "util/progress.hpp"
@@ -90,6 +91,8 @@ int run(const RunOptions& o) {
   if (o.csv) csv = std::make_unique<AtomicFile>(*o.csv, "CSV trace");
 
   // The scene's model and state move into the simulation: a big scene is not held twice.
+  const bool iterative = method_info(p.settings.method).family == MethodFamily::Iterative;
+  if (iterative) p.settings.track_dissipation = true;  // for its artificial damping, below
   Simulation sim(std::move(p.scene.model), std::move(p.scene.state), p.settings);
   const Energy initial = sim.energy();
   const StabilityAnalysis& stability = sim.stability();
@@ -157,6 +160,20 @@ int run(const RunOptions& o) {
     std::printf(", %lld accepted and %lld rejected internal steps",
                 static_cast<long long>(c.accepted), static_cast<long long>(c.rejected));
   std::printf("\n");
+  if (iterative && !sim.diverged() && sim.state().t > 0.0) {
+    // What it pays instead of a limit (springlab/iterative_cost.hpp).
+    // Taken out in all: E0 + W - E = -net; by the physics' damping: dissipated; the rest, the
+    // method's own (negative: its springs' stretch counted with k_s grew).
+    const double artificial = -(sim.net_energy() + sim.dissipated());
+    std::printf("damping    %s J taken out beyond the physics' damping (%s W on average; the physics' damping took %s J)\n",
+                format(artificial).c_str(), format(artificial / sim.state().t).c_str(), format(sim.dissipated()).c_str());
+    if (at_rest(sim.model(), sim.state(), sim.energy_scale())) {
+      const Softness s = softness(sim.model(), sim.state());
+      std::printf("stretch    at rest, %s m RMS against the spring model's %s m under the same load: its springs act as "
+                  "k_s x %s\n",
+                  format(s.stretch).c_str(), format(s.model_stretch).c_str(), format(s.ratio()).c_str());
+    }
+  }
   if (o.csv) std::printf("trace      %s\n", o.csv->c_str());
 
   if (sim.diverged()) {

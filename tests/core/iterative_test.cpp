@@ -11,6 +11,7 @@
 #include "methods/iterative.hpp"
 #include "springlab/energy.hpp"
 #include "springlab/forces.hpp"
+#include "springlab/iterative_cost.hpp"
 #include "springlab/methods.hpp"
 #include "springlab/solver_error.hpp"
 
@@ -140,6 +141,28 @@ TEST(Iterative, SolverErrorIsMeasuredAgainstTheConvergedStep) {
       EXPECT_GT(c.error[6], 1e-3);
     }
   }
+}
+
+// Softness, what an iterative method pays at a large step: the chain (k_s = 20000 N/m) settled
+// at h = 1/30 s. XPBD's one pass leaves its springs a thousand times softer than k_s, and more
+// passes make them stiffer; local-global settles to the spring model's own sag. The measure
+// itself: symplectic Euler at the scene's small step settles to the equilibrium exactly.
+TEST(Iterative, SoftnessAtRestAgainstTheSpringModel) {
+  const Scene chain = test::shipped("chain");
+  const auto settled = [&](Method m, double h, int iterations, double seconds) {
+    Simulation sim = test::simulation(chain, m, h);
+    StepSettings s;
+    s.iterations = iterations;
+    sim.set_step_settings(s);
+    sim.advance(static_cast<std::int64_t>(std::lround(seconds / h)));
+    EXPECT_TRUE(at_rest(sim.model(), sim.state(), sim.energy_scale())) << method_info(m).name;
+    return softness(sim.model(), sim.state()).ratio();
+  };
+  const double one_pass = settled(Method::XPBD, 1.0 / 30.0, 1, 40.0);
+  EXPECT_LT(one_pass, 0.01);
+  EXPECT_GT(settled(Method::XPBD, 1.0 / 30.0, 20, 40.0), 5.0 * one_pass);
+  EXPECT_NEAR(settled(Method::LocalGlobal, 1.0 / 30.0, 10, 40.0), 1.0, 0.05);
+  EXPECT_NEAR(settled(Method::SymplecticEuler, chain.dt, 1, 40.0), 1.0, 1e-3);
 }
 
 // The colouring: no spring joins two vertices of one colour, every vertex has one.

@@ -101,8 +101,6 @@ struct Workspace {
 
   std::unique_ptr<ImplicitSolver> implicit;
   std::unique_ptr<IterativeSolvers> iterative;
-  // vbd: the last step's velocity is known (its initial guess uses the acceleration).
-  bool vbd_ready = false;
 
   // The check of the state a step made (energy.hpp), when the step made it itself: the explicit
   // methods probe each block of particles as they finish it, while it is in cache, and sum the
@@ -122,7 +120,6 @@ struct Workspace {
   void invalidate() {
     verlet_ready = false;
     fsal_ready = false;
-    vbd_ready = false;
   }
 };
 

@@ -68,9 +68,6 @@ struct VertexBlockDescent {
   std::vector<int> first, spring, other;
   // Vertices grouped by colour: colour c is order[colour_first[c] .. colour_first[c + 1]).
   std::vector<int> order, colour_first;
-  // The adaptive initial guess (Chen et al. 2024, section 3.5) needs the velocity of the step
-  // before: valid while Workspace::vbd_ready.
-  Points v_before;
 };
 
 // What the three keep between steps, one Workspace's worth.

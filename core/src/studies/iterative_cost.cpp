@@ -1,0 +1,33 @@
+#include "springlab/iterative_cost.hpp"
+
+#include <cmath>
+
+#include "springlab/energy.hpp"
+#include "springlab/stability.hpp"
+
+namespace springlab {
+
+double rms_stretch(const Model& model, const State& state) {
+  double sum = 0.0;
+  int counted = 0;
+  for (int s = 0; s < model.spring_count(); ++s) {
+    if (model.ks(s) <= 0.0) continue;
+    const double l = (state.x.row(model.spring_b[s]) - state.x.row(model.spring_a[s])).norm();
+    sum += (l - model.rest_length[s]) * (l - model.rest_length[s]);
+    ++counted;
+  }
+  return counted > 0 ? std::sqrt(sum / counted) : 0.0;
+}
+
+bool at_rest(const Model& model, const State& state, double energy_scale) {
+  return kinetic_energy(model, state) <= 1e-6 * energy_scale;
+}
+
+Softness softness(const Model& model, const State& settled) {
+  Softness s;
+  s.stretch = rms_stretch(model, settled);
+  s.model_stretch = rms_stretch(model, equilibrium(model, settled));
+  return s;
+}
+
+}  // namespace springlab
