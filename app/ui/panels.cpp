@@ -10,6 +10,7 @@
 #include "chart/stability_region.hpp"
 #include "draw/palette.hpp"
 #include "ui/overlay.hpp"
+#include "springlab/iterative_cost.hpp"
 #include "ui/text_wrap.hpp"
 
 namespace springlab::ui {
@@ -68,6 +69,14 @@ void gauge(app::Session& session, app::Lane& lane, float width, bool explain) {
       fraction = std::min(1.0, h * analysis->w_max() / 10.0) * 0.6;
       color = kSafe;
       verdict = "always stable";
+      // An iterative row pays in softness instead: at rest, its stretch against the spring
+      // model's under the same load (iterative_cost.hpp).
+      if (m.family == MethodFamily::Iterative && analysis->rest_stretch() > 0.0 &&
+          at_rest(sim.model(), sim.state(), sim.energy_scale())) {
+        const double ratio = analysis->rest_stretch() / std::max(rms_stretch(sim.model(), sim.state()), 1e-300);
+        verdict = fmt("bounded; at rest acts as k_s x%.2g", ratio);
+        if (ratio < 0.5) color = kNear;
+      }
     } else if (limit->h == 0.0) {
       fraction = 1.0;
       color = kBeyond;

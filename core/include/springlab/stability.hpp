@@ -143,6 +143,9 @@ class StabilityAnalysis {
   // least potential near it), springs at rest and each particle on the lowest floor for the parts
   // that are not; -infinity when nothing bounds it (a part that can fall forever, a field).
   double lowest_energy() const { return lowest_energy_; }
+  // The RMS stretch of the springs at the equilibrium (iterative_cost.hpp): what an iterative
+  // method's settled stretch is measured against.
+  double rest_stretch() const { return rest_stretch_; }
 
   // For the stability-region chart. The eigenvalues of the first-order system (dense scenes:
   // all of them; large ones: none). The modes as (gamma, kappa) points: dense scenes, one per
@@ -165,6 +168,7 @@ class StabilityAnalysis {
   std::vector<ModePoint> modes_;
   std::vector<ModePoint> growth_modes_;  // (gamma, kappa) of each mode, real eigenvalues included
   double lowest_energy_ = -std::numeric_limits<double>::infinity();
+  double rest_stretch_ = 0.0;
 };
 
 // ---- A quick bound, while the analysis runs -------------------------------------------------------

@@ -3,6 +3,7 @@
 //   the partitioned methods       symplectic Euler and Verlet by Newton on a definiteness test
 //   the dense spectrum            every eigenvalue of a small scene, for the Runge-Kutta methods
 //   the analysis                  all of it, for every method
+#include "springlab/iterative_cost.hpp"
 #include "springlab/stability.hpp"
 
 #include <Eigen/Dense>
@@ -292,6 +293,7 @@ void StabilityAnalysis::analyse(const Model& model, const State& state, int dens
   }
   const State rest = equilibrium(model, state);
   lowest_energy_ = springlab::lowest_energy(model, rest);
+  rest_stretch_ = rms_stretch(model, rest);
   const Linearised lin(model, rest);
   dofs_ = lin.dofs();
   w_bound_ = std::sqrt(lin.stiffness_bound());
