@@ -9,6 +9,7 @@
 
 #include "lesson/lesson_library.hpp"
 #include "chart/compare_charts.hpp"
+#include "springlab/solver_error.hpp"
 #include "springlab/sweep.hpp"
 #include "ui/compare_panel.hpp"
 
@@ -261,6 +262,20 @@ ClaimResult judge(const LessonClaim& c, const Session& session, const std::vecto
       out.measured = fmt("the wiggles' kinetic energy peaks at %.4g J", first) + fmt(" in the first second, %.3g J", last) +
                      fmt(" in the last (%.3g of it)", ratio);
       out.passed = first > 0.0 && ratio <= c.below;
+      break;
+    }
+    case K::SolverConverges: {
+      // From where the lane is at the claim's end: one step at its h, 8 and 64 iterations.
+      const SolverErrorStudy study = solver_error(lane.sim.model(), lane.sim.state(), lane.sim.h(), 64,
+                                                  lane.sim.settings().step);
+      for (const SolverErrorCurve& curve : study.curves) {
+        if (curve.method != lane.sim.settings().method) continue;
+        const double e8 = curve.error[3], e64 = curve.error[6];
+        const double rate = std::pow(e64 / std::max(e8, 1e-300), 1.0 / 56.0);
+        out.measured = fmt("%.3g of the step from 8 to 64 iterations", e8) + fmt(" to %.3g", e64) +
+                       fmt(": x%.4f an iteration", rate);
+        out.passed = e8 > 0.0 && rate <= c.below;
+      }
       break;
     }
     case K::OutOfReach: {

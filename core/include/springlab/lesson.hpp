@@ -45,6 +45,8 @@ struct LessonClaim {
     MomentumKept,     // the free particles' momentum and angular momentum are unchanged to `within`
     DragSlows,        // the centre of mass slows as exp(-k_drag t / m), to `within` (relative)
     InternalDecays,   // the motion besides the rigid one loses all but `below` of its energy
+    SolverConverges,  // an iterative lane's step nears the converged implicit-Euler step by a
+                      // factor below `below` an iteration (solver_error.hpp, 8 to 64 iterations)
     OutOfReach,       // the IK target is out of reach and the chain points straight at it
     PosesDiffer,      // every IK lane reaches the target, in poses `min` m apart or more
     Orders,           // measured convergence orders, and the most accurate method for its cost

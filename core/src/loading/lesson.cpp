@@ -94,7 +94,7 @@ const std::vector<std::pair<std::string, LessonClaim::Kind>>& claim_kinds() {
       {"energy-grows", K::EnergyGrows},   {"energy-decays", K::EnergyDecays}, {"energy-bounded", K::EnergyBounded},
       {"diverges", K::Diverges},          {"holds", K::Holds},                {"follows-exact", K::FollowsExact},
       {"limit", K::Limit},                {"steps-adapt", K::StepsAdapt},     {"momentum-kept", K::MomentumKept},
-      {"drag-slows", K::DragSlows},       {"internal-decays", K::InternalDecays}, {"out-of-reach", K::OutOfReach},
+      {"drag-slows", K::DragSlows},       {"internal-decays", K::InternalDecays}, {"solver-converges", K::SolverConverges}, {"out-of-reach", K::OutOfReach},
       {"poses-differ", K::PosesDiffer},   {"orders", K::Orders},              {"particles", K::Particles},
       {"bursts", K::Bursts}};
   return kinds;
@@ -165,6 +165,15 @@ LessonClaim read_claim(ObjectReader& r, const LessonStep& step, const Scene& sce
         r.fail("claim", "drag-slows needs drag above 0 in the step's scene (set \"drag\")");
       break;
     case K::InternalDecays: needs_dynamics(); c.below = r.number("below", {0.0, 1.0, true, true}); break;
+    case K::SolverConverges: {
+      needs_dynamics();
+      const std::string lane = c.lane.empty() && !lanes.empty() ? lanes.front() : c.lane;
+      const std::optional<Method> m = find_method(lane);
+      if (!m || method_info(*m).family != MethodFamily::Iterative)
+        r.fail("lane", "solver-converges is about an iterative method's lane (xpbd, local-global, vbd), not '" + lane + "'");
+      c.below = r.number("below", {0.0, 1.0, true, true});
+      break;
+    }
     case K::OutOfReach:
     case K::PosesDiffer:
       if (!ik) r.fail("claim", "'" + name + "' is about inverse kinematics; scene '" + scene.name + "' has no \"ik\" part");
@@ -311,6 +320,7 @@ std::string LessonClaim::describe() const {
     case K::StepsAdapt: return who + "rejects tries, step varies x" + fmt(ratio) + " or more";
     case K::MomentumKept: return "momentum and angular momentum kept";
     case K::DragSlows: return "centre of mass slows as exp(-k_drag n t / M)";
+    case K::SolverConverges: return who + "nears the converged implicit-Euler step by x" + fmt(below) + " or less an iteration";
     case K::InternalDecays: return "the wiggles (motion besides the rigid one) keep under " + fmt(below) + " of their kinetic energy";
     case K::OutOfReach: return who + "target out of reach, chain straight towards it";
     case K::PosesDiffer: return "solvers reach the target in poses " + fmt(min) + " m apart or more";
