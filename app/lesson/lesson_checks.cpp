@@ -9,6 +9,8 @@
 
 #include "lesson/lesson_library.hpp"
 #include "chart/compare_charts.hpp"
+#include "springlab/energy.hpp"
+#include "springlab/iterative_cost.hpp"
 #include "springlab/solver_error.hpp"
 #include "springlab/sweep.hpp"
 #include "ui/compare_panel.hpp"
@@ -262,6 +264,18 @@ ClaimResult judge(const LessonClaim& c, const Session& session, const std::vecto
       out.measured = fmt("the wiggles' kinetic energy peaks at %.4g J", first) + fmt(" in the first second, %.3g J", last) +
                      fmt(" in the last (%.3g of it)", ratio);
       out.passed = first > 0.0 && ratio <= c.below;
+      break;
+    }
+    case K::ActsAs: {
+      const Model& model = lane.sim.model();
+      if (!at_rest(model, lane.sim.state(), lane.sim.energy_scale())) {
+        out.measured = fmt("not at rest at the end (kinetic energy %.3g J)", kinetic_energy(model, lane.sim.state()));
+        break;
+      }
+      const Softness s = softness(model, lane.sim.state());
+      out.measured = fmt("stretch %.3g m RMS", s.stretch) + fmt(" against the spring model's %.3g m", s.model_stretch) +
+                     fmt(": k_s x%.3g", s.ratio());
+      out.passed = (c.below == 0.0 || s.ratio() <= c.below) && s.ratio() >= c.above;
       break;
     }
     case K::SolverConverges: {

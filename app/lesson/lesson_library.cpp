@@ -57,6 +57,7 @@ StepSetup setup_step(const LessonStep& step) {
   if (step.substeps) o.substeps = *step.substeps == 0 ? "auto" : std::to_string(*step.substeps);
   o.ks = step.ks;
   o.kd = step.kd;
+  o.iterations = step.iterations;
   o.sets = step.sets;
   StepSetup setup{prepare(step.scene, o), {}, {}};
   for (const std::string& lane : step.compare) {

@@ -78,10 +78,18 @@ void draw_compare_panel(ComparePanel& panel, const app::Session& session, float 
                         "each against the exact solution or a fine RK4 run.", panel.step_range);
   } else {
     const auto charts = chart::compare_charts(result, session.scene().name);
-    const char* tabs[] = {"error vs time", "error vs work", "convergence", "stability", "energy drift"};
-    for (int k = 0; k < 5; ++k) {
+    // A tab a chart, in compare_charts' order (energy drift and the iterative rows' solver error
+    // only where the sweep made them).
+    const auto tab = [](const std::string& name) {
+      return name == "work-precision"        ? "error vs time"
+             : name == "work-precision-work" ? "error vs work"
+             : name == "energy-drift"        ? "energy drift"
+             : name == "solver-convergence"  ? "solver error"
+                                             : name.c_str();
+    };
+    for (int k = 0; k < static_cast<int>(charts.size()); ++k) {
       if (k > 0) ImGui::SameLine();
-      if (ImGui::RadioButton(tabs[k], panel.chart == k)) panel.chart = k;
+      if (ImGui::RadioButton(tab(charts[k].name), panel.chart == k)) panel.chart = k;
     }
     if (running && panel.chart >= 3) ImGui::TextDisabled("(measured at the end of the sweep)");
     const int k = std::min(panel.chart, static_cast<int>(charts.size()) - 1);

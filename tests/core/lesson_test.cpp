@@ -120,6 +120,14 @@ TEST(Lesson, EachMistakeGetsOneMessageNamingTheFileAndTheField) {
        "/steps/0/claims/0/orders/rk45: must be a fixed-step method"},
       {R"("scene": "spring", "duration": 2, "caption": "x", "claims": [{"claim": "orders", "orders": {"euler": 1, "rk4": 4}, "best": "midpoint"}])",
        "/steps/0/claims/0/best: must be one of the methods in \"orders\""},
+      {R"("scene": "spring", "method": "xpbd", "iterations": 0, "duration": 2, "caption": "x")",
+       "/steps/0/iterations: must be an integer in [1, 10000], got 0"},
+      {R"("scene": "spring", "duration": 2, "caption": "x", "claims": [{"claim": "acts-as", "below": 0.5}])",
+       "/steps/0/claims/0/lane: acts-as is about an iterative method's lane (xpbd, local-global, vbd), not 'symplectic-euler'"},
+      {R"("scene": "spring", "method": "vbd", "duration": 2, "caption": "x", "claims": [{"claim": "acts-as"}])",
+       "/steps/0/claims/0/claim: acts-as needs \"below\", \"above\" or both"},
+      {R"("scene": "spring", "compare": ["rk4", "local-global"], "duration": 2, "caption": "x", "claims": [{"claim": "solver-converges", "lane": "rk4", "below": 0.9}])",
+       "/steps/0/claims/0/lane: solver-converges is about an iterative method's lane"},
   };
   for (const auto& [step, expected] : cases) {
     const std::string message = error_of(step);

@@ -47,6 +47,8 @@ struct LessonClaim {
     InternalDecays,   // the motion besides the rigid one loses all but `below` of its energy
     SolverConverges,  // an iterative lane's step nears the converged implicit-Euler step by a
                       // factor below `below` an iteration (solver_error.hpp, 8 to 64 iterations)
+    ActsAs,           // an iterative lane at rest stretches as springs of k_s times a factor at
+                      // most `below` and at least `above` would (iterative_cost.hpp)
     OutOfReach,       // the IK target is out of reach and the chain points straight at it
     PosesDiffer,      // every IK lane reaches the target, in poses `min` m apart or more
     Orders,           // measured convergence orders, and the most accurate method for its cost
@@ -58,7 +60,7 @@ struct LessonClaim {
   double from = 0.0;
   std::optional<double> to, by, at;
   std::optional<double> per_step;
-  double within = 0.0, h = 0.0, ratio = 2.0, below = 0.0, min = 0.0, about = 0.0;
+  double within = 0.0, h = 0.0, ratio = 2.0, below = 0.0, min = 0.0, about = 0.0, above = 0.0;
   int count = 0;
   std::map<std::string, double> orders;  // method name -> order
   std::string best;                      // Orders: the method with the least error for its cost
@@ -79,6 +81,7 @@ struct LessonStep {
   std::vector<std::string> compare;  // 2 to 4 methods, or an IK scene's solvers
   std::optional<double> dt, ks, kd;
   std::optional<int> substeps;  // 0: automatic
+  std::optional<int> iterations;  // xpbd, local-global, vbd
   double duration = 6.0;        // s of presentation time
   double speed = 1.0;
   std::vector<LessonChart> charts{LessonChart::Energy};  // one or two

@@ -94,7 +94,7 @@ const std::vector<std::pair<std::string, LessonClaim::Kind>>& claim_kinds() {
       {"energy-grows", K::EnergyGrows},   {"energy-decays", K::EnergyDecays}, {"energy-bounded", K::EnergyBounded},
       {"diverges", K::Diverges},          {"holds", K::Holds},                {"follows-exact", K::FollowsExact},
       {"limit", K::Limit},                {"steps-adapt", K::StepsAdapt},     {"momentum-kept", K::MomentumKept},
-      {"drag-slows", K::DragSlows},       {"internal-decays", K::InternalDecays}, {"solver-converges", K::SolverConverges}, {"out-of-reach", K::OutOfReach},
+      {"drag-slows", K::DragSlows},       {"internal-decays", K::InternalDecays}, {"solver-converges", K::SolverConverges}, {"acts-as", K::ActsAs}, {"out-of-reach", K::OutOfReach},
       {"poses-differ", K::PosesDiffer},   {"orders", K::Orders},              {"particles", K::Particles},
       {"bursts", K::Bursts}};
   return kinds;
@@ -165,13 +165,20 @@ LessonClaim read_claim(ObjectReader& r, const LessonStep& step, const Scene& sce
         r.fail("claim", "drag-slows needs drag above 0 in the step's scene (set \"drag\")");
       break;
     case K::InternalDecays: needs_dynamics(); c.below = r.number("below", {0.0, 1.0, true, true}); break;
+    case K::ActsAs:
     case K::SolverConverges: {
       needs_dynamics();
       const std::string lane = c.lane.empty() && !lanes.empty() ? lanes.front() : c.lane;
       const std::optional<Method> m = find_method(lane);
       if (!m || method_info(*m).family != MethodFamily::Iterative)
-        r.fail("lane", "solver-converges is about an iterative method's lane (xpbd, local-global, vbd), not '" + lane + "'");
-      c.below = r.number("below", {0.0, 1.0, true, true});
+        r.fail("lane", name + " is about an iterative method's lane (xpbd, local-global, vbd), not '" + lane + "'");
+      if (c.kind == K::SolverConverges) {
+        c.below = r.number("below", {0.0, 1.0, true, true});
+      } else {
+        if (!r.has("below") && !r.has("above")) r.fail("claim", "acts-as needs \"below\", \"above\" or both");
+        if (r.has("below")) c.below = r.number("below", json_reader::positive(1e3));
+        if (r.has("above")) c.above = r.number("above", json_reader::positive(1e3));
+      }
       break;
     }
     case K::OutOfReach:
@@ -230,6 +237,7 @@ LessonStep read_step(ObjectReader& r, const std::string& folder, const LessonSce
   if (r.has("dt")) step.dt = r.number("dt", {0.0, 1.0, true, false});
   if (r.has("ks")) step.ks = r.number("ks", json_reader::non_negative(1e12));
   if (r.has("kd")) step.kd = r.number("kd", json_reader::non_negative(1e12));
+  if (r.has("iterations")) step.iterations = static_cast<int>(r.integer("iterations", 1, 10000));
   if (const json* s = r.raw("substeps")) {
     if (s->is_string() && s->get<std::string>() == "auto") step.substeps = 0;
     else if (s->is_number()) step.substeps = static_cast<int>(r.integer("substeps", 1, 100000));
@@ -280,7 +288,7 @@ LessonStep read_step(ObjectReader& r, const std::string& folder, const LessonSce
   if (scene.ik) {
     if (step.method) r.fail("method", "scene '" + scene.name + "' is an inverse-kinematics scene: it has solvers (" +
                                           ik_solver_names() + "), not methods; name them in \"compare\"");
-    for (const char* key : {"dt", "ks", "kd", "substeps"})
+    for (const char* key : {"dt", "ks", "kd", "substeps", "iterations"})
       if (r.has(key)) r.fail(key, "has no meaning on inverse-kinematics scene '" + scene.name + "'");
     if (step.accuracy || step.region) r.fail("show", "an inverse-kinematics scene has no accuracy chart nor stability region");
   }
@@ -320,6 +328,9 @@ std::string LessonClaim::describe() const {
     case K::StepsAdapt: return who + "rejects tries, step varies x" + fmt(ratio) + " or more";
     case K::MomentumKept: return "momentum and angular momentum kept";
     case K::DragSlows: return "centre of mass slows as exp(-k_drag n t / M)";
+    case K::ActsAs:
+      return who + "at rest acts as k_s x" + (above > 0.0 ? fmt(above) + " or more" : "") +
+             (above > 0.0 && below > 0.0 ? ", " : "") + (below > 0.0 ? fmt(below) + " or less" : "");
     case K::SolverConverges: return who + "nears the converged implicit-Euler step by x" + fmt(below) + " or less an iteration";
     case K::InternalDecays: return "the wiggles (motion besides the rigid one) keep under " + fmt(below) + " of their kinetic energy";
     case K::OutOfReach: return who + "target out of reach, chain straight towards it";
