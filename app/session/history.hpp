@@ -29,13 +29,14 @@ class Series {
 
 struct History {
   Series t, kinetic, potential, total, dissipated;
+  Series net;         // E - E0 - W (Simulation::net_energy): with `dissipated`, the method's own losses
   Series x, v;        // the watched particle: its coordinate along the watched axis, and velocity
   Series exact_x;     // the exact solution there, where the scene has one (else empty)
   Series ik_error;    // IK scenes: the distance from the chain's end to the target (m)
   Series step;        // adaptive methods: the internal step their controller chose (s)
   Series rejected;    // adaptive methods: tries thrown away so far
   void clear() {
-    for (Series* s : {&t, &kinetic, &potential, &total, &dissipated, &x, &v, &exact_x, &ik_error, &step, &rejected}) s->clear();
+    for (Series* s : {&t, &kinetic, &potential, &total, &dissipated, &net, &x, &v, &exact_x, &ik_error, &step, &rejected}) s->clear();
   }
 };
 

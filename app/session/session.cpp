@@ -137,6 +137,7 @@ void Session::sample(Lane& lane) {
   h.potential.push(e.potential());
   h.total.push(e.total());
   h.dissipated.push(sim.dissipated());
+  h.net.push(sim.net_energy());
   h.x.push(sim.state().x(watched_, watched_axis_));
   h.v.push(sim.state().v(watched_, watched_axis_));
   if (lane.exact) h.exact_x.push(lane.exact->at(t).x(watched_, watched_axis_));

@@ -69,13 +69,27 @@ void gauge(app::Session& session, app::Lane& lane, float width, bool explain) {
       fraction = std::min(1.0, h * analysis->w_max() / 10.0) * 0.6;
       color = kSafe;
       verdict = "always stable";
-      // An iterative row pays in softness instead: at rest, its stretch against the spring
-      // model's under the same load (iterative_cost.hpp).
-      if (m.family == MethodFamily::Iterative && analysis->rest_stretch() > 0.0 &&
-          at_rest(sim.model(), sim.state(), sim.energy_scale())) {
-        const double ratio = analysis->rest_stretch() / std::max(rms_stretch(sim.model(), sim.state()), 1e-300);
-        verdict = fmt("bounded; at rest acts as k_s x%.2g", ratio);
-        if (ratio < 0.5) color = kNear;
+      // An iterative row pays instead: at rest in softness, its stretch against the spring
+      // model's under the same load; in motion in damping, the energy it takes out beyond the
+      // physics' damping over the last second (iterative_cost.hpp).
+      if (m.family == MethodFamily::Iterative) {
+        const app::History& hist = lane.history;
+        const std::size_t n = hist.t.size(), back = std::min<std::size_t>(n, 61);
+        if (analysis->rest_stretch() > 0.0 && at_rest(sim.model(), sim.state(), sim.energy_scale())) {
+          const double ratio = analysis->rest_stretch() / std::max(rms_stretch(sim.model(), sim.state()), 1e-300);
+          verdict = fmt("bounded; at rest acts as k_s x%.2g", ratio);
+          if (ratio < 0.5) color = kNear;
+        } else if (back >= 2 && hist.net.size() == n && hist.dissipated.size() == n) {
+          const std::size_t a = n - back, b = n - 1;
+          const double dt = hist.t[b] - hist.t[a];
+          const double lost = -((hist.net[b] - hist.net[a]) + (hist.dissipated[b] - hist.dissipated[a]));
+          // Negative: energy went into the springs' stretch, counted with k_s (XPBD at few passes).
+          if (dt > 0.0 && lost >= 0.0) verdict = fmt("bounded; damps %.2g W extra", lost / dt);
+          if (dt > 0.0 && lost < 0.0) {
+            verdict = fmt("bounded; +%.2g W into stretch", -lost / dt);
+            color = kNear;
+          }
+        }
       }
     } else if (limit->h == 0.0) {
       fraction = 1.0;
