@@ -165,6 +165,19 @@ TEST(Iterative, SoftnessAtRestAgainstTheSpringModel) {
   EXPECT_NEAR(settled(Method::SymplecticEuler, chain.dt, 1, 40.0), 1.0, 1e-3);
 }
 
+// Local-global keeps its factor between steps and factorises again when k_s changes: a step
+// after the change equals one made with a fresh workspace (a stale factor would differ).
+TEST(Iterative, LocalGlobalFactorisesAgainWhenTheModelChanges) {
+  Scene s = moving_cloth();
+  Workspace kept;
+  State out;
+  step(Method::LocalGlobal, s.model, s.state, out, 1.0 / 60.0, {}, kept);
+  set_stiffness(s.model, 3.0 * s.model.materials[0].ks);
+  step(Method::LocalGlobal, s.model, s.state, out, 1.0 / 60.0, {}, kept);
+  EXPECT_EQ(state_hash(out), state_hash(one_step(s, Method::LocalGlobal, 1.0 / 60.0, 0)));
+  EXPECT_EQ(kept.iterative->local_global.factorisations, 2);
+}
+
 // The colouring: no spring joins two vertices of one colour, every vertex has one.
 TEST(Iterative, VertexColouringIsProper) {
   const Scene s = test::shipped("cloth", {"cloth.width=16", "cloth.height=12"});

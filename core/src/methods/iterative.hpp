@@ -41,14 +41,16 @@ void finish(const Model& model, const State& in, State& out, double h);
 
 // local_global.cpp: the prefactored global matrix and what it was made for.
 struct LocalGlobalSolver {
-  // What the factorisation depends on; compared each step, refactorised when any differs.
+  // What the factorisation depends on; compared each step (without copying), refactorised and
+  // taken again when any differs.
   struct Key {
     double h = 0.0, drag = 0.0;
     std::vector<double> mass, inv_mass;
     std::vector<SpringMaterial> materials;
     const void* spans = nullptr;
     int springs = -1;
-    bool operator==(const Key&) const;
+    bool matches(const Model& model, double step) const;
+    void take(const Model& model, double step);
   } key;
   std::vector<int> row;  // per particle: its row of the factor (its own order), or -1 (pinned)
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor;

@@ -32,13 +32,23 @@
 
 namespace springlab {
 
-bool LocalGlobalSolver::Key::operator==(const Key& o) const {
-  if (h != o.h || drag != o.drag || spans != o.spans || springs != o.springs || mass != o.mass ||
-      inv_mass != o.inv_mass || materials.size() != o.materials.size())
+bool LocalGlobalSolver::Key::matches(const Model& model, double step) const {
+  if (h != step || drag != model.drag || spans != model.spans.data() || springs != model.spring_count() ||
+      mass != model.mass || inv_mass != model.inv_mass || materials.size() != model.materials.size())
     return false;
   for (std::size_t m = 0; m < materials.size(); ++m)
-    if (materials[m].ks != o.materials[m].ks || materials[m].kd != o.materials[m].kd) return false;
+    if (materials[m].ks != model.materials[m].ks || materials[m].kd != model.materials[m].kd) return false;
   return true;
+}
+
+void LocalGlobalSolver::Key::take(const Model& model, double step) {
+  h = step;
+  drag = model.drag;
+  mass = model.mass;
+  inv_mass = model.inv_mass;
+  materials = model.materials;
+  spans = model.spans.data();
+  springs = model.spring_count();
 }
 
 namespace {
@@ -199,11 +209,9 @@ void local_global(const Model& model, const State& in, State& out, double h, con
   LocalGlobalSolver& S = I.local_global;
   iterative::predict(model, in, h, I.y, I.mass);
 
-  LocalGlobalSolver::Key key{h, model.drag, model.mass, model.inv_mass, model.materials,
-                             model.spans.data(), model.spring_count()};
-  if (!S.factored || !(key == S.key)) {
+  if (!S.factored || !S.key.matches(model, h)) {
     factorise(model, h, I.mass, S);
-    S.key = std::move(key);
+    S.key.take(model, h);
   }
 
   out.resize(in.particle_count());
