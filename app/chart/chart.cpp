@@ -133,4 +133,50 @@ void axis_range(const Chart& chart, bool x_axis, double& lo, double& hi) {
   if (!axis.max) hi += 0.05 * (hi - lo);
 }
 
+Corner legend_corner(const Chart& chart, double width, double height) {
+  double xlo, xhi, ylo, yhi;
+  axis_range(chart, true, xlo, xhi);
+  axis_range(chart, false, ylo, yhi);
+  // The plot's unit square, y up.
+  const auto unit = [](double v, double lo, double hi, bool log) {
+    return log ? (std::log10(v) - std::log10(lo)) / (std::log10(hi) - std::log10(lo)) : (v - lo) / (hi - lo);
+  };
+  const double pad = 0.01;  // the box's own margin
+  const double w = std::min(width + pad, 1.0), h = std::min(height + pad, 1.0);
+  const Corner corners[] = {Corner::TopRight, Corner::TopLeft, Corner::BottomRight, Corner::BottomLeft};
+  int covered[4] = {0, 0, 0, 0};
+  const auto count = [&](double u, double v) {
+    if (!(u >= 0.0 && u <= 1.0 && v >= 0.0 && v <= 1.0)) return;
+    const bool right = u >= 1.0 - w, left = u <= w, up = v >= 1.0 - h, down = v <= h;
+    covered[0] += right && up;
+    covered[1] += left && up;
+    covered[2] += right && down;
+    covered[3] += left && down;
+  };
+  constexpr int kSamples = 24;  // along each segment
+  for (const Series& s : chart.series) {
+    bool have = false;
+    double pu = 0.0, pv = 0.0;
+    for (std::size_t k = 0; k < s.x.size() && k < s.y.size(); ++k) {
+      const double x = s.x[k], y = s.y[k];
+      if (!std::isfinite(x) || !std::isfinite(y) || (chart.x.log && x <= 0) || (chart.y.log && y <= 0)) {
+        have = false;
+        continue;
+      }
+      const double u = unit(x, xlo, xhi, chart.x.log), v = unit(y, ylo, yhi, chart.y.log);
+      if (have)
+        for (int j = 1; j < kSamples; ++j) {
+          const double f = static_cast<double>(j) / kSamples;
+          count(pu + f * (u - pu), pv + f * (v - pv));
+        }
+      count(u, v);
+      pu = u, pv = v, have = true;
+    }
+  }
+  int best = 0;
+  for (int c = 1; c < 4; ++c)
+    if (covered[c] < covered[best]) best = c;
+  return corners[best];
+}
+
 }  // namespace springlab::chart

@@ -52,6 +52,13 @@ std::vector<Tick> ticks(double lo, double hi, bool log, int target_count = 5);
 // The range the axis shows: the data's, widened to whole ticks, or the one set.
 void axis_range(const Chart& chart, bool x_axis, double& lo, double& hi);
 
+// Where a legend of the given size (fractions of the plot's width and height) covers the least
+// of the data: the corner whose box holds the fewest of the series' points, each line sampled
+// along its segments in the plot's own (log or linear) coordinates. Ties keep the earlier corner
+// in this order, so that a legend stays top right unless it would hide something there.
+enum class Corner { TopRight, TopLeft, BottomRight, BottomLeft };
+Corner legend_corner(const Chart& chart, double width, double height);
+
 // "0.5", "1e-06", "120": short tick labels; with the ticks' spacing, as many digits as the labels
 // need to differ ("1.9990", "1.9995").
 std::string format_tick(double value, double step = 0.0);

@@ -155,11 +155,16 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
       width = std::max(width, size.x);
       height += size.y;
     }
-    const float x = right - width - 34.0f;
-    float y = top + 4.0f;
+    // The box is the labels and their swatches (26 px) with 6 px round them, 4 px in from the
+    // plot's edge, in the corner where it hides the least.
+    const Corner corner = legend_corner(chart, (width + 40.0f) / (right - left), (height + 8.0f) / (bottom - top));
+    const bool on_left = corner == Corner::TopLeft || corner == Corner::BottomLeft;
+    const bool below = corner == Corner::BottomRight || corner == Corner::BottomLeft;
+    const float x = on_left ? left + 10.0f : right - width - 34.0f;
+    float y = below ? bottom - height - 4.0f : top + 4.0f;
     if (height > 0.0f)
-      list->AddRectFilled(ImVec2(x - 6, y - 2), ImVec2(right - 4, y + height + 2), ImGui::GetColorU32(ImGuiCol_WindowBg, 0.85f),
-                          3.0f);
+      list->AddRectFilled(ImVec2(x - 6, y - 2), ImVec2(x + width + 30, y + height + 2),
+                          ImGui::GetColorU32(ImGuiCol_WindowBg, 0.85f), 3.0f);
     for (std::size_t k = 0; k < chart.series.size(); ++k) {
       const Series& s = chart.series[k];
       if (s.label.empty()) continue;

@@ -133,7 +133,12 @@ std::string to_svg(const Chart& chart, int width, int height) {
         ++rows;
       }
     if (rows > 0) {
-      const double w = chars * kChar + 44, x = right - w - 6, y0 = top + 6;
+      // In the corner where it hides the least (chart.hpp).
+      const double w = chars * kChar + 44;
+      const Corner corner = legend_corner(chart, (w + 14) / (right - left), (rows * line + 12) / (bottom - top));
+      const bool on_left = corner == Corner::TopLeft || corner == Corner::BottomLeft;
+      const bool below = corner == Corner::BottomRight || corner == Corner::BottomLeft;
+      const double x = on_left ? left + 10 : right - w - 6, y0 = below ? bottom - rows * line - 6 : top + 6;
       s << "<rect x=\"" << x - 6 << "\" y=\"" << y0 - 4 << "\" width=\"" << w + 8 << "\" height=\"" << rows * line + 8
         << "\" rx=\"3\" fill=\"#0d0f12\" fill-opacity=\"0.85\"/>\n";
       int row = 0;

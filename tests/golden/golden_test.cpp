@@ -240,15 +240,17 @@ INSTANTIATE_TEST_SUITE_P(Cases, Golden, ::testing::ValuesIn(load_cases()), [](co
   return name;
 });
 
-// The deterministic charts of `compare spring` (not work-precision against wall time).
-TEST(GoldenCharts, OfTheSpring) {
+// The deterministic charts of `compare` (not work-precision against wall time): the spring's,
+// and the chain's with the iterative rows beside the lecture's methods (their solver error
+// against iterations, and their time-stepping error on the work-precision chart).
+void check_charts(const std::string& scene, const std::string& options, std::initializer_list<const char*> charts) {
   TempDir dir;
-  const Result r = springlab("compare spring --software --points 6 --duration 1 --drift-duration 5 "
-                             "--tol-range 1e-9:1e-5 --out '" + dir.path.string() + "'");
+  const Result r = springlab("compare " + scene + " --software " + options + " --out '" + dir.path.string() + "'");
   ASSERT_EQ(r.status, 0) << r.err;
-  for (const char* chart : {"work-precision-work", "convergence", "stability", "energy-drift"}) {
+  for (const char* chart : charts) {
+    const std::string name = "charts-" + scene + "-" + chart;
     const fs::path actual_path = dir / (std::string(chart) + ".png");
-    const fs::path reference = golden_dir() / ("charts-spring-" + std::string(chart) + ".png");
+    const fs::path reference = golden_dir() / (name + ".png");
     if (std::getenv("SPRINGLAB_UPDATE_GOLDENS")) {
       fs::copy_file(actual_path, reference, fs::copy_options::overwrite_existing);
       std::printf("updated %s\n", reference.c_str());
@@ -261,11 +263,22 @@ TEST(GoldenCharts, OfTheSpring) {
     const Difference d = compare(expected, actual);
     if (d.failed()) {
       fs::create_directories(failure_dir());
-      app::write_png(failure_dir() / ("charts-spring-" + std::string(chart) + "-actual.png"), actual, 6);
-      app::write_png(failure_dir() / ("charts-spring-" + std::string(chart) + "-diff.png"), d.diff, 6);
-      ADD_FAILURE() << chart << ": " << describe(d) << "; see " << failure_dir();
+      app::write_png(failure_dir() / (name + "-actual.png"), actual, 6);
+      app::write_png(failure_dir() / (name + "-diff.png"), d.diff, 6);
+      ADD_FAILURE() << name << ": " << describe(d) << "; see " << failure_dir();
     }
   }
+}
+
+TEST(GoldenCharts, OfTheSpring) {
+  check_charts("spring", "--points 6 --duration 1 --drift-duration 5 --tol-range 1e-9:1e-5",
+               {"work-precision-work", "convergence", "stability", "energy-drift"});
+}
+
+TEST(GoldenCharts, OfTheChainWithWhatGamesUse) {
+  check_charts("chain", "--points 4 --duration 0.5 --drift-duration 1 "
+               "--methods symplectic-euler,rk4,implicit-euler,xpbd,local-global,vbd",
+               {"solver-convergence", "work-precision-work"});
 }
 
 std::string bytes(const fs::path& p) { return read_file(p); }
