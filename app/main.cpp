@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   commands["compare"] = add_compare_command(app);
   commands["bench"] = add_bench_command(app);
   commands["lesson"] = add_lesson_command(app);
+  commands["tableau"] = add_tableau_command(app);
 
   try {
     app.parse(argc, argv);

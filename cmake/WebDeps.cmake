@@ -1,5 +1,5 @@
 # What the browser build (EMSCRIPTEN) takes from Debian's packages without reaching into the
-# system's own headers (glibc's would shadow emscripten's): Eigen and nlohmann-json, header-only,
+# system's own headers (glibc's would shadow emscripten's): Eigen, nlohmann-json and Boost, header-only,
 # through links in the build folder; Dear ImGui 1.86 (the same as libimgui-dev's headers)
 # compiled from Debian's source package, which scripts/web.sh unpacks into the build folder.
 set(SPRINGLAB_IMGUI_DIR "${CMAKE_BINARY_DIR}/_deps/imgui-1.86" CACHE PATH "Dear ImGui 1.86's sources")
@@ -9,10 +9,10 @@ endif()
 
 set(deps_include "${CMAKE_BINARY_DIR}/_deps/include")
 file(MAKE_DIRECTORY "${deps_include}")
-foreach(link IN ITEMS /usr/include/eigen3/Eigen /usr/include/nlohmann)
+foreach(link IN ITEMS /usr/include/eigen3/Eigen /usr/include/nlohmann /usr/include/boost)
   get_filename_component(name "${link}" NAME)
   if(NOT EXISTS "${link}")
-    message(FATAL_ERROR "${link} is missing: apt-get install libeigen3-dev nlohmann-json3-dev")
+    message(FATAL_ERROR "${link} is missing: apt-get install libeigen3-dev nlohmann-json3-dev libboost-dev")
   endif()
   file(CREATE_LINK "${link}" "${deps_include}/${name}" SYMBOLIC)
 endforeach()
@@ -21,6 +21,8 @@ add_library(Eigen3::Eigen INTERFACE IMPORTED)
 target_include_directories(Eigen3::Eigen SYSTEM INTERFACE "${deps_include}")
 add_library(nlohmann_json::nlohmann_json INTERFACE IMPORTED)
 target_include_directories(nlohmann_json::nlohmann_json SYSTEM INTERFACE "${deps_include}")
+add_library(Boost::headers INTERFACE IMPORTED)
+target_include_directories(Boost::headers SYSTEM INTERFACE "${deps_include}")
 
 # Dear ImGui with its GLFW and OpenGL 3 backends (the latter picks OpenGL ES 3 under emscripten).
 add_library(imgui STATIC

@@ -26,7 +26,7 @@ fi
 apt() { DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get -o DPkg::Lock::Timeout=300 -q "$@"; }
 
 # Debian's packages, only those missing. (Node: the machine's own when it has one.)
-packages=(emscripten chromium cmake ninja-build libeigen3-dev nlohmann-json3-dev googletest fonts-dejavu-core
+packages=(emscripten chromium cmake ninja-build libeigen3-dev nlohmann-json3-dev libboost-dev googletest fonts-dejavu-core
           python3 xz-utils)
 command -v node >/dev/null || packages+=(nodejs)
 command -v npm >/dev/null || packages+=(npm)

@@ -26,30 +26,41 @@ const fs::path& data_dir() {
   return dir;
 }
 
-std::vector<std::string> shipped_scenes() {
+namespace {
+
+// The names of assets/<folder>/*.json, sorted.
+std::vector<std::string> shipped(const char* folder) {
   std::vector<std::string> names;
   std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(data_dir() / "assets" / "scenes", ec))
+  for (const auto& entry : fs::directory_iterator(data_dir() / "assets" / folder, ec))
     if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
   std::sort(names.begin(), names.end());
   return names;
 }
 
-std::string resolve_scene(const std::string& name) {
+// A file, or a shipped one of this kind by name; else an InputError naming the shipped ones.
+std::string resolve(const char* kind, const char* folder, const std::string& name) {
   std::error_code ec;
   if (fs::is_regular_file(name, ec)) return name;
   const bool looks_like_name = name.find('/') == std::string::npos && !name.ends_with(".json");
   if (looks_like_name) {
-    const fs::path shipped = data_dir() / "assets" / "scenes" / (name + ".json");
-    if (fs::is_regular_file(shipped, ec)) return shipped.string();
+    const fs::path path = data_dir() / "assets" / folder / (name + ".json");
+    if (fs::is_regular_file(path, ec)) return path.string();
   }
-  const auto names = shipped_scenes();
+  const auto names = shipped(folder);
   std::string list;
   for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
   const std::string near = looks_like_name ? closest_match(name, names.data(), names.size()) : "";
-  throw InputError("scene '" + name + "': no such file" +
-                   (looks_like_name ? ", and no shipped scene of that name" : "") +
+  throw InputError(std::string(kind) + " '" + name + "': no such file" +
+                   (looks_like_name ? std::string(", and no shipped ") + kind + " of that name" : std::string()) +
                    (near.empty() ? "" : "; did you mean '" + near + "'?") + " (shipped: " + list + ")");
 }
+
+}  // namespace
+
+std::vector<std::string> shipped_scenes() { return shipped("scenes"); }
+std::string resolve_scene(const std::string& name) { return resolve("scene", "scenes", name); }
+std::vector<std::string> shipped_tableaux() { return shipped("tableaux"); }
+std::string resolve_tableau(const std::string& name) { return resolve("tableau", "tableaux", name); }
 
 }  // namespace springlab::app

@@ -18,4 +18,8 @@ std::string resolve_scene(const std::string& name_or_path);
 // Names of the shipped scenes, sorted.
 std::vector<std::string> shipped_scenes();
 
+// The same for tableaux (assets/tableaux/NAME.json): "rk4", or a path to a JSON file.
+std::string resolve_tableau(const std::string& name_or_path);
+std::vector<std::string> shipped_tableaux();
+
 }  // namespace springlab::app
