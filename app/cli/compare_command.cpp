@@ -144,14 +144,7 @@ int compare(const CompareOptions& o) {
   if (o.points < 2 || o.points > 64) throw InputError("--points: must be in [2, 64], got " + std::to_string(o.points));
   if (o.repeats < 1 || o.repeats > 100) throw InputError("--repeats: must be in [1, 100], got " + std::to_string(o.repeats));
   std::vector<Method> list;
-  if (o.methods) {
-    std::stringstream s(*o.methods);
-    for (std::string name; std::getline(s, name, ',');) {
-      const auto m = find_method(name);
-      if (!m) throw InputError("--methods: unknown method '" + name + "' (methods: " + method_names() + ")");
-      list.push_back(*m);
-    }
-  }
+  if (o.methods) list = parse_method_list(*o.methods, "--methods");
   Prepared p = prepare(o.scene, o.sim);
   require_integration(p.scene, "compare");
   SweepSettings s;

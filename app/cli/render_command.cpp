@@ -53,19 +53,6 @@ void parse_size(const std::string& text, int& width, int& height) {
                      text + "'");
 }
 
-std::vector<Method> parse_methods(const std::string& list) {
-  std::vector<Method> out;
-  std::stringstream s(list);
-  for (std::string name; std::getline(s, name, ',');) {
-    const auto m = find_method(name);
-    if (!m) throw InputError("--compare: unknown method '" + name + "' (methods: " + method_names() + ")");
-    out.push_back(*m);
-  }
-  if (out.size() < 2 || out.size() > Session::kMaxLanes)
-    throw InputError("--compare: give 2 to 4 methods separated by commas, e.g. euler,verlet");
-  return out;
-}
-
 // For an inverse-kinematics scene, --compare names solvers.
 std::vector<IkSolver> parse_solvers(const std::string& list) {
   std::vector<IkSolver> out;
@@ -186,7 +173,7 @@ int render(const RenderOptions& o) {
     std::vector<IkSolver> compare_solvers;
     if (o.compare) {
       if (p.scene.ik) compare_solvers = parse_solvers(*o.compare);
-      else compare = parse_methods(*o.compare);
+      else compare = parse_compare(*o.compare, "--compare");
     }
     std::optional<Script> script;
     if (o.script) script = load_script(*o.script, p.scene);

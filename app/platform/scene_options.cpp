@@ -26,14 +26,19 @@ std::string parse_whole_number(std::string& text, double lo, double hi) {
   return s.str();
 }
 
-std::vector<Method> parse_compare(const std::string& text, const char* option) {
-  std::vector<Method> lanes;
+std::vector<Method> parse_method_list(const std::string& text, const char* option) {
+  std::vector<Method> list;
   std::stringstream s(text);
   for (std::string name; std::getline(s, name, ',');) {
-    const auto m = find_method(name);
-    if (!m) throw InputError(std::string(option) + ": unknown method '" + name + "' (methods: " + method_names() + ")");
-    lanes.push_back(*m);
+    const auto m = lookup_method(name);
+    if (!m) throw InputError(std::string(option) + ": unknown method '" + name + "' (" + method_choices() + ")");
+    list.push_back(*m);
   }
+  return list;
+}
+
+std::vector<Method> parse_compare(const std::string& text, const char* option) {
+  const std::vector<Method> lanes = parse_method_list(text, option);
   if (lanes.size() < 2 || lanes.size() > 4)
     throw InputError(std::string(option) + ": give 2 to 4 methods separated by commas, e.g. euler,verlet");
   return lanes;
@@ -73,14 +78,14 @@ Prepared prepare(const std::string& scene_name, const SimOptions& o) {
   }
   std::optional<Method> method;
   if (o.method) {
-    method = find_method(*o.method);
+    method = lookup_method(*o.method);
     if (!method) {
       std::vector<std::string> names;
       for (const auto& m : methods()) names.emplace_back(m.name);
+      for (const auto& t : shipped_tableaux()) names.push_back(t);
       const std::string near = closest_match(*o.method, names.data(), names.size());
       throw InputError("--method: unknown method '" + *o.method + "'" +
-                       (near.empty() ? "" : "; did you mean '" + near + "'?") +
-                       " (methods: " + method_names() + ")");
+                       (near.empty() ? "" : "; did you mean '" + near + "'?") + " (" + method_choices() + ")");
     }
   }
 

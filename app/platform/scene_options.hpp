@@ -46,7 +46,10 @@ void check_option(const char* name, double value, double lo, double hi, bool lo_
 // reason it is not: "must be a whole number in [1, 1e+12], got 2.5" (text left as it was).
 std::string parse_whole_number(std::string& text, double lo, double hi);
 
-// Compare lanes from "euler,verlet": 2 to 4 known methods. Throws InputError naming `option`.
+// Methods from "euler,heun,mine.json": built-in methods, shipped tableaux or tableau files
+// (lookup_method, util/data_dir.hpp). Throws InputError naming `option`.
+std::vector<Method> parse_method_list(const std::string& text, const char* option);
+// Compare lanes: 2 to 4 of them.
 std::vector<Method> parse_compare(const std::string& text, const char* option);
 
 }  // namespace springlab::app

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "springlab/butcher.hpp"
 #include "springlab/error.hpp"
 
 namespace springlab::app {
@@ -62,5 +63,24 @@ std::vector<std::string> shipped_scenes() { return shipped("scenes"); }
 std::string resolve_scene(const std::string& name) { return resolve("scene", "scenes", name); }
 std::vector<std::string> shipped_tableaux() { return shipped("tableaux"); }
 std::string resolve_tableau(const std::string& name) { return resolve("tableau", "tableaux", name); }
+
+std::optional<Method> lookup_method(const std::string& name) {
+  if (const auto m = find_method(name)) return m;
+  std::error_code ec;
+  fs::path path = name;
+  if (!fs::is_regular_file(path, ec)) {
+    if (name.find('/') != std::string::npos || name.ends_with(".json")) return std::nullopt;
+    path = data_dir() / "assets" / "tableaux" / (name + ".json");
+    if (!fs::is_regular_file(path, ec)) return std::nullopt;
+  }
+  return add_tableau_method(load_tableau_file(path.string()), path.stem().string());
+}
+
+std::string method_choices() {
+  std::string tableaux;
+  for (const std::string& n : shipped_tableaux())
+    if (!find_method(n)) tableaux += (tableaux.empty() ? "" : ", ") + n;
+  return "methods: " + method_names() + "; tableaux: " + tableaux + ", or a tableau's JSON file";
+}
 
 }  // namespace springlab::app

@@ -21,6 +21,7 @@
 #include "springlab/forces.hpp"
 #include "springlab/model.hpp"
 #include "springlab/state.hpp"
+#include "springlab/butcher.hpp"
 #include "springlab/tableau.hpp"
 
 namespace springlab {
@@ -75,6 +76,7 @@ struct Counters {
 
 struct ImplicitSolver;    // implicit_euler.cpp
 struct IterativeSolvers;  // methods/iterative.hpp: xpbd, local-global, vbd
+struct StageSolvers;      // methods/tableau_steps.hpp: a diagonally implicit tableau's stages
 
 // Scratch memory and the little history some methods keep between steps. Allocated on first
 // use and reused, so a step allocates nothing once running.
@@ -101,6 +103,7 @@ struct Workspace {
 
   std::unique_ptr<ImplicitSolver> implicit;
   std::unique_ptr<IterativeSolvers> iterative;
+  std::unique_ptr<StageSolvers> stages;
 
   // The check of the state a step made (energy.hpp), when the step made it itself: the explicit
   // methods probe each block of particles as they finish it, while it is in cache, and sum the
@@ -125,6 +128,9 @@ struct Workspace {
 
 using StepFunction = void (*)(const Model& model, const State& in, State& out, double h,
                               const StepSettings& settings, Workspace& ws);
+// The step of a row made from a tableau (add_tableau_method): the same, given the row's tableau.
+using TableauStepFunction = void (*)(const Tableau& tableau, const Model& model, const State& in, State& out,
+                                     double h, const StepSettings& settings, Workspace& ws);
 
 // A step that cannot be completed (an adaptive step below its floor). The simulation reports it
 // as a divergence.
@@ -168,6 +174,8 @@ struct MethodInfo {
   StepFunction step;
   // Runge-Kutta and implicit rows: the tableau (R(z) in tableau.hpp, the region chart's edge).
   const Tableau* tableau = nullptr;
+  // Rows made from a tableau at run time step with this instead of `step`.
+  TableauStepFunction tableau_step = nullptr;
   // The mode's limit in closed form where there is one (every partitioned row; for a
   // Runge-Kutta row a shortcut the contract test holds to R(z)); otherwise from R(z).
   ModeLimit mode_limit = nullptr;
@@ -193,6 +201,15 @@ struct MethodInfo {
 std::span<const MethodInfo> methods();
 const MethodInfo& method_info(Method method);
 std::optional<Method> find_method(std::string_view name);
+
+// A row made from a tableau read as data (springlab/butcher.hpp), added to the table for the rest
+// of the process, after the built-in rows: explicit tableaux step as RK4 does, diagonally
+// implicit ones solve each stage as an implicit Euler step (tableau_steps.cpp); the stability
+// analysis, the sub-steps, the gauge, the audit and the region chart read its R(z) as they read
+// RK4's. Its id is a Method past the enum's values. The same name and entries again give the
+// same row; the same name with other entries, a built-in's name, or more than 32 added rows
+// throw InputError. Rows are never removed (threads may be reading them).
+Method add_tableau_method(const ButcherTableau& tableau, const std::string& name);
 // "euler, symplectic-euler, ..." for messages.
 std::string method_names();
 

@@ -17,6 +17,10 @@ struct Tableau {
   int stages = 0;
   std::vector<double> a;  // stages x stages, row by row
   std::vector<double> b;  // stages
+  // R(z) = P(z) / Q(z), coefficients from z^0 up: for an explicit tableau P is the polynomial
+  // below and Q = 1; for an implicit one both from det(I - zA + z 1 b^T) and det(I - zA), found
+  // at construction in doubles (exactly, for a tableau read as data: springlab/butcher.hpp).
+  std::vector<double> numerator, denominator;
 
   Tableau() = default;
   Tableau(std::vector<std::vector<double>> rows, std::vector<double> weights);
@@ -28,6 +32,8 @@ struct Tableau {
   std::complex<double> stability_function(std::complex<double> z) const;
   // gamma_0 .. gamma_s (explicit tableaux only).
   std::vector<double> stability_polynomial() const;
+  // The tableau's stated stability function wins: the same R(z) from exact arithmetic.
+  void set_stability_function(std::vector<double> p, std::vector<double> q);
 };
 
 }  // namespace springlab

@@ -1,7 +1,6 @@
 // A tableau read from JSON (springlab/butcher.hpp; format: assets/tableaux/README.md). Every
 // entry is kept as written and checked to be an exact number; a message names the field, the row
 // and the column.
-#include <charconv>
 #include <cmath>
 
 #include "loading/json_reader.hpp"
@@ -26,10 +25,7 @@ TableauEntry entry(const json& value, const std::string& pointer, const std::str
   } else if (value.is_number_integer()) {
     e.text = value.is_number_unsigned() ? std::to_string(value.get<std::uint64_t>()) : std::to_string(value.get<std::int64_t>());
   } else if (value.is_number_float()) {
-    const double x = value.get<double>();
-    char buffer[64];
-    const auto end = std::to_chars(buffer, buffer + sizeof buffer, x).ptr;
-    e.text.assign(buffer, end);
+    e.text = value.dump();  // nlohmann writes the shortest decimal that reads back the same
   } else {
     fail_at(where, pointer, place + " must be a number, " + json_reader::describe(value) + how);
   }

@@ -47,6 +47,7 @@
 #include "dynamics/force_pass.hpp"
 #include "springlab/spring_kernel.hpp"
 #include "iterative.hpp"
+#include "tableau_steps.hpp"
 #include "steps.hpp"
 
 namespace springlab {

@@ -24,4 +24,10 @@ SPRINGLAB_STEP(vbd);
 
 #undef SPRINGLAB_STEP
 
+// The rows made from tableaux (tableau_steps.cpp).
+void explicit_tableau(const Tableau& tableau, const Model& model, const State& in, State& out, double h,
+                      const StepSettings& settings, Workspace& ws);
+void diagonally_implicit(const Tableau& tableau, const Model& model, const State& in, State& out, double h,
+                         const StepSettings& settings, Workspace& ws);
+
 }  // namespace springlab::steps

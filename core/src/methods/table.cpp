@@ -1,7 +1,15 @@
 #include "springlab/methods.hpp"
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <deque>
+#include <iomanip>
 #include <limits>
+#include <mutex>
+#include <sstream>
+
+#include "springlab/error.hpp"
 
 #include "methods/steps.hpp"
 #include "stability/mode_limits.hpp"
@@ -89,25 +97,114 @@ const MethodInfo kMethods[] = {
      .family = F::Iterative, .step = steps::vbd},
 };
 
-}  // namespace
-
-std::span<const MethodInfo> methods() { return kMethods; }
-
 // Rows in the enum's order: a method's row is found by its id.
 static_assert(std::size(kMethods) == static_cast<std::size_t>(Method::VBD) + 1);
 
-const MethodInfo& method_info(Method method) { return kMethods[static_cast<int>(method)]; }
+// The table: the built-in rows, then the rows made from tableaux (add_tableau_method), in fixed
+// storage so that a row, once counted, never moves while other threads (an analysis, a sweep)
+// read it; `count` is published after the row is written.
+constexpr std::size_t kMaxAdded = 32;
+struct AddedRow {
+  std::string name, label, evaluations, stability;
+  ButcherTableau source;
+  Tableau tableau;
+};
+struct Table {
+  std::array<MethodInfo, std::size(kMethods) + kMaxAdded> rows{};
+  std::atomic<std::size_t> count{0};
+  std::mutex adding;
+  std::deque<AddedRow> added;  // (a deque: its elements stay put as it grows)
+  Table() {
+    std::copy(std::begin(kMethods), std::end(kMethods), rows.begin());
+    count.store(std::size(kMethods), std::memory_order_release);
+  }
+};
+Table& table() {
+  static Table t;
+  return t;
+}
+
+bool same_entries(const ButcherTableau& a, const ButcherTableau& b) {
+  const auto texts = [](const std::vector<TableauEntry>& v) {
+    std::vector<std::string> out;
+    for (const TableauEntry& e : v) out.push_back(e.text);
+    return out;
+  };
+  if (a.stages != b.stages || texts(a.b) != texts(b.b)) return false;
+  for (int i = 0; i < a.stages; ++i)
+    if (texts(a.a[static_cast<std::size_t>(i)]) != texts(b.a[static_cast<std::size_t>(i)])) return false;
+  return true;
+}
+
+std::string limit_text(double limit, const char* unit) {
+  std::ostringstream s;
+  if (std::isinf(limit)) s << "the whole " << unit << " axis";
+  else s << std::setprecision(4) << limit;
+  return s.str();
+}
+
+}  // namespace
+
+std::span<const MethodInfo> methods() {
+  const Table& t = table();
+  return {t.rows.data(), t.count.load(std::memory_order_acquire)};
+}
+
+const MethodInfo& method_info(Method method) { return table().rows[static_cast<std::size_t>(method)]; }
 
 std::optional<Method> find_method(std::string_view name) {
-  for (const MethodInfo& m : kMethods)
+  for (const MethodInfo& m : methods())
     if (name == m.name) return m.id;
   return std::nullopt;
 }
 
 std::string method_names() {
   std::string names;
-  for (const MethodInfo& m : kMethods) names += (names.empty() ? "" : ", ") + std::string(m.name);
+  for (const MethodInfo& m : methods()) names += (names.empty() ? "" : ", ") + std::string(m.name);
   return names;
+}
+
+Method add_tableau_method(const ButcherTableau& tableau, const std::string& name) {
+  Table& t = table();
+  const std::lock_guard lock(t.adding);
+  for (const AddedRow& row : t.added)
+    if (row.name == name) {
+      if (!same_entries(row.source, tableau))
+        throw InputError("method '" + name + "': another tableau already has this name; give this one another file name");
+      return *find_method(name);
+    }
+  if (find_method(name))
+    throw InputError("method '" + name + "': a built-in method has this name; give the tableau's file another name");
+  const std::size_t index = t.count.load(std::memory_order_relaxed);
+  if (index >= t.rows.size())
+    throw InputError("method '" + name + "': at most " + std::to_string(kMaxAdded) + " methods from tableaux in one run");
+  const TableauAnalysis a = analyse_tableau(tableau);
+  AddedRow& row = t.added.emplace_back();
+  row.name = name;
+  row.label = tableau.name.empty() ? name : tableau.name;
+  row.source = tableau;
+  row.tableau = tableau.numeric();
+  row.tableau.set_stability_function(a.numerator_value, a.denominator_value);
+  const bool explicit_stages = tableau.is_explicit();
+  row.evaluations = explicit_stages ? std::to_string(tableau.stages)
+                                    : std::to_string(tableau.stages) + " stages, each solved as an implicit Euler step";
+  row.stability = "from its tableau's R(z): |R| <= 1 on the real axis to " + limit_text(a.real_limit, "real") +
+                  ", on the imaginary axis to " + limit_text(a.imaginary_limit, "imaginary");
+  MethodInfo info{};
+  info.id = static_cast<Method>(index);
+  info.name = row.name.c_str();
+  info.label = row.label.c_str();
+  info.order = a.order_to_rounding;
+  info.evaluations = row.evaluations.c_str();
+  info.undamped_limit = a.imaginary_limit;
+  info.stability = row.stability.c_str();
+  info.family = MethodFamily::RungeKutta;
+  info.tableau = &row.tableau;
+  info.tableau_step = explicit_stages ? steps::explicit_tableau : steps::diagonally_implicit;
+  info.audited = true;
+  t.rows[index] = info;
+  t.count.store(index + 1, std::memory_order_release);
+  return info.id;
 }
 
 void accelerations(const Model& model, const Points& x, const Points& v, Points& a, Workspace& ws) {
@@ -120,7 +217,8 @@ void step(Method method, const Model& model, const State& in, State& out, double
   const MethodInfo& info = method_info(method);
   ws.step_probe.reset();
   ws.input_power.reset();
-  info.step(model, in, out, h, settings, ws);
+  if (info.step) info.step(model, in, out, h, settings, ws);
+  else info.tableau_step(*info.tableau, model, in, out, h, settings, ws);
   if (!info.adaptive()) ++ws.counters.accepted;
 }
 

@@ -13,6 +13,41 @@ Tableau::Tableau(std::vector<std::vector<double>> rows, std::vector<double> weig
     if (rows[i].size() > b.size()) throw std::invalid_argument("a row of A is longer than b");
     for (std::size_t j = 0; j < rows[i].size(); ++j) a[static_cast<std::size_t>(i * stages) + j] = rows[i][j];
   }
+  if (is_explicit()) {
+    numerator = stability_polynomial();
+    denominator = {1.0};
+    return;
+  }
+  // P and Q through their values at z = 0 .. s (Newton's divided differences), in doubles: the
+  // built-in implicit rows have one or two stages.
+  const auto determinant = [&](double z, bool with_b) {
+    Eigen::MatrixXd m = Eigen::MatrixXd::Identity(stages, stages);
+    for (int i = 0; i < stages; ++i)
+      for (int j = 0; j < stages; ++j) m(i, j) += -z * A(i, j) + (with_b ? z * b[static_cast<std::size_t>(j)] : 0.0);
+    return m.determinant();
+  };
+  const auto interpolate = [&](bool with_b) {
+    std::vector<double> d;
+    for (int k = 0; k <= stages; ++k) d.push_back(determinant(k, with_b));
+    for (int level = 1; level <= stages; ++level)
+      for (int i = stages; i >= level; --i) d[static_cast<std::size_t>(i)] = (d[static_cast<std::size_t>(i)] - d[static_cast<std::size_t>(i - 1)]) / level;
+    std::vector<double> p{d.back()};
+    for (int k = stages - 1; k >= 0; --k) {
+      std::vector<double> next(p.size() + 1, 0.0);  // p (z - k) + d_k
+      for (std::size_t j = 0; j < p.size(); ++j) next[j + 1] += p[j], next[j] -= k * p[j];
+      next[0] += d[static_cast<std::size_t>(k)];
+      p = std::move(next);
+    }
+    while (p.size() > 1 && std::abs(p.back()) < 1e-14) p.pop_back();
+    return p;
+  };
+  numerator = interpolate(true);
+  denominator = interpolate(false);
+}
+
+void Tableau::set_stability_function(std::vector<double> p, std::vector<double> q) {
+  numerator = std::move(p);
+  denominator = std::move(q);
 }
 
 bool Tableau::is_explicit() const {

@@ -3,8 +3,9 @@
 // method's step at most 1. Closed forms from each method's characteristic polynomial, checked
 // by Jury's conditions (a monic quadratic mu^2 + a1 mu + a0 has both roots in the unit disc
 // exactly when |a0| <= 1 and |a1| <= 1 + a0); the Runge-Kutta methods by the first positive root of
-// |R(h lambda)|^2 - 1, R their tableau's stability polynomial (tableau.hpp).
+// |R(h lambda)|^2 - 1, R = P / Q their tableau's stability function (tableau.hpp).
 #include <cmath>
+#include <algorithm>
 #include <complex>
 #include <limits>
 #include <vector>
@@ -20,27 +21,31 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 using Complex = std::complex<double>;
 
-// |R(h lambda)|^2 - 1 = sum_{m >= 1} c_m h^m for R(z) = sum_{j <= p} gamma_j z^j, with
-// c_m = sum_{j + k = m} gamma_j gamma_k Re(lambda^j conj(lambda)^k). Divided by h it starts at
-// c_1 = 2 Re(lambda), so its sign near h = 0 is not lost to rounding.
+// |R(h lambda)|^2 - 1 has the sign of |P|^2 - |Q|^2 = sum_{m >= 1} c_m h^m for R = P / Q (Q = 1
+// for an explicit tableau), P = sum_j p_j z^j, Q = sum_j q_j z^j, with
+//   c_m = sum_{j + k = m} (p_j p_k - q_j q_k) Re(lambda^j conj(lambda)^k).
+// Divided by h it starts at c_1 = 2 (p_1 - q_1) Re(lambda), so its sign near h = 0 is not lost
+// to rounding.
 struct GrowthPolynomial {
-  std::vector<double> c;  // c[1] .. c[2p]
+  std::vector<double> c;  // c[1] .. c[degree]
   int degree = 0;
-  GrowthPolynomial(const std::vector<double>& gamma, Complex lambda) {
-    const int p = static_cast<int>(gamma.size()) - 1;
-    degree = 2 * p;
+  GrowthPolynomial(const std::vector<double>& p, const std::vector<double>& q, Complex lambda) {
+    const int n = static_cast<int>(std::max(p.size(), q.size())) - 1;
+    degree = 2 * n;
     c.assign(static_cast<std::size_t>(degree + 1), 0.0);
     std::vector<Complex> powers{1.0};
-    for (int j = 1; j <= p; ++j) powers.push_back(powers.back() * lambda);
+    for (int j = 1; j <= n; ++j) powers.push_back(powers.back() * lambda);
+    const auto at = [](const std::vector<double>& v, int j) { return j < static_cast<int>(v.size()) ? v[static_cast<std::size_t>(j)] : 0.0; };
     // A coefficient that is a sum of terms cancelling to rounding (on the imaginary axis RK4's
     // first five do: R is an approximation of e^z, |e^(iy)| = 1) is exactly zero.
     std::vector<double> gross(c.size(), 0.0);
-    for (int j = 0; j <= p; ++j)
-      for (int k = 0; k <= p; ++k)
+    for (int j = 0; j <= n; ++j)
+      for (int k = 0; k <= n; ++k)
         if (j + k > 0) {
-          const double term = gamma[j] * gamma[k] * (powers[j] * std::conj(powers[k])).real();
-          c[j + k] += term;
-          gross[j + k] += std::abs(term);
+          const double re = (powers[j] * std::conj(powers[k])).real();
+          const double plus = at(p, j) * at(p, k) * re, minus = at(q, j) * at(q, k) * re;
+          c[j + k] += plus - minus;
+          gross[j + k] += std::abs(plus) + std::abs(minus);
         }
     for (int m = 1; m <= degree; ++m)
       if (std::abs(c[m]) <= 1e-13 * gross[m]) c[m] = 0.0;
@@ -64,15 +69,16 @@ struct GrowthPolynomial {
 };
 
 // The first h > 0 at which |R(h lambda)| exceeds 1 (infinity if none up to 100 / |lambda|).
-double runge_kutta_exit(const std::vector<double>& gamma, Complex lambda) {
+double runge_kutta_exit(const Tableau& tableau, Complex lambda) {
+  const std::vector<double>& gamma = tableau.numerator;
   const double size = std::abs(lambda);
   if (!(size > 0.0)) return kInf;
   if (lambda.real() > 0.0) return 0.0;
-  if (gamma.size() == 2) {
+  if (gamma.size() == 2 && tableau.denominator.size() == 1) {
     // R(z) = 1 + gamma_1 z: |1 + h gamma_1 lambda| <= 1 up to h = -2 Re(lambda) / (gamma_1 |lambda|^2).
     return lambda.real() >= 0.0 ? 0.0 : -2.0 * lambda.real() / (gamma[1] * std::norm(lambda));
   }
-  const GrowthPolynomial poly(gamma, lambda);
+  const GrowthPolynomial poly(gamma, tableau.denominator, lambda);
   double lo = 1e-12 / size;
   if (poly.grows(lo)) return 0.0;
   double hi = 0.0;
@@ -154,7 +160,7 @@ double runge_kutta_limit(Method method, std::complex<double> lambda) {
   const MethodInfo& info = method_info(method);
   if (info.any_step()) return kInf;
   if (info.family != MethodFamily::RungeKutta) return std::numeric_limits<double>::quiet_NaN();
-  return runge_kutta_exit(info.tableau->stability_polynomial(), lambda);
+  return runge_kutta_exit(*info.tableau, lambda);
 }
 
 double stable_step(Method method, double w, double c, double verlet_damping) {

@@ -1,0 +1,76 @@
+// The steps of the rows made from tableaux (add_tableau_method, springlab/butcher.hpp), on
+// y = (x, v), y' = F(y) = (v, a(x, v)):
+//
+//   stage i:  Y_i = y + h sum_{j < i} a_ij K_j + h a_ii K_i,   K_i = F(Y_i)
+//   result:   y1 = y + h sum_i b_i K_i
+//
+// Explicit (a_ii = 0 for all i): as RK4, stage after stage (runge_kutta.hpp).
+//
+// Diagonally implicit: with (x~, v~) = y + h sum_{j < i} a_ij K_j and g = a_ii h, the stage
+// (X, V) = Y_i solves
+//   X = x~ + g V,   V = v~ + g a(X, V),
+// which is exactly one backward-Euler step of size g from (x~, v~): springlab's implicit Euler
+// solves it (implicit_euler.cpp: Baraff and Witkin's linearisation, conjugate gradients to
+// solver_tolerance). Then K_i = (V, (V - v~) / g), the acceleration the solve itself satisfied,
+// with no further force evaluation. On a linear system (a spring along its own axis, or rest length
+// zero) the linearisation is exact and the stage is solved to the conjugate gradients' tolerance;
+// on a nonlinear one each stage is linearised once, as implicit Euler's step is (a method of
+// Rosenbrock type: the order chart measures what that leaves). A stage with a_ii = 0 is explicit.
+// Pinned particles move with their velocity in every stage, so x1 = x + h v for them.
+#include "tableau_steps.hpp"
+
+#include "runge_kutta.hpp"
+#include "steps.hpp"
+
+namespace springlab::steps {
+
+void explicit_tableau(const Tableau& tableau, const Model& model, const State& in, State& out, double h,
+                      const StepSettings&, Workspace& ws) {
+  rk::stages(model, in.x, in.v, h, tableau, ws);
+  rk::combine(in.x, in.v, h, tableau.b, ws, out.x, out.v);
+  out.t = in.t + h;
+}
+
+void diagonally_implicit(const Tableau& tableau, const Model& model, const State& in, State& out, double h,
+                         const StepSettings& settings, Workspace& ws) {
+  const int s = tableau.stages;
+  if (!ws.stages) ws.stages = std::make_unique<StageSolvers>();
+  StageSolvers& S = *ws.stages;
+  if (S.solvers.size() < static_cast<std::size_t>(s)) S.solvers.resize(static_cast<std::size_t>(s));
+  if (ws.kx.size() < static_cast<std::size_t>(s)) {
+    ws.kx.resize(static_cast<std::size_t>(s));
+    ws.kv.resize(static_cast<std::size_t>(s));
+  }
+  for (int i = 0; i < s; ++i) {
+    S.in.x = in.x;
+    S.in.v = in.v;
+    S.in.t = in.t;
+    for (int j = 0; j < i; ++j) {
+      const double w = h * tableau.A(i, j);
+      if (w == 0.0) continue;
+      S.in.x += w * ws.kx[static_cast<std::size_t>(j)];
+      S.in.v += w * ws.kv[static_cast<std::size_t>(j)];
+    }
+    const double g = h * tableau.A(i, i);
+    if (g == 0.0) {
+      ws.kx[static_cast<std::size_t>(i)] = S.in.v;
+      accelerations(model, S.in.x, S.in.v, ws.kv[static_cast<std::size_t>(i)], ws);
+      continue;
+    }
+    Workspace& solver = S.solvers[static_cast<std::size_t>(i)];
+    implicit_euler(model, S.in, S.out, g, settings, solver);
+    ws.kx[static_cast<std::size_t>(i)] = S.out.v;
+    ws.kv[static_cast<std::size_t>(i)] = (S.out.v - S.in.v) / g;
+    // The stage's work counts as the step's.
+    Counters& c = solver.counters;
+    ws.counters.force_evals += c.force_evals;
+    ws.counters.linear_solves += c.linear_solves;
+    ws.counters.solver_iterations += c.solver_iterations;
+    ws.counters.unconverged_solves += c.unconverged_solves;
+    c = Counters{};
+  }
+  rk::combine(in.x, in.v, h, tableau.b, ws, out.x, out.v);
+  out.t = in.t + h;
+}
+
+}  // namespace springlab::steps
