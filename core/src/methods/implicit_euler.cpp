@@ -432,7 +432,12 @@ struct ImplicitSolver {
     while (rr > threshold && k < max_iterations) {
       product(model, plan, x, p, q);
       ++k;
-      const double alpha = rz / total(kPQ);
+      // p A p > 0 for a definite A and p != 0; it is 0 only when the residual has underflowed (a
+      // motion decayed to 1e-160 of its size, squared below the smallest double): nothing is
+      // left to solve, and 0 / 0 would write NaN into dv.
+      const double pq = total(kPQ);
+      if (!(pq > 0.0 && rz > 0.0)) break;
+      const double alpha = rz / pq;
       each_block(plan, n, [&](int block, int begin, int end) {
         for (int c = 0; c < 3; ++c) {
           double *solution = dv.col(c).data(), *residual = r.col(c).data();

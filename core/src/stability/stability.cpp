@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 #include <limits>
 #include <numbers>
 #include <sstream>
@@ -392,7 +393,13 @@ void StabilityAnalysis::analyse(const Model& model, const State& state, int dens
   finish();
 }
 
-const StabilityLimit& StabilityAnalysis::limit(Method method) const { return limits_[static_cast<int>(method)]; }
+const StabilityLimit& StabilityAnalysis::limit(Method method) const {
+  const auto row = static_cast<std::size_t>(method);
+  if (row >= limits_.size())  // a row made from a tableau after this analysis
+    throw std::out_of_range(std::string("no stability limit for ") + method_info(method).name +
+                            ": the method was added after the analysis; analyse again");
+  return limits_[row];
+}
 
 StabilityAnalysis::Growth StabilityAnalysis::transient_growth(Method method, double h, double verlet_damping) const {
   Growth g;

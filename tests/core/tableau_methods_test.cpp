@@ -1,0 +1,119 @@
+// Tableaux run as methods (add_tableau_method): each shipped tableau's order measured on the
+// spring against its exact solution, its stated limit held just inside and broken just outside
+// by runs, and implicit midpoint's energy kept where implicit Euler's is lost.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "support.hpp"
+#include "springlab/butcher.hpp"
+#include "springlab/energy.hpp"
+#include "springlab/error.hpp"
+#include "springlab/stability.hpp"
+
+namespace springlab {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Each shipped tableau as a row of its own, named "tableau-<file>" (the built-in names are taken).
+Method row(const std::string& file) {
+  const ButcherTableau t =
+      load_tableau_file((fs::path(SPRINGLAB_SOURCE_DIR) / "assets" / "tableaux" / (file + ".json")).string());
+  return add_tableau_method(t, "tableau-" + file);
+}
+
+std::vector<std::string> shipped_tableaux() {
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(fs::path(SPRINGLAB_SOURCE_DIR) / "assets" / "tableaux"))
+    if (e.path().extension() == ".json") names.push_back(e.path().stem().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// The order its conditions give (to rounding) is the slope measured by halving h on the
+// spring, from (h w)^p = 1e-2 (as for the built-in rows: accuracy_test.cpp), within 0.2.
+TEST(TableauMethods, OrderOnTheSpringIsTheConditionsOrder) {
+  const Scene scene = test::shipped("spring");
+  for (const std::string& name : shipped_tableaux()) {
+    const Method m = row(name);
+    const int order = method_info(m).order;
+    const double h = std::pow(1e-2, 1.0 / order) / 10.0;
+    const double coarse = test::error_against_exact(scene, m, h, 1.0);
+    const double fine = test::error_against_exact(scene, m, h / 2, 1.0);
+    const double finer = test::error_against_exact(scene, m, h / 4, 1.0);
+    EXPECT_NEAR(std::log2(coarse / fine), order, 0.2) << name << " errors " << coarse << " " << fine;
+    EXPECT_NEAR(std::log2(fine / finer), order, 0.2) << name << " errors " << fine << " " << finer;
+  }
+}
+
+// The stated limit on a damped linear spring (damping ratio 0.1; the analysis, from the tableau's
+// R(z)) is where runs turn: 2000 steps at 0.95 of it end with less energy than they started with
+// (a stable step may first raise it: |R| near 1 is not a contraction in the energy norm), at 1.25
+// of it the energy grows past tenfold. A tableau stable at any step loses energy even at h w = 100.
+// (Linear, as the built-in rows' limits tests are: on `damped-spring`, rest length 1, a step near
+// the limit can pump the particle through its anchor, where the double well is another problem.)
+TEST(TableauMethods, StatedLimitHoldsInsideAndBreaksOutside) {
+  const Scene scene = test::linear_oscillator(100.0, 2.0);
+  std::vector<Method> rows;
+  for (const std::string& name : shipped_tableaux()) rows.push_back(row(name));
+  const StabilityAnalysis a(scene.model, scene.state);
+  const double start = energy(scene.model, scene.state).total();
+  const auto end_energy = [&](Method m, double h, bool report = false) {
+    Simulation sim = test::simulation(scene, m, h);
+    for (int k = 0; k < 2000 && !sim.diverged(); ++k) sim.advance(1);
+    if (report && sim.diverged()) ADD_FAILURE() << sim.divergence()->message();
+    return sim.diverged() ? std::numeric_limits<double>::infinity() : sim.energy().total();
+  };
+  for (Method m : rows) {
+    SCOPED_TRACE(method_info(m).name);
+    const StabilityLimit& limit = a.limit(m);
+    if (std::isinf(limit.h)) {
+      EXPECT_LT(end_energy(m, 100.0 / a.w_max(), true), start);
+      continue;
+    }
+    ASSERT_GT(limit.h, 0.0);
+    EXPECT_LT(end_energy(m, 0.95 * limit.h, true), start);
+    EXPECT_GT(end_energy(m, 1.25 * limit.h), 10.0 * start);
+  }
+}
+
+// Implicit midpoint is A-stable and |R| = 1 on the imaginary axis: on the undamped spring at
+// h w = 1 it keeps the energy to round-off over 1000 periods; implicit Euler loses almost all of
+// it (|R(i)| = 1/sqrt(2): the energy halves every step), and so does Alexander's L-stable SDIRK2.
+TEST(TableauMethods, ImplicitMidpointKeepsTheUndampedSpringsEnergy) {
+  const Scene scene = test::linear_oscillator(100.0, 0.0);  // w = 10
+  const double h = 0.1, periods = 1000.0;
+  const auto steps = static_cast<int>(std::llround(periods * 2.0 * M_PI / 10.0 / h));
+  const auto final_energy = [&](Method m) {
+    SimulationSettings s;
+    s.method = m;
+    s.dt = h;
+    s.substeps = 1;
+    s.auto_substeps = false;
+    Simulation sim(scene.model, scene.state, s);
+    for (int k = 0; k < steps; ++k) EXPECT_TRUE(sim.step());
+    return sim.energy().total();
+  };
+  const double e0 = energy(scene.model, scene.state).total();
+  EXPECT_NEAR(final_energy(row("implicit-midpoint")), e0, 1e-10 * e0);
+  EXPECT_NEAR(final_energy(row("trapezoidal")), e0, 1e-10 * e0);
+  EXPECT_LT(final_energy(Method::ImplicitEuler), 1e-6 * e0);
+  EXPECT_LT(final_energy(row("sdirk2")), 1e-6 * e0);
+}
+
+// A tableau's row is added once: the same name and entries give the same row; another tableau
+// under that name, or a built-in's name, is refused.
+TEST(TableauMethods, NamesAreOneRowEach) {
+  const Method heun = row("heun");
+  EXPECT_EQ(row("heun"), heun);
+  EXPECT_EQ(find_method("tableau-heun"), heun);
+  EXPECT_EQ(method_info(heun).order, 2);
+  const ButcherTableau ralston = parse_tableau(R"({"A": [[0], ["2/3"]], "b": ["1/4", "3/4"]})", "test");
+  EXPECT_THROW(add_tableau_method(ralston, "tableau-heun"), InputError);
+  EXPECT_THROW(add_tableau_method(ralston, "rk4"), InputError);
+}
+
+}  // namespace
+}  // namespace springlab
