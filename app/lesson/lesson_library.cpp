@@ -23,13 +23,14 @@ Lesson open_lesson(const std::string& name) {
   const LessonSceneOpener open = [](const std::string& scene, const std::vector<std::string>& sets) {
     return load_scene(resolve_scene(scene), sets);
   };
+  const LessonMethodFinder find = [](const std::string& method) { return lookup_method(method); };
   std::error_code ec;
-  if (fs::is_regular_file(name, ec)) return load_lesson(name, open);
+  if (fs::is_regular_file(name, ec)) return load_lesson(name, open, find);
   const std::vector<std::string> files = shipped_lesson_files();
   std::vector<std::string> names;
   for (std::size_t k = 0; k < files.size(); ++k) {
     names.push_back(lesson_name(files[k]));
-    if (names.back() == name || std::to_string(k + 1) == name) return load_lesson(files[k], open);
+    if (names.back() == name || std::to_string(k + 1) == name) return load_lesson(files[k], open, find);
   }
   std::string list;
   for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;

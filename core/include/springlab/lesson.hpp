@@ -103,8 +103,15 @@ struct Lesson {
 // InputError (its message is put after the field's path).
 using LessonSceneOpener = std::function<Scene(const std::string& scene, const std::vector<std::string>& sets)>;
 
-Lesson parse_lesson(const std::string& text, const std::string& file, const LessonSceneOpener& open);
-Lesson load_lesson(const std::string& path, const LessonSceneOpener& open);
+// Finds a method a lesson names (a step's method, its lanes, its claims): the table's rows by
+// default; the app also opens tableaux by name (a shipped one, or a file), adding their rows.
+using LessonMethodFinder = std::function<std::optional<Method>(const std::string& name)>;
+inline std::optional<Method> find_table_method(const std::string& name) { return find_method(name); }
+
+Lesson parse_lesson(const std::string& text, const std::string& file, const LessonSceneOpener& open,
+                    const LessonMethodFinder& find = find_table_method);
+Lesson load_lesson(const std::string& path, const LessonSceneOpener& open,
+                   const LessonMethodFinder& find = find_table_method);
 
 // "01-hooke.json" -> "hooke": a lesson file's leading number orders the course.
 std::string lesson_name(const std::string& file_name);

@@ -108,7 +108,7 @@ std::vector<std::string> lanes_of(const LessonStep& step, const Scene& scene) {
   return {method_info(step.method.value_or(scene.methods.front())).name};
 }
 
-LessonClaim read_claim(ObjectReader& r, const LessonStep& step, const Scene& scene) {
+LessonClaim read_claim(ObjectReader& r, const LessonStep& step, const Scene& scene, const LessonMethodFinder& find) {
   using K = LessonClaim::Kind;
   LessonClaim c;
   std::vector<std::string> names;
@@ -169,7 +169,7 @@ LessonClaim read_claim(ObjectReader& r, const LessonStep& step, const Scene& sce
     case K::SolverConverges: {
       needs_dynamics();
       const std::string lane = c.lane.empty() && !lanes.empty() ? lanes.front() : c.lane;
-      const std::optional<Method> m = find_method(lane);
+      const std::optional<Method> m = find(lane);
       if (!m || method_info(*m).family != MethodFamily::Iterative)
         r.fail("lane", name + " is about an iterative method's lane (xpbd, local-global, vbd), not '" + lane + "'");
       if (c.kind == K::SolverConverges) {
@@ -195,7 +195,7 @@ LessonClaim read_claim(ObjectReader& r, const LessonStep& step, const Scene& sce
       ObjectReader orders = *r.object("orders");
       const json* raw = r.raw("orders");
       for (const auto& [method, value] : raw->items()) {
-        const auto m = find_method(method);
+        const auto m = find(method);
         if (!m || method_info(*m).adaptive())
           orders.fail(method.c_str(), "must be a fixed-step method (" + method_names() + ")");
         c.orders[method] = orders.number(method.c_str(), {0.5, 8.0});
@@ -221,7 +221,8 @@ LessonClaim read_claim(ObjectReader& r, const LessonStep& step, const Scene& sce
   return c;
 }
 
-LessonStep read_step(ObjectReader& r, const std::string& folder, const LessonSceneOpener& open) {
+LessonStep read_step(ObjectReader& r, const std::string& folder, const LessonSceneOpener& open,
+                     const LessonMethodFinder& find) {
   LessonStep step;
   step.title = shown_text(r, "title", kMaxTitle, true);
   if (!r.has("scene")) r.fail("scene", "is required: a shipped scene's name (rope, spring, ...) or a path");
@@ -229,7 +230,7 @@ LessonStep read_step(ObjectReader& r, const std::string& folder, const LessonSce
   if (r.object("set"))  // {"KEY": VALUE}, as --set KEY=VALUE
     for (const auto& [key, value] : r.raw("set")->items()) step.sets.push_back(key + "=" + json_reader::dump(value));
   if (const json* m = r.raw("method")) {
-    const auto method = m->is_string() ? find_method(m->get<std::string>()) : std::nullopt;
+    const auto method = m->is_string() ? find(m->get<std::string>()) : std::nullopt;
     if (!method) r.fail("method", "must be a method name (" + method_names() + "), " + json_reader::describe(*m));
     step.method = method;
   }
@@ -296,7 +297,7 @@ LessonStep read_step(ObjectReader& r, const std::string& folder, const LessonSce
     if (step.compare.size() < 2 || step.compare.size() > 4) r.fail("compare", "must name 2 to 4 lanes");
     for (std::size_t k = 0; k < step.compare.size(); ++k) {
       const std::string& n = step.compare[k];
-      const bool known = scene.ik ? find_ik_solver(n).has_value() : find_method(n).has_value();
+      const bool known = scene.ik ? find_ik_solver(n).has_value() : find(n).has_value();
       if (!known)
         json_reader::fail_at(r.where(), r.path("compare") + "/" + std::to_string(k),
                              "unknown " + std::string(scene.ik ? "solver" : "method") + " '" + n + "' (" +
@@ -308,7 +309,7 @@ LessonStep read_step(ObjectReader& r, const std::string& folder, const LessonSce
   }
   step.script.file = r.where();
   step.script.events = read_events(r.objects("events"), scene);
-  for (ObjectReader& c : r.objects("claims")) step.claims.push_back(read_claim(c, step, scene));
+  for (ObjectReader& c : r.objects("claims")) step.claims.push_back(read_claim(c, step, scene, find));
   return step;
 }
 
@@ -360,7 +361,8 @@ std::string lesson_name(const std::string& file_name) {
   return stem;
 }
 
-Lesson parse_lesson(const std::string& text, const std::string& file, const LessonSceneOpener& open) {
+Lesson parse_lesson(const std::string& text, const std::string& file, const LessonSceneOpener& open,
+                    const LessonMethodFinder& find) {
   const std::string where = "lesson '" + file + "'";
   json doc = json_reader::parse_document(text, where);
   if (!doc.is_object()) throw InputError(where + ": must be a JSON object with title, summary and steps");
@@ -376,12 +378,12 @@ Lesson parse_lesson(const std::string& text, const std::string& file, const Less
   if (steps.empty() || steps.size() > 12) top.fail("steps", "is required: 1 to 12 steps");
   const auto slash = file.find_last_of('/');
   const std::string folder = slash == std::string::npos ? "" : file.substr(0, slash);
-  for (ObjectReader& s : steps) lesson.steps.push_back(read_step(s, folder, open));
+  for (ObjectReader& s : steps) lesson.steps.push_back(read_step(s, folder, open, find));
   return lesson;
 }
 
-Lesson load_lesson(const std::string& path, const LessonSceneOpener& open) {
-  return parse_lesson(json_reader::read_document(path, "lesson"), path, open);
+Lesson load_lesson(const std::string& path, const LessonSceneOpener& open, const LessonMethodFinder& find) {
+  return parse_lesson(json_reader::read_document(path, "lesson"), path, open, find);
 }
 
 }  // namespace springlab
