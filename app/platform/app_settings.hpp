@@ -18,6 +18,7 @@ struct AppSettings {
   std::optional<std::string> script;
   double ui_scale = 1.0;  // times the display's own scale
   bool accuracy = false;  // open the Compare panel and start its sweep
+  bool region = false;    // open the stability region's window
   // A lesson to teach (a shipped lesson's name or number, or a file), from this step (from 1).
   std::optional<std::string> lesson;
   int lesson_step = 1;

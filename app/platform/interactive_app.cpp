@@ -65,6 +65,7 @@ InteractiveApp::InteractiveApp(Prepared first, const AppSettings& settings, std:
     ui_.accuracy = true;
     accuracy_.start(*session_);
   }
+  if (settings.region) ui_.region = true;
   if (settings.lesson) {
     Lesson lesson = open_lesson(*settings.lesson);
     check_lesson_step(lesson, settings.lesson_step, "--step");
@@ -218,7 +219,8 @@ void InteractiveApp::keyboard() {
       {GLFW_KEY_R, ui::Action::Reset},           {GLFW_KEY_C, ui::Action::ToggleCompare},
       {GLFW_KEY_H, ui::Action::TogglePanels},    {GLFW_KEY_F1, ui::Action::ToggleHelp},
       {GLFW_KEY_A, ui::Action::ToggleAccuracy},  {GLFW_KEY_G, ui::Action::ToggleRegion},
-      {GLFW_KEY_M, ui::Action::ToggleMode},      {GLFW_KEY_P, ui::Action::TogglePresentation}};
+      {GLFW_KEY_M, ui::Action::ToggleMode},      {GLFW_KEY_P, ui::Action::TogglePresentation},
+      {GLFW_KEY_Y, ui::Action::ToggleTableau}};
   for (const auto& [key, action] : keys)
     if (ImGui::IsKeyPressed(key, false)) ui::perform(action, *session_, ui_);
   // Keys 1 to 9: the table's first nine rows.
@@ -309,6 +311,9 @@ void InteractiveApp::frame(const FrameSize& size) {
                            win_h * 0.62f);
   }
   ui_.accuracy = accuracy_.open;
+  tableau_.open = ui_.tableau;
+  ui::draw_tableau_panel(tableau_, session, tableaux_, scale);
+  ui_.tableau = tableau_.open;
   ui_.view.line_scale = ui_.presentation ? 1.6f : 1.0f;
   ui::OverlayOptions overlay;
   overlay.scale = scale * (ui_.presentation ? ui::kPresentationScale : 1.0f);

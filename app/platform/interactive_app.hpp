@@ -18,6 +18,8 @@
 #include "gfx/render_target.hpp"
 #include "gfx/renderer.hpp"
 #include "platform/app_settings.hpp"
+#include "ui/tableau_panel.hpp"
+#include "util/data_dir.hpp"
 #include "session/session.hpp"
 #include "springlab/lesson.hpp"
 #include "springlab/script.hpp"
@@ -108,6 +110,8 @@ class InteractiveApp {
   std::unique_ptr<Session> session_;
   ui::UiState ui_;
   ui::ComparePanel accuracy_;
+  ui::TableauPanel tableau_;
+  std::vector<std::string> tableaux_ = shipped_tableaux();  // its menu
   gfx::Renderer renderer_;
   gfx::RenderTarget target_;
   int samples_;

@@ -14,6 +14,7 @@ void perform(Action action, app::Session& session, UiState& ui) {
     case Action::ToggleHelp: ui.help = !ui.help; break;
     case Action::ToggleAccuracy: ui.accuracy = !ui.accuracy; break;
     case Action::ToggleRegion: ui.region = !ui.region; break;
+    case Action::ToggleTableau: ui.tableau = !ui.tableau; break;
     case Action::ToggleMode: ui.view.mode = !ui.view.mode; break;
     case Action::TogglePresentation: ui.presentation = !ui.presentation; break;
     case Action::ToggleCompare: {

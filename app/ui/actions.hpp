@@ -16,6 +16,7 @@ enum class Action {
   ToggleHelp,     // F1
   ToggleAccuracy, // A: the Compare panel
   ToggleRegion,   // G: the stability region
+  ToggleTableau,  // Y: your method
   ToggleMode,     // M: the limiting mode on the scene
   TogglePresentation,  // P: larger, for a projector
   Method1, Method2, Method3, Method4, Method5, Method6, Method7, Method8, Method9,  // 1 - 9

@@ -641,6 +641,7 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
         if (ImGui::Button(ui.accuracy ? "Hide accuracy (A)" : "Accuracy vs cost (A)")) ui.accuracy = !ui.accuracy;
         ImGui::SameLine();
         if (ImGui::Button(ui.region ? "Hide region (G)" : "Stability region (G)")) ui.region = !ui.region;
+        if (ImGui::Button(ui.tableau ? "Hide your method (Y)" : "Your method (Y)")) ui.tableau = !ui.tableau;
       }
       if (!session.scene().ik && ImGui::CollapsingHeader("Compare methods")) {
         if (ImGui::Button(session.comparing() ? "Single view (C)" : "Compare (C)")) {
@@ -739,6 +740,7 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
                              {"1 - 9", "choose a method"}, {"C", "compare mode on or off"},
                              {"H", "hide or show the panels"}, {"A", "accuracy against cost: chart every method"},
                              {"G", "the stability region, with the scene's modes"},
+                             {"Y", "your method: type a Butcher tableau, run it beside"},
                              {"M", "show the mode that limits the step"},
                              {"P", "presentation mode: larger, for a projector"},
                              {"\u2192  PgDn  N", "lesson: the next step"},

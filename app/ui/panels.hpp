@@ -51,6 +51,7 @@ struct UiState {
   bool accuracy = false;           // the Compare panel (accuracy against cost), A
   bool presentation = false;       // P: for a projector
   bool region = false;             // G: the stability region
+  bool tableau = false;            // Y: your method (a tableau typed in)
   draw::ViewOptions view;
   Ranges ranges;
   std::vector<std::string> scenes;  // the picker's list

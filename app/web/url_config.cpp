@@ -5,10 +5,12 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <sstream>
 #include <vector>
 
 #include "platform/option_ranges.hpp"
+#include "springlab/butcher.hpp"
 #include "springlab/error.hpp"
 #include "lesson/lesson_library.hpp"
 #include "util/data_dir.hpp"
@@ -71,16 +73,39 @@ std::string shortest(double x) {
   return fixed.size() <= general.size() ? fixed : general;
 }
 
+// "My RK 3" -> "my-rk-3": a tableau's name as a method's.
+std::string slug(const std::string& name) {
+  std::string out;
+  for (unsigned char c : name) {
+    if (std::isalnum(c)) out += static_cast<char>(std::tolower(c));
+    else if (!out.empty() && out.back() != '-') out += '-';
+  }
+  while (!out.empty() && out.back() == '-') out.pop_back();
+  return out.empty() ? "link-tableau" : out;
+}
+
+// A tableau sent in a link (tableau=<its JSON>), added as a method named after it.
+void add_link_tableau(const std::string& json) {
+  const ButcherTableau t = parse_tableau(json, "link: tableau");
+  add_tableau_method(t, slug(t.name));
+}
+
 }  // namespace
 
 AppSettings settings_from_link(const std::string& fragment) {
   AppSettings s;
+  std::vector<std::pair<std::string, std::string>> pairs;
   std::stringstream in(fragment.starts_with("#") ? fragment.substr(1) : fragment);
   for (std::string pair; std::getline(in, pair, '&');) {
     if (pair.empty()) continue;
     const std::size_t eq = pair.find('=');
-    const std::string key = percent_decoded(pair.substr(0, eq));
-    const std::string value = eq == std::string::npos ? "" : percent_decoded(pair.substr(eq + 1));
+    pairs.emplace_back(percent_decoded(pair.substr(0, eq)), eq == std::string::npos ? "" : percent_decoded(pair.substr(eq + 1)));
+  }
+  // Tableaux first, wherever they stand in the link: method and compare may name them.
+  for (const auto& [key, value] : pairs)
+    if (key == "tableau") add_link_tableau(value);
+  for (const auto& [key, value] : pairs) {
+    if (key == "tableau") continue;
     if (key == "scene") s.scene = value;
     else if (key == "method") s.sim.method = value;
     else if (key == "dt") s.sim.dt = number(key, value);
@@ -103,6 +128,10 @@ AppSettings settings_from_link(const std::string& fragment) {
       if (!(step >= 1 && step <= 12 && step == std::floor(step)))
         throw InputError("link: step: must be a lesson's step number, 1 to 12, got '" + value + "'");
       s.lesson_step = static_cast<int>(step);
+    }
+    else if (key == "region") {
+      if (value != "0" && value != "1") throw InputError("link: region: must be 1 (open the stability region) or 0, got '" + value + "'");
+      s.region = value == "1";
     }
     else if (key == "accuracy") {
       if (value != "0" && value != "1") throw InputError("link: accuracy: must be 1 (open the Compare panel and start its sweep) or 0, got '" + value + "'");
@@ -160,6 +189,30 @@ std::string link_of(const InteractiveApp& app, const std::vector<std::string>& s
   const Model& model = file ? file->scene.model : lane.sim.model();
   const double file_ks = model.materials.empty() ? 0.0 : model.materials.front().ks;
   const double file_kd = model.materials.empty() ? 0.0 : model.materials.front().kd;
+  // A lane's tableau travels with the link unless it is a shipped one of that name.
+  std::vector<Method> shown;
+  if (session.comparing())
+    for (const Lane& l : session.lanes()) shown.push_back(l.sim.settings().method);
+  else
+    shown.push_back(session.method());
+  for (Method m : shown) {
+    const ButcherTableau* t = tableau_source(m);
+    if (!t) continue;
+    std::error_code ec;
+    const auto shipped = data_dir() / "assets" / "tableaux" / (std::string(method_info(m).name) + ".json");
+    bool same = false;
+    if (std::filesystem::is_regular_file(shipped, ec)) {
+      try {
+        same = tableau_json(load_tableau_file(shipped.string())) == tableau_json(*t);
+      } catch (const InputError&) {
+      }
+    }
+    if (!same) {
+      ButcherTableau named = *t;
+      named.name = method_info(m).name;  // so that the link's tableau gets the lane's name back
+      link += "&tableau=" + percent_encoded(tableau_json(named));
+    }
+  }
   if (session.comparing()) {
     std::string lanes;
     for (const Lane& l : session.lanes()) lanes += (lanes.empty() ? "" : ",") + std::string(method_info(l.sim.settings().method).name);

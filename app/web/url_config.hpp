@@ -1,8 +1,10 @@
 // The page's link as the app's settings, and back: `index.html#scene=rope&method=euler&dt=1e-4
 // &substeps=4&ks=7500&kd=0.75&compare=euler,verlet&script=rope-drag-euler-to-rk4&ui-scale=1.25`,
 // set=KEY%3DVALUE (as many as wanted) for any other scene field, as the command line's --set, and
-// accuracy=1 to open the Compare panel and start its sweep (--accuracy), lesson=NAME&step=N to
-// teach a lesson from a step (--lesson, --step).
+// accuracy=1 to open the Compare panel and start its sweep (--accuracy), region=1 to open the
+// stability region, lesson=NAME&step=N to teach a lesson from a step (--lesson, --step), and
+// tableau=<a tableau's JSON> (assets/tableaux/README.md) to add a method of one's own, named after
+// its "name" ("My RK" is my-rk), for method= and compare= to use: a teacher sends the link.
 // Every value gets the checks the command line's flags get (platform/scene_options.hpp).
 #pragma once
 
@@ -32,6 +34,6 @@ Opened open_settings(const AppSettings& settings);
 std::string link_of(const InteractiveApp& app, const std::vector<std::string>& sets, double ui_scale);
 
 // The names a link takes, for messages.
-inline constexpr const char* kLinkParameters = "scene, method, dt, substeps, ks, kd, iterations, rho, compare, script, set, accuracy, lesson, step, ui-scale";
+inline constexpr const char* kLinkParameters = "scene, method, tableau, dt, substeps, ks, kd, iterations, rho, compare, script, set, accuracy, region, lesson, step, ui-scale";
 
 }  // namespace springlab::app::web

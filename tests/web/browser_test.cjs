@@ -191,6 +191,36 @@ check("a compare link shows the lanes", async ({ browser, base }) => {
   await page.close();
 });
 
+check("a link with a tableau runs it beside RK4 and draws its region; copy link keeps it", async ({ browser, base }) => {
+  // SSPRK3 written by hand, sent as a teacher would: its JSON in the link.
+  const tableau = JSON.stringify({ name: "My RK3", A: [[0], [1], ["1/4", "1/4"]], b: ["1/6", "1/6", "2/3"] });
+  const link = "scene=spring&tableau=" + encodeURIComponent(tableau) + "&compare=rk4,my-rk3&region=1";
+  const page = await openApp(browser, base, link);
+  const s = await status(page);
+  expect(s.message === "", `message ${s.message}`);
+  expect(s.lanes.map((l) => l.method).join(",") === "rk4,my-rk3", `lanes ${JSON.stringify(s.lanes)}`);
+  await waitFrames(page, 10);
+  const s2 = await status(page);
+  expect(s2.lanes.every((l, i) => l.t > s.lanes[i].t && !l.diverged && !l.unstable), `lanes ${JSON.stringify(s2.lanes)}`);
+  await pauseAtStart(page);
+  await matchesGolden(browser, page, "spring-tableau-region");
+  const [x, y, w, h] = (await status(page)).copy_link;
+  await page.mouse.move(x + w / 2, y + h / 2);
+  await page.mouse.down();
+  await waitFrames(page, 2);
+  await page.mouse.up();
+  await page.waitForFunction(() => typeof window.springlabLink === "string", { timeout: 5000 });
+  const copied = decodeURIComponent(await page.evaluate(() => window.springlabLink));
+  expect(copied.includes('"A":[["0"],["1"],["1/4","1/4"]]') && copied.includes("compare=rk4,my-rk3"), `link ${copied}`);
+  await page.close();
+  // A bad tableau in a link: the one message, naming the row and column.
+  const bad = await openApp(browser, base, "scene=spring&tableau=" +
+                            encodeURIComponent(JSON.stringify({ A: [[0, 1], [1]], b: [0.5, 0.5] })));
+  const sb = await status(bad);
+  expect(sb.message.includes("link: tableau") && sb.message.includes("row 1, column 2"), `message ${sb.message}`);
+  await bad.close();
+});
+
 check("every shipped scene opens and runs", async ({ browser, base }) => {
   const scenes = fs.readdirSync(path.join(root, "assets/scenes")).filter((f) => f.endsWith(".json"))
     .map((f) => f.replace(/\.json$/, ""));

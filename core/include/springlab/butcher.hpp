@@ -56,6 +56,8 @@ struct ButcherTableau {
 //   "tableau 'my.json': /A/1/2: "1/0" is not a number: write a fraction (1/6), an integer or a decimal".
 ButcherTableau parse_tableau(const std::string& json_text, const std::string& where);
 ButcherTableau load_tableau_file(const std::string& path);
+// The tableau as compact JSON that parse_tableau reads back to the same entries (for a link).
+std::string tableau_json(const ButcherTableau& tableau);
 
 // One order condition: its tree in Butcher's bracket notation ("[t,[t]]", t the single node),
 // the sum it stands for ("sum b_i c_i a_ij c_j") and its two sides, exactly.

@@ -210,6 +210,8 @@ std::optional<Method> find_method(std::string_view name);
 // same row; the same name with other entries, a built-in's name, or more than 32 added rows
 // throw InputError. Rows are never removed (threads may be reading them).
 Method add_tableau_method(const ButcherTableau& tableau, const std::string& name);
+// The tableau a row was made from (add_tableau_method); nullptr for a built-in row.
+const ButcherTableau* tableau_source(Method method);
 // "euler, symplectic-euler, ..." for messages.
 std::string method_names();
 

@@ -36,6 +36,8 @@
 
 #include <atomic>
 #include <complex>
+#include <mutex>
+#include <deque>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -164,6 +166,13 @@ class StabilityAnalysis {
   double w_max_ = 0.0, w_bound_ = 0.0, seconds_ = 0.0;
   int dofs_ = 0;
   std::vector<StabilityLimit> limits_;  // one per method, in table order
+  // Rows made from tableaux after the analysis (the app's "Run beside"): their limits from the
+  // modes found, made when first asked for. Shared, so that the analysis stays copyable.
+  struct Late {
+    std::mutex mutex;
+    std::deque<StabilityLimit> limits;
+  };
+  std::shared_ptr<Late> late_ = std::make_shared<Late>();
   std::vector<std::complex<double>> eigenvalues_;
   std::vector<ModePoint> modes_;
   std::vector<ModePoint> growth_modes_;  // (gamma, kappa) of each mode, real eigenvalues included

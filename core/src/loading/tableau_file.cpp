@@ -115,6 +115,28 @@ ButcherTableau parse_tableau(const std::string& json_text, const std::string& wh
   return t;
 }
 
+std::string tableau_json(const ButcherTableau& t) {
+  const auto texts = [](const std::vector<TableauEntry>& entries) {
+    json out = json::array();
+    for (const TableauEntry& e : entries) out.push_back(e.text);
+    return out;
+  };
+  json out = json::object();
+  if (!t.name.empty()) out["name"] = t.name;
+  json rows = json::array();
+  for (int i = 0; i < t.stages; ++i) {
+    // Each row up to its last nonzero entry, as the format allows.
+    std::vector<TableauEntry> row = t.a[static_cast<std::size_t>(i)];
+    while (row.size() > 1 && row.back().value == 0.0 && *parse_rational(row.back().text) == 0) row.pop_back();
+    rows.push_back(texts(row));
+  }
+  out["A"] = rows;
+  out["b"] = texts(t.b);
+  if (t.c_given) out["c"] = texts(t.c);
+  if (t.b_hat) out["b_hat"] = texts(*t.b_hat);
+  return out.dump();
+}
+
 ButcherTableau load_tableau_file(const std::string& path) {
   const std::string where = "tableau '" + path + "'";
   return parse_tableau(json_reader::read_document(path, "tableau"), where);

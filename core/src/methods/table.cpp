@@ -36,7 +36,9 @@ using F = MethodFamily;
 // The one table. Stability limits are on the undamped oscillator (docs/numerics.md, "The
 // undamped oscillator"); with damping the limit is computed by the stability analysis from what
 // each row gives: its tableau's R(z), its closed form, its definite form.
-const MethodInfo kMethods[] = {
+// constexpr: constant-initialised, so that the table (below) can copy it during other files'
+// static initialisation (a test's list of methods) whatever the order the linker gives them.
+constexpr MethodInfo kMethods[] = {
     {.id = Method::Euler, .name = "euler", .label = "Explicit Euler", .order = 1, .evaluations = "1",
      .undamped_limit = kNever,
      .stability = "explicit Euler gains energy at any step without damping (growth sqrt(1 + (h w)^2) a step)",
@@ -205,6 +207,14 @@ Method add_tableau_method(const ButcherTableau& tableau, const std::string& name
   t.rows[index] = info;
   t.count.store(index + 1, std::memory_order_release);
   return info.id;
+}
+
+const ButcherTableau* tableau_source(Method method) {
+  Table& t = table();
+  const std::lock_guard lock(t.adding);
+  const auto row = static_cast<std::size_t>(method);
+  const std::size_t built_in = std::size(kMethods);
+  return row >= built_in && row - built_in < t.added.size() ? &t.added[row - built_in].source : nullptr;
 }
 
 void accelerations(const Model& model, const Points& x, const Points& v, Points& a, Workspace& ws) {

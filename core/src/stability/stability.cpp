@@ -395,10 +395,26 @@ void StabilityAnalysis::analyse(const Model& model, const State& state, int dens
 
 const StabilityLimit& StabilityAnalysis::limit(Method method) const {
   const auto row = static_cast<std::size_t>(method);
-  if (row >= limits_.size())  // a row made from a tableau after this analysis
-    throw std::out_of_range(std::string("no stability limit for ") + method_info(method).name +
-                            ": the method was added after the analysis; analyse again");
-  return limits_[row];
+  if (row < limits_.size()) return limits_[row];
+  // A row made from a tableau after this analysis (a Runge-Kutta row): the least over the modes
+  // found of its limit, from its R(z) as for the rows analysed (every eigenvalue on a dense scene,
+  // exact; the traced boundary of the numerical range on a large one).
+  const std::lock_guard lock(late_->mutex);
+  for (const StabilityLimit& l : late_->limits)
+    if (l.method == method) return l;
+  StabilityLimit limit;
+  limit.method = method;
+  const MethodInfo& info = method_info(method);
+  limit.h = info.adaptive() ? kNaN : kInf;
+  if (!info.adaptive() && !info.any_step() && !cancelled_) {
+    if (dense_ && !eigenvalues_.empty())
+      for (Complex lambda : eigenvalues_) limit.h = std::min(limit.h, runge_kutta_limit(method, lambda));
+    else
+      for (const ModePoint& p : modes_) limit.h = std::min(limit.h, mode_limit(method, p.gamma, p.kappa));
+    limit.exact = dense_;
+  }
+  late_->limits.push_back(limit);
+  return late_->limits.back();
 }
 
 StabilityAnalysis::Growth StabilityAnalysis::transient_growth(Method method, double h, double verlet_damping) const {

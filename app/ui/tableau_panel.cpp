@@ -1,0 +1,223 @@
+#include "ui/tableau_panel.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <nlohmann/json.hpp>
+
+#include "springlab/error.hpp"
+#include "ui/text_wrap.hpp"
+#include "util/data_dir.hpp"
+
+namespace springlab::ui {
+
+namespace {
+
+void set(TableauPanel::Cell& cell, const std::string& text) {
+  std::snprintf(cell.data(), cell.size(), "%s", text.c_str());
+}
+
+std::string limit_text(double limit) {
+  if (std::isinf(limit)) return "the whole axis";
+  if (limit == 0.0) return "none";
+  char s[32];
+  std::snprintf(s, sizeof s, "%.4g", limit);
+  return s;
+}
+
+}  // namespace
+
+TableauPanel::TableauPanel() {
+  // Heun's, to start from: the lecture's midpoint's neighbour.
+  for (auto& row : a)
+    for (Cell& c : row) set(c, "0");
+  for (Cell& c : b) set(c, "0");
+  set(a[1][0], "1");
+  set(b[0], "1/2");
+  set(b[1], "1/2");
+}
+
+void TableauPanel::load(const ButcherTableau& t) {
+  if (t.stages > kMaxStages) {
+    error = t.name + " has " + std::to_string(t.stages) + " stages; the panel holds " + std::to_string(kMaxStages);
+    return;
+  }
+  stages = t.stages;
+  name = t.name;
+  for (int i = 0; i < kMaxStages; ++i) {
+    for (int j = 0; j < kMaxStages; ++j)
+      set(a[i][j], i < stages && j < stages ? t.a[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)].text : "0");
+    set(b[i], i < stages ? t.b[static_cast<std::size_t>(i)].text : "0");
+  }
+  dirty = true;
+}
+
+std::string TableauPanel::json() const {
+  nlohmann::json doc;
+  doc["name"] = name;
+  nlohmann::json rows = nlohmann::json::array();
+  for (int i = 0; i < stages; ++i) {
+    nlohmann::json row = nlohmann::json::array();
+    for (int j = 0; j < stages; ++j) row.push_back(std::string(a[i][j].data()));
+    rows.push_back(row);
+  }
+  doc["A"] = rows;
+  nlohmann::json weights = nlohmann::json::array();
+  for (int i = 0; i < stages; ++i) weights.push_back(std::string(b[i].data()));
+  doc["b"] = weights;
+  return doc.dump();
+}
+
+void TableauPanel::check() {
+  dirty = false;
+  tableau.reset();
+  analysis.reset();
+  error.clear();
+  error_row = error_col = -1;
+  try {
+    tableau = parse_tableau(json(), "your method");
+    analysis = analyse_tableau(*tableau);
+  } catch (const InputError& e) {
+    // "your method: /A/1/0: A row 2, column 1 ...": the cell from the pointer, the rest to show.
+    error = e.what();
+    const std::size_t at = error.find(": /");
+    if (at != std::string::npos) {
+      const std::size_t end = error.find(": ", at + 2);
+      const std::string pointer = error.substr(at + 2, end - at - 2);
+      int i = -1, j = -1;
+      if (std::sscanf(pointer.c_str(), "/A/%d/%d", &i, &j) == 2) error_row = i, error_col = j;
+      else if (std::sscanf(pointer.c_str(), "/b/%d", &i) == 1) error_row = i;
+      error = end == std::string::npos ? error : error.substr(end + 2);
+    }
+  }
+}
+
+std::string run_beside(const ButcherTableau& tableau, app::Session& session) {
+  std::string why;
+  for (int k = 1; k <= 32; ++k) {
+    const std::string name = k == 1 ? "mine" : "mine-" + std::to_string(k);
+    try {
+      const Method m = add_tableau_method(tableau, name);
+      std::vector<Method> lanes;
+      if (session.comparing())
+        for (const app::Lane& l : session.lanes()) lanes.push_back(l.sim.settings().method);
+      else
+        lanes.push_back(session.method());
+      if (std::find(lanes.begin(), lanes.end(), m) == lanes.end()) {
+        if (lanes.size() >= app::Session::kMaxLanes) lanes.pop_back();
+        lanes.push_back(m);
+      }
+      session.set_compare(lanes);
+      return "running as '" + name + "' beside the other lanes";
+    } catch (const InputError& e) {
+      why = e.what();  // the name is another tableau's (a row is never replaced): the next one
+    }
+  }
+  return why;
+}
+
+void draw_tableau_panel(TableauPanel& panel, app::Session& session, const std::vector<std::string>& shipped,
+                        float scale) {
+  if (!panel.open) return;
+  // Beside the left panel, opaque (the cells are read, not the scene through them).
+  ImGui::SetNextWindowPos(ImVec2(380.0f * scale, 20.0f * scale), ImGuiCond_Appearing);
+  ImGui::SetNextWindowSize(ImVec2(560.0f * scale, 430.0f * scale), ImGuiCond_Appearing);
+  ImGui::SetNextWindowBgAlpha(0.97f);
+  if (!ImGui::Begin("Your method (Y)", &panel.open, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
+    ImGui::End();
+    return;
+  }
+  // Start from a shipped tableau.
+  ImGui::SetNextItemWidth(170.0f * scale);
+  if (ImGui::BeginCombo("start from", panel.name.c_str())) {
+    for (const std::string& n : shipped)
+      if (ImGui::Selectable(n.c_str())) {
+        try {
+          panel.load(load_tableau_file(app::resolve_tableau(n)));
+        } catch (const InputError& e) {
+          panel.error = e.what();
+        }
+      }
+    ImGui::EndCombo();
+  }
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(90.0f * scale);
+  if (ImGui::InputInt("stages", &panel.stages)) {
+    panel.stages = std::clamp(panel.stages, 1, TableauPanel::kMaxStages);
+    panel.dirty = true;
+  }
+  if (panel.dirty) panel.check();
+
+  // The grid: c (the row sums, as the steps use them), A's lower triangle and diagonal, then b.
+  const float cell = 62.0f * scale;
+  const ImVec4 red(0.65f, 0.12f, 0.10f, 1.0f);
+  if (ImGui::BeginTable("tableau", panel.stages + 1, ImGuiTableFlags_SizingFixedFit)) {
+    for (int i = 0; i <= panel.stages; ++i) {
+      const bool weights = i == panel.stages;
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      if (weights) ImGui::TextUnformatted("b");
+      else if (panel.tableau) ImGui::TextDisabled("c%d = %s", i + 1, panel.tableau->c[static_cast<std::size_t>(i)].text.c_str());
+      else ImGui::TextDisabled("c%d", i + 1);
+      for (int j = 0; j < panel.stages; ++j) {
+        ImGui::TableNextColumn();
+        if (!weights && j > i) {  // above the diagonal: diagonally implicit at most
+          ImGui::TextDisabled("  .");
+          continue;
+        }
+        TableauPanel::Cell& c = weights ? panel.b[j] : panel.a[i][j];
+        const bool bad = weights ? panel.error_row == j && panel.error_col < 0 : panel.error_row == i && panel.error_col == j;
+        if (bad) ImGui::PushStyleColor(ImGuiCol_FrameBg, red);
+        ImGui::SetNextItemWidth(cell);
+        const std::string id = "##" + std::to_string(i) + "_" + std::to_string(j);
+        if (ImGui::InputText(id.c_str(), c.data(), c.size())) panel.dirty = true;
+        if (bad) ImGui::PopStyleColor();
+      }
+    }
+    ImGui::EndTable();
+  }
+  ImGui::TextDisabled("entries: 1/6, -2, 0.25; the diagonal makes a stage implicit");
+  ImGui::Separator();
+
+  // What the cells make, at once.
+  const float wrap = ImGui::GetContentRegionAvail().x;
+  if (!panel.error.empty()) {
+    text_wrapped(panel.error, ImVec4(1.0f, 0.45f, 0.40f, 1.0f), wrap);
+  } else if (panel.analysis && panel.tableau) {
+    const TableauAnalysis& a = *panel.analysis;
+    std::string order = "order " + std::to_string(a.order) + (a.order == TableauAnalysis::kMaxOrder ? " or more" : "") +
+                        ", exactly (" + std::to_string(a.conditions) + " conditions checked)";
+    if (a.order_to_rounding > a.order) order += "; " + std::to_string(a.order_to_rounding) + " to rounding";
+    text_wrapped(std::string(panel.tableau->is_explicit() ? "explicit, " : "diagonally implicit, ") + order, {}, wrap);
+    if (a.first_failure) {
+      const OrderCondition& f = *a.first_failure;
+      text_wrapped("fails at order " + std::to_string(f.order) + ", tree " + f.tree + ": " + f.formula + " = " + f.rhs +
+                       ", but this tableau gives " + f.lhs,
+                   {}, wrap);
+    }
+    text_wrapped("R(z) = " + stability_function_text(a), {}, wrap);
+    const std::string real = std::isinf(a.real_limit) ? "the whole negative real axis"
+                             : a.real_limit == 0.0   ? "no part of the negative real axis"
+                                                     : "[-" + limit_text(a.real_limit) + ", 0]";
+    const std::string imaginary = std::isinf(a.imaginary_limit) ? "the whole imaginary axis"
+                                  : a.imaginary_limit == 0.0    ? "the imaginary axis only at 0"
+                                                                : "[-" + limit_text(a.imaginary_limit) + "i, " +
+                                                                      limit_text(a.imaginary_limit) + "i]";
+    text_wrapped("|R| <= 1 on " + real + ", and on " + imaginary, {}, wrap);
+    for (const std::string& w : a.warnings) ImGui::TextDisabled("%s", w.c_str());
+  }
+
+  ImGui::BeginDisabled(!panel.tableau);
+  if (ImGui::Button("Run beside") && panel.tableau) panel.run_message = run_beside(*panel.tableau, session);
+  ImGui::EndDisabled();
+  if (!panel.run_message.empty()) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s", panel.run_message.c_str());
+  }
+  ImGui::End();
+}
+
+}  // namespace springlab::ui
