@@ -59,7 +59,7 @@ constexpr MethodInfo kMethods[] = {
      .family = F::Partitioned, .step = steps::modified_euler, .mode_limit = modes::modified_euler,
      .damping_shift = 0.5, .corner_bound = true, .audited = true},
     {.id = Method::RK4, .name = "rk4", .label = "RK4", .order = 4, .evaluations = "4",
-     .undamped_limit = 2.0 * std::sqrt(2.0),
+     .undamped_limit = 2.8284271247461903,  // 2 sqrt(2) (a literal: std::sqrt is not constexpr in clang)
      .stability = "RK4 is stable for h w <= 2 sqrt(2) = 2.83, slightly dissipative below it",
      .family = F::RungeKutta, .step = steps::rk4, .tableau = &kRK4Tableau, .audited = true},
     {.id = Method::AdaptiveEuler, .name = "adaptive-euler", .label = "Adaptive Euler", .order = 1,
