@@ -155,6 +155,7 @@ Corner legend_corner(const Chart& chart, double width, double height) {
   };
   constexpr int kSamples = 24;  // along each segment
   for (const Series& s : chart.series) {
+    if (s.color.a < 0.5f) continue;  // a faint fill (a stability region's inside) may be covered
     bool have = false;
     double pu = 0.0, pv = 0.0;
     for (std::size_t k = 0; k < s.x.size() && k < s.y.size(); ++k) {

@@ -54,7 +54,8 @@ void axis_range(const Chart& chart, bool x_axis, double& lo, double& hi);
 
 // Where a legend of the given size (fractions of the plot's width and height) covers the least
 // of the data: the corner whose box holds the fewest of the series' points, each line sampled
-// along its segments in the plot's own (log or linear) coordinates. Ties keep the earlier corner
+// along its segments in the plot's own (log or linear) coordinates; faint series (alpha below
+// 0.5: a region's fill) do not count. Ties keep the earlier corner
 // in this order, so that a legend stays top right unless it would hide something there.
 enum class Corner { TopRight, TopLeft, BottomRight, BottomLeft };
 Corner legend_corner(const Chart& chart, double width, double height);

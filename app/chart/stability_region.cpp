@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <map>
+#include <mutex>
 
 #include "draw/palette.hpp"
 
@@ -12,20 +14,25 @@ namespace {
 
 using Complex = std::complex<double>;
 
-// Stable at z = h lambda (the complex plane's methods), by the row's stability function.
-bool stable_at(Method method, Complex z) {
+// |R(z)| - 1 at z = h lambda (the complex plane's methods), by the row's stability function:
+// the region is where it is <= 0.
+double margin_at(Method method, Complex z) {
   const Tableau* tableau = method_info(method).tableau;
-  return tableau && std::abs(tableau->stability_function(z)) <= 1.0;
+  return tableau ? std::abs(tableau->stability_function(z)) - 1.0 : 1.0;
 }
+bool stable_at(Method method, Complex z) { return margin_at(method, z) <= 0.0; }
 
-// Stable for a mode at (X, Y) = (h w, h c) (the oscillator plane's methods): mode_limit() of the
-// mode (c, w^2) is at least h. With h = 1, w = X and c = Y.
+// For a mode at (X, Y) = (h w, h c) (the oscillator plane's methods): 1 - mode_limit() of the
+// mode (c, w^2) over h (with h = 1, w = X and c = Y), <= 0 where the mode is stable.
+double margin_at(Method method, double X, double Y) { return 1.0 - std::min(mode_limit(method, Y, X * X), 1e3); }
 bool stable_at(Method method, double X, double Y) { return mode_limit(method, Y, X * X) >= 1.0 * (1.0 - 1e-12); }
 
-// The region's boundary as line segments (marching squares on a grid of the plane), and its
-// inside as faint horizontal strokes, both appended to series.
-template <typename Stable>
-void region(const Stable& stable, double x0, double x1, double y0, double y1, const draw::Rgba& color,
+// The region where `margin` <= 0, from its values on a grid: the boundary as the contour
+// margin = 0 (marching squares, each crossing placed on its cell side by linear interpolation, so
+// the edge is a smooth curve, not a staircase), and the inside as faint horizontal strokes whose
+// ends are interpolated the same way; both appended to series.
+template <typename Margin>
+void region(const Margin& margin, double x0, double x1, double y0, double y1, const draw::Rgba& color,
             const std::string& label, std::vector<Series>& out) {
   constexpr int kN = 160;
   Series edge, fill;
@@ -37,38 +44,51 @@ void region(const Stable& stable, double x0, double x1, double y0, double y1, co
   fill.width = 2.5f;
   const auto x = [&](int i) { return x0 + (x1 - x0) * i / kN; };
   const auto y = [&](int j) { return y0 + (y1 - y0) * j / kN; };
-  std::vector<char> in((kN + 1) * (kN + 1));
+  std::vector<double> m((kN + 1) * (kN + 1));
   for (int j = 0; j <= kN; ++j)
-    for (int i = 0; i <= kN; ++i) in[j * (kN + 1) + i] = stable(x(i), y(j));
+    for (int i = 0; i <= kN; ++i) {
+      const double v = margin(x(i), y(j));
+      m[j * (kN + 1) + i] = std::isfinite(v) ? v : 1.0;  // (a pole of R: outside)
+    }
+  const auto at = [&](int i, int j) { return m[j * (kN + 1) + i]; };
+  const auto inside = [&](int i, int j) { return at(i, j) <= 0.0; };
+  // Where margin = 0 between two grid points a and b (one inside, one not), as a fraction of a to b.
+  const auto zero = [](double a, double b) { return std::clamp(a / (a - b), 0.0, 1.0); };
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const auto cut = [&](Series& s) {
     s.x.push_back(nan);
     s.y.push_back(nan);
   };
-  // The inside: one stroke per row where it is stable.
+  // The inside: a stroke per row from where it enters to where it leaves.
   for (int j = 0; j <= kN; ++j)
     for (int i = 0; i <= kN; ++i) {
-      if (!in[j * (kN + 1) + i]) continue;
+      if (!inside(i, j)) continue;
       int k = i;
-      while (k + 1 <= kN && in[j * (kN + 1) + k + 1]) ++k;
-      fill.x.insert(fill.x.end(), {x(i), x(k)});
+      while (k + 1 <= kN && inside(k + 1, j)) ++k;
+      const double from = i > 0 ? x(i - 1) + zero(at(i - 1, j), at(i, j)) * (x(i) - x(i - 1)) : x(i);
+      const double to = k < kN ? x(k) + zero(at(k, j), at(k + 1, j)) * (x(k + 1) - x(k)) : x(k);
+      fill.x.insert(fill.x.end(), {from, to});
       fill.y.insert(fill.y.end(), {y(j), y(j)});
       cut(fill);
       i = k;
     }
-  // The edge: in each cell, a segment between the midpoints of the sides where stability changes.
+  // The edge: in each cell, segments between the interpolated crossings of its sides.
   for (int j = 0; j < kN; ++j)
     for (int i = 0; i < kN; ++i) {
-      const bool c[4] = {static_cast<bool>(in[j * (kN + 1) + i]), static_cast<bool>(in[j * (kN + 1) + i + 1]),
-                         static_cast<bool>(in[(j + 1) * (kN + 1) + i + 1]), static_cast<bool>(in[(j + 1) * (kN + 1) + i])};
-      const double mx[4] = {0.5 * (x(i) + x(i + 1)), x(i + 1), 0.5 * (x(i) + x(i + 1)), x(i)};
-      const double my[4] = {y(j), 0.5 * (y(j) + y(j + 1)), y(j + 1), 0.5 * (y(j) + y(j + 1))};
+      const int ci[4] = {i, i + 1, i + 1, i}, cj[4] = {j, j, j + 1, j + 1};  // corners, anticlockwise
+      double px[4], py[4];
       std::vector<int> crossings;
-      for (int s = 0; s < 4; ++s)
-        if (c[s] != c[(s + 1) % 4]) crossings.push_back(s);
+      for (int e = 0; e < 4; ++e) {
+        const int a = e, b = (e + 1) % 4;
+        if (inside(ci[a], cj[a]) == inside(ci[b], cj[b])) continue;
+        const double f = zero(at(ci[a], cj[a]), at(ci[b], cj[b]));
+        px[e] = x(ci[a]) + f * (x(ci[b]) - x(ci[a]));
+        py[e] = y(cj[a]) + f * (y(cj[b]) - y(cj[a]));
+        crossings.push_back(e);
+      }
       for (std::size_t k = 0; k + 1 < crossings.size(); k += 2) {
-        edge.x.insert(edge.x.end(), {mx[crossings[k]], mx[crossings[k + 1]]});
-        edge.y.insert(edge.y.end(), {my[crossings[k]], my[crossings[k + 1]]});
+        edge.x.insert(edge.x.end(), {px[crossings[k]], px[crossings[k + 1]]});
+        edge.y.insert(edge.y.end(), {py[crossings[k]], py[crossings[k + 1]]});
         cut(edge);
       }
     }
@@ -87,6 +107,46 @@ std::vector<Complex> spectrum(const StabilityAnalysis& analysis) {
     out.push_back(-0.5 * m.gamma - root);
   }
   return out;
+}
+
+// How far a method's region reaches, in the view's terms: a bounded region (an explicit
+// tableau's) by the box of its stable points; an unbounded one (implicit) by the box of its
+// unstable points (implicit Euler's disc |z - 1| < 1), to the left at least to -3. Sampled once
+// for each method on a coarse grid over |Re|, |Im| <= 8 (the shipped explicit tableaux reach 3.7;
+// 16 for an unbounded one), then kept: a region depends on its method alone.
+struct Extent {
+  double left = 1.0, right = 0.25, up = 1.0;
+};
+Extent region_extent(Method method) {
+  static std::mutex mutex;
+  static std::map<int, Extent> known;
+  const std::lock_guard lock(mutex);
+  if (const auto it = known.find(static_cast<int>(method)); it != known.end()) return it->second;
+  const Tableau* tableau = method_info(method).tableau;
+  Extent e;
+  if (tableau) {
+    const bool bounded = tableau->is_explicit();
+    constexpr int kN = 96;
+    const double kL = bounded ? 8.0 : 16.0;  // (an SDIRK's unstable disc reaches past 10)
+    double left = 0.0, right = 0.0, up = 0.0;
+    for (int j = 0; j <= kN; ++j)
+      for (int i = 0; i <= 2 * kN; ++i) {
+        const Complex z(-kL + kL * i / kN, kL * j / kN);
+        if (stable_at(method, z) != bounded) continue;
+        left = std::max(left, -z.real());
+        right = std::max(right, z.real());
+        up = std::max(up, z.imag());
+      }
+    const double step = kL / kN;  // (a sample's width, for the edge between samples)
+    e.left = std::max(bounded ? left + step : 3.0, 1.0);
+    e.right = std::max(right + step, 0.25);
+    e.up = std::max(up + step, 1.0);
+    // Unstable out to the grid's edge (the trapezoidal rule: the whole right half plane): no set
+    // to show whole; a little of the right half plane, as for the explicit ones.
+    if (!bounded && (right >= kL - 2.0 * step || up >= kL - 2.0 * step)) e.right = 2.0, e.up = 3.0;
+  }
+  known[static_cast<int>(method)] = e;
+  return e;
 }
 
 // The largest factor h may be multiplied by with every mode stable (inf: any; 0: none).
@@ -133,24 +193,40 @@ Chart stability_region(const StabilityAnalysis& analysis, const std::vector<Regi
     c.x.label = "Re(h lambda)";
     c.y.label = "Im(h lambda)";
     const std::vector<Complex> lambdas = spectrum(analysis);
-    // The view: the dots with room around them (at small h they sit near 0, where the regions'
-    // edges decide), at least 1 across (where the regions differ) and at most 40.
-    double reach = 1.0;
+    // The view, as Hairer and Wanner draw regions: every charted region whole (a bounded one's
+    // stable set, an unbounded one's unstable set), and the dots, each with some room, at most 40
+    // across (a stiff scene's dots far out at a large step are drawn at the view's edge).
+    Extent view;
+    for (const RegionLane& l : shown) {
+      const Extent e = region_extent(l.method);
+      view.left = std::max(view.left, e.left);
+      view.right = std::max(view.right, e.right);
+      view.up = std::max(view.up, e.up);
+    }
     for (const RegionLane& l : shown)
-      for (Complex z : lambdas) reach = std::max(reach, 1.5 * std::abs(l.h * z));
-    reach = std::min(reach, 40.0);
-    const double x0 = -reach, x1 = 0.25 * reach, y0 = -reach, y1 = reach;
+      for (Complex lambda : lambdas) {
+        const Complex z = l.h * lambda;
+        if (!std::isfinite(z.real()) || !std::isfinite(z.imag())) continue;
+        view.left = std::max(view.left, -1.1 * z.real());
+        view.right = std::max(view.right, 1.1 * z.real());
+        view.up = std::max(view.up, 1.1 * std::abs(z.imag()));
+      }
+    const double x0 = -std::min(view.left, 40.0), x1 = std::min(view.right, 40.0);
+    const double y0 = -std::min(view.up, 40.0), y1 = -y0;
     c.x.min = x0;
     c.x.max = x1;
     c.y.min = y0;
     c.y.max = y1;
-    // An explicit method's region lies within |z| <= 3 (RK4's reaches 2.83): sampled there, its
-    // edge is smooth however far the view reaches. Implicit Euler's is everything but a disc.
+    // A bounded region is sampled over its own box (its edge stays smooth however far the view
+    // reaches); an unbounded one over the view.
     for (const RegionLane& l : shown) {
-      const bool bounded = !method_info(l.method).implicit();
-      region([&](double x, double y) { return stable_at(l.method, Complex(x, y)); },
-             bounded ? std::max(x0, -3.0) : x0, bounded ? std::min(x1, 0.5) : x1, bounded ? std::max(y0, -3.0) : y0,
-             bounded ? std::min(y1, 3.0) : y1, draw::method_color(l.method), region_verdict(analysis, l), c.series);
+      const Tableau* tableau = method_info(l.method).tableau;
+      const bool bounded = tableau && tableau->is_explicit();
+      const Extent e = region_extent(l.method);
+      region([&](double x, double y) { return margin_at(l.method, Complex(x, y)); },
+             bounded ? std::max(x0, -e.left) : x0, bounded ? std::min(x1, e.right) : x1,
+             bounded ? std::max(y0, -e.up) : y0, bounded ? std::min(y1, e.up) : y1, draw::method_color(l.method),
+             region_verdict(analysis, l), c.series);
     }
     std::vector<Series> outsides;  // drawn last: a red dot is never hidden under another lane's
     for (const RegionLane& l : shown) {
@@ -194,7 +270,7 @@ Chart stability_region(const StabilityAnalysis& analysis, const std::vector<Regi
   // Every region here lies within h w <= 2, h c <= 2 (the closed forms of docs/numerics.md, "One damped mode"): sampled
   // there, its edge stays smooth when the modes stretch the view.
   for (const RegionLane& l : shown)
-    region([&](double x, double y) { return stable_at(l.method, x, y); }, 0.0, std::min(xmax, 2.2), 0.0,
+    region([&](double x, double y) { return margin_at(l.method, x, y); }, 0.0, std::min(xmax, 2.2), 0.0,
            std::min(ymax, 2.2), draw::method_color(l.method), region_verdict(analysis, l), c.series);
   std::vector<Series> outsides;
   for (const RegionLane& l : shown) {

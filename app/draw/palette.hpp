@@ -18,9 +18,9 @@ namespace springlab::draw {
 // RK4, Verlet and implicit Euler) take its five most distinct hues, for protanopes and
 // deuteranopes too: vermilion, sky blue, bluish green, yellow and reddish purple; the rest take
 // orange, light grey, blue and a violet, and are seldom beside the ones they resemble; the
-// iterative rows (what games use) salmon, lime and magenta, apart from the lecture's.
-// By the method's row in the table (methods()), in its order; a row past the list takes a hue
-// of its own, turned by the golden angle from the last.
+// iterative rows (what games use) salmon, lime and magenta, apart from the lecture's; the first
+// rows made from tableaux six more. By the method's row in the table (methods()), in its order; a
+// row past the lists takes a hue of its own, turned by the golden angle from the last.
 inline Rgba method_color(Method m) {
   static constexpr Rgba kByRow[] = {
       {0.90f, 0.38f, 0.00f, 1},  // euler: vermilion  #E66100
@@ -36,8 +36,18 @@ inline Rgba method_color(Method m) {
       {0.65f, 0.85f, 0.33f, 1},  // local-global: lime #A6D854
       {0.94f, 0.20f, 0.90f, 1},  // vbd: magenta #F032E6
   };
+  // Rows made from tableaux (add_tableau_method): hues apart from the built-in rows'.
+  static constexpr Rgba kAdded[] = {
+      {0.00f, 0.85f, 0.95f, 1},  // cyan
+      {1.00f, 0.60f, 0.80f, 1},  // pink
+      {0.80f, 0.60f, 0.35f, 1},  // tan
+      {0.55f, 0.62f, 1.00f, 1},  // periwinkle
+      {0.60f, 1.00f, 0.80f, 1},  // mint
+      {1.00f, 0.78f, 0.55f, 1},  // peach
+  };
   const auto row = static_cast<std::size_t>(m);
   if (row < std::size(kByRow)) return kByRow[row];
+  if (row - std::size(kByRow) < std::size(kAdded)) return kAdded[row - std::size(kByRow)];
   const float hue = std::fmod(0.61803398875f * static_cast<float>(row), 1.0f);
   const auto channel = [&](float offset) {
     return 0.55f + 0.35f * std::cos(6.28318530718f * (hue + offset));
