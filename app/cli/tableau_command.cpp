@@ -44,7 +44,9 @@ void report(const std::string& name, const ButcherTableau& t, const TableauAnaly
   if (a.order_to_rounding > a.order)
     std::printf("rounding    order %d when each condition need only hold to 1e-10 (entries rounded from irrational values)\n",
                 a.order_to_rounding);
-  if (a.embedded_order) std::printf("embedded    b_hat: order %d\n", *a.embedded_order);
+  if (a.embedded_order)
+    std::printf("embedded    b_hat: order %d%s\n", *a.embedded_order,
+                t.is_explicit() ? "; as a method it chooses its own steps (--tol), as rk45 does" : "");
   std::printf("R(z)        %s\n", stability_function_text(a).c_str());
   if (std::isinf(a.real_limit)) std::printf("real axis   |R| <= 1 on the whole negative real axis\n");
   else if (a.real_limit == 0.0) std::printf("real axis   |R| > 1 just left of 0: a decaying mode grows at any step\n");

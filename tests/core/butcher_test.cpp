@@ -67,7 +67,9 @@ TEST(Butcher, ShippedTableauxHaveTheirStatedOrders) {
     EXPECT_EQ(a.order_to_rounding, *t.stated_order);
     EXPECT_TRUE(a.order == *t.stated_order || a.order == *t.stated_order - 1);
     EXPECT_TRUE(a.warnings.empty()) << a.warnings.front();
-    if (t.stated_embedded_order) EXPECT_EQ(a.embedded_order, t.stated_embedded_order);
+    if (t.stated_embedded_order) {
+      EXPECT_EQ(a.embedded_order, t.stated_embedded_order);
+    }
     EXPECT_EQ(a.conditions, 37);
   }
   EXPECT_GE(count, 17);

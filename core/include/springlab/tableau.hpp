@@ -21,6 +21,13 @@ struct Tableau {
   // below and Q = 1; for an implicit one both from det(I - zA + z 1 b^T) and det(I - zA), found
   // at construction in doubles (exactly, for a tableau read as data: springlab/butcher.hpp).
   std::vector<double> numerator, denominator;
+  // An embedded pair (adaptive): the weights' difference b - b_hat that estimates the local error,
+  // and the controller's exponent 1 / (q + 1), q the lower of the two orders; empty otherwise.
+  std::vector<double> error_weights;
+  double error_exponent = 0.0;
+  // Whether the last stage is the derivative at the new state (its row of A is b, its node 1):
+  // then it is the next step's first ("first same as last").
+  bool first_same_as_last() const;
 
   Tableau() = default;
   Tableau(std::vector<std::vector<double>> rows, std::vector<double> weights);

@@ -32,16 +32,16 @@ constexpr double kErrorWeights[7] = {71.0 / 57600.0,      0.0,         -71.0 / 1
 
 // RMS of the scaled error over the coordinates of free particles.
 double error_norm(const Model& model, const Points& x0, const Points& v0, const Points& x1,
-                  const Points& v1, double step, const Workspace& ws, double tol) {
+                  const Points& v1, double step, const Workspace& ws, double tol, const double* weights, int stages) {
   double sum = 0.0;
   int count = 0;
   for (int i = 0; i < x0.rows(); ++i) {
     if (model.pinned(i)) continue;
     for (int c = 0; c < 3; ++c) {
       double ex = 0.0, ev = 0.0;
-      for (int s = 0; s < 7; ++s) {
-        ex += kErrorWeights[s] * ws.kx[s](i, c);
-        ev += kErrorWeights[s] * ws.kv[s](i, c);
+      for (int s = 0; s < stages; ++s) {
+        ex += weights[s] * ws.kx[s](i, c);
+        ev += weights[s] * ws.kv[s](i, c);
       }
       const double sx = tol + tol * std::max(std::abs(x0(i, c)), std::abs(x1(i, c)));
       const double sv = tol + tol * std::max(std::abs(v0(i, c)), std::abs(v1(i, c)));
@@ -56,24 +56,37 @@ double error_norm(const Model& model, const Points& x0, const Points& v0, const 
 
 void rk45(const Model& model, const State& in, State& out, double h, const StepSettings& settings,
           Workspace& ws) {
+  adaptive::embedded_pair_step(kDormandPrince, kErrorWeights, 0.2, "rk45", model, in, out, h, settings, ws);
+}
+
+}  // namespace springlab::steps
+
+namespace springlab::adaptive {
+
+void embedded_pair_step(const Tableau& tableau, const double* error_weights, double exponent, const char* name,
+                        const Model& model, const State& in, State& out, double h, const StepSettings& settings,
+                        Workspace& ws) {
+  const int last_stage = tableau.stages - 1;
+  const bool fsal = tableau.first_same_as_last();
   // The state walks in `out`; each try is written to (ws.ux, ws.uv) and swapped in if accepted.
   out.x = in.x;
   out.v = in.v;
-  double T = adaptive::first_try(ws, h);
+  double T = first_try(ws, h);
   double done = 0.0;
-  bool first_known = ws.fsal_ready;
+  bool first_known = fsal && ws.fsal_ready;
   bool just_rejected = false;
   while (done < h) {
     const double remaining = h - done;
     const bool last = T >= remaining * (1.0 - 1e-12);
     const double step = last ? remaining : T;
-    rk::stages(model, out.x, out.v, step, kDormandPrince, ws, first_known);
-    rk::combine(out.x, out.v, step, kDormandPrince.b, ws, ws.ux, ws.uv);
-    const double err = error_norm(model, out.x, out.v, ws.ux, ws.uv, step, ws, settings.tolerance);
+    rk::stages(model, out.x, out.v, step, tableau, ws, first_known);
+    rk::combine(out.x, out.v, step, tableau.b, ws, ws.ux, ws.uv);
+    const double err = steps::error_norm(model, out.x, out.v, ws.ux, ws.uv, step, ws, settings.tolerance,
+                                         error_weights, tableau.stages);
     if (!(err <= 1.0)) {  // also rejects NaN
       ++ws.counters.rejected;
-      T = step * (std::isfinite(err) ? std::max(0.2, 0.9 * std::pow(err, -0.2)) : 0.2);
-      adaptive::check_floor("rk45", T, h, settings);
+      T = step * (std::isfinite(err) ? std::max(0.2, 0.9 * std::pow(err, -exponent)) : 0.2);
+      check_floor(name, T, h, settings);
       first_known = true;  // stage 1 is at the unchanged state
       just_rejected = true;
       continue;
@@ -82,11 +95,12 @@ void rk45(const Model& model, const State& in, State& out, double h, const StepS
     std::swap(out.x, ws.ux);
     std::swap(out.v, ws.uv);
     done = last ? h : done + step;
-    // Stage 7 was evaluated at the new state: it is the next step's stage 1.
-    std::swap(ws.kx[0], ws.kx[6]);
-    std::swap(ws.kv[0], ws.kv[6]);
-    first_known = true;
-    const double growth = err > 0.0 ? 0.9 * std::pow(err, -0.2) : 5.0;
+    if (fsal) {  // the last stage was evaluated at the new state: the next step's first
+      std::swap(ws.kx[0], ws.kx[static_cast<std::size_t>(last_stage)]);
+      std::swap(ws.kv[0], ws.kv[static_cast<std::size_t>(last_stage)]);
+    }
+    first_known = fsal;
+    const double growth = err > 0.0 ? 0.9 * std::pow(err, -exponent) : 5.0;
     const double proposal = step * std::clamp(growth, 0.2, just_rejected ? 1.0 : 5.0);
     just_rejected = false;
     // A last step shortened to land on t + h says nothing about the step that fits: keep T
@@ -95,7 +109,7 @@ void rk45(const Model& model, const State& in, State& out, double h, const StepS
   }
   out.t = in.t + h;
   ws.adaptive_step = T;
-  ws.fsal_ready = true;
+  ws.fsal_ready = fsal;
 }
 
-}  // namespace springlab::steps
+}  // namespace springlab::adaptive

@@ -27,6 +27,8 @@ SPRINGLAB_STEP(vbd);
 // The rows made from tableaux (tableau_steps.cpp).
 void explicit_tableau(const Tableau& tableau, const Model& model, const State& in, State& out, double h,
                       const StepSettings& settings, Workspace& ws);
+void embedded_pair(const Tableau& tableau, const Model& model, const State& in, State& out, double h,
+                   const StepSettings& settings, Workspace& ws);
 void diagonally_implicit(const Tableau& tableau, const Model& model, const State& in, State& out, double h,
                          const StepSettings& settings, Workspace& ws);
 

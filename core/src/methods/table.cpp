@@ -188,8 +188,18 @@ Method add_tableau_method(const ButcherTableau& tableau, const std::string& name
   row.tableau = tableau.numeric();
   row.tableau.set_stability_function(a.numerator_value, a.denominator_value);
   const bool explicit_stages = tableau.is_explicit();
-  row.evaluations = explicit_stages ? std::to_string(tableau.stages)
-                                    : std::to_string(tableau.stages) + " stages, each solved as an implicit Euler step";
+  // An explicit pair is adaptive: it steps under its error estimate (a diagonally implicit one's
+  // b_hat is checked but not used: its stages are not solved for a controller).
+  const bool pair = explicit_stages && tableau.b_hat && a.embedded_order;
+  if (pair) {
+    for (int i = 0; i < tableau.stages; ++i)
+      row.tableau.error_weights.push_back(tableau.b[static_cast<std::size_t>(i)].value -
+                                          (*tableau.b_hat)[static_cast<std::size_t>(i)].value);
+    row.tableau.error_exponent = 1.0 / (std::min(a.order_to_rounding, *a.embedded_order) + 1);
+  }
+  row.evaluations = pair              ? std::to_string(tableau.stages) + " per try (" + std::to_string(tableau.stages - row.tableau.first_same_as_last()) + " once running, first same as last)"
+                    : explicit_stages ? std::to_string(tableau.stages)
+                                      : std::to_string(tableau.stages) + " stages, each solved as an implicit Euler step";
   row.stability = "from its tableau's R(z): |R| <= 1 on the real axis to " + limit_text(a.real_limit, "real") +
                   ", on the imaginary axis to " + limit_text(a.imaginary_limit, "imaginary");
   MethodInfo info{};
@@ -198,12 +208,12 @@ Method add_tableau_method(const ButcherTableau& tableau, const std::string& name
   info.label = row.label.c_str();
   info.order = a.order_to_rounding;
   info.evaluations = row.evaluations.c_str();
-  info.undamped_limit = a.imaginary_limit;
-  info.stability = row.stability.c_str();
-  info.family = MethodFamily::RungeKutta;
+  info.undamped_limit = pair ? kControlled : a.imaginary_limit;
+  info.stability = pair ? "chooses its own steps from its embedded error estimate (--tol)" : row.stability.c_str();
+  info.family = pair ? MethodFamily::Adaptive : MethodFamily::RungeKutta;
   info.tableau = &row.tableau;
-  info.tableau_step = explicit_stages ? steps::explicit_tableau : steps::diagonally_implicit;
-  info.audited = true;
+  info.tableau_step = pair ? steps::embedded_pair : explicit_stages ? steps::explicit_tableau : steps::diagonally_implicit;
+  info.audited = !pair;  // (as rk45: the adaptive rows are not audited)
   t.rows[index] = info;
   t.count.store(index + 1, std::memory_order_release);
   return info.id;

@@ -45,6 +45,13 @@ Tableau::Tableau(std::vector<std::vector<double>> rows, std::vector<double> weig
   denominator = interpolate(false);
 }
 
+bool Tableau::first_same_as_last() const {
+  if (stages < 2) return false;
+  for (int j = 0; j < stages; ++j)
+    if (A(stages - 1, j) != b[static_cast<std::size_t>(j)]) return false;
+  return true;
+}
+
 void Tableau::set_stability_function(std::vector<double> p, std::vector<double> q) {
   numerator = std::move(p);
   denominator = std::move(q);

@@ -4,7 +4,9 @@
 //   stage i:  Y_i = y + h sum_{j < i} a_ij K_j + h a_ii K_i,   K_i = F(Y_i)
 //   result:   y1 = y + h sum_i b_i K_i
 //
-// Explicit (a_ii = 0 for all i): as RK4, stage after stage (runge_kutta.hpp).
+// Explicit (a_ii = 0 for all i): as RK4, stage after stage (runge_kutta.hpp). With an embedded
+// b_hat: adaptive, under the controller rk45 uses (adaptive.hpp, embedded_pair_step), its error
+// estimate h sum (b_i - b_hat_i) K_i and its exponent 1 / (q + 1), q the lower order of the two.
 //
 // Diagonally implicit: with (x~, v~) = y + h sum_{j < i} a_ij K_j and g = a_ii h, the stage
 // (X, V) = Y_i solves
@@ -19,6 +21,7 @@
 // Pinned particles move with their velocity in every stage, so x1 = x + h v for them.
 #include "tableau_steps.hpp"
 
+#include "adaptive.hpp"
 #include "runge_kutta.hpp"
 #include "steps.hpp"
 
@@ -29,6 +32,12 @@ void explicit_tableau(const Tableau& tableau, const Model& model, const State& i
   rk::stages(model, in.x, in.v, h, tableau, ws);
   rk::combine(in.x, in.v, h, tableau.b, ws, out.x, out.v);
   out.t = in.t + h;
+}
+
+void embedded_pair(const Tableau& tableau, const Model& model, const State& in, State& out, double h,
+                   const StepSettings& settings, Workspace& ws) {
+  adaptive::embedded_pair_step(tableau, tableau.error_weights.data(), tableau.error_exponent, "the embedded pair",
+                               model, in, out, h, settings, ws);
 }
 
 void diagonally_implicit(const Tableau& tableau, const Model& model, const State& in, State& out, double h,
