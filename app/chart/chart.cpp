@@ -133,7 +133,7 @@ void axis_range(const Chart& chart, bool x_axis, double& lo, double& hi) {
   if (!axis.max) hi += 0.05 * (hi - lo);
 }
 
-Corner legend_corner(const Chart& chart, double width, double height) {
+Corner legend_corner(const Chart& chart, double width, double height, std::optional<Corner> taken) {
   double xlo, xhi, ylo, yhi;
   axis_range(chart, true, xlo, xhi);
   axis_range(chart, false, ylo, yhi);
@@ -174,9 +174,9 @@ Corner legend_corner(const Chart& chart, double width, double height) {
       pu = u, pv = v, have = true;
     }
   }
-  int best = 0;
-  for (int c = 1; c < 4; ++c)
-    if (covered[c] < covered[best]) best = c;
+  int best = -1;
+  for (int c = 0; c < 4; ++c)
+    if (corners[c] != taken && (best < 0 || covered[c] < covered[best])) best = c;
   return corners[best];
 }
 

@@ -3,6 +3,7 @@
 // so the app, the PNG charts and the SVG charts show the same thing.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -38,7 +39,13 @@ struct Chart {
   Axis x, y;
   std::vector<Series> series;
   bool legend = true;
+  // A smaller chart drawn over a corner of the plot (the region chart's zoom on the dots near 0),
+  // in the corner that hides the least data apart from the legend's.
+  std::shared_ptr<const Chart> inset;
 };
+
+// The inset's size, as fractions of the plot's width and height.
+inline constexpr double kInsetWidth = 0.42, kInsetHeight = 0.46;
 
 // Ticks for an axis over [lo, hi]: "nice" numbers (1, 2, 5 x 10^k) for a linear axis, decades
 // for a log one (and 2, 5 between them when there are few decades).
@@ -58,7 +65,7 @@ void axis_range(const Chart& chart, bool x_axis, double& lo, double& hi);
 // 0.5: a region's fill) do not count. Ties keep the earlier corner
 // in this order, so that a legend stays top right unless it would hide something there.
 enum class Corner { TopRight, TopLeft, BottomRight, BottomLeft };
-Corner legend_corner(const Chart& chart, double width, double height);
+Corner legend_corner(const Chart& chart, double width, double height, std::optional<Corner> taken = std::nullopt);
 
 // "0.5", "1e-06", "120": short tick labels; with the ticks' spacing, as many digits as the labels
 // need to differ ("1.9990", "1.9995").

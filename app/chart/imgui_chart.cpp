@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -143,6 +144,7 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
   }
   list->PopClipRect();
 
+  std::optional<Corner> legend_at;
   if (chart.legend) {
     // At most the plot's width: a longer label wraps onto a second line.
     const float most = std::max(60.0f, right - left - 40.0f);
@@ -158,6 +160,7 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
     // The box is the labels and their swatches (26 px) with 6 px round them, 4 px in from the
     // plot's edge, in the corner where it hides the least.
     const Corner corner = legend_corner(chart, (width + 40.0f) / (right - left), (height + 8.0f) / (bottom - top));
+    if (height > 0.0f) legend_at = corner;
     const bool on_left = corner == Corner::TopLeft || corner == Corner::BottomLeft;
     const bool below = corner == Corner::BottomRight || corner == Corner::BottomLeft;
     const float x = on_left ? left + 10.0f : right - width - 34.0f;
@@ -173,6 +176,19 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
       list->AddText(ImVec2(x + 26, y), s.escapes ? color(draw::kDiverged) : text, labels[k].c_str());
       y += ImGui::CalcTextSize(labels[k].c_str()).y;
     }
+  }
+  const float inset_w = static_cast<float>(kInsetWidth) * (right - left), inset_h = static_cast<float>(kInsetHeight) * (bottom - top);
+  // (In a small chart there is no room for one worth reading: the dots stay in the main view.)
+  if (chart.inset && inset_w >= 12.0f * line_h && inset_h >= 7.0f * line_h) {
+    // Over the corner that hides the least apart from the legend's, on its own backdrop.
+    const Corner at = legend_corner(chart, kInsetWidth, kInsetHeight, legend_at);
+    const float w = inset_w, h = inset_h;
+    const bool on_left = at == Corner::TopLeft || at == Corner::BottomLeft;
+    const bool below = at == Corner::BottomRight || at == Corner::BottomLeft;
+    const ImVec2 o(on_left ? left + 4.0f : right - w - 4.0f, below ? bottom - h - 4.0f : top + 4.0f);
+    list->AddRectFilled(o, ImVec2(o.x + w, o.y + h), ImGui::GetColorU32(ImGuiCol_WindowBg, 0.97f), 3.0f);
+    list->AddRect(o, ImVec2(o.x + w, o.y + h), faint, 3.0f);
+    draw_imgui(list, ImVec2(o.x + 4.0f, o.y + 2.0f), ImVec2(w - 8.0f, h - 4.0f), *chart.inset);
   }
   list->PopClipRect();
 }

@@ -228,26 +228,51 @@ Chart stability_region(const StabilityAnalysis& analysis, const std::vector<Regi
              bounded ? std::max(y0, -e.up) : y0, bounded ? std::min(y1, e.up) : y1, draw::method_color(l.method),
              region_verdict(analysis, l), c.series);
     }
-    std::vector<Series> outsides;  // drawn last: a red dot is never hidden under another lane's
-    for (const RegionLane& l : shown) {
-      Series inside, outside;
-      inside.color = draw::method_color(l.method);
-      inside.markers = true;
-      inside.width = 1.5f;
-      outside = inside;
-      outside.color = red;
-      const double nan = std::numeric_limits<double>::quiet_NaN();
-      for (Complex lambda : lambdas) {
-        const Complex z = l.h * lambda;
-        if (!std::isfinite(z.real()) || !std::isfinite(z.imag())) continue;  // never a NaN dot
-        Series& s = stable_at(l.method, z) ? inside : outside;
-        s.x.insert(s.x.end(), {z.real(), nan});
-        s.y.insert(s.y.end(), {z.imag(), nan});
+    // The dots, each lane's inside its region in its colour, outside in red (drawn last: a red dot
+    // is never hidden under another lane's).
+    const auto add_dots = [&](Chart& chart) {
+      std::vector<Series> outsides;
+      for (const RegionLane& l : shown) {
+        Series inside, outside;
+        inside.color = draw::method_color(l.method);
+        inside.markers = true;
+        inside.width = 1.5f;
+        outside = inside;
+        outside.color = red;
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        for (Complex lambda : lambdas) {
+          const Complex z = l.h * lambda;
+          if (!std::isfinite(z.real()) || !std::isfinite(z.imag())) continue;  // never a NaN dot
+          Series& s = stable_at(l.method, z) ? inside : outside;
+          s.x.insert(s.x.end(), {z.real(), nan});
+          s.y.insert(s.y.end(), {z.imag(), nan});
+        }
+        chart.series.push_back(std::move(inside));
+        outsides.push_back(std::move(outside));
       }
-      c.series.push_back(std::move(inside));
-      outsides.push_back(std::move(outside));
+      for (Series& o : outsides) chart.series.push_back(std::move(o));
+    };
+    add_dots(c);
+    // Dots near 0 at a small step (a hundredth of the view), where the regions' edges decide:
+    // an inset zooms on them, with the edges there.
+    double reach = 0.0;
+    for (const RegionLane& l : shown)
+      for (Complex lambda : lambdas)
+        if (std::isfinite(std::abs(l.h * lambda))) reach = std::max(reach, std::abs(l.h * lambda));
+    if (reach > 0.0 && reach < 0.08 * std::max(view.left, view.up)) {
+      auto zoom = std::make_shared<Chart>();
+      zoom->title = "near 0";
+      zoom->legend = false;
+      zoom->x.min = -1.6 * reach;
+      zoom->x.max = 0.6 * reach;
+      zoom->y.min = -1.3 * reach;
+      zoom->y.max = 1.3 * reach;
+      for (const RegionLane& l : shown)
+        region([&](double x, double y) { return margin_at(l.method, Complex(x, y)); }, *zoom->x.min, *zoom->x.max,
+               *zoom->y.min, *zoom->y.max, draw::method_color(l.method), "", zoom->series);
+      add_dots(*zoom);
+      c.inset = zoom;
     }
-    for (Series& o : outsides) c.series.push_back(std::move(o));
     return c;
   }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "draw/palette.hpp"
@@ -31,9 +32,9 @@ struct Map {
   }
 };
 
-}  // namespace
-
-std::string to_svg(const Chart& chart, int width, int height) {
+// The chart's drawing, in a picture of width x height: the root document's or a nested <svg>'s
+// (an inset). `id` keeps its clip path's name apart from another chart's in the same document.
+void write_chart(std::ostringstream& s, const Chart& chart, double width, double height, const std::string& id) {
   constexpr double kFont = 15.0, kChar = 0.56 * kFont;  // DejaVu Sans's mean advance, roughly
   double xlo, xhi, ylo, yhi;
   axis_range(chart, true, xlo, xhi);
@@ -47,11 +48,6 @@ std::string to_svg(const Chart& chart, int width, int height) {
   const double right = width - 16.0, bottom = height - line * 2.6;
   const Map mx{xlo, xhi, chart.x.log, left, right}, my{ylo, yhi, chart.y.log, bottom, top};
 
-  std::ostringstream s;
-  s.precision(6);
-  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
-    << "\" viewBox=\"0 0 " << width << " " << height << "\" font-family=\"DejaVu Sans, Verdana, sans-serif\" font-size=\""
-    << kFont << "\">\n";
   s << "<rect width=\"100%\" height=\"100%\" fill=\"#16181c\"/>\n";
   const char* text = "#f3f4f6";
   const char* grid = "#3a3f47";
@@ -86,8 +82,8 @@ std::string to_svg(const Chart& chart, int width, int height) {
   }
   s << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << right - left << "\" height=\"" << bottom - top
     << "\" fill=\"none\" stroke=\"#6b7280\"/>\n";
-  s << "<clipPath id=\"plot\"><rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << right - left
-    << "\" height=\"" << bottom - top << "\"/></clipPath>\n<g clip-path=\"url(#plot)\">\n";
+  s << "<clipPath id=\"" << id << "\"><rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << right - left
+    << "\" height=\"" << bottom - top << "\"/></clipPath>\n<g clip-path=\"url(#" << id << ")\">\n";
   for (const Series& series : chart.series) {
     const std::string colour = draw::hex(series.color);
     const std::string opacity =
@@ -124,6 +120,7 @@ std::string to_svg(const Chart& chart, int width, int height) {
     flush();
   }
   s << "</g>\n";
+  std::optional<Corner> legend_at;
   if (chart.legend) {
     std::size_t chars = 0;
     int rows = 0;
@@ -136,6 +133,7 @@ std::string to_svg(const Chart& chart, int width, int height) {
       // In the corner where it hides the least (chart.hpp).
       const double w = chars * kChar + 44;
       const Corner corner = legend_corner(chart, (w + 14) / (right - left), (rows * line + 12) / (bottom - top));
+      legend_at = corner;
       const bool on_left = corner == Corner::TopLeft || corner == Corner::BottomLeft;
       const bool below = corner == Corner::BottomRight || corner == Corner::BottomLeft;
       const double x = on_left ? left + 10 : right - w - 6, y0 = below ? bottom - rows * line - 6 : top + 6;
@@ -153,6 +151,29 @@ std::string to_svg(const Chart& chart, int width, int height) {
       }
     }
   }
+  if (chart.inset) {
+    // Over the corner that hides the least apart from the legend's (chart.hpp), on its backdrop.
+    const Corner at = legend_corner(chart, kInsetWidth, kInsetHeight, legend_at);
+    const double w = kInsetWidth * (right - left), h = kInsetHeight * (bottom - top);
+    const bool on_left = at == Corner::TopLeft || at == Corner::BottomLeft;
+    const bool below = at == Corner::BottomRight || at == Corner::BottomLeft;
+    const double x = on_left ? left + 4 : right - w - 4, y = below ? bottom - h - 4 : top + 4;
+    s << "<svg x=\"" << x << "\" y=\"" << y << "\" width=\"" << w << "\" height=\"" << h << "\" viewBox=\"0 0 " << w
+      << " " << h << "\">\n";
+    write_chart(s, *chart.inset, w, h, id + "-inset");
+    s << "<rect width=\"100%\" height=\"100%\" fill=\"none\" stroke=\"#6b7280\"/>\n</svg>\n";
+  }
+}
+
+}  // namespace
+
+std::string to_svg(const Chart& chart, int width, int height) {
+  std::ostringstream s;
+  s.precision(6);
+  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
+    << "\" viewBox=\"0 0 " << width << " " << height << "\" font-family=\"DejaVu Sans, Verdana, sans-serif\" font-size=\""
+    << 15.0 << "\">\n";
+  write_chart(s, chart, width, height, "plot");
   s << "</svg>\n";
   return s.str();
 }
