@@ -51,6 +51,7 @@ void add_options(CLI::App& c, ViewCli& o) {
   c.add_option("--ui-scale", o.app.ui_scale, "size of the panels and text (times the monitor's scale)");
   c.add_option("--size", o.size, "window size WIDTHxHEIGHT (default 1280x720)");
   c.add_flag("--accuracy", o.app.accuracy, "open the accuracy-against-cost panel and start its sweep");
+  c.add_flag("--region", o.app.region, "open the stability region (key G), as a link's region=1");
   c.add_option("--lesson", o.app.lesson, "teach a lesson: a name or number from `springlab lesson list`, or a file");
   c.add_option("--step", o.app.lesson_step, "start the lesson at this step (from 1)");
   c.add_option("--msaa", o.window.msaa, "multisampling (default: 4 on a GPU, 0 on a software rasteriser)");
