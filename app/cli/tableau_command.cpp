@@ -13,14 +13,6 @@ namespace springlab::app {
 
 namespace {
 
-std::string limit_text(double limit) {
-  if (std::isinf(limit)) return "whole axis";
-  if (limit == 0.0) return "none";
-  char s[32];
-  std::snprintf(s, sizeof s, "%.6g", limit);
-  return s;
-}
-
 std::string kind(const ButcherTableau& t) {
   return (t.is_explicit() ? "explicit, " : "diagonally implicit, ") + std::to_string(t.stages) +
          (t.stages == 1 ? " stage" : " stages");
@@ -50,10 +42,10 @@ void report(const std::string& name, const ButcherTableau& t, const TableauAnaly
   std::printf("R(z)        %s\n", stability_function_text(a).c_str());
   if (std::isinf(a.real_limit)) std::printf("real axis   |R| <= 1 on the whole negative real axis\n");
   else if (a.real_limit == 0.0) std::printf("real axis   |R| > 1 just left of 0: a decaying mode grows at any step\n");
-  else std::printf("real axis   |R| <= 1 on [-%s, 0]\n", limit_text(a.real_limit).c_str());
+  else std::printf("real axis   |R| <= 1 on [-%s, 0]\n", axis_limit_text(a.real_limit).c_str());
   if (std::isinf(a.imaginary_limit)) std::printf("imag axis   |R| <= 1 on the whole imaginary axis\n");
   else if (a.imaginary_limit == 0.0) std::printf("imag axis   |R| > 1 everywhere on it but 0: an undamped oscillation grows at any step\n");
-  else std::printf("imag axis   |R| <= 1 on [-%s i, %s i]\n", limit_text(a.imaginary_limit).c_str(), limit_text(a.imaginary_limit).c_str());
+  else std::printf("imag axis   |R| <= 1 on [-%s i, %s i]\n", axis_limit_text(a.imaginary_limit).c_str(), axis_limit_text(a.imaginary_limit).c_str());
   if (std::isinf(a.r_at_infinity)) std::printf("infinity    |R| grows without bound (explicit: a stiff mode needs a small step)\n");
   else std::printf("infinity    |R| -> %.6g%s\n", a.r_at_infinity, a.r_at_infinity == 0.0 ? " (L-stable if A-stable: stiff modes are damped out)" : "");
   for (const std::string& w : a.warnings) std::printf("warning     %s\n", w.c_str());
@@ -68,8 +60,8 @@ int table() {
     std::string order = std::to_string(a.order);
     if (a.order_to_rounding > a.order) order += " (" + std::to_string(a.order_to_rounding) + ")";
     std::printf("%-18s %-28s %-30s %-7s %-8s %-11s %s\n", name.c_str(), t.name.c_str(), kind(t).c_str(), order.c_str(),
-                a.embedded_order ? std::to_string(*a.embedded_order).c_str() : "-", limit_text(a.real_limit).c_str(),
-                limit_text(a.imaginary_limit).c_str());
+                a.embedded_order ? std::to_string(*a.embedded_order).c_str() : "-", axis_limit_text(a.real_limit).c_str(),
+                axis_limit_text(a.imaginary_limit).c_str());
   }
   std::printf("(order in brackets: to rounding, for entries written as decimals of irrational values)\n");
   return kOk;

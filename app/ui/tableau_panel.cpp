@@ -20,14 +20,6 @@ void set(TableauPanel::Cell& cell, const std::string& text) {
   std::snprintf(cell.data(), cell.size(), "%s", text.c_str());
 }
 
-std::string limit_text(double limit) {
-  if (std::isinf(limit)) return "the whole axis";
-  if (limit == 0.0) return "none";
-  char s[32];
-  std::snprintf(s, sizeof s, "%.4g", limit);
-  return s;
-}
-
 }  // namespace
 
 TableauPanel::TableauPanel() {
@@ -201,11 +193,11 @@ void draw_tableau_panel(TableauPanel& panel, app::Session& session, const std::v
     text_wrapped("R(z) = " + stability_function_text(a), {}, wrap);
     const std::string real = std::isinf(a.real_limit) ? "the whole negative real axis"
                              : a.real_limit == 0.0   ? "no part of the negative real axis"
-                                                     : "[-" + limit_text(a.real_limit) + ", 0]";
+                                                     : "[-" + axis_limit_text(a.real_limit, 4) + ", 0]";
     const std::string imaginary = std::isinf(a.imaginary_limit) ? "the whole imaginary axis"
                                   : a.imaginary_limit == 0.0    ? "the imaginary axis only at 0"
-                                                                : "[-" + limit_text(a.imaginary_limit) + "i, " +
-                                                                      limit_text(a.imaginary_limit) + "i]";
+                                                                : "[-" + axis_limit_text(a.imaginary_limit, 4) + "i, " +
+                                                                      axis_limit_text(a.imaginary_limit, 4) + "i]";
     text_wrapped("|R| <= 1 on " + real + ", and on " + imaginary, {}, wrap);
     for (const std::string& w : a.warnings) ImGui::TextDisabled("%s", w.c_str());
   }

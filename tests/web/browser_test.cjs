@@ -69,6 +69,17 @@ function scenePixels(img, x0, y0, x1, y1, test) {
 const checks = [];
 const check = (name, run) => checks.push({ name, run });
 
+// Clicks Copy link as a user does and returns the link it gives (window.springlabLink).
+async function copyLink(page) {
+  const [x, y, w, h] = (await status(page)).copy_link;
+  await page.mouse.move(x + w / 2, y + h / 2);
+  await page.mouse.down();
+  await waitFrames(page, 2);
+  await page.mouse.up();
+  await page.waitForFunction(() => typeof window.springlabLink === "string", { timeout: 5000 });
+  return page.evaluate(() => window.springlabLink);
+}
+
 check("the rope scene renders (golden image)", async ({ browser, base }) => {
   const page = await openApp(browser, base, "scene=rope");
   await pauseAtStart(page);
@@ -204,13 +215,7 @@ check("a link with a tableau runs it beside RK4 and draws its region; copy link 
   expect(s2.lanes.every((l, i) => l.t > s.lanes[i].t && !l.diverged && !l.unstable), `lanes ${JSON.stringify(s2.lanes)}`);
   await pauseAtStart(page);
   await matchesGolden(browser, page, "spring-tableau-region");
-  const [x, y, w, h] = (await status(page)).copy_link;
-  await page.mouse.move(x + w / 2, y + h / 2);
-  await page.mouse.down();
-  await waitFrames(page, 2);
-  await page.mouse.up();
-  await page.waitForFunction(() => typeof window.springlabLink === "string", { timeout: 5000 });
-  const copied = decodeURIComponent(await page.evaluate(() => window.springlabLink));
+  const copied = decodeURIComponent(await copyLink(page));
   expect(copied.includes('"A":[["0"],["1"],["1/4","1/4"]]') && copied.includes("compare=rk4,my-rk3"), `link ${copied}`);
   await page.close();
   // A bad tableau in a link: the one message, naming the row and column.
@@ -278,13 +283,7 @@ check("a bad scene file gives the message and the scene keeps running", async ({
 
 check("copy link gives the link of what is shown", async ({ browser, base }) => {
   const page = await openApp(browser, base, "scene=rope&compare=euler,verlet&ks=5000");
-  const [x, y, w, h] = (await status(page)).copy_link;
-  await page.mouse.move(x + w / 2, y + h / 2);
-  await page.mouse.down();
-  await waitFrames(page, 2);
-  await page.mouse.up();
-  await page.waitForFunction(() => typeof window.springlabLink === "string", { timeout: 5000 });
-  const link = await page.evaluate(() => window.springlabLink);
+  const link = await copyLink(page);
   expect(/#scene=rope&compare=euler,verlet&ks=5000$/.test(link), `link ${link}`);
   await page.close();
 });

@@ -90,6 +90,9 @@ struct TableauAnalysis {
 
 TableauAnalysis analyse_tableau(const ButcherTableau& tableau);
 
+// A limit on an axis for reading: "whole axis" (infinite), "none" (0), else `digits` digits.
+std::string axis_limit_text(double limit, int digits = 6);
+
 // R(z) written out: "1 + z + 1/2 z^2 + 1/6 z^3 + 1/24 z^4", "(1 + 1/2 z) / (1 - 1/2 z)".
 std::string stability_function_text(const TableauAnalysis& analysis);
 

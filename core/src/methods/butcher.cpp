@@ -520,6 +520,14 @@ std::string polynomial_text(const std::vector<std::string>& coefficients) {
 
 }  // namespace
 
+std::string axis_limit_text(double limit, int digits) {
+  if (std::isinf(limit)) return "whole axis";
+  if (limit == 0.0) return "none";
+  char s[32];
+  std::snprintf(s, sizeof s, "%.*g", digits, limit);
+  return s;
+}
+
 std::string stability_function_text(const TableauAnalysis& analysis) {
   const std::string p = polynomial_text(analysis.numerator), q = polynomial_text(analysis.denominator);
   if (q == "1") return p;
