@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "draw/palette.hpp"
+#include "springlab/text.hpp"
 
 namespace springlab::chart {
 
@@ -14,14 +15,14 @@ constexpr draw::Rgba kGuide{0.62f, 0.65f, 0.70f, 1.0f};
 std::string order_text(double order) {
   if (std::isnan(order)) return "";
   char s[32];
-  std::snprintf(s, sizeof s, " (order %.2f)", order);
+  std::snprintf(s, sizeof s, tr(" (order %.2f)"), order);
   return s;
 }
 
 std::string step_text(double h) {
-  if (std::isnan(h)) return "adaptive";
-  if (std::isinf(h)) return "always stable";
-  if (h == 0.0) return "never stable";
+  if (std::isnan(h)) return tr("adaptive");
+  if (std::isinf(h)) return tr("always stable");
+  if (h == 0.0) return tr("never stable");
   char s[32];
   std::snprintf(s, sizeof s, "%.3g s", h);
   return s;
@@ -41,16 +42,16 @@ double work(const Counters& c) { return static_cast<double>(c.force_evals + c.so
 
 Chart work_precision(const SweepResult& r, const std::string& scene, Cost cost) {
   Chart c;
-  c.title = "Work-precision on " + scene + ": error against cost (lower left is better)";
-  c.x.label = cost == Cost::Time ? "wall time of the run (s)" : "work: force evaluations + linear-solver iterations";
+  c.title = format_text(tr("Work-precision on %s: error against cost (lower left is better)"), scene.c_str());
+  c.x.label = cost == Cost::Time ? tr("wall time of the run (s)") : tr("work: force evaluations + linear-solver iterations");
   c.x.log = true;
-  c.y.label = "error: largest RMS position error over the samples (m)";
+  c.y.label = tr("error: largest RMS position error over the samples (m)");
   c.y.log = true;
   const double ceiling = ceiling_of(r);
   for (const MethodSummary& m : r.methods) {
     const bool adaptive = method_info(m.method).adaptive();
     Series s;
-    s.label = std::string(method_info(m.method).name) + (adaptive ? " (over tolerances)" : "");
+    s.label = std::string(method_info(m.method).name) + (adaptive ? tr(" (over tolerances)") : "");
     s.color = draw::method_color(m.method);
     s.markers = true;
     for (const SweepRun& run : r.runs) {
@@ -67,10 +68,10 @@ Chart work_precision(const SweepResult& r, const std::string& scene, Cost cost) 
 
 Chart convergence(const SweepResult& r, const std::string& scene) {
   Chart c;
-  c.title = "Convergence on " + scene + ": error against step (x = diverged)";
-  c.x.label = "step h (s)";
+  c.title = format_text(tr("Convergence on %s: error against step (x = diverged)"), scene.c_str());
+  c.x.label = tr("step h (s)");
   c.x.log = true;
-  c.y.label = "error (m)";
+  c.y.label = tr("error (m)");
   c.y.log = true;
   const double ceiling = ceiling_of(r);
   double hmin = 1e300, hmax = 0, emin = 1e300, emax = 0;
@@ -98,7 +99,7 @@ Chart convergence(const SweepResult& r, const std::string& scene) {
     const double hc = std::sqrt(hmin * hmax), ec = std::sqrt(emin * emax);
     for (int order : {1, 2, 4}) {
       Series guide;
-      guide.label = "slope " + std::to_string(order);
+      guide.label = format_text(tr("slope %d"), order);
       guide.color = kGuide;
       guide.color.a = 0.35f + 0.15f * order;
       guide.dashed = true;
@@ -118,12 +119,12 @@ Chart convergence(const SweepResult& r, const std::string& scene) {
 Chart stability(const SweepResult& r, const std::string& scene) {
   Chart c;
   char title[160];
-  std::snprintf(title, sizeof title, "Largest stable step on %s: measured by runs against the analysis (w_max = %.4g rad/s)",
+  std::snprintf(title, sizeof title, tr("Largest stable step on %s: measured by runs against the analysis (w_max = %.4g rad/s)"),
                 scene.c_str(), r.w_max);
   c.title = title;
-  c.x.label = "from the analysis (s)";
+  c.x.label = tr("from the analysis (s)");
   c.x.log = true;
-  c.y.label = "measured on the scene (s)";
+  c.y.label = tr("measured on the scene (s)");
   c.y.log = true;
   double lo = 1e300, hi = 0;
   for (const MethodSummary& m : r.methods) {
@@ -135,14 +136,14 @@ Chart stability(const SweepResult& r, const std::string& scene) {
                          std::isfinite(m.measured_stable_h) && m.measured_stable_h > 0;
     char label[160];
     if (plotted) {
-      std::snprintf(label, sizeof label, "%s: %.3g s measured, %s%.3g s analysis", method_info(m.method).name,
+      std::snprintf(label, sizeof label, tr("%s: %.3g s measured, %s%.3g s analysis"), method_info(m.method).name,
                     m.measured_stable_h, m.theory_exact ? "" : ">= ", m.theoretical_stable_h);
       s.x = {m.theoretical_stable_h};
       s.y = {m.measured_stable_h};
       lo = std::min({lo, m.theoretical_stable_h, m.measured_stable_h});
       hi = std::max({hi, m.theoretical_stable_h, m.measured_stable_h});
     } else {
-      std::snprintf(label, sizeof label, "%s: %s (theory: %s)", method_info(m.method).name,
+      std::snprintf(label, sizeof label, tr("%s: %s (theory: %s)"), method_info(m.method).name,
                     step_text(m.measured_stable_h).c_str(), step_text(m.theoretical_stable_h).c_str());
     }
     s.label = label;
@@ -150,7 +151,7 @@ Chart stability(const SweepResult& r, const std::string& scene) {
   }
   if (hi > 0) {
     Series diagonal;
-    diagonal.label = "measured = theory";
+    diagonal.label = tr("measured = theory");
     diagonal.color = kGuide;
     diagonal.dashed = true;
     diagonal.width = 1.5f;
@@ -165,10 +166,10 @@ Chart stability(const SweepResult& r, const std::string& scene) {
 
 Chart energy_drift(const SweepResult& r, const std::string& scene) {
   Chart c;
-  c.title = "Energy drift on " + scene + ": |E + dissipated - E0| / energy scale (x = diverged)";
+  c.title = format_text(tr("Energy drift on %s: |E + dissipated - E0| / energy scale (x = diverged)"), scene.c_str());
   c.x.label = "t (s)";
   c.x.log = false;
-  c.y.label = "relative drift";
+  c.y.label = tr("relative drift");
   c.y.log = true;
   for (const DriftTrace& d : r.drift) {
     Series s;
@@ -189,17 +190,17 @@ Chart solver_convergence(const SweepResult& r, const std::string& scene) {
   Chart c;
   char title[200];
   std::snprintf(title, sizeof title,
-                "Solver error on %s: one step of h = %.3g s against the converged implicit-Euler step", scene.c_str(),
+                tr("Solver error on %s: one step of h = %.3g s against the converged implicit-Euler step"), scene.c_str(),
                 r.solver.h);
   c.title = title;
-  c.x.label = "iterations a step (XPBD: passes; implicit Euler: conjugate-gradient iterations)";
+  c.x.label = tr("iterations a step (XPBD: passes; implicit Euler: conjugate-gradient iterations)");
   c.x.log = true;
   c.y.label = "|x_k - x*| / |x* - x_0|";
   c.y.log = true;
   for (const SolverErrorCurve& curve : r.solver.curves) {
     Series s;
     s.label = method_info(curve.method).name;
-    if (curve.method == Method::ImplicitEuler) s.label += " (CG; linearised once: levels off)";
+    if (curve.method == Method::ImplicitEuler) s.label += tr(" (CG; linearised once: levels off)");
     s.color = draw::method_color(curve.method);
     s.markers = true;
     for (std::size_t k = 0; k < curve.iterations.size(); ++k) {

@@ -151,7 +151,7 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
     float width = 0.0f, height = 0.0f;
     std::vector<std::string> labels;  // wrapped at spaces, never inside a number ("x1.33")
     for (const Series& s : chart.series) {
-      labels.push_back(ui::wrap_at_spaces(s.label, ImGui::GetFont(), ImGui::GetFontSize(), most));
+      labels.push_back(ui::wrap_text(s.label, ImGui::GetFont(), ImGui::GetFontSize(), most));
       if (s.label.empty()) continue;
       const ImVec2 size = ImGui::CalcTextSize(labels.back().c_str());
       width = std::max(width, size.x);

@@ -7,6 +7,7 @@
 #include <mutex>
 
 #include "draw/palette.hpp"
+#include "springlab/text.hpp"
 
 namespace springlab::chart {
 
@@ -165,15 +166,15 @@ RegionPlane region_plane(Method method) {
 std::string region_verdict(const StabilityAnalysis& analysis, const RegionLane& lane) {
   char s[160];
   const MethodInfo& m = method_info(lane.method);
-  if (m.adaptive()) return std::string(m.name) + " chooses its own steps: no region";
+  if (m.adaptive()) return format_text(tr("%s chooses its own steps: no region"), m.name);
   const double factor = room(analysis, lane);
-  if (std::isinf(factor)) return std::string(m.name) + ": stable at any step";
-  if (factor == 0.0) return std::string(m.name) + ": unstable at any step (a mode sits outside for every h)";
+  if (std::isinf(factor)) return format_text(tr("%s: stable at any step"), m.name);
+  if (factor == 0.0) return format_text(tr("%s: unstable at any step (a mode sits outside for every h)"), m.name);
   const bool exact = analysis.limit(lane.method).exact;
   if (factor >= 1.0)
-    std::snprintf(s, sizeof s, "%s: every mode inside; h may grow x%.3g%s", m.name, factor, exact ? "" : " at least");
+    std::snprintf(s, sizeof s, tr("%s: every mode inside; h may grow x%.3g%s"), m.name, factor, exact ? "" : tr(" at least"));
   else
-    std::snprintf(s, sizeof s, "%s: modes outside; h must shrink x%.3g (to %.3g s)", m.name, factor,
+    std::snprintf(s, sizeof s, tr("%s: modes outside; h must shrink x%.3g (to %.3g s)"), m.name, factor,
                   analysis.limit(lane.method).h);
   return s;
 }
@@ -189,9 +190,9 @@ Chart stability_region(const StabilityAnalysis& analysis, const std::vector<Regi
   const draw::Rgba red = draw::kDiverged;
 
   if (plane == RegionPlane::Complex) {
-    c.title = "Stability region, h lambda in the complex plane (dots: the scene's eigenvalues times h)";
-    c.x.label = "Re(h lambda)";
-    c.y.label = "Im(h lambda)";
+    c.title = tr("Stability region, h lambda in the complex plane (dots: the scene's eigenvalues times h)");
+    c.x.label = tr("Re(h lambda)");
+    c.y.label = tr("Im(h lambda)");
     const std::vector<Complex> lambdas = spectrum(analysis);
     // The view, as Hairer and Wanner draw regions: every charted region whole (a bounded one's
     // stable set, an unbounded one's unstable set), and the dots, each with some room, at most 40
@@ -276,8 +277,8 @@ Chart stability_region(const StabilityAnalysis& analysis, const std::vector<Regi
     return c;
   }
 
-  c.title = "Stability region in the damped oscillator's plane (h w, h c): these methods have none in the "
-            "complex plane; dots: the scene's modes";
+  c.title = tr("Stability region in the damped oscillator's plane (h w, h c): these methods have none in the "
+            "complex plane; dots: the scene's modes");
   c.x.label = "h w";
   c.y.label = "h c";
   double xmax = 2.5, ymax = 2.5;

@@ -26,6 +26,7 @@
 #include "springlab/script.hpp"
 #include "ui/overlay.hpp"
 #include "ui/panels.hpp"
+#include "util/language.hpp"
 #include "util/data_dir.hpp"
 #include "util/progress.hpp"
 
@@ -42,6 +43,7 @@ struct RenderOptions {
   double fps = 60.0;
   bool ui = false, software = false;
   std::optional<double> ui_scale;  // default: the frame's height / 720, at least 0.6
+  std::string lang = "en";         // the panels' and captions' language (not the environment's: frames repeat)
 };
 
 void parse_size(const std::string& text, int& width, int& height) {
@@ -148,6 +150,7 @@ int render(const RenderOptions& o) {
     }
   }
   const float scale = static_cast<float>(o.ui_scale ? *o.ui_scale : std::max(0.6, height / 720.0));
+  use_language(check_language(o.lang, "--lang"));
 
   // What to render: one scene, or a lesson's steps one after another.
   std::vector<Shot> shots;
@@ -322,6 +325,7 @@ Command add_render_command(CLI::App& app) {
   c->add_option("--size", o->size, "WIDTHxHEIGHT (default 1280x720)");
   c->add_flag("--ui", o->ui, "include the app's panels");
   c->add_option("--ui-scale", o->ui_scale, "size of the panels and text (default: height / 720)");
+  c->add_option("--lang", o->lang, "language of the panels and captions: en (default) or zh-CN");
   c->add_option("--script", o->script, "play a scripted demo (JSON)");
   c->add_option("--compare", o->compare, "2 to 4 methods side by side, e.g. euler,verlet (IK scenes: solvers, e.g. ccd,fabrik,dls)");
   c->add_option("--select", o->select, "write only these frames, e.g. 0,60,120");

@@ -4,6 +4,7 @@
 #include <memory>
 #include <sstream>
 
+#include "util/language.hpp"
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
 #include "lesson/lesson_library.hpp"
@@ -25,6 +26,7 @@ int view(ViewCli& o) {
   if (o.frames) check_option("--frames", static_cast<double>(*o.frames), 1, 1e7, false);
   o.window.frames = o.frames;
   check_option("--ui-scale", o.app.ui_scale, 0.5, 4.0, false);
+  if (!o.app.language.empty()) o.app.language = check_language(o.app.language, "--lang");
   if (o.window.msaa != -1) check_option("--msaa", o.window.msaa, 0, 16, false);
   if (o.window.screenshot && !o.frames)
     throw InputError("--screenshot: needs --frames N (the screenshot is taken after the N-th frame)");
@@ -49,6 +51,7 @@ void add_options(CLI::App& c, ViewCli& o) {
   c.add_option("--frames", o.frames, "run N frames, then exit (with --screenshot: write one)");
   c.add_option("--screenshot", o.window.screenshot, "after --frames N frames, write the window to this PNG");
   c.add_option("--ui-scale", o.app.ui_scale, "size of the panels and text (times the monitor's scale)");
+  c.add_option("--lang", o.app.language, "language of the panels and lessons: en or zh-CN (default: LANG, LC_MESSAGES)");
   c.add_option("--size", o.size, "window size WIDTHxHEIGHT (default 1280x720)");
   c.add_flag("--accuracy", o.app.accuracy, "open the accuracy-against-cost panel and start its sweep");
   c.add_flag("--region", o.app.region, "open the stability region (key G), as a link's region=1");

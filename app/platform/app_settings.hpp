@@ -17,6 +17,7 @@ struct AppSettings {
   std::vector<Method> compare;  // empty, or 2 to 4 lanes
   std::optional<std::string> script;
   double ui_scale = 1.0;  // times the display's own scale
+  std::string language;   // "zh-CN", "en"; empty: the environment's (desktop) or the browser's
   bool accuracy = false;  // open the Compare panel and start its sweep
   bool region = false;    // open the stability region's window
   // A lesson to teach (a shipped lesson's name or number, or a file), from this step (from 1).

@@ -1,5 +1,8 @@
 #include "platform/interactive_app.hpp"
 
+#include "springlab/text.hpp"
+#include "util/language.hpp"
+
 // GL first (epoxy or ES 3), then GLFW without its own GL header: its key codes are the ones
 // Dear ImGui's GLFW backend reports, on the desktop and in the browser alike.
 #include "gfx/gl.hpp"
@@ -179,6 +182,24 @@ bool InteractiveApp::open(const std::string& scene) {
   }
 }
 
+bool InteractiveApp::apply_language() {
+  const std::optional<std::string> tag = std::exchange(language_, std::nullopt);
+  return tag && set_language(*tag);
+}
+
+bool InteractiveApp::set_language(const std::string& tag) {
+  const std::string before = current_language();
+  try {
+    use_language(tag);
+  } catch (const std::exception& e) {
+    ui_.message = e.what();
+    return false;
+  }
+  if (current_language() == before) return false;
+  set_scale(ui_.scale);  // the fonts again, with the glyphs of the language now spoken
+  return true;
+}
+
 void InteractiveApp::set_scale(float scale) {
   ui_.scale = scale;
   if (lesson_) ui_.band = ui::lesson_band_height(scale);
@@ -324,6 +345,7 @@ void InteractiveApp::frame(const FrameSize& size) {
                     static_cast<int>(viewport.width / to_fb), static_cast<int>(viewport.height / to_fb)},
                    ui_.scene_name, overlay);
   if (requests.quit) quit_ = true;
+  if (requests.language) language_ = requests.language;
   std::optional<std::string> load = requests.load;
   if (pending_) load = std::exchange(pending_, std::nullopt);
   if (lesson_ && !interrupted_ && (session.edits() != edits || load)) {

@@ -74,6 +74,13 @@ class InteractiveApp {
 
   // A new scale for the panels and text; the platform then rebuilds its font texture.
   void set_scale(float scale);
+  // The language asked for in the last frame's panels, made current (util/language.hpp) with the
+  // fonts it needs; the platform calls this between frames and, when true, rebuilds its font
+  // texture. A language that cannot be spoken (its catalog or font missing) leaves the one in use
+  // and the banner says why.
+  bool apply_language();
+  // The language of the URL or the command line, set before the first frame: true if it changed.
+  bool set_language(const std::string& tag);
   float scale() const { return ui_.scale; }
 
   Session& session() { return *session_; }
@@ -119,7 +126,7 @@ class InteractiveApp {
   std::optional<ui::Drag> drag_;
   ui::FrameStats stats_;
   std::deque<std::pair<Clock::time_point, double>> pace_;  // (wall, simulated target) a frame
-  std::optional<std::string> pending_, opened_;
+  std::optional<std::string> pending_, opened_, language_;
   std::optional<Lesson> lesson_;
   int step_ = 0, lesson_number_ = 0;  // lesson_number_: its place in the course (0: not shipped)
   bool interrupted_ = false;

@@ -7,6 +7,7 @@
 #include "chart/compare_charts.hpp"
 #include "chart/imgui_chart.hpp"
 #include "draw/palette.hpp"
+#include "springlab/text.hpp"
 
 namespace springlab::ui {
 
@@ -38,22 +39,22 @@ void draw_compare_panel(ComparePanel& panel, const app::Session& session, float 
   if (!panel.open) return;
   ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Appearing);
   ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Appearing);
-  if (!ImGui::Begin("Accuracy against cost", &panel.open, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
+  if (!ImGui::Begin((tr("Accuracy against cost") + std::string("###accuracy")).c_str(), &panel.open, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
     ImGui::End();
     return;
   }
   const bool running = panel.sweep.running();
   const auto [done, total] = panel.sweep.progress();
   ImGui::PushItemWidth(110.0f * scale);
-  ImGui::SliderInt("steps", &panel.points, 3, 10);
+  ImGui::SliderInt(tr("steps"), &panel.points, 3, 10);
   ImGui::SameLine();
-  ImGui::SliderFloat("seconds", &panel.duration, 0.2f, 5.0f, "%.1f");
+  ImGui::SliderFloat(tr("seconds"), &panel.duration, 0.2f, 5.0f, "%.1f");
   ImGui::SameLine();
-  ImGui::SliderFloat("range", &panel.step_range, 4.0f, 64.0f, "dt/%.0f..2dt", ImGuiSliderFlags_Logarithmic);
+  ImGui::SliderFloat(tr("range"), &panel.step_range, 4.0f, 64.0f, tr("dt/%.0f..2dt"), ImGuiSliderFlags_Logarithmic);
   ImGui::PopItemWidth();
   ImGui::SameLine();
-  if (!running && ImGui::Button("Run")) panel.start(session);
-  if (running && ImGui::Button("Cancel")) panel.sweep.cancel();
+  if (!running && ImGui::Button(tr("Run"))) panel.start(session);
+  if (running && ImGui::Button(tr("Cancel"))) panel.sweep.cancel();
   if (running || done > 0) {
     ImGui::SameLine();
     ImGui::ProgressBar(total > 0 ? static_cast<float>(done) / total : 0.0f, ImVec2(160.0f * scale, 0),
@@ -74,24 +75,26 @@ void draw_compare_panel(ComparePanel& panel, const app::Session& session, float 
 
   const SweepResult result = panel.sweep.snapshot();
   if (result.runs.empty()) {
-    ImGui::TextDisabled("Run: every method over steps from dt/%.0f to 2 dt (adaptive ones over tolerances), "
-                        "each against the exact solution or a fine RK4 run.", panel.step_range);
+    ImGui::TextDisabled(tr("Run: every method over steps from dt/%.0f to 2 dt (adaptive ones over tolerances), "
+                        "each against the exact solution or a fine RK4 run."), panel.step_range);
   } else {
     const auto charts = chart::compare_charts(result, session.scene().name);
     // A tab a chart, in compare_charts' order (energy drift and the iterative rows' solver error
     // only where the sweep made them).
     const auto tab = [](const std::string& name) {
-      return name == "work-precision"        ? "error vs time"
-             : name == "work-precision-work" ? "error vs work"
-             : name == "energy-drift"        ? "energy drift"
-             : name == "solver-convergence"  ? "solver error"
-                                             : name.c_str();
+      static const std::pair<const char*, const char*> kTabs[] = {{"work-precision", N_("error vs time")},
+                                                                  {"work-precision-work", N_("error vs work")},
+                                                                  {"energy-drift", N_("energy drift")},
+                                                                  {"solver-convergence", N_("solver error")}};
+      for (const auto& [key, text] : kTabs)
+        if (name == key) return tr(text);
+      return tr(name.c_str());
     };
     for (int k = 0; k < static_cast<int>(charts.size()); ++k) {
       if (k > 0) ImGui::SameLine();
       if (ImGui::RadioButton(tab(charts[k].name), panel.chart == k)) panel.chart = k;
     }
-    if (running && panel.chart >= 3) ImGui::TextDisabled("(measured at the end of the sweep)");
+    if (running && panel.chart >= 3) ImGui::TextDisabled(tr("(measured at the end of the sweep)"));
     const int k = std::min(panel.chart, static_cast<int>(charts.size()) - 1);
     chart::chart_widget("##sweep", charts[k].chart, ImGui::GetContentRegionAvail());
   }

@@ -7,6 +7,7 @@
 
 #include "ui/text_wrap.hpp"
 #include "ui/theme.hpp"
+#include "springlab/text.hpp"
 
 namespace springlab::ui {
 
@@ -29,7 +30,7 @@ std::string caption_text(const std::string& caption, float width, float scale) {
   if (io.Fonts->Fonts.Size <= kCaptionFont) return caption;
   const ImFont* font = io.Fonts->Fonts[kCaptionFont];
   if (!font->IsLoaded()) return caption;  // the atlas not built yet: no glyphs to measure
-  return wrap_at_spaces(caption, font, font->FontSize * font->Scale, width - 2 * kPad * scale);
+  return wrap_text(caption, font, font->FontSize * font->Scale, width - 2 * kPad * scale);
 }
 }  // namespace
 
@@ -52,27 +53,26 @@ BandRequests draw_lesson_band(const LessonBand& band, float width, float scale) 
 
   // Where we are, and the way on.
   const int steps = static_cast<int>(band.durations.size());
-  const std::string where = (band.number > 0 ? "Lesson " + std::to_string(band.number) + " of " +
-                                                   std::to_string(band.count) + "  \u00b7  "
-                                             : "Lesson  \u00b7  ") +
-                            band.title + "   \u2014   step " + std::to_string(band.step + 1) + " of " +
-                            std::to_string(steps) + ": " + band.step_title;
+  const std::string where =
+      (band.number > 0 ? format_text(tr("Lesson %d of %d"), band.number, band.count) : std::string(tr("Lesson"))) +
+      "  \u00b7  " + band.title + "   \u2014   " +
+      format_text(tr("step %d of %d: %s"), band.step + 1, steps, band.step_title.c_str());
   ImGui::AlignTextToFramePadding();
   ImGui::TextDisabled("%s", where.c_str());
   if (band.interactive) {
     const bool at_end = band.step + 1 >= steps;
-    const char* next = !at_end ? "Next \u2192" : band.last_lesson ? "Done" : "Next lesson \u2192";
+    const char* next = !at_end ? tr("Next \u2192") : band.last_lesson ? tr("Done") : tr("Next lesson \u2192");
     const ImGuiStyle& style = ImGui::GetStyle();
-    const float buttons = ImGui::CalcTextSize("\u2190 Back").x + ImGui::CalcTextSize(next).x +
-                          ImGui::CalcTextSize("End lesson").x + 6 * style.FramePadding.x + 2 * style.ItemSpacing.x;
+    const float buttons = ImGui::CalcTextSize(tr("\u2190 Back")).x + ImGui::CalcTextSize(next).x +
+                          ImGui::CalcTextSize(tr("End lesson")).x + 6 * style.FramePadding.x + 2 * style.ItemSpacing.x;
     ImGui::SameLine(std::max(ImGui::GetCursorPosX(), width - kPad * scale - buttons));
     ImGui::BeginDisabled(band.step == 0);
-    out.back = ImGui::Button("\u2190 Back");
+    out.back = ImGui::Button(tr("\u2190 Back"));
     ImGui::EndDisabled();
     ImGui::SameLine();
     out.next = ImGui::Button(next);
     ImGui::SameLine();
-    out.end = ImGui::Button("End lesson");
+    out.end = ImGui::Button(tr("End lesson"));
   }
 
   // The caption, large.
@@ -86,11 +86,11 @@ BandRequests draw_lesson_band(const LessonBand& band, float width, float scale) 
   ImGui::SetCursorPosY(height - kPad * scale - kBar * scale - kGap * scale - kFontSize * 1.25f * scale);
   if (band.interrupted && band.interactive) {
     ImGui::AlignTextToFramePadding();
-    ImGui::TextColored(kTookOver, "You took over: the lesson waits.");
+    ImGui::TextColored(kTookOver, tr("You took over: the lesson waits."));
     ImGui::SameLine();
-    out.resume = ImGui::SmallButton("Resume the lesson (this step from its start)");
+    out.resume = ImGui::SmallButton(tr("Resume the lesson (this step from its start)"));
   } else if (!band.prompt.empty()) {
-    ImGui::TextColored(kPrompt, "Try this: %s", band.prompt.c_str());
+    ImGui::TextColored(kPrompt, tr("Try this: %s"), band.prompt.c_str());
   }
 
   // Progress: one segment a step, as long as its duration, filled up to now.
@@ -119,13 +119,13 @@ LessonBand band_of(const Lesson& lesson, int k, int number, int count) {
   b.number = number;
   b.count = count;
   b.last_lesson = number == 0 || number >= count;
-  b.title = lesson.title;
+  b.title = tr(lesson.title);
   b.step = k;
   for (const LessonStep& s : lesson.steps) b.durations.push_back(s.duration);
   const LessonStep& step = lesson.steps[k];
-  b.step_title = step.title;
-  b.caption = step.caption;
-  b.prompt = step.prompt;
+  b.step_title = tr(step.title);
+  b.caption = tr(step.caption);
+  b.prompt = tr(step.prompt);
   return b;
 }
 

@@ -11,6 +11,7 @@
 #include "draw/camera.hpp"
 #include "draw/palette.hpp"
 #include "draw/scene_frame.hpp"
+#include "springlab/text.hpp"
 
 namespace springlab::ui {
 
@@ -18,7 +19,7 @@ namespace {
 ImU32 u32(const draw::Rgba& c) { return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, c.a)); }
 
 std::string lane_name(const app::Lane& lane) {
-  return lane.ik ? ik_solver_info(lane.ik->solver).label : method_info(lane.sim.settings().method).label;
+  return tr(lane.ik ? ik_solver_info(lane.ik->solver).label : method_info(lane.sim.settings().method).label);
 }
 
 const ImU32 kText = IM_COL32(240, 242, 245, 255), kBack = IM_COL32(10, 12, 14, 190);
@@ -39,10 +40,10 @@ Legend legend_of(const app::Session& session, const draw::Viewport& viewport, fl
     std::string row = lane_name(lane);
     char s[96];
     if (lane.ik) {
-      std::snprintf(s, sizeof s, "  %d it., error %.2g m%s", lane.ik->status.iterations, lane.ik->status.error,
-                    lane.ik->status.converged ? "" : lane.ik->status.stalled ? " (stuck)" : "");
+      std::snprintf(s, sizeof s, tr("  %d it., error %.2g m%s"), lane.ik->status.iterations, lane.ik->status.error,
+                    lane.ik->status.converged ? "" : lane.ik->status.stalled ? tr(" (stuck)") : "");
     } else if (const Divergence* trouble = lane.sim.trouble()) {
-      std::snprintf(s, sizeof s, "  %s at t = %.3g s", trouble->unstable ? "went unstable" : "diverged", trouble->t);
+      std::snprintf(s, sizeof s, tr("  %s at t = %.3g s"), trouble->unstable ? tr("went unstable") : tr("diverged"), trouble->t);
     } else {
       std::snprintf(s, sizeof s, "  t = %.3f s", lane.sim.state().t);
     }
@@ -76,7 +77,7 @@ void draw_legend(const app::Session& session, const Legend& legend, float scale)
 std::string realtime_text(double realtime) {
   if (!(realtime < 0.95)) return "";
   char s[48];
-  std::snprintf(s, sizeof s, "%.2gx real time", realtime);
+  std::snprintf(s, sizeof s, tr("%.2gx real time"), realtime);
   return s;
 }
 
@@ -93,12 +94,12 @@ void draw_overlay(const app::Session& session, const draw::ViewCamera& camera, c
     const auto& lanes = session.lanes();
     const std::string slow = realtime_text(options.realtime);
     if (const auto& ik = lanes.front().ik; ik && !session.comparing())
-      std::snprintf(s, sizeof s, "%s  |  %s  |  iteration %d, error %.3g m%s", scene_name.c_str(),
-                    ik_solver_info(ik->solver).label, ik->status.iterations, ik->status.error,
-                    ik->status.reachable ? "" : "  |  target out of reach");
+      std::snprintf(s, sizeof s, tr("%s  |  %s  |  iteration %d, error %.3g m%s"), scene_name.c_str(),
+                    tr(ik_solver_info(ik->solver).label), ik->status.iterations, ik->status.error,
+                    ik->status.reachable ? "" : tr("  |  target out of reach"));
     else
       std::snprintf(s, sizeof s, "%s  |  %s  |  t = %.3f s%s%s", scene_name.c_str(),
-                    session.comparing() ? "compare" : method_info(session.method()).label,
+                    session.comparing() ? tr("compare") : tr(method_info(session.method()).label),
                     session.comparing() ? session.simulated_target() : lanes.front().sim.state().t,
                     slow.empty() ? "" : "  |  ", slow.c_str());
     const ImVec2 size = ImGui::CalcTextSize(s);
@@ -111,7 +112,7 @@ void draw_overlay(const app::Session& session, const draw::ViewCamera& camera, c
   bool waiting = false;
   for (const app::Lane& lane : session.lanes()) waiting |= session.background_analysis() && lane.waiting();
   if (waiting) {
-    const char* s = "analysing stability: choosing the sub-steps...";
+    const char* s = tr("analysing stability: choosing the sub-steps...");
     const ImVec2 size = ImGui::CalcTextSize(s);
     const ImVec2 p(viewport.x + 0.5f * (viewport.width - size.x), viewport.y + 0.45f * viewport.height);
     dl->AddRectFilled(ImVec2(p.x - 8, p.y - 4), ImVec2(p.x + size.x + 8, p.y + size.y + 4), back, 4.0f);
@@ -128,8 +129,8 @@ void draw_overlay(const app::Session& session, const draw::ViewCamera& camera, c
     const Divergence* trouble = lane.sim.trouble();
     if (!trouble) continue;
     char s[160];
-    std::snprintf(s, sizeof s, "%s %s at t = %.3g s", lane_name(lane).c_str(),
-                  trouble->unstable ? "went unstable" : "diverged", trouble->t);
+    std::snprintf(s, sizeof s, tr("%s %s at t = %.3g s"), lane_name(lane).c_str(),
+                  trouble->unstable ? tr("went unstable") : tr("diverged"), trouble->t);
     const Eigen::Vector3d at = draw::project(camera, draw::label_anchor(lane), viewport.width, viewport.height);
     const ImVec2 size = ImGui::CalcTextSize(s);
     float x = viewport.x + static_cast<float>(at.x()) - 0.5f * size.x;

@@ -12,6 +12,8 @@
 #include "ui/overlay.hpp"
 #include "springlab/iterative_cost.hpp"
 #include "ui/text_wrap.hpp"
+#include "springlab/text.hpp"
+#include "util/language.hpp"
 
 namespace springlab::ui {
 
@@ -59,16 +61,16 @@ void gauge(app::Session& session, app::Lane& lane, float width, bool explain) {
   const StabilityAnalysis* analysis = shown_analysis(session, lane);
   double fraction = 0.0;
   ImVec4 color = kNeutral;
-  std::string verdict = "analysing...";
+  std::string verdict = tr("analysing...");
   const StabilityLimit* limit = analysis ? &analysis->limit(m.id) : nullptr;
   if (limit) {
     if (std::isnan(limit->h)) {
       fraction = 0.5;
-      verdict = "adaptive";
+      verdict = tr("adaptive");
     } else if (std::isinf(limit->h)) {
       fraction = std::min(1.0, h * analysis->w_max() / 10.0) * 0.6;
       color = kSafe;
-      verdict = "always stable";
+      verdict = tr("always stable");
       // An iterative row pays instead: at rest in softness, its stretch against the spring
       // model's under the same load; in motion in damping, the energy it takes out beyond the
       // physics' damping over the last second (iterative_cost.hpp).
@@ -77,16 +79,16 @@ void gauge(app::Session& session, app::Lane& lane, float width, bool explain) {
         const std::size_t n = hist.t.size(), back = std::min<std::size_t>(n, 61);
         if (analysis->rest_stretch() > 0.0 && at_rest(sim.model(), sim.state(), sim.energy_scale())) {
           const double ratio = analysis->rest_stretch() / std::max(rms_stretch(sim.model(), sim.state()), 1e-300);
-          verdict = fmt("bounded; at rest acts as k_s x%.2g", ratio);
+          verdict = fmt(tr("bounded; at rest acts as k_s x%.2g"), ratio);
           if (ratio < 0.5) color = kNear;
         } else if (back >= 2 && hist.net.size() == n && hist.dissipated.size() == n) {
           const std::size_t a = n - back, b = n - 1;
           const double dt = hist.t[b] - hist.t[a];
           const double lost = -((hist.net[b] - hist.net[a]) + (hist.dissipated[b] - hist.dissipated[a]));
           // Negative: energy went into the springs' stretch, counted with k_s (XPBD at few passes).
-          if (dt > 0.0 && lost >= 0.0) verdict = fmt("bounded; damps %.2g W extra", lost / dt);
+          if (dt > 0.0 && lost >= 0.0) verdict = fmt(tr("bounded; damps %.2g W extra"), lost / dt);
           if (dt > 0.0 && lost < 0.0) {
-            verdict = fmt("bounded; +%.2g W into stretch", -lost / dt);
+            verdict = fmt(tr("bounded; +%.2g W into stretch"), -lost / dt);
             color = kNear;
           }
         }
@@ -94,24 +96,24 @@ void gauge(app::Session& session, app::Lane& lane, float width, bool explain) {
     } else if (limit->h == 0.0) {
       fraction = 1.0;
       color = kBeyond;
-      verdict = "never stable";
+      verdict = tr("never stable");
     } else {
       const double ratio = h / limit->h;
       fraction = std::min(1.0, ratio / 1.5);
       color = ratio > 1.0 ? (limit->exact ? kBeyond : kNear) : ratio > 0.8 ? kNear : kSafe;
-      verdict = fmt(ratio > 1.0 ? (limit->exact ? "beyond: %.2fx" : "past proven: %.2fx")
-                                : ratio > 0.8 ? "near: %.2fx" : "safe: %.2fx",
+      verdict = fmt(ratio > 1.0 ? (limit->exact ? tr("beyond: %.2fx") : tr("past proven: %.2fx"))
+                                : ratio > 0.8 ? tr("near: %.2fx") : tr("safe: %.2fx"),
                     ratio);
     }
   }
   if (const Divergence* trouble = sim.trouble()) {
     color = kBeyond;
-    verdict = explain ? fmt(trouble->unstable ? "unstable at %.3g s" : "diverged at %.3g s", trouble->t)
-                      : std::string(trouble->unstable ? "unstable" : "diverged");
+    verdict = explain ? fmt(trouble->unstable ? tr("unstable at %.3g s") : tr("diverged at %.3g s"), trouble->t)
+                      : std::string(trouble->unstable ? tr("unstable") : tr("diverged"));
   }
   const ImGuiStyle& style = ImGui::GetStyle();
-  const float label_w = ImGui::CalcTextSize("Symplectic Euler ").x;
-  ImGui::TextColored(v4(draw::method_color(m.id)), "%s", m.label);
+  const float label_w = ImGui::CalcTextSize(tr("Symplectic Euler ")).x;
+  ImGui::TextColored(v4(draw::method_color(m.id)), "%s", tr(m.label));
   ImGui::SameLine(label_w + style.WindowPadding.x);
   // The bar (the limit sits at two thirds of it), then the verdict; a verdict too long for the
   // row goes on the next.
@@ -132,13 +134,14 @@ void gauge(app::Session& session, app::Lane& lane, float width, bool explain) {
                      (p.x + bar_w + style.ItemSpacing.x);
   if (ImGui::CalcTextSize(verdict.c_str()).x <= room) ImGui::SameLine();
   ImGui::TextColored(color, "%s", verdict.c_str());
-  if (ImGui::IsItemHovered() && limit) ImGui::SetTooltip("%s", m.stability);
+  if (ImGui::IsItemHovered() && limit) ImGui::SetTooltip("%s", tr(m.stability));
   if (!explain || !limit) return;
   if (analysis && !analysis->oscillates()) {
-    text_wrapped_disabled("no oscillating modes (" + analysis->no_modes_reason() + "); " + describe(*limit));
+    text_wrapped_disabled(format_text(tr("no oscillating modes (%s); %s"), tr(analysis->no_modes_reason()).c_str(),
+                                      describe(*limit).c_str()));
   } else if (limit->mode && std::isfinite(limit->h) && limit->h > 0.0) {
     char mode[96];
-    std::snprintf(mode, sizeof mode, " (its mode: %.4g rad/s, damping ratio %.2g)", limit->mode->w,
+    std::snprintf(mode, sizeof mode, tr(" (its mode: %.4g rad/s, damping ratio %.2g)"), limit->mode->w,
                   limit->mode->damping_ratio());
     text_wrapped_disabled(describe(*limit) + mode);
   } else {
@@ -177,7 +180,7 @@ void mark_diverged(chart::Series& s, const app::Lane& lane, const char* unit) {
 // solvers converge at very different rates, and a stuck one levels off).
 void ik_chart(app::Session& session, float width, float height) {
   chart::Chart error;
-  error.title = "Distance from the end to the target, against time (drag the target to start again)";
+  error.title = tr("Distance from the end to the target, against time (drag the target to start again)");
   error.x.label = "t (s)";
   error.y.label = "m";
   error.y.log = true;
@@ -195,7 +198,7 @@ chart::Chart energy_chart(const app::Session& session) {
   const draw::Rgba white{0.95f, 0.95f, 0.95f, 1}, ke{1.0f, 0.55f, 0.25f, 1}, pe{0.45f, 0.7f, 1.0f, 1},
       lost{0.7f, 0.7f, 0.7f, 1};
   chart::Chart energy;
-  energy.title = "Energy";
+  energy.title = tr("Energy");
   energy.x.label = "t (s)";
   energy.y.label = "J";
   for (const app::Lane& lane : session.lanes()) {
@@ -219,12 +222,12 @@ chart::Chart energy_chart(const app::Session& session) {
   return energy;
 }
 
-const char* const kAxes = "xyz";
+const char* const kAxes = "xyz";  // not shown: the axes' letters
 
 chart::Chart position_chart(const app::Session& session) {
   const int a = session.watched_axis();
   chart::Chart position;
-  position.title = "Particle " + std::to_string(session.watched()) + ", " + std::string(1, kAxes[a]) + "(t)";
+  position.title = format_text(tr("Particle %d, %c(t)"), session.watched(), kAxes[a]);
   position.x.label = "t (s)";
   position.y.label = std::string(1, kAxes[a]) + " (m)";
   for (const app::Lane& lane : session.lanes()) {
@@ -240,7 +243,7 @@ chart::Chart position_chart(const app::Session& session) {
 
 chart::Chart phase_chart(const app::Session& session) {
   chart::Chart phase;
-  phase.title = "Phase";
+  phase.title = tr("Phase");
   phase.x.label = std::string(1, kAxes[session.watched_axis()]) + " (m)";
   phase.y.label = "v (m/s)";
   phase.legend = false;
@@ -255,9 +258,9 @@ chart::Chart phase_chart(const app::Session& session) {
 // cross on each frame in which it threw tries away.
 chart::Chart steps_chart(const app::Session& session) {
   chart::Chart steps;
-  steps.title = "The adaptive step: accepted (line), frames with rejected tries (x)";
+  steps.title = tr("The adaptive step: accepted (line), frames with rejected tries (x)");
   steps.x.label = "t (s)";
-  steps.y.label = "internal step (s)";
+  steps.y.label = tr("internal step (s)");
   steps.y.log = true;
   for (const app::Lane& lane : session.lanes()) {
     if (!method_info(lane.sim.settings().method).adaptive()) continue;
@@ -265,7 +268,7 @@ chart::Chart steps_chart(const app::Session& session) {
     chart::Series step = series(std::string(method_info(lane.sim.settings().method).name) + " step", 
                                 draw::method_color(lane.sim.settings().method), h.t, h.step);
     chart::Series rejected;
-    rejected.label = "rejected";
+    rejected.label = tr("rejected");
     rejected.color = draw::kDiverged;
     for (std::size_t k = 1; k < step.x.size(); ++k) {
       const std::size_t i = h.rejected.size() - step.x.size() + k;
@@ -288,7 +291,7 @@ std::vector<chart::Chart> region_charts(app::Session& session, std::string& none
   std::vector<chart::Chart> out;
   const StabilityAnalysis* analysis = shown_analysis(session, session.lanes()[0]);
   if (!analysis) {
-    none = "analysing the scene's stability...";
+    none = tr("analysing the scene's stability...");
     return out;
   }
   std::vector<chart::RegionLane> planes[2];
@@ -298,7 +301,7 @@ std::vector<chart::Chart> region_charts(app::Session& session, std::string& none
           {lane.sim.settings().method, lane.sim.h()});
   for (int k = 0; k < 2; ++k)
     if (!planes[k].empty()) out.push_back(chart::stability_region(*analysis, planes[k]));
-  if (out.empty()) none = "an adaptive method chooses its own steps: it has no region";
+  if (out.empty()) none = tr("an adaptive method chooses its own steps: it has no region");
   return out;
 }
 
@@ -315,7 +318,7 @@ void region_window(app::Session& session, UiState& ui, float x, float y, float w
   if (!ui.region) return;
   ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Appearing);
   ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Appearing);
-  if (!ImGui::Begin("Stability region (G)", &ui.region, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
+  if (!ImGui::Begin((tr("Stability region (G)") + std::string("###region")).c_str(), &ui.region, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
     ImGui::End();
     return;
   }
@@ -400,22 +403,22 @@ draw::Viewport scene_viewport(const UiState& ui, int width, int height) {
 // progress, with the two difficulties spelt out: no solution, or many.
 void ik_controls(app::Session& session) {
   const IkScene& ik = *session.scene().ik;
-  if (!session.comparing() && ImGui::BeginCombo("solver", ik_solver_info(session.solver()).label)) {
+  if (!session.comparing() && ImGui::BeginCombo(tr("solver"), tr(ik_solver_info(session.solver()).label))) {
     int key = 1;
     for (const IkSolverInfo& info : ik_solvers()) {
-      const std::string label = std::to_string(key++) + "  " + info.label;
+      const std::string label = std::to_string(key++) + "  " + tr(info.label);
       ImGui::PushStyleColor(ImGuiCol_Text, v4(draw::solver_color(info.id)));
       if (ImGui::Selectable(label.c_str(), info.id == session.solver())) session.set_solver(info.id);
       ImGui::PopStyleColor();
     }
     ImGui::EndCombo();
   }
-  if (ImGui::Button(session.comparing() ? "One solver (C)" : "Solvers side by side (C)"))
+  if (ImGui::Button(session.comparing() ? tr("One solver (C)") : tr("Solvers side by side (C)")))
     session.set_compare_solvers(session.comparing() ? std::vector<IkSolver>{} : ik.solvers);
   int per_frame = session.ik_iterations_per_frame();
-  if (ImGui::SliderInt("iterations/frame", &per_frame, 1, 100, "%d", ImGuiSliderFlags_Logarithmic))
+  if (ImGui::SliderInt(tr("iterations/frame"), &per_frame, 1, 100, "%d", ImGuiSliderFlags_Logarithmic))
     session.set_ik_iterations_per_frame(per_frame);
-  ImGui::TextDisabled("reach %.3g m, %d links; tolerance %.2g m", ik.chain.reach(), ik.chain.size(),
+  ImGui::TextDisabled(tr("reach %.3g m, %d links; tolerance %.2g m"), ik.chain.reach(), ik.chain.size(),
                       ik.settings.tolerance);
   for (const app::Lane& lane : session.lanes()) {
     const app::IkLane& l = *lane.ik;
@@ -423,32 +426,32 @@ void ik_controls(app::Session& session) {
     ImGui::Text("%s", ik_solver_info(l.solver).name);
     ImGui::PopStyleColor();
     ImGui::SameLine();
-    const char* state = l.status.converged ? "reached" : l.status.stalled ? "stuck" : "iterating";
-    ImGui::Text("%s in %d, error %.2g m", state, l.status.iterations, l.status.error);
+    const char* state = l.status.converged ? tr("reached") : l.status.stalled ? tr("stuck") : tr("iterating");
+    ImGui::Text(tr("%s in %d, error %.2g m"), state, l.status.iterations, l.status.error);
   }
   const IkStatus& first = session.primary().ik->status;
   if (!first.reachable)
-    text_wrapped("The target is out of reach: no pose puts the end on it. The chain stretches "
-                 "straight towards it, as close as it can get.", kNear);
+    text_wrapped(tr("The target is out of reach: no pose puts the end on it. The chain stretches "
+                 "straight towards it, as close as it can get."), kNear);
   else if (session.comparing())
-    text_wrapped_disabled("One target, several poses: each solver, from the same start, settles on its own "
-                          "answer. Inverse kinematics has many solutions, or none.");
+    text_wrapped_disabled(tr("One target, several poses: each solver, from the same start, settles on its own "
+                          "answer. Inverse kinematics has many solutions, or none."));
   else
-    text_wrapped_disabled("Drag the red target. Press C to see the solvers side by side.");
+    text_wrapped_disabled(tr("Drag the red target. Press C to see the solvers side by side."));
 }
 
 namespace {
 
 // Pause, step, reset: the buttons a class sees pressed most.
 void transport(app::Session& session) {
-  if (ImGui::Button(session.paused() ? "Resume (space)" : "Pause (space)")) session.set_paused(!session.paused());
+  if (ImGui::Button(session.paused() ? tr("Resume (space)") : tr("Pause (space)"))) session.set_paused(!session.paused());
   ImGui::SameLine();
-  if (ImGui::Button("Step (S)")) {
+  if (ImGui::Button(tr("Step (S)"))) {
     session.set_paused(true);
     session.step_once();
   }
   ImGui::SameLine();
-  if (ImGui::Button("Reset (R)")) session.reset();
+  if (ImGui::Button(tr("Reset (R)"))) session.reset();
 }
 
 // The time of each lane (in compare mode a diverged lane stopped at its own), the speed, and
@@ -469,11 +472,11 @@ void clocks(app::Session& session, const FrameStats& stats) {
   }
   if (session.paused()) {
     ImGui::SameLine();
-    ImGui::TextColored(kNear, "paused");
+    ImGui::TextColored(kNear, tr("paused"));
   }
   if (session.speed() != 1.0) {
     ImGui::SameLine();
-    ImGui::TextColored(kNear, "slow motion x%g", session.speed());
+    ImGui::TextColored(kNear, tr("slow motion x%g"), session.speed());
   }
   // The real-time factor of a running simulation (paused, the last one is stale), on the same
   // line if it fits there, else on the next.
@@ -496,7 +499,7 @@ void parameters(app::Session& session, UiState& ui, bool few) {
   if (springs && slider("k_s (N/m)", ks, ui.ranges.ks / 100, ui.ranges.ks * 100, true)) session.set_stiffness(ks);
   const double kd_max = std::max(10 * ui.ranges.kd, 2 * std::sqrt(ui.ranges.ks * ui.ranges.mass));
   if (springs && slider("k_d (N s/m)", kd, 0.0, kd_max, true)) session.set_damping(kd);
-  if (slider("dt (s)", dt, ui.ranges.dt / 100, std::min(1.0, std::max(0.1, ui.ranges.dt * 100)), true, "%.3g"))
+  if (slider(tr("dt (s)"), dt, ui.ranges.dt / 100, std::min(1.0, std::max(0.1, ui.ranges.dt * 100)), true, "%.3g"))
     session.set_dt(dt);
   // Sub-steps: chosen from each lane's limit ("auto (N)"), until the slider fixes them.
   int substeps = sim.settings().substeps;
@@ -511,46 +514,46 @@ void parameters(app::Session& session, UiState& ui, bool few) {
       }
     shown += bound ? ", bound)" : ")";  // from the quick bound until the analysis ends
   }
-  ImGui::PushItemWidth(ImGui::CalcItemWidth() - ImGui::CalcTextSize("auto").x - ImGui::GetFrameHeight() -
+  ImGui::PushItemWidth(ImGui::CalcItemWidth() - ImGui::CalcTextSize(tr("auto")).x - ImGui::GetFrameHeight() -
                        2 * ImGui::GetStyle().ItemInnerSpacing.x);
   if (ImGui::SliderInt("##substeps", &substeps, 1, 256, shown.c_str(), ImGuiSliderFlags_Logarithmic))
     session.set_substeps(substeps);
   ImGui::PopItemWidth();
   ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
   bool automatic = session.auto_substeps();
-  if (ImGui::Checkbox("auto", &automatic)) {
+  if (ImGui::Checkbox(tr("auto"), &automatic)) {
     if (automatic) session.set_auto_substeps();
     else session.set_substeps(sim.settings().substeps);
   }
   ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
-  ImGui::TextUnformatted("sub-steps");
+  ImGui::TextUnformatted(tr("sub-steps"));
   for (const app::Lane& lane : session.lanes())
     if (lane.sim.auto_substeps() && lane.sim.substeps_capped() && lane.analysis) {
       const bool hopeless = lane.analysis->limit(lane.sim.settings().method).h == 0.0;
       text_wrapped(std::string(method_info(lane.sim.settings().method).name) + ": " +
-                       (hopeless ? "unstable at any step: sub-steps cannot help" : "sub-steps capped: still past its limit"),
+                       (hopeless ? tr("unstable at any step: sub-steps cannot help") : tr("sub-steps capped: still past its limit")),
                    kNear);
       break;
     }
   if (few) return;
-  if (slider("mass (kg)", mass, ui.ranges.mass / 100, ui.ranges.mass * 100, true)) session.set_mass(mass);
-  if (slider("gravity (m/s^2)", g, 0.0, 30.0, false, "%.2f")) {
+  if (slider(tr("mass (kg)"), mass, ui.ranges.mass / 100, ui.ranges.mass * 100, true)) session.set_mass(mass);
+  if (slider(tr("gravity (m/s^2)"), g, 0.0, 30.0, false, "%.2f")) {
     const Vec3 dir = sim.model().gravity.norm() > 0 ? Vec3(sim.model().gravity.normalized()) : Vec3(-Vec3::UnitY());
     session.set_gravity(g * dir);
   }
-  if (slider("drag (N s/m)", drag, 0.0, std::max(1.0, 100 * ui.ranges.drag), true)) session.set_drag(drag);
-  if (sim.model().has_colliders() && slider("friction", mu, 0.0, 2.0, false, "%.2f")) session.set_friction(mu);
-  if (method_info(session.method()).adaptive() && slider("tolerance", tol, 1e-10, 1e-1, true, "%.1e"))
+  if (slider(tr("drag (N s/m)"), drag, 0.0, std::max(1.0, 100 * ui.ranges.drag), true)) session.set_drag(drag);
+  if (sim.model().has_colliders() && slider(tr("friction"), mu, 0.0, 2.0, false, "%.2f")) session.set_friction(mu);
+  if (method_info(session.method()).adaptive() && slider(tr("tolerance"), tol, 1e-10, 1e-1, true, "%.1e"))
     session.set_tolerance(tol);
   if (method_info(session.method()).family == MethodFamily::Iterative) {
     // Iterations a step: the solver error against the cost (XPBD: passes over the springs).
     int iterations = iterations_for(session.method(), sim.settings().step);
-    if (ImGui::SliderInt("iterations", &iterations, 1, 100, "%d", ImGuiSliderFlags_Logarithmic))
+    if (ImGui::SliderInt(tr("iterations"), &iterations, 1, 100, "%d", ImGuiSliderFlags_Logarithmic))
       session.set_iterations(std::clamp(iterations, 1, 10000));
   }
   int speed_exp = static_cast<int>(std::lround(std::log2(session.speed())));
   const char* speeds[] = {"1/16", "1/8", "1/4", "1/2", "1", "2", "4"};
-  if (ImGui::SliderInt("speed", &speed_exp, -4, 2, speeds[speed_exp + 4])) session.set_speed(std::pow(2.0, speed_exp));
+  if (ImGui::SliderInt(tr("speed"), &speed_exp, -4, 2, speeds[speed_exp + 4])) session.set_speed(std::pow(2.0, speed_exp));
   (void)s;
 }
 
@@ -576,27 +579,27 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
     ImGui::PushItemWidth(-130.0f * s);
 
     // The scene: its picker, and what it shows (its first sentence; the rest on hover).
-    if (!ui.scenes.empty() && ImGui::BeginCombo("scene", ui.scene_name.c_str())) {
+    if (!ui.scenes.empty() && ImGui::BeginCombo(tr("scene"), ui.scene_name.c_str())) {
       for (const std::string& name : ui.scenes)
         if (ImGui::Selectable(name.c_str(), name == ui.scene_name)) requests.load = name;
       ImGui::EndCombo();
     }
     // The lessons: the lecture, step by step (the band across the top then leads).
     if (!ui.lessons.empty()) {
-      std::string current = "(none: explore freely)";
+      std::string current = tr("(none: explore freely)");
       for (std::size_t k = 0; k < ui.lessons.size(); ++k)
-        if (ui.lessons[k].first == ui.lesson) current = std::to_string(k + 1) + "  " + ui.lessons[k].second;
-      if (ImGui::BeginCombo("lesson", current.c_str())) {
-        if (ImGui::Selectable("(none: explore freely)", ui.lesson.empty())) requests.lesson = "";
+        if (ui.lessons[k].first == ui.lesson) current = std::to_string(k + 1) + "  " + tr(ui.lessons[k].second);
+      if (ImGui::BeginCombo(tr("lesson"), current.c_str())) {
+        if (ImGui::Selectable(tr("(none: explore freely)"), ui.lesson.empty())) requests.lesson = "";
         for (std::size_t k = 0; k < ui.lessons.size(); ++k) {
-          const std::string label = std::to_string(k + 1) + "  " + ui.lessons[k].second;
+          const std::string label = std::to_string(k + 1) + "  " + tr(ui.lessons[k].second);
           if (ImGui::Selectable(label.c_str(), ui.lessons[k].first == ui.lesson)) requests.lesson = ui.lessons[k].first;
         }
         ImGui::EndCombo();
       }
     }
     if (ui.platform_controls) ui.platform_controls();
-    const std::string& about = session.scene().description;
+    const std::string about = tr(session.scene().description);
     const std::size_t stop = about.find(". ");
     text_wrapped_disabled(stop == std::string::npos ? about : about.substr(0, stop + 1) + " (...)");
     if (ImGui::IsItemHovered() && stop != std::string::npos) {
@@ -613,10 +616,10 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
     } else {
       if (!session.comparing()) {
         const MethodInfo& current = method_info(session.method());
-        if (ImGui::BeginCombo("method", current.label)) {
+        if (ImGui::BeginCombo(tr("method"), tr(current.label))) {
           int key = 1;
           for (const MethodInfo& m : methods()) {
-            const std::string label = std::to_string(key++) + "  " + m.label;
+            const std::string label = std::to_string(key++) + "  " + tr(m.label);
             ImGui::PushStyleColor(ImGuiCol_Text, v4(draw::method_color(m.id)));
             if (ImGui::Selectable(label.c_str(), m.id == current.id)) session.set_method(m.id);
             ImGui::PopStyleColor();
@@ -634,22 +637,22 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
     }
     if (!few) {
       if (stats.timed)
-        ImGui::TextDisabled("%s", fmt("a frame: %.1f ms simulating, ", stats.sim_ms).append(fmt("%.1f drawing", stats.draw_ms)).c_str());
+        ImGui::TextDisabled(tr("a frame: %.1f ms simulating, %.1f drawing"), stats.sim_ms, stats.draw_ms);
       else
-        ImGui::TextDisabled("a frame: %lld force evaluations", static_cast<long long>(stats.force_evals));
+        ImGui::TextDisabled(tr("a frame: %lld force evaluations"), static_cast<long long>(stats.force_evals));
       if (!session.scene().ik) {
-        if (ImGui::Button(ui.accuracy ? "Hide accuracy (A)" : "Accuracy vs cost (A)")) ui.accuracy = !ui.accuracy;
+        if (ImGui::Button(ui.accuracy ? tr("Hide accuracy (A)") : tr("Accuracy vs cost (A)"))) ui.accuracy = !ui.accuracy;
         ImGui::SameLine();
-        if (ImGui::Button(ui.region ? "Hide region (G)" : "Stability region (G)")) ui.region = !ui.region;
-        if (ImGui::Button(ui.tableau ? "Hide your method (Y)" : "Your method (Y)")) ui.tableau = !ui.tableau;
+        if (ImGui::Button(ui.region ? tr("Hide region (G)") : tr("Stability region (G)"))) ui.region = !ui.region;
+        if (ImGui::Button(ui.tableau ? tr("Hide your method (Y)") : tr("Your method (Y)"))) ui.tableau = !ui.tableau;
       }
-      if (!session.scene().ik && ImGui::CollapsingHeader("Compare methods")) {
-        if (ImGui::Button(session.comparing() ? "Single view (C)" : "Compare (C)")) {
+      if (!session.scene().ik && ImGui::CollapsingHeader(tr("Compare methods"))) {
+        if (ImGui::Button(session.comparing() ? tr("Single view (C)") : tr("Compare (C)"))) {
           if (session.comparing()) session.set_compare({});
           else if (compare_methods(ui).size() >= 2) session.set_compare(compare_methods(ui));
         }
         ImGui::SameLine();
-        ImGui::TextDisabled("tick 2 to 4:");
+        ImGui::TextDisabled(tr("tick 2 to 4:"));
         if (ImGui::BeginTable("compare", 2)) {
           for (const MethodInfo& m : methods()) {
             ImGui::TableNextColumn();
@@ -663,19 +666,28 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
           ImGui::EndTable();
         }
       }
-      if (ImGui::CollapsingHeader("View and files")) {
-        ImGui::InputTextWithHint("##open", "a scene file (or drop one)", ui.open_path, sizeof ui.open_path);
+      if (ImGui::CollapsingHeader(tr("View and files"))) {
+        ImGui::InputTextWithHint("##open", tr("a scene file (or drop one)"), ui.open_path, sizeof ui.open_path);
         ImGui::SameLine();
-        if (ImGui::Button("Open") && ui.open_path[0]) requests.load = std::string(ui.open_path);
-        ImGui::Checkbox("springs", &ui.view.springs);
+        if (ImGui::Button(tr("Open")) && ui.open_path[0]) requests.load = std::string(ui.open_path);
+        ImGui::Checkbox(tr("springs"), &ui.view.springs);
         ImGui::SameLine();
-        ImGui::Checkbox("particles", &ui.view.particles);
+        ImGui::Checkbox(tr("particles"), &ui.view.particles);
         ImGui::SameLine();
-        ImGui::Checkbox("surface", &ui.view.surfaces);
-        ImGui::Checkbox("the limiting mode (M)", &ui.view.mode);
+        ImGui::Checkbox(tr("surface"), &ui.view.surfaces);
+        ImGui::Checkbox(tr("the limiting mode (M)"), &ui.view.mode);
         double strain = ui.view.strain_scale;
-        if (slider("strain scale", strain, 1e-3, 0.5, true, "+-%.3f")) ui.view.strain_scale = strain;
-        ImGui::Checkbox("presentation (P)", &ui.presentation);
+        if (slider(tr("strain scale"), strain, 1e-3, 0.5, true, "+-%.3f")) ui.view.strain_scale = strain;
+        ImGui::Checkbox(tr("presentation (P)"), &ui.presentation);
+        // The language, switched live (the fonts are remade before the next frame).
+        const std::string now = current_language();
+        const auto& all = app::languages();
+        const auto shown = std::find_if(all.begin(), all.end(), [&](const app::Language& l) { return now == l.tag; });
+        if (ImGui::BeginCombo(tr("language"), shown == all.end() ? now.c_str() : shown->name)) {
+          for (const app::Language& l : all)
+            if (ImGui::Selectable(l.name, now == l.tag) && now != l.tag) requests.language = l.tag;
+          ImGui::EndCombo();
+        }
       }
     }
     ImGui::PopItemWidth();
@@ -705,9 +717,9 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
       ImGui::SetNextWindowPos(ImVec2(0.5f * width, 0.30f * height), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowSize(ImVec2(lesson ? 0.0f : 560.0f * s, 0.0f));
     ImGui::PushStyleColor(ImGuiCol_WindowBg, ImVec4(0.35f, 0.05f, 0.05f, 0.95f));
-    ImGui::Begin("Diverged", nullptr, kPanel | ImGuiWindowFlags_AlwaysAutoResize);
-    ImGui::Text(trouble->unstable ? "The simulation went numerically unstable at t = %.4g s"
-                                  : "The simulation diverged at t = %.4g s",
+    ImGui::Begin((tr("Diverged") + std::string("###diverged")).c_str(), nullptr, kPanel | ImGuiWindowFlags_AlwaysAutoResize);
+    ImGui::Text(trouble->unstable ? tr("The simulation went numerically unstable at t = %.4g s")
+                                  : tr("The simulation diverged at t = %.4g s"),
                 trouble->t);
     if (lesson) {
       if (ImGui::IsItemHovered()) {
@@ -719,7 +731,7 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
     } else {
       text_wrapped(trouble->message());  // the limit once analysed
     }
-    if (ImGui::Button("Reset (R)")) session.reset();
+    if (ImGui::Button(tr("Reset (R)"))) session.reset();
     ImGui::End();
     ImGui::PopStyleColor();
   }
@@ -727,35 +739,35 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
   if (!ui.message.empty()) {
     ImGui::SetNextWindowPos(ImVec2(0.5f * width, 0.12f * height), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowSize(ImVec2(600.0f * s, 0.0f));
-    ImGui::Begin("Message", nullptr, kPanel | ImGuiWindowFlags_AlwaysAutoResize);
+    ImGui::Begin((tr("Message") + std::string("###message")).c_str(), nullptr, kPanel | ImGuiWindowFlags_AlwaysAutoResize);
     text_wrapped(ui.message, kNear, 600.0f * s - 2.0f * ImGui::GetStyle().WindowPadding.x);
-    if (ImGui::Button("OK")) ui.message.clear();
+    if (ImGui::Button(tr("OK"))) ui.message.clear();
     ImGui::End();
   }
 
   if (ui.help) {
     ImGui::SetNextWindowPos(ImVec2(0.5f * width, 0.5f * height), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    ImGui::Begin("Keys", &ui.help, kPanel | ImGuiWindowFlags_AlwaysAutoResize);
-    const char* keys[][2] = {{"space", "pause or resume"}, {"S", "one step"}, {"R", "reset"},
-                             {"1 - 9", "choose a method"}, {"C", "compare mode on or off"},
-                             {"H", "hide or show the panels"}, {"A", "accuracy against cost: chart every method"},
-                             {"G", "the stability region, with the scene's modes"},
-                             {"Y", "your method: type a Butcher tableau, run it beside"},
-                             {"M", "show the mode that limits the step"},
-                             {"P", "presentation mode: larger, for a projector"},
-                             {"\u2192  PgDn  N", "lesson: the next step"},
-                             {"\u2190  PgUp  B", "lesson: the step before"},
-                             {"F1", "this help"},
-                             {"left drag", "move a particle (release lets it go with its speed)"},
-                             {"right drag", "orbit the camera (3D) / pan (2D)"},
-                             {"middle drag", "pan"}, {"wheel", "zoom"}, {"Esc", "quit"}};
+    ImGui::Begin((tr("Keys") + std::string("###keys")).c_str(), &ui.help, kPanel | ImGuiWindowFlags_AlwaysAutoResize);
+    const char* keys[][2] = {{N_("space"), N_("pause or resume")}, {N_("S"), N_("one step")}, {N_("R"), N_("reset")},
+                             {N_("1 - 9"), N_("choose a method")}, {N_("C"), N_("compare mode on or off")},
+                             {N_("H"), N_("hide or show the panels")}, {N_("A"), N_("accuracy against cost: chart every method")},
+                             {N_("G"), N_("the stability region, with the scene's modes")},
+                             {N_("Y"), N_("your method: type a Butcher tableau, run it beside")},
+                             {N_("M"), N_("show the mode that limits the step")},
+                             {N_("P"), N_("presentation mode: larger, for a projector")},
+                             {N_("\u2192  PgDn  N"), N_("lesson: the next step")},
+                             {N_("\u2190  PgUp  B"), N_("lesson: the step before")},
+                             {N_("F1"), N_("this help")},
+                             {N_("left drag"), N_("move a particle (release lets it go with its speed)")},
+                             {N_("right drag"), N_("orbit the camera (3D) / pan (2D)")},
+                             {N_("middle drag"), N_("pan")}, {N_("wheel"), N_("zoom")}, {N_("Esc"), N_("quit")}};
     if (ImGui::BeginTable("keys", 2)) {
       for (const auto& k : keys) {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
-        ImGui::TextColored(kNeutral, "%s", k[0]);
+        ImGui::TextColored(kNeutral, "%s", tr(k[0]));
         ImGui::TableNextColumn();
-        ImGui::TextUnformatted(k[1]);
+        ImGui::TextUnformatted(tr(k[1]));
       }
       ImGui::EndTable();
     }

@@ -75,6 +75,7 @@ struct UiState {
 struct Requests {
   std::optional<std::string> load;  // a scene name or file to open
   std::optional<std::string> lesson;  // a lesson to start ("" ends the one taught)
+  std::optional<std::string> language;  // a language to speak from the next frame ("zh-CN", "en")
   bool quit = false;
 };
 

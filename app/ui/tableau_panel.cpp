@@ -11,6 +11,7 @@
 #include "springlab/error.hpp"
 #include "ui/text_wrap.hpp"
 #include "util/data_dir.hpp"
+#include "springlab/text.hpp"
 
 namespace springlab::ui {
 
@@ -90,7 +91,7 @@ void TableauPanel::check() {
 std::string run_beside(const ButcherTableau& tableau, app::Session& session) {
   std::string why;
   for (int k = 1; k <= 32; ++k) {
-    const std::string name = k == 1 ? "mine" : "mine-" + std::to_string(k);
+    const std::string name = k == 1 ? "mine" : "mine-" + std::to_string(k);  // not shown: a method's name
     try {
       const Method m = add_tableau_method(tableau, name);
       std::vector<Method> lanes;
@@ -103,7 +104,7 @@ std::string run_beside(const ButcherTableau& tableau, app::Session& session) {
         lanes.push_back(m);
       }
       session.set_compare(lanes);
-      return "running as '" + name + "' beside the other lanes";
+      return format_text(tr("running as '%s' beside the other lanes"), name.c_str());
     } catch (const InputError& e) {
       why = e.what();  // the name is another tableau's (a row is never replaced): the next one
     }
@@ -118,13 +119,13 @@ void draw_tableau_panel(TableauPanel& panel, app::Session& session, const std::v
   ImGui::SetNextWindowPos(ImVec2(380.0f * scale, 20.0f * scale), ImGuiCond_Appearing);
   ImGui::SetNextWindowSize(ImVec2(560.0f * scale, 430.0f * scale), ImGuiCond_Appearing);
   ImGui::SetNextWindowBgAlpha(0.97f);
-  if (!ImGui::Begin("Your method (Y)", &panel.open, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
+  if (!ImGui::Begin((tr("Your method (Y)") + std::string("###tableau")).c_str(), &panel.open, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
     ImGui::End();
     return;
   }
   // Start from a shipped tableau.
   ImGui::SetNextItemWidth(170.0f * scale);
-  if (ImGui::BeginCombo("start from", panel.name.c_str())) {
+  if (ImGui::BeginCombo(tr("start from"), panel.name.c_str())) {
     for (const std::string& n : shipped)
       if (ImGui::Selectable(n.c_str())) {
         try {
@@ -137,7 +138,7 @@ void draw_tableau_panel(TableauPanel& panel, app::Session& session, const std::v
   }
   ImGui::SameLine();
   ImGui::SetNextItemWidth(90.0f * scale);
-  if (ImGui::InputInt("stages", &panel.stages)) {
+  if (ImGui::InputInt(tr("stages"), &panel.stages)) {
     panel.stages = std::clamp(panel.stages, 1, TableauPanel::kMaxStages);
     panel.dirty = true;
   }
@@ -171,7 +172,7 @@ void draw_tableau_panel(TableauPanel& panel, app::Session& session, const std::v
     }
     ImGui::EndTable();
   }
-  ImGui::TextDisabled("entries: 1/6, -2, 0.25; the diagonal makes a stage implicit");
+  ImGui::TextDisabled(tr("entries: 1/6, -2, 0.25; the diagonal makes a stage implicit"));
   ImGui::Separator();
 
   // What the cells make, at once.
@@ -180,30 +181,32 @@ void draw_tableau_panel(TableauPanel& panel, app::Session& session, const std::v
     text_wrapped(panel.error, ImVec4(1.0f, 0.45f, 0.40f, 1.0f), wrap);
   } else if (panel.analysis && panel.tableau) {
     const TableauAnalysis& a = *panel.analysis;
-    std::string order = "order " + std::to_string(a.order) + (a.order == TableauAnalysis::kMaxOrder ? " or more" : "") +
-                        ", exactly (" + std::to_string(a.conditions) + " conditions checked)";
-    if (a.order_to_rounding > a.order) order += "; " + std::to_string(a.order_to_rounding) + " to rounding";
-    text_wrapped(std::string(panel.tableau->is_explicit() ? "explicit, " : "diagonally implicit, ") + order, {}, wrap);
+    std::string order = format_text(a.order == TableauAnalysis::kMaxOrder
+                                        ? tr("order %d or more, exactly (%d conditions checked)")
+                                        : tr("order %d, exactly (%d conditions checked)"),
+                                    a.order, a.conditions);
+    if (a.order_to_rounding > a.order) order += format_text(tr("; %d to rounding"), a.order_to_rounding);
+    text_wrapped((panel.tableau->is_explicit() ? tr("explicit, ") : tr("diagonally implicit, ")) + order, {}, wrap);
     if (a.first_failure) {
       const OrderCondition& f = *a.first_failure;
-      text_wrapped("fails at order " + std::to_string(f.order) + ", tree " + f.tree + ": " + f.formula + " = " + f.rhs +
-                       ", but this tableau gives " + f.lhs,
+      text_wrapped(format_text(tr("fails at order %d, tree %s: %s = %s, but this tableau gives %s"), f.order,
+                               f.tree.c_str(), f.formula.c_str(), f.rhs.c_str(), f.lhs.c_str()),
                    {}, wrap);
     }
     text_wrapped("R(z) = " + stability_function_text(a), {}, wrap);
-    const std::string real = std::isinf(a.real_limit) ? "the whole negative real axis"
-                             : a.real_limit == 0.0   ? "no part of the negative real axis"
+    const std::string real = std::isinf(a.real_limit) ? tr("the whole negative real axis")
+                             : a.real_limit == 0.0   ? tr("no part of the negative real axis")
                                                      : "[-" + axis_limit_text(a.real_limit, 4) + ", 0]";
-    const std::string imaginary = std::isinf(a.imaginary_limit) ? "the whole imaginary axis"
-                                  : a.imaginary_limit == 0.0    ? "the imaginary axis only at 0"
+    const std::string imaginary = std::isinf(a.imaginary_limit) ? tr("the whole imaginary axis")
+                                  : a.imaginary_limit == 0.0    ? tr("the imaginary axis only at 0")
                                                                 : "[-" + axis_limit_text(a.imaginary_limit, 4) + "i, " +
                                                                       axis_limit_text(a.imaginary_limit, 4) + "i]";
-    text_wrapped("|R| <= 1 on " + real + ", and on " + imaginary, {}, wrap);
+    text_wrapped(format_text(tr("|R| <= 1 on %s, and on %s"), real.c_str(), imaginary.c_str()), {}, wrap);
     for (const std::string& w : a.warnings) ImGui::TextDisabled("%s", w.c_str());
   }
 
   ImGui::BeginDisabled(!panel.tableau);
-  if (ImGui::Button("Run beside") && panel.tableau) panel.run_message = run_beside(*panel.tableau, session);
+  if (ImGui::Button(tr("Run beside")) && panel.tableau) panel.run_message = run_beside(*panel.tableau, session);
   ImGui::EndDisabled();
   if (!panel.run_message.empty()) {
     ImGui::SameLine();

@@ -4,15 +4,44 @@
 
 #include <cmath>
 #include <filesystem>
+#include <string>
+#include <vector>
 
+#include "springlab/text.hpp"
 #include "ui/panels.hpp"
+#include "util/language.hpp"
 
 namespace springlab::ui {
+
+namespace {
+
+// The glyphs a translation needs beyond DejaVu's: every character from U+2E80 on (CJK punctuation,
+// ideographs, full-width forms) in the current catalog's strings, as ImGui's ranges (pairs, 0
+// ended). scripts/i18n/cjk_font.py keeps exactly these in the font, by the same rule.
+const ImWchar* translation_glyphs() {
+  static std::vector<ImWchar> ranges;
+  ranges.clear();
+  const Catalog* catalog = current_catalog();
+  if (!catalog) return nullptr;
+  ImFontGlyphRangesBuilder builder;
+  for (const auto& [english, translated] : catalog->entries) builder.AddText(translated.c_str());
+  ImVector<ImWchar> all;
+  builder.BuildRanges(&all);
+  for (int k = 0; k + 1 < all.Size; k += 2) {
+    const ImWchar from = std::max<ImWchar>(all[k], 0x2E80), to = all[k + 1];
+    if (from <= to) ranges.insert(ranges.end(), {from, to});
+  }
+  if (ranges.empty()) return nullptr;
+  ranges.push_back(0);
+  return ranges.data();
+}
+
+}  // namespace
 
 void apply_theme(float scale) {
   ImGuiIO& io = ImGui::GetIO();
   io.Fonts->Clear();
-  const char* font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+  const char* font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";  // not shown
   std::error_code ec;
   // Three sizes: the panels', presentation mode's (kPresentationScale larger) and the lesson
   // captions' (kCaptionScale), each drawn at its own size rather than stretched, so that it stays
@@ -20,12 +49,23 @@ void apply_theme(float scale) {
   // and math operators (core/src/loading/lesson.cpp lets a caption use exactly these).
   static const ImWchar glyphs[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x205E, 0x2070, 0x209F,
                                    0x2190, 0x21FF, 0x2200, 0x22FF, 0};
+  // In another language, its characters from the CJK font merged into each size (drawn at 1x: a
+  // CJK glyph's strokes need no oversampling to stay sharp, and 2x would quadruple the atlas).
+  const ImWchar* translated = translation_glyphs();
+  const std::string cjk = translated ? app::cjk_font_path() : std::string();
   for (const float size : {1.0f, kPresentationScale, kCaptionScale}) {
     if (std::filesystem::exists(font, ec)) {
       ImFontConfig config;
       config.OversampleH = 2;
       config.OversampleV = 2;
       io.Fonts->AddFontFromFileTTF(font, kFontSize * scale * size, &config, glyphs);
+      if (!cjk.empty()) {
+        ImFontConfig merge;
+        merge.MergeMode = true;
+        merge.OversampleH = merge.OversampleV = 1;
+        merge.PixelSnapH = true;
+        io.Fonts->AddFontFromFileTTF(cjk.c_str(), kFontSize * scale * size, &merge, translated);
+      }
     } else {
       ImFontConfig config;
       config.SizePixels = std::round(13.0f * scale * size);  // ProggyClean at a whole size stays crisp enough

@@ -16,6 +16,14 @@ EM_JS(char*, js_location_fragment, (), {
   return p;
 });
 
+EM_JS(char*, js_browser_language, (), {
+  const text = navigator.language || "en";
+  const size = lengthBytesUTF8(text) + 1;
+  const p = _malloc(size);
+  stringToUTF8(text, p, size);
+  return p;
+});
+
 EM_JS(char*, js_page_address, (), {
   const text = window.location.origin + window.location.pathname;
   const size = lengthBytesUTF8(text) + 1;
@@ -62,6 +70,7 @@ namespace springlab::app::web {
 
 std::string location_fragment() { return taken(js_location_fragment()); }
 std::string page_address() { return taken(js_page_address()); }
+std::string browser_language() { return taken(js_browser_language()); }
 void copy_to_clipboard(const std::string& text) { js_copy_to_clipboard(text.c_str()); }
 void choose_scene_file() { js_choose_scene_file(); }
 void first_frame_shown() { js_first_frame_shown(); }

@@ -8,6 +8,7 @@ namespace springlab::app::web {
 
 std::string location_fragment();  // "#scene=rope&..." or ""
 std::string page_address();       // the page's address without its fragment
+std::string browser_language();   // navigator.language: "zh-CN", "en-GB", ...
 void copy_to_clipboard(const std::string& text);
 void choose_scene_file();  // opens the page's file picker; the file comes back through springlab_open_scene_text
 void first_frame_shown();  // the page hides its progress line

@@ -13,7 +13,9 @@
 #include "springlab/butcher.hpp"
 #include "springlab/error.hpp"
 #include "lesson/lesson_library.hpp"
+#include "springlab/text.hpp"
 #include "util/data_dir.hpp"
+#include "util/language.hpp"
 
 namespace springlab::app::web {
 
@@ -137,6 +139,7 @@ AppSettings settings_from_link(const std::string& fragment) {
       if (value != "0" && value != "1") throw InputError("link: accuracy: must be 1 (open the Compare panel and start its sweep) or 0, got '" + value + "'");
       s.accuracy = value == "1";
     }
+    else if (key == "lang") s.language = check_language(value, "link: lang");
     else if (key == "ui-scale") {
       s.ui_scale = number(key, value);
       check_option("link: ui-scale", s.ui_scale, 0.5, 4.0, false);
@@ -168,11 +171,16 @@ Opened open_settings(const AppSettings& settings) {
   }
 }
 
+namespace {
+// The language spoken, unless English (a link without one opens in its reader's language).
+std::string language_part() { return current_language() == "en" ? "" : "&lang=" + current_language(); }
+}  // namespace
+
 std::string link_of(const InteractiveApp& app, const std::vector<std::string>& sets, double ui_scale) {
   // In a lesson (the class has not taken over): the lesson at its step.
   if (app.lesson() && !app.interrupted())
     return "lesson=" + percent_encoded(app.lesson()->name) + "&step=" + std::to_string(app.step() + 1) +
-           (std::abs(ui_scale - 1.0) > 1e-12 ? "&ui-scale=" + shortest(ui_scale) : "");
+           (std::abs(ui_scale - 1.0) > 1e-12 ? "&ui-scale=" + shortest(ui_scale) : "") + language_part();
   const Session& session = app.session();
   const Lane& lane = session.primary();
   std::string link = "scene=" + percent_encoded(app.scene_name());
@@ -230,7 +238,7 @@ std::string link_of(const InteractiveApp& app, const std::vector<std::string>& s
   if (step.iterations > 0) link += "&iterations=" + std::to_string(step.iterations);
   if (step.chebyshev_rho > 0.0) link += "&rho=" + shortest(step.chebyshev_rho);
   if (differs(ui_scale, 1.0)) link += "&ui-scale=" + shortest(ui_scale);
-  return link;
+  return link + language_part();
 }
 
 }  // namespace springlab::app::web

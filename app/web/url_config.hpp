@@ -34,6 +34,6 @@ Opened open_settings(const AppSettings& settings);
 std::string link_of(const InteractiveApp& app, const std::vector<std::string>& sets, double ui_scale);
 
 // The names a link takes, for messages.
-inline constexpr const char* kLinkParameters = "scene, method, tableau, dt, substeps, ks, kd, iterations, rho, compare, script, set, accuracy, region, lesson, step, ui-scale";
+inline constexpr const char* kLinkParameters = "scene, method, tableau, dt, substeps, ks, kd, iterations, rho, compare, script, set, accuracy, region, lesson, step, ui-scale, lang";
 
 }  // namespace springlab::app::web

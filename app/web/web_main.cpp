@@ -32,6 +32,8 @@
 #include "ui/theme.hpp"
 #include "web/browser.hpp"
 #include "web/url_config.hpp"
+#include "springlab/text.hpp"
+#include "util/language.hpp"
 
 namespace springlab::app::web {
 
@@ -83,7 +85,7 @@ void fit_canvas(Page& page) {
 // The browser's own controls, under the panel's scene picker: share the link of what is shown,
 // open a scene file, and the UI scale (the desktop's --ui-scale, which a link's ui-scale sets too).
 void browser_controls(Page& page) {
-  const bool copy = ImGui::Button("Copy link");
+  const bool copy = ImGui::Button(tr("Copy link"));
   page.copy_button = {ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
                       ImGui::GetItemRectSize().y};
   if (copy) {
@@ -92,16 +94,16 @@ void browser_controls(Page& page) {
     set_page_link(page.link);
   }
   ImGui::SameLine();
-  if (ImGui::Button("Open file...")) choose_scene_file();
+  if (ImGui::Button(tr("Open file..."))) choose_scene_file();
   ImGui::SameLine();
   static constexpr double kScales[] = {0.75, 1.0, 1.25, 1.5, 2.0, 2.5, 3.0};
   char current[16];
-  std::snprintf(current, sizeof current, "UI %g", page.ui_scale);
-  ImGui::SetNextItemWidth(ImGui::CalcTextSize("UI 1.25").x + ImGui::GetFrameHeight() * 1.6f);
+  std::snprintf(current, sizeof current, tr("UI %g"), page.ui_scale);
+  ImGui::SetNextItemWidth(ImGui::CalcTextSize(tr("UI 1.25")).x + ImGui::GetFrameHeight() * 1.6f);
   if (ImGui::BeginCombo("##ui-scale", current)) {
     for (double s : kScales) {
       char item[16];
-      std::snprintf(item, sizeof item, "UI %g", s);
+      std::snprintf(item, sizeof item, tr("UI %g"), s);
       if (ImGui::Selectable(item, s == page.ui_scale)) page.next_ui_scale = s;  // (the fonts are in use now)
     }
     ImGui::EndCombo();
@@ -120,6 +122,7 @@ void frame() {
   if (!page.pacer.take()) return;
   fit_canvas(page);
   if (page.next_ui_scale) set_ui_scale(page, *std::exchange(page.next_ui_scale, std::nullopt));
+  if (page.app->apply_language()) ImGui_ImplOpenGL3_DestroyDeviceObjects();  // the font texture, remade
   FrameSize size;
   glfwGetFramebufferSize(page.window, &size.fb_width, &size.fb_height);
   glfwGetWindowSize(page.window, &size.win_width, &size.win_height);
@@ -152,6 +155,12 @@ std::unique_ptr<InteractiveApp> app_for_link(Page& page) {
   page.sets = settings.sim.sets;
   page.pixel_ratio = std::clamp(emscripten_get_device_pixel_ratio(), 0.5, 4.0);
   const float scale = static_cast<float>(page.ui_scale * page.pixel_ratio);
+  // The link's language, else the browser's (before the fonts: they carry its glyphs).
+  try {
+    use_language(settings.language.empty() ? browser_language() : settings.language);
+  } catch (const std::exception& e) {
+    if (problem.empty()) problem = e.what();
+  }
   ui::apply_theme(scale);
   // No multisampling: SwiftShader and many laptops' GPUs draw it slowly, and the lines and
   // spheres are drawn with their own smooth edges.

@@ -1,3 +1,4 @@
+#include "util/language.hpp"
 #include "window/window_app.hpp"
 
 // GL through epoxy first, then GLFW without its own GL header.
@@ -78,6 +79,17 @@ int run_window(const AppSettings& settings, const WindowOptions& o) {
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = nullptr;  // no imgui.ini in the user's folder
   io.LogFilename = nullptr;
+  // The language before the fonts (they carry its glyphs): --lang, or the environment's, which
+  // falls back to English where it cannot be spoken.
+  if (!settings.language.empty()) {
+    use_language(settings.language);
+  } else {
+    try {
+      use_language(environment_language());
+    } catch (const InputError& e) {
+      std::fprintf(stderr, "springlab: %s; speaking English\n", e.what());
+    }
+  }
   ui::apply_theme(scale);
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 330 core");
@@ -121,6 +133,7 @@ int run_window(const AppSettings& settings, const WindowOptions& o) {
       shown_w = size.fb_width;
       shown_h = size.fb_height;
 
+      if (app.apply_language()) ImGui_ImplOpenGL3_DestroyDeviceObjects();  // its font texture, remade
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
       app.frame(size);

@@ -27,7 +27,7 @@ struct Fonts {
   // Lines `text` takes in `font` wrapped at `width` pixels, as the band wraps it.
   static int lines(int font, const std::string& text, float width) {
     ImFont* f = ImGui::GetIO().Fonts->Fonts[font];
-    const std::string wrapped = ui::wrap_at_spaces(text, f, f->FontSize, width);
+    const std::string wrapped = ui::wrap_text(text, f, f->FontSize, width);
     for (std::size_t a = 0, b = 0; a <= wrapped.size(); a = b + 1) {  // and each line fits
       b = std::min(wrapped.find('\n', a), wrapped.size());
       const float w = f->CalcTextSizeA(f->FontSize, FLT_MAX, 0.0f, wrapped.data() + a, wrapped.data() + b).x;
@@ -45,7 +45,7 @@ TEST(LessonBand, WrapsOnlyAtSpacesAndAsLateAsItCan) {
   const auto width = [&](const std::string& s) { return f->CalcTextSizeA(f->FontSize, FLT_MAX, 0.0f, s.c_str()).x; };
   const std::string text = "its energy by 1 / (1 + (h\u03c9)\u00b2) = 0.973. Stable, but not true.";
   for (float w = width("(h\u03c9)\u00b2)"); w < width(text) + 10.0f; w += 7.0f) {
-    const std::string wrapped = ui::wrap_at_spaces(text, f, f->FontSize, w);
+    const std::string wrapped = ui::wrap_text(text, f, f->FontSize, w);
     std::string joined = wrapped;
     std::replace(joined.begin(), joined.end(), '\n', ' ');
     ASSERT_EQ(joined, text) << w;  // only spaces became breaks
@@ -56,7 +56,7 @@ TEST(LessonBand, WrapsOnlyAtSpacesAndAsLateAsItCan) {
       EXPECT_GT(width(wrapped.substr(a, b - a) + " " + wrapped.substr(b + 1, next - b - 1)), w) << wrapped;
     }
   }
-  EXPECT_EQ(ui::wrap_at_spaces("one\ntwo", f, f->FontSize, 1000.0f), "one\ntwo");
+  EXPECT_EQ(ui::wrap_text("one\ntwo", f, f->FontSize, 1000.0f), "one\ntwo");
 }
 
 TEST(LessonBand, EveryShippedLessonsTextFitsAt1280x720) {

@@ -1,4 +1,5 @@
 #include "springlab/ik.hpp"
+#include "springlab/text.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -17,9 +18,9 @@ constexpr double kTwoPi = 2.0 * kPi;
 constexpr double kNoDirection = 1e-12;
 
 const IkSolverInfo kSolvers[] = {
-    {IkSolver::CCD, "ccd", "Cyclic coord. descent"},
-    {IkSolver::FABRIK, "fabrik", "FABRIK"},
-    {IkSolver::DLS, "dls", "Damped least squares"},
+    {IkSolver::CCD, "ccd", N_("Cyclic coord. descent")},
+    {IkSolver::FABRIK, "fabrik", N_("FABRIK")},
+    {IkSolver::DLS, "dls", N_("Damped least squares")},
 };
 
 Eigen::Vector2d direction(double phi) { return {std::cos(phi), std::sin(phi)}; }

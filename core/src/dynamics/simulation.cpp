@@ -1,4 +1,5 @@
 #include "springlab/simulation.hpp"
+#include "springlab/text.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -32,12 +33,6 @@ void put_springs(Model& m, SpringArrays&& s) {
   m.spans = std::move(s.spans);
 }
 
-std::string format(double value) {
-  std::ostringstream s;
-  s.precision(4);
-  s << value;
-  return s.str();
-}
 }  // namespace
 
 std::string describe_limit(const StabilityLimit& limit) { return describe(limit); }
@@ -54,21 +49,23 @@ SimulationSettings settings_for(const Scene& scene) {
 }
 
 std::string Divergence::message() const {
-  std::ostringstream s;
-  s << (unstable ? "went numerically unstable during step " : "diverged during step ") << step
-    << " (last good state at t = " << format(t) << " s): " << reason << ". Method "
-    << method_info(method).name << ", h = " << format(h) << " s";
+  // (Each piece through tr(): the app shows this in its language; the command line in English.)
+  std::string s = format_text(unstable ? tr("went numerically unstable during step %lld (last good state at t = %.4g s): "
+                                            "%s. Method %s, h = %.4g s")
+                                       : tr("diverged during step %lld (last good state at t = %.4g s): %s. Method %s, "
+                                            "h = %.4g s"),
+                              static_cast<long long>(step), t, reason.c_str(), method_info(method).name, h);
   if (analysed)
-    s << ", h w_max = " << format(h * w_max) << " (w_max = " << format(w_max) << " rad/s); limit: " << describe(limit);
+    s += format_text(tr(", h w_max = %.4g (w_max = %.4g rad/s); limit: %s"), h * w_max, w_max, describe(limit).c_str());
   if (analysed && limit.mode && std::isfinite(limit.h) && limit.h > 0.0)
-    s << ", set by a mode of " << format(limit.mode->w) << " rad/s with damping ratio "
-      << format(limit.mode->damping_ratio());
+    s += format_text(tr(", set by a mode of %.4g rad/s with damping ratio %.4g"), limit.mode->w,
+                     limit.mode->damping_ratio());
   if (analysed && limit.h == 0.0)
-    s << ". No step is small enough: try a method stable without damping (symplectic-euler, verlet, rk4, "
-         "implicit-euler), or more damping.";
+    s += tr(". No step is small enough: try a method stable without damping (symplectic-euler, verlet, rk4, "
+            "implicit-euler), or more damping.");
   else
-    s << ". Try a smaller --dt, more --substeps, or a more stable --method (implicit-euler).";
-  return s.str();
+    s += tr(". Try a smaller --dt, more --substeps, or a more stable --method (implicit-euler).");
+  return s;
 }
 
 Simulation::Simulation(Model model, State initial, SimulationSettings settings)
@@ -162,17 +159,17 @@ void Simulation::audit(double total) {
   const EnergyAudit::Allowance& allowance = audit_allowance();
   const std::optional<EnergyAudit::Finding> found = audit_.decide(allowance, floor);
   if (!found) return;
-  std::ostringstream reason;
-  reason << "the energy (less the work done on the scene) rose by " << format(found->rise) << " J in "
-         << format(current_.t - found->low_t) << " s from its low at t = " << format(found->low_t)
-         << " s, where no stable step raises it by more than " << format(found->allowed) << " J (";
+  std::string reason = format_text(tr("the energy (less the work done on the scene) rose by %.4g J in %.4g s from its "
+                                      "low at t = %.4g s, where no stable step raises it by more than %.4g J ("),
+                                   found->rise, current_.t - found->low_t, found->low_t, found->allowed);
   if (found->growth > 1.0)
-    reason << "its stable modes' energy grows at most x" << format(found->growth) << " at this step: twice "
-           << format(found->growth - 1.0) << " of the " << format(found->motion) << " J of motion there, plus ";
+    reason += format_text(tr("its stable modes' energy grows at most x%.4g at this step: twice %.4g of the %.4g J of "
+                             "motion there, plus "),
+                          found->growth, found->growth - 1.0, found->motion);
   else
-    reason << "no stable mode's energy can grow at this step; only rounding, ";
-  reason << settings_.audit_fraction << " of the scene's energy scale of " << format(energy_scale_) << " J)";
-  Divergence d = report(reason.str());
+    reason += tr("no stable mode's energy can grow at this step; only rounding, ");
+  reason += format_text(tr("%g of the scene's energy scale of %.4g J)"), settings_.audit_fraction, energy_scale_);
+  Divergence d = report(reason);
   d.unstable = true;
   d.audit = *found;
   explain(d);  // the analysis is there: it gave the allowance
@@ -205,17 +202,15 @@ bool Simulation::step() {
     const StepProbe check = ws_.step_probe ? *ws_.step_probe : probe(model_, next_);
     if (!check.finite) {
       ++steps_;
-      diverge("a position or velocity became infinite or NaN");
+      diverge(tr("a position or velocity became infinite or NaN"));
       return false;
     }
     const double kinetic = check.kinetic;
     if (!(kinetic <= kDivergenceFactor * energy_scale_)) {
       ++steps_;
       std::swap(current_, next_);  // still finite: kept, as the state where it was caught
-      std::ostringstream reason;
-      reason << "the kinetic energy reached " << format(kinetic) << " J, more than 1e6 times the "
-             << "scene's energy scale (" << format(energy_scale_) << " J)";
-      diverge(reason.str());
+      diverge(format_text(tr("the kinetic energy reached %.4g J, more than 1e6 times the scene's energy scale (%.4g J)"),
+                          kinetic, energy_scale_));
       return false;
     }
     // Time as a multiple of h since h last changed: no drift from adding h over and over.
@@ -266,10 +261,8 @@ bool Simulation::step() {
   if (settings_.energy_check_interval > 0 && steps_ % interval == 0) {
     const double total = energy().total();
     if (!(std::abs(total) <= kDivergenceFactor * energy_scale_)) {
-      std::ostringstream reason;
-      reason << "the total energy reached " << format(total) << " J, more than 1e6 times the "
-             << "scene's energy scale (" << format(energy_scale_) << " J)";
-      diverge(reason.str());
+      diverge(format_text(tr("the total energy reached %.4g J, more than 1e6 times the scene's energy scale (%.4g J)"),
+                          total, energy_scale_));
       return false;
     }
     if (audit) {

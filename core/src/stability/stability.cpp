@@ -5,6 +5,7 @@
 //   the analysis                  all of it, for every method
 #include "springlab/iterative_cost.hpp"
 #include "springlab/stability.hpp"
+#include "springlab/text.hpp"
 
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
@@ -263,15 +264,11 @@ Eigen::VectorXd dense_eigenvector(const Eigen::MatrixXd& K, const Eigen::MatrixX
 double LimitingMode::damping_ratio() const { return w > 0.0 ? c / (2.0 * w) : kInf; }
 
 std::string describe(const StabilityLimit& limit) {
-  std::ostringstream s;
-  s.precision(4);
-  if (std::isnan(limit.h)) return "the method chooses its own step sizes";
-  if (std::isinf(limit.h)) return "stable at any step";
-  if (limit.h == 0.0) {
-    return method_info(limit.method).damping_helps() ? "unstable at any step (not enough damping)" : "unstable at any step";
-  }
-  s << (limit.exact ? "stable up to h = " : "stable at least up to h = ") << limit.h << " s";
-  return s.str();
+  if (std::isnan(limit.h)) return tr("the method chooses its own step sizes");
+  if (std::isinf(limit.h)) return tr("stable at any step");
+  if (limit.h == 0.0)
+    return tr(method_info(limit.method).damping_helps() ? "unstable at any step (not enough damping)" : "unstable at any step");
+  return format_text(limit.exact ? tr("stable up to h = %.4g s") : tr("stable at least up to h = %.4g s"), limit.h);
 }
 
 StabilityAnalysis::StabilityAnalysis(const Model& model, const State& state, int dense_dofs,
@@ -304,9 +301,10 @@ void StabilityAnalysis::analyse(const Model& model, const State& state, int dens
 
   // No oscillating modes: only the drag's first-order decays, lambda = -k_drag / m.
   if (dofs_ == 0 || !(lin.stiffness_bound() > 0.0)) {
-    no_modes_ = model.spring_count() == 0 ? "no springs"
-                : dofs_ == 0                ? "every particle is pinned"
-                                            : "no spring with stiffness holds a free particle";
+    // (English: the app shows them through tr().)
+    no_modes_ = model.spring_count() == 0 ? N_("no springs")
+                : dofs_ == 0                ? N_("every particle is pinned")
+                                            : N_("no spring with stiffness holds a free particle");
     const double decay = lin.damping_bound();
     for (StabilityLimit& limit : limits_)
       if (!method_info(limit.method).adaptive() && !method_info(limit.method).any_step())

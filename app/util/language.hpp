@@ -1,0 +1,36 @@
+// The language the app speaks (springlab/text.hpp): its catalogs are assets/locale/<tag>.po, read
+// once and kept; chosen by --lang or the environment on the desktop, by the page's language or a
+// link's lang= in the browser, and switched live from the View panel.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace springlab::app {
+
+struct Language {
+  const char* tag;   // "zh-CN": the link's lang=, --lang, the catalog's file name
+  const char* name;  // in its own language, for the menu: "简体中文"
+};
+// English first (no catalog: the code's own strings), then each shipped translation.
+const std::vector<Language>& languages();
+
+// Makes `tag` (any form the environment uses: "zh_CN.UTF-8", "zh-Hans", "en-GB") the language
+// tr() translates to, loading its catalog the first time; returns the tag used ("zh-CN" or "en").
+// A catalog that cannot be read or parsed throws InputError naming the file and line.
+std::string use_language(const std::string& tag);
+
+// A language named on the command line or in a link (`what`: "--lang"), as used: "en" or "zh-CN".
+// Throws InputError for a language springlab has no translation for.
+std::string check_language(const std::string& tag, const std::string& what);
+
+// The desktop's language from the environment, as gettext reads it: LANGUAGE (its first entry),
+// then LC_ALL, LC_MESSAGES, LANG; "en" when none is set.
+std::string environment_language();
+
+// The CJK font's file (the subset of Noto Sans CJK SC the build makes for the translations'
+// characters), or "" where there is none: $SPRINGLAB_CJK_FONT, then the build tree's, then the
+// data folder's fonts/.
+std::string cjk_font_path();
+
+}  // namespace springlab::app

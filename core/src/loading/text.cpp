@@ -1,0 +1,186 @@
+// gettext PO files (springlab/text.hpp), the small subset springlab's catalogs use and
+// translators' tools write: comments and flags, msgctxt, msgid, msgid_plural, msgstr and
+// msgstr[n] (the first form is kept), strings continued over several lines, C escapes.
+#include "springlab/text.hpp"
+
+#include <atomic>
+#include <cctype>
+#include <cstdarg>
+#include <cstdio>
+#include <sstream>
+
+#include "springlab/error.hpp"
+
+namespace springlab {
+
+namespace {
+
+std::atomic<const Catalog*> g_catalog{nullptr};
+
+struct Reader {
+  const std::string& origin;
+  int line = 0;
+  [[noreturn]] void fail(const std::string& what) const {
+    throw InputError(origin + ":" + std::to_string(line) + ": " + what);
+  }
+  // The string after a keyword: "..." with C escapes.
+  std::string quoted(const std::string& text, std::size_t from) const {
+    while (from < text.size() && std::isspace(static_cast<unsigned char>(text[from]))) ++from;
+    if (from >= text.size() || text[from] != '"') fail("expected a quoted string");
+    std::string out;
+    std::size_t i = from + 1;
+    for (; i < text.size() && text[i] != '"'; ++i) {
+      if (text[i] != '\\') {
+        out += text[i];
+        continue;
+      }
+      if (++i >= text.size()) fail("a backslash ends the line");
+      switch (text[i]) {
+        case 'n': out += '\n'; break;
+        case 't': out += '\t'; break;
+        case 'r': out += '\r'; break;
+        case '"': out += '"'; break;
+        case '\\': out += '\\'; break;
+        default: fail(std::string("unknown escape \\") + text[i] + " (use \\n, \\t, \\\" or \\\\)");
+      }
+    }
+    if (i >= text.size()) fail("a string is not closed (a \" is missing)");
+    for (std::size_t j = i + 1; j < text.size(); ++j)
+      if (!std::isspace(static_cast<unsigned char>(text[j]))) fail("text after the closing quote");
+    return out;
+  }
+};
+
+struct Entry {
+  std::string context, id, str;
+  bool has_context = false, has_id = false, has_str = false, fuzzy = false;
+  int line = 0;
+};
+
+}  // namespace
+
+Catalog read_po(const std::string& text, const std::string& origin) {
+  Catalog catalog;
+  Reader reader{origin};
+  Entry entry;
+  std::string* target = nullptr;  // the string a continuation line extends
+  std::string ignored;            // msgid_plural and msgstr[1...]: one form is kept
+  const auto finish = [&] {
+    if (entry.has_id || entry.has_context || entry.has_str) {
+      if (!entry.has_id) {
+        reader.line = entry.line;
+        reader.fail("an entry has no msgid");
+      }
+      if (!entry.has_str) {
+        reader.line = entry.line;
+        reader.fail("msgid \"" + entry.id + "\" has no msgstr");
+      }
+      if (entry.id.empty()) {  // the header: "Language: zh_CN\n" among its fields
+        std::istringstream fields(entry.str);
+        for (std::string field; std::getline(fields, field);)
+          if (field.rfind("Language:", 0) == 0) {
+            std::string tag = field.substr(9);
+            tag.erase(0, tag.find_first_not_of(' '));
+            catalog.language = supported_language(tag);
+          }
+      } else if (!entry.fuzzy && !entry.str.empty()) {
+        catalog.entries[entry.has_context ? entry.context + '\x04' + entry.id : entry.id] = entry.str;
+      }
+    }
+    entry = Entry{};
+    target = nullptr;
+  };
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    ++reader.line;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const std::size_t start = line.find_first_not_of(" \t");
+    if (start == std::string::npos) {
+      finish();
+      continue;
+    }
+    if (line[start] == '#') {
+      if (line.compare(start, 2, "#,") == 0 && line.find("fuzzy") != std::string::npos) entry.fuzzy = true;
+      continue;
+    }
+    if (line[start] == '"') {
+      if (!target) reader.fail("a continued string with no keyword before it");
+      *target += reader.quoted(line, start);
+      continue;
+    }
+    const std::size_t end = line.find_first_of(" \t\"", start);
+    const std::string keyword = line.substr(start, end - start);
+    if (!entry.has_id && !entry.has_context && !entry.has_str) entry.line = reader.line;
+    if (keyword == "msgctxt") {
+      if (entry.has_id || entry.has_context) {  // a new entry with no blank line before it
+        finish();
+        entry.line = reader.line;
+      }
+      entry.has_context = true;
+      entry.context = reader.quoted(line, end);
+      target = &entry.context;
+    } else if (keyword == "msgid") {
+      if (entry.has_id) {
+        finish();
+        entry.line = reader.line;
+      }
+      entry.has_id = true;
+      entry.id = reader.quoted(line, end);
+      target = &entry.id;
+    } else if (keyword == "msgid_plural") {
+      ignored = reader.quoted(line, end);
+      target = &ignored;
+    } else if (keyword == "msgstr" || keyword == "msgstr[0]") {
+      entry.has_str = true;
+      entry.str = reader.quoted(line, end);
+      target = &entry.str;
+    } else if (keyword.rfind("msgstr[", 0) == 0) {
+      ignored = reader.quoted(line, end);
+      target = &ignored;
+    } else {
+      reader.fail("unknown keyword '" + keyword + "' (a PO file has msgctxt, msgid, msgid_plural and msgstr)");
+    }
+  }
+  finish();
+  return catalog;
+}
+
+void set_catalog(const Catalog* catalog) { g_catalog.store(catalog, std::memory_order_release); }
+const Catalog* current_catalog() { return g_catalog.load(std::memory_order_acquire); }
+
+std::string current_language() {
+  const Catalog* c = current_catalog();
+  return c && !c->language.empty() ? c->language : "en";
+}
+
+const char* tr(const char* english) {
+  const Catalog* c = current_catalog();
+  if (!c || !english || !*english) return english;
+  const auto it = c->entries.find(english);
+  return it == c->entries.end() ? english : it->second.c_str();
+}
+
+std::string tr(const std::string& english) { return tr(english.c_str()); }
+
+std::string format_text(const char* format, ...) {
+  va_list args, again;
+  va_start(args, format);
+  va_copy(again, args);
+  const int n = std::vsnprintf(nullptr, 0, format, args);
+  va_end(args);
+  std::string out(n > 0 ? static_cast<std::size_t>(n) : 0, '\0');
+  if (n > 0) std::vsnprintf(out.data(), out.size() + 1, format, again);
+  va_end(again);
+  return out;
+}
+
+std::string supported_language(const std::string& tag) {
+  std::string lower;
+  for (char ch : tag) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  const bool chinese = lower == "zh" || lower.rfind("zh_", 0) == 0 || lower.rfind("zh-", 0) == 0 ||
+                       lower.rfind("zh.", 0) == 0;
+  return chinese ? "zh-CN" : "en";
+}
+
+}  // namespace springlab
