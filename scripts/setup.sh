@@ -10,6 +10,7 @@ packages=(
   libegl-dev libgl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri libglx-mesa0 libgl1
   libgtest-dev libbenchmark-dev
   xvfb xauth ffmpeg fonts-dejavu-core
+  fonts-noto-cjk python3-fonttools gettext
   clang libclang-rt-14-dev libomp-dev
 )
 

@@ -27,7 +27,7 @@ apt() { DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get -o DPkg::Lock::Timeo
 
 # Debian's packages, only those missing. (Node: the machine's own when it has one.)
 packages=(emscripten chromium cmake ninja-build libeigen3-dev nlohmann-json3-dev libboost-dev googletest fonts-dejavu-core
-          python3 xz-utils)
+          fonts-noto-cjk python3-fonttools python3 xz-utils)
 command -v node >/dev/null || packages+=(nodejs)
 command -v npm >/dev/null || packages+=(npm)
 missing=()

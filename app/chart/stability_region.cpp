@@ -262,7 +262,7 @@ Chart stability_region(const StabilityAnalysis& analysis, const std::vector<Regi
         if (std::isfinite(std::abs(l.h * lambda))) reach = std::max(reach, std::abs(l.h * lambda));
     if (reach > 0.0 && reach < 0.08 * std::max(view.left, view.up)) {
       auto zoom = std::make_shared<Chart>();
-      zoom->title = "near 0";
+      zoom->title = tr("near 0");
       zoom->legend = false;
       zoom->x.min = -1.6 * reach;
       zoom->x.max = 0.6 * reach;

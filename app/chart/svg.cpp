@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "draw/palette.hpp"
+#include "springlab/text.hpp"
 
 namespace springlab::chart {
 
@@ -171,7 +172,8 @@ std::string to_svg(const Chart& chart, int width, int height) {
   std::ostringstream s;
   s.precision(6);
   s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
-    << "\" viewBox=\"0 0 " << width << " " << height << "\" font-family=\"DejaVu Sans, Verdana, sans-serif\" font-size=\""
+    << "\" viewBox=\"0 0 " << width << " " << height << "\" font-family=\"DejaVu Sans, "
+    << (current_language() == "en" ? "" : "Noto Sans CJK SC, ") << "Verdana, sans-serif\" font-size=\""
     << 15.0 << "\">\n";
   write_chart(s, chart, width, height, "plot");
   s << "</svg>\n";

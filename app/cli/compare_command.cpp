@@ -18,6 +18,7 @@
 #include "gfx/offscreen.hpp"
 #include "springlab/error.hpp"
 #include "springlab/forces.hpp"
+#include "util/language.hpp"
 #include "util/atomic_file.hpp"
 #include "util/progress.hpp"
 
@@ -33,6 +34,7 @@ struct CompareOptions {
   double stability_budget = 2e8;
   int points = 8, repeats = 1;
   bool software = false, no_charts = false;
+  std::string lang = "en";  // the charts' titles, axes and legends
 };
 
 // "LO:HI" with 0 < LO < HI.
@@ -165,6 +167,7 @@ int compare(const CompareOptions& o) {
   if (o.drift_duration) check_option("--drift-duration", *o.drift_duration, 0.0, 1e6, false, " s");
   s.drift_duration = o.drift_duration ? *o.drift_duration : p.scene.duration;
   check_option("--stability-budget", o.stability_budget, 0.0, 1e13, false);
+  use_language(check_language(o.lang, "--lang"));
   s.stability = o.stability_budget > 0.0;
   s.stability_budget = o.stability_budget;
 
@@ -240,6 +243,7 @@ Command add_compare_command(CLI::App& app) {
   add_sim_options(*c, o->sim);
   c->add_option("--methods", o->methods, "methods to compare, e.g. euler,rk4 (default: all)");
   c->add_option("--dt-range", o->dt_range, "LO:HI steps to sweep, log-spaced (default: dt/16 to 2 dt)");
+  c->add_option("--lang", o->lang, "language of the charts' titles, axes and legends: en (default) or zh-CN");
   c->add_option("--points", o->points, "steps (and tolerances) per method (default 8)");
   c->add_option("--tol-range", o->tol_range, "LO:HI tolerances for the adaptive methods (default 1e-10:1e-4)");
   c->add_option("--repeats", o->repeats, "time each run this many times and keep the fastest (default 1)");

@@ -82,10 +82,12 @@ void draw_compare_panel(ComparePanel& panel, const app::Session& session, float 
     // A tab a chart, in compare_charts' order (energy drift and the iterative rows' solver error
     // only where the sweep made them).
     const auto tab = [](const std::string& name) {
-      static const std::pair<const char*, const char*> kTabs[] = {{"work-precision", N_("error vs time")},
-                                                                  {"work-precision-work", N_("error vs work")},
-                                                                  {"energy-drift", N_("energy drift")},
-                                                                  {"solver-convergence", N_("solver error")}};
+      // The charts' keys (not shown) and their tabs' names.
+      static const std::pair<const char*, const char*> kTabs[] = {
+          {"work-precision", N_("error vs time")},             // not shown: the key
+          {"work-precision-work", N_("error vs work")},        // not shown: the key
+          {"energy-drift", N_("energy drift")},                // not shown: the key
+          {"solver-convergence", N_("solver error")}};         // not shown: the key
       for (const auto& [key, text] : kTabs)
         if (name == key) return tr(text);
       return tr(name.c_str());

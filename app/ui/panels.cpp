@@ -206,14 +206,14 @@ chart::Chart energy_chart(const app::Session& session) {
     const draw::Rgba c = draw::method_color(lane.sim.settings().method);
     const std::string name = method_info(lane.sim.settings().method).name;
     if (!compare) {
-      energy.series.push_back(series("kinetic", ke, h.t, h.kinetic));
-      energy.series.push_back(series("potential", pe, h.t, h.potential));
-      energy.series.push_back(series("total", white, h.t, h.total));
+      energy.series.push_back(series(tr("kinetic"), ke, h.t, h.kinetic));
+      energy.series.push_back(series(tr("potential"), pe, h.t, h.potential));
+      energy.series.push_back(series(tr("total"), white, h.t, h.total));
     } else {
       energy.series.push_back(series(name, c, h.t, h.total));
     }
     // Total plus what damping, drag and friction took: flat unless the method itself drifts.
-    chart::Series kept = series(compare ? "" : "total + lost", compare ? c : lost, h.t, h.total, true);
+    chart::Series kept = series(compare ? "" : tr("total + lost"), compare ? c : lost, h.t, h.total, true);
     for (std::size_t k = 0; k < kept.y.size(); ++k) kept.y[k] += h.dissipated[h.dissipated.size() - kept.y.size() + k];
     energy.series.push_back(kept);
     const std::size_t from = energy.series.size() - (compare ? 2 : 4);
@@ -236,7 +236,7 @@ chart::Chart position_chart(const app::Session& session) {
     mark_diverged(position.series.back(), lane, "m");
   }
   if (session.primary().history.exact_x.size() > 0)
-    position.series.push_back(series("exact", draw::Rgba{0.95f, 0.95f, 0.95f, 1}, session.primary().history.t,
+    position.series.push_back(series(tr("exact"), draw::Rgba{0.95f, 0.95f, 0.95f, 1}, session.primary().history.t,
                                      session.primary().history.exact_x, true));
   return position;
 }
@@ -265,7 +265,7 @@ chart::Chart steps_chart(const app::Session& session) {
   for (const app::Lane& lane : session.lanes()) {
     if (!method_info(lane.sim.settings().method).adaptive()) continue;
     const app::History& h = lane.history;
-    chart::Series step = series(std::string(method_info(lane.sim.settings().method).name) + " step", 
+    chart::Series step = series(format_text(tr("%s step"), method_info(lane.sim.settings().method).name),
                                 draw::method_color(lane.sim.settings().method), h.t, h.step);
     chart::Series rejected;
     rejected.label = tr("rejected");
@@ -505,14 +505,14 @@ void parameters(app::Session& session, UiState& ui, bool few) {
   int substeps = sim.settings().substeps;
   std::string shown = std::to_string(substeps);
   if (session.auto_substeps()) {
-    shown = "auto (" + shown;
     bool bound = sim.substeps_provisional();
     if (session.comparing())
       for (std::size_t k = 1; k < session.lanes().size(); ++k) {
         shown += ", " + std::to_string(session.lanes()[k].sim.settings().substeps);
         bound |= session.lanes()[k].sim.substeps_provisional();
       }
-    shown += bound ? ", bound)" : ")";  // from the quick bound until the analysis ends
+    if (bound) shown += tr(", bound");  // from the quick bound until the analysis ends
+    shown = format_text(tr("auto (%s)"), shown.c_str());
   }
   ImGui::PushItemWidth(ImGui::CalcItemWidth() - ImGui::CalcTextSize(tr("auto")).x - ImGui::GetFrameHeight() -
                        2 * ImGui::GetStyle().ItemInnerSpacing.x);

@@ -35,7 +35,7 @@ TableauPanel::TableauPanel() {
 
 void TableauPanel::load(const ButcherTableau& t) {
   if (t.stages > kMaxStages) {
-    error = t.name + " has " + std::to_string(t.stages) + " stages; the panel holds " + std::to_string(kMaxStages);
+    error = format_text(tr("%s has %d stages; the panel holds %d"), t.name.c_str(), t.stages, kMaxStages);
     return;
   }
   stages = t.stages;
@@ -71,7 +71,7 @@ void TableauPanel::check() {
   error.clear();
   error_row = error_col = -1;
   try {
-    tableau = parse_tableau(json(), "your method");
+    tableau = parse_tableau(json(), tr("your method"));
     analysis = analyse_tableau(*tableau);
   } catch (const InputError& e) {
     // "your method: /A/1/0: A row 2, column 1 ...": the cell from the pointer, the rest to show.

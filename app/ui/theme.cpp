@@ -64,7 +64,9 @@ void apply_theme(float scale) {
         merge.MergeMode = true;
         merge.OversampleH = merge.OversampleV = 1;
         merge.PixelSnapH = true;
-        io.Fonts->AddFontFromFileTTF(cjk.c_str(), kFontSize * scale * size, &merge, translated);
+        // A tenth larger: an ideograph fills its em square, and at DejaVu's size it looks a size
+        // smaller than the Latin letters beside it.
+        io.Fonts->AddFontFromFileTTF(cjk.c_str(), 1.1f * kFontSize * scale * size, &merge, translated);
       }
     } else {
       ImFontConfig config;

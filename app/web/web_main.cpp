@@ -186,8 +186,8 @@ EMSCRIPTEN_KEEPALIVE void springlab_open_scene_text(const char* file_name, const
   if (!g_page) return;
   namespace fs = std::filesystem;
   std::string name = fs::path(file_name ? file_name : "").filename().string();
-  if (name.empty()) name = "scene.json";
-  const fs::path dir = "/user";
+  if (name.empty()) name = "scene.json";  // not shown: a file's name
+  const fs::path dir = "/user";           // not shown: a folder
   std::error_code ec;
   fs::create_directories(dir, ec);
   const fs::path path = dir / name;
@@ -268,7 +268,7 @@ int main() {
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 0);
   static Page page;
-  page.window = glfwCreateWindow(1280, 720, "springlab", nullptr, nullptr);
+  page.window = glfwCreateWindow(1280, 720, "springlab", nullptr, nullptr);  // not shown: a canvas has no title
   if (!page.window) {
     std::fprintf(stderr, "springlab: this browser gives no WebGL2 context\n");
     return 1;

@@ -18,9 +18,9 @@ import sys
 CALLS = r"(?:ImGui::(?:Button|SmallButton|Checkbox|BeginCombo|Selectable|CollapsingHeader|SliderInt|SliderFloat|" \
         r"InputInt|InputTextWithHint|Text|TextDisabled|TextColored|TextUnformatted|TextWrapped|SetTooltip|" \
         r"MenuItem|BeginMenu|BulletText|RadioButton|CalcTextSize)|text_wrapped|text_wrapped_disabled|slider|fmt|" \
-        r"draw_note|label_text|std::snprintf)"
+        r"draw_note|label_text|std::snprintf|series)"
 CALL_RE = re.compile(r"(?<![\w:])" + CALLS + r"\s*\(")
-ASSIGN_RE = re.compile(r"(?:\.title|\.label|\bverdict|\bnone|\bstate|\bmessage|\breturn|(?:std::string|const char\*)\s+\w+)\s*=?\s*")
+ASSIGN_RE = re.compile(r"(?:\breturn\b|(?:std::string|const char\*)\s+\w+\s*=|[\w.\]]\s*\+?=(?!=))\s*")
 LETTERS = re.compile(r"[A-Za-z]{2,}")
 
 

@@ -8,6 +8,8 @@
 #include <cfloat>
 
 #include "lesson/lesson_library.hpp"
+#include "springlab/text.hpp"
+#include "util/language.hpp"
 #include "ui/lesson_band.hpp"
 #include "ui/text_wrap.hpp"
 #include "ui/theme.hpp"
@@ -80,6 +82,117 @@ TEST(LessonBand, EveryShippedLessonsTextFitsAt1280x720) {
       }
       // The title row leaves room for its three buttons (about 300 pixels).
       const std::string row = "Lesson 10 of 10  \u00b7  " + lesson.title + "   \u2014   step 1 of 2: " + step.title;
+      EXPECT_EQ(Fonts::lines(ui::kPanelFont, row, inner - 300.0f), 1) << lesson.name << ": " << row;
+    }
+  }
+}
+
+// The app in Simplified Chinese for the rest of a test (the fonts made after it carry its glyphs).
+struct Chinese {
+  Chinese() { app::use_language("zh-CN"); }
+  ~Chinese() { app::use_language("en"); }
+};
+
+// Every character of every translation has a glyph in each of the app's fonts: no tofu, no "?".
+TEST(LessonBand, EveryTranslatedCharacterHasAGlyph) {
+  Chinese chinese;
+  Fonts fonts;
+  const Catalog* catalog = current_catalog();
+  ASSERT_NE(catalog, nullptr);
+  ASSERT_GT(catalog->entries.size(), 300u);
+  int checked = 0;
+  for (const auto& [english, translated] : catalog->entries) {
+    ImVector<ImWchar> chars;
+    ImFontGlyphRangesBuilder one;
+    one.AddText(translated.c_str());
+    one.BuildRanges(&chars);
+    for (int k = 0; k + 1 < chars.Size; k += 2)
+      for (int c = chars[k]; c <= chars[k + 1]; ++c) {
+        if (c == '\n') continue;
+        for (int font = 0; font < ImGui::GetIO().Fonts->Fonts.Size; ++font)
+          EXPECT_NE(ImGui::GetIO().Fonts->Fonts[font]->FindGlyphNoFallback(static_cast<ImWchar>(c)), nullptr)
+              << "U+" << std::hex << c << " in \"" << translated << "\"";
+        ++checked;
+      }
+  }
+  EXPECT_GT(checked, 2000);
+}
+
+// Chinese has no spaces: a line breaks between two ideographs, as late as it can, but never
+// before a closing mark (，。）...) nor after an opening one (（“...), and a Latin word or number
+// inside stays whole.
+TEST(LessonBand, ChineseBreaksBetweenIdeographsNeverBeforeAClosingMark) {
+  Chinese chinese;
+  Fonts fonts;
+  EXPECT_TRUE(ui::may_break_between(U'能', U'量'));   // 能|量
+  EXPECT_FALSE(ui::may_break_between(U'量', U'，'));  // 量|，
+  EXPECT_FALSE(ui::may_break_between(U'量', U'。'));  // 量|。
+  EXPECT_FALSE(ui::may_break_between(U'（', U'阶'));  // （|阶
+  EXPECT_FALSE(ui::may_break_between(U'“', U'对'));  // “|对
+  EXPECT_TRUE(ui::may_break_between(U'。', U'半'));   // 。|半
+  EXPECT_FALSE(ui::may_break_between(U'1', U'2'));           // a number
+  EXPECT_FALSE(ui::may_break_between(U'e', U'r'));           // a word
+  ImFont* f = ImGui::GetIO().Fonts->Fonts[ui::kCaptionFont];
+  const auto width = [&](const std::string& s) { return f->CalcTextSizeA(f->FontSize, FLT_MAX, 0.0f, s.c_str()).x; };
+  // Lesson 3's caption, in its translation: ideographs, full-width marks, a formula with spaces.
+  const std::string text = tr(
+      "Explicit Euler uses the old velocity and the old force: each step multiplies the energy by 1 + (h\u03c9)\u00b2 "
+      "= 1.028. Symplectic Euler's stays level.");
+  ASSERT_NE(text.find("\u663e\u5f0f\u6b27\u62c9"), std::string::npos);  // 显式欧拉: translated
+  const std::u32string closing = U"\uff0c\u3002\u3001\uff1b\uff1a\uff1f\uff01\uff09", opening = U"\uff08\u201c";
+  const auto first_char = [](const std::string& line) {  // the line's first code point
+    char32_t c = static_cast<unsigned char>(line[0]);
+    if (c >= 0xE0) c = ((c & 0x0F) << 12) | ((line[1] & 0x3F) << 6) | (line[2] & 0x3F);
+    return c;
+  };
+  int wrapped_lines = 0;
+  for (float w = width("1.028\u3002"); w < width(text) + 10.0f; w += 9.0f) {
+    const std::string wrapped = ui::wrap_text(text, f, f->FontSize, w);
+    std::string joined;  // a break at a space took the space; one between ideographs took nothing
+    for (std::size_t a = 0, b = 0; a <= wrapped.size(); a = b + 1) {
+      b = std::min(wrapped.find('\n', a), wrapped.size());
+      const std::string line = wrapped.substr(a, b - a);
+      ASSERT_FALSE(line.empty()) << wrapped;
+      EXPECT_LE(width(line), w) << line;
+      if (a > 0) {
+        EXPECT_EQ(closing.find(first_char(line)), std::u32string::npos) << "a line starts with a closing mark: " << line;
+        ++wrapped_lines;
+      }
+      if (!joined.empty() && text.compare(joined.size(), 1, " ") == 0) joined += ' ';
+      joined += line;
+    }
+    EXPECT_EQ(joined, text) << w;
+    for (const char32_t c : opening) {  // no line ends with an opening mark
+      std::string mark;
+      mark += static_cast<char>(0xE0 | (c >> 12));
+      mark += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+      mark += static_cast<char>(0x80 | (c & 0x3F));
+      EXPECT_EQ(wrapped.find(mark + "\n"), std::string::npos) << wrapped;
+    }
+    EXPECT_NE(wrapped.find("1.028"), std::string::npos) << wrapped;  // the number whole
+  }
+  EXPECT_GT(wrapped_lines, 20);
+}
+
+// Every lesson in Chinese fits the band at 1280 x 720 as in English: the caption in two lines,
+// the prompt on one, the title row beside its buttons.
+TEST(LessonBand, EveryShippedLessonsTextInChineseFitsAt1280x720) {
+  Chinese chinese;
+  Fonts fonts;
+  const float inner = 1280.0f - 2 * 12.0f;
+  for (const std::string& file : app::shipped_lesson_files()) {
+    const Lesson lesson = app::open_lesson(file);
+    for (const LessonStep& step : lesson.steps) {
+      const std::string caption = tr(step.caption);
+      EXPECT_NE(caption, step.caption) << "not translated: " << step.caption;
+      EXPECT_LE(Fonts::lines(ui::kCaptionFont, caption, inner), 2) << lesson.name << ": " << caption;
+      if (!step.prompt.empty()) {
+        const std::string prompt = format_text(tr("Try this: %s"), tr(step.prompt).c_str());
+        EXPECT_NE(tr(step.prompt), step.prompt) << "not translated: " << step.prompt;
+        EXPECT_EQ(Fonts::lines(ui::kPanelFont, prompt, inner), 1) << lesson.name << ": " << prompt;
+      }
+      const std::string row = format_text(tr("Lesson %d of %d"), 10, 12) + "  \u00b7  " + tr(lesson.title) +
+                              "   \u2014   " + format_text(tr("step %d of %d: %s"), 1, 2, tr(step.title).c_str());
       EXPECT_EQ(Fonts::lines(ui::kPanelFont, row, inner - 300.0f), 1) << lesson.name << ": " << row;
     }
   }
