@@ -242,6 +242,7 @@ EMSCRIPTEN_KEEPALIVE const char* springlab_status() {
                 g_page->app->interrupted() ? "true" : "false");
   json += number;
   json += ",\"message\":" + quoted(g_page->app->ui().message);
+  json += ",\"lang\":" + quoted(current_language());
   json += ",\"lanes\":[";
   for (std::size_t i = 0; i < session.lanes().size(); ++i) {
     const app::Lane& lane = session.lanes()[i];

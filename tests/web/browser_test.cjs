@@ -84,7 +84,7 @@ check("the rope scene renders (golden image)", async ({ browser, base }) => {
   const page = await openApp(browser, base, "scene=rope");
   await pauseAtStart(page);
   const s = await status(page);
-  expect(s.scene === "rope" && s.method === "euler" && s.message === "", `status ${JSON.stringify(s)}`);
+  expect(s.scene === "rope" && s.method === "euler" && s.message === "" && s.lang === "en", `status ${JSON.stringify(s)}`);
   await matchesGolden(browser, page, "rope");
   await page.close();
 });
@@ -285,6 +285,35 @@ check("copy link gives the link of what is shown", async ({ browser, base }) => 
   const page = await openApp(browser, base, "scene=rope&compare=euler,verlet&ks=5000");
   const link = await copyLink(page);
   expect(/#scene=rope&compare=euler,verlet&ks=5000$/.test(link), `link ${link}`);
+  await page.close();
+});
+
+// In Simplified Chinese: a link's lang=zh-CN, or no link from a browser whose language is Chinese;
+// Copy link keeps the language. The default scene's panels and lessons 3 and 7 as golden images
+// (looked at: no tofu, no line starting with a closing mark); the English ones above unchanged.
+check("in Chinese: #lang=zh-CN, or a browser in zh-CN; Copy link keeps it (golden images)", async ({ browser, base }) => {
+  let page = await openApp(browser, base, "lang=zh-CN");
+  let s = await status(page);
+  expect(s.lang === "zh-CN" && s.scene === "rope" && s.message === "", `#lang=zh-CN: ${JSON.stringify(s)}`);
+  await pauseAtStart(page);
+  await matchesGolden(browser, page, "rope-zh");
+  const link = await copyLink(page);
+  expect(/#scene=rope&lang=zh-CN$/.test(link), `Copy link: ${link}`);
+  await page.close();
+  page = await openApp(browser, base, "lesson=euler-explodes", { language: "zh-CN" });
+  s = await status(page);
+  expect(s.lang === "zh-CN" && s.lesson === "euler-explodes", `a zh-CN browser: ${JSON.stringify(s)}`);
+  await pauseAtStart(page);
+  await matchesGolden(browser, page, "lesson-euler-explodes-zh");
+  await page.close();
+  page = await openApp(browser, base, "lesson=implicit-stiff&lang=zh-CN", { language: "en-GB" });
+  await pauseAtStart(page);
+  expect((await status(page)).lang === "zh-CN", "lang= overrides the browser's language");
+  await matchesGolden(browser, page, "lesson-implicit-stiff-zh");
+  await page.close();
+  page = await openApp(browser, base, "lang=fr");
+  s = await status(page);
+  expect(s.lang === "en" && /lang: 'fr' is not a language springlab speaks/.test(s.message), `#lang=fr: ${JSON.stringify(s)}`);
   await page.close();
 });
 

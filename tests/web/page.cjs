@@ -32,17 +32,21 @@ function launch() {
   return puppeteer.launch({
     executablePath: process.env.CHROMIUM || "/usr/bin/chromium",
     headless: "new",
+    // English whatever the machine's locale: a check that wants another language says so (openApp).
     args: ["--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--window-size=1280,720",
-           "--disable-dev-shm-usage"],
+           "--disable-dev-shm-usage", "--lang=en-US"],
   });
 }
 
 // Every console error and uncaught exception of every page, for the final check.
 const consoleErrors = [];
 
-// Opens the app at `fragment` (without '#') and waits for its first frames.
-async function openApp(browser, base, fragment, { width = 1280, height = 720, scale = 1, touch = false } = {}) {
+// Opens the app at `fragment` (without '#') and waits for its first frames. `language`: the
+// browser's (navigator.language), as a reader's browser set to it reports it.
+async function openApp(browser, base, fragment, { width = 1280, height = 720, scale = 1, touch = false, language } = {}) {
   const page = await browser.newPage();
+  if (language)
+    await page.evaluateOnNewDocument((l) => Object.defineProperty(navigator, "language", { get: () => l }), language);
   await page.setViewport({ width, height, deviceScaleFactor: scale, hasTouch: touch });
   page.on("console", (m) => { if (m.type() === "error") consoleErrors.push(`${fragment}: ${m.text()}`); });
   page.on("pageerror", (e) => consoleErrors.push(`${fragment}: ${e.message}`));
