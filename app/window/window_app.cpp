@@ -1,3 +1,4 @@
+#include "springlab/text.hpp"
 #include "util/language.hpp"
 #include "window/window_app.hpp"
 
@@ -172,6 +173,7 @@ int run_window(const AppSettings& settings, const WindowOptions& o) {
         std::printf("dragged    particle %d from (%.4g, %.4g, %.4g) to (%.4g, %.4g, %.4g): %.4g m\n", d.particle,
                     d.from.x(), d.from.y(), d.from.z(), d.to.x(), d.to.y(), d.to.z(), (d.to - d.from).norm());
       if (o.screenshot) std::printf("screenshot %s\n", o.screenshot->c_str());
+      std::printf("language   %s\n", current_language().c_str());
       for (const Lane& lane : session.lanes())
         if (lane.sim.trouble()) result = 3;
     }

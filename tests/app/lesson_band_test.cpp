@@ -118,6 +118,30 @@ TEST(LessonBand, EveryTranslatedCharacterHasAGlyph) {
   EXPECT_GT(checked, 2000);
 }
 
+// Switching the language (the View panel's menu) remakes the fonts: with Chinese's glyphs, then
+// without them again (English's atlas as it was).
+TEST(LessonBand, SwitchingTheLanguageRemakesTheFontsWithItsGlyphs) {
+  const auto atlas = [] {
+    ImGui::CreateContext();
+    ui::apply_theme(1.0f);
+    unsigned char* pixels = nullptr;
+    int w = 0, h = 0;
+    ImGui::GetIO().Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+    const bool chinese = ImGui::GetIO().Fonts->Fonts[0]->FindGlyphNoFallback(0x80fd) != nullptr;  // 能
+    const int area = w * h;
+    ImGui::DestroyContext();
+    return std::make_pair(chinese, area);
+  };
+  const auto english = atlas();
+  EXPECT_FALSE(english.first);
+  app::use_language("zh-CN");
+  const auto chinese = atlas();
+  EXPECT_TRUE(chinese.first);
+  EXPECT_GT(chinese.second, english.second);
+  app::use_language("en");
+  EXPECT_EQ(atlas(), english);
+}
+
 // Chinese has no spaces: a line breaks between two ideographs, as late as it can, but never
 // before a closing mark (，。）...) nor after an opening one (（“...), and a Latin word or number
 // inside stays whole.

@@ -102,10 +102,27 @@ TEST(View, BadOptionsExitTwo) {
            {"view spring --size 10x10 --frames 1", "--size"},
            {"view spring --compare euler --frames 1", "--compare: give 2 to 4 methods"},
            {"view nope --frames 1", "scene 'nope'"},
-           {"view spring --ui-scale 9 --frames 1", "--ui-scale"}}) {
+           {"view spring --ui-scale 9 --frames 1", "--ui-scale"},
+           {"view spring --lang fr --frames 1", "--lang: 'fr' is not a language springlab speaks (en, zh-CN)"}}) {
     const Result r = springlab(args);
     EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
     EXPECT_NE(r.err.find(expected), std::string::npos) << args << "\n" << r.err;
+  }
+}
+
+// The window speaks the environment's language as gettext reads it (LANGUAGE, LC_ALL,
+// LC_MESSAGES, LANG), or --lang's; a locale springlab has no translation for is English.
+TEST(View, SpeaksTheLanguageOfTheEnvironmentOrOfLang) {
+  for (const auto& [env, args, expected] : std::vector<std::tuple<std::string, std::string, std::string>>{
+           {"LANG=zh_CN.UTF-8 LC_ALL= LC_MESSAGES= LANGUAGE=", "", "zh-CN"},
+           {"LANG=en_GB.UTF-8 LC_ALL= LC_MESSAGES=zh_CN.UTF-8 LANGUAGE=", "", "zh-CN"},
+           {"LANG=zh_CN.UTF-8 LC_ALL=fr_FR.UTF-8 LC_MESSAGES= LANGUAGE=", "", "en"},
+           {"LANG=zh_CN.UTF-8 LC_ALL= LC_MESSAGES= LANGUAGE=", "--lang en", "en"},
+           {"LANG=C LC_ALL= LC_MESSAGES= LANGUAGE=", "--lang zh-CN", "zh-CN"}}) {
+    const Result r = springlab_with("env " + env + " xvfb-run -a -s '-screen 0 1280x720x24' ",
+                                    "view spring --frames 2 " + args);
+    ASSERT_EQ(r.status, 0) << env << " " << args << "\n" << r.err;
+    EXPECT_NE(r.out.find("language   " + expected + "\n"), std::string::npos) << env << " " << args << "\n" << r.out;
   }
 }
 
