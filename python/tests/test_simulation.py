@@ -109,3 +109,13 @@ def test_run_takes_the_steps_run_would():
     assert springlab.Simulation("spring", duration=0.5, dt=0.01).planned_steps == 50
     sim = springlab.Simulation("spring", steps=7)
     assert sim.run() == 7 and sim.steps_taken == 7
+
+
+def test_every_shipped_scene_loads_steps_and_is_analysed():
+    for name in springlab.scenes():
+        sim = springlab.Simulation(name)
+        assert sim.advance(5) == 5, name
+        assert np.isfinite(sim.positions).all() and np.isfinite(sim.energy().total), name
+        analysis = sim.stability()
+        for row in springlab.methods():
+            analysis.limit(row.name)  # every row has a limit on every scene (0, a step, inf or nan)
