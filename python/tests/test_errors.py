@@ -83,3 +83,15 @@ def test_an_unknown_keyword_is_a_type_error():
         springlab.Simulation("spring", metod="rk4")
     with pytest.raises(TypeError, match="'point'"):
         springlab.sweep("spring", point=3)
+
+
+@pytest.mark.parametrize("flag,options", [(["--steps", "2.5"], dict(steps=2.5)),
+                                          (["--iterations", "0"], dict(iterations=0)),
+                                          (["--threads", "-1"], dict(threads=-1))])
+def test_a_bad_whole_number_raises_what_the_parser_says(cli, flag, options):
+    # The command line refuses these while parsing its flags, and adds a pointer to --help.
+    result = cli("run", "rope", *flag)
+    assert result.returncode == 2
+    with pytest.raises(springlab.InputError) as caught:
+        springlab.Simulation("rope", **options)
+    assert str(caught.value) + " (see springlab --help)" == cli_message(result)
