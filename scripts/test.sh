@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds, and runs every test with CTest: the normal build's suite
-# (labels core, cli, golden, app, soak), then the checking build's (scripts/sanitize.sh: the core
+# (labels core, cli, golden, app, soak, install, python, docs), then the checking build's (scripts/sanitize.sh: the core
 # tests under AddressSanitizer and UndefinedBehaviorSanitizer, and a bounded run of each fuzz
 # target), then the browser build's (scripts/web.sh --test: the app in headless Chromium, and the
 # core's tests compiled to WebAssembly; a few minutes). CI runs this with no options.

@@ -16,6 +16,7 @@
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
 #include "gfx/offscreen.hpp"
+#include "platform/sweep_options.hpp"
 #include "springlab/error.hpp"
 #include "springlab/forces.hpp"
 #include "util/language.hpp"
@@ -29,26 +30,10 @@ namespace {
 struct CompareOptions {
   std::string scene, out;
   SimOptions sim;
-  std::optional<std::string> methods, dt_range, tol_range;
-  std::optional<double> drift_duration;
-  double stability_budget = 2e8;
-  int points = 8, repeats = 1;
+  SweepOptions sweep;  // (platform/sweep_options.hpp: shared with the Python module)
   bool software = false, no_charts = false;
   std::string lang = "en";  // the charts' titles, axes and legends
 };
-
-// "LO:HI" with 0 < LO < HI.
-std::pair<double, double> range(const std::string& option, const std::string& text, double max) {
-  const auto colon = text.find(':');
-  char* end1 = nullptr;
-  char* end2 = nullptr;
-  const std::string a = text.substr(0, colon), b = colon == std::string::npos ? "" : text.substr(colon + 1);
-  const double lo = std::strtod(a.c_str(), &end1), hi = std::strtod(b.c_str(), &end2);
-  if (colon == std::string::npos || a.empty() || b.empty() || *end1 || *end2 || !(lo > 0) || !(hi > lo) || !(hi <= max))
-    throw InputError(option + ": must be LO:HI with 0 < LO < HI <= " + std::to_string(max).substr(0, 4) +
-                     ", for example 0.001:0.02; got '" + text + "'");
-  return {lo, hi};
-}
 
 std::string number(double x) {
   char s[32];
@@ -143,33 +128,11 @@ void write_charts(const std::filesystem::path& dir, const std::vector<chart::Nam
 }
 
 int compare(const CompareOptions& o) {
-  if (o.points < 2 || o.points > 64) throw InputError("--points: must be in [2, 64], got " + std::to_string(o.points));
-  if (o.repeats < 1 || o.repeats > 100) throw InputError("--repeats: must be in [1, 100], got " + std::to_string(o.repeats));
-  std::vector<Method> list;
-  if (o.methods) list = parse_method_list(*o.methods, "--methods");
-  Prepared p = prepare(o.scene, o.sim);
-  require_integration(p.scene, "compare");
-  SweepSettings s;
-  s.methods = list;
-  s.points = o.points;
-  s.repeats = o.repeats;
-  s.step = p.settings.step;
-  s.workers = o.sim.threads.value_or(0);
+  PreparedSweep plan = prepare_sweep(o.scene, o.sim, o.sweep);
+  const Prepared& p = plan.prepared;
+  const SweepSettings& s = plan.settings;
   const double dt = p.settings.dt;
-  std::tie(s.h_min, s.h_max) = o.dt_range ? range("--dt-range", *o.dt_range, 1.0) : std::pair{dt / 16, dt * 2};
-  if (o.tol_range) std::tie(s.tol_min, s.tol_max) = range("--tol-range", *o.tol_range, 1.0);
-  s.duration = o.sim.duration ? *o.sim.duration : std::min(p.scene.duration, 2.0);
-  if (s.duration < s.h_max) throw InputError("--duration: must be at least the largest step (" + step_text(s.h_max) + ")");
-  s.drift_h = dt;
-  s.drift_substeps = p.settings.substeps;
-  s.drift_auto_substeps = p.settings.auto_substeps;
-  s.drift_safety = p.settings.safety;
-  if (o.drift_duration) check_option("--drift-duration", *o.drift_duration, 0.0, 1e6, false, " s");
-  s.drift_duration = o.drift_duration ? *o.drift_duration : p.scene.duration;
-  check_option("--stability-budget", o.stability_budget, 0.0, 1e13, false);
   use_language(check_language(o.lang, "--lang"));
-  s.stability = o.stability_budget > 0.0;
-  s.stability_budget = o.stability_budget;
 
   // The output folder first: it must be writable before the work starts.
   std::error_code ec;
@@ -241,16 +204,16 @@ Command add_compare_command(CLI::App& app) {
   c->add_option("scene", o->scene, "scene name or JSON file")->required();
   c->add_option("--out", o->out, "folder for results.csv, summary.csv and the charts")->required();
   add_sim_options(*c, o->sim);
-  c->add_option("--methods", o->methods, "methods to compare, e.g. euler,rk4 (default: all)");
-  c->add_option("--dt-range", o->dt_range, "LO:HI steps to sweep, log-spaced (default: dt/16 to 2 dt)");
+  c->add_option("--methods", o->sweep.methods, "methods to compare, e.g. euler,rk4 (default: all)");
+  c->add_option("--dt-range", o->sweep.dt_range, "LO:HI steps to sweep, log-spaced (default: dt/16 to 2 dt)");
   c->add_option("--lang", o->lang, "language of the charts' titles, axes and legends: en (default) or zh-CN");
-  c->add_option("--points", o->points, "steps (and tolerances) per method (default 8)");
-  c->add_option("--tol-range", o->tol_range, "LO:HI tolerances for the adaptive methods (default 1e-10:1e-4)");
-  c->add_option("--repeats", o->repeats, "time each run this many times and keep the fastest (default 1)");
-  c->add_option("--drift-duration", o->drift_duration, "length of the energy-drift runs (default: the scene's duration; 0: none)");
+  c->add_option("--points", o->sweep.points, "steps (and tolerances) per method (default 8)");
+  c->add_option("--tol-range", o->sweep.tol_range, "LO:HI tolerances for the adaptive methods (default 1e-10:1e-4)");
+  c->add_option("--repeats", o->sweep.repeats, "time each run this many times and keep the fastest (default 1)");
+  c->add_option("--drift-duration", o->sweep.drift_duration, "length of the energy-drift runs (default: the scene's duration; 0: none)");
   c->add_flag("--software", o->software, "render the PNG charts with the software rasteriser");
   c->add_flag("--no-charts", o->no_charts, "write only the CSV files");
-  c->add_option("--stability-budget", o->stability_budget,
+  c->add_option("--stability-budget", o->sweep.stability_budget,
                 "work allowed for each method's measured stable step, in particle- and spring-steps (default 2e8, "
                 "about a second; 0: not measured)");
   return [o] { return compare(*o); };

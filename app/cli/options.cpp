@@ -72,11 +72,4 @@ void warn_if_unstable(Simulation& sim, const std::string& scene) {
                sim.h() * sim.stability().w_max(), limit.exact ? "it will most likely diverge" : "it may diverge", fix);
 }
 
-void require_integration(const Scene& scene, const char* command) {
-  if (scene.ik)
-    throw InputError(std::string(command) + ": '" + scene.name + "' is an inverse-kinematics scene, which has no "
-                     "integrator to measure; use `springlab run " + scene.name + "` (each solver's result), "
-                     "`view` or `render`");
-}
-
 }  // namespace springlab::app

@@ -15,9 +15,6 @@ namespace springlab::app {
 // --steps and --duration.
 void add_sim_options(CLI::App& command, SimOptions& options, bool with_length = true);
 
-// `compare` and `bench` time integrators: an inverse-kinematics scene has none to time.
-void require_integration(const Scene& scene, const char* command);
-
 // A warning on stderr when the step is past the method's estimated stability limit (the run
 // will most likely diverge), with the step that would do.
 void warn_if_unstable(Simulation& sim, const std::string& scene);

@@ -53,6 +53,23 @@ void check_option(const char* name, double value, double lo, double hi, bool lo_
   throw InputError(s.str());
 }
 
+Method resolve_method(const std::string& name) {
+  if (const auto method = lookup_method(name)) return *method;
+  std::vector<std::string> names;
+  for (const auto& m : methods()) names.emplace_back(m.name);
+  for (const auto& t : shipped_tableaux()) names.push_back(t);
+  const std::string near = closest_match(name, names.data(), names.size());
+  throw InputError("--method: unknown method '" + name + "'" + (near.empty() ? "" : "; did you mean '" + near + "'?") +
+                   " (" + method_choices() + ")");
+}
+
+void require_integration(const Scene& scene, const char* command) {
+  if (scene.ik)
+    throw InputError(std::string(command) + ": '" + scene.name + "' is an inverse-kinematics scene, which has no "
+                     "integrator to measure; use `springlab run " + scene.name + "` (each solver's result), "
+                     "`view` or `render`");
+}
+
 Prepared prepare(const std::string& scene_name, const SimOptions& o) {
   Prepared p;
   // Options first: a bad option is reported before any file is read.
@@ -77,17 +94,7 @@ Prepared prepare(const std::string& scene_name, const SimOptions& o) {
     throw InputError(s.str());
   }
   std::optional<Method> method;
-  if (o.method) {
-    method = lookup_method(*o.method);
-    if (!method) {
-      std::vector<std::string> names;
-      for (const auto& m : methods()) names.emplace_back(m.name);
-      for (const auto& t : shipped_tableaux()) names.push_back(t);
-      const std::string near = closest_match(*o.method, names.data(), names.size());
-      throw InputError("--method: unknown method '" + *o.method + "'" +
-                       (near.empty() ? "" : "; did you mean '" + near + "'?") + " (" + method_choices() + ")");
-    }
-  }
+  if (o.method) method = resolve_method(*o.method);
 
   p.scene = load_scene(resolve_scene(scene_name), o.sets);
   Scene& s = p.scene;

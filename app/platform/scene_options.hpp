@@ -38,6 +38,13 @@ struct Prepared {
 // and --threads, and checks every value. Throws InputError.
 Prepared prepare(const std::string& scene, const SimOptions& options);
 
+// A method as --method names it (lookup_method: a built-in row, a shipped tableau or a tableau
+// file), or InputError: "--method: unknown method 'rk5'; did you mean 'rk4'? (methods: ...)".
+Method resolve_method(const std::string& name);
+
+// `compare` and `bench` time integrators: an inverse-kinematics scene has none to time.
+void require_integration(const Scene& scene, const char* command);
+
 // Checks an option's value: "--dt: must be in (0, 1] s, got -1". Throws InputError.
 void check_option(const char* name, double value, double lo, double hi, bool lo_open,
                   const char* unit = "");

@@ -7,11 +7,12 @@
 
 namespace springlab {
 
+/// Bad input: its message names the file, the field (a JSON path) and what is allowed, in one line.
 struct InputError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// The closest of `candidates` to `word` (edit distance), or "" when nothing is close.
+/// The closest of `candidates` to `word` (edit distance), or "" when nothing is close.
 std::string closest_match(const std::string& word, const std::string* candidates, std::size_t count);
 
 }  // namespace springlab

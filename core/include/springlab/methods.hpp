@@ -26,6 +26,7 @@
 
 namespace springlab {
 
+/// The methods, in the table's order; a row made from a tableau at run time has an id past these.
 enum class Method {
   Euler,
   SymplecticEuler,
@@ -41,45 +42,45 @@ enum class Method {
   VBD,
 };
 
-// Settings of the methods that have any; plain values with defaults.
+/// Settings of the methods that have any; plain values with defaults.
 struct StepSettings {
-  // adaptive-euler: largest accepted |x_T - x_T/2| per internal step (m).
-  // rk45: the absolute and relative tolerance on each coordinate of x and v.
+  /// adaptive-euler: largest accepted |x_T - x_T/2| per internal step (m).
+  /// rk45: the absolute and relative tolerance on each coordinate of x and v.
   double tolerance = 1e-4;
-  // The smallest internal step an adaptive method may take, as a fraction of h; below it the
-  // step fails (a diverging or too demanding run must not loop forever).
+  /// The smallest internal step an adaptive method may take, as a fraction of h; below it the
+  /// step fails (a diverging or too demanding run must not loop forever).
   double min_step_fraction = 1e-6;
-  // implicit-euler: conjugate gradients stop when |r| <= solver_tolerance |b|. The step is a
-  // first-order, once-linearised approximation; at 1e-5 the solve changes cloth positions by
-  // 1e-4 of the method's own error (implicit_euler.cpp).
+  /// implicit-euler: conjugate gradients stop when |r| <= solver_tolerance |b|. The step is a
+  /// first-order, once-linearised approximation; at 1e-5 the solve changes cloth positions by
+  /// 1e-4 of the method's own error (implicit_euler.cpp).
   double solver_tolerance = 1e-5;
-  // implicit-euler: the most conjugate-gradient iterations a solve may take; 0: six times the
-  // particles (reached only when the system is ill-posed). The solver-error study sets it.
+  /// implicit-euler: the most conjugate-gradient iterations a solve may take; 0: six times the
+  /// particles (reached only when the system is ill-posed). The solver-error study sets it.
   int max_solver_iterations = 0;
-  // xpbd, local-global, vbd: iterations a step (xpbd: Gauss-Seidel passes over the springs, one
-  // a sub-step in the small-steps form); 0: the method's own default (xpbd 1, the others 10).
+  /// xpbd, local-global, vbd: iterations a step (xpbd: Gauss-Seidel passes over the springs, one
+  /// a sub-step in the small-steps form); 0: the method's own default (xpbd 1, the others 10).
   int iterations = 0;
-  // local-global: Chebyshev acceleration (Wang 2015) with this estimate of the plain
-  // iteration's spectral radius, in [0, 1); 0: off.
+  /// local-global: Chebyshev acceleration (Wang 2015) with this estimate of the plain
+  /// iteration's spectral radius, in [0, 1); 0: off.
   double chebyshev_rho = 0.0;
 };
 
-// Work done, summed over steps. The machine-independent cost of a run.
+/// Work done, summed over steps. The machine-independent cost of a run.
 struct Counters {
-  std::int64_t force_evals = 0;        // evaluations of f(x, v) over all particles
-  std::int64_t linear_solves = 0;      // implicit-euler: one per step
-  std::int64_t solver_iterations = 0;  // conjugate-gradient iterations
-  std::int64_t unconverged_solves = 0; // solves stopped by the iteration cap
-  std::int64_t accepted = 0;           // internal steps kept (h-steps for fixed-step methods)
-  std::int64_t rejected = 0;           // adaptive tries thrown away
+  std::int64_t force_evals = 0;        ///< evaluations of f(x, v) over all particles
+  std::int64_t linear_solves = 0;      ///< implicit-euler: one per step
+  std::int64_t solver_iterations = 0;  ///< conjugate-gradient iterations
+  std::int64_t unconverged_solves = 0; ///< solves stopped by the iteration cap
+  std::int64_t accepted = 0;           ///< internal steps kept (h-steps for fixed-step methods)
+  std::int64_t rejected = 0;           ///< adaptive tries thrown away
 };
 
 struct ImplicitSolver;    // implicit_euler.cpp
 struct IterativeSolvers;  // methods/iterative.hpp: xpbd, local-global, vbd
 struct StageSolvers;      // methods/tableau_steps.hpp: a diagonally implicit tableau's stages
 
-// Scratch memory and the little history some methods keep between steps. Allocated on first
-// use and reused, so a step allocates nothing once running.
+/// Scratch memory and the little history some methods keep between steps. Allocated on first
+/// use and reused, so a step allocates nothing once running.
 struct Workspace {
   Workspace();
   ~Workspace();
@@ -88,16 +89,16 @@ struct Workspace {
 
   Counters counters;
   SpringForces spring_forces;
-  std::vector<Points> kx, kv;    // Runge-Kutta stage derivatives (dx/dt, dv/dt), one a stage
-  Points tx, tv, ux, uv;         // stage and trial states
+  std::vector<Points> kx, kv;    ///< Runge-Kutta stage derivatives (dx/dt, dv/dt), one a stage
+  Points tx, tv, ux, uv;         ///< stage and trial states
 
-  // Verlet: the previous positions and a(x) at the current positions, valid while `verlet_ready`.
+  /// Verlet: the previous positions and a(x) at the current positions, valid while `verlet_ready`.
   Points x_prev, a_now;
   bool verlet_ready = false;
   double verlet_h = 0.0;
 
-  // Adaptive methods: the internal step to try next (0: start from h), and whether rk45's
-  // first-same-as-last derivative (ws.kx[0], ws.kv[0]) is that of the state it is given next.
+  /// Adaptive methods: the internal step to try next (0: start from h), and whether rk45's
+  /// first-same-as-last derivative (ws.kx[0], ws.kv[0]) is that of the state it is given next.
   double adaptive_step = 0.0;
   bool fsal_ready = false;
 
@@ -105,21 +106,21 @@ struct Workspace {
   std::unique_ptr<IterativeSolvers> iterative;
   std::unique_ptr<StageSolvers> stages;
 
-  // The check of the state a step made (energy.hpp), when the step made it itself: the explicit
-  // methods probe each block of particles as they finish it, while it is in cache, and sum the
-  // blocks in order (the same bits for any thread count). Cleared by step() before each step.
+  /// The check of the state a step made (energy.hpp), when the step made it itself: the explicit
+  /// methods probe each block of particles as they finish it, while it is in cache, and sum the
+  /// blocks in order (the same bits for any thread count). Cleared by step() before each step.
   std::vector<StepProbe> block_probes;
   std::optional<StepProbe> step_probe;
 
-  // Asked for (measure_power), the explicit methods measure in their force pass the power that
-  // damping and drag take out at the state they start from (dissipation_power(), energy.hpp), by
-  // blocks, summed in order. Cleared by step() before each step.
+  /// Asked for (measure_power), the explicit methods measure in their force pass the power that
+  /// damping and drag take out at the state they start from (dissipation_power(), energy.hpp), by
+  /// blocks, summed in order. Cleared by step() before each step.
   bool measure_power = false;
   std::vector<double> block_power;
   std::optional<double> input_power;
 
-  // The state or the model was changed from outside (contact, a drag, a parameter): forget what
-  // was derived from the last step. Counters and the adaptive step size are kept.
+  /// The state or the model was changed from outside (contact, a drag, a parameter): forget what
+  /// was derived from the last step. Counters and the adaptive step size are kept.
   void invalidate() {
     verlet_ready = false;
     fsal_ready = false;
@@ -128,73 +129,76 @@ struct Workspace {
 
 using StepFunction = void (*)(const Model& model, const State& in, State& out, double h,
                               const StepSettings& settings, Workspace& ws);
-// The step of a row made from a tableau (add_tableau_method): the same, given the row's tableau.
+/// The step of a row made from a tableau (add_tableau_method): the same, given the row's tableau.
 using TableauStepFunction = void (*)(const Tableau& tableau, const Model& model, const State& in, State& out,
                                      double h, const StepSettings& settings, Workspace& ws);
 
-// A step that cannot be completed (an adaptive step below its floor). The simulation reports it
-// as a divergence.
+/// A step that cannot be completed (an adaptive step below its floor). The simulation reports it
+/// as a divergence.
 struct StepFailure : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// How a method steps, which decides how its stability is found, drawn and watched.
+/// How a method steps, which decides how its stability is found, drawn and watched.
 enum class MethodFamily {
-  RungeKutta,   // explicit Runge-Kutta: its tableau gives R(z); a mode is stable while |R(h lambda)| <= 1
-  Partitioned,  // x and v in turn (no R(z)): a closed form per damped mode, the oscillator plane
-  Implicit,     // solves for the new state: A-stable, |R(z)| <= 1 on the whole left half plane
-  Adaptive,     // chooses its own steps: no fixed-step limit
-  // Solves the backward-Euler step approximately, by a fixed number of iterations (XPBD,
-  // local-global, vertex block descent): bounded at any step, with no R(z) of its own; what a
-  // large step costs is artificial damping and stretch, not stability.
+  RungeKutta,   ///< explicit Runge-Kutta: its tableau gives R(z); a mode is stable while |R(h lambda)| <= 1
+  Partitioned,  ///< x and v in turn (no R(z)): a closed form per damped mode, the oscillator plane
+  Implicit,     ///< solves for the new state: A-stable, |R(z)| <= 1 on the whole left half plane
+  Adaptive,     ///< chooses its own steps: no fixed-step limit
+  /// Solves the backward-Euler step approximately, by a fixed number of iterations (XPBD,
+  /// local-global, vertex block descent): bounded at any step, with no R(z) of its own; what a
+  /// large step costs is artificial damping and stretch, not stability.
   Iterative,
 };
 
-// The largest stable h on one damped mode x'' = -kappa x - gamma x', in closed form.
+/// The largest stable h on one damped mode x'' = -kappa x - gamma x', in closed form.
 using ModeLimit = double (*)(double gamma, double kappa, double verlet_damping);
 
-// A partitioned method whose modes are stable exactly while a h^2 kappa + b h gamma <= c: the
-// scene's limit is where a h^2 K^ + b h C^ first reaches c I (stability.cpp, definite_limit).
+/// A partitioned method whose modes are stable exactly while a h^2 kappa + b h gamma <= c: the
+/// scene's limit is where a h^2 K^ + b h C^ first reaches c I (stability.cpp, definite_limit).
 struct DefiniteForm {
   double a, b, c;
 };
 using DefiniteRule = DefiniteForm (*)(double verlet_damping);
 
+/// A row of the method table: a method's name, order, cost, family, what its stability needs
+/// (its tableau's R(z), a closed form, a definite form) and its step function. The app, the
+/// command line, the charts, the stability analysis and the tests all read these rows (methods()).
 struct MethodInfo {
   Method id;
-  const char* name;         // as typed on the command line
-  const char* label;        // as shown to people
-  int order;                // global order of accuracy in positions
-  const char* evaluations;  // force evaluations per step, as a sentence fragment
-  // Largest stable h * w on the undamped oscillator x'' = -w^2 x: 0 = never stable,
-  // infinity = always, NaN = not a fixed-step method (the step size is controlled).
+  const char* name;         ///< as typed on the command line
+  const char* label;        ///< as shown to people
+  int order;                ///< global order of accuracy in positions
+  const char* evaluations;  ///< force evaluations per step, as a sentence fragment
+  /// Largest stable h * w on the undamped oscillator x'' = -w^2 x: 0 = never stable,
+  /// infinity = always, NaN = not a fixed-step method (the step size is controlled).
   double undamped_limit;
-  const char* stability;  // one line: why, for the stability gauge
+  const char* stability;  ///< one line: why, for the stability gauge
   MethodFamily family;
   StepFunction step;
-  // Runge-Kutta and implicit rows: the tableau (R(z) in tableau.hpp, the region chart's edge).
+  /// Runge-Kutta and implicit rows: the tableau (R(z) in tableau.hpp, the region chart's edge).
   const Tableau* tableau = nullptr;
-  // Rows made from a tableau at run time step with this instead of `step`.
+  /// Rows made from a tableau at run time step with this instead of `step`.
   TableauStepFunction tableau_step = nullptr;
-  // The mode's limit in closed form where there is one (every partitioned row; for a
-  // Runge-Kutta row a shortcut the contract test holds to R(z)); otherwise from R(z).
+  /// The mode's limit in closed form where there is one (every partitioned row; for a
+  /// Runge-Kutta row a shortcut the contract test holds to R(z)); otherwise from R(z).
   ModeLimit mode_limit = nullptr;
-  // Partitioned rows: the definite form, if the limit is one; otherwise the least over the
-  // scene's numerical range, the damping seen as C^ + damping_shift h K^ (modified Euler: 1/2).
+  /// Partitioned rows: the definite form, if the limit is one; otherwise the least over the
+  /// scene's numerical range, the damping seen as C^ + damping_shift h K^ (modified Euler: 1/2).
   DefiniteRule definite = nullptr;
   double damping_shift = 0.0;
-  // Its mode limit is least at a corner of any box of (gamma, kappa) (monotone closed forms):
-  // the quick bound takes the corners, exact; otherwise a grid, with a margin.
+  /// Its mode limit is least at a corner of any box of (gamma, kappa) (monotone closed forms):
+  /// the quick bound takes the corners, exact; otherwise a grid, with a margin.
   bool corner_bound = false;
-  // The energy audit watches it (simulation.cpp, audited()): not where the divergence test
-  // sees instability at once (symplectic Euler, Verlet) nor the adaptive ones.
+  /// The energy audit watches it (simulation.cpp, audited()): not where the divergence test
+  /// sees instability at once (symplectic Euler, Verlet) nor the adaptive ones.
   bool audited = false;
 
   bool adaptive() const { return family == MethodFamily::Adaptive; }
   bool implicit() const { return family == MethodFamily::Implicit; }
-  // Stable at any step: no limit to find, no sub-steps to choose.
+  /// Stable at any step: no limit to find, no sub-steps to choose.
   bool any_step() const { return family == MethodFamily::Implicit || family == MethodFamily::Iterative; }
-  // Never stable without damping, so damping can buy a limit.
+  /// Never stable without damping, so damping can buy a limit.
   bool damping_helps() const { return undamped_limit == 0.0; }
 };
 
@@ -202,28 +206,28 @@ std::span<const MethodInfo> methods();
 const MethodInfo& method_info(Method method);
 std::optional<Method> find_method(std::string_view name);
 
-// A row made from a tableau read as data (springlab/butcher.hpp), added to the table for the rest
-// of the process, after the built-in rows: explicit tableaux step as RK4 does, diagonally
-// implicit ones solve each stage as an implicit Euler step (tableau_steps.cpp); the stability
-// analysis, the sub-steps, the gauge, the audit and the region chart read its R(z) as they read
-// RK4's. Its id is a Method past the enum's values. The same name and entries again give the
-// same row; the same name with other entries, a built-in's name, or more than 32 added rows
-// throw InputError. Rows are never removed (threads may be reading them).
+/// A row made from a tableau read as data (springlab/butcher.hpp), added to the table for the rest
+/// of the process, after the built-in rows: explicit tableaux step as RK4 does, diagonally
+/// implicit ones solve each stage as an implicit Euler step (tableau_steps.cpp); the stability
+/// analysis, the sub-steps, the gauge, the audit and the region chart read its R(z) as they read
+/// RK4's. Its id is a Method past the enum's values. The same name and entries again give the
+/// same row; the same name with other entries, a built-in's name, or more than 32 added rows
+/// throw InputError. Rows are never removed (threads may be reading them).
 Method add_tableau_method(const ButcherTableau& tableau, const std::string& name);
-// The tableau a row was made from (add_tableau_method); nullptr for a built-in row.
+/// The tableau a row was made from (add_tableau_method); nullptr for a built-in row.
 const ButcherTableau* tableau_source(Method method);
-// "euler, symplectic-euler, ..." for messages.
+/// "euler, symplectic-euler, ..." for messages.
 std::string method_names();
 
-// Advances `in` by h into `out` (which must not be `in`) with the method, counting the work.
+/// Advances `in` by h into `out` (which must not be `in`) with the method, counting the work.
 void step(Method method, const Model& model, const State& in, State& out, double h,
           const StepSettings& settings, Workspace& ws);
 
-// The iterations an iterative row (xpbd, local-global, vbd) takes a step: the setting, or the
-// method's own default (xpbd 1 pass, the others 10).
+/// The iterations an iterative row (xpbd, local-global, vbd) takes a step: the setting, or the
+/// method's own default (xpbd 1 pass, the others 10).
 int iterations_for(Method method, const StepSettings& settings);
 
-// One evaluation of the accelerations, counted.
+/// One evaluation of the accelerations, counted.
 void accelerations(const Model& model, const Points& x, const Points& v, Points& a, Workspace& ws);
 
 }  // namespace springlab

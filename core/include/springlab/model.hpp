@@ -22,17 +22,17 @@
 
 namespace springlab {
 
-// k_s and k_d shared by a group of springs (a cloth's stretch, shear and bend springs are three
-// materials). Setting "every spring's stiffness" sets every material's.
+/// k_s and k_d shared by a group of springs (a cloth's stretch, shear and bend springs are three
+/// materials). Setting "every spring's stiffness" sets every material's.
 struct SpringMaterial {
-  double ks = 0.0;  // stiffness, N/m
-  double kd = 0.0;  // damping along the spring, N s/m
+  double ks = 0.0;  ///< stiffness, N/m
+  double kd = 0.0;  ///< damping along the spring, N s/m
 };
 
-// A run of springs whose ends are consecutive particles: spring first + k joins particles
-// a0 + k and b0 + k, all with one material and one rest length. Generators produce long runs (a
-// rope is one span, a cloth's vertical springs are one span), which lets the force loop read
-// positions contiguously and vectorise. A lone spring is a span of length one.
+/// A run of springs whose ends are consecutive particles: spring first + k joins particles
+/// a0 + k and b0 + k, all with one material and one rest length. Generators produce long runs (a
+/// rope is one span, a cloth's vertical springs are one span), which lets the force loop read
+/// positions contiguously and vectorise. A lone spring is a span of length one.
 struct SpringSpan {
   std::int32_t first = 0;
   std::int32_t count = 0;
@@ -44,9 +44,9 @@ struct SpringSpan {
 
 struct PlaneCollider {
   Vec3 point = Vec3::Zero();
-  Vec3 normal = Vec3::UnitY();  // unit length
-  double friction = 0.0;        // Coulomb coefficient mu
-  double restitution = 0.0;     // fraction of the normal speed kept after impact
+  Vec3 normal = Vec3::UnitY();  ///< unit length
+  double friction = 0.0;        ///< Coulomb coefficient mu
+  double restitution = 0.0;     ///< fraction of the normal speed kept after impact
 };
 
 struct SphereCollider {
@@ -56,10 +56,14 @@ struct SphereCollider {
   double restitution = 0.0;
 };
 
+/// The Model: the constants of a scene, which change only through the functions below
+/// (parameters, and pinning). One array a quantity for the particles (inverse mass 0: pinned);
+/// springs as index pairs, rest lengths and materials, grouped into spans; forces, emitters and
+/// colliders. Positions and velocities live in the State (state.hpp), never here.
 struct Model {
   // Particles.
-  std::vector<double> mass;      // kg; kept for pinned particles too (drawing, un-pinning)
-  std::vector<double> inv_mass;  // 1/kg; 0 = pinned (moves only with its prescribed velocity)
+  std::vector<double> mass;      ///< kg; kept for pinned particles too (drawing, un-pinning)
+  std::vector<double> inv_mass;  ///< 1/kg; 0 = pinned (moves only with its prescribed velocity)
 
   // Springs, sorted by finalize() so that spans are long; a < b for every spring.
   std::vector<std::int32_t> spring_a;
@@ -67,12 +71,12 @@ struct Model {
   std::vector<double> rest_length;
   std::vector<std::uint16_t> spring_material;
   std::vector<SpringMaterial> materials;
-  std::vector<SpringSpan> spans;  // built by finalize()
+  std::vector<SpringSpan> spans;  ///< built by finalize()
 
   // Forces.
-  Vec3 gravity = Vec3::Zero();  // m/s^2
-  double drag = 0.0;            // global viscous drag k_drag: f = -k_drag (v - wind), N s/m
-  Vec3 wind = Vec3::Zero();     // m/s, the air's velocity
+  Vec3 gravity = Vec3::Zero();  ///< m/s^2
+  double drag = 0.0;            ///< global viscous drag k_drag: f = -k_drag (v - wind), N s/m
+  Vec3 wind = Vec3::Zero();     ///< m/s, the air's velocity
   std::vector<Attractor> attractors;
 
   std::vector<Emitter> emitters;
@@ -80,9 +84,9 @@ struct Model {
   // Colliders.
   std::vector<PlaneCollider> planes;
   std::vector<SphereCollider> spheres;
-  double particle_radius = 0.0;  // m: particles touch colliders at this distance
+  double particle_radius = 0.0;  ///< m: particles touch colliders at this distance
 
-  // The "damping" factor of position Verlet (the rope exercise): x1 = x + (1 - d)(x - x_prev) + ...
+  /// The "damping" factor of position Verlet (the rope exercise): x1 = x + (1 - d)(x - x_prev) + ...
   double verlet_damping = 0.0;
 
   int particle_count() const { return static_cast<int>(mass.size()); }
@@ -93,19 +97,19 @@ struct Model {
   bool has_colliders() const { return !planes.empty() || !spheres.empty(); }
 };
 
-// Building a model. Particles and springs may be added in any order; finalize() must be called
-// once after the last spring, before the model is simulated.
+/// Building a model. Particles and springs may be added in any order; finalize() must be called
+/// once after the last spring, before the model is simulated.
 int add_particle(Model& model, double mass, bool pinned);
 int add_material(Model& model, SpringMaterial material);
 void add_spring(Model& model, int a, int b, double rest_length, int material);
 
-// Sorts the springs (by material, then by b - a, then by rest length, then by a), orients them
-// a < b and groups them into spans. The order of springs after this is what every loop uses.
+/// Sorts the springs (by material, then by b - a, then by rest length, then by a), orients them
+/// a < b and groups them into spans. The order of springs after this is what every loop uses.
 void finalize(Model& model);
 
-// Parameter changes the app and the command line make (the only ways the model changes).
-void set_stiffness(Model& model, double ks);  // every material
-void set_damping(Model& model, double kd);    // every material
+/// Parameter changes the app and the command line make (the only ways the model changes).
+void set_stiffness(Model& model, double ks);  ///< every material
+void set_damping(Model& model, double kd);    ///< every material
 void set_pinned(Model& model, int particle, bool pinned);
 
 }  // namespace springlab

@@ -52,77 +52,81 @@ namespace springlab {
 
 // ---- One damped mode, x'' = -kappa x - gamma x' ------------------------------------------------
 
-// The largest h such that every step up to it keeps the method's spectral radius at most 1:
-// 0 = unstable at any step, infinity = at any step, NaN = the method chooses its own steps.
+/// The largest h such that every step up to it keeps the method's spectral radius at most 1:
+/// 0 = unstable at any step, infinity = at any step, NaN = the method chooses its own steps.
 double mode_limit(Method method, double gamma, double kappa, double verlet_damping = 0.0);
-// The same as a function of w = sqrt(kappa) and c = gamma.
+/// The same as a function of w = sqrt(kappa) and c = gamma.
 double stable_step(Method method, double w, double c, double verlet_damping = 0.0);
-// The first h > 0 with |R(h lambda)| > 1, for euler, midpoint and rk4 (NaN for the others).
+/// The first h > 0 with |R(h lambda)| > 1, for euler, midpoint and rk4 (NaN for the others).
 double runge_kutta_limit(Method method, std::complex<double> lambda);
-// Spectral radius of one step of size h on x'' = -w^2 x - c x', from the method's own step
-// function applied to that oscillator as it runs (Verlet with the history it keeps): what the
-// closed forms are checked against.
+/// Spectral radius of one step of size h on x'' = -w^2 x - c x', from the method's own step
+/// function applied to that oscillator as it runs (Verlet with the history it keeps): what the
+/// closed forms are checked against.
 double amplification(Method method, double w, double c, double h, double verlet_damping = 0.0);
-// The most a stable step can raise the mode's energy, over any number of steps: sup over n of
-// |S^n|^2 in the energy norm (kappa x^2 + v^2) / 2, S that step as a matrix. 1 for a normal
-// contraction; above 1 where S is far from normal (near critical damping, near a limit);
-// infinity where the mode grows (and for Verlet, whose state holds a history).
+/// The most a stable step can raise the mode's energy, over any number of steps: sup over n of
+/// |S^n|^2 in the energy norm (kappa x^2 + v^2) / 2, S that step as a matrix. 1 for a normal
+/// contraction; above 1 where S is far from normal (near critical damping, near a limit);
+/// infinity where the mode grows (and for Verlet, whose state holds a history).
 double transient_growth(Method method, double gamma, double kappa, double h, double verlet_damping = 0.0);
 
 // ---- The equilibrium ----------------------------------------------------------------------------
 
-// The static balance of the scene as it is now: positions where the springs and gravity are in
-// balance (colliders, drag and fields play no part), velocities zero. Gravity acts on the
-// particles joined by springs to a pinned one; a part with nothing pinned only relaxes its
-// springs (it would fall forever). Within budgets (equilibrium.cpp): a very large scene (over
-// 20000 free coordinates) is balanced by relaxation alone, to about 1e-3 of its springs' force
-// at 1 % strain.
+/// The static balance of the scene as it is now: positions where the springs and gravity are in
+/// balance (colliders, drag and fields play no part), velocities zero. Gravity acts on the
+/// particles joined by springs to a pinned one; a part with nothing pinned only relaxes its
+/// springs (it would fall forever). Within budgets (equilibrium.cpp): a very large scene (over
+/// 20000 free coordinates) is balanced by relaxation alone, to about 1e-3 of its springs' force
+/// at 1 % strain.
 State equilibrium(const Model& model, const State& state);
-// A lower bound on the total energy of the scene whose equilibrium is `rest` (above:
-// StabilityAnalysis::lowest_energy()).
+/// A lower bound on the total energy of the scene whose equilibrium is `rest` (above:
+/// StabilityAnalysis::lowest_energy()).
 double lowest_energy(const Model& model, const State& rest);
 
 // ---- A scene's limits ---------------------------------------------------------------------------
 
+/// The mode that sets a method's limit: one damped mode of the linearised scene.
 struct LimitingMode {
-  double w = 0.0;  // rad/s
-  double c = 0.0;  // 1/s, the damping rate: the mode decays as e^(-c t / 2)
-  double damping_ratio() const;  // c / (2 w)
-  Points shape;    // each particle's displacement in the mode, the largest of length 1
+  double w = 0.0;  ///< rad/s
+  double c = 0.0;  ///< 1/s, the damping rate: the mode decays as e^(-c t / 2)
+  double damping_ratio() const;  ///< c / (2 w)
+  Points shape;    ///< each particle's displacement in the mode, the largest of length 1
 };
 
+/// A method's largest stable step on a scene, exact or a lower bound, and the mode that sets it.
 struct StabilityLimit {
   Method method = Method::Euler;
-  // The largest stable step (s): 0 = unstable at any step, infinity = stable at any step,
-  // NaN = the method chooses its own steps.
+  /// The largest stable step (s): 0 = unstable at any step, infinity = stable at any step,
+  /// NaN = the method chooses its own steps.
   double h = 0.0;
-  bool exact = true;  // else h is a lower bound: stable at least up to h
+  bool exact = true;  ///< else h is a lower bound: stable at least up to h
   std::optional<LimitingMode> mode;
-  double residual = 0.0;  // of the limiting mode as an eigenvector (0: computed as one)
+  double residual = 0.0;  ///< of the limiting mode as an eigenvector (0: computed as one)
 };
 
-// "stable up to h = 0.0283 s", "stable at least up to h = ...", "unstable at any step (not
-// enough damping)", "stable at any step", "the method chooses its own step sizes".
+/// "stable up to h = 0.0283 s", "stable at least up to h = ...", "unstable at any step (not
+/// enough damping)", "stable at any step", "the method chooses its own step sizes".
 std::string describe(const StabilityLimit& limit);
 
-// A scene's stability, computed once (the expensive part: the equilibrium, the eigenvalues)
-// for every method; immutable, so it may be computed on one thread and read on another.
-// Free coordinates up to which every eigenvalue is computed (a dense eigen-solver on twice as
-// many: 0.2 s here at 240).
+/// Free coordinates up to which every eigenvalue is computed (a dense eigen-solver on twice as
+/// many: 0.2 s here at 240).
 inline constexpr int kDenseDofs = 240;
 
+/// A scene's stability, computed once (the expensive part: the equilibrium, the eigenvalues)
+/// for every method; immutable, so it may be computed on one thread and read on another.
+/// limit() gives each method's largest stable step, exact or a lower bound, with its limiting
+/// mode (frequency, damping ratio, shape).
 class StabilityAnalysis {
  public:
-  // `dense_dofs`: up to how many free coordinates every eigenvalue is computed (the tests make
-  // the large scenes' path run on small ones, to check it against the dense one). `cancel`, when
-  // set while it runs (from another thread), stops it within milliseconds (a factorisation
-  // under way is finished first): it is then cancelled() and says nothing.
+  /// `dense_dofs`: up to how many free coordinates every eigenvalue is computed (the tests make
+  /// the large scenes' path run on small ones, to check it against the dense one). `cancel`, when
+  /// set while it runs (from another thread), stops it within milliseconds (a factorisation
+  /// under way is finished first): it is then cancelled() and says nothing.
   StabilityAnalysis(const Model& model, const State& state, int dense_dofs = kDenseDofs,
                     const std::atomic<bool>* cancel = nullptr);
   bool cancelled() const { return cancelled_; }
 
-  // Whether the scene has oscillating modes (springs with stiffness on free particles); if not,
-  // why ("no springs", "every particle is pinned"), and the limits come from the drag alone.
+  /// Whether the scene has oscillating modes (springs with stiffness on free particles); if not,
+  /// why ("no springs", "every particle is pinned"), and the limits come from the drag alone.
   bool oscillates() const { return oscillates_; }
   const std::string& no_modes_reason() const { return no_modes_; }
   double w_max() const { return w_max_; }    // rad/s, the highest frequency (undamped)
@@ -133,26 +137,26 @@ class StabilityAnalysis {
 
   const StabilityLimit& limit(Method method) const;
 
-  // What the energy audit (energy_audit.hpp) allows a stable run: over the scene's modes (dense
-  // scenes: every eigenpair; large ones: the traced boundary of W), the largest transient growth
-  // of those the method at step h keeps stable, and how many it does not.
+  /// What the energy audit (energy_audit.hpp) allows a stable run: over the scene's modes (dense
+  /// scenes: every eigenpair; large ones: the traced boundary of W), the largest transient growth
+  /// of those the method at step h keeps stable, and how many it does not.
   struct Growth {
     double factor = 1.0;
     int growing = 0;
   };
   Growth transient_growth(Method method, double h, double verlet_damping = 0.0) const;
-  // A lower bound on the scene's total energy: the equilibrium's for the parts held by a pin (the
-  // least potential near it), springs at rest and each particle on the lowest floor for the parts
-  // that are not; -infinity when nothing bounds it (a part that can fall forever, a field).
+  /// A lower bound on the scene's total energy: the equilibrium's for the parts held by a pin (the
+  /// least potential near it), springs at rest and each particle on the lowest floor for the parts
+  /// that are not; -infinity when nothing bounds it (a part that can fall forever, a field).
   double lowest_energy() const { return lowest_energy_; }
-  // The RMS stretch of the springs at the equilibrium (iterative_cost.hpp): what an iterative
-  // method's settled stretch is measured against.
+  /// The RMS stretch of the springs at the equilibrium (iterative_cost.hpp): what an iterative
+  /// method's settled stretch is measured against.
   double rest_stretch() const { return rest_stretch_; }
 
-  // For the stability-region chart. The eigenvalues of the first-order system (dense scenes:
-  // all of them; large ones: none). The modes as (gamma, kappa) points: dense scenes, one per
-  // eigenvalue (gamma = -2 Re lambda, kappa = |lambda|^2 for a complex pair; a real pair as
-  // one point); large scenes, the traced boundary of W, within which every mode lies.
+  /// For the stability-region chart. The eigenvalues of the first-order system (dense scenes:
+  /// all of them; large ones: none). The modes as (gamma, kappa) points: dense scenes, one per
+  /// eigenvalue (gamma = -2 Re lambda, kappa = |lambda|^2 for a complex pair; a real pair as
+  /// one point); large scenes, the traced boundary of W, within which every mode lies.
   struct ModePoint {
     double gamma = 0.0, kappa = 0.0;
   };
@@ -182,57 +186,57 @@ class StabilityAnalysis {
 
 // ---- A quick bound, while the analysis runs -------------------------------------------------------
 
-// A step every mode of the scene as it is takes stably, from bounds that cost one pass over the
-// springs (no equilibrium, no eigenvalues: milliseconds on a 128 x 128 cloth). Every mode's
-// (gamma, kappa) lies in the rectangle [gamma_lo, gamma_hi] x [0, kappa_hi]: kappa_hi and gamma_hi
-// Gershgorin's bounds on K^ and C^ at this state, gamma_lo the drag's least rate k_drag / m. The
-// limit is the least over that rectangle: at its corners for the methods whose mode limit is
-// monotone along each edge (euler, modified-euler, symplectic-euler, verlet: proven), and for
-// midpoint and rk4 the least over a grid of it, less a tenth. Never above the analysis' limit;
-// often well below it (the rectangle holds more than the modes). 0 where it cannot tell (no
-// drag, for the methods that need damping).
+/// A step every mode of the scene as it is takes stably, from bounds that cost one pass over the
+/// springs (no equilibrium, no eigenvalues: milliseconds on a 128 x 128 cloth). Every mode's
+/// (gamma, kappa) lies in the rectangle [gamma_lo, gamma_hi] x [0, kappa_hi]: kappa_hi and gamma_hi
+/// Gershgorin's bounds on K^ and C^ at this state, gamma_lo the drag's least rate k_drag / m. The
+/// limit is the least over that rectangle: at its corners for the methods whose mode limit is
+/// monotone along each edge (euler, modified-euler, symplectic-euler, verlet: proven), and for
+/// midpoint and rk4 the least over a grid of it, less a tenth. Never above the analysis' limit;
+/// often well below it (the rectangle holds more than the modes). 0 where it cannot tell (no
+/// drag, for the methods that need damping).
 StabilityLimit quick_limit(Method method, const Model& model, const State& state);
 
 // ---- Automatic sub-steps ------------------------------------------------------------------------
 
-// The fraction of a method's stated limit the automatic sub-steps keep h within, unless a scene
-// says otherwise ("safety": a scene made to show a divergence gives one above 1). A half: the
-// limit is that of small motions about the equilibrium, and a rope that whips or a cloth that
-// swings stretches its springs beyond their hanging tension (the fastest sideways modes of a
-// swinging rope run up to twice as fast as at rest).
+/// The fraction of a method's stated limit the automatic sub-steps keep h within, unless a scene
+/// says otherwise ("safety": a scene made to show a divergence gives one above 1). A half: the
+/// limit is that of small motions about the equilibrium, and a rope that whips or a cloth that
+/// swings stretches its springs beyond their hanging tension (the fastest sideways modes of a
+/// swinging rope run up to twice as fast as at rest).
 inline constexpr double kSafeFraction = 0.5;
-// The most sub-steps the automatic choice takes (a stiff chain under explicit Euler would want
-// millions a frame); reaching it is said.
+/// The most sub-steps the automatic choice takes (a stiff chain under explicit Euler would want
+/// millions a frame); reaching it is said.
 inline constexpr int kMaxAutoSubsteps = 10000;
 
 struct SubstepChoice {
   int substeps = 1;
-  // The limit wanted more than the cap, or is 0 (unstable at any step: then no number of
-  // sub-steps helps, and the choice is 1).
+  /// The limit wanted more than the cap, or is 0 (unstable at any step: then no number of
+  /// sub-steps helps, and the choice is 1).
   bool capped = false;
 };
-// The fewest sub-steps n with dt / n <= fraction * limit.h (1 when the method is stable at any
-// step or chooses its own steps).
+/// The fewest sub-steps n with dt / n <= fraction * limit.h (1 when the method is stable at any
+/// step or chooses its own steps).
 SubstepChoice choose_substeps(const StabilityLimit& limit, double dt, double fraction,
                               int cap = kMaxAutoSubsteps);
 
 // ---- Measured by runs ---------------------------------------------------------------------------
 
-// The largest step at which the method's own runs hold, found by bisection on h: each run starts
-// at the scene's equilibrium (colliders and fields left out) with a tiny random push (the linear
-// regime) and counts as unstable when its energy grows a thousandfold. A run is as long as the
-// mode `expected` names needs to grow 1e9-fold just past the bracket, within a budget of work
-// (particle- and spring-steps; 2e8 is about a second here), a probe at most a twentieth of it;
-// the bracket stops narrowing where runs would have to be longer or the budget is spent, and
-// `resolution` says how far it got. 0 = unstable from h w = 0.3 (or guess / 1000) down,
-// infinity = stable past 1000 guess, NaN for the adaptive methods.
+/// The largest step at which the method's own runs hold, found by bisection on h: each run starts
+/// at the scene's equilibrium (colliders and fields left out) with a tiny random push (the linear
+/// regime) and counts as unstable when its energy grows a thousandfold. A run is as long as the
+/// mode `expected` names needs to grow 1e9-fold just past the bracket, within a budget of work
+/// (particle- and spring-steps; 2e8 is about a second here), a probe at most a twentieth of it;
+/// the bracket stops narrowing where runs would have to be longer or the budget is spent, and
+/// `resolution` says how far it got. 0 = unstable from h w = 0.3 (or guess / 1000) down,
+/// infinity = stable past 1000 guess, NaN for the adaptive methods.
 struct MeasuredLimit {
   double h = 0.0;
-  // Relative: the bracket's width, or how far past a limit growth is too slow for the runs to
-  // see, whichever is larger. The true limit is within it of h.
+  /// Relative: the bracket's width, or how far past a limit growth is too slow for the runs to
+  /// see, whichever is larger. The true limit is within it of h.
   double resolution = 0.0;
 };
-// `w_max` sets the scale when the expected limit has no mode (0 or infinity).
+/// `w_max` sets the scale when the expected limit has no mode (0 or infinity).
 MeasuredLimit measured_limit(Method method, const Model& model, const State& state, const StabilityLimit& expected,
                              double w_max, const StepSettings& settings = {}, double budget = 2e8);
 

@@ -13,16 +13,16 @@ namespace detail {
 using PointsMap = Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 3>, Eigen::Aligned64, Eigen::OuterStride<>>;
 }
 
-// N x 3 doubles (positions, velocities, forces), column-major: x | y | z. Its columns are not N
-// doubles apart but a whole number of 64-byte lines, 168 more than a multiple of 512 (about a
-// third of a 4 KiB page): columns exactly a multiple of 4 KiB apart, as N x 3 gives whenever N is
-// a multiple of 512 (a 64 x 64 cloth), map x[i], y[i] and z[i] to one set of every cache, and the
-// force loop, which reads them together with another particle's and with the velocities, evicts
-// its own data (a 512 x 512 cloth stepped half as fast per spring as a 500 x 500 one).
-//
-// An Eigen::Map over storage it owns: in expressions it is the Map (no copy); copying,
-// assigning and resize() work as for an Eigen::Matrix<double, Dynamic, 3>. The columns are
-// contiguous one by one, not together: use col(c).data(), never data() over all 3 N.
+/// N x 3 doubles (positions, velocities, forces), column-major: x | y | z. Its columns are not N
+/// doubles apart but a whole number of 64-byte lines, 168 more than a multiple of 512 (about a
+/// third of a 4 KiB page): columns exactly a multiple of 4 KiB apart, as N x 3 gives whenever N is
+/// a multiple of 512 (a 64 x 64 cloth), map x[i], y[i] and z[i] to one set of every cache, and the
+/// force loop, which reads them together with another particle's and with the velocities, evicts
+/// its own data (a 512 x 512 cloth stepped half as fast per spring as a 500 x 500 one).
+///
+/// An Eigen::Map over storage it owns: in expressions it is the Map (no copy); copying,
+/// assigning and resize() work as for an Eigen::Matrix<double, Dynamic, 3>. The columns are
+/// contiguous one by one, not together: use col(c).data(), never data() over all 3 N.
 class Points : public detail::PointsMap {
  public:
   using Base = detail::PointsMap;
@@ -50,7 +50,7 @@ class Points : public detail::PointsMap {
     return *this;
   }
 
-  // Contents are kept only when the size does not change, as Eigen's resize().
+  /// Contents are kept only when the size does not change, as Eigen's resize().
   void resize(Eigen::Index rows, Eigen::Index cols = 3);
   using Base::setZero;
   Points& setZero(Eigen::Index rows, Eigen::Index cols) {
@@ -60,7 +60,7 @@ class Points : public detail::PointsMap {
   }
   void swap(Points& other) noexcept;
 
-  // The distance between the columns, in doubles, for N rows.
+  /// The distance between the columns, in doubles, for N rows.
   static Eigen::Index column_stride(Eigen::Index rows);
 
  private:
@@ -81,10 +81,12 @@ class Points : public detail::PointsMap {
   std::unique_ptr<double[], Free> storage_;
 };
 
+/// The State: what an integrator advances: positions and velocities (Points, N x 3, row i is
+/// particle i) and the time.
 struct State {
-  Points x;        // positions, m
-  Points v;        // velocities, m/s
-  double t = 0.0;  // time, s
+  Points x;        ///< positions, m
+  Points v;        ///< velocities, m/s
+  double t = 0.0;  ///< time, s
 
   int particle_count() const { return static_cast<int>(x.rows()); }
   void resize(int n) {
@@ -93,8 +95,8 @@ struct State {
   }
 };
 
-// A hash of the exact bits of a state (positions, velocities and time): equal hashes mean
-// bit-identical states. FNV-1a over the raw doubles.
+/// A hash of the exact bits of a state (positions, velocities and time): equal hashes mean
+/// bit-identical states. FNV-1a over the raw doubles.
 std::uint64_t state_hash(const State& state);
 
 bool all_finite(const State& state);
