@@ -9,7 +9,7 @@ const puppeteer = require("puppeteer-core");
 
 const types = {
   ".html": "text/html", ".js": "text/javascript", ".wasm": "application/wasm", ".data": "application/octet-stream",
-  ".png": "image/png", ".json": "application/json",
+  ".png": "image/png", ".json": "application/json", ".webmanifest": "application/manifest+json",
 };
 
 // Serves `dir` on 127.0.0.1 at a free port; resolves to { server, base }.
@@ -28,25 +28,32 @@ function serve(dir) {
     resolve({ server, base: `http://127.0.0.1:${server.address().port}` })));
 }
 
+// The host name an insecure origin is tried at (mapped to loopback): not localhost nor 127.0.0.1, so
+// a page there is not a secure context and has no service worker.
+const insecureHost = "springlab-insecure.test";
+
 function launch() {
   return puppeteer.launch({
     executablePath: process.env.CHROMIUM || "/usr/bin/chromium",
     headless: "new",
     args: ["--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--window-size=1280,720",
-           "--disable-dev-shm-usage"],
+           "--disable-dev-shm-usage", `--host-resolver-rules=MAP ${insecureHost} 127.0.0.1`],
   });
 }
 
 // Every console error and uncaught exception of every page, for the final check.
 const consoleErrors = [];
 
-// Opens the app at `fragment` (without '#') and waits for its first frames.
-async function openApp(browser, base, fragment, { width = 1280, height = 720, scale = 1, touch = false } = {}) {
+// Opens the app at `fragment` (without '#') and waits for its first frames. `browser` may be a
+// browser context; `query` goes after index.html ('?...'); `offline` cuts the page's network first.
+async function openApp(browser, base, fragment, { width = 1280, height = 720, scale = 1, touch = false, query = "",
+                                                  offline = false } = {}) {
   const page = await browser.newPage();
   await page.setViewport({ width, height, deviceScaleFactor: scale, hasTouch: touch });
   page.on("console", (m) => { if (m.type() === "error") consoleErrors.push(`${fragment}: ${m.text()}`); });
   page.on("pageerror", (e) => consoleErrors.push(`${fragment}: ${e.message}`));
-  await page.goto(`${base}/index.html${fragment ? "#" + fragment : ""}`);
+  if (offline) await page.setOfflineMode(true);
+  await page.goto(`${base}/index.html${query}${fragment ? "#" + fragment : ""}`);
   await page.waitForFunction("window.springlabReady === true", { timeout: 60000 });
   await waitFrames(page, 5);
   return page;
@@ -175,4 +182,4 @@ async function pixels(browser, png) {
   return out;
 }
 
-module.exports = { serve, launch, openApp, status, waitFrames, key, pauseAtStart, compareImages, pixels, consoleErrors };
+module.exports = { serve, launch, insecureHost, openApp, status, waitFrames, key, pauseAtStart, compareImages, pixels, consoleErrors };
