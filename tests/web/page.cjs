@@ -7,6 +7,29 @@ const http = require("http");
 const path = require("path");
 const puppeteer = require("puppeteer-core");
 
+// puppeteer-core 22 numbers each CDP session's commands on their own, and Chromium answers a command
+// sent to a session that has just closed without the session's id ("Session with given id not
+// found."): puppeteer then takes it for the browser connection's own command of the same number, and
+// that command fails (a newPage did so: "Protocol error (Target.createTarget): Session with given id
+// not found"; crbug.com/1463459, fixed in puppeteer 24 by numbering all commands together, #13910).
+// Pages with a service worker (sw.js) make it frequent: their worker attaches to them and is detached
+// as they close. The connection's own commands name no session, so such an answer is never theirs:
+// it is dropped here (the closed session's commands have failed already, as it closed).
+try {
+  const { Connection } = require("puppeteer-core/internal/cdp/Connection.js");
+  const onMessage = Connection.prototype.onMessage;
+  Connection.prototype.onMessage = function (message) {
+    if (message.includes('"code":-32001')) {
+      const object = JSON.parse(message);
+      if (!object.sessionId && object.id !== undefined && /Session with given id not found/.test(object.error?.message))
+        return Promise.resolve();
+    }
+    return onMessage.call(this, message);
+  };
+} catch (e) {
+  // (Another puppeteer: without the fix.)
+}
+
 const types = {
   ".html": "text/html", ".js": "text/javascript", ".wasm": "application/wasm", ".data": "application/octet-stream",
   ".png": "image/png", ".json": "application/json", ".webmanifest": "application/manifest+json",
