@@ -2,7 +2,7 @@
 // viewport, the time from the page's start to the app's first frame (cold: a fresh profile, the
 // files from loopback; the median of 3 pages), the frames a second it then shows (after 2 s, over 5 s) with the time a
 // frame spends simulating and drawing, and the layout (window.springlabLayout): the scene's
-// rectangle and the panels shown, in CSS pixels. Nothing is asserted. About a minute.
+// rectangle and the panels shown, in CSS pixels. Nothing is asserted. About a minute and a half.
 //   scripts/web.sh && tests/web/node.sh bench/web/viewports.cjs [LINK]
 "use strict";
 const path = require("path");
