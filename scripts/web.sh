@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # springlab in the browser: installs what is missing (Debian's emscripten, Chromium and Node's
 # npm; Dear ImGui's sources from Debian's source package), builds the app for WebAssembly +
-# WebGL2 and writes the static site into build-web/: index.html, springlab.js, springlab.wasm and
-# springlab.data, which any static web host serves as they are (the build tree is build-web/_build).
+# WebGL2 and writes the static site into build-web/: index.html, springlab.js, springlab.wasm,
+# springlab.data, and for offline use and a phone's home screen sw.js (the service worker),
+# manifest.webmanifest and two icons, which any static web host serves as they are (the build tree
+# is build-web/_build).
 # Usage: scripts/web.sh            build, and print the site's size
 #        scripts/web.sh --serve    build, then serve build-web/ on http://127.0.0.1:PORT/ (PORT: 8765,
 #                                  or $SPRINGLAB_WEB_PORT) until Ctrl-C
@@ -66,7 +68,7 @@ if [[ ! -f "$build/build.ninja" ]]; then
 fi
 cmake --build "$build" --parallel "$(nproc)"
 
-files=(index.html springlab.js springlab.wasm springlab.data)
+files=(index.html springlab.js springlab.wasm springlab.data sw.js manifest.webmanifest icon-192.png icon-512.png)
 bytes=0 gz=0
 for f in "${files[@]}"; do
   bytes=$((bytes + $(stat -c %s "$site/$f")))
@@ -74,6 +76,7 @@ for f in "${files[@]}"; do
 done
 awk -v b="$bytes" -v g="$gz" -v f="${files[*]}" \
   'BEGIN { printf "web.sh: build-web/ holds the site (%s): %.2f MB, %.2f MB gzipped\n", f, b / 1e6, g / 1e6 }'
+sed -n 's/^const CACHE = "\(.*\)";$/web.sh: its service worker keeps it offline in the cache \1/p' "$site/sw.js"
 
 case "$mode" in
   --serve)

@@ -14,6 +14,7 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
+#include <imgui_internal.h>  // (the list of windows, for springlab_layout)
 
 #include <algorithm>
 #include <cmath>
@@ -55,7 +56,9 @@ struct Page {
   long frames = 0;
   double frame_ms = 0.0;  // the last frame's whole time in the app (the browser composites after)
   ImVec4 copy_button;  // where Copy link is (x, y, width, height), for the page's tests
-  draw::Viewport scene;  // where the scene is drawn (CSS pixels from the top left), for the tests
+  draw::Viewport scene;  // where the scene is drawn (window pixels from the top left), for the tests
+  double css_width = 0, css_height = 0;  // the canvas's CSS box, as the last frame was laid out in
+  int win_width = 0, win_height = 0;  // and its size in window pixels (the panels' units)
 };
 Page* g_page = nullptr;
 
@@ -70,6 +73,8 @@ void set_ui_scale(Page& page, double scale) {
 void fit_canvas(Page& page) {
   double css_w = 0, css_h = 0;
   emscripten_get_element_css_size("#canvas", &css_w, &css_h);
+  page.css_width = css_w;
+  page.css_height = css_h;
   const double ratio = std::clamp(emscripten_get_device_pixel_ratio(), 0.5, 4.0);
   const int w = std::max(1, static_cast<int>(std::lround(css_w * ratio)));
   const int h = std::max(1, static_cast<int>(std::lround(css_h * ratio)));
@@ -133,6 +138,8 @@ void frame() {
   page.app->frame(size);
   page.frame_ms = emscripten_get_now() - start;
   page.scene = ui::scene_viewport(page.app->ui(), size.win_width, size.win_height);
+  page.win_width = size.win_width;
+  page.win_height = size.win_height;
   if (page.app->take_opened()) page.sets.clear();  // another scene, opened as its file says
   if (++page.frames == 1) first_frame_shown();
 }
@@ -252,6 +259,45 @@ EMSCRIPTEN_KEEPALIVE const char* springlab_status() {
     json += number;
   }
   json += "]}";
+  return json.c_str();
+}
+
+// Where the last frame drew the scene and each panel, in CSS pixels from the canvas's top left, as
+// JSON for the page's tests of layouts (index.html: window.springlabLayout()): {"scene":[x,y,w,h],
+// "panels":[[x,y,w,h],...],"names":[...],"canvas":[w,h]}. The panels are Dear ImGui's windows shown
+// in that frame, without child windows, tooltips and its implicit "Debug" window; the app lays
+// them out in window pixels (the CSS box times the pixel ratio), divided back here.
+EMSCRIPTEN_KEEPALIVE const char* springlab_layout() {
+  using namespace springlab::app::web;
+  static std::string json;
+  if (!g_page || g_page->win_width <= 0 || g_page->win_height <= 0) return "{}";
+  const Page& page = *g_page;
+  const double sx = page.css_width / page.win_width, sy = page.css_height / page.win_height;
+  char number[160];
+  const auto rect = [&](double x, double y, double w, double h) {
+    std::snprintf(number, sizeof number, "[%.6g,%.6g,%.6g,%.6g]", x * sx, y * sy, w * sx, h * sy);
+    return std::string(number);
+  };
+  const springlab::draw::Viewport& v = page.scene;
+  json = "{\"scene\":" + rect(v.x, v.y, v.width, v.height) + ",\"panels\":[";
+  std::string names;
+  for (const ImGuiWindow* w : ImGui::GetCurrentContext()->Windows) {
+    // (Between frames, Active is whether the last frame submitted the window.)
+    if (!w->Active || w->Hidden || w->IsFallbackWindow ||
+        (w->Flags & (ImGuiWindowFlags_ChildWindow | ImGuiWindowFlags_Tooltip)))
+      continue;
+    if (!names.empty()) json += ",";
+    json += rect(w->Pos.x, w->Pos.y, w->Size.x, w->Size.y);
+    names += names.empty() ? "\"" : ",\"";
+    for (const char* c = w->Name; *c; ++c) {
+      if (*c == '"' || *c == '\\') names += '\\';
+      if (static_cast<unsigned char>(*c) >= 0x20) names += *c;
+    }
+    names += "\"";
+  }
+  std::snprintf(number, sizeof number, "],\"canvas\":[%.6g,%.6g]", page.css_width, page.css_height);
+  json += number;
+  json += ",\"names\":[" + names + "]}";
   return json.c_str();
 }
 

@@ -1,15 +1,17 @@
 // springlab in a real browser: serves build-web/ on loopback, drives Debian's Chromium headlessly
 // (WebGL2 on SwiftShader) and checks the app as a user meets it, then runs the core's tests
 // compiled to WebAssembly. Prints a line per check; exits with the number of failures.
-//   node tests/web/browser_test.cjs [check name filter]
+//   node tests/web/browser_test.cjs [check name filter]   (a part of the checks' names; a|b: either)
 // Screenshots and diff images go to build-web/_build/web-test/; SPRINGLAB_UPDATE_GOLDENS=1 writes
 // the golden images (tests/web/golden/) instead of comparing with them (look at them first).
 "use strict";
+const crypto = require("crypto");
+const { execFileSync } = require("child_process");
 const fs = require("fs");
 const os = require("os");
 const path = require("path");
-const { serve, launch, openApp, status, waitFrames, key, pauseAtStart, compareImages, pixels, consoleErrors } =
-  require("./page.cjs");
+const { serve, launch, insecureHost, openApp, status, waitFrames, key, pauseAtStart, compareImages, pixels,
+        consoleErrors } = require("./page.cjs");
 
 const root = path.resolve(__dirname, "../..");
 const site = path.join(root, "build-web");
@@ -348,6 +350,254 @@ check("a lesson link teaches it: next and back, the class takes over, it resumes
   await bad.close();
 });
 
+// --- Offline once opened (sw.js, app/web/site.cmake) ---------------------------------------------
+
+// The service worker's cache name and files in a site's sw.js.
+function serviceWorkerOf(dir) {
+  const text = fs.readFileSync(path.join(dir, "sw.js"), "utf8");
+  const cache = text.match(/^const CACHE = "(springlab-[0-9a-f]{16})";$/m);
+  const files = text.match(/^const FILES = (\[[^\]]*\]);$/m);
+  expect(cache && files, `${dir}/sw.js has no cache name or files`);
+  return { cache: cache[1], files: JSON.parse(files[1]) };
+}
+const sha256 = (data) => crypto.createHash("sha256").update(data).digest("hex");
+
+// The app running in a page: its clocks go on.
+async function runs(page, what) {
+  const s1 = await status(page);
+  await waitFrames(page, 5);
+  const s2 = await status(page);
+  expect(s2.lanes.every((l, i) => l.t > s1.lanes[i].t), `${what}: the app does not run: ${JSON.stringify(s2)}`);
+  return s2;
+}
+
+// The checks of service workers run in a Chromium of their own (launched in about a second): in the
+// one the other checks have used (many pages opened and closed, each with its service worker), a
+// new build's service worker started only about a minute after the visit that found it (in 4 runs
+// of 4, none in a Chromium of its own), which made that check take 65 s instead of 8.
+function inOwnBrowser(run) {
+  return async () => {
+    const browser = await launch();
+    try {
+      await run({ browser });
+    } finally {
+      await browser.close();
+    }
+  };
+}
+
+check("offline once opened: a reload and another link run with the network cut", inOwnBrowser(async ({ browser }) => {
+  // A server of its own (a new origin, so nothing registered by the other checks) in a fresh
+  // profile, stopped to cut the network (and the pages set offline: either alone would do).
+  const own = await serve(site);
+  const context = await browser.createBrowserContext();
+  try {
+    const page = await openApp(context, own.base, "scene=rope");
+    const active = await page.evaluate(async () => {
+      const activated = (async () => {
+        const worker = (await navigator.serviceWorker.ready).active;
+        if (worker.state !== "activated")
+          await new Promise((resolve) => worker.addEventListener("statechange", () => worker.state === "activated" && resolve()));
+        return worker.state;
+      })();
+      const state = await Promise.race([activated, new Promise((resolve) => setTimeout(() => resolve("not active in 30 s"), 30000))]);
+      return { state, caches: await caches.keys() };
+    });
+    expect(active.state === "activated", `the service worker: ${active.state}`);
+    const { cache } = serviceWorkerOf(site);
+    expect(active.caches.length === 1 && active.caches[0] === cache, `caches ${active.caches}, sw.js names ${cache}`);
+    own.server.close();
+    own.server.closeAllConnections();
+    await page.setOfflineMode(true);
+    await page.reload();
+    await page.waitForFunction("window.springlabReady === true", { timeout: 30000 });
+    let s = await runs(page, "reloaded offline");
+    expect(s.scene === "rope", `reloaded offline: ${s.scene}`);
+    expect(await page.evaluate(() => navigator.serviceWorker.controller !== null), "the reloaded page has no service worker");
+    await page.close();
+    // Another link, with a query as a home-screen or shared link may have.
+    const other = await openApp(context, own.base, "scene=spring&method=rk4", { offline: true, query: "?from=home" });
+    s = await runs(other, "another link offline");
+    expect(s.scene === "spring" && s.method === "rk4" && s.message === "", `another link offline: ${JSON.stringify(s)}`);
+    await other.close();
+  } finally {
+    await context.close();
+    own.server.close();
+  }
+}));
+
+check("offline: the cache is named by the site's files", async ({ browser }) => {
+  // The built site: sw.js names every file as it is now (none stale) and the cache after them all.
+  const built = serviceWorkerOf(site);
+  const assets = built.files.find((f) => f.url.startsWith("springlab.js?v=")).url.split("?v=")[1];
+  for (const { url, sha256: hash } of built.files) {
+    expect(url === "index.html" || url.endsWith("?v=" + assets), `${url} is not asked for by the assets' version ${assets}`);
+    expect(sha256(fs.readFileSync(path.join(site, url.split("?")[0]))) === hash, `sw.js is stale for ${url}`);
+  }
+  const lines = built.files.map((f) => `${f.url.split("?")[0]} ${f.sha256}\n`).join("") +
+                `sw.js.in ${sha256(fs.readFileSync(path.join(root, "app/web/sw.js")))}\n`;
+  expect(built.cache === "springlab-" + sha256(lines).slice(0, 16), `${built.cache}: not the hash of the files`);
+  // The build's step on a site of its own: the same files give the same name, any changed file another.
+  const tmp = fs.mkdtempSync(path.join(os.tmpdir(), "springlab-site-"));
+  try {
+    const names = ["springlab.js", "springlab.wasm", "springlab.data", "icon-192.png", "icon-512.png"];
+    for (const n of names) fs.writeFileSync(path.join(tmp, n), n);
+    const version = () => {
+      execFileSync("cmake", [`-DSITE=${tmp}`, `-DSOURCE=${path.join(root, "app/web")}`, "-P",
+                             path.join(root, "app/web/site.cmake")], { stdio: "pipe" });
+      const page = fs.readFileSync(path.join(tmp, "index.html"), "utf8").match(/springlab\.js\?v=([0-9a-f]{16})/);
+      expect(page, "index.html does not ask for springlab.js by its version");
+      return [serviceWorkerOf(tmp).cache, page[1]];
+    };
+    const first = version();
+    expect(version().join() === first.join(), "the same files gave another cache name");
+    let previous = first;
+    for (const n of names) {
+      fs.appendFileSync(path.join(tmp, n), "+");
+      const next = version();
+      expect(next[0] !== previous[0] && next[1] !== previous[1], `changing ${n} left the cache name ${next[0]}`);
+      previous = next;
+    }
+  } finally {
+    fs.rmSync(tmp, { recursive: true, force: true });
+  }
+});
+
+// The service worker's state and the caches, seen from a page: with `update`, checks for a new
+// sw.js first (as the browser does after a visit, in its own time); then waits (up to 30 s) while a
+// worker is installing or activating.
+async function serviceWorkerState(page, update = false) {
+  return page.evaluate(async (update) => {
+    const registration = await navigator.serviceWorker.getRegistration();
+    if (registration && update) await registration.update().catch(() => {});
+    const start = performance.now();
+    const busy = () => registration && (registration.installing || registration.waiting ||
+                                         (registration.active && registration.active.state !== "activated"));
+    while (busy() && performance.now() - start < 30000) await new Promise((resolve) => setTimeout(resolve, 100));
+    return { active: !!(registration && registration.active), busy: !!busy(), caches: await caches.keys(),
+             controlled: navigator.serviceWorker.controller !== null,
+             version: document.querySelector("script[src^='springlab.js']").src.split("?v=")[1] };
+  }, update);
+}
+
+check("offline: a new build replaces the cache, and half of one is refused", inOwnBrowser(async ({ browser }) => {
+  // A site of its own: this build's springlab.js, .wasm and .data, icons of its own, and the page,
+  // manifest and sw.js written by app/web/site.cmake as the build does; "publishing" a new build
+  // changes an icon and runs site.cmake again.
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), "springlab-builds-"));
+  const own = await serve(dir);
+  const context = await browser.createBrowserContext();
+  try {
+    for (const f of ["springlab.js", "springlab.wasm", "springlab.data"]) fs.symlinkSync(path.join(site, f), path.join(dir, f));
+    for (const f of ["icon-192.png", "icon-512.png"]) fs.copyFileSync(path.join(site, f), path.join(dir, f));
+    const publish = (icon) => {
+      if (icon) fs.appendFileSync(path.join(dir, "icon-192.png"), icon);
+      execFileSync("cmake", [`-DSITE=${dir}`, `-DSOURCE=${path.join(root, "app/web")}`, "-P",
+                             path.join(root, "app/web/site.cmake")], { stdio: "pipe" });
+      return serviceWorkerOf(dir).cache;
+    };
+    const first = publish();
+    const page = await openApp(context, own.base, "scene=rope");
+    let sw = await serviceWorkerState(page);
+    expect(sw.active && !sw.busy && sw.caches.join() === first, `the first build: ${JSON.stringify(sw)}, sw.js names ${first}`);
+    const firstVersion = sw.version;
+    // A new build, whole: the next visit runs it, and its service worker replaces the cache.
+    const second = publish("build 2");
+    expect(second !== first, "a new icon left the cache's name");
+    await page.reload();
+    await page.waitForFunction("window.springlabReady === true", { timeout: 30000 });
+    sw = await serviceWorkerState(page, true);
+    expect(sw.version !== firstVersion, `the visit after a new build ran the old one (${sw.version})`);
+    expect(sw.active && !sw.busy && sw.caches.join() === second, `the second build: ${JSON.stringify(sw)}, sw.js names ${second}`);
+    // Half of a third: its sw.js and page, but an icon of yet another build. Its service worker
+    // refuses to install; the second build stays, whole, and runs offline.
+    const secondVersion = sw.version;
+    publish("build 3");
+    fs.appendFileSync(path.join(dir, "icon-192.png"), "build 4");
+    await page.reload();
+    await page.waitForFunction("window.springlabReady === true", { timeout: 30000 });
+    sw = await serviceWorkerState(page, true);
+    expect(sw.active && !sw.busy && sw.caches.join() === second, `half a build: ${JSON.stringify(sw)}, the cache of the second: ${second}`);
+    own.server.close();
+    own.server.closeAllConnections();
+    await page.setOfflineMode(true);
+    await page.reload();
+    await page.waitForFunction("window.springlabReady === true", { timeout: 30000 });
+    sw = await serviceWorkerState(page);
+    expect(sw.version === secondVersion, `offline, the page asks for ${sw.version}, not the second build's ${secondVersion}`);
+    await runs(page, "offline after half a build");
+    await page.close();
+  } finally {
+    await context.close();
+    own.server.close();
+    fs.rmSync(dir, { recursive: true, force: true });
+  }
+}));
+
+check("offline: without a secure origin the app runs, and says once that it cannot keep itself", async ({ browser }) => {
+  // Loopback under another name: http there is not a secure context, so no service worker.
+  const own = await serve(site);
+  const base = own.base.replace("127.0.0.1", insecureHost);
+  try {
+    const page = await browser.newPage();
+    await page.setViewport({ width: 1280, height: 720 });  // (as openApp: Chromium's default is the screen's size)
+    const said = [];
+    page.on("console", (m) => {
+      if (m.type() === "error") consoleErrors.push(`${base}: ${m.text()}`);
+      if (/offline/.test(m.text())) said.push(`${m.type()}: ${m.text()}`);
+    });
+    page.on("pageerror", (e) => consoleErrors.push(`${base}: ${e.message}`));
+    await page.goto(`${base}/index.html#scene=rope`);
+    await page.waitForFunction("window.springlabReady === true", { timeout: 60000 });
+    await runs(page, "an insecure origin");
+    const secure = await page.evaluate(() => [window.isSecureContext, "serviceWorker" in navigator]);
+    expect(secure[0] === false && secure[1] === false, `${base}: secure context, service workers: ${secure}`);
+    expect(said.length === 1 && said[0].startsWith("warn"), `said ${said.length} times: ${said.join("; ")}`);
+    await page.close();
+  } finally {
+    own.server.close();
+  }
+});
+
+// --- The layout, for tests of screen sizes (window.springlabLayout) ----------------------------------
+
+// A rectangle [x, y, w, h] inside [0, 0, W, H] (half a pixel of rounding allowed), not empty.
+const inside = ([x, y, w, h], [W, H]) => w > 0 && h > 0 && x >= -0.5 && y >= -0.5 && x + w <= W + 0.5 && y + h <= H + 0.5;
+
+check("the layout: the scene and the panels in CSS pixels", async ({ browser, base }) => {
+  const layouts = [];
+  for (const scale of [1, 2]) {
+    const page = await openApp(browser, base, "scene=rope", { scale });
+    const l = await page.evaluate(() => window.springlabLayout());
+    const s = await status(page);
+    layouts.push(l);
+    const what = `at pixel ratio ${scale}: ${JSON.stringify(l)}`;
+    expect(l.canvas[0] === 1280 && l.canvas[1] === 720, `canvas ${what}`);
+    expect(inside(l.scene, l.canvas) && l.scene[2] > 400 && l.scene[3] > 200, `scene ${what}`);
+    // The scene in window pixels (status) is the layout's times the pixel ratio.
+    expect(s.viewport.every((v, i) => Math.abs(v / scale - l.scene[i]) <= 1), `status ${s.viewport}, ${what}`);
+    expect(l.panels.length === l.names.length && l.panels.every((r) => inside(r, l.canvas)), `panels ${what}`);
+    const panel = (name) => l.panels[l.names.indexOf(name)];
+    expect(l.names.includes("springlab") && l.names.includes("Charts"), `the default panels are missing ${what}`);
+    // Docked beside and under the scene, not over it.
+    const [controls, charts] = [panel("springlab"), panel("Charts")];
+    expect(controls[0] + controls[2] <= l.scene[0] + 0.5 && charts[1] >= l.scene[1] + l.scene[3] - 0.5,
+           `the panels overlap the scene ${what}`);
+    if (scale === 2) {
+      // The same page at twice the pixels: the same layout in CSS pixels.
+      const near = (a, b) => a.every((v, i) => Math.abs(v - b[i]) <= 1.5);
+      expect(near(l.scene, layouts[0].scene) && near(controls, layouts[0].panels[layouts[0].names.indexOf("springlab")]),
+             `pixel ratio 2 ${JSON.stringify(l)} against 1 ${JSON.stringify(layouts[0])}`);
+      // No panels (key H): the scene fills the canvas.
+      await key(page, "KeyH");
+      const bare = await page.evaluate(() => window.springlabLayout());
+      expect(!bare.names.includes("springlab") && !bare.names.includes("Charts") &&
+             bare.scene.join() === [0, 0, 1280, 720].join(), `without panels: ${JSON.stringify(bare)}`);
+    }
+    await page.close();
+  }
+});
+
 check("the core's tests pass compiled to WebAssembly", async ({ browser, base }) => {
   const page = await browser.newPage();
   page.on("pageerror", (e) => consoleErrors.push(`gtest: ${e.message}`));
@@ -372,7 +622,7 @@ check("the console has no errors", async () => {
   let failed = 0, ran = 0;
   const start = Date.now();
   for (const c of checks) {
-    if (!c.name.includes(filter) && c.name !== "the console has no errors") continue;
+    if (!filter.split("|").some((f) => c.name.includes(f)) && c.name !== "the console has no errors") continue;
     ran++;
     const t0 = Date.now();
     try {

@@ -7,9 +7,32 @@ const http = require("http");
 const path = require("path");
 const puppeteer = require("puppeteer-core");
 
+// puppeteer-core 22 numbers each CDP session's commands on their own, and Chromium answers a command
+// sent to a session that has just closed without the session's id ("Session with given id not
+// found."): puppeteer then takes it for the browser connection's own command of the same number, and
+// that command fails (a newPage did so: "Protocol error (Target.createTarget): Session with given id
+// not found"; crbug.com/1463459, fixed in puppeteer 24 by numbering all commands together, #13910).
+// Pages with a service worker (sw.js) make it frequent: their worker attaches to them and is detached
+// as they close. The connection's own commands name no session, so such an answer is never theirs:
+// it is dropped here (the closed session's commands have failed already, as it closed).
+try {
+  const { Connection } = require("puppeteer-core/internal/cdp/Connection.js");
+  const onMessage = Connection.prototype.onMessage;
+  Connection.prototype.onMessage = function (message) {
+    if (message.includes('"code":-32001')) {
+      const object = JSON.parse(message);
+      if (!object.sessionId && object.id !== undefined && /Session with given id not found/.test(object.error?.message))
+        return Promise.resolve();
+    }
+    return onMessage.call(this, message);
+  };
+} catch (e) {
+  // (Another puppeteer: without the fix.)
+}
+
 const types = {
   ".html": "text/html", ".js": "text/javascript", ".wasm": "application/wasm", ".data": "application/octet-stream",
-  ".png": "image/png", ".json": "application/json",
+  ".png": "image/png", ".json": "application/json", ".webmanifest": "application/manifest+json",
 };
 
 // Serves `dir` on 127.0.0.1 at a free port; resolves to { server, base }.
@@ -28,29 +51,36 @@ function serve(dir) {
     resolve({ server, base: `http://127.0.0.1:${server.address().port}` })));
 }
 
+// The host name an insecure origin is tried at (mapped to loopback): not localhost nor 127.0.0.1, so
+// a page there is not a secure context and has no service worker.
+const insecureHost = "springlab-insecure.test";
+
 function launch() {
   return puppeteer.launch({
     executablePath: process.env.CHROMIUM || "/usr/bin/chromium",
     headless: "new",
     // English whatever the machine's locale: a check that wants another language says so (openApp).
     args: ["--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--window-size=1280,720",
-           "--disable-dev-shm-usage", "--lang=en-US"],
+           "--disable-dev-shm-usage", "--lang=en-US", `--host-resolver-rules=MAP ${insecureHost} 127.0.0.1`],
   });
 }
 
 // Every console error and uncaught exception of every page, for the final check.
 const consoleErrors = [];
 
-// Opens the app at `fragment` (without '#') and waits for its first frames. `language`: the
-// browser's (navigator.language), as a reader's browser set to it reports it.
-async function openApp(browser, base, fragment, { width = 1280, height = 720, scale = 1, touch = false, language } = {}) {
+// Opens the app at `fragment` (without '#') and waits for its first frames. `browser` may be a
+// browser context; `query` goes after index.html ('?...'); `offline` cuts the page's network first;
+// `language`: the browser's (navigator.language), as a reader's browser set to it reports it.
+async function openApp(browser, base, fragment, { width = 1280, height = 720, scale = 1, touch = false, query = "",
+                                                  offline = false, language } = {}) {
   const page = await browser.newPage();
   if (language)
     await page.evaluateOnNewDocument((l) => Object.defineProperty(navigator, "language", { get: () => l }), language);
   await page.setViewport({ width, height, deviceScaleFactor: scale, hasTouch: touch });
   page.on("console", (m) => { if (m.type() === "error") consoleErrors.push(`${fragment}: ${m.text()}`); });
   page.on("pageerror", (e) => consoleErrors.push(`${fragment}: ${e.message}`));
-  await page.goto(`${base}/index.html${fragment ? "#" + fragment : ""}`);
+  if (offline) await page.setOfflineMode(true);
+  await page.goto(`${base}/index.html${query}${fragment ? "#" + fragment : ""}`);
   await page.waitForFunction("window.springlabReady === true", { timeout: 60000 });
   await waitFrames(page, 5);
   return page;
@@ -179,4 +209,4 @@ async function pixels(browser, png) {
   return out;
 }
 
-module.exports = { serve, launch, openApp, status, waitFrames, key, pauseAtStart, compareImages, pixels, consoleErrors };
+module.exports = { serve, launch, insecureHost, openApp, status, waitFrames, key, pauseAtStart, compareImages, pixels, consoleErrors };
