@@ -17,6 +17,7 @@ Offscreen::Offscreen(bool software, int width, int height, float ui_scale, doubl
     io.IniFilename = nullptr;
     io.LogFilename = nullptr;
     ui::apply_theme(ui_scale);
+    io.Fonts->Build();  // now: the lesson band measures its text before the first frame is drawn
     ImGui_ImplOpenGL3_Init("#version 330 core");
     imgui_ = true;
   }

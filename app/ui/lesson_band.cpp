@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <numeric>
 
 #include "ui/text_wrap.hpp"
@@ -16,11 +17,11 @@ constexpr float kPad = 12.0f, kBar = 8.0f, kGap = 6.0f;
 const ImVec4 kPrompt(0.55f, 0.85f, 1.0f, 1.0f), kTookOver(1.0f, 0.75f, 0.2f, 1.0f);
 }  // namespace
 
-float lesson_band_height(float scale, int caption_lines) {
+float lesson_band_height(float scale, int caption_lines, int title_rows, int prompt_lines) {
   const float row = kFontSize + 8.0f;                                         // a framed row (buttons)
   const float caption = std::max(2, caption_lines) * kFontSize * kCaptionScale * 1.17f;  // the caption's font
-  const float prompt = kFontSize * 1.25f;
-  return (2 * kPad + row + caption + prompt + kBar + 3 * kGap) * scale;
+  const float prompt = kFontSize * 1.25f * std::max(1, prompt_lines);
+  return (2 * kPad + std::max(1, title_rows) * (row + kGap) + caption + prompt + kBar + 2 * kGap) * scale;
 }
 
 namespace {
@@ -34,9 +35,64 @@ std::string caption_text(const std::string& caption, float width, float scale) {
 }
 }  // namespace
 
+namespace {
+
+// "Lesson 3 of 12 · Explicit Euler gains energy — step 1 of 1: Energy grows at every step".
+std::string title_text(const LessonBand& band) {
+  const int steps = static_cast<int>(band.durations.size());
+  return (band.number > 0 ? format_text(tr("Lesson %d of %d"), band.number, band.count) : std::string(tr("Lesson"))) +
+         "  \u00b7  " + band.title + "   \u2014   " +
+         format_text(tr("step %d of %d: %s"), band.step + 1, steps, band.step_title.c_str());
+}
+
+// The title row: the title wrapped beside the buttons (Back, Next, End lesson), or, in a narrow
+// window, the buttons on a row of their own above it and the title wrapped to the whole width.
+struct TitleRows {
+  std::string title;  // with its line breaks
+  bool buttons_above = false;
+  float buttons_width = 0.0f;
+  int rows() const { return 1 + static_cast<int>(std::count(title.begin(), title.end(), '\n')) + (buttons_above ? 1 : 0); }
+};
+
+const char* next_label(const LessonBand& band) {
+  const bool at_end = band.step + 1 >= static_cast<int>(band.durations.size());
+  return !at_end ? tr("Next \u2192") : band.last_lesson ? tr("Done") : tr("Next lesson \u2192");
+}
+
+TitleRows title_rows(const LessonBand& band, float width, float scale) {
+  TitleRows out;
+  out.title = title_text(band);
+  const ImGuiIO& io = ImGui::GetIO();
+  if (io.Fonts->Fonts.Size <= kPanelFont || !io.Fonts->Fonts[kPanelFont]->IsLoaded()) return out;
+  const ImFont* font = io.Fonts->Fonts[kPanelFont];
+  const float size = font->FontSize * font->Scale;
+  const auto text_w = [&](const char* t) { return font->CalcTextSizeA(size, FLT_MAX, 0.0f, t).x; };
+  const float inner = width - 2 * kPad * scale, spacing = 8.0f * scale, frame = ImGui::GetStyle().FramePadding.x;
+  if (band.interactive)
+    out.buttons_width = text_w(tr("\u2190 Back")) + text_w(next_label(band)) + text_w(tr("End lesson")) + 6 * frame +
+                        2 * spacing;
+  const float beside = inner - (band.interactive ? out.buttons_width + spacing : 0.0f);
+  out.buttons_above = band.interactive && (beside < 0.5f * inner || text_w(out.title.c_str()) > beside);
+  const float room = out.buttons_above || !band.interactive ? inner : beside;
+  if (text_w(out.title.c_str()) > room) out.title = wrap_text(out.title, font, size, room);  // (one line: as written)
+  return out;
+}
+
+}  // namespace
+
+// "Try this: ..." wrapped to the band's width (one line at 1280 x 720; more on a phone).
+std::string prompt_text(const LessonBand& band, float width, float scale) {
+  const std::string text = format_text(tr("Try this: %s"), band.prompt.c_str());
+  const ImGuiIO& io = ImGui::GetIO();
+  if (band.prompt.empty() || io.Fonts->Fonts.Size <= kPanelFont || !io.Fonts->Fonts[kPanelFont]->IsLoaded()) return text;
+  const ImFont* font = io.Fonts->Fonts[kPanelFont];
+  return wrap_text(text, font, font->FontSize * font->Scale, width - 2 * kPad * scale);
+}
+
 float lesson_band_height(const LessonBand& band, float width, float scale) {
-  const std::string caption = caption_text(band.caption, width, scale);
-  return lesson_band_height(scale, 1 + static_cast<int>(std::count(caption.begin(), caption.end(), '\n')));
+  const auto lines = [](const std::string& t) { return 1 + static_cast<int>(std::count(t.begin(), t.end(), '\n')); };
+  return lesson_band_height(scale, lines(caption_text(band.caption, width, scale)), title_rows(band, width, scale).rows(),
+                            lines(prompt_text(band, width, scale)));
 }
 
 BandRequests draw_lesson_band(const LessonBand& band, float width, float scale) {
@@ -51,21 +107,11 @@ BandRequests draw_lesson_band(const LessonBand& band, float width, float scale) 
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                    ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoNav);
 
-  // Where we are, and the way on.
+  // Where we are, and the way on: the buttons beside the title, or above it in a narrow window.
   const int steps = static_cast<int>(band.durations.size());
-  const std::string where =
-      (band.number > 0 ? format_text(tr("Lesson %d of %d"), band.number, band.count) : std::string(tr("Lesson"))) +
-      "  \u00b7  " + band.title + "   \u2014   " +
-      format_text(tr("step %d of %d: %s"), band.step + 1, steps, band.step_title.c_str());
-  ImGui::AlignTextToFramePadding();
-  ImGui::TextDisabled("%s", where.c_str());
-  if (band.interactive) {
-    const bool at_end = band.step + 1 >= steps;
-    const char* next = !at_end ? tr("Next \u2192") : band.last_lesson ? tr("Done") : tr("Next lesson \u2192");
-    const ImGuiStyle& style = ImGui::GetStyle();
-    const float buttons = ImGui::CalcTextSize(tr("\u2190 Back")).x + ImGui::CalcTextSize(next).x +
-                          ImGui::CalcTextSize(tr("End lesson")).x + 6 * style.FramePadding.x + 2 * style.ItemSpacing.x;
-    ImGui::SameLine(std::max(ImGui::GetCursorPosX(), width - kPad * scale - buttons));
+  const TitleRows title = title_rows(band, width, scale);
+  const auto buttons = [&] {
+    const char* next = next_label(band);
     ImGui::BeginDisabled(band.step == 0);
     out.back = ImGui::Button(tr("\u2190 Back"));
     ImGui::EndDisabled();
@@ -73,6 +119,16 @@ BandRequests draw_lesson_band(const LessonBand& band, float width, float scale) 
     out.next = ImGui::Button(next);
     ImGui::SameLine();
     out.end = ImGui::Button(tr("End lesson"));
+  };
+  if (title.buttons_above) {
+    ImGui::SetCursorPosX(std::max(ImGui::GetCursorPosX(), width - kPad * scale - title.buttons_width));
+    buttons();
+  }
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextDisabled("%s", title.title.c_str());
+  if (band.interactive && !title.buttons_above) {
+    ImGui::SameLine(std::max(ImGui::GetCursorPosX(), width - kPad * scale - title.buttons_width));
+    buttons();
   }
 
   // The caption, large.
@@ -83,14 +139,18 @@ BandRequests draw_lesson_band(const LessonBand& band, float width, float scale) 
   if (caption_font) ImGui::PopFont();
 
   // What the class may try, or the way back once it has taken over; on the band's last row.
-  ImGui::SetCursorPosY(height - kPad * scale - kBar * scale - kGap * scale - kFontSize * 1.25f * scale);
+  const std::string prompt = prompt_text(band, width, scale);
+  const int prompt_lines = 1 + static_cast<int>(std::count(prompt.begin(), prompt.end(), '\n'));
+  ImGui::SetCursorPosY(height - kPad * scale - kBar * scale - kGap * scale - kFontSize * 1.25f * scale * prompt_lines);
   if (band.interrupted && band.interactive) {
     ImGui::AlignTextToFramePadding();
     ImGui::TextColored(kTookOver, tr("You took over: the lesson waits."));
     ImGui::SameLine();
     out.resume = ImGui::SmallButton(tr("Resume the lesson (this step from its start)"));
   } else if (!band.prompt.empty()) {
-    ImGui::TextColored(kPrompt, tr("Try this: %s"), band.prompt.c_str());
+    ImGui::PushStyleColor(ImGuiCol_Text, kPrompt);
+    ImGui::TextUnformatted(prompt.c_str());
+    ImGui::PopStyleColor();
   }
 
   // Progress: one segment a step, as long as its duration, filled up to now.

@@ -9,6 +9,7 @@
 #include "chart/imgui_chart.hpp"
 #include "chart/stability_region.hpp"
 #include "draw/palette.hpp"
+#include "ui/layout.hpp"
 #include "ui/overlay.hpp"
 #include "springlab/iterative_cost.hpp"
 #include "ui/text_wrap.hpp"
@@ -384,19 +385,11 @@ std::vector<Method> compare_methods(const UiState& ui) {
 }
 
 namespace {
-// The layout, at scale 1.
-constexpr float kPad = 8.0f, kLeftWidth = 360.0f, kChartHeight = 230.0f;
 float layout_scale(const UiState& ui) { return ui.scale * (ui.presentation ? kPresentationScale : 1.0f); }
 }  // namespace
 
 draw::Viewport scene_viewport(const UiState& ui, int width, int height) {
-  const int band = std::min(static_cast<int>(ui.band), height / 2);
-  if (!ui.panels) return {0, band, width, height - band};
-  const float s = layout_scale(ui);
-  const int left = static_cast<int>((kLeftWidth + 2 * kPad) * s);
-  const int bottom = static_cast<int>((kChartHeight + 2 * kPad) * s);
-  if (width - left < 64 || height - bottom - band < 64) return {0, band, width, height - band};
-  return {left, band, width - left, height - bottom - band};
+  return panel_layout(ui, width, height).scene;
 }
 
 // An IK scene's controls: the solver, side by side or not, iterations a frame, and each lane's
@@ -559,24 +552,90 @@ void parameters(app::Session& session, UiState& ui, bool few) {
 
 }  // namespace
 
+namespace {
+
+// The touch layouts' strip: Upright's sheet folded to one row (its menu, play or pause, step, the
+// method, dt), or Side's folded panel (its menu, play or pause, step, one above the other).
+void strip(app::Session& session, UiState& ui, const PanelLayout& layout, float s) {
+  const Rect& r = layout.strip;
+  ImGui::SetNextWindowPos(ImVec2(r.x, r.y));
+  ImGui::SetNextWindowSize(ImVec2(r.w, r.h));
+  ImGui::Begin("##strip", nullptr, kPanel | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar);
+  const bool row = layout.kind == LayoutKind::Upright;
+  const float button = ImGui::GetFrameHeight();
+  const auto next = [&] {
+    if (row) ImGui::SameLine();
+  };
+  if (ImGui::Button("\u2261", ImVec2(button, button))) {  // the menu: all the controls
+    if (row) ui.sheet_open = true;
+    else ui.side_open = true;
+  }
+  next();
+  if (ImGui::Button(session.paused() ? ">" : "||", ImVec2(button, button))) session.set_paused(!session.paused());
+  next();
+  if (ImGui::Button("S", ImVec2(button, button))) {
+    session.set_paused(true);
+    session.step_once();
+  }
+  if (row && !session.scene().ik) {
+    next();
+    const float left = ImGui::GetContentRegionAvail().x;
+    ImGui::SetNextItemWidth(0.45f * left);
+    if (!session.comparing() && ImGui::BeginCombo("##method", tr(method_info(session.method()).label))) {
+      int key = 1;
+      for (const MethodInfo& m : methods()) {
+        const std::string label = std::to_string(key++) + "  " + tr(m.label);
+        if (ImGui::Selectable(label.c_str(), m.id == session.method())) session.set_method(m.id);
+      }
+      ImGui::EndCombo();
+    }
+    next();
+    double dt = session.primary().sim.settings().dt;
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x);
+    if (slider("##dt", dt, ui.ranges.dt / 100, std::min(1.0, std::max(0.1, ui.ranges.dt * 100)), true, "dt %.3g"))  // symbols
+      session.set_dt(dt);
+  }
+  (void)s;
+  ImGui::End();
+}
+
+}  // namespace
+
 Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats, int width, int height) {
   Requests requests;
   ImGuiIO& io = ImGui::GetIO();
   const bool large = ui.presentation && io.Fonts->Fonts.Size > 1;
   if (large) ImGui::PushFont(io.Fonts->Fonts[1]);
   const float s = layout_scale(ui);
-  const float pad = kPad * s;
-  const float left_w = kLeftWidth * s;
-  const float chart_h = kChartHeight * s;
+  const float pad = 8.0f * s;
   const bool few = ui.presentation;
+  const PanelLayout layout = panel_layout(ui, width, height);
+  // A thumb's targets: frames at least 44 units high (Apple's guideline; Material's is 48 dp).
+  if (layout.touch) {
+    const float frame_pad = std::max(ImGui::GetStyle().FramePadding.y, 0.5f * (44.0f * s - ImGui::GetFontSize()));
+    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(ImGui::GetStyle().FramePadding.x, frame_pad));
+    ImGui::PushStyleVar(ImGuiStyleVar_GrabMinSize, 30.0f * s);
+  }
+  // The panels over the scene (a window too small to share): they keep their background.
+  const bool over = layout.scene.x == 0 && layout.scene.width == width && !layout.controls.empty() &&
+                    (layout.kind == LayoutKind::Wide || layout.kind == LayoutKind::Compact);
+  const ImGuiWindowFlags docked = over || layout.touch ? kPanel : kDocked;
 
-  if (ui.panels) {
+  if (ui.panels && !layout.strip.empty()) strip(session, ui, layout, s);
+  if (ui.panels && !layout.controls.empty()) {
     // Controls.
-    const float top = std::min(ui.band, 0.5f * height);  // under the lesson's band
-    ImGui::SetNextWindowPos(ImVec2(pad, top + pad));
-    ImGui::SetNextWindowSize(ImVec2(left_w, static_cast<float>(height) - top - 2 * pad));
-    ImGui::Begin("springlab", nullptr, (ui.panels_over_scene ? kPanel : kDocked) | ImGuiWindowFlags_NoTitleBar);
-    ImGui::PushItemWidth(-130.0f * s);
+    const Rect& c = layout.controls;
+    ImGui::SetNextWindowPos(ImVec2(c.x, c.y));
+    ImGui::SetNextWindowSize(ImVec2(c.w, c.h));
+    ImGui::Begin("springlab", nullptr, docked | ImGuiWindowFlags_NoTitleBar);
+    ImGui::PushItemWidth(-std::min(130.0f * s, 0.4f * c.w));
+    if (layout.touch) {  // the way back to the scene's room: close the sheet, fold the panel
+      if (ImGui::Button(layout.kind == LayoutKind::Upright ? "\u2193" : "\u2190", ImVec2(ImGui::GetFrameHeight(), 0))) {
+        if (layout.kind == LayoutKind::Upright) ui.sheet_open = false;
+        else ui.side_open = false;
+      }
+      ImGui::SameLine();
+    }
 
     // The scene: its picker, and what it shows (its first sentence; the rest on hover).
     if (!ui.scenes.empty() && ImGui::BeginCombo(tr("scene"), ui.scene_name.c_str())) {
@@ -630,7 +689,7 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
       transport(session);
       clocks(session, stats);
       // Stability: the gauge of each lane, under the method it judges.
-      const float inner_w = left_w - 2 * ImGui::GetStyle().WindowPadding.x - ImGui::GetStyle().ScrollbarSize;
+      const float inner_w = layout.controls.w - 2 * ImGui::GetStyle().WindowPadding.x - ImGui::GetStyle().ScrollbarSize;
       for (app::Lane& lane : session.lanes()) gauge(session, lane, inner_w, !session.comparing());
       ImGui::Separator();
       parameters(session, ui, few);
@@ -693,14 +752,27 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
     ImGui::PopItemWidth();
     ImGui::End();
 
-    // Charts.
-    const float charts_x = left_w + 2 * pad;
-    ImGui::SetNextWindowPos(ImVec2(charts_x, static_cast<float>(height) - chart_h - pad));
-    ImGui::SetNextWindowSize(ImVec2(static_cast<float>(width) - charts_x - pad, chart_h));
-    ImGui::Begin("Charts", nullptr, (ui.panels_over_scene ? kPanel : kDocked) | ImGuiWindowFlags_NoTitleBar);
-    charts(session, ImGui::GetContentRegionAvail().x, ImGui::GetContentRegionAvail().y, ui.presentation, ui.lesson_charts);
+  }
+  if (ui.panels && !layout.charts.empty()) {
+    // Charts: side by side; one in presentation mode and in the upright layout (the lesson's first).
+    const Rect& c = layout.charts;
+    ImGui::SetNextWindowPos(ImVec2(c.x, c.y));
+    ImGui::SetNextWindowSize(ImVec2(c.w, c.h));
+    ImGui::Begin("Charts", nullptr, docked | ImGuiWindowFlags_NoTitleBar);
+    std::vector<LessonChart> only = ui.lesson_charts;
+    const bool one = layout.kind == LayoutKind::Upright || layout.kind == LayoutKind::Compact;
+    if (one && only.size() > 1) only.resize(1);
+    charts(session, ImGui::GetContentRegionAvail().x, ImGui::GetContentRegionAvail().y, ui.presentation || one, only);
     ImGui::End();
-    region_window(session, ui, charts_x, top + pad, 0.55f * (width - charts_x), 0.55f * height);
+  }
+  if (ui.panels) {  // the region's window opens over the scene's top left
+    if (layout.kind == LayoutKind::Wide) {
+      region_window(session, ui, layout.charts.x, layout.controls.y, 0.55f * (width - layout.charts.x), 0.55f * height);
+    } else {
+      const float x = layout.scene.x + pad, y = layout.scene.y + pad;
+      region_window(session, ui, x, y, std::max(0.55f * (width - x), std::min(480.0f * s, width - x - pad)),
+                    std::max(0.55f * height, 0.5f * layout.scene.height));
+    }
   }
 
   // Divergence in the single view: a banner, and the way out.
@@ -773,6 +845,7 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
     }
     ImGui::End();
   }
+  if (layout.touch) ImGui::PopStyleVar(2);
   if (large) ImGui::PopFont();
   return requests;
 }

@@ -52,6 +52,8 @@ struct UiState {
   bool presentation = false;       // P: for a projector
   bool region = false;             // G: the stability region
   bool tableau = false;            // Y: your method (a tableau typed in)
+  bool sheet_open = false;         // Upright (ui/layout.hpp): the controls' sheet opened
+  std::optional<bool> side_open;   // Side: the controls unfolded (unset: unless a lesson is taught)
   draw::ViewOptions view;
   Ranges ranges;
   std::vector<std::string> scenes;  // the picker's list

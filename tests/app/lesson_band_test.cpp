@@ -230,10 +230,18 @@ TEST(LessonBand, GrowsWithItsCaptionInANarrowWindow) {
   band.caption = "Its springs' k_s = 380000 N/m at h = 1/60 s: h\u03c9_max is about 90, far past every explicit "
                  "method's limit. Explicit lanes explode; implicit Euler holds.";
   EXPECT_EQ(ui::lesson_band_height(band, 1280.0f, 1.0f), ui::lesson_band_height(1.0f, 2));
-  for (const float width : {760.0f, 600.0f, 420.0f}) {
+  band.title = "Implicit Euler on a stiff chain";
+  band.step_title = "One step a frame";
+  band.durations = {6.0, 6.0};
+  band.number = 7;
+  band.count = 12;
+  // The title row: beside its buttons at 1280 units; narrower, the buttons take a row of their
+  // own above it, and on a phone (390) the title wraps onto two.
+  EXPECT_EQ(ui::lesson_band_height(band, 1280.0f, 1.0f), ui::lesson_band_height(1.0f, 2, 1));
+  for (const auto& [width, title_rows] : std::vector<std::pair<float, int>>{{760.0f, 2}, {600.0f, 2}, {390.0f, 3}}) {
     const int lines = Fonts::lines(ui::kCaptionFont, band.caption, width - 2 * 12.0f);
     EXPECT_GT(lines, 2) << width;
-    EXPECT_EQ(ui::lesson_band_height(band, width, 1.0f), ui::lesson_band_height(1.0f, lines)) << width;
+    EXPECT_EQ(ui::lesson_band_height(band, width, 1.0f), ui::lesson_band_height(1.0f, lines, title_rows)) << width;
   }
   EXPECT_GT(ui::lesson_band_height(1.0f, 3), ui::lesson_band_height(1.0f, 2));
   band.caption = "Short.";

@@ -1,0 +1,84 @@
+#include "ui/layout.hpp"
+
+#include <algorithm>
+
+#include "ui/panels.hpp"
+
+namespace springlab::ui {
+
+namespace {
+// At scale 1: the gap between panels, Wide's left panel and charts (1280 x 720 holds them with
+// nothing cut off), the touch layouts' row (a 44-unit frame and its padding) and Side's panel.
+constexpr float kPad = 8.0f, kLeftWidth = 360.0f, kChartHeight = 230.0f, kRow = 60.0f, kSideWidth = 330.0f,
+                kStrip = 64.0f;
+}  // namespace
+
+LayoutKind layout_kind(float w, float h) {
+  if (h < 500.0f && w > h) return LayoutKind::Side;
+  if (h > w && w < 900.0f) return LayoutKind::Upright;
+  if (w < 1200.0f || h < 700.0f) return LayoutKind::Compact;
+  return LayoutKind::Wide;
+}
+
+PanelLayout panel_layout(const UiState& ui, int width, int height) {
+  PanelLayout out;
+  const float s = ui.scale * (ui.presentation ? kPresentationScale : 1.0f);
+  const float W = static_cast<float>(width), H = static_cast<float>(height);
+  const float band = std::min(ui.band, 0.5f * H);  // the panels' (the scene's is in whole pixels)
+  const int scene_top = std::min(static_cast<int>(ui.band), height / 2);
+  const float pad = kPad * s;
+  const auto viewport = [](float x, float y, float w, float h) {
+    return draw::Viewport{static_cast<int>(x), static_cast<int>(y), std::max(0, static_cast<int>(w)),
+                          std::max(0, static_cast<int>(h))};
+  };
+  out.kind = ui.presentation ? LayoutKind::Wide : layout_kind(W / ui.scale, H / ui.scale);
+  out.scene = {0, scene_top, width, height - scene_top};
+  if (!ui.panels) return out;
+  switch (out.kind) {
+    case LayoutKind::Wide: {
+      const float left = kLeftWidth * s, chart = kChartHeight * s;
+      out.controls = {pad, band + pad, left, H - band - 2 * pad};
+      out.charts = {left + 2 * pad, H - chart - pad, W - left - 3 * pad, chart};
+      // (Whole pixels as the scene has always been cut: the same pictures at the same sizes.)
+      const int scene_x = static_cast<int>((kLeftWidth + 2 * kPad) * s);
+      const int scene_h = height - static_cast<int>((kChartHeight + 2 * kPad) * s) - scene_top;
+      // Too small to share (a tiny window): the scene fills it, the panels over it.
+      if (width - scene_x < 64 || scene_h < 64) return out;
+      out.scene = {scene_x, scene_top, width - scene_x, scene_h};
+      return out;
+    }
+    case LayoutKind::Compact: {
+      // One column on the left: the controls (they scroll), one chart under them; the scene in
+      // all the rest, full height (a small laptop's 640 units leave no room for a row of charts).
+      const float left = std::clamp(0.28f * W, 270.0f * s, kLeftWidth * s);
+      const float chart = std::clamp(0.42f * (H - band), 170.0f * s, 260.0f * s);
+      out.controls = {pad, band + pad, left, H - band - 3 * pad - chart};
+      out.charts = {pad, H - chart - pad, left, chart};
+      out.scene = viewport(left + 2 * pad, band, W - left - 2 * pad, H - band);
+      return out;
+    }
+    case LayoutKind::Upright: {
+      out.touch = true;
+      const float row = kRow * s;
+      out.strip = {0, H - row, W, row};
+      const float scene_h = std::max(0.41f * H, 0.5f * (H - band - row));
+      out.scene = viewport(0, band, W, scene_h);
+      const float below = band + scene_h;
+      if (ui.sheet_open) out.controls = {0, below, W, H - below};  // over the chart, never the scene
+      else if (H - row - below - 2 * pad >= 140.0f * s) out.charts = {pad, below + pad, W - 2 * pad, H - row - below - 2 * pad};
+      return out;
+    }
+    case LayoutKind::Side: {
+      out.touch = true;
+      const bool open = ui.side_open.value_or(ui.lesson.empty());
+      const float panel = open ? std::min(kSideWidth * s, 0.42f * W) : kStrip * s;
+      if (open) out.controls = {0, band, panel, H - band};
+      else out.strip = {0, band, panel, H - band};
+      out.scene = viewport(panel, band, W - panel, H - band);
+      return out;
+    }
+  }
+  return out;
+}
+
+}  // namespace springlab::ui
