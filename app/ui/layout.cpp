@@ -66,6 +66,7 @@ PanelLayout panel_layout(const UiState& ui, int width, int height) {
       const float below = band + scene_h;
       if (ui.sheet_open) out.controls = {0, below, W, H - below};  // over the chart, never the scene
       else if (H - row - below - 2 * pad >= 140.0f * s) out.charts = {pad, below + pad, W - 2 * pad, H - row - below - 2 * pad};
+      else out.scene = viewport(0, band, W, H - row - band);  // no room for a chart: the scene takes it
       return out;
     }
     case LayoutKind::Side: {

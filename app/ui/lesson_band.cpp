@@ -17,19 +17,24 @@ constexpr float kPad = 12.0f, kBar = 8.0f, kGap = 6.0f;
 const ImVec4 kPrompt(0.55f, 0.85f, 1.0f, 1.0f), kTookOver(1.0f, 0.75f, 0.2f, 1.0f);
 }  // namespace
 
-float lesson_band_height(float scale, int caption_lines, int title_rows, int prompt_lines) {
+float lesson_band_height(float scale, int caption_lines, int title_rows, int prompt_lines, bool narrow) {
   const float row = kFontSize + 8.0f;                                         // a framed row (buttons)
-  const float caption = std::max(2, caption_lines) * kFontSize * kCaptionScale * 1.17f;  // the caption's font
+  const float caption = std::max(2, caption_lines) * kFontSize * (narrow ? 1.0f : kCaptionScale) * 1.17f;  // its font
   const float prompt = kFontSize * 1.25f * std::max(1, prompt_lines);
   return (2 * kPad + std::max(1, title_rows) * (row + kGap) + caption + prompt + kBar + 2 * kGap) * scale;
 }
 
 namespace {
 // The caption as drawn: in its font, wrapped at spaces to the band's inner width.
+// A phone's width (under 600 units): the caption in the panels' font, so that the scene and a
+// chart keep their room under it.
+bool narrow_band(float width, float scale) { return width < 600.0f * scale; }
+int caption_font(float width, float scale) { return narrow_band(width, scale) ? kPanelFont : kCaptionFont; }
+
 std::string caption_text(const std::string& caption, float width, float scale) {
   const ImGuiIO& io = ImGui::GetIO();
   if (io.Fonts->Fonts.Size <= kCaptionFont) return caption;
-  const ImFont* font = io.Fonts->Fonts[kCaptionFont];
+  const ImFont* font = io.Fonts->Fonts[caption_font(width, scale)];
   if (!font->IsLoaded()) return caption;  // the atlas not built yet: no glyphs to measure
   return wrap_text(caption, font, font->FontSize * font->Scale, width - 2 * kPad * scale);
 }
@@ -92,7 +97,7 @@ std::string prompt_text(const LessonBand& band, float width, float scale) {
 float lesson_band_height(const LessonBand& band, float width, float scale) {
   const auto lines = [](const std::string& t) { return 1 + static_cast<int>(std::count(t.begin(), t.end(), '\n')); };
   return lesson_band_height(scale, lines(caption_text(band.caption, width, scale)), title_rows(band, width, scale).rows(),
-                            lines(prompt_text(band, width, scale)));
+                            lines(prompt_text(band, width, scale)), narrow_band(width, scale));
 }
 
 BandRequests draw_lesson_band(const LessonBand& band, float width, float scale) {
@@ -134,7 +139,7 @@ BandRequests draw_lesson_band(const LessonBand& band, float width, float scale) 
   // The caption, large.
   ImGuiIO& io = ImGui::GetIO();
   const bool caption_font = io.Fonts->Fonts.Size > kCaptionFont;
-  if (caption_font) ImGui::PushFont(io.Fonts->Fonts[kCaptionFont]);
+  if (caption_font) ImGui::PushFont(io.Fonts->Fonts[ui::caption_font(width, scale)]);
   ImGui::TextUnformatted(caption_text(band.caption, width, scale).c_str());
   if (caption_font) ImGui::PopFont();
 

@@ -33,7 +33,8 @@ struct BandRequests {
 // The band's height at `scale`, in window units: a title row, the caption's lines (two at least,
 // so that the scene keeps its place from step to step; core/include/springlab/lesson.hpp limits a
 // caption to two at 1280 x 720), the prompt and the progress bar.
-float lesson_band_height(float scale, int caption_lines = 2, int title_rows = 1, int prompt_lines = 1);
+float lesson_band_height(float scale, int caption_lines = 2, int title_rows = 1, int prompt_lines = 1,
+                         bool narrow = false);  // narrow: a phone's, the caption in the panels' font
 
 // The height of `band` across a window `width` wide: a narrower window (a laptop's browser) wraps
 // the caption onto more lines, and the band grows to hold them rather than cut them off.

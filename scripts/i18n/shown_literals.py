@@ -8,7 +8,8 @@ Usage: shown_literals.py [--fix] FILE...
   (no option)  report the literals not wrapped in tr() or N_(); exit 1 if there is any
   --fix        wrap them in tr() in place (a one-off; read the diff)
 Skipped: literals with no two letters in a row ("%s", "%.3f", "s"), ImGui IDs ("##open"), JSON
-(a literal with an escaped quote), and lines marked "// not shown".
+(a literal with an escaped quote), and lines marked "// not shown" or "// symbols" (dt, k_s: the same
+in every language).
 """
 import re
 import sys
@@ -128,7 +129,8 @@ def candidates(text):
                 end = group_end(text, i)
                 # A string literal's prefix (u8"", R"") or an #include: not shown text.
                 line_end = text.find("\n", i)
-                marked = "// not shown" in text[text.rfind("\n", 0, i):line_end]
+                line = text[text.rfind("\n", 0, i):line_end]
+                marked = "// not shown" in line or "// symbols" in line
                 if not text[i - 1].isalnum() and not marked and shown(text, i, end) and not wrapped(text, i):
                     found.add((i, end))
                 i = end

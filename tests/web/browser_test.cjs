@@ -598,6 +598,38 @@ check("the layout: the scene and the panels in CSS pixels", async ({ browser, ba
   }
 });
 
+// The layouts chosen by the screen (app/ui/layout.hpp), as a student meets them: a phone upright and
+// on its side (touch, pixel ratio 3), a tablet upright, a small laptop; each with a scene and with
+// a lesson. The scene keeps at least 40 % of the screen, no panel covers more than 5 % of it, and
+// nothing lies off the screen. The lesson's frames are golden images (looked at).
+check("phones, a tablet, a small laptop: the scene keeps 40 %, no panel over it, nothing off screen", async ({ browser, base }) => {
+  const area = ([, , w, h]) => Math.max(0, w) * Math.max(0, h);
+  const overlap = ([ax, ay, aw, ah], [bx, by, bw, bh]) =>
+    Math.max(0, Math.min(ax + aw, bx + bw) - Math.max(ax, bx)) * Math.max(0, Math.min(ay + ah, by + bh) - Math.max(ay, by));
+  for (const [width, height, scale, touch, name, lesson] of [
+    [390, 844, 3, true, "phone-upright", "lesson=euler-explodes"],
+    [844, 390, 3, true, "phone-side", "lesson=euler-explodes"],
+    [768, 1024, 1, false, "tablet-upright", "lesson=euler-explodes"],
+    [1024, 640, 1, false, "laptop-small", "lesson=implicit-stiff&step=2"]]) {
+    for (const fragment of ["scene=rope", lesson]) {
+      const page = await openApp(browser, base, fragment, { width, height, scale, touch });
+      if (fragment !== "scene=rope") await pauseAtStart(page);
+      else await waitFrames(page, 3);
+      const l = await page.evaluate(() => window.springlabLayout());
+      const what = `${width}x${height} ${fragment}: ${JSON.stringify(l)}`;
+      expect(Math.abs(l.canvas[0] - width) <= 1 && Math.abs(l.canvas[1] - height) <= 1, `canvas ${what}`);
+      expect(area(l.scene) >= 0.4 * width * height,
+             `the scene has ${(100 * area(l.scene) / (width * height)).toFixed(1)} % of the screen (at least 40 %): ${what}`);
+      l.panels.forEach((r, i) => {
+        expect(inside(r, l.canvas), `${l.names[i]} lies off the screen: ${what}`);
+        expect(overlap(r, l.scene) <= 0.05 * area(l.scene), `${l.names[i]} covers the scene: ${what}`);
+      });
+      if (fragment !== "scene=rope") await matchesGolden(browser, page, `layout-${name}`);
+      await page.close();
+    }
+  }
+});
+
 check("the core's tests pass compiled to WebAssembly", async ({ browser, base }) => {
   const page = await browser.newPage();
   page.on("pageerror", (e) => consoleErrors.push(`gtest: ${e.message}`));
