@@ -250,6 +250,9 @@ EMSCRIPTEN_KEEPALIVE const char* springlab_status() {
   json += number;
   json += ",\"message\":" + quoted(g_page->app->ui().message);
   json += ",\"lang\":" + quoted(current_language());
+  const Camera& camera = g_page->app->ui().view.camera;  // how far the view is zoomed (a pinch)
+  std::snprintf(number, sizeof number, ",\"zoom\":%.9g", camera.view == View::Planar ? camera.height : camera.distance);
+  json += number;
   json += ",\"lanes\":[";
   for (std::size_t i = 0; i < session.lanes().size(); ++i) {
     const app::Lane& lane = session.lanes()[i];

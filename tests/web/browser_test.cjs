@@ -630,6 +630,38 @@ check("phones, a tablet, a small laptop: the scene keeps 40 %, no panel over it,
   }
 });
 
+// Two fingers on a phone: apart zooms in, together zooms out (index.html turns a pinch into the
+// wheel's notches); one finger still drags a particle (the check above, with a finger).
+check("a pinch zooms the view on a phone", async ({ browser, base }) => {
+  const page = await openApp(browser, base, "scene=rope", { width: 390, height: 844, scale: 3, touch: true });
+  await pauseAtStart(page);
+  const l = await page.evaluate(() => window.springlabLayout());
+  const [x, y, w, h] = l.scene;
+  const cx = x + w / 2, cy = y + h / 2;
+  const cdp = await page.target().createCDPSession();
+  const touch = (type, points) => cdp.send("Input.dispatchTouchEvent", {
+    type, touchPoints: points.map(([px, py], id) => ({ x: px, y: py, id })) });
+  const pinch = async (from, to) => {
+    await touch("touchStart", [[cx - from, cy], [cx + from, cy]]);
+    await waitFrames(page, 2);
+    for (let k = 1; k <= 8; k++) {
+      const d = from + (to - from) * k / 8;
+      await touch("touchMove", [[cx - d, cy], [cx + d, cy]]);
+      await waitFrames(page, 1);
+    }
+    await touch("touchEnd", []);
+    await waitFrames(page, 2);
+  };
+  const before = (await status(page)).zoom;
+  await pinch(30, 120);  // fingers apart: four times the spread, about 11 notches of 12 %
+  const closer = (await status(page)).zoom;
+  expect(closer < 0.5 * before, `pinching out zoomed from ${before} to ${closer}`);
+  await pinch(120, 30);
+  const back = (await status(page)).zoom;
+  expect(Math.abs(back / before - 1) < 0.15, `pinching in zoomed back from ${closer} to ${back} (started at ${before})`);
+  await page.close();
+});
+
 check("the core's tests pass compiled to WebAssembly", async ({ browser, base }) => {
   const page = await browser.newPage();
   page.on("pageerror", (e) => consoleErrors.push(`gtest: ${e.message}`));
