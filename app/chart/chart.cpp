@@ -73,6 +73,34 @@ std::vector<Tick> ticks(double lo, double hi, bool log, int target) {
   return out;
 }
 
+std::vector<Tick> ticks_that_fit(double lo, double hi, bool log, const std::function<float(double)>& at,
+                                 const std::function<float(const std::string&)>& width, float gap) {
+  const auto apart = [&](const std::vector<Tick>& t) {
+    std::vector<std::pair<float, float>> spans;  // each label's left and right, in pixels
+    for (const Tick& k : t)
+      if (!k.label.empty()) spans.emplace_back(at(k.value) - 0.5f * width(k.label), at(k.value) + 0.5f * width(k.label));
+    std::sort(spans.begin(), spans.end());
+    for (std::size_t i = 1; i < spans.size(); ++i)
+      if (spans[i].first < spans[i - 1].second + gap) return false;
+    return true;
+  };
+  std::vector<Tick> out;
+  for (int target = 5; target >= 1; --target) {
+    out = ticks(lo, hi, log, target);
+    if (apart(out)) return out;
+  }
+  // Still too close (a log axis's 2 and 5, or a very narrow chart): the minor labels go, then every
+  // other major one, until they stand apart.
+  for (Tick& k : out)
+    if (!k.major) k.label.clear();
+  for (int every = 2; !apart(out) && every < 64; every *= 2) {
+    int n = 0;
+    for (Tick& k : out)
+      if (k.major && !k.label.empty() && n++ % 2 == 1) k.label.clear();
+  }
+  return out;
+}
+
 void axis_range(const Chart& chart, bool x_axis, double& lo, double& hi) {
   const Axis& axis = x_axis ? chart.x : chart.y;
   lo = std::numeric_limits<double>::infinity();

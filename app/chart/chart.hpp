@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -55,6 +56,12 @@ struct Tick {
   bool major = true;
 };
 std::vector<Tick> ticks(double lo, double hi, bool log, int target_count = 5);
+
+// An x axis's ticks as many as their labels leave room for (at most 5): `at` puts a value on the
+// axis (pixels), `width` measures a label; no two labels, centred on their ticks, come closer
+// than `gap` (a narrow chart would otherwise read 5 ticks' labels as "00.250.50.751").
+std::vector<Tick> ticks_that_fit(double lo, double hi, bool log, const std::function<float(double)>& at,
+                                 const std::function<float(const std::string&)>& width, float gap);
 
 // The range the axis shows: the data's, widened to whole ticks, or the one set.
 void axis_range(const Chart& chart, bool x_axis, double& lo, double& hi);

@@ -68,19 +68,9 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
   const Mapping mx{xlo, xhi, chart.x.log, left, right}, my{ylo, yhi, chart.y.log, bottom, top};
   // The x ticks: as many as the labels leave room for, never two labels running together (a
   // narrow chart takes 5 ticks' "0 0.25 0.5 0.75 1" as "00.250.50.751").
-  std::vector<Tick> xt;
-  for (int target = 5; target >= 1; --target) {
-    xt = ticks(xlo, xhi, chart.x.log, target);
-    float last = -FLT_MAX;
-    bool apart = true;
-    for (const Tick& t : xt) {
-      if (t.label.empty()) continue;
-      const float half = 0.5f * ImGui::CalcTextSize(t.label.c_str()).x, at = mx(t.value);
-      if (at - half < last + 0.25f * line_h) apart = false;
-      last = at + half;
-    }
-    if (apart) break;
-  }
+  const std::vector<Tick> xt = ticks_that_fit(
+      xlo, xhi, chart.x.log, [&](double v) { return mx(v); },
+      [](const std::string& label) { return ImGui::CalcTextSize(label.c_str()).x; }, 0.25f * line_h);
 
   if (!chart.title.empty()) list->AddText(ImVec2(origin.x, origin.y), text, fitted_title(chart, size.x).c_str());
   list->AddText(ImVec2(origin.x, top - line_h * 1.1f), text, chart.y.label.c_str());

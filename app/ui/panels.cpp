@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string_view>
 
 #include "chart/imgui_chart.hpp"
 #include "chart/stability_region.hpp"
@@ -31,11 +32,39 @@ ImVec4 v4(const draw::Rgba& c) { return ImVec4(c.r, c.g, c.b, c.a); }
 const ImVec4 kSafe(0.35f, 0.85f, 0.45f, 1), kNear(1.0f, 0.75f, 0.2f, 1), kBeyond(1.0f, 0.36f, 0.32f, 1),
     kNeutral(0.55f, 0.75f, 1.0f, 1);
 
+// This frame's panels are laid out for touch (ui/layout.hpp): no hover, thumbs.
+bool g_touch = false;
+
+// A slider; on a touch layout with - and + beside it, so that a thumb sets a value a step at a
+// time (a logarithmic slider by x1.25, a linear one by a twentieth of its range).
 bool slider(const char* label, double& value, double lo, double hi, bool log, const char* format = "%.3g") {
+  const ImGuiSliderFlags flags = log ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None;
   float v = static_cast<float>(value);
-  const bool changed = ImGui::SliderFloat(label, &v, static_cast<float>(lo), static_cast<float>(hi), format,
-                                          log ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None);
-  if (changed) value = v;
+  if (!g_touch) {
+    const bool changed = ImGui::SliderFloat(label, &v, static_cast<float>(lo), static_cast<float>(hi), format, flags);
+    if (changed) value = v;
+    return changed;
+  }
+  const std::string_view name(label);
+  const std::string shown(name.substr(0, name.find("##")));
+  const float button = ImGui::GetFrameHeight(), spacing = ImGui::GetStyle().ItemInnerSpacing.x;
+  const float width = ImGui::CalcItemWidth() - 2 * (button + spacing);
+  ImGui::PushID(label);
+  double next = value;
+  if (ImGui::Button("-", ImVec2(button, button))) next = log ? value / 1.25 : value - (hi - lo) / 20;
+  ImGui::SameLine(0, spacing);
+  ImGui::SetNextItemWidth(std::max(width, button));
+  if (ImGui::SliderFloat("##value", &v, static_cast<float>(lo), static_cast<float>(hi), format, flags)) next = v;
+  ImGui::SameLine(0, spacing);
+  if (ImGui::Button("+", ImVec2(button, button))) next = log ? std::max(value, lo > 0 ? lo : 1e-3 * hi) * 1.25 : value + (hi - lo) / 20;
+  if (!shown.empty()) {
+    ImGui::SameLine(0, spacing);
+    ImGui::TextUnformatted(shown.c_str());
+  }
+  ImGui::PopID();
+  next = std::clamp(next, lo, hi);
+  const bool changed = next != value;
+  value = next;
   return changed;
 }
 
@@ -137,6 +166,7 @@ void gauge(app::Session& session, app::Lane& lane, float width, bool explain) {
   ImGui::TextColored(color, "%s", verdict.c_str());
   if (ImGui::IsItemHovered() && limit) ImGui::SetTooltip("%s", tr(m.stability));
   if (!explain || !limit) return;
+  if (g_touch) text_wrapped_disabled(tr(m.stability));  // (no hover under a finger)
   if (analysis && !analysis->oscillates()) {
     text_wrapped_disabled(format_text(tr("no oscillating modes (%s); %s"), tr(analysis->no_modes_reason()).c_str(),
                                       describe(*limit).c_str()));
@@ -610,6 +640,7 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
   const float pad = 8.0f * s;
   const bool few = ui.presentation;
   const PanelLayout layout = panel_layout(ui, width, height);
+  g_touch = layout.touch;
   // A thumb's targets: frames at least 44 units high (Apple's guideline; Material's is 48 dp).
   if (layout.touch) {
     const float frame_pad = std::max(ImGui::GetStyle().FramePadding.y, 0.5f * (44.0f * s - ImGui::GetFontSize()));
@@ -659,7 +690,7 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
     }
     if (ui.platform_controls) ui.platform_controls();
     const std::string about = tr(session.scene().description);
-    const std::size_t stop = about.find(". ");
+    const std::size_t stop = g_touch ? std::string::npos : about.find(". ");  // (touch: all of it, no hover)
     text_wrapped_disabled(stop == std::string::npos ? about : about.substr(0, stop + 1) + " (...)");
     if (ImGui::IsItemHovered() && stop != std::string::npos) {
       ImGui::BeginTooltip();

@@ -4,8 +4,13 @@
 
 #include "chart/chart.hpp"
 
+#include <cmath>
+#include <tuple>
+
 namespace springlab::chart {
 namespace {
+
+float width_of_8(const std::string& label) { return 8.0f * static_cast<float>(label.size()); }
 
 std::vector<std::string> major_labels(const std::vector<Tick>& ticks) {
   std::vector<std::string> out;
@@ -34,6 +39,37 @@ TEST(ChartTicks, LogMinorTicksLabelTwoAndFiveOnShortAxes) {
     if (!t.major && !t.label.empty()) labelled.push_back(t.label);
   std::sort(labelled.begin(), labelled.end());
   EXPECT_EQ(labelled, (std::vector<std::string>{"2", "20", "5", "50"}));
+}
+
+// A narrow chart (a phone, a panel on the side) keeps its x labels apart: as many ticks as fit,
+// never two labels running together, and all five where there is room.
+TEST(ChartTicks, XLabelsNeverRunTogether) {
+  const auto width = [](const std::string& label) { return 8.0f * static_cast<float>(label.size()); };  // 8 px a character
+  for (const auto& [lo, hi, log] : std::vector<std::tuple<double, double, bool>>{
+           {0.0, 1.0, false}, {-1.0, 1.0, false}, {0.0, 1.5, false}, {1e-4, 0.01, true}, {-0.12, -0.08, false}}) {
+    int most = 0;
+    for (float plot = 40.0f; plot <= 800.0f; plot += 20.0f) {
+      const auto at = [&](double v) {
+        const double f = log ? (std::log10(v) - std::log10(lo)) / (std::log10(hi) - std::log10(lo)) : (v - lo) / (hi - lo);
+        return static_cast<float>(f) * plot;
+      };
+      const std::vector<Tick> t = ticks_that_fit(lo, hi, log, at, width, 4.0f);
+      float last = -1e30f;
+      int labels = 0;
+      for (const Tick& k : t) {
+        if (k.label.empty()) continue;
+        ++labels;
+        EXPECT_GE(at(k.value) - 0.5f * width(k.label), last + 4.0f) << lo << ".." << hi << " in " << plot << " px";
+        last = at(k.value) + 0.5f * width(k.label);
+      }
+      EXPECT_GE(labels, 1) << plot;
+      most = std::max(most, labels);
+    }
+    EXPECT_GE(most, 3) << lo << ".." << hi;  // a wide chart keeps several
+  }
+  // The case a phone showed: 5 ticks' labels in 100 px ran together as "00.250.50.751.00".
+  const auto at = [](double v) { return static_cast<float>(v) * 100.0f; };
+  EXPECT_LT(ticks_that_fit(0.0, 1.0, false, at, width_of_8, 4.0f).size(), ticks(0.0, 1.0, false, 5).size());
 }
 
 }  // namespace
