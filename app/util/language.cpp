@@ -64,17 +64,18 @@ std::string check_language(const std::string& tag, const std::string& what) {
 }
 
 std::string environment_language() {
-  // LANGUAGE is a list ("zh_CN:en"); GNU gettext ignores it under the C locale.
-  const char* all = std::getenv("LC_ALL");
-  const char* messages = std::getenv("LC_MESSAGES");
-  const char* lang = std::getenv("LANG");
-  const char* locale = all && *all ? all : messages && *messages ? messages : lang && *lang ? lang : nullptr;
-  if (const char* list = std::getenv("LANGUAGE"); list && *list && !(locale && std::string(locale) == "C")) {
-    const std::string first(list, std::string(list).find(':') == std::string::npos ? std::string(list).size()
-                                                                                   : std::string(list).find(':'));
-    return supported_language(first);
-  }
-  return locale ? supported_language(locale) : "en";
+  const auto get = [](const char* name) -> std::string {
+    const char* value = std::getenv(name);
+    return value ? value : "";
+  };
+  // The locale's messages: the first of LC_ALL, LC_MESSAGES, LANG that is set.
+  std::string locale = get("LC_ALL");
+  if (locale.empty()) locale = get("LC_MESSAGES");
+  if (locale.empty()) locale = get("LANG");
+  // LANGUAGE, a list ("zh_CN:en"), comes first, except under the C locale (as GNU gettext does).
+  const std::string list = get("LANGUAGE");
+  if (!list.empty() && locale != "C" && locale != "POSIX") return supported_language(list.substr(0, list.find(':')));
+  return locale.empty() ? "en" : supported_language(locale);
 }
 
 std::string cjk_font_path() {
