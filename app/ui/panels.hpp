@@ -6,9 +6,10 @@
 // window and, with `render --ui`, headlessly. They change the session only through its public
 // functions.
 //
-// Layout: the left panel and the charts fit 1280x720 at scale 1 with nothing cut off (the rarer
-// controls fold away); presentation mode (P) is for a projector: larger text, thicker lines, the
-// left panel down to what a class watches, one chart.
+// Layout (ui/layout.hpp, chosen by the screen): on a laptop or a monitor the left panel and the
+// charts fit 1280x720 at scale 1 with nothing cut off (the rarer controls fold away); a small
+// laptop, a tablet and a phone, upright or on its side, get their own; presentation mode (P) is for
+// a projector: larger text, thicker lines, the left panel down to what a class watches, one chart.
 #pragma once
 
 #include <array>
@@ -47,7 +48,6 @@ struct UiState {
   float scale = 1.0f;
   bool panels = true;  // H hides them
   bool help = false;   // F1
-  bool panels_over_scene = false;  // the scene fills the whole frame (too small to share)
   bool accuracy = false;           // the Compare panel (accuracy against cost), A
   bool presentation = false;       // P: for a projector
   bool region = false;             // G: the stability region
