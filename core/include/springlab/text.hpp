@@ -8,7 +8,9 @@
 // them), so numbers and units keep their format: "h = %.4g s".
 #pragma once
 
+#include <functional>
 #include <string>
+#include <string_view>
 #include <unordered_map>
 
 // Marks a string for extraction where tr() cannot run (a constant table); tr() it where shown.
@@ -19,8 +21,13 @@ namespace springlab {
 // A language's translations: English -> translation. A key with a context is "context\x04english"
 // (gettext's convention).
 struct Catalog {
+  // Looked up by any string type without making a std::string (C++20's heterogeneous lookup).
+  struct Hash {
+    using is_transparent = void;
+    std::size_t operator()(std::string_view s) const { return std::hash<std::string_view>{}(s); }
+  };
   std::string language;  // "zh-CN"
-  std::unordered_map<std::string, std::string> entries;
+  std::unordered_map<std::string, std::string, Hash, std::equal_to<>> entries;
 };
 
 // Reads a PO file's text (`origin` names it in messages). Fuzzy and untranslated entries are left

@@ -112,29 +112,25 @@ Catalog read_po(const std::string& text, const std::string& origin) {
     const std::size_t end = line.find_first_of(" \t\"", start);
     const std::string keyword = line.substr(start, end - start);
     if (!entry.has_id && !entry.has_context && !entry.has_str) entry.line = reader.line;
+    // A keyword's string into `field`; a msgctxt or msgid after a whole entry's starts the next.
+    const auto take = [&](std::string& field, bool& has, bool starts_new) {
+      if (starts_new) {
+        finish();
+        entry.line = reader.line;
+      }
+      has = true;
+      field = reader.quoted(line, end);
+      target = &field;
+    };
     if (keyword == "msgctxt") {
-      if (entry.has_id || entry.has_context) {  // a new entry with no blank line before it
-        finish();
-        entry.line = reader.line;
-      }
-      entry.has_context = true;
-      entry.context = reader.quoted(line, end);
-      target = &entry.context;
+      take(entry.context, entry.has_context, entry.has_id || entry.has_context);
     } else if (keyword == "msgid") {
-      if (entry.has_id) {
-        finish();
-        entry.line = reader.line;
-      }
-      entry.has_id = true;
-      entry.id = reader.quoted(line, end);
-      target = &entry.id;
+      take(entry.id, entry.has_id, entry.has_id);
     } else if (keyword == "msgid_plural") {
       ignored = reader.quoted(line, end);
       target = &ignored;
     } else if (keyword == "msgstr" || keyword == "msgstr[0]") {
-      entry.has_str = true;
-      entry.str = reader.quoted(line, end);
-      target = &entry.str;
+      take(entry.str, entry.has_str, false);
     } else if (keyword.rfind("msgstr[", 0) == 0) {
       ignored = reader.quoted(line, end);
       target = &ignored;
@@ -157,7 +153,7 @@ std::string current_language() {
 const char* tr(const char* english) {
   const Catalog* c = current_catalog();
   if (!c || !english || !*english) return english;
-  const auto it = c->entries.find(english);
+  const auto it = c->entries.find(std::string_view(english));  // (no string made: tr() runs every frame)
   return it == c->entries.end() ? english : it->second.c_str();
 }
 
