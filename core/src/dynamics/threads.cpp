@@ -2,7 +2,9 @@
 // waited for unless it holds work.
 #include "dynamics/threads.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <exception>
 #include <condition_variable>
 #include <memory>
 #include <mutex>
@@ -145,5 +147,31 @@ void Team::yielded() {}
 Team::Counts Team::counts() { return {}; }
 
 #endif
+
+void each(int jobs, int workers, const std::function<void(int)>& job) {
+  workers = kAvailable ? std::clamp(workers, 1, jobs) : 1;
+  std::atomic<int> next{0};
+  std::exception_ptr failure;
+  std::mutex failed;
+  const int caller_team = max_team();
+  const auto work = [&] {
+    set_max_team(1);
+    for (int j; (j = next.fetch_add(1)) < jobs;) {
+      try {
+        job(j);
+      } catch (...) {
+        const std::lock_guard lock(failed);
+        if (!failure) failure = std::current_exception();
+        next.store(jobs);
+      }
+    }
+  };
+  std::vector<std::thread> helpers;
+  for (int w = 1; w < workers; ++w) helpers.emplace_back(work);
+  work();
+  for (std::thread& t : helpers) t.join();
+  set_max_team(caller_team);
+  if (failure) std::rethrow_exception(failure);
+}
 
 }  // namespace springlab::threads

@@ -132,4 +132,11 @@ class Team {
   static void yielded();
 };
 
+// Runs job(i) for each i in [0, jobs) on `workers` threads, the caller one of them (without
+// threads, the caller alone), each taking the next job when it has finished one: independent
+// jobs of uneven length, such as a sweep's runs or a stability analysis's searches. Each worker's
+// own parallel loops run on one thread. The first exception a job throws is rethrown here once
+// every worker has stopped; the jobs not yet started are then skipped.
+void each(int jobs, int workers, const std::function<void(int)>& job);
+
 }  // namespace springlab::threads

@@ -120,6 +120,31 @@ struct Balance {
     A.setFromTriplets(t.begin(), t.end());
     return A;
   }
+  // The springs' Hessian blocks at x (the same as system()'s), for products without assembly.
+  std::vector<Eigen::Matrix3d> blocks(const Points& x) const {
+    std::vector<Eigen::Matrix3d> out(static_cast<std::size_t>(model.spring_count()));
+    for (int s = 0; s < model.spring_count(); ++s)
+      out[s] = spring_jacobian(x.row(model.spring_a[s]).transpose(), x.row(model.spring_b[s]).transpose(),
+                               Vec3::Zero(), Vec3::Zero(), model.ks(s), 0.0, model.rest_length[s], false)
+                   .dfdx;
+    return out;
+  }
+  // (K + mu M) v from the blocks: one pass over the springs.
+  Eigen::VectorXd product(const std::vector<Eigen::Matrix3d>& k, double mu, const Eigen::VectorXd& v) const {
+    Eigen::VectorXd y = Eigen::VectorXd::Zero(v.size());
+    for (int s = 0; s < model.spring_count(); ++s) {
+      const int a = index[model.spring_a[s]], b = index[model.spring_b[s]];
+      Vec3 d = Vec3::Zero();
+      if (a >= 0) d += v.segment<3>(3 * a);
+      if (b >= 0) d -= v.segment<3>(3 * b);
+      const Vec3 g = k[s] * d;
+      if (a >= 0) y.segment<3>(3 * a) += g;
+      if (b >= 0) y.segment<3>(3 * b) -= g;
+    }
+    for (int i = 0; i < model.particle_count(); ++i)
+      if (index[i] >= 0) y.segment<3>(3 * index[i]) += mu * model.mass[i] * v.segment<3>(3 * index[i]);
+    return y;
+  }
   void move(Points& x, const Eigen::VectorXd& dx, double scale) const {
     for (int i = 0; i < model.particle_count(); ++i)
       if (index[i] >= 0) x.row(i) += scale * dx.segment<3>(3 * index[i]).transpose();
@@ -135,6 +160,15 @@ void relax(const Model& model, const Balance& balance, State& rest, double toler
   springs.attractors.clear();
   const int n = model.particle_count();
   Points v = Points::Zero(n, 3), zero = Points::Zero(n, 3), f(n, 3);
+  // Column by column (vectorised): the weight of the particles that have a balance, and which
+  // particles are free (a pinned one's inverse mass is 0, so its velocity stays 0).
+  Points weight = Points::Zero(n, 3);
+  Eigen::ArrayXd free = Eigen::ArrayXd::Zero(n);
+  for (int i = 0; i < n; ++i) {
+    if (balance.weighed[i]) weight.row(i) = model.mass[i] * model.gravity.transpose();
+    free[i] = balance.index[i] >= 0 ? 1.0 : 0.0;
+  }
+  const Eigen::Map<const Eigen::ArrayXd> mass(model.mass.data(), n), inv_mass(model.inv_mass.data(), n);
   SpringForces buffer;
   double kinetic = 0.0, h = 0.0;
   constexpr int kBudget = 20000, kLook = 50;
@@ -153,24 +187,57 @@ void relax(const Model& model, const Balance& balance, State& rest, double toler
       h = 1.0 / std::sqrt(bound * std::min(1.0, 1.1 * top.value));
     }
     evaluate_forces(springs, rest.x, zero, f, buffer, ForceOutput::Force);
-    double largest = 0.0, energy = 0.0;
-    for (int i = 0; i < n; ++i) {
-      if (balance.index[i] < 0) continue;
-      if (balance.weighed[i]) f.row(i) += model.mass[i] * model.gravity.transpose();
-      if (k % kLook == 0) largest = std::max(largest, f.row(i).cwiseAbs().maxCoeff());
-      v.row(i) += (h * model.inv_mass[i]) * f.row(i);
-      energy += model.mass[i] * v.row(i).squaredNorm();
+    f += weight;
+    if (k % kLook == 0) {
+      double largest = 0.0;
+      for (int c = 0; c < 3; ++c) largest = std::max(largest, (free * f.col(c).array()).abs().maxCoeff());
+      if (largest <= tolerance) return;
     }
-    if (k % kLook == 0 && largest <= tolerance) return;
+    double energy = 0.0;
+    for (int c = 0; c < 3; ++c) {
+      v.col(c).array() += h * inv_mass * f.col(c).array();
+      energy += (mass * v.col(c).array().square()).sum();
+    }
     if (energy < kinetic) {
       v.setZero();  // past a peak of the kinetic energy: take it all out
       kinetic = 0.0;
       continue;
     }
     kinetic = energy;
-    for (int i = 0; i < n; ++i)
-      if (balance.index[i] >= 0) rest.x.row(i) += h * v.row(i);
+    rest.x += h * v;
   }
+}
+
+using Factor = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>;
+
+// (K + mu M) dx = f by conjugate gradients with an earlier factorisation of the system as the
+// preconditioner: near the balance K changes little from one Newton step to the next, so the
+// preconditioned system is the identity plus a small change and a few products (a pass over the
+// springs and two triangular solves each) replace a factorisation. False when that fails: no
+// convergence within the budget, or a direction of negative curvature (K indefinite where the
+// LDL^T of the new system is needed).
+bool preconditioned_solve(const Balance& balance, const std::vector<Eigen::Matrix3d>& k, double mu,
+                          const Factor& preconditioner, const Eigen::VectorXd& f, double tolerance,
+                          Eigen::VectorXd& dx) {
+  constexpr int kIterations = 10;
+  dx = Eigen::VectorXd::Zero(f.size());
+  Eigen::VectorXd r = f, z = preconditioner.solve(r), p = z;
+  double rz = r.dot(z);
+  const double goal = tolerance * f.norm();
+  for (int it = 0; it < kIterations; ++it) {
+    const Eigen::VectorXd ap = balance.product(k, mu, p);
+    const double curvature = p.dot(ap);
+    if (!(curvature > 0.0)) return false;
+    const double alpha = rz / curvature;
+    dx += alpha * p;
+    r -= alpha * ap;
+    if (r.norm() <= goal) return true;
+    z = preconditioner.solve(r);
+    const double next = r.dot(z);
+    p = z + (next / rz) * p;
+    rz = next;
+  }
+  return false;
 }
 
 }  // namespace
@@ -208,28 +275,36 @@ State equilibrium(const Model& model, const State& state) {
   constexpr double kFactorisationWork = 4e5;
   const int kFactorisations = static_cast<int>(kFactorisationWork / (3.0 * balance.free));
   if (3 * balance.free > kDirectDofs) return rest;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
-  bool analysed = false;
+  Factor solver;
+  bool analysed = false, factored = false;
   double energy = balance.potential(rest.x);
   int factorisations = 0;
   for (int iteration = 0; iteration < 200 && factorisations < kFactorisations; ++iteration) {
     check_cancel();
     const Eigen::VectorXd f = balance.force(rest.x);
     if (f.lpNorm<Eigen::Infinity>() <= tolerance) break;
+    const std::vector<Eigen::Matrix3d> k = balance.blocks(rest.x);
+    // Inexact Newton (Eisenstat and Walker): the linear solve only as accurate as the force is
+    // small, relative to its yardstick; the convergence stays quadratic.
+    const double forcing = std::clamp(f.lpNorm<Eigen::Infinity>() / force_scale, 1e-12, 0.1);
     bool moved = false;
     for (int attempt = 0; attempt < 40 && factorisations < kFactorisations; ++attempt) {
-      const Eigen::SparseMatrix<double> A = balance.system(rest.x, mu);
-      if (!analysed) {
-        solver.analyzePattern(A);
-        analysed = true;
+      Eigen::VectorXd dx;
+      if (!factored || !preconditioned_solve(balance, k, mu, solver, f, forcing, dx)) {
+        const Eigen::SparseMatrix<double> A = balance.system(rest.x, mu);
+        if (!analysed) {
+          solver.analyzePattern(A);
+          analysed = true;
+        }
+        solver.factorize(A);
+        ++factorisations;  // every one counts against the budget, the accepted ones too
+        factored = solver.info() == Eigen::Success;
+        if (!factored) {
+          mu = std::max(10.0 * mu, mu_floor);
+          continue;
+        }
+        dx = solver.solve(f);
       }
-      solver.factorize(A);
-      ++factorisations;  // every one counts against the budget, the accepted ones too
-      if (solver.info() != Eigen::Success) {
-        mu = std::max(10.0 * mu, mu_floor);
-        continue;
-      }
-      const Eigen::VectorXd dx = solver.solve(f);
       if (dx.lpNorm<Eigen::Infinity>() <= 1e-13 * size) break;  // nothing left to move
       State trial = rest;
       balance.move(trial.x, dx, 1.0);

@@ -1,7 +1,9 @@
 #include "stability/linearised.hpp"
 
+#include <algorithm>
 #include <cmath>
 
+#include "springlab/simd.hpp"
 #include "springlab/spring_kernel.hpp"
 
 namespace springlab {
@@ -16,24 +18,24 @@ Linearised::Linearised(const Model& model, const State& at) {
   drag_ = model.drag;
   // Springs with a pinned end keep their free end's diagonal block; springs between two pinned
   // particles add nothing.
+  spans_ = model.spans;
+  const int springs = model.spring_count();
+  for (auto* v : {&dx_, &dy_, &dz_, &along_k_, &across_k_, &along_c_, &across_c_}) v->assign(springs, 0.0);
   std::vector<double> k_row(n, 0.0), c_row(n, 0.0);
-  for (int s = 0; s < model.spring_count(); ++s) {
+  for (int s = 0; s < springs; ++s) {
     const int a = model.spring_a[s], b = model.spring_b[s];
     if (model.pinned(a) && model.pinned(b)) continue;
     const Vec3 d = (at.x.row(b) - at.x.row(a)).transpose();
     const DefiniteSpringJacobian J =
         definite_spring_jacobian(d.squaredNorm(), model.ks(s), model.kd(s), model.rest_length[s]);
     const double across_c = model.rest_length[s] == 0.0 && coincident(d.norm(), 0.0) ? model.kd(s) : 0.0;
-    if (J.stiff_along == 0.0 && J.stiff_across == 0.0 && J.damp_along == 0.0 && across_c == 0.0) continue;
-    a_.push_back(a);
-    b_.push_back(b);
-    dx_.push_back(d.x());
-    dy_.push_back(d.y());
-    dz_.push_back(d.z());
-    along_k_.push_back(J.stiff_along);
-    across_k_.push_back(J.stiff_across);
-    along_c_.push_back(J.damp_along);
-    across_c_.push_back(across_c);
+    dx_[s] = d.x();
+    dy_[s] = d.y();
+    dz_[s] = d.z();
+    along_k_[s] = J.stiff_along;
+    across_k_[s] = J.stiff_across;
+    along_c_[s] = J.damp_along;
+    across_c_[s] = across_c;
     // Gershgorin on the scaled matrices: row i sums |K^_ij| = r_i sum_j |K_ij| r_j (r = M^-1/2).
     // A 3x3 block's row sums are at most sqrt(3) times its largest eigenvalue, along |d|^2 +
     // across for K_s, along |d|^2 for C_s; the block sits at (a, a), (a, b), (b, a), (b, b).
@@ -53,34 +55,74 @@ Linearised::Linearised(const Model& model, const State& at) {
   }
 }
 
+namespace {
+
+// A span's springs, a chunk at a time: their forces first, then added to their a-ends and taken
+// from their b-ends in two separate passes. (Adding each spring's force to both ends at once
+// reads a y just written when the ends are closer than four particles, as along a rope or a
+// cloth's row: the store cannot be forwarded to the overlapping load, and every four springs
+// wait for it.)
+constexpr int kChunk = 128;
+
+struct SpanTerms {
+  const double *dx, *dy, *dz, *along_k, *across_k, *along_c, *across_c;
+  const double* ua[3];
+  const double* ub[3];
+};
+
+// Springs k .. k + lanes - 1 (T = f64x4: four of them, double: one):
+//   du = u_a - u_b,  f = (a along_k + b along_c) (d . du) d + (a across_k + b across_c) du.
+template <typename T>
+void forces_at(const SpanTerms& t, double a, double b, int k, double* f[3], int j) {
+  using simd::at;
+  const T ux = at<T>(t.ua[0] + k) - at<T>(t.ub[0] + k), uy = at<T>(t.ua[1] + k) - at<T>(t.ub[1] + k),
+          uz = at<T>(t.ua[2] + k) - at<T>(t.ub[2] + k);
+  const T dx = at<T>(t.dx + k), dy = at<T>(t.dy + k), dz = at<T>(t.dz + k);
+  const T along = (a * at<T>(t.along_k + k) + b * at<T>(t.along_c + k)) * (dx * ux + dy * uy + dz * uz);
+  const T across = a * at<T>(t.across_k + k) + b * at<T>(t.across_c + k);
+  simd::store(f[0] + j, along * dx + across * ux);
+  simd::store(f[1] + j, along * dy + across * uy);
+  simd::store(f[2] + j, along * dz + across * uz);
+}
+
+// y[k] += sign f[k], k < count.
+void accumulate(double* y, const double* f, int count, double sign) {
+  int k = 0;
+  for (; k + simd::kLanes <= count; k += simd::kLanes)
+    simd::store(y + k, simd::load(y + k) + sign * simd::load(f + k));
+  for (; k < count; ++k) y[k] += sign * f[k];
+}
+
+}  // namespace
+
 void Linearised::apply(double a, double b, const Points& x, Points& y) const {
   const int n = particles();
   y.setZero(n, 3);
   Points u(n, 3);
-  for (int c = 0; c < 3; ++c)
-    for (int i = 0; i < n; ++i) u(i, c) = root_inv_mass_[i] * x(i, c);
-  const double* U[3] = {u.col(0).data(), u.col(1).data(), u.col(2).data()};
-  double* Y[3] = {y.col(0).data(), y.col(1).data(), y.col(2).data()};
-  const std::size_t springs = a_.size();
-  for (std::size_t s = 0; s < springs; ++s) {
-    const int i = a_[s], j = b_[s];
-    // K_s du = along_k (d . du) d + across_k du; C_s du = along_c (d . du) d + across_c du;
-    // du = u_a - u_b.
-    const double ux = U[0][i] - U[0][j], uy = U[1][i] - U[1][j], uz = U[2][i] - U[2][j];
-    const double dot = dx_[s] * ux + dy_[s] * uy + dz_[s] * uz;
-    const double along = (a * along_k_[s] + b * along_c_[s]) * dot;
-    const double across = a * across_k_[s] + b * across_c_[s];
-    const double fx = along * dx_[s] + across * ux, fy = along * dy_[s] + across * uy,
-                 fz = along * dz_[s] + across * uz;
-    Y[0][i] += fx;
-    Y[1][i] += fy;
-    Y[2][i] += fz;
-    Y[0][j] -= fx;
-    Y[1][j] -= fy;
-    Y[2][j] -= fz;
+  const Eigen::Map<const Eigen::ArrayXd> r(root_inv_mass_.data(), n);
+  for (int c = 0; c < 3; ++c) u.col(c).array() = r * x.col(c).array();
+  alignas(32) double buffer[3][kChunk];
+  double* f[3] = {buffer[0], buffer[1], buffer[2]};
+  for (const SpringSpan& span : spans_) {
+    for (int first = 0; first < span.count; first += kChunk) {
+      const int s = span.first + first, count = std::min(kChunk, span.count - first);
+      const int a0 = span.a0 + first, b0 = span.b0 + first;
+      SpanTerms t{dx_.data() + s,       dy_.data() + s,      dz_.data() + s,       along_k_.data() + s,
+                  across_k_.data() + s, along_c_.data() + s, across_c_.data() + s, {}, {}};
+      for (int c = 0; c < 3; ++c) {
+        t.ua[c] = u.col(c).data() + a0;
+        t.ub[c] = u.col(c).data() + b0;
+      }
+      int k = 0;
+      for (; k + simd::kLanes <= count; k += simd::kLanes) forces_at<simd::f64x4>(t, a, b, k, f, k);
+      for (; k < count; ++k) forces_at<double>(t, a, b, k, f, k);
+      for (int c = 0; c < 3; ++c) {
+        accumulate(y.col(c).data() + a0, f[c], count, 1.0);
+        accumulate(y.col(c).data() + b0, f[c], count, -1.0);
+      }
+    }
   }
-  for (int c = 0; c < 3; ++c)
-    for (int i = 0; i < n; ++i) Y[c][i] = root_inv_mass_[i] * (Y[c][i] + b * drag_ * U[c][i]);
+  for (int c = 0; c < 3; ++c) y.col(c).array() = r * (y.col(c).array() + (b * drag_) * u.col(c).array());
 }
 
 double Linearised::stiffness(const Points& x) const {

@@ -10,8 +10,9 @@
 // numerical range of (C^, K^) that stability.cpp searches.
 //
 // Vectors are N x 3 Points over all particles. The spring terms are computed once, at
-// construction, so that the hundreds of products an eigen-solver asks for cost a pass over
-// arrays each.
+// construction, so that the thousands of products an eigen-solver asks for cost a pass over
+// arrays each: span by span (model.hpp), where spring first + k joins a0 + k to b0 + k, so that
+// the positions and results are read and written four springs at a time.
 #pragma once
 
 #include <Eigen/Core>
@@ -57,8 +58,10 @@ class Linearised {
  private:
   // One spring's blocks: K_s = along_k d d^T + across_k I, C_s = along_c d d^T + across_c I,
   // d = x_b - x_a. (across_c is k_d for a zero-length spring whose ends meet: it damps along
-  // whatever direction they part in, as its stiffness k_s I pulls back along any.)
-  std::vector<std::int32_t> a_, b_;
+  // whatever direction they part in, as its stiffness k_s I pulls back along any.) Every spring
+  // of the model in its order (a spring between two pinned particles acts on nothing: its ends'
+  // coordinates are zero in every vector).
+  std::vector<SpringSpan> spans_;
   std::vector<double> dx_, dy_, dz_, along_k_, across_k_, along_c_, across_c_;
   std::vector<double> root_inv_mass_;  // 0 for pinned particles
   std::vector<int> free_;

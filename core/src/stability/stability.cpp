@@ -15,8 +15,10 @@
 #include <stdexcept>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <sstream>
 
+#include "dynamics/threads.hpp"
 #include "stability/cancel.hpp"
 #include "stability/lanczos.hpp"
 #include "stability/linearised.hpp"
@@ -29,6 +31,18 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 using Complex = std::complex<double>;
+
+// Independent pieces of the analysis on the team's threads (threads.hpp), each under the
+// analysis's cancel flag (the flag is the calling thread's): results are the same whichever
+// thread runs which piece.
+template <typename Task>
+void each_task(int count, const Task& task) {
+  const std::atomic<bool>* flag = cancel_detail::g_flag;
+  threads::each(count, threads::max_team(), [&](int i) {
+    const CancelScope scope(flag);
+    task(i);
+  });
+}
 
 // Lanczos steps for one eigenpair: enough to converge on the crowded top of a long chain's
 // spectrum (about its length), and about 1e8 spring products at most.
@@ -111,14 +125,19 @@ class RangeTrace {
     const Sample top = at(0.0, random_);
     samples_.push_back(top);
     if (!(c_ > 0.0)) return;  // no damping: W is a segment of the kappa axis, its end is all
-    for (int side : {-1, 1}) {
+    // The two sides are independent chains: one task each.
+    std::vector<Sample> sides[2];
+    each_task(2, [&](int t) {
+      const int side = t == 0 ? -1 : 1;
       Points start = top.x;
       for (int j = 1; j <= points / 2; ++j) {
         const double phi = side * 0.5 * std::numbers::pi * j / (points / 2 + 0.5);
-        samples_.push_back(at(phi, start));
-        start = samples_.back().x;
+        sides[t].push_back(at(phi, start));
+        start = sides[t].back().x;
       }
-    }
+    });
+    for (auto& side : sides)
+      for (Sample& sample : side) samples_.push_back(std::move(sample));
     std::sort(samples_.begin(), samples_.end(), [](const Sample& p, const Sample& q) { return p.phi < q.phi; });
   }
 
@@ -128,10 +147,10 @@ class RangeTrace {
                              [](const Sample& p, const Sample& q) { return std::abs(p.phi) < std::abs(q.phi); });
   }
 
-  // The least of `limit` over the boundary: the best grid point, then a golden-section search
-  // between its neighbours. The points it adds are kept (the next method may use them).
+  // The least of `limit` over the boundary: the best point sampled, then Brent's search between
+  // its neighbours.
   template <typename Limit>
-  Sample least(const Limit& limit) {
+  Sample least(const Limit& limit) const {
     std::size_t best = 0;
     for (std::size_t j = 1; j < samples_.size(); ++j)
       if (limit(samples_[j]) < limit(samples_[best])) best = j;
@@ -146,34 +165,80 @@ class RangeTrace {
     const double edge = 0.5 * std::numbers::pi * (1.0 - 1e-9);
     double lo = best > 0 ? samples_[best - 1].phi : -edge;
     double hi = best + 1 < samples_.size() ? samples_[best + 1].phi : edge;
-    Sample found = samples_[best];
-    const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
-    double p = hi - ratio * (hi - lo), q = lo + ratio * (hi - lo);
-    Sample sp = at(p, found.x), sq = at(q, found.x);
-    for (int k = 0; k < 14; ++k) {
-      if (limit(sp) <= limit(sq)) {
-        hi = q;
-        q = p;
-        sq = std::move(sp);
-        p = hi - ratio * (hi - lo);
-        sp = at(p, sq.x);
-      } else {
-        lo = p;
-        p = q;
-        sp = std::move(sq);
-        q = lo + ratio * (hi - lo);
-        sq = at(q, sp.x);
-      }
-    }
-    for (const Sample* s : {&sp, &sq})
-      if (limit(*s) < limit(found)) found = *s;
-    samples_.push_back(sp);
-    samples_.push_back(sq);
-    std::sort(samples_.begin(), samples_.end(), [](const Sample& a, const Sample& b) { return a.phi < b.phi; });
-    return found;
+    return brent(limit, lo, hi, samples_[best]);
+  }
+
+  // A point found by a search, kept with the grid's (the modes the audit weighs).
+  void add(Sample s) {
+    const auto after = std::upper_bound(samples_.begin(), samples_.end(), s.phi,
+                                        [](double phi, const Sample& q) { return phi < q.phi; });
+    samples_.insert(after, std::move(s));
   }
 
  private:
+  // Brent's minimisation of limit(at(phi)) over [lo, hi] from the bracketing point `x` (R. P.
+  // Brent, Algorithms for Minimization without Derivatives, 1973, ch. 5): a parabola through the
+  // three best points where it falls inside and shrinks the bracket fast enough, a golden-section
+  // step where not. The limit is smooth in phi near its least (quadratic), so the parabolas
+  // converge superlinearly: about 6 points instead of golden section's 16 for the same phi.
+  template <typename Limit>
+  Sample brent(const Limit& limit, double lo, double hi, Sample x) const {
+    constexpr double kGolden = 0.3819660112501051;  // (3 - sqrt 5) / 2
+    constexpr double kTolerance = 3e-5;  // in phi (radians): the limit is quadratic there, to ~1e-12
+    Sample w = x, v = x;
+    double fx = limit(x), fw = fx, fv = fx;
+    double d = 0.0, e = 0.0;
+    for (int k = 0; k < 40; ++k) {
+      const double mid = 0.5 * (lo + hi), tol1 = kTolerance, tol2 = 2.0 * tol1;
+      if (std::abs(x.phi - mid) <= tol2 - 0.5 * (hi - lo)) break;
+      bool parabola = false;
+      if (std::abs(e) > tol1) {
+        const double r = (x.phi - w.phi) * (fx - fv);
+        double q = (x.phi - v.phi) * (fx - fw);
+        double p = (x.phi - v.phi) * q - (x.phi - w.phi) * r;
+        q = 2.0 * (q - r);
+        if (q > 0.0) p = -p;
+        q = std::abs(q);
+        const double before = e;
+        if (std::abs(p) < std::abs(0.5 * q * before) && p > q * (lo - x.phi) && p < q * (hi - x.phi)) {
+          e = d;
+          d = p / q;
+          const double u = x.phi + d;
+          if (u - lo < tol2 || hi - u < tol2) d = mid >= x.phi ? tol1 : -tol1;
+          parabola = true;
+        }
+      }
+      if (!parabola) {
+        e = x.phi >= mid ? lo - x.phi : hi - x.phi;
+        d = kGolden * e;
+      }
+      const double u = std::abs(d) >= tol1 ? x.phi + d : x.phi + (d >= 0.0 ? tol1 : -tol1);
+      Sample su = at(u, x.x);
+      const double fu = limit(su);
+      if (fu <= fx) {
+        (u >= x.phi ? lo : hi) = x.phi;
+        v = std::move(w);
+        fv = fw;
+        w = std::move(x);
+        fw = fx;
+        x = std::move(su);
+        fx = fu;
+      } else {
+        (u < x.phi ? lo : hi) = u;
+        if (fu <= fw || w.phi == x.phi) {
+          v = std::move(w);
+          fv = fw;
+          w = std::move(su);
+          fw = fu;
+        } else if (fu <= fv || v.phi == x.phi || v.phi == w.phi) {
+          v = std::move(su);
+          fv = fu;
+        }
+      }
+    }
+    return x;
+  }
+
   const Linearised& lin_;
   double k_, c_;
   Points random_;
@@ -182,11 +247,13 @@ class RangeTrace {
 
 // A limit from W: the least over its boundary, exact when the vector attaining it is an
 // eigenvector of the system with the eigenvalue that sets the limit.
-StabilityLimit range_limit(Method method, const Linearised& lin, RangeTrace& trace) {
+// The point attaining it is `found`.
+StabilityLimit range_limit(Method method, const Linearised& lin, const RangeTrace& trace, Sample& found) {
   StabilityLimit out;
   out.method = method;
   const auto limit = [&](const Sample& s) { return mode_limit(method, s.gamma, s.kappa); };
-  const Sample s = trace.least(limit);
+  found = trace.least(limit);
+  const Sample& s = found;
   out.h = limit(s);
   // A method stable as explicit Euler on the damping C^ + shift h K^ (modified Euler: shift 1/2).
   const double shift = method_info(method).damping_shift;
@@ -319,18 +386,34 @@ void StabilityAnalysis::analyse(const Model& model, const State& state, int dens
 
   RangeTrace trace(lin);
   trace.grid(16);
-  const Sample& stiffest = trace.stiffest();
+  const Sample stiffest = trace.stiffest();
   w_max_ = std::sqrt(std::max(stiffest.kappa, 0.0));
 
   const auto set = [&](StabilityLimit limit) { limits_[static_cast<int>(limit.method)] = std::move(limit); };
-  for (const MethodInfo& m : methods()) {
-    if (m.family != MethodFamily::Partitioned) continue;
+  // One search per method, independent of each other (each from the grid alone), so that they
+  // run on the team's threads in any order with the same results: the partitioned methods, and
+  // the Runge-Kutta ones where the spectrum is not dense. The Runge-Kutta searches first (the
+  // longest), so that the short ones fill in at the end.
+  std::vector<const MethodInfo*> searched;
+  for (const MethodFamily family : {MethodFamily::RungeKutta, MethodFamily::Partitioned})
+    for (const MethodInfo& m : methods())
+      if (m.family == family && (family != MethodFamily::RungeKutta || !dense_)) searched.push_back(&m);
+  std::vector<StabilityLimit> found_limits(searched.size());
+  std::vector<std::optional<Sample>> found_points(searched.size());
+  each_task(static_cast<int>(searched.size()), [&](int t) {
+    const MethodInfo& m = *searched[t];
     if (m.definite) {
       const DefiniteForm f = m.definite(model.verlet_damping);
-      set(definite_limit(m.id, f.a, f.b, f.c, lin, stiffest));
+      found_limits[t] = definite_limit(m.id, f.a, f.b, f.c, lin, stiffest);
     } else {
-      set(range_limit(m.id, lin, trace));
+      Sample point;
+      found_limits[t] = range_limit(m.id, lin, trace, point);
+      found_points[t] = std::move(point);
     }
+  });
+  for (std::size_t t = 0; t < searched.size(); ++t) {
+    set(std::move(found_limits[t]));
+    if (found_points[t]) trace.add(std::move(*found_points[t]));
   }
 
   if (dense_) {
@@ -383,8 +466,6 @@ void StabilityAnalysis::analyse(const Model& model, const State& state, int dens
       set(std::move(limit));
     }
   } else {
-    for (const MethodInfo& m : methods())
-      if (m.family == MethodFamily::RungeKutta) set(range_limit(m.id, lin, trace));
     for (const Sample& s : trace.samples()) modes_.push_back({s.gamma, s.kappa});
     growth_modes_ = modes_;
   }

@@ -114,24 +114,14 @@ Trajectory rk4_trajectory(const Model& model, const State& initial, double h, in
 // is parallel across runs instead). Cancelled, each stops within a sample of the run it makes
 // (its loops call check_cancel(): stability/cancel.hpp).
 void parallel_for(int jobs, int workers, const std::function<void(int)>& job, const std::atomic<bool>* cancel) {
-  std::atomic<int> next{0};
-  const int caller_threads = threads::max_team();
-  const auto work = [&] {
-    threads::set_max_team(1);
-    const CancelScope scope(cancel);
-    try {
-      for (int j; (j = next++) < jobs;) {
-        if (cancel && cancel->load()) return;
-        job(j);
-      }
-    } catch (const Cancelled&) {
-    }
-  };
-  std::vector<std::thread> threads;
-  for (int w = 1; w < workers; ++w) threads.emplace_back(work);
-  work();
-  for (auto& t : threads) t.join();
-  threads::set_max_team(caller_threads);
+  try {
+    threads::each(jobs, workers, [&](int j) {
+      const CancelScope scope(cancel);
+      check_cancel();
+      job(j);
+    });
+  } catch (const Cancelled&) {
+  }
 }
 
 std::string format(double x) {
