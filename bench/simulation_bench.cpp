@@ -141,26 +141,50 @@ BENCHMARK(BM_BuildScene)->Arg(64)->Arg(256)->Unit(benchmark::kMillisecond);
 
 // The stability analysis (stability.hpp: the equilibrium, then every method's limit from the
 // joint numerical range, the definiteness tests and, on small scenes, every eigenvalue): what
-// `run`, the divergence messages and the app's gauge wait for when a scene is loaded. Rope nodes
-// (0: the 64 x 64 cloth). BM_StabilityAtRest starts from the equilibrium (the analysis alone).
+// `run`, the divergence messages and the app's gauge wait for when a scene is loaded. Arguments:
+// a rope's nodes (0: a cloth), a cloth's side, and the threads (0: all; the analysis's searches
+// run on them side by side). BM_StabilityAtRest starts from the equilibrium (the analysis alone).
+Scene analysed_scene(const benchmark::State& state) {
+  const int nodes = static_cast<int>(state.range(0)), side = static_cast<int>(state.range(1));
+  return nodes > 0 ? rope(nodes) : cloth(side);
+}
+std::string analysed_label(const benchmark::State& state) {
+  const int nodes = static_cast<int>(state.range(0)), side = static_cast<int>(state.range(1));
+  const int threads = static_cast<int>(state.range(2));
+  return (nodes > 0 ? "rope " + std::to_string(nodes) : "cloth " + std::to_string(side) + "x" + std::to_string(side)) +
+         ", " + (threads > 0 ? std::to_string(threads) + " thread" + (threads > 1 ? "s" : "") : "all threads");
+}
+void analysis_arguments(benchmark::internal::Benchmark* b) {
+  for (int threads : {1, 0}) {
+    b->Args({1000, 0, threads});
+    b->Args({0, 64, threads});
+    b->Args({0, 128, threads});
+  }
+  b->Unit(benchmark::kMillisecond);
+}
+
 void BM_StabilityAnalysis(benchmark::State& state) {
-  const int nodes = static_cast<int>(state.range(0));
-  const Scene s = nodes > 0 ? rope(nodes) : cloth(64);
+  const Scene s = analysed_scene(state);
+  const int before = thread_count();
+  set_thread_count(static_cast<int>(state.range(2)));
   int dofs = 0;
   for (auto _ : state) dofs = StabilityAnalysis(s.model, s.state).dofs();
+  set_thread_count(before);
   state.counters["dofs"] = dofs;
-  state.SetLabel(nodes > 0 ? "rope " + std::to_string(nodes) : "cloth 64x64");
+  state.SetLabel(analysed_label(state));
 }
-BENCHMARK(BM_StabilityAnalysis)->Arg(1000)->Arg(0)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StabilityAnalysis)->Apply(analysis_arguments);
 
 void BM_StabilityAtRest(benchmark::State& state) {
-  const int nodes = static_cast<int>(state.range(0));
-  const Scene s = nodes > 0 ? rope(nodes) : cloth(64);
+  const Scene s = analysed_scene(state);
   const State rest = equilibrium(s.model, s.state);
+  const int before = thread_count();
+  set_thread_count(static_cast<int>(state.range(2)));
   for (auto _ : state) benchmark::DoNotOptimize(StabilityAnalysis(s.model, rest).w_max());
-  state.SetLabel(nodes > 0 ? "rope " + std::to_string(nodes) : "cloth 64x64");
+  set_thread_count(before);
+  state.SetLabel(analysed_label(state));
 }
-BENCHMARK(BM_StabilityAtRest)->Arg(1000)->Arg(0)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StabilityAtRest)->Apply(analysis_arguments);
 
 }  // namespace
 }  // namespace springlab

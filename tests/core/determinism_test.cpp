@@ -3,9 +3,14 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <atomic>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
+#include "dynamics/threads.hpp"
 #include "springlab/forces.hpp"
+#include "springlab/stability.hpp"
 #include "support.hpp"
 
 namespace springlab {
@@ -37,6 +42,55 @@ TEST(Determinism, ThreadCountDoesNotChangeABit) {
   }
   // More threads than blocks (and than cores): threads with one block, or none, waiting on others.
   EXPECT_EQ(run_hash(scene, Method::SymplecticEuler, 1, 40), run_hash(scene, Method::SymplecticEuler, 12, 40));
+}
+
+// The stability analysis's searches run side by side (threads::each): every limit, and the mode
+// that sets it, to the bit whatever the number of threads. The large scenes' path (the traced
+// numerical range) on a cloth small enough to run in a test.
+TEST(Determinism, TheStabilityAnalysisIsTheSameOnAnyNumberOfThreads) {
+  const Scene scene = test::shipped("cloth", {"cloth.width=10", "cloth.height=10"});
+  const auto analyse = [&](int threads) {
+    set_thread_count(threads);
+    StabilityAnalysis a(scene.model, scene.state, 0);
+    set_thread_count(0);
+    return a;
+  };
+  const StabilityAnalysis one = analyse(1), two = analyse(2), three = analyse(3);
+  ASSERT_FALSE(one.dense());
+  for (const StabilityAnalysis* other : {&two, &three}) {
+    EXPECT_EQ(one.w_max(), other->w_max());
+    for (const MethodInfo& m : methods()) {
+      SCOPED_TRACE(m.name);
+      const StabilityLimit &p = one.limit(m.id), &q = other->limit(m.id);
+      if (std::isnan(p.h)) {
+        EXPECT_TRUE(std::isnan(q.h));
+        continue;
+      }
+      EXPECT_EQ(p.h, q.h);
+      EXPECT_EQ(p.exact, q.exact);
+      ASSERT_EQ(p.mode.has_value(), q.mode.has_value());
+      if (p.mode) EXPECT_EQ(p.mode->w, q.mode->w);
+    }
+    EXPECT_EQ(one.modes().size(), other->modes().size());
+  }
+}
+
+// threads::each runs every job once, on as many threads as asked, and hands the first error a job
+// throws to the caller after the others have stopped (none is lost in a worker).
+TEST(Threads, EachRunsEveryJobOnceAndPassesOnTheFirstError) {
+  for (int workers : {1, 2, 5}) {
+    std::vector<std::atomic<int>> runs(37);
+    threads::each(37, workers, [&](int j) { ++runs[j]; });
+    for (int j = 0; j < 37; ++j) EXPECT_EQ(runs[j].load(), 1) << workers << " workers, job " << j;
+    std::atomic<int> started{0};
+    EXPECT_THROW(threads::each(37, workers,
+                               [&](int j) {
+                                 ++started;
+                                 if (j == 3) throw std::runtime_error("job 3");
+                               }),
+                 std::runtime_error);
+    EXPECT_LE(started.load(), 37);
+  }
 }
 
 // Called from the threads of an enclosing parallel region (each with its own buffers, as
