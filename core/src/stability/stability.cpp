@@ -99,12 +99,12 @@ class RangeTrace {
   explicit RangeTrace(const Linearised& lin)
       : lin_(lin), k_(lin.stiffness_bound()), c_(lin.damping_bound()), random_(lin.random_vector(0x9E3779B97F4A7C15ull)) {}
 
-  // A neighbour's vector starts it (they are close), with a tenth of a fixed random vector so
+  // A neighbour's vector starts it (they are close), with `mix` of a fixed random vector so
   // that no direction is missing from the start: the top may have moved to another mode.
-  Sample at(double phi, const Points& near) const {
+  Sample at(double phi, const Points& near, double mix = 0.1) const {
     check_cancel();
     const double a = std::cos(phi) / k_, b = c_ > 0.0 ? std::sin(phi) / c_ : 0.0;
-    const Points start = near + 0.1 * random_;
+    const Points start = near + mix * random_;
     const TopEigenpair top = top_eigenpair([&](const Points& x, Points& y) { lin_.apply(a, b, x, y); }, start,
                                            lanczos_cap(lin_), 1e-10);
     Sample s;
@@ -213,7 +213,9 @@ class RangeTrace {
         d = kGolden * e;
       }
       const double u = std::abs(d) >= tol1 ? x.phi + d : x.phi + (d >= 0.0 ? tol1 : -tol1);
-      Sample su = at(u, x.x);
+      // A point inside the bracket, from x's vector with a hundredth of the random one: between
+      // two grid points the top has less room to change mode, and the start is closer to it.
+      Sample su = at(u, x.x, 0.01);
       const double fu = limit(su);
       if (fu <= fx) {
         (u >= x.phi ? lo : hi) = x.phi;
