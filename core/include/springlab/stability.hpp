@@ -120,7 +120,8 @@ class StabilityAnalysis {
   /// `dense_dofs`: up to how many free coordinates every eigenvalue is computed (the tests make
   /// the large scenes' path run on small ones, to check it against the dense one). `cancel`, when
   /// set while it runs (from another thread), stops it within milliseconds (a factorisation
-  /// under way is finished first): it is then cancelled() and says nothing.
+  /// under way is finished first): it is then cancelled() and says nothing. Its searches run
+  /// side by side on up to thread_count() threads (forces.hpp), with the same results on any.
   StabilityAnalysis(const Model& model, const State& state, int dense_dofs = kDenseDofs,
                     const std::atomic<bool>* cancel = nullptr);
   bool cancelled() const { return cancelled_; }

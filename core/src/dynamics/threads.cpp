@@ -8,6 +8,7 @@
 #include <condition_variable>
 #include <memory>
 #include <mutex>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -149,11 +150,16 @@ Team::Counts Team::counts() { return {}; }
 #endif
 
 void each(int jobs, int workers, const std::function<void(int)>& job) {
+  if (jobs <= 0) return;
   workers = kAvailable ? std::clamp(workers, 1, jobs) : 1;
   std::atomic<int> next{0};
   std::exception_ptr failure;
   std::mutex failed;
-  const int caller_team = max_team();
+  // Each worker's loops on one thread; the caller's own setting back however this ends.
+  struct Restore {
+    int team;
+    ~Restore() { set_max_team(team); }
+  } restore{max_team()};
   const auto work = [&] {
     set_max_team(1);
     for (int j; (j = next.fetch_add(1)) < jobs;) {
@@ -167,10 +173,16 @@ void each(int jobs, int workers, const std::function<void(int)>& job) {
     }
   };
   std::vector<std::thread> helpers;
-  for (int w = 1; w < workers; ++w) helpers.emplace_back(work);
+  helpers.reserve(static_cast<std::size_t>(workers - 1));
+  for (int w = 1; w < workers; ++w) {
+    try {
+      helpers.emplace_back(work);
+    } catch (const std::system_error&) {
+      break;  // no more threads to be had: the ones running (and the caller) do the jobs
+    }
+  }
   work();
   for (std::thread& t : helpers) t.join();
-  set_max_team(caller_team);
   if (failure) std::rethrow_exception(failure);
 }
 

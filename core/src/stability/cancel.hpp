@@ -1,8 +1,8 @@
 // Stopping a stability analysis that is no longer wanted (the app's scene changed, or the app is
 // closing): the analysis's long loops (relaxation, Newton, Lanczos, the traced range) call
 // check_cancel(), which throws Cancelled once the flag the analysis was given is set; the
-// analysis catches it and ends, marked cancelled. The flag is this thread's (the analysis runs on
-// one thread, whatever the force passes inside it use).
+// analysis catches it and ends, marked cancelled. The flag is per thread: the analysis sets it on
+// its own thread and on each worker it hands a search to (stability.cpp, each_task).
 #pragma once
 
 #include <atomic>

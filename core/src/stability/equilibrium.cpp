@@ -19,7 +19,8 @@
 // (no balance), so it only relaxes its springs.
 //
 // Both stages have budgets, so that an analysis never stalls a run or the app: the relaxation a
-// number of force passes, Newton an amount of factorisation, and above kDirectDofs free
+// number of force passes, Newton an amount of factorisation (its preconditioned iterations
+// counted in), and above kDirectDofs free
 // coordinates Newton is skipped (one factorisation of a 128x128 cloth costs seconds; the
 // relaxed state's residual forces, a small fraction of the springs' at 1 % strain, shift the
 // spectrum by about as little).
@@ -191,11 +192,8 @@ void relax(const Model& model, const Balance& balance, State& rest, double toler
     }
     evaluate_forces(springs, rest.x, zero, f, buffer, ForceOutput::Force);
     f += weight;
-    if (k % kLook == 0) {
-      double largest = 0.0;
-      for (int c = 0; c < 3; ++c) largest = std::max(largest, (free * f.col(c).array()).abs().maxCoeff());
-      if (largest <= tolerance) return;
-    }
+    for (int c = 0; c < 3; ++c) f.col(c) = (free > 0.0).select(f.col(c).array(), 0.0);  // pinned: none
+    if (k % kLook == 0 && f.cwiseAbs().maxCoeff() <= tolerance) return;
     double energy = 0.0;
     for (int c = 0; c < 3; ++c) {
       v.col(c).array() += h * inv_mass * f.col(c).array();
@@ -219,15 +217,17 @@ using Factor = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>;
 // springs and two triangular solves each) replace a factorisation. False when that fails: no
 // convergence within the budget, or a direction of negative curvature (K indefinite where the
 // LDL^T of the new system is needed).
+// `iterations` counts the products made.
 bool preconditioned_solve(const Balance& balance, const std::vector<Eigen::Matrix3d>& k, double mu,
                           const Factor& preconditioner, const Eigen::VectorXd& f, double tolerance,
-                          Eigen::VectorXd& dx) {
+                          Eigen::VectorXd& dx, int& iterations) {
   constexpr int kIterations = 10;
   dx = Eigen::VectorXd::Zero(f.size());
   Eigen::VectorXd r = f, z = preconditioner.solve(r), p = z;
   double rz = r.dot(z);
   const double goal = tolerance * f.norm();
   for (int it = 0; it < kIterations; ++it) {
+    ++iterations;
     const Eigen::VectorXd ap = balance.product(k, mu, p);
     const double curvature = p.dot(ap);
     if (!(curvature > 0.0)) return false;
@@ -274,6 +274,8 @@ State equilibrium(const Model& model, const State& state) {
 
   // The factorisations' budget in free coordinates times factorisations: 30 of a 64x64 cloth's
   // 12288 (0.2 s each), as many as the stiff chain's 167 of 57 take or the 1000-node rope's 31.
+  // A preconditioned iteration (two triangular solves and a product, about a thirtieth of a
+  // factorisation on the cloth) counts as a sixteenth.
   constexpr int kDirectDofs = 20000;
   constexpr double kFactorisationWork = 4e5;
   const int kFactorisations = static_cast<int>(kFactorisationWork / (3.0 * balance.free));
@@ -281,8 +283,9 @@ State equilibrium(const Model& model, const State& state) {
   Factor solver;
   bool analysed = false, factored = false;
   double energy = balance.potential(rest.x);
-  int factorisations = 0;
-  for (int iteration = 0; iteration < 200 && factorisations < kFactorisations; ++iteration) {
+  int factorisations = 0, iterations = 0;
+  const auto spent = [&] { return factorisations + iterations / 16.0; };
+  for (int iteration = 0; iteration < 200 && spent() < kFactorisations; ++iteration) {
     check_cancel();
     const Eigen::VectorXd f = balance.force(rest.x);
     if (f.lpNorm<Eigen::Infinity>() <= tolerance) break;
@@ -291,9 +294,9 @@ State equilibrium(const Model& model, const State& state) {
     // small, relative to its yardstick; the convergence stays quadratic.
     const double forcing = std::clamp(f.lpNorm<Eigen::Infinity>() / force_scale, 1e-12, 0.1);
     bool moved = false;
-    for (int attempt = 0; attempt < 40 && factorisations < kFactorisations; ++attempt) {
+    for (int attempt = 0; attempt < 40 && spent() < kFactorisations; ++attempt) {
       Eigen::VectorXd dx;
-      if (!factored || !preconditioned_solve(balance, k, mu, solver, f, forcing, dx)) {
+      if (!factored || !preconditioned_solve(balance, k, mu, solver, f, forcing, dx, iterations)) {
         const Eigen::SparseMatrix<double> A = balance.system(rest.x, mu);
         if (!analysed) {
           solver.analyzePattern(A);

@@ -32,7 +32,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 using Complex = std::complex<double>;
 
-// Independent pieces of the analysis on the team's threads (threads.hpp), each under the
+// Independent pieces of the analysis on worker threads (threads::each), each under the
 // analysis's cancel flag (the flag is the calling thread's): results are the same whichever
 // thread runs which piece.
 template <typename Task>
@@ -393,7 +393,7 @@ void StabilityAnalysis::analyse(const Model& model, const State& state, int dens
 
   const auto set = [&](StabilityLimit limit) { limits_[static_cast<int>(limit.method)] = std::move(limit); };
   // One search per method, independent of each other (each from the grid alone), so that they
-  // run on the team's threads in any order with the same results: the partitioned methods, and
+  // run on worker threads in any order with the same results: the partitioned methods, and
   // the Runge-Kutta ones where the spectrum is not dense. The Runge-Kutta searches first (the
   // longest), so that the short ones fill in at the end.
   std::vector<const MethodInfo*> searched;
