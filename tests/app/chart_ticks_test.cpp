@@ -45,8 +45,11 @@ TEST(ChartTicks, LogMinorTicksLabelTwoAndFiveOnShortAxes) {
 // never two labels running together, and all five where there is room.
 TEST(ChartTicks, XLabelsNeverRunTogether) {
   const auto width = [](const std::string& label) { return 8.0f * static_cast<float>(label.size()); };  // 8 px a character
-  for (const auto& [lo, hi, log] : std::vector<std::tuple<double, double, bool>>{
+  for (const auto& range : std::vector<std::tuple<double, double, bool>>{
            {0.0, 1.0, false}, {-1.0, 1.0, false}, {0.0, 1.5, false}, {1e-4, 0.01, true}, {-0.12, -0.08, false}}) {
+    // Plain variables: clang before 16 cannot capture a structured binding in a lambda.
+    const double lo = std::get<0>(range), hi = std::get<1>(range);
+    const bool log = std::get<2>(range);
     int most = 0;
     for (float plot = 40.0f; plot <= 800.0f; plot += 20.0f) {
       const auto at = [&](double v) {
