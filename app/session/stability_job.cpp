@@ -1,10 +1,12 @@
 #include "session/stability_job.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <mutex>
 #include <thread>
 #include <vector>
 
+#include "springlab/forces.hpp"
 #include "util/worker.hpp"
 
 namespace springlab::app {
@@ -84,7 +86,11 @@ void StabilityJob::start(const Model& model, const State& state, std::uint64_t v
   auto shared = std::make_shared<Shared>();
   shared->result.version = version;
   shared_ = shared;
-  auto work = [shared, model, state] {
+  // The frame loop keeps a core: the analysis's searches run side by side on the others (none
+  // on two cores, where a second search would take the frame loop's).
+  const int analysis_threads = std::max(1, thread_count() - 1);
+  auto work = [shared, model, state, analysis_threads] {
+    if constexpr (kWorkerThreads) set_thread_count(analysis_threads);  // (this thread's own setting)
     auto analysis = std::make_shared<const StabilityAnalysis>(model, state, kDenseDofs, &shared->cancel);
     std::lock_guard lock(shared->mutex);
     if (!analysis->cancelled()) shared->result.analysis = std::move(analysis);
