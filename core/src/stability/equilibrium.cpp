@@ -97,24 +97,18 @@ struct Balance {
       if (weighed[i]) f.segment<3>(3 * index[i]) += model.mass[i] * model.gravity;
     return f;
   }
-  // K + mu M over the free coordinates.
-  Eigen::SparseMatrix<double> system(const Points& x, double mu) const {
+  // K + mu M over the free coordinates, from the springs' blocks (blocks(), below).
+  Eigen::SparseMatrix<double> system(const std::vector<Eigen::Matrix3d>& k, double mu) const {
     std::vector<Eigen::Triplet<double>> t;
     t.reserve(static_cast<std::size_t>(model.spring_count()) * 36 + 3 * free);
     for (int s = 0; s < model.spring_count(); ++s) {
-      const int a = model.spring_a[s], b = model.spring_b[s];
-      // The potential's own Hessian (a compressed spring's negative transverse term kept: near
-      // the balance Newton then converges quadratically; mu M covers where it is indefinite).
-      const Eigen::Matrix3d block = spring_jacobian(x.row(a).transpose(), x.row(b).transpose(), Vec3::Zero(),
-                                                    Vec3::Zero(), model.ks(s), 0.0, model.rest_length[s], false)
-                                        .dfdx;
-      const int ends[2] = {index[a], index[b]};
+      const int ends[2] = {index[model.spring_a[s]], index[model.spring_b[s]]};
       for (int p = 0; p < 2; ++p)
         for (int q = 0; q < 2; ++q) {
           if (ends[p] < 0 || ends[q] < 0) continue;
           const double sign = p == q ? 1.0 : -1.0;
           for (int r = 0; r < 3; ++r)
-            for (int c = 0; c < 3; ++c) t.emplace_back(3 * ends[p] + r, 3 * ends[q] + c, sign * block(r, c));
+            for (int c = 0; c < 3; ++c) t.emplace_back(3 * ends[p] + r, 3 * ends[q] + c, sign * k[s](r, c));
         }
     }
     for (int i = 0; i < model.particle_count(); ++i)
@@ -124,7 +118,9 @@ struct Balance {
     A.setFromTriplets(t.begin(), t.end());
     return A;
   }
-  // The springs' Hessian blocks at x (the same as system()'s), for products without assembly.
+  // The springs' Hessian blocks at x: the potential's own (a compressed spring's negative
+  // transverse term kept: near the balance Newton then converges quadratically; mu M covers
+  // where it is indefinite). For system() and for products without assembly.
   std::vector<Eigen::Matrix3d> blocks(const Points& x) const {
     std::vector<Eigen::Matrix3d> out(static_cast<std::size_t>(model.spring_count()));
     for (int s = 0; s < model.spring_count(); ++s)
@@ -297,7 +293,7 @@ State equilibrium(const Model& model, const State& state) {
     for (int attempt = 0; attempt < 40 && spent() < kFactorisations; ++attempt) {
       Eigen::VectorXd dx;
       if (!factored || !preconditioned_solve(balance, k, mu, solver, f, forcing, dx, iterations)) {
-        const Eigen::SparseMatrix<double> A = balance.system(rest.x, mu);
+        const Eigen::SparseMatrix<double> A = balance.system(k, mu);
         if (!analysed) {
           solver.analyzePattern(A);
           analysed = true;
