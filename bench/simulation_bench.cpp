@@ -3,6 +3,8 @@
 // building scenes, and the stability estimate. Run: build/bench/springlab_bench (see the README for the figures).
 #include <benchmark/benchmark.h>
 
+#include <Eigen/SparseCholesky>
+
 #include <chrono>
 #include <cstdio>
 #include <string>
@@ -185,6 +187,41 @@ void BM_StabilityAtRest(benchmark::State& state) {
   state.SetLabel(analysed_label(state));
 }
 BENCHMARK(BM_StabilityAtRest)->Apply(analysis_arguments);
+
+// The floor under the analysis's Newton steps (README, Performance): one sparse LDL^T
+// factorisation of a cloth's stiffness at its balance plus a small mu M, as equilibrium.cpp
+// makes it (Eigen's SimplicialLDLT, the ordering found once, outside the timing).
+void BM_BalanceFactorisation(benchmark::State& state) {
+  const Scene s = cloth(static_cast<int>(state.range(0)));
+  const Model& m = s.model;
+  const State rest = equilibrium(m, s.state);
+  std::vector<int> index(m.particle_count(), -1);
+  int free = 0;
+  for (int i = 0; i < m.particle_count(); ++i)
+    if (!m.pinned(i)) index[i] = free++;
+  std::vector<Eigen::Triplet<double>> t;
+  for (int k = 0; k < m.spring_count(); ++k) {
+    const int ends[2] = {index[m.spring_a[k]], index[m.spring_b[k]]};
+    const Eigen::Matrix3d block = spring_jacobian(rest.x.row(m.spring_a[k]).transpose(), rest.x.row(m.spring_b[k]).transpose(),
+                                                  Vec3::Zero(), Vec3::Zero(), m.ks(k), 0.0, m.rest_length[k], false)
+                                      .dfdx;
+    for (int p = 0; p < 2; ++p)
+      for (int q = 0; q < 2; ++q)
+        if (ends[p] >= 0 && ends[q] >= 0)
+          for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) t.emplace_back(3 * ends[p] + r, 3 * ends[q] + c, (p == q ? 1.0 : -1.0) * block(r, c));
+  }
+  for (int i = 0; i < m.particle_count(); ++i)
+    if (index[i] >= 0)
+      for (int c = 0; c < 3; ++c) t.emplace_back(3 * index[i] + c, 3 * index[i] + c, 1e-3 * m.mass[i]);
+  Eigen::SparseMatrix<double> A(3 * free, 3 * free);
+  A.setFromTriplets(t.begin(), t.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
+  solver.analyzePattern(A);
+  for (auto _ : state) solver.factorize(A);
+  state.counters["dofs"] = 3 * free;
+}
+BENCHMARK(BM_BalanceFactorisation)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace springlab
