@@ -70,19 +70,19 @@ struct SpanTerms {
   const double* ub[3];
 };
 
-// Springs k .. k + lanes - 1 (T = f64x4: four of them, double: one):
+// Springs k .. k + lanes - 1 of the chunk (T = f64x4: four of them, double: one), into f[.][k]:
 //   du = u_a - u_b,  f = (a along_k + b along_c) (d . du) d + (a across_k + b across_c) du.
 template <typename T>
-void forces_at(const SpanTerms& t, double a, double b, int k, double* f[3], int j) {
+void forces_at(const SpanTerms& t, double a, double b, int k, double* f[3]) {
   using simd::at;
   const T ux = at<T>(t.ua[0] + k) - at<T>(t.ub[0] + k), uy = at<T>(t.ua[1] + k) - at<T>(t.ub[1] + k),
           uz = at<T>(t.ua[2] + k) - at<T>(t.ub[2] + k);
   const T dx = at<T>(t.dx + k), dy = at<T>(t.dy + k), dz = at<T>(t.dz + k);
   const T along = (a * at<T>(t.along_k + k) + b * at<T>(t.along_c + k)) * (dx * ux + dy * uy + dz * uz);
   const T across = a * at<T>(t.across_k + k) + b * at<T>(t.across_c + k);
-  simd::store(f[0] + j, along * dx + across * ux);
-  simd::store(f[1] + j, along * dy + across * uy);
-  simd::store(f[2] + j, along * dz + across * uz);
+  simd::store(f[0] + k, along * dx + across * ux);
+  simd::store(f[1] + k, along * dy + across * uy);
+  simd::store(f[2] + k, along * dz + across * uz);
 }
 
 // y[k] += sign f[k], k < count.
@@ -114,8 +114,8 @@ void Linearised::apply(double a, double b, const Points& x, Points& y) const {
         t.ub[c] = u.col(c).data() + b0;
       }
       int k = 0;
-      for (; k + simd::kLanes <= count; k += simd::kLanes) forces_at<simd::f64x4>(t, a, b, k, f, k);
-      for (; k < count; ++k) forces_at<double>(t, a, b, k, f, k);
+      for (; k + simd::kLanes <= count; k += simd::kLanes) forces_at<simd::f64x4>(t, a, b, k, f);
+      for (; k < count; ++k) forces_at<double>(t, a, b, k, f);
       for (int c = 0; c < 3; ++c) {
         accumulate(y.col(c).data() + a0, f[c], count, 1.0);
         accumulate(y.col(c).data() + b0, f[c], count, -1.0);
