@@ -32,16 +32,20 @@
 #include <numeric>
 #include <vector>
 
+#include "dynamics/force_pass.hpp"
 #include "stability/cancel.hpp"
 #include "stability/lanczos.hpp"
 #include "stability/linearised.hpp"
 #include "springlab/forces.hpp"
+#include "springlab/simd.hpp"
 #include "springlab/spring_kernel.hpp"
 #include "springlab/stability.hpp"
 
 namespace springlab {
 
 namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // Union-find over the particles joined by springs.
 struct Parts {
@@ -152,27 +156,35 @@ struct Balance {
 };
 
 // Dynamic relaxation with kinetic damping (above), until the largest force is below `tolerance`
-// or after a budget of force passes.
-void relax(const Model& model, const Balance& balance, State& rest, double tolerance) {
+// or after `budget` force passes, or (with `decade` > 0) once the largest force has taken more
+// than `decade` passes to fall tenfold (the slow modes left: a long rope's). Returns the largest
+// force left. Each pass is one force pass whose threads turn their
+// particles' forces into the new velocities and positions as soon as a chunk's forces are
+// complete (force_pass.hpp's finish), and sum the chunk's kinetic energy and largest force: no
+// further pass over memory, and the same bits on any number of threads (per-block sums, added in
+// block order).
+double relax(const Model& model, const Balance& balance, State& rest, double tolerance, int budget, int decade) {
   Model springs = model;  // the springs alone: gravity is added where it has a balance
   springs.gravity.setZero();
   springs.drag = 0.0;
   springs.attractors.clear();
   const int n = model.particle_count();
-  Points v = Points::Zero(n, 3), zero = Points::Zero(n, 3), f(n, 3);
-  // Column by column (vectorised): the weight of the particles that have a balance, and which
-  // particles are free (a pinned one's inverse mass is 0, so its velocity stays 0).
+  // Column by column: the weight of the particles that have a balance (0 for the others and the
+  // pinned ones, whose inverse mass is 0 too: they stay where they are).
   Points weight = Points::Zero(n, 3);
-  Eigen::ArrayXd free = Eigen::ArrayXd::Zero(n);
-  for (int i = 0; i < n; ++i) {
+  for (int i = 0; i < n; ++i)
     if (balance.weighed[i]) weight.row(i) = model.mass[i] * model.gravity.transpose();
-    free[i] = balance.index[i] >= 0 ? 1.0 : 0.0;
-  }
-  const Eigen::Map<const Eigen::ArrayXd> mass(model.mass.data(), n), inv_mass(model.inv_mass.data(), n);
+  Points v = Points::Zero(n, 3), zero = Points::Zero(n, 3), f(n, 3), next(n, 3);
   SpringForces buffer;
-  double kinetic = 0.0, h = 0.0;
-  constexpr int kBudget = 20000, kLook = 50;
-  for (int k = 0; k < kBudget; ++k) {
+  const std::size_t blocks = plan_for(springs, buffer).own.size();
+  // Per block: twice its kinetic energy after the pass, and its largest force component squared
+  // (free particles) before it.
+  std::vector<double> block_kinetic(blocks), block_force(blocks);
+  double* const F[3] = {f.col(0).data(), f.col(1).data(), f.col(2).data()};
+  double kinetic = 0.0, h = 0.0, largest = kInfinity, mark = kInfinity;
+  int marked = 0;  // the pass where the largest force was last a tenth of `mark`'s
+  constexpr int kLook = 50;
+  for (int k = 0; k < budget; ++k) {
     if (k % 64 == 0) check_cancel();
     if (k % 2000 == 0) {
       // The step from the highest frequency at the positions now (tension raises it): Lanczos
@@ -181,28 +193,62 @@ void relax(const Model& model, const Balance& balance, State& rest, double toler
       // up to twice w_max on a cloth, and the relaxation takes that many more passes).
       const Linearised lin(model, rest);
       const double bound = lin.stiffness_bound();
-      if (!(bound > 0.0)) return;
+      if (!(bound > 0.0)) return largest;
       const TopEigenpair top = top_eigenpair([&](const Points& x, Points& y) { lin.apply(1.0 / bound, 0.0, x, y); },
                                              lin.random_vector(0x2545F4914F6CDD1Dull), 60, 1e-3);
       h = 1.0 / std::sqrt(bound * std::min(1.0, 1.1 * top.value));
     }
-    evaluate_forces(springs, rest.x, zero, f, buffer, ForceOutput::Force);
-    f += weight;
-    for (int c = 0; c < 3; ++c) f.col(c) = (free > 0.0).select(f.col(c).array(), 0.0);  // pinned: none
-    if (k % kLook == 0 && f.cwiseAbs().maxCoeff() <= tolerance) return;
-    double energy = 0.0;
-    for (int c = 0; c < 3; ++c) {
-      v.col(c).array() += h * inv_mass * f.col(c).array();
-      energy += (mass * v.col(c).array().square()).sum();
+    std::fill(block_kinetic.begin(), block_kinetic.end(), 0.0);
+    std::fill(block_force.begin(), block_force.end(), 0.0);
+    force_pass(springs, rest.x, zero, F, buffer, [&](int block, int begin, int end) {
+      // Symplectic Euler without damping: v += h M^-1 (f + weight), x' = x + h v.
+      using simd::f64x4;
+      const double* inv_mass = model.inv_mass.data();
+      const double* mass = model.mass.data();
+      f64x4 energy{}, largest{};
+      const auto particles = [&]<typename T>(int i, T& e, T& m) {
+        const T w = simd::at<T>(inv_mass + i);
+        for (int c = 0; c < 3; ++c) {
+          const T force = simd::at<T>(F[c] + i) + simd::at<T>(weight.col(c).data() + i);
+          const T pulled = w > 0.0 ? force * force : T{};  // a pinned particle's force is held
+          m = pulled > m ? pulled : m;
+          const T vel = simd::at<T>(v.col(c).data() + i) + h * w * force;
+          simd::store(v.col(c).data() + i, vel);
+          simd::store(next.col(c).data() + i, simd::at<T>(rest.x.col(c).data() + i) + h * vel);
+          e += simd::at<T>(mass + i) * vel * vel;
+        }
+      };
+      int i = begin;
+      for (; i + simd::kLanes <= end; i += simd::kLanes) particles.template operator()<f64x4>(i, energy, largest);
+      double e = 0.0, m = 0.0;
+      for (; i < end; ++i) particles.template operator()<double>(i, e, m);
+      block_kinetic[block] += simd::sum(energy) + e;
+      block_force[block] = std::max({block_force[block], largest[0], largest[1], largest[2], largest[3], m});
+    });
+    double energy = 0.0, squared = 0.0;
+    for (std::size_t b = 0; b < blocks; ++b) {
+      energy += block_kinetic[b];
+      squared = std::max(squared, block_force[b]);
+    }
+    if (k % kLook == 0) {
+      largest = std::sqrt(squared);
+      if (largest <= tolerance) return largest;  // the positions before this pass
+      if (largest <= 0.1 * mark || k == 0) {
+        mark = largest;
+        marked = k;
+      } else if (decade > 0 && k - marked > decade) {
+        return largest;
+      }
     }
     if (energy < kinetic) {
-      v.setZero();  // past a peak of the kinetic energy: take it all out
+      v.setZero();  // past a peak of the kinetic energy: take it all out, and stay where it was
       kinetic = 0.0;
       continue;
     }
     kinetic = energy;
-    rest.x += h * v;
+    rest.x.swap(next);
   }
+  return largest;
 }
 
 using Factor = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>;
@@ -266,16 +312,26 @@ State equilibrium(const Model& model, const State& state) {
   const double mu_floor = 1e-12 * std::max(k_over_m, 1e-300);
   double mu = 1e-6 * k_over_m;
 
-  relax(model, balance, rest, 1e-3 * force_scale);
+  constexpr int kRelaxation = 20000;
+  relax(model, balance, rest, 1e-3 * force_scale, kRelaxation, 0);
 
+  // Newton's factorisations grow faster than the relaxation's passes: above kDirectDofs free
+  // coordinates none (a 128x128 cloth's costs seconds). Between kRelaxedDofs and that, the
+  // relaxation goes on while the force falls tenfold within kDecade passes (a 64 x 64 cloth's
+  // takes about 3,000), to 1e-5 of the yardstick: the limits then agree with Newton's balance to
+  // a few parts in a million (the 64 x 64 cloth: 2e-6 at most), for 0.2 s instead of Newton's
+  // 0.5. Where it is slower (a long rope's sideways modes), Newton finishes.
+  constexpr int kDirectDofs = 20000, kRelaxedDofs = 4000, kDecade = 4000;
+  if (3 * balance.free > kDirectDofs) return rest;
+  if (3 * balance.free > kRelaxedDofs &&
+      relax(model, balance, rest, 1e-5 * force_scale, kRelaxation, kDecade) <= 1e-5 * force_scale)
+    return rest;
   // The factorisations' budget in free coordinates times factorisations: 30 of a 64x64 cloth's
   // 12288 (0.2 s each), as many as the stiff chain's 167 of 57 take or the 1000-node rope's 31.
   // A preconditioned iteration (two triangular solves and a product, about a thirtieth of a
   // factorisation on the cloth) counts as a sixteenth.
-  constexpr int kDirectDofs = 20000;
   constexpr double kFactorisationWork = 4e5;
   const int kFactorisations = static_cast<int>(kFactorisationWork / (3.0 * balance.free));
-  if (3 * balance.free > kDirectDofs) return rest;
   Factor solver;
   bool analysed = false, factored = false;
   double energy = balance.potential(rest.x);
