@@ -101,13 +101,17 @@ TopEigenpair top_eigenpair(const SymmetricOperator& apply, const Points& start, 
   // The Lanczos vectors are kept while they fit in 64 MB (the second pass then sums them);
   // beyond that the second pass makes them again.
   const long keep = std::max<long>(0, (64L << 20) / std::max<long>(1, 24L * n));
-  std::vector<Points> kept;
+  std::vector<double> kept;  // one after another, column by column (one allocation as they grow)
+  int kept_steps = 0;
   std::vector<double> alpha, beta;
   double lambda = -std::numeric_limits<double>::infinity(), scale = 0.0, last = lambda;
   begin();
   for (int k = 0; k < max_steps; ++k) {
     if (k % 32 == 0) check_cancel();
-    if (k < keep) kept.push_back(q);
+    if (k < keep) {
+      for (int c = 0; c < 3; ++c) kept.insert(kept.end(), q.col(c).data(), q.col(c).data() + n);
+      ++kept_steps;
+    }
     double a = 0.0, b = 0.0;
     lanczos_step(beta.empty() ? 0.0 : beta.back(), a, b);
     alpha.push_back(a);
@@ -137,8 +141,10 @@ TopEigenpair top_eigenpair(const SymmetricOperator& apply, const Points& start, 
   const int steps = result.steps;
   const Eigen::VectorXd s = top_eigenvector(alpha, beta, steps, lambda);
   Points vector = Points::Zero(n, 3);
-  if (static_cast<int>(kept.size()) == steps) {
-    for (int k = 0; k < steps; ++k) vector += s[k] * kept[k];
+  if (kept_steps == steps) {
+    for (int k = 0; k < steps; ++k)
+      for (int c = 0; c < 3; ++c)
+        vector.col(c) += s[k] * Eigen::Map<const Eigen::VectorXd>(kept.data() + (3 * k + c) * n, n);
   } else {
     begin();
     for (int k = 0; k < steps; ++k) {
