@@ -168,6 +168,9 @@ double relax(const Model& model, const Balance& balance, State& rest, double tol
   springs.gravity.setZero();
   springs.drag = 0.0;
   springs.attractors.clear();
+  // No damping (the velocities passed are zero): the force pass's elastic kernel, which reads no
+  // velocities.
+  for (SpringMaterial& material : springs.materials) material.kd = 0.0;
   const int n = model.particle_count();
   // Column by column: the weight of the particles that have a balance (0 for the others and the
   // pinned ones, whose inverse mass is 0 too: they stay where they are).

@@ -99,9 +99,12 @@ TopEigenpair top_eigenpair(const SymmetricOperator& apply, const Points& start, 
   };
 
   // The Lanczos vectors are kept while they fit in 64 MB (the second pass then sums them);
-  // beyond that the second pass makes them again.
+  // beyond that the second pass makes them again. They go one after another, column by column,
+  // into the thread's own array, kept from one run to the next: fresh memory for each run (tens
+  // of MB on a 128 x 128 cloth) cost more in page faults and copies than the products did.
   const long keep = std::max<long>(0, (64L << 20) / std::max<long>(1, 24L * n));
-  std::vector<double> kept;  // one after another, column by column (one allocation as they grow)
+  thread_local std::vector<double> kept;
+  kept.clear();
   int kept_steps = 0;
   std::vector<double> alpha, beta;
   double lambda = -std::numeric_limits<double>::infinity(), scale = 0.0, last = lambda;
