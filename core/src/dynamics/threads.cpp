@@ -93,7 +93,7 @@ thread_local int g_yields = 0;
 // that runs jobs judges the load by its own waits).
 thread_local long g_alone = 0, g_backoff = 0;
 thread_local Team::Counts g_counts;
-constexpr long kFirstBackoff = 2048, kLongestBackoff = 65536;
+constexpr long kFirstBackoff = 128, kLongestBackoff = 65536;
 
 }  // namespace
 
@@ -134,10 +134,10 @@ void Team::run(int threads, const Job& job) {
   p.busy.store(false, std::memory_order_release);
   // A helper that held work was not running: another program has a core. Alone for a while.
   if (g_yields > 0) {
-    g_backoff = g_backoff == 0 ? kFirstBackoff : std::min(2 * g_backoff, kLongestBackoff);
+    g_backoff = g_backoff < kFirstBackoff ? kFirstBackoff : std::min(2 * g_backoff, kLongestBackoff);
     g_alone = g_backoff;
   } else {
-    g_backoff = 0;
+    g_backoff /= 2;
   }
 }
 

@@ -99,8 +99,10 @@ class Team {
  public:
   // Waits until `done()`: spins briefly (the wait is usually a few microseconds), then yields the
   // core, which tells the team that a thread it waited for was not running: another program has
-  // the core, and the next jobs run on the caller alone for a while (doubling, up to about a
-  // second of them, each time it happens again; a job run as a team without it starts afresh).
+  // the core, and the next jobs run on the caller alone for a while: 128 of them, doubling up to
+  // about a second of them each time it happens again, and halving with each job run as a team
+  // without it (a core taken once for a millisecond, as a virtual machine's may be with nothing
+  // else running, costs a few jobs alone; another program that keeps it, ever more).
   template <typename Done>
   static void wait(const Done& done) {
     for (int spins = 0; !done(); ++spins) {
