@@ -20,10 +20,11 @@
 //
 // Both stages have budgets, so that an analysis never stalls a run or the app: the relaxation a
 // number of force passes, Newton an amount of factorisation (its preconditioned iterations
-// counted in), and above kDirectDofs free
-// coordinates Newton is skipped (one factorisation of a 128x128 cloth costs seconds; the
-// relaxed state's residual forces, a small fraction of the springs' at 1 % strain, shift the
-// spectrum by about as little).
+// counted in). Between kRelaxedDofs and kDirectDofs free coordinates the relaxation goes on
+// to 1e-5 of the force's yardstick instead of factorising, and above kDirectDofs Newton is
+// skipped (one factorisation of a 128x128 cloth costs seconds; the relaxed state's residual
+// forces, a small fraction of the springs' at 1 % strain, shift the spectrum by about as
+// little): equilibrium() below.
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <algorithm>
