@@ -75,8 +75,9 @@ double transient_growth(Method method, double gamma, double kappa, double h, dou
 /// balance (colliders, drag and fields play no part), velocities zero. Gravity acts on the
 /// particles joined by springs to a pinned one; a part with nothing pinned only relaxes its
 /// springs (it would fall forever). Within budgets (equilibrium.cpp), its largest force is below
-/// 1e-8 of its springs' force at 1 % strain up to 4000 free coordinates, 1e-5 up to 20000 (or
-/// 1e-8, where relaxation alone is slow), and about 1e-3 above.
+/// a fraction of its yardstick (the larger of its springs' force at 1 % strain and its heaviest
+/// held particle's weight): 1e-8 up to 4000 free coordinates, 1e-5 up to 20000 (or 1e-8, where
+/// relaxation alone is slow), and about 1e-3 above.
 State equilibrium(const Model& model, const State& state);
 /// A lower bound on the total energy of the scene whose equilibrium is `rest` (above:
 /// StabilityAnalysis::lowest_energy()).

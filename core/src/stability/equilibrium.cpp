@@ -159,7 +159,9 @@ struct Balance {
 // Dynamic relaxation with kinetic damping (above), until the largest force is below `tolerance`
 // or after `budget` force passes, or (with `decade` > 0) once the largest force has taken more
 // than `decade` passes to fall tenfold (the slow modes left: a long rope's). Returns the largest
-// force left. Each pass is one force pass whose threads turn their
+// force at its last look (every 50 passes): at most `tolerance` where it stopped on reaching it,
+// above it (or NaN, where the positions are no longer finite) otherwise. Each pass is one force
+// pass whose threads turn their
 // particles' forces into the new velocities and positions as soon as a chunk's forces are
 // complete (force_pass.hpp's finish), and sum the chunk's kinetic energy and largest force: no
 // further pass over memory, and the same bits on any number of threads (per-block sums, added in
@@ -213,9 +215,10 @@ double relax(const Model& model, const Balance& balance, State& rest, double tol
       const auto particles = [&]<typename T>(int i, T& e, T& m) {
         const T w = simd::at<T>(inv_mass + i);
         for (int c = 0; c < 3; ++c) {
-          const T force = simd::at<T>(F[c] + i) + simd::at<T>(weight.col(c).data() + i);
-          const T pulled = w > 0.0 ? force * force : T{};  // a pinned particle's force is held
-          m = pulled > m ? pulled : m;
+          // A pinned particle's force is held (zero here, so that not even a NaN moves it).
+          const T force = w > 0.0 ? simd::at<T>(F[c] + i) + simd::at<T>(weight.col(c).data() + i) : T{};
+          const T pulled = force * force;
+          m = pulled <= m ? m : pulled;  // a NaN wins: a relaxation gone wrong is never balanced
           const T vel = simd::at<T>(v.col(c).data() + i) + h * w * force;
           simd::store(v.col(c).data() + i, vel);
           simd::store(next.col(c).data() + i, simd::at<T>(rest.x.col(c).data() + i) + h * vel);
@@ -227,17 +230,18 @@ double relax(const Model& model, const Balance& balance, State& rest, double tol
       double e = 0.0, m = 0.0;
       for (; i < end; ++i) particles.template operator()<double>(i, e, m);
       block_kinetic[block] += simd::sum(energy) + e;
-      block_force[block] = std::max({block_force[block], largest[0], largest[1], largest[2], largest[3], m});
+      for (const double lane : {largest[0], largest[1], largest[2], largest[3], m})
+        if (!(lane <= block_force[block])) block_force[block] = lane;
     });
     double energy = 0.0, squared = 0.0;
     for (std::size_t b = 0; b < blocks; ++b) {
       energy += block_kinetic[b];
-      squared = std::max(squared, block_force[b]);
+      if (!(block_force[b] <= squared)) squared = block_force[b];
     }
     if (k % kLook == 0) {
       largest = std::sqrt(squared);
       if (largest <= tolerance) return largest;  // the positions before this pass
-      if (largest <= 0.1 * mark || k == 0) {
+      if (largest <= 0.1 * mark) {  // (mark starts infinite: the first look sets it)
         mark = largest;
         marked = k;
       } else if (decade > 0 && k - marked > decade) {
@@ -292,6 +296,9 @@ bool preconditioned_solve(const Balance& balance, const std::vector<Eigen::Matri
 }  // namespace
 
 State equilibrium(const Model& model, const State& state) {
+  const struct Release {  // the relaxation's Lanczos runs' memory, however this ends
+    ~Release() { release_lanczos_memory(); }
+  } release;
   State rest = state;
   rest.v.setZero();
   const Balance balance(model);
@@ -316,20 +323,29 @@ State equilibrium(const Model& model, const State& state) {
   const double mu_floor = 1e-12 * std::max(k_over_m, 1e-300);
   double mu = 1e-6 * k_over_m;
 
+  // A relaxation whose positions are no longer finite (a NaN in the scene, or a step its
+  // estimate got wrong) balances nothing: the scene as it was is returned instead.
+  const State unbalanced = rest;
   constexpr int kRelaxation = 20000;
   relax(model, balance, rest, 1e-3 * force_scale, kRelaxation, 0);
+  if (!rest.x.allFinite()) return unbalanced;
 
   // Newton's factorisations grow faster than the relaxation's passes: above kDirectDofs free
   // coordinates none (a 128x128 cloth's costs seconds). Between kRelaxedDofs and that, the
   // relaxation goes on while the force falls tenfold within kDecade passes (a 64 x 64 cloth's
   // takes about 3,000), to 1e-5 of the yardstick: the limits then agree with Newton's balance to
-  // a few parts in a million (the 64 x 64 cloth: 2e-6 at most), for 0.2 s instead of Newton's
+  // a few parts in a million (the 64 x 64 cloth: 6e-6 at most), for 0.2 s instead of Newton's
   // 0.5. Where it is slower (a long rope's sideways modes), Newton finishes.
   constexpr int kDirectDofs = 20000, kRelaxedDofs = 4000, kDecade = 4000;
   if (3 * balance.free > kDirectDofs) return rest;
-  if (3 * balance.free > kRelaxedDofs &&
-      relax(model, balance, rest, 1e-5 * force_scale, kRelaxation, kDecade) <= 1e-5 * force_scale)
-    return rest;
+  if (3 * balance.free > kRelaxedDofs) {
+    // Newton starts from the first stage's state if the second does not balance the scene (a
+    // rope it set swinging would cost Newton more than its budget).
+    State first = rest;
+    const bool balanced = relax(model, balance, rest, 1e-5 * force_scale, kRelaxation, kDecade) <= 1e-5 * force_scale;
+    if (balanced && rest.x.allFinite()) return rest;
+    rest = std::move(first);
+  }
   // The factorisations' budget in free coordinates times factorisations: 30 of a 64x64 cloth's
   // 12288 (0.2 s each), as many as the stiff chain's 167 of 57 take or the 1000-node rope's 31.
   // A preconditioned iteration (two triangular solves and a product, about a thirtieth of a

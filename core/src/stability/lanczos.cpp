@@ -75,6 +75,31 @@ Eigen::VectorXd top_eigenvector(const std::vector<double>& alpha, const std::vec
 
 }  // namespace
 
+namespace {
+
+// The calling thread's array of kept Lanczos vectors, and whether a run is using it.
+thread_local std::vector<double> g_kept;
+thread_local bool g_kept_in_use = false;
+
+// Marks the thread's array in use for the run's lifetime (a nested run leaves it alone).
+struct InUse {
+  bool nested;
+  explicit InUse(bool n) : nested(n) {
+    if (!nested) g_kept_in_use = true;
+  }
+  ~InUse() {
+    if (!nested) g_kept_in_use = false;
+  }
+  InUse(const InUse&) = delete;
+  InUse& operator=(const InUse&) = delete;
+};
+
+}  // namespace
+
+void release_lanczos_memory() {
+  if (!g_kept_in_use) std::vector<double>().swap(g_kept);
+}
+
 TopEigenpair top_eigenpair(const SymmetricOperator& apply, const Points& start, int max_steps, double tolerance) {
   TopEigenpair result;
   const Eigen::Index n = start.rows();
@@ -100,11 +125,15 @@ TopEigenpair top_eigenpair(const SymmetricOperator& apply, const Points& start, 
 
   // The Lanczos vectors are kept while they fit in 64 MB (the second pass then sums them);
   // beyond that the second pass makes them again. They go one after another, column by column,
-  // into the thread's own array, kept from one run to the next: fresh memory for each run (tens
-  // of MB on a 128 x 128 cloth) cost more in page faults and copies than the products did.
-  const long keep = std::max<long>(0, (64L << 20) / std::max<long>(1, 24L * n));
-  thread_local std::vector<double> kept;
+  // into the thread's own array (lanczos.hpp), room for all of them made at once; a run started
+  // from inside another's `apply` on the same thread has an array of its own.
+  const long keep = std::clamp<long>((64L << 20) / std::max<long>(1, 24L * n), 0, max_steps);
+  std::vector<double> own;
+  const bool nested = g_kept_in_use;
+  std::vector<double>& kept = nested ? own : g_kept;
+  const InUse in_use(nested);
   kept.clear();
+  kept.reserve(static_cast<std::size_t>(keep) * 3 * static_cast<std::size_t>(n));
   int kept_steps = 0;
   std::vector<double> alpha, beta;
   double lambda = -std::numeric_limits<double>::infinity(), scale = 0.0, last = lambda;

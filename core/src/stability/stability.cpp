@@ -105,11 +105,12 @@ class RangeTrace {
     check_cancel();
     const double a = std::cos(phi) / k_, b = c_ > 0.0 ? std::sin(phi) / c_ : 0.0;
     const Points start = near + mix * random_;
-    // To a residual of 1e-7 of the operator's size: the sample's gamma and kappa are Rayleigh
-    // quotients, in error by the residual squared over the gap (1e-14 of the size, rounding, with
-    // any gap above 1e-6), and the limit's eigenvector test (kEigenvectorResidual, 1e-6) still
-    // passes. 1e-10 cost a fifth more Lanczos steps on a 64 x 64 cloth (a third on a 1000-node
-    // rope) for the same limits to ten digits.
+    // To a residual of 1e-7 of the operator's size. The sample is then on W's boundary to the
+    // residual squared over the gap (its support value cos(phi) kappa + sin(phi) gamma is the
+    // Rayleigh quotient); along the boundary it may slide to first order, which Brent's search
+    // over phi takes up. Measured: 1e-10 cost a fifth more Lanczos steps on a 64 x 64 cloth (a
+    // third on a 1000-node rope) for the same limits to ten digits and the same eigenvector
+    // verdicts (kEigenvectorResidual, 1e-6) on eight shipped scenes.
     const TopEigenpair top = top_eigenpair([&](const Points& x, Points& y) { lin_.apply(a, b, x, y); }, start,
                                            lanczos_cap(lin_), 1e-7);
     Sample s;
@@ -348,6 +349,9 @@ std::string describe(const StabilityLimit& limit) {
 StabilityAnalysis::StabilityAnalysis(const Model& model, const State& state, int dense_dofs,
                                      const std::atomic<bool>* cancel) {
   const CancelScope scope(cancel);
+  const struct Release {
+    ~Release() { release_lanczos_memory(); }
+  } release;
   try {
     analyse(model, state, dense_dofs);
   } catch (const Cancelled&) {
