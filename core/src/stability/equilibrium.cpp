@@ -346,18 +346,22 @@ State equilibrium(const Model& model, const State& state) {
     if (balanced && rest.x.allFinite()) return rest;
     rest = std::move(first);
   }
-  // The factorisations' budget in free coordinates times factorisations: 30 of a 64x64 cloth's
-  // 12288 (0.2 s each), as many as the stiff chain's 167 of 57 take or the 1000-node rope's 31.
-  // A preconditioned iteration (two triangular solves and a product, about a thirtieth of a
-  // factorisation on the cloth) counts as a sixteenth.
-  constexpr double kFactorisationWork = 4e5;
-  const int kFactorisations = static_cast<int>(kFactorisationWork / (3.0 * balance.free));
+  // Newton's budget in floating-point work, known after the first factorisation from its factor
+  // L: a factorisation costs about the sum over L's columns of their nonzeros squared, a
+  // preconditioned iteration (two triangular solves) four times L's nonzeros. 1.5e10 is thirty
+  // factorisations of a 64 x 64 cloth's stiffness (4.6e8 each, 0.15 s), as the budget in
+  // factorisations per free coordinate allowed until 2026-11-26; a rope's banded factor costs
+  // 6,600 times less than that cloth's, and it now gets what it needs (a 1400-node rope from
+  // flat: about 42 factorisations and 600 iterations, which that budget cut short in the
+  // WebAssembly build's rounding).
+  constexpr double kWork = 1.5e10;
+  double factorisation_work = 0.0, iteration_work = 0.0;
   Factor solver;
   bool analysed = false, factored = false;
   double energy = balance.potential(rest.x);
   int factorisations = 0, iterations = 0;
-  const auto spent = [&] { return factorisations + iterations / 16.0; };
-  for (int iteration = 0; iteration < 200 && spent() < kFactorisations; ++iteration) {
+  const auto spent = [&] { return factorisations * factorisation_work + iterations * iteration_work; };
+  for (int iteration = 0; iteration < 200 && spent() < kWork; ++iteration) {
     check_cancel();
     const Eigen::VectorXd f = balance.force(rest.x);
     if (f.lpNorm<Eigen::Infinity>() <= tolerance) break;
@@ -366,7 +370,7 @@ State equilibrium(const Model& model, const State& state) {
     // small, relative to its yardstick; the convergence stays quadratic.
     const double forcing = std::clamp(f.lpNorm<Eigen::Infinity>() / force_scale, 1e-12, 0.1);
     bool moved = false;
-    for (int attempt = 0; attempt < 40 && spent() < kFactorisations; ++attempt) {
+    for (int attempt = 0; attempt < 40 && spent() < kWork; ++attempt) {
       Eigen::VectorXd dx;
       if (!factored || !preconditioned_solve(balance, k, mu, solver, f, forcing, dx, iterations)) {
         const Eigen::SparseMatrix<double> A = balance.system(k, mu);
@@ -377,6 +381,15 @@ State equilibrium(const Model& model, const State& state) {
         solver.factorize(A);
         ++factorisations;  // every one counts against the budget, the accepted ones too
         factored = solver.info() == Eigen::Success;
+        if (factored && factorisation_work == 0.0) {
+          const auto& L = solver.matrixL().nestedExpression();
+          for (Eigen::Index j = 0; j < L.outerSize(); ++j) {
+            const double column = L.outerIndexPtr()[j + 1] - L.outerIndexPtr()[j];
+            factorisation_work += column * column;
+          }
+          factorisation_work = std::max(factorisation_work, 1.0);
+          iteration_work = 4.0 * static_cast<double>(L.nonZeros());
+        }
         if (!factored) {
           mu = std::max(10.0 * mu, mu_floor);
           continue;
