@@ -135,8 +135,9 @@ TEST(Iterative, SolverErrorIsMeasuredAgainstTheConvergedStep) {
     SCOPED_TRACE(method_info(c.method).name);
     ASSERT_EQ(c.iterations.size(), 7u);  // 1, 2, 4, ..., 64
     EXPECT_LT(c.error.back(), c.error.front());
-    if (c.method == Method::LocalGlobal)
+    if (c.method == Method::LocalGlobal) {
       for (std::size_t k = 1; k < c.error.size(); ++k) EXPECT_LT(c.error[k], c.error[k - 1]) << c.iterations[k];
+    }
     if (c.method == Method::ImplicitEuler) {
       EXPECT_NEAR(c.error[6], c.error[5], 0.1 * c.error[5]);  // 64 against 32 iterations: level
       EXPECT_GT(c.error[6], 1e-3);
