@@ -73,10 +73,6 @@ Eigen::VectorXd top_eigenvector(const std::vector<double>& alpha, const std::vec
   return s;
 }
 
-}  // namespace
-
-namespace {
-
 // The calling thread's array of kept Lanczos vectors, and whether a run is using it.
 thread_local std::vector<double> g_kept;
 thread_local bool g_kept_in_use = false;
