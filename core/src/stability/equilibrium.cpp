@@ -156,6 +156,45 @@ struct Balance {
   }
 };
 
+// The relaxation's step, h = 1 / w with w the highest frequency at `at` (tension raises it):
+// Lanczos from below, to a few per cent, with a tenth more for what it may miss, and never above
+// Gershgorin's bound; half the limit 2 / w_max (Gershgorin's bound alone is up to twice w_max on
+// a cloth, and the relaxation would take that many more passes).
+//
+// It holds for every state (`everywhere`) when h w_L < 2, w_L^2 = Gershgorin's bound on
+// M^-1/2 L M^-1/2, L = sum over springs of k_s (e_a - e_b)(e_a - e_b)^T the springs' Laplacian
+// (times I for x, y, z): a spring's Hessian k_s [u u^T + (1 - L_s / l) P] has no eigenvalue
+// above k_s, stretched or compressed, so K(x) <= L (x) I for every x, and no state has a mode
+// faster than w_L. A cloth's w_max moves by a tenth of a per cent from flat to hanging and w_L is
+// 1.4 times it: one estimate serves the whole relaxation (it took eight, 6 ms each on a 64 x 64
+// cloth, every 2,000 passes). Where h w_L >= 2 the step is estimated again every kRestep passes.
+struct RelaxStep {
+  double h = 0.0;
+  bool everywhere = false;
+};
+constexpr int kRestep = 2000;
+
+RelaxStep relax_step(const Model& model, const State& at) {
+  RelaxStep step;
+  const Linearised lin(model, at);
+  const double bound = lin.stiffness_bound();
+  if (!(bound > 0.0)) return step;
+  const Linearised::Combined op = lin.combined(1.0 / bound, 0.0);
+  const TopEigenpair top = top_eigenpair([&](const Points& x, Points& y) { op.apply(x, y); },
+                                         lin.random_vector(0x2545F4914F6CDD1Dull), 60, 1e-3);
+  step.h = 1.0 / std::sqrt(bound * std::min(1.0, 1.1 * top.value));
+  std::vector<double> row(model.particle_count(), 0.0);  // Gershgorin's row sums of M^-1/2 L M^-1/2
+  for (int s = 0; s < model.spring_count(); ++s) {
+    const int a = model.spring_a[s], b = model.spring_b[s];
+    const double ra = std::sqrt(model.inv_mass[a]), rb = std::sqrt(model.inv_mass[b]);
+    row[a] += model.ks(s) * ra * (ra + rb);
+    row[b] += model.ks(s) * rb * (ra + rb);
+  }
+  const double w_laplacian = std::sqrt(*std::max_element(row.begin(), row.end()));
+  step.everywhere = step.h * w_laplacian < 2.0;
+  return step;
+}
+
 // Dynamic relaxation with kinetic damping (above), until the largest force is below `tolerance`
 // or after `budget` force passes, or (with `decade` > 0) once the largest force has taken more
 // than `decade` passes to fall tenfold (the slow modes left: a long rope's). Returns the largest
@@ -166,7 +205,8 @@ struct Balance {
 // complete (force_pass.hpp's finish), and sum the chunk's kinetic energy and largest force: no
 // further pass over memory, and the same bits on any number of threads (per-block sums, added in
 // block order).
-double relax(const Model& model, const Balance& balance, State& rest, double tolerance, int budget, int decade) {
+double relax(const Model& model, const Balance& balance, State& rest, RelaxStep& step, double tolerance, int budget,
+             int decade) {
   Model springs = model;  // the springs alone: gravity is added where it has a balance
   springs.gravity.setZero();
   springs.drag = 0.0;
@@ -187,23 +227,14 @@ double relax(const Model& model, const Balance& balance, State& rest, double tol
   // (free particles) before it.
   std::vector<double> block_kinetic(blocks), block_force(blocks);
   double* const F[3] = {f.col(0).data(), f.col(1).data(), f.col(2).data()};
-  double kinetic = 0.0, h = 0.0, largest = kInfinity, mark = kInfinity;
+  double kinetic = 0.0, largest = kInfinity, mark = kInfinity;
   int marked = 0;  // the pass where the largest force was last a tenth of `mark`'s
   constexpr int kLook = 50;
   for (int k = 0; k < budget; ++k) {
     if (k % 64 == 0) check_cancel();
-    if (k % 2000 == 0) {
-      // The step from the highest frequency at the positions now (tension raises it): Lanczos
-      // from below, to a few per cent, with a tenth more for what it may miss, and never above
-      // Gershgorin's bound; h = 1 / w, half the limit 2 / w_max (Gershgorin's bound alone is
-      // up to twice w_max on a cloth, and the relaxation takes that many more passes).
-      const Linearised lin(model, rest);
-      const double bound = lin.stiffness_bound();
-      if (!(bound > 0.0)) return largest;
-      const TopEigenpair top = top_eigenpair([&](const Points& x, Points& y) { lin.apply(1.0 / bound, 0.0, x, y); },
-                                             lin.random_vector(0x2545F4914F6CDD1Dull), 60, 1e-3);
-      h = 1.0 / std::sqrt(bound * std::min(1.0, 1.1 * top.value));
-    }
+    if (k > 0 && k % kRestep == 0 && !step.everywhere) step = relax_step(model, rest);
+    const double h = step.h;
+    if (!(h > 0.0)) return largest;
     std::fill(block_kinetic.begin(), block_kinetic.end(), 0.0);
     std::fill(block_force.begin(), block_force.end(), 0.0);
     force_pass(springs, rest.x, zero, F, buffer, [&](int block, int begin, int end) {
@@ -327,14 +358,15 @@ State equilibrium(const Model& model, const State& state) {
   // estimate got wrong) balances nothing: the scene as it was is returned instead.
   const State unbalanced = rest;
   constexpr int kRelaxation = 20000;
-  relax(model, balance, rest, 1e-3 * force_scale, kRelaxation, 0);
+  RelaxStep step = relax_step(model, rest);  // (kept from one stage to the next: the same state)
+  relax(model, balance, rest, step, 1e-3 * force_scale, kRelaxation, 0);
   if (!rest.x.allFinite()) return unbalanced;
 
   // Newton's factorisations grow faster than the relaxation's passes: above kDirectDofs free
   // coordinates none (a 128x128 cloth's costs seconds). Between kRelaxedDofs and that, the
   // relaxation goes on while the force falls tenfold within kDecade passes (a 64 x 64 cloth's
   // takes about 3,000), to 1e-5 of the yardstick: the limits then agree with Newton's balance to
-  // a few parts in a million (the 64 x 64 cloth: 6e-6 at most), for 0.2 s instead of Newton's
+  // a few parts in a million (the 64 x 64 cloth: 7e-6 at most), for 0.2 s instead of Newton's
   // 0.5. Where it is slower (a long rope's sideways modes), Newton finishes.
   constexpr int kDirectDofs = 20000, kRelaxedDofs = 4000, kDecade = 4000;
   if (3 * balance.free > kDirectDofs) return rest;
@@ -342,7 +374,7 @@ State equilibrium(const Model& model, const State& state) {
     // Newton starts from the first stage's state if the second does not balance the scene (a
     // rope it set swinging would cost Newton more than its budget).
     State first = rest;
-    const bool balanced = relax(model, balance, rest, 1e-5 * force_scale, kRelaxation, kDecade) <= 1e-5 * force_scale;
+    const bool balanced = relax(model, balance, rest, step, 1e-5 * force_scale, kRelaxation, kDecade) <= 1e-5 * force_scale;
     if (balanced && rest.x.allFinite()) return rest;
     rest = std::move(first);
   }

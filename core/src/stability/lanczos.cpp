@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "stability/cancel.hpp"
@@ -73,8 +74,21 @@ Eigen::VectorXd top_eigenvector(const std::vector<double>& alpha, const std::vec
   return s;
 }
 
-// The calling thread's array of kept Lanczos vectors, and whether a run is using it.
-thread_local std::vector<double> g_kept;
+// The calling thread's array of kept Lanczos vectors (uninitialised: a run writes each vector
+// before it reads it), and whether a run is using it.
+struct Kept {
+  std::unique_ptr<double[]> data;
+  std::size_t capacity = 0;
+  double* reserve(std::size_t size) {
+    if (size > capacity) {
+      data.reset();  // the old array first: both at once could double the peak
+      data.reset(new double[size]);
+      capacity = size;
+    }
+    return data.get();
+  }
+};
+thread_local Kept g_kept;
 thread_local bool g_kept_in_use = false;
 
 // Marks the thread's array in use for the run's lifetime (a nested run leaves it alone).
@@ -93,55 +107,67 @@ struct InUse {
 }  // namespace
 
 void release_lanczos_memory() {
-  if (!g_kept_in_use) std::vector<double>().swap(g_kept);
+  if (!g_kept_in_use) g_kept = Kept{};
 }
 
 TopEigenpair top_eigenpair(const SymmetricOperator& apply, const Points& start, int max_steps, double tolerance) {
   TopEigenpair result;
   const Eigen::Index n = start.rows();
-  Points q(n, 3), q_prev(n, 3), y(n, 3);
   const double start_norm = start.norm();
   if (!(start_norm > 0.0)) {
     result.vector = start;
     return result;
   }
-  // One step: y = B q - alpha q - beta_prev q_prev, then q_prev = q, q = y / |y|.
-  const auto lanczos_step = [&](double beta_prev, double& alpha, double& beta) {
-    apply(q, y);
-    alpha = q.cwiseProduct(y).sum();
-    y -= alpha * q + beta_prev * q_prev;
-    beta = y.norm();
-    std::swap(q_prev, q);
-    if (beta > 0.0) q = y / beta;
-  };
-  const auto begin = [&] {
-    q = start / start_norm;
-    q_prev.setZero();
-  };
 
   // The Lanczos vectors are kept while they fit in 64 MB (the second pass then sums them);
   // beyond that the second pass makes them again. They go one after another, column by column,
   // into the thread's own array (lanczos.hpp), room for all of them made at once; a run started
   // from inside another's `apply` on the same thread has an array of its own.
   const long keep = std::clamp<long>((64L << 20) / std::max<long>(1, 24L * n), 0, max_steps);
-  std::vector<double> own;
+  Kept own;
   const bool nested = g_kept_in_use;
-  std::vector<double>& kept = nested ? own : g_kept;
   const InUse in_use(nested);
-  kept.clear();
-  kept.reserve(static_cast<std::size_t>(keep) * 3 * static_cast<std::size_t>(n));
-  int kept_steps = 0;
+  double* const kept = (nested ? own : g_kept).reserve(static_cast<std::size_t>(keep) * 3 * static_cast<std::size_t>(n));
+  const auto kept_column = [&](long k, int c) { return Eigen::Map<Eigen::VectorXd>(kept + (3 * k + c) * n, n); };
+
+  // Three vectors in rotation: q_(k-1), q_k and y = B q_k. A step: alpha = q_k . y; then
+  // y -= alpha q_k + beta_(k-1) q_(k-1) and beta = |y|, a column at a time (in the L1 cache
+  // between the two); then q_(k+1) = y / beta, in q_(k-1)'s place and the kept array.
+  Points buffers[2] = {Points(n, 3), Points(n, 3)}, y(n, 3);
+  Points* q = &buffers[0];
+  Points* q_prev = &buffers[1];
+  const auto lanczos_step = [&](long k, double beta_prev, double& alpha, double& beta) {
+    apply(*q, y);
+    alpha = 0.0;
+    for (int c = 0; c < 3; ++c) alpha += q->col(c).dot(y.col(c));
+    double squared = 0.0;
+    for (int c = 0; c < 3; ++c) {
+      y.col(c) -= alpha * q->col(c) + beta_prev * q_prev->col(c);
+      squared += y.col(c).squaredNorm();
+    }
+    beta = std::sqrt(squared);
+    std::swap(q, q_prev);
+    if (!(beta > 0.0)) return;
+    const bool keeping = k + 1 < keep;
+    for (int c = 0; c < 3; ++c) {
+      q->col(c) = y.col(c) / beta;
+      if (keeping) kept_column(k + 1, c) = q->col(c);
+    }
+  };
+  const auto begin = [&] {
+    *q = start / start_norm;
+    q_prev->setZero();
+  };
+
   std::vector<double> alpha, beta;
   double lambda = -std::numeric_limits<double>::infinity(), scale = 0.0, last = lambda;
   begin();
+  if (keep > 0)
+    for (int c = 0; c < 3; ++c) kept_column(0, c) = q->col(c);
   for (int k = 0; k < max_steps; ++k) {
     if (k % 32 == 0) check_cancel();
-    if (k < keep) {
-      for (int c = 0; c < 3; ++c) kept.insert(kept.end(), q.col(c).data(), q.col(c).data() + n);
-      ++kept_steps;
-    }
     double a = 0.0, b = 0.0;
-    lanczos_step(beta.empty() ? 0.0 : beta.back(), a, b);
+    lanczos_step(k, beta.empty() ? 0.0 : beta.back(), a, b);
     alpha.push_back(a);
     beta.push_back(b);
     result.steps = k + 1;
@@ -165,21 +191,21 @@ TopEigenpair top_eigenpair(const SymmetricOperator& apply, const Points& start, 
   }
   result.value = lambda;
 
-  // The vector, sum_j s_j q_j with s the top eigenvector of T: the same steps again.
+  // The vector, sum_j s_j q_j with s the top eigenvector of T: from the kept vectors, or the
+  // same steps again.
   const int steps = result.steps;
   const Eigen::VectorXd s = top_eigenvector(alpha, beta, steps, lambda);
   Points vector = Points::Zero(n, 3);
-  if (kept_steps == steps) {
+  if (steps <= keep) {
     for (int k = 0; k < steps; ++k)
-      for (int c = 0; c < 3; ++c)
-        vector.col(c) += s[k] * Eigen::Map<const Eigen::VectorXd>(kept.data() + (3 * k + c) * n, n);
+      for (int c = 0; c < 3; ++c) vector.col(c) += s[k] * kept_column(k, c);
   } else {
     begin();
     for (int k = 0; k < steps; ++k) {
-      vector += s[k] * q;
+      vector += s[k] * *q;
       if (k + 1 < steps) {
         double a = 0.0, b = 0.0;
-        lanczos_step(k == 0 ? 0.0 : beta[k - 1], a, b);
+        lanczos_step(keep, k == 0 ? 0.0 : beta[k - 1], a, b);  // (keep: no more kept)
       }
     }
   }

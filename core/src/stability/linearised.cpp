@@ -64,26 +64,32 @@ namespace {
 // wait for it.)
 constexpr int kChunk = 128;
 
-struct SpanTerms {
-  const double *dx, *dy, *dz, *along_k, *across_k, *along_c, *across_c;
-  const double* ua[3];
-  const double* ub[3];
+// The weights of apply(a, b): a K^ + b C^ from the springs' four.
+struct Mixed {
+  const double *along_k, *across_k, *along_c, *across_c;
+  double a, b;
+  template <typename T>
+  T along(int s) const {
+    return a * simd::at<T>(along_k + s) + b * simd::at<T>(along_c + s);
+  }
+  template <typename T>
+  T across(int s) const {
+    return a * simd::at<T>(across_k + s) + b * simd::at<T>(across_c + s);
+  }
 };
 
-// Springs k .. k + lanes - 1 of the chunk (T = f64x4: four of them, double: one), into f[.][k]:
-//   du = u_a - u_b,  f = (a along_k + b along_c) (d . du) d + (a across_k + b across_c) du.
-template <typename T>
-void forces_at(const SpanTerms& t, double a, double b, int k, double* f[3]) {
-  using simd::at;
-  const T ux = at<T>(t.ua[0] + k) - at<T>(t.ub[0] + k), uy = at<T>(t.ua[1] + k) - at<T>(t.ub[1] + k),
-          uz = at<T>(t.ua[2] + k) - at<T>(t.ub[2] + k);
-  const T dx = at<T>(t.dx + k), dy = at<T>(t.dy + k), dz = at<T>(t.dz + k);
-  const T along = (a * at<T>(t.along_k + k) + b * at<T>(t.along_c + k)) * (dx * ux + dy * uy + dz * uz);
-  const T across = a * at<T>(t.across_k + k) + b * at<T>(t.across_c + k);
-  simd::store(f[0] + k, along * dx + across * ux);
-  simd::store(f[1] + k, along * dy + across * uy);
-  simd::store(f[2] + k, along * dz + across * uz);
-}
+// The weights of a Combined operator, made once.
+struct Fixed {
+  const double *along_w, *across_w;
+  template <typename T>
+  T along(int s) const {
+    return simd::at<T>(along_w + s);
+  }
+  template <typename T>
+  T across(int s) const {
+    return simd::at<T>(across_w + s);
+  }
+};
 
 // y[k] += sign f[k], k < count.
 void accumulate(double* y, const double* f, int count, double sign) {
@@ -95,7 +101,8 @@ void accumulate(double* y, const double* f, int count, double sign) {
 
 }  // namespace
 
-void Linearised::apply(double a, double b, const Points& x, Points& y) const {
+template <typename Weights>
+void Linearised::product(const Weights& weights, double drag, const Points& x, Points& y) const {
   const int n = particles();
   y.setZero(n, 3);
   Points u(n, 3);
@@ -103,26 +110,61 @@ void Linearised::apply(double a, double b, const Points& x, Points& y) const {
   for (int c = 0; c < 3; ++c) u.col(c).array() = r * x.col(c).array();
   alignas(32) double buffer[3][kChunk];
   double* f[3] = {buffer[0], buffer[1], buffer[2]};
+  // Springs s .. s + lanes - 1 of the chunk (T = f64x4: four of them, double: one), into f[.][k]:
+  //   du = u_a - u_b,  f = along (d . du) d + across du.
+  const auto forces_at = [&]<typename T>(int s, const double* const ua[3], const double* const ub[3], int k) {
+    using simd::at;
+    const T ux = at<T>(ua[0] + k) - at<T>(ub[0] + k), uy = at<T>(ua[1] + k) - at<T>(ub[1] + k),
+            uz = at<T>(ua[2] + k) - at<T>(ub[2] + k);
+    const T dx = at<T>(dx_.data() + s), dy = at<T>(dy_.data() + s), dz = at<T>(dz_.data() + s);
+    const T along = weights.template along<T>(s) * (dx * ux + dy * uy + dz * uz);
+    const T across = weights.template across<T>(s);
+    simd::store(f[0] + k, along * dx + across * ux);
+    simd::store(f[1] + k, along * dy + across * uy);
+    simd::store(f[2] + k, along * dz + across * uz);
+  };
   for (const SpringSpan& span : spans_) {
     for (int first = 0; first < span.count; first += kChunk) {
       const int s = span.first + first, count = std::min(kChunk, span.count - first);
       const int a0 = span.a0 + first, b0 = span.b0 + first;
-      SpanTerms t{dx_.data() + s,       dy_.data() + s,      dz_.data() + s,       along_k_.data() + s,
-                  across_k_.data() + s, along_c_.data() + s, across_c_.data() + s, {}, {}};
+      const double* ua[3];
+      const double* ub[3];
       for (int c = 0; c < 3; ++c) {
-        t.ua[c] = u.col(c).data() + a0;
-        t.ub[c] = u.col(c).data() + b0;
+        ua[c] = u.col(c).data() + a0;
+        ub[c] = u.col(c).data() + b0;
       }
       int k = 0;
-      for (; k + simd::kLanes <= count; k += simd::kLanes) forces_at<simd::f64x4>(t, a, b, k, f);
-      for (; k < count; ++k) forces_at<double>(t, a, b, k, f);
+      for (; k + simd::kLanes <= count; k += simd::kLanes) forces_at.template operator()<simd::f64x4>(s + k, ua, ub, k);
+      for (; k < count; ++k) forces_at.template operator()<double>(s + k, ua, ub, k);
       for (int c = 0; c < 3; ++c) {
         accumulate(y.col(c).data() + a0, f[c], count, 1.0);
         accumulate(y.col(c).data() + b0, f[c], count, -1.0);
       }
     }
   }
-  for (int c = 0; c < 3; ++c) y.col(c).array() = r * (y.col(c).array() + (b * drag_) * u.col(c).array());
+  for (int c = 0; c < 3; ++c) y.col(c).array() = r * (y.col(c).array() + drag * u.col(c).array());
+}
+
+void Linearised::apply(double a, double b, const Points& x, Points& y) const {
+  product(Mixed{along_k_.data(), across_k_.data(), along_c_.data(), across_c_.data(), a, b}, b * drag_, x, y);
+}
+
+Linearised::Combined Linearised::combined(double a, double b) const {
+  Combined out;
+  out.lin_ = this;
+  const std::size_t springs = along_k_.size();
+  out.along_.resize(springs);
+  out.across_.resize(springs);
+  for (std::size_t s = 0; s < springs; ++s) {
+    out.along_[s] = a * along_k_[s] + b * along_c_[s];
+    out.across_[s] = a * across_k_[s] + b * across_c_[s];
+  }
+  out.drag_ = b * drag_;
+  return out;
+}
+
+void Linearised::Combined::apply(const Points& x, Points& y) const {
+  lin_->product(Fixed{along_.data(), across_.data()}, drag_, x, y);
 }
 
 double Linearised::stiffness(const Points& x) const {
