@@ -85,6 +85,19 @@ TEST(SpringKernel, DefiniteJacobianIsSymmetricPositiveAndExactAlongTheSpring) {
   }
 }
 
+// The balance's relaxation takes one step for all its states on this (equilibrium.cpp): a
+// spring's stiffness, the potential's own (compressed: a negative sideways term) or the definite
+// one, has no eigenvalue above k_s, so every state's stiffness is at most the springs' Laplacian.
+TEST(SpringKernel, NoStateStiffensASpringBeyondKs) {
+  for (const Config& c : random_configs(30))
+    for (const bool definite : {false, true}) {
+      const SpringJacobian J = spring_jacobian(c.xa, c.xb, c.va, c.vb, c.ks, 0.0, c.rest, definite);
+      const Eigen::SelfAdjointEigenSolver<Matrix3d> eig(J.dfdx);
+      EXPECT_LE(eig.eigenvalues().maxCoeff(), c.ks * (1.0 + 1e-12)) << "rest " << c.rest << " definite " << definite;
+      EXPECT_NEAR(eig.eigenvalues().maxCoeff(), c.ks, 1e-9 * c.ks);  // along the spring: the bound is reached
+    }
+}
+
 TEST(SpringKernel, CompactDefiniteJacobianIsTheDefiniteJacobian) {
   // dfdx = stiff_along d d^T + stiff_across I and dfdv = damp_along d d^T, d = x_b - x_a.
   for (const Config& c : random_configs(30)) {
