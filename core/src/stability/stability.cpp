@@ -15,7 +15,6 @@
 #include <stdexcept>
 #include <limits>
 #include <numbers>
-#include <optional>
 #include <sstream>
 
 #include "dynamics/threads.hpp"
@@ -127,14 +126,19 @@ class RangeTrace {
   }
 
   // The stiffest mode (phi = 0), from a fixed pseudo-random start, then a grid over the half
-  // circle, each point started from its neighbour's vector (they are close).
-  void grid(int points) {
+  // circle, each point started from its neighbour's vector (they are close). The two sides are
+  // independent chains, a job each; beside(j, top) for j < count are further jobs that need only
+  // the stiffest mode `top`, run on the cores beside them (on a cloth the side towards the most
+  // damped modes takes half as long again as the other: they fill the difference).
+  template <typename Beside>
+  void grid(int points, int count, const Beside& beside) {
     const Sample top = at(0.0, random_);
     samples_.push_back(top);
-    if (!(c_ > 0.0)) return;  // no damping: W is a segment of the kappa axis, its end is all
-    // The two sides are independent chains: one task each.
+    // No damping: W is a segment of the kappa axis, its end is all.
+    const int sides_count = c_ > 0.0 ? 2 : 0;
     std::vector<Sample> sides[2];
-    each_task(2, [&](int t) {
+    each_task(sides_count + count, [&](int t) {
+      if (t >= sides_count) return beside(t - sides_count, top);
       const int side = t == 0 ? -1 : 1;
       Points start = top.x;
       for (int j = 1; j <= points / 2; ++j) {
@@ -396,36 +400,33 @@ void StabilityAnalysis::analyse(const Model& model, const State& state, int dens
   oscillates_ = true;
   dense_ = dofs_ <= dense_dofs;
 
-  RangeTrace trace(lin);
-  trace.grid(16);
-  const Sample stiffest = trace.stiffest();
-  w_max_ = std::sqrt(std::max(stiffest.kappa, 0.0));
-
   const auto set = [&](StabilityLimit limit) { limits_[static_cast<int>(limit.method)] = std::move(limit); };
-  // One search per method, independent of each other (each from the grid alone), so that they
-  // run on worker threads in any order with the same results: the partitioned methods, and
-  // the Runge-Kutta ones where the spectrum is not dense. The Runge-Kutta searches first (the
-  // longest), so that the short ones fill in at the end.
-  std::vector<const MethodInfo*> searched;
+  // One search per method, independent of each other, so that they run on worker threads in any
+  // order with the same results. A definiteness test (the partitioned methods) needs only the
+  // stiffest mode: it runs beside the grid's two sides. The searches along W's boundary (the
+  // Runge-Kutta methods, where the spectrum is not dense) need the whole grid.
+  std::vector<const MethodInfo*> definite, searched;
   for (const MethodFamily family : {MethodFamily::RungeKutta, MethodFamily::Partitioned})
     for (const MethodInfo& m : methods())
-      if (m.family == family && (family != MethodFamily::RungeKutta || !dense_)) searched.push_back(&m);
+      if (m.family == family && (family != MethodFamily::RungeKutta || !dense_))
+        (m.definite ? definite : searched).push_back(&m);
+  std::vector<StabilityLimit> definite_limits(definite.size());
+  RangeTrace trace(lin);
+  trace.grid(16, static_cast<int>(definite.size()), [&](int j, const Sample& stiffest) {
+    const DefiniteForm f = definite[j]->definite(model.verlet_damping);
+    definite_limits[j] = definite_limit(definite[j]->id, f.a, f.b, f.c, lin, stiffest);
+  });
+  for (StabilityLimit& limit : definite_limits) set(std::move(limit));
+  w_max_ = std::sqrt(std::max(trace.stiffest().kappa, 0.0));
+
   std::vector<StabilityLimit> found_limits(searched.size());
-  std::vector<std::optional<Sample>> found_points(searched.size());
+  std::vector<Sample> found_points(searched.size());
   each_task(static_cast<int>(searched.size()), [&](int t) {
-    const MethodInfo& m = *searched[t];
-    if (m.definite) {
-      const DefiniteForm f = m.definite(model.verlet_damping);
-      found_limits[t] = definite_limit(m.id, f.a, f.b, f.c, lin, stiffest);
-    } else {
-      Sample point;
-      found_limits[t] = range_limit(m.id, lin, trace, point);
-      found_points[t] = std::move(point);
-    }
+    found_limits[t] = range_limit(searched[t]->id, lin, trace, found_points[t]);
   });
   for (std::size_t t = 0; t < searched.size(); ++t) {
     set(std::move(found_limits[t]));
-    if (found_points[t]) trace.add(std::move(*found_points[t]));
+    trace.add(std::move(found_points[t]));
   }
 
   if (dense_) {
