@@ -52,7 +52,8 @@ struct StepSettings {
   double min_step_fraction = 1e-6;
   /// implicit-euler: conjugate gradients stop when |r| <= solver_tolerance |b|. The step is a
   /// first-order, once-linearised approximation; at 1e-5 the solve changes cloth positions by
-  /// 1e-4 of the method's own error (implicit_euler.cpp).
+  /// 1e-4 of the method's own error (implicit_euler.cpp). A diagonally implicit tableau's stages
+  /// solve to the smaller of this and 1e-10 (tableau_steps.cpp: higher orders reach 1e-5's floor).
   double solver_tolerance = 1e-5;
   /// implicit-euler: the most conjugate-gradient iterations a solve may take; 0: six times the
   /// particles (reached only when the system is ill-posed). The solver-error study sets it.

@@ -161,13 +161,21 @@ struct Balance {
 // Gershgorin's bound; half the limit 2 / w_max (Gershgorin's bound alone is up to twice w_max on
 // a cloth, and the relaxation would take that many more passes).
 //
-// It holds for every state (`everywhere`) when h w_L < 2, w_L^2 = Gershgorin's bound on
+// It is stable in every state (`everywhere`) when h w_L < 2, w_L^2 = Gershgorin's bound on
 // M^-1/2 L M^-1/2, L = sum over springs of k_s (e_a - e_b)(e_a - e_b)^T the springs' Laplacian
 // (times I for x, y, z): a spring's Hessian k_s [u u^T + (1 - L_s / l) P] has no eigenvalue
 // above k_s, stretched or compressed, so K(x) <= L (x) I for every x, and no state has a mode
-// faster than w_L. A cloth's w_max moves by a tenth of a per cent from flat to hanging and w_L is
-// 1.4 times it: one estimate serves the whole relaxation (it took eight, 6 ms each on a 64 x 64
-// cloth, every 2,000 passes). Where h w_L >= 2 the step is estimated again every kRestep passes.
+// faster than w_L (a compressed spring's negative sideways term is a slow mode, not a fast one).
+// Then one estimate serves the whole relaxation: it took eight, 6 ms each on a 64 x 64 cloth
+// (every 2,000 passes), where w_max moves by a tenth of a per cent from flat to hanging (w_L is
+// 1.44 times w_max, h w_L 1.37). Where h w_L >= 2 the step is estimated again every kRestep
+// passes. What the step no longer follows is tension raising w_max as a scene stretches: the
+// kinetic damping is then at h w_max above 0.95, and it stalls above about 1.4 (README,
+// Performance: a mode's speed falls on the second pass after the damping zeroes it when h w > 1,
+// h f (2 - h^2 w^2) after h f). Measured: a 64 x 64 cloth of springs 200 times softer (k_s 2)
+// stretches until w_max is a fifth higher, h w_max 1.16 at the end, and balances in 4,500
+// passes, against 4,950 estimating again every 2,000; a 48 x 48 cloth started at h w_max 1.38
+// balances in fewer passes than at 0.95.
 struct RelaxStep {
   double h = 0.0;
   bool everywhere = false;
@@ -358,7 +366,7 @@ State equilibrium(const Model& model, const State& state) {
   // estimate got wrong) balances nothing: the scene as it was is returned instead.
   const State unbalanced = rest;
   constexpr int kRelaxation = 20000;
-  RelaxStep step = relax_step(model, rest);  // (kept from one stage to the next: the same state)
+  RelaxStep step = relax_step(model, rest);
   relax(model, balance, rest, step, 1e-3 * force_scale, kRelaxation, 0);
   if (!rest.x.allFinite()) return unbalanced;
 
@@ -374,6 +382,7 @@ State equilibrium(const Model& model, const State& state) {
     // Newton starts from the first stage's state if the second does not balance the scene (a
     // rope it set swinging would cost Newton more than its budget).
     State first = rest;
+    if (!step.everywhere) step = relax_step(model, rest);  // (else the first stage's holds here too)
     const bool balanced = relax(model, balance, rest, step, 1e-5 * force_scale, kRelaxation, kDecade) <= 1e-5 * force_scale;
     if (balanced && rest.x.allFinite()) return rest;
     rest = std::move(first);

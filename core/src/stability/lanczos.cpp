@@ -82,6 +82,7 @@ struct Kept {
   double* reserve(std::size_t size) {
     if (size > capacity) {
       data.reset();  // the old array first: both at once could double the peak
+      capacity = 0;  // (and none, should the new one throw)
       data.reset(new double[size]);
       capacity = size;
     }
@@ -130,10 +131,13 @@ TopEigenpair top_eigenpair(const SymmetricOperator& apply, const Points& start, 
   double* const kept = (nested ? own : g_kept).reserve(static_cast<std::size_t>(keep) * 3 * static_cast<std::size_t>(n));
   const auto kept_column = [&](long k, int c) { return Eigen::Map<Eigen::VectorXd>(kept + (3 * k + c) * n, n); };
 
-  // Three vectors in rotation: q_(k-1), q_k and y = B q_k. A step: alpha = q_k . y; then
-  // y -= alpha q_k + beta_(k-1) q_(k-1) and beta = |y|, a column at a time (in the L1 cache
-  // between the two); then q_(k+1) = y / beta, in q_(k-1)'s place and the kept array.
+  // Three vectors in rotation: q_(k-1), q_k and y = B q_k. A step is three passes over them:
+  // alpha = q_k . y; then y -= alpha q_k + beta_(k-1) q_(k-1) and beta = |y|, a column at a
+  // time; then q_(k+1) = y / beta, in q_(k-1)'s place and the kept array (five passes before,
+  // and a copy into the array). `written` counts the kept columns: a step whose beta is not
+  // positive (0, or NaN from a NaN in the operator) writes none.
   Points buffers[2] = {Points(n, 3), Points(n, 3)}, y(n, 3);
+  long written = 0;
   Points* q = &buffers[0];
   Points* q_prev = &buffers[1];
   const auto lanczos_step = [&](long k, double beta_prev, double& alpha, double& beta) {
@@ -153,6 +157,7 @@ TopEigenpair top_eigenpair(const SymmetricOperator& apply, const Points& start, 
       q->col(c) = y.col(c) / beta;
       if (keeping) kept_column(k + 1, c) = q->col(c);
     }
+    if (keeping) written = k + 2;
   };
   const auto begin = [&] {
     *q = start / start_norm;
@@ -162,8 +167,10 @@ TopEigenpair top_eigenpair(const SymmetricOperator& apply, const Points& start, 
   std::vector<double> alpha, beta;
   double lambda = -std::numeric_limits<double>::infinity(), scale = 0.0, last = lambda;
   begin();
-  if (keep > 0)
+  if (keep > 0) {
     for (int c = 0; c < 3; ++c) kept_column(0, c) = q->col(c);
+    written = 1;
+  }
   for (int k = 0; k < max_steps; ++k) {
     if (k % 32 == 0) check_cancel();
     double a = 0.0, b = 0.0;
@@ -196,7 +203,7 @@ TopEigenpair top_eigenpair(const SymmetricOperator& apply, const Points& start, 
   const int steps = result.steps;
   const Eigen::VectorXd s = top_eigenvector(alpha, beta, steps, lambda);
   Points vector = Points::Zero(n, 3);
-  if (steps <= keep) {
+  if (steps <= written) {
     for (int k = 0; k < steps; ++k)
       for (int c = 0; c < 3; ++c) vector.col(c) += s[k] * kept_column(k, c);
   } else {

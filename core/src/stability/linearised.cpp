@@ -149,9 +149,8 @@ void Linearised::apply(double a, double b, const Points& x, Points& y) const {
   product(Mixed{along_k_.data(), across_k_.data(), along_c_.data(), across_c_.data(), a, b}, b * drag_, x, y);
 }
 
-Linearised::Combined Linearised::combined(double a, double b) const {
-  Combined out;
-  out.lin_ = this;
+Linearised::Combined Linearised::combined(double a, double b) const& {
+  Combined out(*this);
   const std::size_t springs = along_k_.size();
   out.along_.resize(springs);
   out.across_.resize(springs);

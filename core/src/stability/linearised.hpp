@@ -39,18 +39,20 @@ class Linearised {
   // a K^ + b C^ with each spring's two weights combined once, for an eigen-solver's hundreds of
   // products with the same a and b: five numbers a spring to read instead of seven (a 64 x 64
   // cloth's operator then nearly fits a core's 1 MB L2 cache; 0.7 of apply's time a product).
-  // It refers to this Linearised, which must outlive it.
+  // It refers to this Linearised, which must outlive it (none from a temporary).
   class Combined {
    public:
     void apply(const Points& x, Points& y) const;
 
    private:
     friend class Linearised;
-    const Linearised* lin_ = nullptr;
+    explicit Combined(const Linearised& lin) : lin_(&lin) {}
+    const Linearised* lin_;
     std::vector<double> along_, across_;
     double drag_ = 0.0;  // b k_drag
   };
-  Combined combined(double a, double b) const;
+  Combined combined(double a, double b) const&;
+  Combined combined(double a, double b) const&& = delete;
   // x^T K^ x and x^T C^ x, from one product each.
   double stiffness(const Points& x) const;
   double damping(const Points& x) const;
