@@ -91,6 +91,7 @@ void StabilityJob::start(const Model& model, const State& state, std::uint64_t v
   const int analysis_threads = std::max(1, thread_count() - 1);
   auto work = [shared, model, state, analysis_threads] {
     if constexpr (kWorkerThreads) set_thread_count(analysis_threads);  // (this thread's own setting)
+    else (void)analysis_threads;  // (no worker threads in the browser: the caller's one thread)
     auto analysis = std::make_shared<const StabilityAnalysis>(model, state, kDenseDofs, &shared->cancel);
     std::lock_guard lock(shared->mutex);
     if (!analysis->cancelled()) shared->result.analysis = std::move(analysis);
