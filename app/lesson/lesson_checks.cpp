@@ -75,7 +75,16 @@ void record(const Lane& lane, int frame, Record& r) {
         lc += m.mass[i] * d.cross(s.v.row(i).transpose() - vc);
         inertia += m.mass[i] * (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose());
       }
-    rigid = 0.5 * p.squaredNorm() / mass + 0.5 * lc.dot(inertia.completeOrthogonalDecomposition().solve(lc));
+    // I is symmetric and positive semidefinite: L I^+ L from its eigenvectors, leaving out the
+    // directions with no inertia to rounding (as a rank-revealing factorisation would; Eigen's
+    // complete orthogonal decomposition did, and GCC 12 warned of its dynamic blocks).
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(inertia);
+    const Vec3 along = eig.eigenvectors().transpose() * lc;
+    const double floor = 3.0 * std::numeric_limits<double>::epsilon() * eig.eigenvalues().maxCoeff();
+    double spin = 0.0;
+    for (int k = 0; k < 3; ++k)
+      if (eig.eigenvalues()[k] > floor) spin += along[k] * along[k] / eig.eigenvalues()[k];
+    rigid = 0.5 * p.squaredNorm() / mass + 0.5 * spin;
   }
   r.momentum.push_back(p);
   r.angular.push_back(l);
