@@ -792,7 +792,7 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
     ImGui::Begin("Charts", nullptr, docked | ImGuiWindowFlags_NoTitleBar);
     std::vector<LessonChart> only = ui.lesson_charts;
     const bool one = layout.kind == LayoutKind::Upright || layout.kind == LayoutKind::Compact;
-    if (one && only.size() > 1) only.resize(1);
+    if (one && only.size() > 1) only.erase(only.begin() + 1, only.end());
     charts(session, ImGui::GetContentRegionAvail().x, ImGui::GetContentRegionAvail().y, ui.presentation || one, only);
     ImGui::End();
   }
