@@ -75,9 +75,10 @@ double transient_growth(Method method, double gamma, double kappa, double h, dou
 /// balance (colliders, drag and fields play no part), velocities zero. Gravity acts on the
 /// particles joined by springs to a pinned one; a part with nothing pinned only relaxes its
 /// springs (it would fall forever). Within budgets (equilibrium.cpp), its largest force is below
-/// a fraction of its yardstick (the larger of its springs' force at 1 % strain and its heaviest
-/// held particle's weight): 1e-8 up to 4000 free coordinates, 1e-5 up to 20000 (or 1e-8, where
-/// relaxation alone is slow), and about 1e-3 above.
+/// 1e-8 of the larger of its springs' force at 1 % strain and its heaviest held particle's
+/// weight, where a factorisation of its stiffness is cheap (a rope, a small scene: Newton's
+/// method), else (a cloth from 26 x 26) 4e-2 of that weight, or of that spring force if
+/// it is less or there is no weight (relaxation alone).
 State equilibrium(const Model& model, const State& state);
 /// A lower bound on the total energy of the scene whose equilibrium is `rest` (above:
 /// StabilityAnalysis::lowest_energy()).

@@ -1,30 +1,31 @@
-// The static balance a scene settles into (stability.hpp), in two stages.
+// The static balance a scene settles into (stability.hpp): by relaxation alone, or by
+// relaxation and then Newton's method where a factorisation is cheap.
 //
-// Dynamic relaxation first, for the large motions (a cloth held by two corners swinging from
-// flat to hanging): the scene stepped with symplectic Euler at h = 1 / w_max (half its limit
-// 2 / w_max), without damping, and every time its kinetic energy stops rising all velocities
-// are set to zero (kinetic damping: the energy taken out is the most there is to take). A step
-// costs one pass of the force loop, so thousands of them cost less than one factorisation of a
-// large cloth's stiffness.
+// Dynamic relaxation, for the large motions (a cloth held by two corners swinging from flat to
+// hanging): the scene stepped with symplectic Euler at h = 1 / w_max (half its limit 2 / w_max),
+// without damping, and every time its kinetic energy stops rising all velocities are set to
+// zero (kinetic damping: the energy taken out is the most there is to take). A step costs one
+// pass of the force loop, so thousands of them cost less than one factorisation of a large
+// cloth's stiffness.
 //
-// Then Newton's method for the last digits: the springs' potential plus gravity's minimised with
+// Newton's method for the last digits: the springs' potential plus gravity's minimised with
 // Levenberg-Marquardt damping,
 //   (K + mu M) dx = f,   accepted when the potential falls (then mu shrinks, else it grows),
 // K the definite stiffness (positive semidefinite: a pinned rope's sideways motions start with
 // none, and mu M keeps the step finite), solved by a sparse LDL^T factorisation, or, once there is
 // one, by conjugate gradients preconditioned with the last factorisation, only as accurately as
-// the force is small (inexact Newton): from the relaxed start, 2 factorisations instead of 6 on
-// the 64 x 64 cloth. Gravity acts on
-// the particles joined by springs to a pinned one; a part with nothing pinned would fall forever
-// (no balance), so it only relaxes its springs.
+// the force is small (inexact Newton). Gravity acts on the particles joined by springs to a
+// pinned one; a part with nothing pinned would fall forever (no balance), so it only relaxes its
+// springs.
 //
-// Both stages have budgets, so that an analysis never stalls a run or the app: the relaxation a
-// number of force passes, Newton an amount of factorisation (its preconditioned iterations
-// counted in). Between kRelaxedDofs and kDirectDofs free coordinates the relaxation goes on
-// to 1e-5 of the force's yardstick instead of factorising, and above kDirectDofs Newton is
-// skipped (one factorisation of a 128x128 cloth costs seconds; the relaxed state's residual
-// forces, a small fraction of the springs' at 1 % strain, shift the spectrum by about as
-// little): equilibrium() below.
+// Which, by the cost of a factorisation, known before making one
+// (predicted_factorisation_work): a rope's or a small scene's is cheap, and Newton balances it
+// to rounding (a long rope's sideways modes would take the relaxation hundreds of thousands of
+// passes); a cloth's fills in (the 64 x 64 cloth's costs 0.15 s), and its relaxation alone goes
+// on until every particle's force is a few per cent of its weight: the limits within 1e-3 of
+// Newton's balance. Both have budgets, so that an analysis never stalls a run or the app: the
+// relaxation a number of force passes, Newton an amount of factorisation (its preconditioned
+// iterations counted in). equilibrium() below.
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <algorithm>
@@ -204,17 +205,15 @@ RelaxStep relax_step(const Model& model, const State& at) {
 }
 
 // Dynamic relaxation with kinetic damping (above), until the largest force is below `tolerance`
-// or after `budget` force passes, or (with `decade` > 0) once the largest force has taken more
-// than `decade` passes to fall tenfold (the slow modes left: a long rope's). Returns the largest
-// force at its last look (every 50 passes): at most `tolerance` where it stopped on reaching it,
-// above it (or NaN, where the positions are no longer finite) otherwise. Each pass is one force
+// or after `budget` force passes. Returns the largest force at its last look (every 50 passes):
+// at most `tolerance` where it stopped on reaching it, above it (or NaN, where the positions are
+// no longer finite) otherwise. Each pass is one force
 // pass whose threads turn their
 // particles' forces into the new velocities and positions as soon as a chunk's forces are
 // complete (force_pass.hpp's finish), and sum the chunk's kinetic energy and largest force: no
 // further pass over memory, and the same bits on any number of threads (per-block sums, added in
 // block order).
-double relax(const Model& model, const Balance& balance, State& rest, RelaxStep& step, double tolerance, int budget,
-             int decade) {
+double relax(const Model& model, const Balance& balance, State& rest, RelaxStep& step, double tolerance, int budget) {
   Model springs = model;  // the springs alone: gravity is added where it has a balance
   springs.gravity.setZero();
   springs.drag = 0.0;
@@ -235,8 +234,7 @@ double relax(const Model& model, const Balance& balance, State& rest, RelaxStep&
   // (free particles) before it.
   std::vector<double> block_kinetic(blocks), block_force(blocks);
   double* const F[3] = {f.col(0).data(), f.col(1).data(), f.col(2).data()};
-  double kinetic = 0.0, largest = kInfinity, mark = kInfinity;
-  int marked = 0;  // the pass where the largest force was last a tenth of `mark`'s
+  double kinetic = 0.0, largest = kInfinity;
   constexpr int kLook = 50;
   for (int k = 0; k < budget; ++k) {
     if (k % 64 == 0) check_cancel();
@@ -280,12 +278,6 @@ double relax(const Model& model, const Balance& balance, State& rest, RelaxStep&
     if (k % kLook == 0) {
       largest = std::sqrt(squared);
       if (largest <= tolerance) return largest;  // the positions before this pass
-      if (largest <= 0.1 * mark) {  // (mark starts infinite: the first look sets it)
-        mark = largest;
-        marked = k;
-      } else if (decade > 0 && k - marked > decade) {
-        return largest;
-      }
     }
     if (energy < kinetic) {
       v.setZero();  // past a peak of the kinetic energy: take it all out, and stay where it was
@@ -299,6 +291,42 @@ double relax(const Model& model, const Balance& balance, State& rest, RelaxStep&
 }
 
 using Factor = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>;
+
+// What one factorisation of Newton's system would cost, before making one: the sum over the
+// factor L's columns of their nonzeros squared (the measure of Newton's budget below), from the
+// symbolic factorisation (fill-reducing ordering, elimination tree, column counts) of the
+// particles' graph, nine times smaller than the coordinates'. A particle's column with c
+// entries below the diagonal is three of the coordinates' with 3c + 2, 3c + 1 and 3c. A rope's
+// graph is a path and its factor a band (the 7000-node rope: 3.5e5); a cloth's fills in
+// (the 64 x 64 cloth: 4.6e8, 0.15 s a factorisation here).
+double predicted_factorisation_work(const Model& model, const Balance& balance) {
+  struct Symbolic : Factor {
+    double work() const {
+      const auto* column = m_matrix.outerIndexPtr();
+      double sum = 0.0;
+      for (Eigen::Index j = 0; j < m_matrix.outerSize(); ++j) {
+        const double c = static_cast<double>(column[j + 1] - column[j]);
+        sum += (3 * c + 2) * (3 * c + 2) + (3 * c + 1) * (3 * c + 1) + 9 * c * c;
+      }
+      return sum;
+    }
+  };
+  std::vector<Eigen::Triplet<double>> t;
+  t.reserve(2 * static_cast<std::size_t>(model.spring_count()) + balance.free);
+  for (int s = 0; s < model.spring_count(); ++s) {
+    const int a = balance.index[model.spring_a[s]], b = balance.index[model.spring_b[s]];
+    if (a >= 0 && b >= 0 && a != b) {
+      t.emplace_back(a, b, 1.0);
+      t.emplace_back(b, a, 1.0);
+    }
+  }
+  for (int i = 0; i < balance.free; ++i) t.emplace_back(i, i, 1.0);
+  Eigen::SparseMatrix<double> graph(balance.free, balance.free);
+  graph.setFromTriplets(t.begin(), t.end());
+  Symbolic symbolic;
+  symbolic.analyzePattern(graph);
+  return symbolic.work();
+}
 
 // (K + mu M) dx = f by conjugate gradients with an earlier factorisation of the system as the
 // preconditioner: near the balance K changes little from one Newton step to the next, so the
@@ -344,11 +372,12 @@ State equilibrium(const Model& model, const State& state) {
   if (balance.free == 0 || model.spring_count() == 0) return rest;
 
   // The force's yardstick: the largest spring force at 1 % strain, or weight.
-  double force_scale = 0.0;
+  double strain_force = 0.0, weight = 0.0;
   for (int s = 0; s < model.spring_count(); ++s)
-    force_scale = std::max(force_scale, 0.01 * model.ks(s) * std::max(model.rest_length[s], 1e-3));
+    strain_force = std::max(strain_force, 0.01 * model.ks(s) * std::max(model.rest_length[s], 1e-3));
   for (int i = 0; i < model.particle_count(); ++i)
-    if (balance.weighed[i]) force_scale = std::max(force_scale, model.mass[i] * model.gravity.norm());
+    if (balance.weighed[i]) weight = std::max(weight, model.mass[i] * model.gravity.norm());
+  const double force_scale = std::max(strain_force, weight);
   if (!(force_scale > 0.0)) return rest;
   // Balanced to a millionth of that: the tension it leaves is the springs' to 1e-8 strain.
   const double tolerance = 1e-8 * force_scale;
@@ -365,36 +394,38 @@ State equilibrium(const Model& model, const State& state) {
   // A relaxation whose positions are no longer finite (a NaN in the scene, or a step its
   // estimate got wrong) balances nothing: the scene as it was is returned instead.
   const State unbalanced = rest;
-  constexpr int kRelaxation = 20000;
   RelaxStep step = relax_step(model, rest);
-  relax(model, balance, rest, step, 1e-3 * force_scale, kRelaxation, 0);
+
+  // Where a factorisation costs more than kNewtonWork (a cloth from 26 x 26 up; 6 ms here),
+  // relaxation alone, until the largest force is kLoadTolerance of the load: the heaviest held
+  // particle's weight (the spring force at 1 % strain, if that is less or there is no weight).
+  // Against the load because the limits' error follows the tension's, and a tension is the
+  // weight it holds up: a fraction of a particle's weight left over at each particle is about
+  // that fraction of the tension. Against the springs' force, a fine rope's weights (1/16 of the
+  // 1e-3 of it that once counted as balanced, on a 7000-node rope) passed before the rope had
+  // moved, and its explicit Euler limit was 18 % above the hanging rope's. Measured on cloths of
+  // 37 x 37 to 80 x 80 and 128 x 128 against Newton's balance: explicit and modified Euler's
+  // limits within 8.3e-4 (they follow the sideways stiffness the tension gives, which no damping
+  // matches; 4.3e-5 on the 128 x 128 cloth), the other methods' within 1.5e-5. At 1e-2 within
+  // 3.4e-4, for 28 % more passes on the 64 x 64 cloth (12,400 against 9,700) and 73 % more on
+  // the 128 x 128 (32,400 against 18,700). Past kRelaxedBudget passes it stops where it is.
+  constexpr double kNewtonWork = 2e7, kLoadTolerance = 4e-2;
+  constexpr int kRelaxation = 20000, kRelaxedBudget = 60000;
+  if (predicted_factorisation_work(model, balance) > kNewtonWork) {
+    const double load = weight > 0.0 ? std::min(weight, strain_force) : strain_force;
+    relax(model, balance, rest, step, kLoadTolerance * load, kRelaxedBudget);
+    return rest.x.allFinite() ? rest : unbalanced;
+  }
+  // Else relaxation for the large motions, cheaply, and Newton for the last digits.
+  relax(model, balance, rest, step, 1e-3 * force_scale, kRelaxation);
   if (!rest.x.allFinite()) return unbalanced;
 
-  // Newton's factorisations grow faster than the relaxation's passes: above kDirectDofs free
-  // coordinates none (a 128x128 cloth's costs seconds). Between kRelaxedDofs and that, the
-  // relaxation goes on while the force falls tenfold within kDecade passes (a 64 x 64 cloth's
-  // takes about 3,000), to 1e-5 of the yardstick: the limits then agree with Newton's balance to
-  // a few parts in a million (the 64 x 64 cloth: 7e-6 at most), for 0.2 s instead of Newton's
-  // 0.5. Where it is slower (a long rope's sideways modes), Newton finishes.
-  constexpr int kDirectDofs = 20000, kRelaxedDofs = 4000, kDecade = 4000;
-  if (3 * balance.free > kDirectDofs) return rest;
-  if (3 * balance.free > kRelaxedDofs) {
-    // Newton starts from the first stage's state if the second does not balance the scene (a
-    // rope it set swinging would cost Newton more than its budget).
-    State first = rest;
-    if (!step.everywhere) step = relax_step(model, rest);  // (else the first stage's holds here too)
-    const bool balanced = relax(model, balance, rest, step, 1e-5 * force_scale, kRelaxation, kDecade) <= 1e-5 * force_scale;
-    if (balanced && rest.x.allFinite()) return rest;
-    rest = std::move(first);
-  }
   // Newton's budget in floating-point work, known after the first factorisation from its factor
   // L: a factorisation costs about the sum over L's columns of their nonzeros squared, a
-  // preconditioned iteration (two triangular solves) four times L's nonzeros. 1.5e10 is thirty
-  // factorisations of a 64 x 64 cloth's stiffness (4.6e8 each, 0.15 s), as the budget in
-  // factorisations per free coordinate allowed until 2026-11-26; a rope's banded factor costs
-  // 6,600 times less than that cloth's, and it now gets what it needs (a 1400-node rope from
-  // flat: about 42 factorisations and 600 iterations, which that budget cut short in the
-  // WebAssembly build's rounding).
+  // preconditioned iteration (two triangular solves) four times L's nonzeros. 1.5e10 is 750
+  // factorisations of the costliest system Newton is given (kNewtonWork); a rope's banded factor
+  // is far cheaper, and it gets what its swing from flat needs (the 7000-node rope: 70
+  // factorisations and 850 iterations, 0.85 s).
   constexpr double kWork = 1.5e10;
   double factorisation_work = 0.0, iteration_work = 0.0;
   Factor solver;
