@@ -77,8 +77,8 @@ double transient_growth(Method method, double gamma, double kappa, double h, dou
 /// springs (it would fall forever). Within budgets (equilibrium.cpp), its largest force is below
 /// 1e-8 of the larger of its springs' force at 1 % strain and its heaviest held particle's
 /// weight, where a factorisation of its stiffness is cheap (a rope, a small scene: Newton's
-/// method), else (a cloth from 26 x 26) 4e-2 of that weight, or of that spring force if
-/// it is less or there is no weight (relaxation alone).
+/// method), else (a cloth from 26 x 26) 4e-2 of that weight or of that spring force, the less,
+/// and 1e-5 of the spring force where there is no weight (relaxation alone).
 State equilibrium(const Model& model, const State& state);
 /// A lower bound on the total energy of the scene whose equilibrium is `rest` (above:
 /// StabilityAnalysis::lowest_energy()).

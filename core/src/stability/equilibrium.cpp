@@ -398,7 +398,7 @@ State equilibrium(const Model& model, const State& state) {
 
   // Where a factorisation costs more than kNewtonWork (a cloth from 26 x 26 up; 6 ms here),
   // relaxation alone, until the largest force is kLoadTolerance of the load: the heaviest held
-  // particle's weight (the spring force at 1 % strain, if that is less or there is no weight).
+  // particle's weight (the spring force at 1 % strain, if that is less).
   // Against the load because the limits' error follows the tension's, and a tension is the
   // weight it holds up: a fraction of a particle's weight left over at each particle is about
   // that fraction of the tension. Against the springs' force, a fine rope's weights (1/16 of the
@@ -412,8 +412,11 @@ State equilibrium(const Model& model, const State& state) {
   constexpr double kNewtonWork = 2e7, kLoadTolerance = 4e-2;
   constexpr int kRelaxation = 20000, kRelaxedBudget = 60000;
   if (predicted_factorisation_work(model, balance) > kNewtonWork) {
-    const double load = weight > 0.0 ? std::min(weight, strain_force) : strain_force;
-    relax(model, balance, rest, step, kLoadTolerance * load, kRelaxedBudget);
+    // With no weight to hold (nothing pinned, or no gravity) the tensions are whatever pins
+    // stretch the springs to, perhaps none: to 1e-7 strain, as tight as the first stage's
+    // relaxation before Newton is loose (1e-5 strain).
+    const double load = weight > 0.0 ? kLoadTolerance * std::min(weight, strain_force) : 1e-5 * strain_force;
+    relax(model, balance, rest, step, load, kRelaxedBudget);
     return rest.x.allFinite() ? rest : unbalanced;
   }
   // Else relaxation for the large motions, cheaply, and Newton for the last digits.
