@@ -29,11 +29,12 @@ struct Mapping {
   }
 };
 
-// The title, or as many of its words as fit `width` followed by an ellipsis.
-std::string fitted_title(const Chart& chart, float width) {
+// The text (a title, an axis label), or as many of its words as fit `width` followed by an
+// ellipsis.
+std::string fitted(const std::string& text, float width) {
   const auto fits = [&](const std::string& t) { return ImGui::CalcTextSize(t.c_str()).x <= width; };
-  if (fits(chart.title)) return chart.title;
-  std::string cut = chart.title;
+  if (fits(text)) return text;
+  std::string cut = text;
   for (std::size_t space = cut.rfind(' '); space != std::string::npos && space > 0; space = cut.rfind(' ')) {
     cut.resize(space);
     while (!cut.empty() && (cut.back() == ',' || cut.back() == ':' || cut.back() == '(')) cut.pop_back();
@@ -60,11 +61,70 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
 
   // Plot area: room for the title, the y label (rotated text is not available, so it goes above
   // the axis), tick labels and the x label.
-  const float top = origin.y + (chart.title.empty() ? 0.0f : line_h * 1.2f) + line_h * 1.1f;
+  const float heading = origin.y + (chart.title.empty() ? 0.0f : line_h * 1.2f);
+  float top = heading + line_h * 1.1f;
   const float left = origin.x + label_w + style.ItemSpacing.x + 4.0f;
-  const float right = origin.x + size.x - 8.0f;
+  float right = origin.x + size.x - 8.0f;
   const float bottom = origin.y + size.y - line_h * (chart.x.label.empty() ? 1.3f : 2.4f);
   if (right - left < 20 || bottom - top < 20) return;
+
+  // The legend: its labels (at most the plot's width, a longer one wrapped onto a second line at
+  // spaces, never inside a number such as "x1.33") stacked in a box in the plot's corner where it
+  // hides the least. Where that box would be taller than the plot (a phone's short chart, with
+  // five series: it covered the plot's right half and ran off its foot) it goes outside the
+  // plot: stacked beside it on the right, the plot made narrower, where the column fits the
+  // chart's height and leaves the plot half its width; else in rows over the plot, the plot made
+  // shorter, where it keeps two lines' height; else the box after all.
+  enum class Legend { Box, Column, Rows };
+  Legend place = Legend::Box;
+  std::vector<std::string> labels;
+  float legend_w = 0.0f, legend_h = 0.0f;
+  std::vector<int> row_of;  // in rows: each entry's row
+  const auto stack = [&](float most) {
+    labels.clear();
+    legend_w = legend_h = 0.0f;
+    for (const Series& s : chart.series) {
+      labels.push_back(ui::wrap_text(s.label, ImGui::GetFont(), ImGui::GetFontSize(), most));
+      if (s.label.empty()) continue;
+      const ImVec2 size = ImGui::CalcTextSize(labels.back().c_str());
+      legend_w = std::max(legend_w, size.x);
+      legend_h += size.y;
+    }
+  };
+  if (chart.legend) {
+    stack(std::max(60.0f, right - left - 40.0f));
+    if (legend_h + 8.0f > bottom - top) {
+      const std::vector<std::string> boxed = labels;
+      const float box_w = legend_w, box_h = legend_h;
+      stack(std::max(60.0f, 0.45f * size.x - 34.0f));
+      const float column = legend_w + 34.0f + 8.0f;  // swatch, margins, the gap to the plot
+      if (heading + legend_h <= origin.y + size.y && right - column - left >= 0.5f * (right - left)) {
+        place = Legend::Column;
+        right -= column;
+      } else {
+        labels = boxed;
+        legend_w = box_w;
+        legend_h = box_h;
+        // Entries side by side (a swatch, the label on one line, a gap), a new row where the
+        // next would pass the chart's right edge.
+        float x = 0.0f;
+        int rows = 1;
+        for (const Series& s : chart.series) {
+          const float w = 26.0f + ImGui::CalcTextSize(s.label.c_str()).x + 14.0f;
+          if (x > 0.0f && x + w > size.x) {
+            ++rows;
+            x = 0.0f;
+          }
+          row_of.push_back(rows - 1);
+          if (!s.label.empty()) x += w;
+        }
+        if (bottom - (top + rows * line_h) >= std::max(20.0f, 2.0f * line_h)) {
+          place = Legend::Rows;
+          top += rows * line_h;
+        }
+      }
+    }
+  }
   const Mapping mx{xlo, xhi, chart.x.log, left, right}, my{ylo, yhi, chart.y.log, bottom, top};
   // The x ticks: as many as the labels leave room for, never two labels running together (a
   // narrow chart takes 5 ticks' "0 0.25 0.5 0.75 1" as "00.250.50.751").
@@ -72,10 +132,12 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
       xlo, xhi, chart.x.log, [&](double v) { return mx(v); },
       [](const std::string& label) { return ImGui::CalcTextSize(label.c_str()).x; }, 0.25f * line_h);
 
-  if (!chart.title.empty()) list->AddText(ImVec2(origin.x, origin.y), text, fitted_title(chart, size.x).c_str());
+  if (!chart.title.empty()) list->AddText(ImVec2(origin.x, origin.y), text, fitted(chart.title, size.x).c_str());
   list->AddText(ImVec2(origin.x, top - line_h * 1.1f), text, chart.y.label.c_str());
-  const ImVec2 xl = ImGui::CalcTextSize(chart.x.label.c_str());
-  list->AddText(ImVec2(0.5f * (left + right) - 0.5f * xl.x, bottom + line_h * 1.15f), text, chart.x.label.c_str());
+  const std::string x_label = fitted(chart.x.label, size.x);
+  const ImVec2 xl = ImGui::CalcTextSize(x_label.c_str());
+  list->AddText(ImVec2(std::max(origin.x, 0.5f * (left + right) - 0.5f * xl.x), bottom + line_h * 1.15f), text,
+                x_label.c_str());
 
   list->PushClipRect(ImVec2(origin.x, origin.y), ImVec2(origin.x + size.x, origin.y + size.y), true);
   for (const Tick& t : xt) {
@@ -151,35 +213,42 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
   list->PopClipRect();
 
   std::optional<Corner> legend_at;
-  if (chart.legend) {
-    // At most the plot's width: a longer label wraps onto a second line.
-    const float most = std::max(60.0f, right - left - 40.0f);
-    float width = 0.0f, height = 0.0f;
-    std::vector<std::string> labels;  // wrapped at spaces, never inside a number ("x1.33")
-    for (const Series& s : chart.series) {
-      labels.push_back(ui::wrap_text(s.label, ImGui::GetFont(), ImGui::GetFontSize(), most));
-      if (s.label.empty()) continue;
-      const ImVec2 size = ImGui::CalcTextSize(labels.back().c_str());
-      width = std::max(width, size.x);
-      height += size.y;
-    }
-    // The box is the labels and their swatches (26 px) with 6 px round them, 4 px in from the
-    // plot's edge, in the corner where it hides the least.
-    const Corner corner = legend_corner(chart, (width + 40.0f) / (right - left), (height + 8.0f) / (bottom - top));
-    if (height > 0.0f) legend_at = corner;
-    const bool on_left = corner == Corner::TopLeft || corner == Corner::BottomLeft;
-    const bool below = corner == Corner::BottomRight || corner == Corner::BottomLeft;
-    const float x = on_left ? left + 10.0f : right - width - 34.0f;
-    float y = below ? bottom - height - 4.0f : top + 4.0f;
-    if (height > 0.0f)
-      list->AddRectFilled(ImVec2(x - 6, y - 2), ImVec2(x + width + 30, y + height + 2),
-                          ImGui::GetColorU32(ImGuiCol_WindowBg, 0.85f), 3.0f);
+  const auto entry = [&](std::size_t k, float x, float y, const std::string& label) {  // a swatch, its label
+    const Series& s = chart.series[k];
+    const float mid = y + 0.5f * line_h;
+    list->AddLine(ImVec2(x, mid), ImVec2(x + 20, mid), color(s.color), 3.0f);
+    list->AddText(ImVec2(x + 26, y), s.escapes ? color(draw::kDiverged) : text, label.c_str());
+  };
+  if (place == Legend::Rows) {
+    float x = origin.x;
+    int row = 0;
     for (std::size_t k = 0; k < chart.series.size(); ++k) {
-      const Series& s = chart.series[k];
-      if (s.label.empty()) continue;
-      const float mid = y + 0.5f * line_h;
-      list->AddLine(ImVec2(x, mid), ImVec2(x + 20, mid), color(s.color), 3.0f);
-      list->AddText(ImVec2(x + 26, y), s.escapes ? color(draw::kDiverged) : text, labels[k].c_str());
+      if (chart.series[k].label.empty()) continue;
+      if (row_of[k] != row) {
+        row = row_of[k];
+        x = origin.x;
+      }
+      entry(k, x, heading + static_cast<float>(row) * line_h, chart.series[k].label);
+      x += 26.0f + ImGui::CalcTextSize(chart.series[k].label.c_str()).x + 14.0f;
+    }
+  } else if (legend_h > 0.0f) {
+    // Beside the plot, from the y label's line down; or the box: the labels and their swatches
+    // (26 px) with 6 px round them, 4 px in from the plot's edge, in the corner where it hides
+    // the least.
+    float x = right + 8.0f + 6.0f, y = heading;
+    if (place == Legend::Box) {
+      const Corner corner = legend_corner(chart, (legend_w + 40.0f) / (right - left), (legend_h + 8.0f) / (bottom - top));
+      legend_at = corner;
+      const bool on_left = corner == Corner::TopLeft || corner == Corner::BottomLeft;
+      const bool below = corner == Corner::BottomRight || corner == Corner::BottomLeft;
+      x = on_left ? left + 10.0f : right - legend_w - 34.0f;
+      y = below ? bottom - legend_h - 4.0f : top + 4.0f;
+      list->AddRectFilled(ImVec2(x - 6, y - 2), ImVec2(x + legend_w + 30, y + legend_h + 2),
+                          ImGui::GetColorU32(ImGuiCol_WindowBg, 0.85f), 3.0f);
+    }
+    for (std::size_t k = 0; k < chart.series.size(); ++k) {
+      if (chart.series[k].label.empty()) continue;
+      entry(k, x, y, labels[k]);
       y += ImGui::CalcTextSize(labels[k].c_str()).y;
     }
   }
@@ -204,7 +273,7 @@ void chart_widget(const char* id, const Chart& chart, ImVec2 size) {
   ImGui::InvisibleButton(id, size);
   draw_imgui(ImGui::GetWindowDrawList(), origin, size, chart);
   // A title cut to the chart's width is read whole by pointing at the chart.
-  if (ImGui::IsItemHovered() && fitted_title(chart, size.x) != chart.title) {
+  if (ImGui::IsItemHovered() && fitted(chart.title, size.x) != chart.title) {
     ImGui::BeginTooltip();
     ui::text_wrapped(chart.title, {}, 30.0f * ImGui::GetFontSize());  // about 30 em
     ImGui::EndTooltip();
