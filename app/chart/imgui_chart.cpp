@@ -73,7 +73,7 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
   // hides the least. Where that box would be taller than the plot (a phone's short chart, with
   // five series: it covered the plot's right half and ran off its foot) it goes outside the
   // plot: stacked beside it on the right, the plot made narrower, where the column fits the
-  // chart's height and leaves the plot half its width; else in rows over the plot, the plot made
+  // chart's height and leaves the plot 40 % of its width; else in rows over the plot, the plot made
   // shorter, where it keeps two lines' height; else the box after all.
   enum class Legend { Box, Column, Rows };
   Legend place = Legend::Box;
@@ -98,7 +98,7 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
       const float box_w = legend_w, box_h = legend_h;
       stack(std::max(60.0f, 0.45f * size.x - 34.0f));
       const float column = legend_w + 34.0f + 8.0f;  // swatch, margins, the gap to the plot
-      if (heading + legend_h <= origin.y + size.y && right - column - left >= 0.5f * (right - left)) {
+      if (heading + legend_h <= origin.y + size.y && right - column - left >= 0.4f * (right - left)) {
         place = Legend::Column;
         right -= column;
       } else {
@@ -133,11 +133,15 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
       [](const std::string& label) { return ImGui::CalcTextSize(label.c_str()).x; }, 0.25f * line_h);
 
   if (!chart.title.empty()) list->AddText(ImVec2(origin.x, origin.y), text, fitted(chart.title, size.x).c_str());
-  list->AddText(ImVec2(origin.x, top - line_h * 1.1f), text, chart.y.label.c_str());
+  // (Beside a legend column, only as far as the plot's right edge.)
+  list->AddText(ImVec2(origin.x, top - line_h * 1.1f), text,
+                place == Legend::Column ? fitted(chart.y.label, right - origin.x).c_str() : chart.y.label.c_str());
   const std::string x_label = fitted(chart.x.label, size.x);
   const ImVec2 xl = ImGui::CalcTextSize(x_label.c_str());
-  list->AddText(ImVec2(std::max(origin.x, 0.5f * (left + right) - 0.5f * xl.x), bottom + line_h * 1.15f), text,
-                x_label.c_str());
+  // Centred under the plot, but kept inside the chart (the plot is off centre by the y ticks).
+  list->AddText(ImVec2(std::max(origin.x, std::min(0.5f * (left + right) - 0.5f * xl.x, origin.x + size.x - xl.x)),
+                       bottom + line_h * 1.15f),
+                text, x_label.c_str());
 
   list->PushClipRect(ImVec2(origin.x, origin.y), ImVec2(origin.x + size.x, origin.y + size.y), true);
   for (const Tick& t : xt) {

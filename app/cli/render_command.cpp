@@ -268,9 +268,9 @@ int render(const RenderOptions& o) {
     offscreen.draw(frame, [&] {
       if (panels) ui::draw_panels(session, shot.ui, stats, width, height);
       if (shot.accuracy) {  // in the scene's and the charts' place, as in the app's lesson
+        const ui::Rect r = ui::lesson_chart_rect(shot.ui, viewport, width, height, scale);
         ImGui::SetNextWindowBgAlpha(1.0f);
-        ui::draw_compare_panel(*shot.accuracy, session, scale, viewport.x + 8.0f * scale, viewport.y + 8.0f * scale,
-                               width - viewport.x - 16.0f * scale, height - viewport.y - 16.0f * scale);
+        ui::draw_compare_panel(*shot.accuracy, session, scale, r.x, r.y, r.w, r.h);
       }
       if (shot.band) {
         shot.band->elapsed = session.simulated_target() / session.speed();  // (as the app's)

@@ -323,10 +323,9 @@ void InteractiveApp::frame(const FrameSize& size) {
   accuracy_.open = ui_.accuracy;
   accuracy_.sweep.advance();  // (without threads: the sweep's next pieces; else nothing)
   if (lesson_) {  // the step is about this chart: it takes the scene's and the charts' place
-    const draw::Viewport area = ui::scene_viewport(ui_, win_w, win_h);
+    const ui::Rect r = ui::lesson_chart_rect(ui_, ui::scene_viewport(ui_, win_w, win_h), win_w, win_h, scale);
     ImGui::SetNextWindowBgAlpha(1.0f);  // (the charts under it do not show through)
-    ui::draw_compare_panel(accuracy_, session, scale, area.x + 8.0f * scale, area.y + 8.0f * scale,
-                           win_w - area.x - 16.0f * scale, win_h - area.y - 16.0f * scale);
+    ui::draw_compare_panel(accuracy_, session, scale, r.x, r.y, r.w, r.h);
   } else {
     ui::draw_compare_panel(accuracy_, session, scale, 380.0f * scale, 20.0f * scale, win_w - 400.0f * scale,
                            win_h * 0.62f);

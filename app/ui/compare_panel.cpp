@@ -2,7 +2,9 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "chart/compare_charts.hpp"
 #include "chart/imgui_chart.hpp"
@@ -34,6 +36,21 @@ void ComparePanel::start(const app::Session& session) {
   sweep.start(sim.model(), sim.state(), settings(session));
 }
 
+namespace {
+
+// SameLine where an item `width` wide still fits the window's row, else a new row: a phone's
+// panel is narrower than the row of sliders, buttons and tabs a laptop's holds.
+void next_in_row(float width) {
+  const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+  if (ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + width <= right) ImGui::SameLine();
+}
+float labelled_width(float frame, const char* label) {  // a slider's or a radio button's, with its label
+  return frame + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(label).x;
+}
+float button_width(const char* label) { return ImGui::CalcTextSize(label).x + 2.0f * ImGui::GetStyle().FramePadding.x; }
+
+}  // namespace
+
 void draw_compare_panel(ComparePanel& panel, const app::Session& session, float scale, float x, float y,
                         float width, float height) {
   if (!panel.open) return;
@@ -45,23 +62,35 @@ void draw_compare_panel(ComparePanel& panel, const app::Session& session, float 
   }
   const bool running = panel.sweep.running();
   const auto [done, total] = panel.sweep.progress();
-  ImGui::PushItemWidth(110.0f * scale);
+  const float slider = 110.0f * scale;
+  ImGui::PushItemWidth(slider);
   ImGui::SliderInt(tr("steps"), &panel.points, 3, 10);
-  ImGui::SameLine();
+  next_in_row(labelled_width(slider, tr("seconds")));
   ImGui::SliderFloat(tr("seconds"), &panel.duration, 0.2f, 5.0f, "%.1f");
-  ImGui::SameLine();
+  next_in_row(labelled_width(slider, tr("range")));
   ImGui::SliderFloat(tr("range"), &panel.step_range, 4.0f, 64.0f, tr("dt/%.0f..2dt"), ImGuiSliderFlags_Logarithmic);
   ImGui::PopItemWidth();
-  ImGui::SameLine();
+  next_in_row(button_width(running ? tr("Cancel") : tr("Run")));
   if (!running && ImGui::Button(tr("Run"))) panel.start(session);
   if (running && ImGui::Button(tr("Cancel"))) panel.sweep.cancel();
   if (running || done > 0) {
-    ImGui::SameLine();
+    next_in_row(160.0f * scale);
     ImGui::ProgressBar(total > 0 ? static_cast<float>(done) / total : 0.0f, ImVec2(160.0f * scale, 0),
                        (std::to_string(done) + " / " + std::to_string(total)).c_str());
   }
-  // Methods: none ticked means all.
-  if (ImGui::BeginTable("methods", 5)) {
+  // Methods: none ticked means all. Five columns; where the longest name does not fit five (a
+  // phone), as many as it fits, folded under a header until opened: unfolded they would take the
+  // chart's room, and the chart is what the step is about.
+  float name = 0.0f;
+  int ticked = 0;
+  for (const MethodInfo& m : methods()) {
+    name = std::max(name, ImGui::CalcTextSize(m.name).x);
+    ticked += panel.methods.has(m.id) ? 1 : 0;
+  }
+  const float column = ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + name + ImGui::GetStyle().CellPadding.x * 2;
+  const int columns = std::clamp(static_cast<int>(ImGui::GetContentRegionAvail().x / column), 2, 5);
+  const bool shown = columns == 5 || ImGui::CollapsingHeader((format_text(tr("Methods (%d)"), ticked) + std::string("###methods")).c_str());
+  if (shown && ImGui::BeginTable("methods", columns)) {
     for (const MethodInfo& m : methods()) {
       ImGui::TableNextColumn();
       const draw::Rgba c = draw::method_color(m.id);
@@ -86,6 +115,8 @@ void draw_compare_panel(ComparePanel& panel, const app::Session& session, float 
       static const std::pair<const char*, const char*> kTabs[] = {
           {"work-precision", N_("error vs time")},             // not shown: the key
           {"work-precision-work", N_("error vs work")},        // not shown: the key
+          {"convergence", N_("convergence")},                  // not shown: the key
+          {"stability", N_("stability")},                      // not shown: the key
           {"energy-drift", N_("energy drift")},                // not shown: the key
           {"solver-convergence", N_("solver error")}};         // not shown: the key
       for (const auto& [key, text] : kTabs)
@@ -93,7 +124,7 @@ void draw_compare_panel(ComparePanel& panel, const app::Session& session, float 
       return tr(name.c_str());
     };
     for (int k = 0; k < static_cast<int>(charts.size()); ++k) {
-      if (k > 0) ImGui::SameLine();
+      if (k > 0) next_in_row(labelled_width(ImGui::GetFrameHeight(), tab(charts[k].name)));
       if (ImGui::RadioButton(tab(charts[k].name), panel.chart == k)) panel.chart = k;
     }
     if (running && panel.chart >= 3) ImGui::TextDisabled(tr("(measured at the end of the sweep)"));

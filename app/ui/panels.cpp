@@ -422,6 +422,13 @@ draw::Viewport scene_viewport(const UiState& ui, int width, int height) {
   return panel_layout(ui, width, height).scene;
 }
 
+Rect lesson_chart_rect(const UiState& ui, const draw::Viewport& scene, int width, int height, float scale) {
+  const Rect strip = panel_layout(ui, width, height).strip;
+  const float foot = !strip.empty() && strip.y > static_cast<float>(scene.y) ? strip.y : static_cast<float>(height);
+  const float pad = 8.0f * scale, x = static_cast<float>(scene.x), y = static_cast<float>(scene.y);
+  return {x + pad, y + pad, static_cast<float>(width) - x - 2.0f * pad, foot - y - 2.0f * pad};
+}
+
 // An IK scene's controls: the solver, side by side or not, iterations a frame, and each lane's
 // progress, with the two difficulties spelt out: no solution, or many.
 void ik_controls(app::Session& session) {

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "draw/scene_frame.hpp"
+#include "ui/layout.hpp"
 #include "ui/method_choice.hpp"
 #include "session/session.hpp"
 #include "springlab/lesson.hpp"
@@ -85,6 +86,11 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
 
 // The part of a width x height framebuffer the panels leave to the scene.
 draw::Viewport scene_viewport(const UiState& ui, int width, int height);
+
+// Where a lesson step's accuracy chart goes, in the scene's and the charts' place: from the
+// scene's top left, 8 units in, to the window's foot, or to the strip of buttons along it (a
+// phone held upright).
+Rect lesson_chart_rect(const UiState& ui, const draw::Viewport& scene, int width, int height, float scale);
 
 // The methods ticked for compare mode, in table order (at most four).
 std::vector<Method> compare_methods(const UiState& ui);
