@@ -616,8 +616,11 @@ void strip(app::Session& session, UiState& ui, const PanelLayout& layout, float 
   }
   if (row && !session.scene().ik) {
     next();
+    // The method's combo takes what the dt slider leaves: at least its two buttons and a
+    // button's width of slider (a phone's row: they ran off its right edge).
     const float left = ImGui::GetContentRegionAvail().x;
-    ImGui::SetNextItemWidth(0.45f * left);
+    const float dt_least = 3.0f * button + 2.0f * ImGui::GetStyle().ItemInnerSpacing.x + ImGui::GetStyle().ItemSpacing.x;
+    ImGui::SetNextItemWidth(std::max(button, std::min(0.45f * left, left - dt_least)));
     if (!session.comparing() && ImGui::BeginCombo("##method", tr(method_info(session.method()).label))) {
       int key = 1;
       for (const MethodInfo& m : methods()) {
