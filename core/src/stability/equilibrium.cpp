@@ -207,12 +207,11 @@ RelaxStep relax_step(const Model& model, const State& at) {
 // Dynamic relaxation with kinetic damping (above), until the largest force is below `tolerance`
 // or after `budget` force passes. Returns the largest force at its last look (every 50 passes):
 // at most `tolerance` where it stopped on reaching it, above it (or NaN, where the positions are
-// no longer finite) otherwise. Each pass is one force
-// pass whose threads turn their
-// particles' forces into the new velocities and positions as soon as a chunk's forces are
-// complete (force_pass.hpp's finish), and sum the chunk's kinetic energy and largest force: no
-// further pass over memory, and the same bits on any number of threads (per-block sums, added in
-// block order).
+// no longer finite) otherwise. Each pass is one force pass whose threads turn their particles'
+// forces into the new velocities and positions as soon as a chunk's forces are complete
+// (force_pass.hpp's finish), and sum the chunk's kinetic energy and largest force: no further
+// pass over memory, and the same bits on any number of threads (per-block sums, added in block
+// order).
 double relax(const Model& model, const Balance& balance, State& rest, RelaxStep& step, double tolerance, int budget) {
   Model springs = model;  // the springs alone: gravity is added where it has a balance
   springs.gravity.setZero();
@@ -413,8 +412,8 @@ State equilibrium(const Model& model, const State& state) {
   constexpr int kRelaxation = 20000, kRelaxedBudget = 60000;
   if (predicted_factorisation_work(model, balance) > kNewtonWork) {
     // With no weight to hold (nothing pinned, or no gravity) the tensions are whatever pins
-    // stretch the springs to, perhaps none: to 1e-7 strain, as tight as the first stage's
-    // relaxation before Newton is loose (1e-5 strain).
+    // stretch the springs to, perhaps none: to a spring's force at 1e-7 strain, a hundred times
+    // tighter than the relaxation before Newton (1e-5).
     const double load = weight > 0.0 ? kLoadTolerance * std::min(weight, strain_force) : 1e-5 * strain_force;
     relax(model, balance, rest, step, load, kRelaxedBudget);
     return rest.x.allFinite() ? rest : unbalanced;
