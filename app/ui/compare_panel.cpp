@@ -10,6 +10,7 @@
 #include "chart/imgui_chart.hpp"
 #include "draw/palette.hpp"
 #include "springlab/text.hpp"
+#include "ui/text_wrap.hpp"
 
 namespace springlab::ui {
 
@@ -38,12 +39,8 @@ void ComparePanel::start(const app::Session& session) {
 
 namespace {
 
-// SameLine where an item `width` wide still fits the window's row, else a new row: a phone's
-// panel is narrower than the row of sliders, buttons and tabs a laptop's holds.
-void next_in_row(float width) {
-  const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
-  if (ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + width <= right) ImGui::SameLine();
-}
+// (A phone's panel is narrower than the row of sliders, buttons and tabs a laptop's holds: they
+// wrap, same_line_if_fits.)
 float labelled_width(float frame, const char* label) {  // a slider's or a radio button's, with its label
   return frame + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(label).x;
 }
@@ -65,16 +62,16 @@ void draw_compare_panel(ComparePanel& panel, const app::Session& session, float 
   const float slider = 110.0f * scale;
   ImGui::PushItemWidth(slider);
   ImGui::SliderInt(tr("steps"), &panel.points, 3, 10);
-  next_in_row(labelled_width(slider, tr("seconds")));
+  same_line_if_fits(labelled_width(slider, tr("seconds")));
   ImGui::SliderFloat(tr("seconds"), &panel.duration, 0.2f, 5.0f, "%.1f");
-  next_in_row(labelled_width(slider, tr("range")));
+  same_line_if_fits(labelled_width(slider, tr("range")));
   ImGui::SliderFloat(tr("range"), &panel.step_range, 4.0f, 64.0f, tr("dt/%.0f..2dt"), ImGuiSliderFlags_Logarithmic);
   ImGui::PopItemWidth();
-  next_in_row(button_width(running ? tr("Cancel") : tr("Run")));
+  same_line_if_fits(button_width(running ? tr("Cancel") : tr("Run")));
   if (!running && ImGui::Button(tr("Run"))) panel.start(session);
   if (running && ImGui::Button(tr("Cancel"))) panel.sweep.cancel();
   if (running || done > 0) {
-    next_in_row(160.0f * scale);
+    same_line_if_fits(160.0f * scale);
     ImGui::ProgressBar(total > 0 ? static_cast<float>(done) / total : 0.0f, ImVec2(160.0f * scale, 0),
                        (std::to_string(done) + " / " + std::to_string(total)).c_str());
   }
@@ -124,7 +121,7 @@ void draw_compare_panel(ComparePanel& panel, const app::Session& session, float 
       return tr(name.c_str());
     };
     for (int k = 0; k < static_cast<int>(charts.size()); ++k) {
-      if (k > 0) next_in_row(labelled_width(ImGui::GetFrameHeight(), tab(charts[k].name)));
+      if (k > 0) same_line_if_fits(labelled_width(ImGui::GetFrameHeight(), tab(charts[k].name)));
       if (ImGui::RadioButton(tab(charts[k].name), panel.chart == k)) panel.chart = k;
     }
     if (running && panel.chart >= 3) ImGui::TextDisabled(tr("(measured at the end of the sweep)"));

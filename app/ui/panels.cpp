@@ -160,9 +160,7 @@ void gauge(app::Session& session, app::Lane& lane, float width, bool explain) {
     dl->AddLine(ImVec2(x, q.y - 3), ImVec2(x, q.y + bar_h + 3), IM_COL32_WHITE, 2.0f);
   }
   ImGui::Dummy(ImVec2(bar_w, line_h));
-  const float room = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x -
-                     (p.x + bar_w + style.ItemSpacing.x);
-  if (ImGui::CalcTextSize(verdict.c_str()).x <= room) ImGui::SameLine();
+  same_line_if_fits(ImGui::CalcTextSize(verdict.c_str()).x);
   ImGui::TextColored(color, "%s", verdict.c_str());
   if (ImGui::IsItemHovered() && limit) ImGui::SetTooltip("%s", tr(m.stability));
   if (!explain || !limit) return;

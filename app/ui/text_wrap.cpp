@@ -90,4 +90,9 @@ void text_wrapped_disabled(const std::string& text, float width) {
   text_wrapped(text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled), width);
 }
 
+void same_line_if_fits(float width) {
+  const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+  if (ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + width <= right) ImGui::SameLine();
+}
+
 }  // namespace springlab::ui

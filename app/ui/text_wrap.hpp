@@ -26,4 +26,8 @@ void text_wrapped(const std::string& text, ImVec4 color = ImVec4(0, 0, 0, 0), fl
 // The same in the style's disabled colour: a note, an explanation.
 void text_wrapped_disabled(const std::string& text, float width = 0.0f);
 
+// Widgets wrapped as words are: ImGui::SameLine() where the next item, `width` pixels wide, still
+// fits the window's row after the last one, else nothing (it starts a new row).
+void same_line_if_fits(float width);
+
 }  // namespace springlab::ui
