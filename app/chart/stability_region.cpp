@@ -113,8 +113,10 @@ std::vector<Complex> spectrum(const StabilityAnalysis& analysis) {
 // How far a method's region reaches, in the view's terms: a bounded region (an explicit
 // tableau's) by the box of its stable points; an unbounded one (implicit) by the box of its
 // unstable points (implicit Euler's disc |z - 1| < 1), to the left at least to -3. Sampled once
-// for each method on a coarse grid over |Re|, |Im| <= 8 (the shipped explicit tableaux reach 3.7;
-// 16 for an unbounded one), then kept: a region depends on its method alone.
+// for each method on a coarse grid, then kept: a region depends on its method alone. The grid
+// starts at |Re|, |Im| <= 8 (16 for an unbounded one) and doubles while the set it bounds reaches
+// its edge: a long-interval explicit method (Ketcheson's ten-stage SSPRK(10,4) to -13.9, a
+// Chebyshev method to -2 s^2) is held whole, as the view promises.
 struct Extent {
   double left = 1.0, right = 0.25, up = 1.0;
 };
@@ -128,17 +130,23 @@ Extent region_extent(Method method) {
   if (tableau) {
     const bool bounded = tableau->is_explicit();
     constexpr int kN = 96;
-    const double kL = bounded ? 8.0 : 16.0;  // (an SDIRK's unstable disc reaches past 10)
-    double left = 0.0, right = 0.0, up = 0.0;
-    for (int j = 0; j <= kN; ++j)
-      for (int i = 0; i <= 2 * kN; ++i) {
-        const Complex z(-kL + kL * i / kN, kL * j / kN);
-        if (stable_at(method, z) != bounded) continue;
-        left = std::max(left, -z.real());
-        right = std::max(right, z.real());
-        up = std::max(up, z.imag());
-      }
-    const double step = kL / kN;  // (a sample's width, for the edge between samples)
+    constexpr double kLargest = 4096.0;  // (a 45-stage Chebyshev method's interval)
+    double kL = bounded ? 8.0 : 16.0;  // (an SDIRK's unstable disc reaches past 10)
+    double left = 0.0, right = 0.0, up = 0.0, step = kL / kN;
+    for (;; kL *= 2.0) {
+      left = right = up = 0.0;
+      step = kL / kN;  // (a sample's width, for the edge between samples)
+      for (int j = 0; j <= kN; ++j)
+        for (int i = 0; i <= 2 * kN; ++i) {
+          const Complex z(-kL + kL * i / kN, kL * j / kN);
+          if (stable_at(method, z) != bounded) continue;
+          left = std::max(left, -z.real());
+          right = std::max(right, z.real());
+          up = std::max(up, z.imag());
+        }
+      const bool at_edge = left >= kL - 2.0 * step || up >= kL - 2.0 * step;
+      if (!bounded || !at_edge || 2.0 * kL > kLargest) break;
+    }
     e.left = std::max(bounded ? left + step : 3.0, 1.0);
     e.right = std::max(right + step, 0.25);
     e.up = std::max(up + step, 1.0);
@@ -195,25 +203,28 @@ Chart stability_region(const StabilityAnalysis& analysis, const std::vector<Regi
     c.y.label = tr("Im(h lambda)");
     const std::vector<Complex> lambdas = spectrum(analysis);
     // The view, as Hairer and Wanner draw regions: every charted region whole (a bounded one's
-    // stable set, an unbounded one's unstable set), and the dots, each with some room, at most 40
-    // across (a stiff scene's dots far out at a large step are drawn at the view's edge).
-    Extent view;
+    // stable set, an unbounded one's unstable set), whatever its size, and the dots, each with some
+    // room, at most 40 across or the regions' size (a stiff scene's dots far out at a large step
+    // are drawn at the view's edge).
+    Extent regions;
     for (const RegionLane& l : shown) {
       const Extent e = region_extent(l.method);
-      view.left = std::max(view.left, e.left);
-      view.right = std::max(view.right, e.right);
-      view.up = std::max(view.up, e.up);
+      regions.left = std::max(regions.left, e.left);
+      regions.right = std::max(regions.right, e.right);
+      regions.up = std::max(regions.up, e.up);
     }
+    Extent dots = regions;
     for (const RegionLane& l : shown)
       for (Complex lambda : lambdas) {
         const Complex z = l.h * lambda;
         if (!std::isfinite(z.real()) || !std::isfinite(z.imag())) continue;
-        view.left = std::max(view.left, -1.1 * z.real());
-        view.right = std::max(view.right, 1.1 * z.real());
-        view.up = std::max(view.up, 1.1 * std::abs(z.imag()));
+        dots.left = std::max(dots.left, -1.1 * z.real());
+        dots.right = std::max(dots.right, 1.1 * z.real());
+        dots.up = std::max(dots.up, 1.1 * std::abs(z.imag()));
       }
-    const double x0 = -std::min(view.left, 40.0), x1 = std::min(view.right, 40.0);
-    const double y0 = -std::min(view.up, 40.0), y1 = -y0;
+    const auto shown_to = [](double region, double dot) { return std::max(region, std::min(dot, std::max(region, 40.0))); };
+    const double x0 = -shown_to(regions.left, dots.left), x1 = shown_to(regions.right, dots.right);
+    const double y0 = -shown_to(regions.up, dots.up), y1 = -y0;
     c.x.min = x0;
     c.x.max = x1;
     c.y.min = y0;
@@ -260,7 +271,7 @@ Chart stability_region(const StabilityAnalysis& analysis, const std::vector<Regi
     for (const RegionLane& l : shown)
       for (Complex lambda : lambdas)
         if (std::isfinite(std::abs(l.h * lambda))) reach = std::max(reach, std::abs(l.h * lambda));
-    if (reach > 0.0 && reach < 0.08 * std::max(view.left, view.up)) {
+    if (reach > 0.0 && reach < 0.08 * std::max(dots.left, dots.up)) {
       auto zoom = std::make_shared<Chart>();
       zoom->title = tr("near 0");
       zoom->legend = false;

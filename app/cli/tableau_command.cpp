@@ -46,6 +46,10 @@ void report(const std::string& name, const ButcherTableau& t, const TableauAnaly
   if (std::isinf(a.imaginary_limit)) std::printf("imag axis   |R| <= 1 on the whole imaginary axis\n");
   else if (a.imaginary_limit == 0.0) std::printf("imag axis   |R| > 1 everywhere on it but 0: an undamped oscillation grows at any step\n");
   else std::printf("imag axis   |R| <= 1 on [-%s i, %s i]\n", axis_limit_text(a.imaginary_limit).c_str(), axis_limit_text(a.imaginary_limit).c_str());
+  if (a.rounded_limits)
+    std::printf("limits      exact roots of |R|^2 - 1 for the tableau the entries round (coefficients that cancel to\n"
+                "            1e-12 of their terms, and on the imaginary axis those up to y^%d, which order %d makes 0, taken as 0)\n",
+                a.order_to_rounding, a.order_to_rounding);
   if (std::isinf(a.r_at_infinity)) std::printf("infinity    |R| grows without bound (explicit: a stiff mode needs a small step)\n");
   else std::printf("infinity    |R| -> %.6g%s\n", a.r_at_infinity, a.r_at_infinity == 0.0 ? " (L-stable if A-stable: stiff modes are damped out)" : "");
   for (const std::string& w : a.warnings) std::printf("warning     %s\n", w.c_str());

@@ -4,7 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <vector>
 
+#include "chart/stability_region.hpp"
 #include "support.hpp"
 #include "ui/tableau_panel.hpp"
 #include "util/data_dir.hpp"
@@ -87,6 +90,50 @@ TEST(TableauPanel, RunBesideAddsALaneTheGaugeCanShow) {
   panel.check();
   EXPECT_NE(run_beside(*panel.tableau, session).find("'mine-2'"), std::string::npos);
   EXPECT_EQ(session.lanes().size(), 3u);
+}
+
+// What the panel shows (the exact axis limits), `springlab tableau` prints (the same analysis),
+// the run-time analysis finds on a scene and the region chart draws agree, on every shipped
+// tableau and a published ten-stage one: on the undamped spring (lambda = +-10 i) the
+// limit is the imaginary one over 10; on an overdamped one (lambda = -15 +- sqrt(125)) the real
+// one over 15 + sqrt(125); the region chart holds the region's real interval whole.
+TEST(TableauPanel, ThePanelTheRunTimeAnalysisAndTheRegionChartAgree) {
+  // The reference spring balanced at its rest length (the analysis linearises at the balance):
+  // one mode along it, none across.
+  Scene undamped = test::shipped("damped-spring"), overdamped = test::shipped("damped-spring");
+  set_damping(undamped.model, 0.0);
+  set_damping(overdamped.model, 30.0);
+  const StabilityAnalysis oscillating(undamped.model, undamped.state), decaying(overdamped.model, overdamped.state);
+  const double fastest = 15.0 + std::sqrt(125.0);
+  std::vector<std::string> files;
+  for (const std::string& name : app::shipped_tableaux()) files.push_back(app::resolve_tableau(name));
+  files.push_back(std::string(SPRINGLAB_SOURCE_DIR) + "/tests/data/ssprk10-4.json");
+  for (const std::string& file : files) {
+    SCOPED_TRACE(file);
+    const ButcherTableau t = load_tableau_file(file);
+    TableauPanel panel;
+    if (t.stages <= TableauPanel::kMaxStages) {
+      panel.load(t);
+      panel.check();
+      ASSERT_TRUE(panel.analysis) << panel.error;
+    } else {
+      panel.analysis = analyse_tableau(t);  // (more stages than the panel's cells: the report's)
+    }
+    const TableauAnalysis& a = *panel.analysis;
+    const Method row = add_tableau_method(t, "agree-" + std::to_string(&file - files.data()));
+    if (method_info(row).adaptive()) continue;  // an embedded pair chooses its own steps
+    const auto same = [](double run_time, double exact) {
+      if (std::isinf(exact)) EXPECT_TRUE(std::isinf(run_time)) << run_time;
+      else EXPECT_NEAR(run_time, exact, 1e-9 * exact);
+    };
+    same(oscillating.limit(row).h, a.imaginary_limit / 10.0);
+    same(decaying.limit(row).h, a.real_limit / fastest);
+    if (!t.is_explicit()) continue;
+    const chart::Chart region = chart::stability_region(decaying, {chart::RegionLane{row, 0.01}});
+    ASSERT_TRUE(region.x.min);
+    EXPECT_LE(*region.x.min, -a.real_limit);
+    EXPECT_GE(*region.y.max, a.imaginary_limit);
+  }
 }
 
 }  // namespace

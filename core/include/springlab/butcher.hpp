@@ -14,8 +14,10 @@
 //     its coefficients found by interpolating the two determinants at z = 0 .. s, and common
 //     factors divided out;
 //   - its limits on the negative real axis and on the imaginary axis, from the polynomials
-//     P(x)^2 - Q(x)^2 and |P(iy)|^2 - |Q(iy)|^2, whose first sign change to positive ends the
-//     interval where |R| <= 1 (their roots found in double precision).
+//     P(-t)^2 - Q(-t)^2 and |P(iy)|^2 - |Q(iy)|^2, whose first sign change to positive ends the
+//     interval where |R| <= 1: proven, not scanned. Their roots are isolated exactly by Sturm
+//     sequences in the rationals and narrowed to 2^-64 of their size (methods/polynomial.hpp),
+//     for any number of stages; a root where |R| touches 1 and turns back is passed over.
 // Supported: explicit tableaux (A strictly lower triangular) and diagonally implicit ones (A lower
 // triangular); a fully implicit A is refused.
 #pragma once
@@ -85,6 +87,9 @@ struct TableauAnalysis {
   // Where |R| <= 1 from the origin: [-real_limit, 0] on the real axis, [-imaginary_limit,
   // imaginary_limit] on the imaginary one (+inf: the whole half axis; 0: nowhere past 0).
   double real_limit = 0.0, imaginary_limit = 0.0;
+  // True when the limits are those of the tableau the entries round (entries written as
+  // decimals of irrational values: coefficients that cancel to rounding taken as 0, butcher.cpp).
+  bool rounded_limits = false;
   double r_at_infinity = 0.0;  // |R(z)| as |z| -> infinity (+inf for a polynomial; 0: L-stable's)
 };
 

@@ -35,7 +35,7 @@ struct Tableau {
   double A(int i, int j) const { return a[static_cast<std::size_t>(i * stages + j)]; }
   // Every stage from the ones before it only.
   bool is_explicit() const;
-  // R(z), by solving (I - z A) k = 1.
+  // R(z), by solving (I - z A) k = 1 (an explicit tableau: stage after stage, as a step does).
   std::complex<double> stability_function(std::complex<double> z) const;
   // gamma_0 .. gamma_s (explicit tableaux only).
   std::vector<double> stability_polynomial() const;

@@ -14,7 +14,7 @@ namespace {
 using json_reader::fail_at;
 using json_reader::json;
 
-constexpr int kMaxStages = 16;
+constexpr int kMaxStages = 32;
 
 // The entry's text: a string as written, a number by its shortest decimal (0.1 stays "0.1", 1/10).
 TableauEntry entry(const json& value, const std::string& pointer, const std::string& where, const std::string& place) {
@@ -95,6 +95,16 @@ ButcherTableau parse_tableau(const std::string& json_text, const std::string& wh
                 "only explicit (A strictly lower triangular) and diagonally implicit (A lower triangular) ones are");
       t.a.back().push_back(std::move(e));
     }
+    // Q(z) = det(I - z A) = prod (1 - a_ii z): a negative a_ii is a pole of R at z = 1 / a_ii on
+    // the negative real axis, where the stage's solve (I - h a_ii J) is singular for a decaying mode.
+    const Rational diagonal = *parse_rational(t.a.back()[static_cast<std::size_t>(i)].text);
+    if (diagonal < 0)
+      fail_at(where, pointer + "/" + std::to_string(i),
+              "A row " + std::to_string(i + 1) + ", column " + std::to_string(i + 1) + " is " +
+                  t.a.back()[static_cast<std::size_t>(i)].text + ": a negative diagonal entry puts a pole of R(z) at z = " +
+                  rational_text(Rational(1 / diagonal)) + " on the negative real axis (stage " + std::to_string(i + 1) +
+                  "'s solve is singular where h lambda = " + rational_text(Rational(1 / diagonal)) +
+                  " for a decaying mode lambda); a diagonally implicit stage needs a_ii >= 0");
   }
   const json* b = r.raw("b");
   if (!b) fail_at(where, "/b", "a tableau needs b, its weights: one a stage");

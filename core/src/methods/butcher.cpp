@@ -1,7 +1,6 @@
 // A tableau's order conditions and stability function, exactly (springlab/butcher.hpp).
 #include "springlab/butcher.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -9,6 +8,7 @@
 #include <map>
 #include <cstdio>
 
+#include "methods/polynomial.hpp"
 #include "methods/rational.hpp"
 
 namespace springlab {
@@ -224,60 +224,15 @@ OrderResult check_order(const std::vector<Tree>& trees, const std::vector<Vector
   return out;
 }
 
-// ---- Polynomials with rational coefficients, lowest power first ----------------------------------
+// ---- The stability function ---------------------------------------------------------------------
 
-using Poly = std::vector<Rational>;
-
-void trim(Poly& p) {
-  while (p.size() > 1 && p.back() == 0) p.pop_back();
-  if (p.empty()) p.push_back(Rational(0));
-}
-bool is_zero(const Poly& p) { return p.size() == 1 && p[0] == 0; }
-
-Poly multiply(const Poly& a, const Poly& b) {
-  Poly c(a.size() + b.size() - 1, Rational(0));
-  for (std::size_t i = 0; i < a.size(); ++i)
-    for (std::size_t j = 0; j < b.size(); ++j) c[i + j] += a[i] * b[j];
-  trim(c);
-  return c;
-}
-Poly add(const Poly& a, const Poly& b, int sign = 1) {
-  Poly c(std::max(a.size(), b.size()), Rational(0));
-  for (std::size_t i = 0; i < a.size(); ++i) c[i] += a[i];
-  for (std::size_t i = 0; i < b.size(); ++i) c[i] += sign * b[i];
-  trim(c);
-  return c;
-}
-
-// a = q b + r.
-void divide(Poly a, const Poly& b, Poly& q, Poly& r) {
-  trim(a);
-  q.assign(a.size() >= b.size() ? a.size() - b.size() + 1 : 1, Rational(0));
-  while (!is_zero(a) && a.size() >= b.size()) {
-    const std::size_t shift = a.size() - b.size();
-    const Rational f = a.back() / b.back();
-    q[shift] = f;
-    for (std::size_t i = 0; i < b.size(); ++i) a[i + shift] -= f * b[i];
-    a.pop_back();
-    trim(a);
-  }
-  r = a;
-  trim(q);
-}
-
-Poly gcd(Poly a, Poly b) {
-  trim(a);
-  trim(b);
-  while (!is_zero(b)) {
-    Poly q, r;
-    divide(a, b, q, r);
-    a = std::move(b);
-    b = std::move(r);
-  }
-  const Rational lead = a.back();
-  for (Rational& x : a) x /= lead;
-  return a;
-}
+using poly::add;
+using poly::divide;
+using poly::gcd;
+using poly::multiply;
+using poly::Poly;
+using poly::reflected;
+using poly::trim;
 
 Rational determinant(Matrix m) {
   const std::size_t n = m.size();
@@ -315,69 +270,79 @@ Poly interpolate(const Vector& values) {
   return p;
 }
 
-Rational evaluate(const Poly& p, const Rational& x) {
-  Rational y = 0;
-  for (std::size_t k = p.size(); k-- > 0;) y = y * x + p[k];
-  return y;
+// The sign of |R|^2 - 1 on an axis, as a product of coprime polynomials (the root search takes
+// each alone: their degrees, not their sum), each with `terms`, the sizes of what each of its
+// coefficients sums (the same products of coefficients' moduli): where a coefficient is a
+// cancellation to rounding of its terms, `terms` shows it.
+struct AxisFactor {
+  Poly s, terms;
+};
+using AxisPolynomial = std::vector<AxisFactor>;
+
+Poly absolute(Poly p) {
+  for (Rational& x : p) x = abs(x);
+  return p;
 }
 
-// |p(i y)|^2 as a polynomial in y.
-Poly modulus_squared_on_imaginary_axis(const Poly& p) {
-  Poly re(p.size(), Rational(0)), im(p.size(), Rational(0));
-  for (std::size_t k = 0; k < p.size(); ++k) {
-    const int sign = (k / 2) % 2 ? -1 : 1;  // i^k = (+-1) or (+-i)
-    (k % 2 ? im : re)[k] = sign * p[k];
-  }
-  trim(re);
-  trim(im);
-  return add(multiply(re, re), multiply(im, im));
+// On the negative real axis, z = -t: P(-t)^2 - Q(-t)^2 = (P - Q)(P + Q), coprime since P and Q
+// are (a common root would be one of P and of Q). Q has no root there: parse_tableau refuses a
+// negative diagonal entry, the only way a lower triangular A puts one there.
+AxisPolynomial real_axis(const Poly& P, const Poly& Q) {
+  const Poly size = reflected(add(absolute(P), absolute(Q)));  // (|P_k| + |Q_k|, signs as reflected)
+  return {AxisFactor{reflected(add(P, Q, -1)), absolute(size)}, AxisFactor{reflected(add(P, Q)), absolute(size)}};
 }
 
-// The end of the interval [0, L) of t > 0 where s(t) <= 0: the first root past which s turns
-// positive. +inf when s never does (s identically 0: |R| = 1 all along); 0 when s > 0 just past 0.
-// Coefficients below 1e-12 of the largest count as zero: they are the rounding of entries written
-// as decimals of irrational values (an A-stable SDIRK's gamma to 30 digits leaves 1e-30 where its
-// order makes the coefficient of y^2 vanish).
-double first_crossing(Poly s) {
-  double largest = 0.0;
-  for (const Rational& x : s) largest = std::max(largest, std::abs(static_cast<double>(x)));
-  for (Rational& x : s)
-    if (std::abs(static_cast<double>(x)) <= 1e-12 * largest) x = 0;
-  trim(s);
-  if (is_zero(s)) return std::numeric_limits<double>::infinity();
-  std::size_t m = 0;
-  while (s[m] == 0) ++m;
-  s.erase(s.begin(), s.begin() + static_cast<long>(m));  // divided by t^m
-  if (s[0] > 0) return 0.0;
-  const int degree = static_cast<int>(s.size()) - 1;
-  std::vector<double> roots;
-  if (degree > 0) {
-    // The companion matrix's eigenvalues, then Newton in doubles for the last digits.
-    Eigen::MatrixXd companion = Eigen::MatrixXd::Zero(degree, degree);
-    const double lead = static_cast<double>(s.back());
-    for (int i = 0; i < degree; ++i) companion(0, i) = -static_cast<double>(s[static_cast<std::size_t>(degree - 1 - i)]) / lead;
-    for (int i = 1; i < degree; ++i) companion(i, i - 1) = 1.0;
-    const Eigen::VectorXcd eigen = Eigen::EigenSolver<Eigen::MatrixXd>(companion, false).eigenvalues();
-    std::vector<double> coefficient(s.size());
-    for (std::size_t k = 0; k < s.size(); ++k) coefficient[k] = static_cast<double>(s[k]);
-    for (const auto& z : eigen) {
-      if (!(z.real() > 0.0) || std::abs(z.imag()) > 1e-6 * std::max(1.0, std::abs(z.real()))) continue;
-      double t = z.real();
-      for (int it = 0; it < 8; ++it) {
-        double f = 0.0, df = 0.0;
-        for (std::size_t k = coefficient.size(); k-- > 0;) df = df * t + f, f = f * t + coefficient[k];
-        if (df == 0.0) break;
-        const double next = t - f / df;
-        if (!(next > 0.0) || std::abs(next - t) > 1e-3 * t) break;  // a double root: keep the estimate
-        t = next;
-      }
-      roots.push_back(t);
+// On the imaginary axis, z = i y: |P(iy)|^2 - |Q(iy)|^2, even in y, as a polynomial in u = y^2.
+AxisPolynomial imaginary_axis(const Poly& P, const Poly& Q) {
+  // p(iy) = re(y) + i im(y), i^k = 1, i, -1, -i.
+  const auto parts = [](const Poly& p, Poly& re, Poly& im) {
+    re.assign(p.size(), Rational(0));
+    im.assign(p.size(), Rational(0));
+    for (std::size_t k = 0; k < p.size(); ++k) (k % 2 ? im : re)[k] = (k / 2) % 2 ? Rational(-p[k]) : p[k];
+    trim(re);
+    trim(im);
+  };
+  Poly pr, pi, qr, qi;
+  parts(P, pr, pi);
+  parts(Q, qr, qi);
+  const auto square = [](const Poly& p) { return multiply(p, p); };
+  const auto square_size = [](const Poly& p) { return multiply(absolute(p), absolute(p)); };
+  const Poly s = add(add(square(pr), square(pi)), add(square(qr), square(qi)), -1);
+  const Poly terms = add(add(square_size(pr), square_size(pi)), add(square_size(qr), square_size(qi)));
+  AxisFactor a;
+  for (std::size_t k = 0; k < s.size(); k += 2) a.s.push_back(s[k]);
+  for (std::size_t k = 0; k < terms.size(); k += 2) a.terms.push_back(terms[k]);
+  trim(a.s);
+  trim(a.terms);
+  return {a};
+}
+
+// Entries written as decimals of irrational values (SDIRK's gamma to 30 digits) break exact
+// identities by their rounding: where |R| = 1 identically, or where order p makes the
+// coefficients of |R(iy)|^2 - 1 vanish up to y^p (|e^(iy)| = 1), they are left as 1e-30 of the
+// terms that cancel in them, and decide the sign near 0 or far out. For such a tableau (its order
+// to rounding above its exact order) those coefficients are set to 0: on the imaginary axis the
+// ones up to degree p in y (`vanishing`, in u = y^2 up to p / 2), and on either axis any that is
+// below 1e-12 of its terms (the order conditions' test is 1e-10). The limits are then the
+// tableau's the entries round, to the digits shown.
+void drop_rounding(AxisPolynomial& a, int vanishing) {
+  for (AxisFactor& f : a) {
+    Poly kept;
+    for (std::size_t k = 0; k < f.s.size(); ++k) {
+      const double size = k < f.terms.size() ? static_cast<double>(f.terms[k]) : 0.0;
+      const bool rounding = static_cast<int>(k) <= vanishing || std::abs(static_cast<double>(f.s[k])) <= 1e-12 * size;
+      kept.push_back(rounding ? Rational() : f.s[k]);
     }
+    trim(kept);
+    f.s = std::move(kept);
   }
-  std::sort(roots.begin(), roots.end());
-  for (double r : roots)
-    if (evaluate(s, Rational(r * (1.0 + 1e-6))) > 0) return r;  // the sign just past it, exactly
-  return s.back() < 0 ? std::numeric_limits<double>::infinity() : 0.0;
+}
+
+// Where |R| first exceeds 1 along the axis, exactly (polynomial.hpp).
+double first_crossing(const AxisPolynomial& a) {
+  std::vector<Poly> factors;
+  for (const AxisFactor& f : a) factors.push_back(f.s);
+  return poly::first_positive_crossing(factors).at;
 }
 
 std::vector<std::string> texts(const Poly& p) {
@@ -493,11 +458,15 @@ TableauAnalysis analyse_tableau(const ButcherTableau& tableau) {
   else if (P.size() == Q.size()) out.r_at_infinity = std::abs(static_cast<double>(Rational(P.back() / Q.back())));
   else out.r_at_infinity = 0.0;
 
-  // The axes: on x = -t < 0, P^2 - Q^2; on z = i y, |P|^2 - |Q|^2.
-  Poly real = add(multiply(P, P), multiply(Q, Q), -1);
-  for (std::size_t k = 1; k < real.size(); k += 2) real[k] = -real[k];
+  // The axes, exactly: where |R|^2 - 1 first turns positive (polynomial.hpp's Sturm sequences).
+  AxisPolynomial real = real_axis(P, Q), imaginary = imaginary_axis(P, Q);
+  out.rounded_limits = out.order_to_rounding > out.order;
+  if (out.rounded_limits) {
+    drop_rounding(real, -1);
+    drop_rounding(imaginary, out.order_to_rounding / 2);
+  }
   out.real_limit = first_crossing(real);
-  out.imaginary_limit = first_crossing(add(modulus_squared_on_imaginary_axis(P), modulus_squared_on_imaginary_axis(Q), -1));
+  out.imaginary_limit = std::sqrt(first_crossing(imaginary));  // u = y^2
   return out;
 }
 

@@ -65,6 +65,17 @@ bool Tableau::is_explicit() const {
 }
 
 std::complex<double> Tableau::stability_function(std::complex<double> z) const {
+  if (is_explicit() && stages <= 64) {
+    // k_i = 1 + z sum_{j < i} a_ij k_j, the stages one after another, as a step computes them.
+    std::complex<double> k[64], bk = 0.0;
+    for (int i = 0; i < stages; ++i) {
+      std::complex<double> sum = 0.0;
+      for (int j = 0; j < i; ++j) sum += A(i, j) * k[j];
+      k[i] = 1.0 + z * sum;
+      bk += b[static_cast<std::size_t>(i)] * k[i];
+    }
+    return 1.0 + z * bk;
+  }
   using Matrix = Eigen::MatrixXcd;
   Matrix m = Matrix::Identity(stages, stages);
   for (int i = 0; i < stages; ++i)

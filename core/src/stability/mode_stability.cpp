@@ -61,14 +61,38 @@ struct GrowthPolynomial {
     *magnitude = size;
     return value;
   }
-  bool grows(double h) const {
+  // Above every positive root of (|R|^2 - 1) / h (Cauchy's bound), with some room for rounding.
+  double root_bound() const {
+    int top = degree;
+    while (top > 1 && c[top] == 0.0) --top;
+    if (top <= 1) return 0.0;  // c_1 h^0 alone: the sign near 0 holds everywhere
+    double largest = 0.0;
+    for (int m = 1; m < top; ++m) largest = std::max(largest, std::abs(c[m] / c[top]));
+    return 1.05 * (1.0 + largest);
+  }
+  // True: the sum decides the sign; false: it is within its own rounding of 0.
+  bool decides(double h, bool* grows) const {
     double size = 0.0;
     const double value = over_h(h, &size);
-    return value > 1e-13 * size;
+    *grows = value > 0.0;
+    return std::abs(value) > 1e-13 * size;
   }
 };
 
-// The first h > 0 at which |R(h lambda)| exceeds 1 (infinity if none up to 100 / |lambda|).
+// Whether |R(h lambda)| > 1. The growth polynomial's sum decides near 0, where |R|^2 - 1 is
+// small and only its series keeps the sign; far out it cancels to rounding (its terms' sum is
+// about |R(|z|)|^2: e^28 for Ketcheson's SSPRK(10,4) at z = -13.9, where it put the limit 2e-6
+// past |R| = 1), and R is computed as the method computes it, stage after stage (tableau.hpp).
+bool grows(const GrowthPolynomial& poly, const Tableau& tableau, Complex lambda, double h) {
+  bool grows = false;
+  if (poly.decides(h, &grows)) return grows;
+  return std::abs(tableau.stability_function(h * lambda)) > 1.0 + 1e-13;
+}
+
+// The first h > 0 at which |R(h lambda)| exceeds 1 (infinity if none). The search ends at
+// Cauchy's bound on the growth polynomial's roots, 1 + max |c_m / c_top|, past which its sign
+// is its top coefficient's: a long-interval method (a Chebyshev method's -2 s^2) is searched to
+// its end, not to a fixed multiple of 1 / |lambda|.
 double runge_kutta_exit(const Tableau& tableau, Complex lambda) {
   const std::vector<double>& gamma = tableau.numerator;
   const double size = std::abs(lambda);
@@ -79,11 +103,13 @@ double runge_kutta_exit(const Tableau& tableau, Complex lambda) {
     return lambda.real() >= 0.0 ? 0.0 : -2.0 * lambda.real() / (gamma[1] * std::norm(lambda));
   }
   const GrowthPolynomial poly(gamma, tableau.denominator, lambda);
+  const auto grows_at = [&](double h) { return grows(poly, tableau, lambda, h); };
   double lo = 1e-12 / size;
-  if (poly.grows(lo)) return 0.0;
+  if (grows_at(lo)) return 0.0;
   double hi = 0.0;
-  for (double h = lo * 1.02; h <= 100.0 / size; h *= 1.02) {
-    if (poly.grows(h)) {
+  const double bound = poly.root_bound();
+  for (double h = lo * 1.02; h <= bound; h *= 1.02) {
+    if (grows_at(h)) {
       hi = h;
       break;
     }
@@ -92,7 +118,7 @@ double runge_kutta_exit(const Tableau& tableau, Complex lambda) {
   if (hi == 0.0) return kInf;
   for (int k = 0; k < 80 && hi - lo > 1e-15 * hi; ++k) {
     const double mid = 0.5 * (lo + hi);
-    (poly.grows(mid) ? hi : lo) = mid;
+    (grows_at(mid) ? hi : lo) = mid;
   }
   return lo;
 }
