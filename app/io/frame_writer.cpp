@@ -23,7 +23,7 @@ namespace springlab::app {
 
 FrameWriter::~FrameWriter() { stop(); }
 
-void FrameWriter::start() { thread_ = std::thread([this] { run(); }); }
+void FrameWriter::start() { thread_.start([this] { run(); }); }
 
 void FrameWriter::stop() {
   {
@@ -31,7 +31,7 @@ void FrameWriter::stop() {
     closing_ = true;
   }
   changed_.notify_all();
-  if (thread_.joinable()) thread_.join();
+  thread_.join();
 }
 
 void FrameWriter::push(Image frame, int index) {

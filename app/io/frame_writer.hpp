@@ -9,10 +9,10 @@
 #include <filesystem>
 #include <memory>
 #include <mutex>
-#include <thread>
 #include <vector>
 
 #include "io/png.hpp"
+#include "util/worker.hpp"
 
 namespace springlab::app {
 
@@ -36,7 +36,7 @@ class FrameWriter {
  private:
   static constexpr std::size_t kQueue = 3;
   void run();
-  std::thread thread_;
+  Worker thread_;  // (native builds only: the browser writes no frames)
   std::mutex mutex_;
   std::condition_variable changed_;
   std::deque<std::pair<Image, int>> queue_;

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <mutex>
-#include <thread>
+#include <memory>
 #include <vector>
 
 #include "springlab/forces.hpp"
@@ -23,14 +23,14 @@ namespace {
 struct Threads {
   std::mutex mutex;
   struct Entry {
-    std::thread thread;
+    std::unique_ptr<Worker> thread;
     std::shared_ptr<StabilityJob::Shared> shared;
   };
   std::vector<Entry> entries;
 
   // Joins the finished ones (never waits for one still running).
   void reap() {
-    std::vector<std::thread> finished;
+    std::vector<std::unique_ptr<Worker>> finished;
     {
       std::lock_guard lock(mutex);
       for (auto it = entries.begin(); it != entries.end();) {
@@ -42,7 +42,7 @@ struct Threads {
         }
       }
     }
-    for (std::thread& t : finished) t.join();
+    for (auto& t : finished) t->join();
   }
 
   // Cancels every job and joins every thread.
@@ -53,7 +53,7 @@ struct Threads {
       all.swap(entries);
     }
     for (Entry& e : all) e.shared->cancel = true;
-    for (Entry& e : all) e.thread.join();
+    for (Entry& e : all) e.thread->join();
   }
   // At exit, after main (a test's process, or a main that did not call shutdown()).
   ~Threads() { join_all(); }
@@ -100,8 +100,10 @@ void StabilityJob::start(const Model& model, const State& state, std::uint64_t v
   if constexpr (kWorkerThreads) {
     Threads& all = threads();
     all.reap();
+    auto worker = std::make_unique<Worker>();
+    worker->start(std::move(work));
     std::lock_guard lock(all.mutex);
-    all.entries.push_back({std::thread(std::move(work)), shared});
+    all.entries.push_back({std::move(worker), shared});
   } else {
     work();
   }

@@ -1,5 +1,7 @@
 #include "util/atomic_file.hpp"
 
+#include "util/worker.hpp"
+
 #include <pthread.h>
 #include <signal.h>
 #include <unistd.h>
@@ -8,9 +10,9 @@
 #include <csignal>
 #include <cstring>
 #include <mutex>
-#include <thread>
 
 #include "springlab/error.hpp"
+#include "util/worker.hpp"
 
 namespace springlab::app {
 
@@ -55,7 +57,7 @@ void remove_pending_outputs_on_interrupt() {
   // the window system's) inherits the mask and only the thread below ever takes these signals.
   const sigset_t set = interrupt_signals();
   pthread_sigmask(SIG_BLOCK, &set, nullptr);
-  std::thread([set] {
+  Worker::detach([set] {
     int signal = 0;
     while (sigwait(&set, &signal) != 0) {
     }
@@ -68,7 +70,7 @@ void remove_pending_outputs_on_interrupt() {
     sigaddset(&one, signal);
     pthread_sigmask(SIG_UNBLOCK, &one, nullptr);
     ::raise(signal);
-  }).detach();
+  });
 }
 
 void unblock_interrupts_in_child(posix_spawnattr_t& attributes) {

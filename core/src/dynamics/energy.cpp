@@ -33,25 +33,15 @@ double lane_sum(int begin, int end, const Term& term) {
 
 namespace {
 
-// Pieces of a sum: this many springs or particles each. Above kParallelPieces of them they are
-// summed by the threads, each piece's sum in its own fixed order, then the pieces' sums in
+// Pieces of a sum: this many springs or particles each, summed by the threads where the whole is
+// worth them (threads.hpp), each piece's sum in its own fixed order, then the pieces' sums in
 // order: the same bits for any number of threads.
 constexpr int kPiece = 4096;
-constexpr int kParallelPieces = 2;
 
 template <typename Part>
 double ordered_sum(int pieces, const Part& part) {
-  if (pieces < kParallelPieces) {
-    double sum = 0.0;
-    for (int p = 0; p < pieces; ++p) sum += part(p);
-    return sum;
-  }
-  // Pieces claimed one at a time by whichever thread of the team is running (threads.hpp).
-  std::vector<double> parts(pieces);
-  std::atomic<int> next{0};
-  threads::Team::run(threads::max_team(), [&](int, int) {
-    for (int p; (p = next.fetch_add(1, std::memory_order_relaxed)) < pieces;) parts[p] = part(p);
-  });
+  std::vector<double> parts(static_cast<std::size_t>(pieces));
+  threads::for_each_piece(pieces, static_cast<double>(pieces) * kPiece, [&](int p) { parts[p] = part(p); });
   double sum = 0.0;
   for (double v : parts) sum += v;
   return sum;

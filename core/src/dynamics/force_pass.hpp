@@ -44,8 +44,6 @@ namespace force_detail {
 using simd::f64x4;
 using simd::kLanes;
 
-// Below this much work (springs + particles) one thread is faster than waking a second.
-inline constexpr int kParallelThreshold = 4096;
 // A block's particles are finished this many at a time: the forces of a chunk and the springs
 // reaching on from it stay in the L1 and L2 caches between being summed and being used.
 inline constexpr int kChunkParticles = 256;
@@ -459,7 +457,7 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
   // waited for (its blocks' step 1 is done by whoever needs it first, its run swept from the
   // back). A run's unclaimed blocks are one atomic word, the pass's number (24 bits), front and
   // back (20 bits each), set for every run before the team starts.
-  const bool parallel = springs + n >= kParallelThreshold && threads::max_team() > 1;
+  const bool parallel = threads::worth_threads(springs + n);
   const int team = parallel ? threads::max_team() : 1;
   plan.runs.resize(team);
   const std::uint64_t tag = pass_number & 0xFFFFFFu;

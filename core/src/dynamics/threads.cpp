@@ -29,19 +29,23 @@ inline void pause() {
 // A helper enters by counting itself inside and then checking that the job is still open: either
 // it counted itself before the caller looked (the caller waits for it) or it sees the job closed
 // and leaves (sequentially consistent order on `inside` and `closed`).
+// The words the caller writes and the helpers poll each on a cache line of its own: a helper's
+// spin on `generation` does not slow the caller's writes to `inside`'s line, nor the reverse.
 struct Pool {
   std::mutex growing;  // helpers are started under it
   std::vector<std::thread> helpers;
-  std::atomic<bool> busy{false};
-  std::atomic<std::uint64_t> generation{0}, closed{0};
+  std::atomic<int> started{0};  // helpers.size(), read without the lock
+  alignas(64) std::atomic<bool> busy{false};
+  alignas(64) std::atomic<std::uint64_t> generation{0};
+  alignas(64) std::atomic<std::uint64_t> closed{0};
   // Helpers asleep wait on `wake` (under `sleep`); `sleepers` counts those about to, so that the
   // caller takes the lock and notifies only when one might be waiting (the same order argument:
   // a helper counts itself before it looks at the generation under the lock).
   std::mutex sleep;
   std::condition_variable wake;
-  std::atomic<int> sleepers{0};
-  std::atomic<int> inside{0};
-  const Team::Job* job = nullptr;
+  alignas(64) std::atomic<int> sleepers{0};
+  alignas(64) std::atomic<int> inside{0};
+  alignas(64) const Team::Job* job = nullptr;
   int threads = 1;
 
 
@@ -116,13 +120,14 @@ void Team::run(int threads, const Job& job) {
   }
   ++g_counts.team;
   g_yields = 0;
-  {
+  if (p.started.load(std::memory_order_acquire) < threads - 1) {  // (the lock only to grow)
     std::lock_guard lock(p.growing);
     while (static_cast<int>(p.helpers.size()) < threads - 1) {
       const int index = static_cast<int>(p.helpers.size()) + 1;
       const std::uint64_t seen = p.generation.load();
       p.helpers.emplace_back([&p, index, seen] { p.serve(index, seen); });
     }
+    p.started.store(static_cast<int>(p.helpers.size()), std::memory_order_release);
   }
   p.job = &job;
   p.threads = threads;

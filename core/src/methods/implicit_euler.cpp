@@ -19,10 +19,12 @@
 //     linearised once; on cloth 64 x 64 at h = 1/60, 30 steps move no particle more than 4e-7 m
 //     from a 1e-10 solve, where halving h moves them by 3.5e-3 m, and the energy after 200 steps
 //     agrees to 1e-6. It takes about 110 iterations a step there; 1e-10 takes 300.
-//   - One parallel region a step, three waits for the other threads an iteration. The particles
-//     are cut into the force pass's fixed blocks (force_pass.hpp); each particle's sum and each
-//     dot product (per block, then the blocks in order) is taken in an order the blocks alone
-//     fix, so results are bit-identical for any number of threads.
+//   - Three passes an iteration (the product, the update, the next direction), each a job of the
+//     core's team (dynamics/threads.hpp): the particles are cut into the force pass's fixed
+//     blocks (force_pass.hpp), claimed one at a time by whichever thread is running, so a thread
+//     another program has parked is never waited for. Each particle's sum and each dot product
+//     (per block, then the blocks in order) is taken in an order the blocks alone fix, so results
+//     are bit-identical for any number of threads.
 // Tried and set aside, on the same cloth: an assembled Eigen matrix (its parallel product waits
 // in barriers: 1 step/s, about 400 Jacobi iterations a step at 1e-10); a sparse Cholesky
 // factorisation each step (Eigen's SimplicialLDLT: 0.4 to 0.6 s); the factorisation of the matrix
@@ -40,6 +42,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <memory>
 #include <span>
 #include <vector>
@@ -210,14 +214,13 @@ double dot(const Points& a, const Points& b, int begin, int end) {
          dot(a.col(2).data(), b.col(2).data(), begin, end);
 }
 
-// Calls f(block, begin, end) for every particle block of the plan, the blocks shared out among
-// the threads of the enclosing parallel region; they all wait at the end. What a block computes
-// does not depend on which thread computes it.
+// Calls f(block, begin, end) for every particle block of the plan, on the team where the pass's
+// `work` (particles + springs) is worth it (threads.hpp), each block claimed by whichever thread
+// is running. What a block computes does not depend on which thread computes it.
 template <typename F>
-void each_block(const ForcePlan& plan, int n, const F& f) {
+void each_block(const ForcePlan& plan, int n, double work, const F& f) {
   const int blocks = static_cast<int>(plan.own.size());
-#pragma omp for schedule(static)
-  for (int k = 0; k < blocks; ++k) f(k, k * plan.block, std::min(n, (k + 1) * plan.block));
+  threads::for_each_piece(blocks, work, [&](int k) { f(k, k * plan.block, std::min(n, (k + 1) * plan.block)); });
 }
 
 // The diagonal block of A and the terms of b that come from forces on one particle alone, for
@@ -254,6 +257,7 @@ struct ImplicitSolver {
   // The last solve.
   int iterations = 0;
   bool converged = true;
+  double work = 0.0;  // a pass's particle- and spring-visits, for threads::worth_threads
 
   void resize(const Model& model, const ForcePlan& plan) {
     const int n = model.particle_count(), springs = model.spring_count();
@@ -265,6 +269,7 @@ struct ImplicitSolver {
       inverse.resize(n);
     }
     for (std::vector<double>* v : {&along, &across, &kv_x, &kv_y, &kv_z}) v->resize(springs);
+    work = static_cast<double>(n) + springs;
     partial.resize(kSlots * plan.own.size());
     pinned.clear();
     for (int i = 0; i < n; ++i)
@@ -287,23 +292,29 @@ struct ImplicitSolver {
   }
 
   // The springs' blocks and b's spring terms, then b, the particles' own blocks and the
-  // preconditioner, from the state `in` and its forces f. Run by every thread of the region.
-  void setup(const Model& model, const ForcePlan& plan, const State& in, double h) {
+  // preconditioner, from the state `in` and its forces f.
+  // With `v_start` (Newton's correction of a backward-Euler step at the iterate `in` = (X, V)):
+  // the same A at (X, V), b = h f(X, V) - M (V - v_start), no K v term, and a first guess of 0.
+  void setup(const Model& model, const ForcePlan& plan, const State& in, double h, const Points* v_start = nullptr) {
     const int n = model.particle_count();
     const Columns X(in.x), V(in.v);
-    each_block(plan, n, [&](int block, int, int) {
+    if (v_start) known = 0;
+    each_block(plan, n, work, [&](int block, int, int) {
       for (const ForcePlan::Piece& piece : plan.own[block]) {
         const SpringSpan& span = model.spans[piece.span];
         const SpringMaterial& mat = model.materials[span.material];
-        const int s = span.first + piece.lo;
-        span_blocks(X, V, span.a0 + piece.lo, span.b0 + piece.lo, piece.hi - piece.lo, mat.ks,
-                    mat.kd, span.rest, h, &along[s], &across[s], &kv_x[s], &kv_y[s], &kv_z[s]);
+        const int s = span.first + piece.lo, count = piece.hi - piece.lo;
+        span_blocks(X, V, span.a0 + piece.lo, span.b0 + piece.lo, count, mat.ks, mat.kd, span.rest, h,
+                    &along[s], &across[s], &kv_x[s], &kv_y[s], &kv_z[s]);
+        if (v_start)
+          for (std::vector<double>* kv : {&kv_x, &kv_y, &kv_z}) std::fill_n(kv->begin() + s, count, 0.0);
       }
     });
-    each_block(plan, n, [&](int block, int begin, int end) {
+    each_block(plan, n, work, [&](int block, int begin, int end) {
       guess(begin, end);
       for (int c = 0; c < 3; ++c)
-        for (int i = begin; i < end; ++i) b(i, c) = h * f(i, c);
+        for (int i = begin; i < end; ++i)
+          b(i, c) = h * f(i, c) - (v_start ? model.mass[i] * (in.v(i, c) - (*v_start)(i, c)) : 0.0);
       particle_blocks(model, in, h, begin, end, own, b);
       SymmetricBlocks& D = inverse;  // A's diagonal blocks, inverted below
       D.copy(own, begin, end);
@@ -363,7 +374,7 @@ struct ImplicitSolver {
     const double* X[3] = {x.col(0).data(), x.col(1).data(), x.col(2).data()};
     const double* P[3] = {in.col(0).data(), in.col(1).data(), in.col(2).data()};
     double* Q[3] = {out.col(0).data(), out.col(1).data(), out.col(2).data()};
-    each_block(plan, n, [&](int block, int begin, int end) {
+    each_block(plan, n, work, [&](int block, int begin, int end) {
       multiply(own, P, Q, begin, end);
       alignas(64) double g[3][kChunk];
       const auto springs = [&](const SpringSpan& span, int lo, int count) {
@@ -405,13 +416,13 @@ struct ImplicitSolver {
   }
 
   // Preconditioned conjugate gradients on A dv = b from the dv held (the first guess), until
-  // |r| <= tolerance |b| or max_iterations products. Run by every thread of the region: each
-  // computes the same scalars from the same partial sums, so all take the same decisions.
+  // |r| <= tolerance |b| or max_iterations products. The scalars come from the blocks' partial
+  // sums added in block order: the same decisions for any number of threads.
   void solve(const Model& model, const ForcePlan& plan, const Points& x, double tolerance,
              int max_iterations) {
     const int n = model.particle_count();
     product(model, plan, x, dv, q);
-    each_block(plan, n, [&](int block, int begin, int end) {
+    each_block(plan, n, work, [&](int block, int begin, int end) {
       r.middleRows(begin, end - begin) =
           b.middleRows(begin, end - begin) - q.middleRows(begin, end - begin);
       precondition(begin, end);
@@ -424,7 +435,7 @@ struct ImplicitSolver {
     const double threshold = tolerance * tolerance * bb;
     double rr = total(kRR), rz = total(kRZ);
     if (bb == 0.0) {  // dv = 0 exactly, whatever the guess
-      each_block(plan, n,
+      each_block(plan, n, work,
                  [&](int, int begin, int end) { dv.middleRows(begin, end - begin).setZero(); });
       rr = 0.0;
     }
@@ -438,7 +449,7 @@ struct ImplicitSolver {
       const double pq = total(kPQ);
       if (!(pq > 0.0 && rz > 0.0)) break;
       const double alpha = rz / pq;
-      each_block(plan, n, [&](int block, int begin, int end) {
+      each_block(plan, n, work, [&](int block, int begin, int end) {
         for (int c = 0; c < 3; ++c) {
           double *solution = dv.col(c).data(), *residual = r.col(c).data();
           const double *direction = p.col(c).data(), *product = q.col(c).data();
@@ -457,7 +468,7 @@ struct ImplicitSolver {
       const double rz_next = total(kRZ);
       const double beta = rz_next / rz;
       rz = rz_next;
-      each_block(plan, n, [&](int, int begin, int end) {
+      each_block(plan, n, work, [&](int, int begin, int end) {
         for (int c = 0; c < 3; ++c) {
           double* direction = p.col(c).data();
           const double* preconditioned = z.col(c).data();
@@ -466,11 +477,8 @@ struct ImplicitSolver {
         }
       });
     }
-#pragma omp master
-    {
-      iterations = k;
-      converged = rr <= threshold;
-    }
+    iterations = k;
+    converged = rr <= threshold;
   }
 };
 
@@ -479,14 +487,6 @@ Workspace::Workspace() = default;
 Workspace::~Workspace() = default;
 Workspace::Workspace(Workspace&&) noexcept = default;
 Workspace& Workspace::operator=(Workspace&&) noexcept = default;
-
-namespace {
-
-bool parallel(const Model& model) {
-  return model.particle_count() + model.spring_count() >= force_detail::kParallelThreshold;
-}
-
-}  // namespace
 
 // ---- The step ---------------------------------------------------------------------------------
 
@@ -506,23 +506,107 @@ void implicit_euler(const Model& model, const State& in, State& out, double h,
   // As Eigen's conjugate gradients: twice the unknowns (never reached unless A is ill-posed).
   const int max_iterations = settings.max_solver_iterations > 0 ? settings.max_solver_iterations : 6 * n;
 
-#pragma omp parallel if (parallel(model))
-  {
-    S.setup(model, plan, in, h);
-    S.solve(model, plan, in.x, settings.solver_tolerance, max_iterations);
-    each_block(plan, n, [&](int, int begin, int end) {
-      for (int c = 0; c < 3; ++c)
-        for (int i = begin; i < end; ++i) {
-          out.v(i, c) = in.v(i, c) + S.dv(i, c);
-          out.x(i, c) = in.x(i, c) + h * out.v(i, c);
-        }
-    });
-  }
+  S.setup(model, plan, in, h);
+  S.solve(model, plan, in.x, settings.solver_tolerance, max_iterations);
+  each_block(plan, n, S.work, [&](int, int begin, int end) {
+    for (int c = 0; c < 3; ++c)
+      for (int i = begin; i < end; ++i) {
+        out.v(i, c) = in.v(i, c) + S.dv(i, c);
+        out.x(i, c) = in.x(i, c) + h * out.v(i, c);
+      }
+  });
   S.known = std::min(S.known + 1, 3);
   ++ws.counters.linear_solves;
   ws.counters.solver_iterations += S.iterations;
   if (!S.converged) ++ws.counters.unconverged_solves;
   out.t = in.t + h;
+}
+
+// The backward-Euler step solved to convergence (the DIRK stages' solve): Baraff and Witkin's
+// linearised step above, then Newton's corrections at the iterate (X, V), X = x + h V, of
+//   G(V) = M (V - v) - h f(X, V) = 0:   (M - h D - h^2 K) dV = -G,   V += dV
+// (D, K at the iterate; K the definite spring Jacobian, so on a compressed spring a quasi-Newton
+// step), each solved to kCorrectionTolerance of |G| by the same conjugate gradients, until every
+// free particle's |G_i| is within its tolerance (measure, below). On a linear scene the first
+// step already meets it (its error is the conjugate gradients' 1e-10): no correction, the same
+// bits as before. A correction that does not lower the residual is halved (up to ten times).
+void backward_euler_converged(const Model& model, const State& in, State& out, double h,
+                              const StepSettings& settings, Workspace& ws, Workspace& corrector, int* corrections) {
+  constexpr double kNewtonTolerance = 1e-10, kCorrectionTolerance = 1e-4;
+  constexpr int kMaxCorrections = 32, kMaxHalvings = 10;
+  constexpr double kEps = std::numeric_limits<double>::epsilon();
+  implicit_euler(model, in, out, h, settings, ws);
+  if (!corrector.implicit) corrector.implicit = std::make_unique<ImplicitSolver>();
+  ImplicitSolver& C = *corrector.implicit;
+  const int n = model.particle_count();
+  const int max_iterations = settings.max_solver_iterations > 0 ? settings.max_solver_iterations : 6 * n;
+  // The largest |G_i| at `out`, its forces left in C.f, and whether every |G_i| is within the
+  // tolerance: kNewtonTolerance max(h F, m_i |V_i - v_i|) above its rounding floor, 16 eps times
+  // its terms' sizes, m_i (|V_i| + |v_i|) and h R. F is the force scale (the largest spring
+  // tension k_s |l - L|, weight m |g| or net force; at a turning point it may be near 0), R =
+  // max k_s l the size spring forces are rounded at.
+  bool converged = false;
+  double tolerance = 0.0;  // the largest particle's, for the message
+  const auto measure = [&]() {
+    evaluate_forces(model, out.x, out.v, C.f, corrector.spring_forces, ForceOutput::Force);
+    ++ws.counters.force_evals;
+    double scale = 0.0, rounding = 0.0, largest = 0.0;
+    for (int s = 0; s < model.spring_count(); ++s) {
+      const double l = (out.x.row(model.spring_b[s]) - out.x.row(model.spring_a[s])).norm();
+      scale = std::max(scale, model.ks(s) * std::abs(l - model.rest_length[s]));
+      rounding = std::max(rounding, model.ks(s) * std::max(l, model.rest_length[s]));
+    }
+    for (int i = 0; i < n; ++i)
+      if (!model.pinned(i)) scale = std::max({scale, model.mass[i] * model.gravity.norm(), C.f.row(i).norm()});
+    converged = true;
+    tolerance = 0.0;
+    for (int i = 0; i < n; ++i) {
+      if (model.pinned(i)) continue;
+      const double change = model.mass[i] * (out.v.row(i) - in.v.row(i)).norm();
+      const double g = (model.mass[i] * (out.v.row(i) - in.v.row(i)) - h * C.f.row(i)).norm();
+      const double floor = 16.0 * kEps * (model.mass[i] * (out.v.row(i).norm() + in.v.row(i).norm()) + h * rounding);
+      largest = std::max(largest, g);
+      const double allowed = kNewtonTolerance * std::max(h * scale, change) + floor;
+      if (!(g <= allowed)) converged = false;
+      tolerance = std::max(tolerance, allowed);
+    }
+    return std::isfinite(largest) ? largest : std::numeric_limits<double>::infinity();
+  };
+  const auto set_velocity = [&](const Points& v) {
+    out.v = v;
+    out.x = in.x + h * out.v;
+  };
+  double residual = measure();
+  Points start;
+  for (int k = 0; !converged; ++k) {
+    if (k == kMaxCorrections || !std::isfinite(residual)) {
+      char what[200];
+      std::snprintf(what, sizeof what,
+                    "Newton's iteration did not converge in %d corrections (largest residual %.3g N s against a "
+                    "tolerance of %.3g, h = %.3g s): a smaller step may",
+                    kMaxCorrections, residual, tolerance, h);
+      throw StepFailure(what);
+    }
+    const ForcePlan& plan = corrector.spring_forces.plan;
+    C.resize(model, plan);
+    C.setup(model, plan, out, h, &in.v);
+    C.solve(model, plan, out.x, kCorrectionTolerance, max_iterations);
+    ++ws.counters.linear_solves;
+    ws.counters.solver_iterations += C.iterations;
+    if (corrections) ++*corrections;
+    // The full correction, halved while it does not lower the largest residual (a kink or a
+    // second root, as a spring through its anchor, can send the full one past the root).
+    start = out.v;
+    double t = 1.0;
+    for (int halving = 0;; ++halving, t *= 0.5) {
+      set_velocity(start + t * C.dv);
+      const double next = measure();
+      if (next < residual || converged || halving == kMaxHalvings) {
+        residual = next;
+        break;
+      }
+    }
+  }
 }
 
 }  // namespace steps
@@ -535,11 +619,8 @@ void evaluate(const Model& model, const State& in, double h, const Points& p, Po
   SpringForces forces;
   evaluate_forces(model, in.x, in.v, S.f, forces, ForceOutput::Force);
   S.resize(model, forces.plan);
-#pragma omp parallel if (parallel(model))
-  {
-    S.setup(model, forces.plan, in, h);
-    S.product(model, forces.plan, in.x, p, S.q);
-  }
+  S.setup(model, forces.plan, in, h);
+  S.product(model, forces.plan, in.x, p, S.q);
   Ap = S.q;
   b = S.b;
 }

@@ -89,6 +89,8 @@ void colour_vertices(const Model& model, VertexBlockDescent& out) {
   out.order.resize(out.colour_first[colours]);
   std::vector<int> at(out.colour_first.begin(), out.colour_first.end() - 1);
   for (int i = 0; i < n; ++i) out.order[at[colour[i]]++] = i;
+  out.colour_work.assign(colours, 0.0);  // a vertex and its springs: what a pass over it visits
+  for (int i = 0; i < n; ++i) out.colour_work[colour[i]] += 1.0 + (out.first[i + 1] - out.first[i]);
   out.spans = model.spans.data();
   out.particles = n;
   out.springs = springs;

@@ -70,6 +70,7 @@ struct VertexBlockDescent {
   std::vector<int> first, spring, other;
   // Vertices grouped by colour: colour c is order[colour_first[c] .. colour_first[c + 1]).
   std::vector<int> order, colour_first;
+  std::vector<double> colour_work;  // a colour's vertices and their springs (threads::worth_threads)
 };
 
 // What the three keep between steps, one Workspace's worth.

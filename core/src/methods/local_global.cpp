@@ -166,14 +166,22 @@ void global_rhs(const Model& model, const State& in, double h, const Points& X, 
   const double* x0[3] = {in.x.col(0).data(), in.x.col(1).data(), in.x.col(2).data()};
   S.wt.resize(3 * static_cast<std::size_t>(springs));
   double *wx = S.wt.data(), *wy = wx + springs, *wz = wy + springs;
-  const int spans = static_cast<int>(model.spans.size());
-#pragma omp parallel for schedule(static) if (springs >= 4096 && threads::kAvailable)
-  for (int k = 0; k < spans; ++k) {
-    const SpringSpan& span = model.spans[k];
-    const SpringMaterial& material = model.materials[span.material];
-    span_targets(x, x0, span.a0, span.b0, span.count, material.ks, material.kd, span.rest, h, wx + span.first,
-                 wy + span.first, wz + span.first);
-  }
+  // Pieces of kPiece springs (a span cut where a piece ends), claimed by whichever thread of the
+  // team is running (dynamics/threads.hpp).
+  constexpr int kPiece = 2048;
+  threads::for_each_piece((springs + kPiece - 1) / kPiece, springs, [&](int p) {
+    const int lo = p * kPiece, hi = std::min(springs, lo + kPiece);
+    auto span = std::upper_bound(model.spans.begin(), model.spans.end(), lo,
+                                 [](int s, const SpringSpan& sp) { return s < sp.first; }) - 1;
+    for (; span < model.spans.end() && span->first < hi; ++span) {
+      const SpringMaterial& material = model.materials[span->material];
+      const int from = std::max(lo - span->first, 0), to = std::min(hi - span->first, span->count);
+      if (from >= to) continue;
+      const int at = span->first + from;
+      span_targets(x, x0, span->a0 + from, span->b0 + from, to - from, material.ks, material.kd, span->rest, h,
+                   wx + at, wy + at, wz + at);
+    }
+  });
   for (int i = 0; i < n; ++i) {
     const int r = S.row[i];
     if (r < 0) continue;

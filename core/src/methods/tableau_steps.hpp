@@ -1,5 +1,6 @@
 // What a diagonally implicit tableau keeps between steps (tableau_steps.cpp): one implicit Euler
-// solver a stage, so that each stage's conjugate gradients start from that stage's last answers.
+// solver a stage, so that each stage's conjugate gradients start from that stage's last answers,
+// and the solver of the stages' Newton corrections.
 #pragma once
 
 #include <vector>
@@ -10,6 +11,7 @@ namespace springlab {
 
 struct StageSolvers {
   std::vector<Workspace> solvers;  // one a stage
+  Workspace corrector;             // Newton's corrections, every stage's (their first guess is 0)
   State in, out;                   // a stage's start (x~, v~) and its solution (X_i, V_i)
 };
 

@@ -93,12 +93,16 @@ void vbd(const Model& model, const State& in, State& out, double h, const StepSe
   const int colours = static_cast<int>(C.colour_first.size()) - 1;
   for (int k = 0; k < iterations; ++k)
     for (int c = 0; c < colours; ++c) {
+      // A colour's vertices share no spring: each moves alone, in pieces of kPiece claimed by
+      // whichever thread of the team is running (dynamics/threads.hpp).
+      constexpr int kPiece = 64;
       const int begin = C.colour_first[c], end = C.colour_first[c + 1];
-#pragma omp parallel for schedule(static) if (end - begin >= 256 && threads::kAvailable)
-      for (int q = begin; q < end; ++q) {
-        const int i = C.order[q];
-        if (!model.pinned(i)) descend(model, C, I, h, i, X, X0);
-      }
+      threads::for_each_piece((end - begin + kPiece - 1) / kPiece, C.colour_work[c], [&](int p) {
+        for (int q = begin + p * kPiece; q < std::min(end, begin + (p + 1) * kPiece); ++q) {
+          const int i = C.order[q];
+          if (!model.pinned(i)) descend(model, C, I, h, i, X, X0);
+        }
+      });
     }
   ws.counters.solver_iterations += iterations;
   iterative::finish(model, in, out, h);
