@@ -458,7 +458,7 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
   // back). A run's unclaimed blocks are one atomic word, the pass's number (24 bits), front and
   // back (20 bits each), set for every run before the team starts.
   const bool parallel = threads::worth_threads(springs + n);
-  const int team = parallel ? threads::max_team() : 1;
+  const int team = parallel ? std::min(threads::max_team(), blocks) : 1;  // (a thread a block at most)
   plan.runs.resize(team);
   const std::uint64_t tag = pass_number & 0xFFFFFFu;
   const auto word = [tag](std::uint64_t front, std::uint64_t back) {

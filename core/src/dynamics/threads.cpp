@@ -133,9 +133,13 @@ void Team::run(int threads, const Job& job) {
   p.threads = threads;
   const std::uint64_t g = p.generation.fetch_add(1) + 1;
   p.ring();
+  const auto started = std::chrono::steady_clock::now();
   job(threads, 0);
   p.closed.store(g);
-  wait([&] { return p.inside.load() == 0; });
+  // A helper still inside holds a piece: as long as the caller's own share took (twice, and at
+  // least 20 us) it is working, not parked.
+  const auto own = std::chrono::steady_clock::now() - started;
+  wait([&] { return p.inside.load() == 0; }, std::max<std::chrono::nanoseconds>(2 * own, std::chrono::microseconds(20)));
   p.busy.store(false, std::memory_order_release);
   // A helper that held work was not running: another program has a core. Alone for a while.
   if (g_yields > 0) {
