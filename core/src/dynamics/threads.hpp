@@ -177,15 +177,16 @@ inline bool worth_threads(double work) { return work >= kParallelWork && max_tea
 // is done by the others), and the caller takes whatever the helpers leave. What a piece computes
 // must not depend on which thread runs it (each writes its own results), so that results are the
 // same bits for any number of threads.
-// `per_thread`: the least work a thread is given (a pass that does not scale past a few threads,
-// as local-global's local step beside its serial solves, asks for fewer).
+// `per_thread`, if given: the least work a thread is given (a pass that does not scale past a few
+// threads, as local-global's local step beside its serial solves, asks for fewer).
 template <typename Piece>
-void for_each_piece(int pieces, double work, const Piece& piece, double per_thread = kParallelWork) {
+void for_each_piece(int pieces, double work, const Piece& piece, double per_thread = 0.0) {
   if (pieces <= 1 || !worth_threads(work)) {
     for (int p = 0; p < pieces; ++p) piece(p);
     return;
   }
-  const int team = std::max(1, std::min({max_team(), pieces, static_cast<int>(work / per_thread)}));
+  const int most = per_thread > 0.0 ? std::max(1, static_cast<int>(work / per_thread)) : pieces;
+  const int team = std::min({max_team(), pieces, most});
   // A run's unclaimed pieces, front << 32 | back, each run's word on a cache line of its own.
   struct alignas(64) Run {
     std::atomic<std::uint64_t> word;
