@@ -68,6 +68,16 @@ TEST(Compare, OnTheSpringWritesResultsSummaryAndCharts) {
   EXPECT_EQ(png.width, 1200);
 }
 
+// A diagonally implicit tableau in compare: its order measured, and its measured stable step's
+// probes, out to h w = 1000, never end the command (a step whose stage Newton could not converge
+// ended it with exit 1 before: it counts as a run that did not hold).
+TEST(Compare, ADiagonallyImplicitTableauIsComparedToTheEnd) {
+  TempDir dir;
+  const Result r = springlab("compare spring --methods trapezoidal --no-charts --points 4 --out " + dir.path.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("trapezoidal        2.00 (2)"), std::string::npos) << r.out;
+}
+
 class EveryScene : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(EveryScene, IsChartedWithoutError) {

@@ -114,9 +114,11 @@ class Team {
   // where the spins alone, 4096 pauses, last 20 to 200 us by the processor).
   template <typename Done>
   static void wait(const Done& done, std::chrono::nanoseconds patience = std::chrono::nanoseconds(0)) {
-    const auto since = std::chrono::steady_clock::now();
-    // Spins: at least 4096 pauses and at least `patience` (the clock read every 256 of them).
+    // Spins: 4096 pauses, then for `patience` more (the clock read only from then on, every 256
+    // spins: most waits end within the pauses, and a clock read costs as much as 20 of them).
+    std::chrono::steady_clock::time_point since;
     for (int spins = 0; !done(); ++spins) {
+      if (spins == 4096) since = std::chrono::steady_clock::now();
       if (spins >= 4096 && (spins & 255) == 0 && std::chrono::steady_clock::now() - since >= patience) {
         while (!done()) {
           yielded();

@@ -529,11 +529,11 @@ void implicit_euler(const Model& model, const State& in, State& out, double h,
 // step), each solved to kCorrectionTolerance of |G| by the same conjugate gradients, until every
 // free particle's |G_i| is within its tolerance (measure, below). On a linear scene the first
 // step already meets it (its error is the conjugate gradients' 1e-10): no correction, the same
-// bits as before. A correction that does not lower the residual is halved (up to ten times).
+// bits as before. A correction that does not lower the residual is halved (up to four times).
 void backward_euler_converged(const Model& model, const State& in, State& out, double h,
                               const StepSettings& settings, Workspace& ws, Workspace& corrector, int* corrections) {
   constexpr double kNewtonTolerance = 1e-10, kCorrectionTolerance = 1e-4;
-  constexpr int kMaxCorrections = 32, kMaxHalvings = 10;
+  constexpr int kMaxCorrections = 32, kMaxHalvings = 4;
   constexpr double kEps = std::numeric_limits<double>::epsilon();
   implicit_euler(model, in, out, h, settings, ws);
   if (!corrector.implicit) corrector.implicit = std::make_unique<ImplicitSolver>();

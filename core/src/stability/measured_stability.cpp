@@ -210,7 +210,11 @@ MeasuredLimit measured_limit(Method method, const Model& model, const State& sta
     spent += static_cast<double>(steps) * size;
     for (long k = 0; k < steps; ++k) {
       if ((k & 255) == 0) check_cancel();
-      step(method, runs, a, b, h, settings, ws);
+      try {
+        step(method, runs, a, b, h, settings, ws);
+      } catch (const StepFailure&) {
+        return false;  // a step that could not be completed (a stage's Newton iteration): not held
+      }
       std::swap(a, b);
       if ((k & 15) != 15 && k + 1 < steps) continue;
       const double e = energy(runs, a).total() - e_rest;
