@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# One way into threads: no OpenMP region, OpenMP runtime call, std::thread, std::jthread or
+# One way into threads: no OpenMP pragma (a region or a simd hint: SPRINGLAB_VECTORISE), OpenMP runtime call, std::thread, std::jthread or
 # pthread_create outside the core's seam (core/src/dynamics/threads.*) and the app's worker
 # (app/util/worker.hpp). A second way in is how a program collapses when another shares the cores
 # (a barrier waits for a thread the scheduler parked): every parallel loop goes through
@@ -10,7 +10,7 @@
 set -euo pipefail
 root="${1:-$(cd "$(dirname "$0")/../.." && pwd)}"
 cd "$root"
-pattern='#[[:space:]]*pragma[[:space:]]+omp[[:space:]]+(parallel|for|task|sections|single|master|barrier|critical|atomic)|\bomp_[a-z_]+[[:space:]]*\(|std::j?thread\b|pthread_create'
+pattern='#[[:space:]]*pragma[[:space:]]+omp\b|\bomp_[a-z_]+[[:space:]]*\(|std::j?thread\b|pthread_create'
 found=$(grep -rnE "$pattern" core app python --include='*.cpp' --include='*.hpp' --include='*.h' \
           | grep -vE '^(core/src/dynamics/threads\.(hpp|cpp)|app/util/worker\.hpp):' || true)
 if [[ -n "$found" ]]; then

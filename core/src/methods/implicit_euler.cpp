@@ -79,7 +79,7 @@ struct SymmetricBlocks {
   // Inverts blocks [begin, end) in place (each symmetric positive definite): the cofactors over
   // the determinant.
   void invert(int begin, int end) {
-#pragma omp simd
+SPRINGLAB_VECTORISE
     for (int i = begin; i < end; ++i) {
       const double a = xx[i], b = yy[i], c = zz[i], d = xy[i], e = xz[i], f = yz[i];
       const double cxx = b * c - f * f, cyy = a * c - e * e, czz = a * b - d * d;
@@ -105,7 +105,7 @@ void span_blocks(const Columns& X, const Columns& V, int a0, int b0, int count, 
                  double* __restrict across, double* __restrict kvx, double* __restrict kvy,
                  double* __restrict kvz) {
   const double h2 = h * h;
-#pragma omp simd
+SPRINGLAB_VECTORISE
   for (int k = 0; k < count; ++k) {
     const double dx = X.x[b0 + k] - X.x[a0 + k];
     const double dy = X.y[b0 + k] - X.y[a0 + k];
@@ -134,7 +134,7 @@ void add_spring_blocks(const Columns& X, int a0, int b0, int at, int count,
   double *xx = D.xx.data() + at, *yy = D.yy.data() + at, *zz = D.zz.data() + at;
   double *xy = D.xy.data() + at, *xz = D.xz.data() + at, *yz = D.yz.data() + at;
   double *bx = b.col(0).data() + at, *by = b.col(1).data() + at, *bz = b.col(2).data() + at;
-#pragma omp simd
+SPRINGLAB_VECTORISE
   for (int k = 0; k < count; ++k) {
     const double dx = X.x[b0 + k] - X.x[a0 + k];
     const double dy = X.y[b0 + k] - X.y[a0 + k];
@@ -158,7 +158,7 @@ void multiply(const SymmetricBlocks& M, const double* const P[3], double* const 
   const double *xy = M.xy.data(), *xz = M.xz.data(), *yz = M.yz.data();
   const double *px = P[0], *py = P[1], *pz = P[2];
   double *qx = Q[0], *qy = Q[1], *qz = Q[2];
-#pragma omp simd
+SPRINGLAB_VECTORISE
   for (int i = begin; i < end; ++i) {
     qx[i] = xx[i] * px[i] + xy[i] * py[i] + xz[i] * pz[i];
     qy[i] = xy[i] * px[i] + yy[i] * py[i] + yz[i] * pz[i];
@@ -352,7 +352,7 @@ struct ImplicitSolver {
     const double* w = kWeights[std::min(known, 3)];
     for (int c = 0; c < 3; ++c) {
       double *d1 = dv.col(c).data(), *d2 = earlier[0].col(c).data(), *d3 = earlier[1].col(c).data();
-#pragma omp simd
+SPRINGLAB_VECTORISE
       for (int i = begin; i < end; ++i) {
         const double next = w[0] * d1[i] + w[1] * d2[i] + w[2] * d3[i];
         d3[i] = d2[i];
@@ -453,7 +453,7 @@ struct ImplicitSolver {
         for (int c = 0; c < 3; ++c) {
           double *solution = dv.col(c).data(), *residual = r.col(c).data();
           const double *direction = p.col(c).data(), *product = q.col(c).data();
-#pragma omp simd
+SPRINGLAB_VECTORISE
           for (int i = begin; i < end; ++i) {
             solution[i] += alpha * direction[i];
             residual[i] -= alpha * product[i];
@@ -472,7 +472,7 @@ struct ImplicitSolver {
         for (int c = 0; c < 3; ++c) {
           double* direction = p.col(c).data();
           const double* preconditioned = z.col(c).data();
-#pragma omp simd
+SPRINGLAB_VECTORISE
           for (int i = begin; i < end; ++i) direction[i] = preconditioned[i] + beta * direction[i];
         }
       });

@@ -137,7 +137,7 @@ void span_targets(const double* const x[3], const double* const x0[3], int a0, i
                   double ks, double kd, double rest, double h, double* __restrict wx,
                   double* __restrict wy, double* __restrict wz) {
   const double k_s = h * h * ks, k_d = h * kd, near = coincident_length(rest);
-#pragma omp simd
+SPRINGLAB_VECTORISE
   for (int k = 0; k < count; ++k) {
     const double ex = x[0][b0 + k] - x[0][a0 + k], ey = x[1][b0 + k] - x[1][a0 + k], ez = x[2][b0 + k] - x[2][a0 + k];
     const double fx = x0[0][b0 + k] - x0[0][a0 + k], fy = x0[1][b0 + k] - x0[1][a0 + k], fz = x0[2][b0 + k] - x0[2][a0 + k];
