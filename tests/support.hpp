@@ -1,11 +1,14 @@
 // Helpers shared by the tests: loading shipped scenes, running a simulation, small models.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "springlab/exact.hpp"
+#include "springlab/forces.hpp"
 #include "springlab/scene.hpp"
 #include "springlab/simulation.hpp"
 
@@ -35,6 +38,36 @@ inline std::string scene_path(const std::string& name) {
 
 inline Scene shipped(const std::string& name, const std::vector<std::string>& overrides = {}) {
   return load_scene(scene_path(name), overrides);
+}
+
+// The RMS over the model's free particles of |a_i - b_i|.
+inline double rms_over_free(const Model& model, const Points& a, const Points& b) {
+  double sum = 0.0;
+  int free = 0;
+  for (int i = 0; i < model.particle_count(); ++i) {
+    if (model.pinned(i)) continue;
+    sum += (a.row(i) - b.row(i)).squaredNorm();
+    ++free;
+  }
+  return free > 0 ? std::sqrt(sum / free) : 0.0;
+}
+
+// How far `out` is from the backward-Euler step of h from `in`: the largest |m_i (v1_i - v_i) -
+// h f_i(x1, v1)| over the free particles (N s), with the largest |f_i(x1, v1)| beside it.
+struct BackwardEulerResidual {
+  double worst = 0.0, largest_force = 0.0;
+};
+inline BackwardEulerResidual backward_euler_residual(const Model& model, const State& in, const State& out, double h) {
+  Points f;
+  SpringForces buffer;
+  evaluate_forces(model, out.x, out.v, f, buffer, ForceOutput::Force);
+  BackwardEulerResidual r;
+  for (int i = 0; i < model.particle_count(); ++i) {
+    if (model.pinned(i)) continue;
+    r.worst = std::max(r.worst, (model.mass[i] * (out.v.row(i) - in.v.row(i)) - h * f.row(i)).norm());
+    r.largest_force = std::max(r.largest_force, f.row(i).norm());
+  }
+  return r;
 }
 
 // substeps 0: automatic (a scene's own setting unless it fixes them).
@@ -111,15 +144,7 @@ inline double error_against_exact(const Scene& scene, Method method, double h, d
   double worst = 0.0;
   for (std::int64_t k = 0; k < steps; ++k) {
     if (!sim.step()) return std::numeric_limits<double>::infinity();
-    const State ref = exact->at(sim.state().t);
-    double sum = 0.0;
-    int free = 0;
-    for (int i = 0; i < sim.model().particle_count(); ++i) {
-      if (sim.model().pinned(i)) continue;
-      sum += (sim.state().x.row(i) - ref.x.row(i)).squaredNorm();
-      ++free;
-    }
-    worst = std::max(worst, std::sqrt(sum / free));
+    worst = std::max(worst, rms_over_free(sim.model(), sim.state().x, exact->at(sim.state().t).x));
   }
   return worst;
 }

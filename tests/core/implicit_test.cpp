@@ -181,13 +181,7 @@ TEST(ImplicitEuler, TheLinearisedStepIsNotTheConvergedOneWhichVbdTendsTo) {
   const Scene scene = test::shipped("chain");
   const double h = 1.0 / 30.0;
   Simulation sim = test::simulation(scene, Method::ImplicitEuler, h);
-  const auto rms = [&](const Points& a, const Points& b) {
-    double sum = 0.0;
-    int free = 0;
-    for (int i = 0; i < scene.model.particle_count(); ++i)
-      if (!scene.model.pinned(i)) sum += (a.row(i) - b.row(i)).squaredNorm(), ++free;
-    return std::sqrt(sum / free);
-  };
+  const auto rms = [&](const Points& a, const Points& b) { return test::rms_over_free(scene.model, a, b); };
   double worst = 0.0;
   StepSettings settings;
   settings.solver_tolerance = 1e-10;
@@ -199,15 +193,10 @@ TEST(ImplicitEuler, TheLinearisedStepIsNotTheConvergedOneWhichVbdTendsTo) {
     steps::backward_euler_converged(scene.model, start, converged, h, settings, b, corrector);
     // The converged step's residual, against the forces at its end (the force pass's own), to 1e-9
     // of h times the largest tension or weight.
-    Points f;
-    SpringForces buffer;
-    evaluate_forces(scene.model, converged.x, converged.v, f, buffer, ForceOutput::Force);
-    double residual = 0.0, scale = 0.0;
-    for (int i = 0; i < scene.model.particle_count(); ++i) {
-      if (scene.model.pinned(i)) continue;
-      residual = std::max(residual, (scene.model.mass[i] * (converged.v.row(i) - start.v.row(i)) - h * f.row(i)).norm());
-      scale = std::max(scale, scene.model.mass[i] * scene.model.gravity.norm());
-    }
+    const double residual = test::backward_euler_residual(scene.model, start, converged, h).worst;
+    double scale = 0.0;
+    for (int i = 0; i < scene.model.particle_count(); ++i)
+      if (!scene.model.pinned(i)) scale = std::max(scale, scene.model.mass[i] * scene.model.gravity.norm());
     for (int s = 0; s < scene.model.spring_count(); ++s)  // the largest tension
       scale = std::max(scale, scene.model.ks(s) * std::abs((converged.x.row(scene.model.spring_b[s]) -
                                                              converged.x.row(scene.model.spring_a[s])).norm() -

@@ -41,17 +41,8 @@ State one_step(const Scene& s, Method method, double h, int iterations, double r
 
 // The largest |m (v1 - v) / h - f(x1, v1)| over the free particles, over the largest |f| (N/N).
 double backward_euler_residual(const Scene& s, const State& out, double h) {
-  Points f;
-  SpringForces buffer;
-  evaluate_forces(s.model, out.x, out.v, f, buffer, ForceOutput::Force);
-  double worst = 0.0, scale = 0.0;
-  for (int i = 0; i < s.model.particle_count(); ++i) {
-    if (s.model.pinned(i)) continue;
-    const Vec3 r = s.model.mass[i] * (out.v.row(i) - s.state.v.row(i)).transpose() / h - f.row(i).transpose();
-    worst = std::max(worst, r.norm());
-    scale = std::max(scale, f.row(i).norm());
-  }
-  return worst / scale;
+  const test::BackwardEulerResidual r = test::backward_euler_residual(s.model, s.state, out, h);
+  return r.worst / h / r.largest_force;
 }
 
 TEST(Iterative, ConvergedEachIsTheBackwardEulerStep) {

@@ -158,13 +158,7 @@ std::vector<Points> samples(const Scene& scene, Method method, int steps, double
 
 double largest_rms(const Model& model, const std::vector<Points>& a, const std::vector<Points>& b) {
   double worst = 0.0;
-  for (std::size_t k = 0; k < a.size(); ++k) {
-    double sum = 0.0;
-    int free = 0;
-    for (int i = 0; i < model.particle_count(); ++i)
-      if (!model.pinned(i)) sum += (a[k].row(i) - b[k].row(i)).squaredNorm(), ++free;
-    worst = std::max(worst, std::sqrt(sum / free));
-  }
+  for (std::size_t k = 0; k < a.size(); ++k) worst = std::max(worst, test::rms_over_free(model, a[k], b[k]));
   return worst;
 }
 
