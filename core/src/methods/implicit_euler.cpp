@@ -542,7 +542,7 @@ void backward_euler_converged(const Model& model, const State& in, State& out, d
   const int max_iterations = settings.max_solver_iterations > 0 ? settings.max_solver_iterations : 6 * n;
   // The largest |G_i| at `out`, its forces left in C.f, and whether every |G_i| is within the
   // tolerance: kNewtonTolerance max(h F, m_i |V_i - v_i|) above its rounding floor, 16 eps times
-  // its terms' sizes, m_i (|V_i| + |v_i|) and h R. F is the force scale (the largest spring
+  // its terms' sizes, m_i (|V_i| + |v_i|), h R and h^2 k_max |V_i|. F is the force scale (the largest spring
   // tension k_s |l - L|, weight m |g| or net force; at a turning point it may be near 0), R =
   // max k_s l the size spring forces are rounded at.
   bool converged = false;
@@ -550,11 +550,12 @@ void backward_euler_converged(const Model& model, const State& in, State& out, d
   const auto measure = [&]() {
     evaluate_forces(model, out.x, out.v, C.f, corrector.spring_forces, ForceOutput::Force);
     ++ws.counters.force_evals;
-    double scale = 0.0, rounding = 0.0, largest = 0.0;
+    double scale = 0.0, rounding = 0.0, largest = 0.0, stiffest = 0.0;
     for (int s = 0; s < model.spring_count(); ++s) {
       const double l = (out.x.row(model.spring_b[s]) - out.x.row(model.spring_a[s])).norm();
       scale = std::max(scale, model.ks(s) * std::abs(l - model.rest_length[s]));
       rounding = std::max(rounding, model.ks(s) * std::max(l, model.rest_length[s]));
+      stiffest = std::max(stiffest, model.ks(s));
     }
     for (int i = 0; i < n; ++i)
       if (!model.pinned(i)) scale = std::max({scale, model.mass[i] * model.gravity.norm(), C.f.row(i).norm()});
@@ -564,7 +565,10 @@ void backward_euler_converged(const Model& model, const State& in, State& out, d
       if (model.pinned(i)) continue;
       const double change = model.mass[i] * (out.v.row(i) - in.v.row(i)).norm();
       const double g = (model.mass[i] * (out.v.row(i) - in.v.row(i)) - h * C.f.row(i)).norm();
-      const double floor = 16.0 * kEps * (model.mass[i] * (out.v.row(i).norm() + in.v.row(i).norm()) + h * rounding);
+      // (X = x + h V rounds at eps h |V| too, which the springs turn into forces: h k_s eps h |V|.)
+      const double speed = out.v.row(i).norm();
+      const double floor =
+          16.0 * kEps * (model.mass[i] * (speed + in.v.row(i).norm()) + h * rounding + h * h * stiffest * speed);
       largest = std::max(largest, g);
       const double allowed = kNewtonTolerance * std::max(h * scale, change) + floor;
       if (!(g <= allowed)) converged = false;
@@ -579,6 +583,13 @@ void backward_euler_converged(const Model& model, const State& in, State& out, d
   double residual = measure();
   Points start;
   for (int k = 0; !converged; ++k) {
+    // Out of corrections within 100 times the tolerance (a compressed spring's clamped Jacobian
+    // converges slowly, as at h w = 1280 on the spring, 4e-11 N s against 2.3e-11): kept, and
+    // counted as an unconverged solve; further off, the step fails.
+    if (k == kMaxCorrections && residual <= 100.0 * tolerance) {
+      ++ws.counters.unconverged_solves;
+      break;
+    }
     if (k == kMaxCorrections || !std::isfinite(residual)) {
       char what[200];
       std::snprintf(what, sizeof what,
