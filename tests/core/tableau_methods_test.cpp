@@ -215,6 +215,20 @@ TEST(TableauMethods, ImplicitMidpointsEnergyErrorStaysBoundedOnASwingingRope) {
   EXPECT_LT(last, 2.0 * first) << "first tenth " << first << " J, last tenth " << last << " J";
 }
 
+// Where a stage's Newton iteration cannot converge, the step fails and says which stage and why:
+// the zero-length damped spring collapsed onto its anchor at h w = 100, where its damping's
+// direction is not differentiable (the run stops as a divergence, the state before kept).
+TEST(TableauMethods, AStageThatDoesNotConvergeIsNamed) {
+  const Scene scene = test::linear_oscillator(100.0, 2.0);
+  Simulation sim = test::simulation(scene, row("sdirk2"), 10.0);
+  for (int k = 0; k < 200 && !sim.diverged(); ++k) sim.advance(1);
+  ASSERT_TRUE(sim.diverged());
+  const std::string message = sim.divergence()->message();
+  EXPECT_NE(message.find("stage 1 of the tableau: Newton's iteration did not converge in 32 corrections"), std::string::npos)
+      << message;
+  EXPECT_TRUE(std::isfinite(sim.state().x.norm()));
+}
+
 // A tableau with an embedded b_hat chooses its own steps: tightening the tolerance 10^4-fold cuts
 // the error at least 100-fold (global error goes as a power of the tolerance below one), and
 // Dormand-Prince as data is springlab's rk45 step for step: the same internal steps, the same
