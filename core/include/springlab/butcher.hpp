@@ -91,6 +91,10 @@ struct TableauAnalysis {
   // decimals of irrational values: coefficients that cancel to rounding taken as 0, butcher.cpp).
   bool rounded_limits = false;
   double r_at_infinity = 0.0;  // |R(z)| as |z| -> infinity (+inf for a polynomial; 0: L-stable's)
+  // b_i a_ij + b_j a_ji = b_i b_j for every i, j (exactly; to 1e-12 where the entries are
+  // rounded): the method keeps every quadratic invariant, such as angular momentum, and is
+  // symplectic (Cooper 1987; Hairer, Lubich and Wanner, Geometric Numerical Integration, IV.2.1).
+  bool symplectic = false;
 };
 
 TableauAnalysis analyse_tableau(const ButcherTableau& tableau);

@@ -162,6 +162,14 @@ struct DefiniteForm {
 };
 using DefiniteRule = DefiniteForm (*)(double verlet_damping);
 
+/// What a method keeps of a constant of the motion on a free body (momentum.hpp): to rounding
+/// (exactly, as the update adds forces linearly or keeps x x v), only to its solver's tolerance
+/// (the constant holds for the exact solution of its equations, which the solver approaches), or
+/// not at all.
+enum class Kept { Exactly, ToSolverTolerance, No };
+/// "kept", "kept to the solver's tolerance", "not kept".
+const char* kept_text(Kept kept);
+
 /// A row of the method table: a method's name, order, cost, family, what its stability needs
 /// (its tableau's R(z), a closed form, a definite form) and its step function. The app, the
 /// command line, the charts, the stability analysis and the tests all read these rows (methods()).
@@ -194,6 +202,12 @@ struct MethodInfo {
   /// The energy audit watches it (simulation.cpp, audited()): not where the divergence test
   /// sees instability at once (symplectic Euler, Verlet) nor the adaptive ones.
   bool audited = false;
+  /// What it keeps on a free body: the momentum P and the angular momentum L (momentum.hpp),
+  /// measured by tests/core/momentum_test.cpp. Every row that adds forces linearly keeps P; L
+  /// only a symplectic update (symplectic Euler, Verlet, a tableau with b_i a_ij + b_j a_ji =
+  /// b_i b_j, Cooper 1987). VBD keeps neither unless its iterations converge.
+  Kept momentum = Kept::Exactly;
+  Kept angular_momentum = Kept::No;
 
   bool adaptive() const { return family == MethodFamily::Adaptive; }
   bool implicit() const { return family == MethodFamily::Implicit; }

@@ -407,6 +407,16 @@ TableauAnalysis analyse_tableau(const ButcherTableau& tableau) {
   out.conditions = order.conditions;
   if (tableau.b_hat) out.embedded_order = check_order(trees, phi, exact(*tableau.b_hat)).order;
 
+  // Cooper's condition, b_i a_ij + b_j a_ji - b_i b_j = 0: exact, or to rounding where the
+  // entries round irrational values (as the order to rounding is found).
+  out.symplectic = true;
+  for (std::size_t i = 0; i < s && out.symplectic; ++i)
+    for (std::size_t j = 0; j <= i && out.symplectic; ++j) {
+      const Rational m = b[i] * A[i][j] + b[j] * A[j][i] - b[i] * b[j];
+      out.symplectic = m == 0 || (out.order_to_rounding > out.order &&
+                                  std::abs(m.convert_to<double>()) <= 1e-12);
+    }
+
   // c against the row sums (the scenes do not depend on time, so the steps use A alone).
   if (tableau.c_given) {
     const Vector c = exact(tableau.c);

@@ -49,7 +49,7 @@ constexpr MethodInfo kMethods[] = {
      .evaluations = "1", .undamped_limit = 2.0,
      .stability = N_("symplectic Euler is stable for h w < 2; its energy oscillates but does not drift"),
      .family = F::Partitioned, .step = steps::symplectic_euler, .mode_limit = modes::symplectic_euler,
-     .definite = symplectic_euler_form, .corner_bound = true},
+     .definite = symplectic_euler_form, .corner_bound = true, .angular_momentum = Kept::Exactly},
     {.id = Method::Midpoint, .name = "midpoint", .label = N_("Midpoint"), .order = 2, .evaluations = "2",
      .undamped_limit = kNever,
      .stability = N_("midpoint gains energy at any step without damping, slowly: sqrt(1 + (h w)^4 / 4) a step"),
@@ -74,12 +74,13 @@ constexpr MethodInfo kMethods[] = {
     {.id = Method::ImplicitEuler, .name = "implicit-euler", .label = N_("Implicit Euler"), .order = 1,
      .evaluations = "1 + a linear solve", .undamped_limit = kAlways,
      .stability = N_("implicit Euler is stable at any step; it damps: amplification 1 / sqrt(1 + (h w)^2)"),
-     .family = F::Implicit, .step = steps::implicit_euler, .tableau = &kImplicitEulerTableau, .audited = true},
+     .family = F::Implicit, .step = steps::implicit_euler, .tableau = &kImplicitEulerTableau, .audited = true,
+     .momentum = Kept::ToSolverTolerance},
     {.id = Method::Verlet, .name = "verlet", .label = N_("Verlet"), .order = 2, .evaluations = "1",
      .undamped_limit = 2.0,
      .stability = N_("Verlet is stable for h w < 2; its energy oscillates but does not drift"),
      .family = F::Partitioned, .step = steps::verlet, .mode_limit = modes::verlet, .definite = verlet_form,
-     .corner_bound = true},
+     .corner_bound = true, .angular_momentum = Kept::Exactly},
     // The iterative rows solve implicit Euler's step approximately (methods/iterative.hpp): no
     // limit; their cost at a large step is damping and stretch, which the gauge shows instead.
     // Not audited: each step only lowers the step's objective, so they cannot create energy.
@@ -97,7 +98,7 @@ constexpr MethodInfo kMethods[] = {
      .evaluations = "none: 10 iterations (--iterations), each a 3x3 Newton step a vertex",
      .undamped_limit = kAlways,
      .stability = N_("vertex block descent is bounded at any step; it damps like implicit Euler, more at few iterations"),
-     .family = F::Iterative, .step = steps::vbd},
+     .family = F::Iterative, .step = steps::vbd, .momentum = Kept::No},
 };
 
 // Rows in the enum's order: a method's row is found by its id.
@@ -215,9 +216,22 @@ Method add_tableau_method(const ButcherTableau& tableau, const std::string& name
   info.tableau = &row.tableau;
   info.tableau_step = pair ? steps::embedded_pair : explicit_stages ? steps::explicit_tableau : steps::diagonally_implicit;
   info.audited = !pair;  // (as rk45: the adaptive rows are not audited)
+  // An explicit tableau adds forces linearly: P to rounding; a diagonally implicit one's stages
+  // are solved by Newton's method to a tolerance. L only where the tableau is symplectic.
+  info.momentum = explicit_stages ? Kept::Exactly : Kept::ToSolverTolerance;
+  info.angular_momentum = !a.symplectic ? Kept::No : explicit_stages ? Kept::Exactly : Kept::ToSolverTolerance;
   t.rows[index] = info;
   t.count.store(index + 1, std::memory_order_release);
   return info.id;
+}
+
+const char* kept_text(Kept kept) {
+  switch (kept) {
+    case Kept::Exactly: return "kept";
+    case Kept::ToSolverTolerance: return "kept to the solver's tolerance";
+    case Kept::No: return "not kept";
+  }
+  return "";
 }
 
 const ButcherTableau* tableau_source(Method method) {
