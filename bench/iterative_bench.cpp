@@ -59,7 +59,7 @@ void BM_IterativeLocalGlobalFloor(benchmark::State& state) {
   local_global_parts::factorise(s.model, h, mass, S);
   const int part = static_cast<int>(state.range(2));
   for (auto _ : state) {
-    if (part != 2) local_global_parts::global_rhs(s.model, s.state, h, y, y, mass, S);
+    if (part != 2) local_global_parts::global_rhs(s.model, s.state, h, y, y, S);
     if (part != 1) local_global_parts::solve_in_place(S, S.rhs);
     benchmark::ClobberMemory();
   }

@@ -10,8 +10,9 @@
 
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
-#include "springlab/iterative_cost.hpp"
 #include "springlab/error.hpp"
+#include "springlab/iterative_cost.hpp"
+#include "springlab/momentum.hpp"
 #include "util/atomic_file.hpp"
 #include "util/progress.hpp"
 
@@ -95,6 +96,7 @@ int run(const RunOptions& o) {
   if (iterative) p.settings.track_dissipation = true;  // for its artificial damping, below
   Simulation sim(std::move(p.scene.model), std::move(p.scene.state), p.settings);
   const Energy initial = sim.energy();
+  const Momentum initial_momentum = momentum(sim.model(), sim.state());
   const StabilityAnalysis& stability = sim.stability();
   const StabilityLimit limit = sim.stability_limit();
   warn_if_unstable(sim, p.scene.name);
@@ -173,6 +175,18 @@ int run(const RunOptions& o) {
                   "k_s x %s\n",
                   format(s.stretch).c_str(), format(s.model_stretch).c_str(), format(s.ratio()).c_str());
     }
+  }
+  if (free_body(sim.model()) && !sim.diverged()) {
+    // No outside force: P and L are constants of the motion, and any change is the method's.
+    const Momentum now = momentum(sim.model(), sim.state());
+    const MomentumChange d = momentum_change(initial_momentum, now);
+    const auto said = [](double change) {
+      return std::string(change <= kMomentumKept ? "kept (" : "changed (") + "by " + format(change) + " of ";
+    };
+    std::printf("momentum   a free body (no pins, gravity, drag, fields or colliders): P %ssum m|v| = %s kg m/s), "
+                "L %ssum m|x||v| = %s kg m^2/s); %s: P %s, L %s\n",
+                said(d.linear).c_str(), format(now.linear_scale).c_str(), said(d.angular).c_str(),
+                format(now.angular_scale).c_str(), m.name, kept_text(m.momentum), kept_text(m.angular_momentum));
   }
   if (o.csv) std::printf("trace      %s\n", o.csv->c_str());
 

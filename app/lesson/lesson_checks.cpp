@@ -11,6 +11,7 @@
 #include "chart/compare_charts.hpp"
 #include "springlab/energy.hpp"
 #include "springlab/iterative_cost.hpp"
+#include "springlab/momentum.hpp"
 #include "springlab/solver_error.hpp"
 #include "springlab/sweep.hpp"
 #include "ui/compare_panel.hpp"
@@ -31,6 +32,7 @@ std::string fmt(const char* format, double x) {
 struct Record {
   std::vector<double> energy, steps, adaptive_step, rejected, x_error;
   std::vector<Vec3> momentum, angular;
+  std::vector<Momentum> free_momentum;  // momentum.hpp's, with its scales
   std::vector<std::int64_t> born;  // particles born so far (emitters)
   std::vector<double> internal;  // kinetic energy besides the rigid motion's
   std::vector<double> time;      // simulated
@@ -87,6 +89,7 @@ void record(const Lane& lane, int frame, Record& r) {
     rigid = 0.5 * p.squaredNorm() / mass + 0.5 * spin;
   }
   r.momentum.push_back(p);
+  r.free_momentum.push_back(springlab::momentum(m, s));
   r.angular.push_back(l);
   r.born.push_back(sim.emission().born());
   r.internal.push_back(mass > 0.0 ? std::max(0.0, e.kinetic - rigid) : 0.0);
@@ -246,6 +249,19 @@ ClaimResult judge(const LessonClaim& c, const Session& session, const std::vecto
       out.measured = fmt("|P| = %.4g kg m/s", p0) + fmt(" changed by %.2g of it", dp) + fmt(", |L| = %.4g kg m^2/s", l0) +
                      fmt(" by %.2g", dl);
       out.passed = p0 > 0.0 && dp <= c.within && l0 > 0.0 && dl <= c.within;
+      break;
+    }
+    case K::LinearMomentumKept:
+    case K::LinearMomentumChanges: {
+      // Over the window, the largest change from its start: a break need not last to its end.
+      double most = 0.0;
+      for (int k = i0; k <= sane_end; ++k)
+        most = std::max(most, momentum_change(r.free_momentum[i0], r.free_momentum[k]).linear);
+      out.measured = fmt("P changed by %.2g of sum m|v|", most) +
+                     fmt(" (%.4g kg m/s)", r.free_momentum[i0].linear_scale) +
+                     (free_body(lane.sim.model()) ? "" : "; not a free body: an outside force acts");
+      out.passed = free_body(lane.sim.model()) && r.free_momentum[i0].linear_scale > 0.0 &&
+                   (c.kind == K::LinearMomentumKept ? most <= c.within : most > c.above);
       break;
     }
     case K::DragSlows: {

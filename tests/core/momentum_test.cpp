@@ -50,7 +50,7 @@ MomentumChange change_over(const Scene& scene, Method method, int steps, int ite
 std::vector<Method> every_row() {
   for (const auto& entry : std::filesystem::directory_iterator(std::string(SPRINGLAB_SOURCE_DIR) + "/assets/tableaux"))
     if (entry.path().extension() == ".json")
-      add_tableau_method(load_tableau_file(entry.path().string()), "momentum-" + entry.path().stem().string());
+      add_tableau_method(load_tableau_file(entry.path().string()), "tableau-" + entry.path().stem().string());  // (as the other tests name them: one row each)
   return test::methods_where([](const MethodInfo&) { return true; });
 }
 

@@ -43,6 +43,8 @@ struct LessonClaim {
     Limit,            // the stated stability limit is `h` to within `within` (relative)
     StepsAdapt,       // an adaptive lane rejects tries, and its step varies by `ratio` or more
     MomentumKept,     // the free particles' momentum and angular momentum are unchanged to `within`
+    LinearMomentumKept,     // the momentum P alone, to `within` of sum m |v| (momentum.hpp)
+    LinearMomentumChanges,  // P changes by more than `above` of sum m |v|: the method breaks it
     DragSlows,        // the centre of mass slows as exp(-k_drag t / m), to `within` (relative)
     InternalDecays,   // the motion besides the rigid one loses all but `below` of its energy
     SolverConverges,  // an iterative lane's step nears the converged implicit-Euler step by a

@@ -220,6 +220,9 @@ void box(ObjectReader& r, const std::string& name, Builder& b) {
   const double damping = r.number("damping", 0.0, non_negative(1e12));
   const Eigen::Matrix3d R = rotation_degrees(r.vec3("rotation", Vec3::Zero()));
   const Vec3 velocity = r.vec3("velocity", Vec3::Zero());
+  // A spin about the centre, rad/s: each node starts at velocity + spin x (x - center), a body
+  // thrown turning (a free body's angular momentum, momentum.hpp).
+  const Vec3 spin = r.vec3("spin", Vec3::Zero());
   const long count = n[0] * n[1] * n[2];
   b.reserve(r, count, 13 * count);
   std::vector<bool> pinned(count, false);
@@ -235,7 +238,8 @@ void box(ObjectReader& r, const std::string& name, Builder& b) {
         const Vec3 local(size.x() * (double(i) / double(n[0] - 1) - 0.5),
                          size.y() * (double(j) / double(n[1] - 1) - 0.5),
                          size.z() * (double(k) / double(n[2] - 1) - 0.5));
-        b.particle(center + R * local, velocity, mass / double(count), pinned[index(i, j, k) - first]);
+        b.particle(center + R * local, velocity + spin.cross(R * local), mass / double(count),
+                   pinned[index(i, j, k) - first]);
       }
   // Every neighbour in the 3 x 3 x 3 cell around a node: edges, face and body diagonals. The
   // 13 "forward" offsets visit each pair once. k_s = stiffness x rest length (see the header).

@@ -94,6 +94,7 @@ const std::vector<std::pair<std::string, LessonClaim::Kind>>& claim_kinds() {
       {"energy-grows", K::EnergyGrows},   {"energy-decays", K::EnergyDecays}, {"energy-bounded", K::EnergyBounded},
       {"diverges", K::Diverges},          {"holds", K::Holds},                {"follows-exact", K::FollowsExact},
       {"limit", K::Limit},                {"steps-adapt", K::StepsAdapt},     {"momentum-kept", K::MomentumKept},
+      {"linear-momentum-kept", K::LinearMomentumKept}, {"linear-momentum-changes", K::LinearMomentumChanges},
       {"drag-slows", K::DragSlows},       {"internal-decays", K::InternalDecays}, {"solver-converges", K::SolverConverges}, {"acts-as", K::ActsAs}, {"out-of-reach", K::OutOfReach},
       {"poses-differ", K::PosesDiffer},   {"orders", K::Orders},              {"particles", K::Particles},
       {"bursts", K::Bursts}};
@@ -157,7 +158,9 @@ LessonClaim read_claim(ObjectReader& r, const LessonStep& step, const Scene& sce
       c.within = r.number("within", 0.01, {0.0, 1.0, true, false});
       break;
     case K::StepsAdapt: needs_dynamics(); c.ratio = r.number("ratio", 2.0, {1.0, 1e6, true, false}); break;
-    case K::MomentumKept: needs_dynamics(); c.within = r.number("within", 1e-9, json_reader::positive(1.0)); break;
+    case K::MomentumKept:
+    case K::LinearMomentumKept: needs_dynamics(); c.within = r.number("within", 1e-9, json_reader::positive(1.0)); break;
+    case K::LinearMomentumChanges: needs_dynamics(); c.above = r.number("above", 1e-3, json_reader::positive(1.0)); break;
     case K::DragSlows:
       needs_dynamics();
       c.within = r.number("within", 0.02, json_reader::positive(1.0));
@@ -328,6 +331,8 @@ std::string LessonClaim::describe() const {
     case K::Limit: return who + "stated stability limit h = " + fmt(h) + " s";
     case K::StepsAdapt: return who + "rejects tries, step varies x" + fmt(ratio) + " or more";
     case K::MomentumKept: return "momentum and angular momentum kept";
+    case K::LinearMomentumKept: return who + "momentum kept to " + fmt(within) + " of sum m|v|";
+    case K::LinearMomentumChanges: return who + "momentum changes by more than " + fmt(above) + " of sum m|v|";
     case K::DragSlows: return "centre of mass slows as exp(-k_drag n t / M)";
     case K::ActsAs:
       return who + "at rest acts as k_s x" + (above > 0.0 ? fmt(above) + " or more" : "") +

@@ -154,13 +154,19 @@ SPRINGLAB_VECTORISE
   }
 }
 
-// The right side of the global step from the iterate X (pinned rows hold their positions), into
-// S.rhs in the factor's order: each spring's w t (span by span, in parallel: each spring's own
-// numbers), then added to its ends' rows in the springs' order (the same bits for any thread
-// count).
+// The right side of the global step for the correction z = x - y from the prediction y (the
+// file's header with x = y + z):
+//   (M~ + sum_s w_s A_s A_s^T) z = sum_s A_s (w_s t_s - w_s e_s(y)),
+// each spring's term made from its own differences and added to one end's row and taken from
+// the other's. Its rows sum to zero to rounding of the springs' terms, not of the positions:
+// solved for x itself, a body 2 m from the origin lost 1e-8 of its momentum over a throw to the
+// solve's rounding of |x| (a free body keeps sum M~ x = sum M~ y exactly, momentum.hpp). From the
+// iterate X (pinned rows hold their positions, which are y's), into S.rhs in the factor's order:
+// each spring's w t (span by span, in parallel: each spring's own numbers), then added to its
+// ends' rows in the springs' order (the same bits for any thread count).
 void global_rhs(const Model& model, const State& in, double h, const Points& X, const Points& y,
-                const std::vector<double>& mass, LocalGlobalSolver& S) {
-  const int n = model.particle_count(), springs = model.spring_count();
+                LocalGlobalSolver& S) {
+  const int springs = model.spring_count();
   double* B = S.rhs.data();
   const double* x[3] = {X.col(0).data(), X.col(1).data(), X.col(2).data()};
   const double* x0[3] = {in.x.col(0).data(), in.x.col(1).data(), in.x.col(2).data()};
@@ -184,24 +190,17 @@ void global_rhs(const Model& model, const State& in, double h, const Points& X, 
                    wx + at, wy + at, wz + at);
     }
   }, kPerThread);
-  for (int i = 0; i < n; ++i) {
-    const int r = S.row[i];
-    if (r < 0) continue;
-    for (int c = 0; c < 3; ++c) B[3 * r + c] = mass[i] * y(i, c);
-  }
+  std::fill(S.rhs.begin(), S.rhs.end(), 0.0);
   for (int s = 0; s < springs; ++s) {
     const int a = model.spring_a[s], b = model.spring_b[s];
     const int ra = S.row[a], rb = S.row[b];
+    const double w = h * h * model.ks(s) + h * model.kd(s);
     const double wt[3] = {wx[s], wy[s], wz[s]};
-    if (ra >= 0 && rb >= 0) {
-      for (int c = 0; c < 3; ++c) B[3 * rb + c] += wt[c], B[3 * ra + c] -= wt[c];
-      continue;
+    for (int c = 0; c < 3; ++c) {
+      const double g = wt[c] - w * (y(b, c) - y(a, c));
+      if (rb >= 0) B[3 * rb + c] += g;
+      if (ra >= 0) B[3 * ra + c] -= g;
     }
-    const double w = h * h * model.ks(s) + h * model.kd(s);  // a pinned end's position enters
-    if (rb >= 0)
-      for (int c = 0; c < 3; ++c) B[3 * rb + c] += wt[c] + w * x[c][a];
-    if (ra >= 0)
-      for (int c = 0; c < 3; ++c) B[3 * ra + c] -= wt[c] - w * x[c][b];
   }
 }
 
@@ -232,20 +231,20 @@ void local_global(const Model& model, const State& in, State& out, double h, con
   const int iterations = iterations_for(Method::LocalGlobal, settings);
   const int n = in.particle_count();
   for (int k = 1; k <= iterations; ++k) {
-    global_rhs(model, in, h, out.x, I.y, I.mass, S);
-    solve_in_place(S, S.rhs);
+    global_rhs(model, in, h, out.x, I.y, S);
+    solve_in_place(S, S.rhs);  // the correction z from y
     if (rho > 0.0) {
       omega = chebyshev_omega(k, rho, omega);
       S.current = out.x;
       for (int c = 0; c < 3; ++c)
         for (int i = 0; i < n; ++i)
           if (S.row[i] >= 0)
-            out.x(i, c) = omega * (S.rhs[3 * S.row[i] + c] - S.previous(i, c)) + S.previous(i, c);
+            out.x(i, c) = omega * (I.y(i, c) + S.rhs[3 * S.row[i] + c] - S.previous(i, c)) + S.previous(i, c);
       S.previous.swap(S.current);
     } else {
       for (int c = 0; c < 3; ++c)
         for (int i = 0; i < n; ++i)
-          if (S.row[i] >= 0) out.x(i, c) = S.rhs[3 * S.row[i] + c];
+          if (S.row[i] >= 0) out.x(i, c) = I.y(i, c) + S.rhs[3 * S.row[i] + c];
     }
   }
   ws.counters.solver_iterations += iterations;

@@ -8,9 +8,10 @@ namespace springlab::local_global_parts {
 
 // Factorises M~ + sum_s w_s A_s A_s^T for the step h (throws StepFailure if it cannot).
 void factorise(const Model& model, double h, const std::vector<double>& mass, LocalGlobalSolver& S);
-// The local pass: the right side of the global step from the iterate X, into S.rhs.
+// The local pass: the right side of the global step for the correction x - y from the iterate X,
+// into S.rhs.
 void global_rhs(const Model& model, const State& in, double h, const Points& X, const Points& y,
-                const std::vector<double>& mass, LocalGlobalSolver& S);
+                LocalGlobalSolver& S);
 // The global solve: (L D L^T) z = z in place, the factor's order, x y z interleaved.
 void solve_in_place(const LocalGlobalSolver& S, std::vector<double>& z);
 
