@@ -8,6 +8,7 @@
 #include "platform/option_ranges.hpp"
 #include "springlab/error.hpp"
 #include "springlab/forces.hpp"
+#include "springlab/iterative_cost.hpp"
 
 namespace springlab::app {
 
@@ -41,7 +42,21 @@ void add_sim_options(CLI::App& c, SimOptions& o, bool with_length) {
       ->transform(whole_number(kThreads.lo, kThreads.hi));
 }
 
+// Local-global's Chebyshev acceleration past the plain iteration's own radius (iterative_cost.hpp).
+void warn_if_rho_past_radius(const Simulation& sim, const std::string& scene) {
+  const double rho = sim.settings().step.chebyshev_rho;
+  if (sim.settings().method != Method::LocalGlobal || !(rho > 0.0)) return;
+  const double radius = local_global_radius(sim.model(), sim.state(), sim.h());
+  if (rho <= radius) return;
+  std::fprintf(stderr,
+               "springlab: warning: %s: --rho %.4g is past local-global's spectral radius here, %.4g (measured at h = "
+               "%.4g s): Chebyshev acceleration then overshoots each step and can put energy in; use --rho %.3g or "
+               "less\n",
+               scene.c_str(), rho, radius, sim.h(), std::floor(radius * 1000.0) / 1000.0);
+}
+
 void warn_if_unstable(Simulation& sim, const std::string& scene) {
+  warn_if_rho_past_radius(sim, scene);
   const StabilityLimit& limit = sim.stability_limit();  // (made now: with automatic sub-steps, chooses them)
   if (!std::isfinite(limit.h) || sim.h() <= limit.h) return;
   if (limit.h == 0.0) {

@@ -10,6 +10,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
+#include "springlab/cells.hpp"
 #include "springlab/error.hpp"
 #include "springlab/iterative_cost.hpp"
 #include "springlab/momentum.hpp"
@@ -165,16 +166,38 @@ int run(const RunOptions& o) {
   if (iterative && !sim.diverged() && sim.state().t > 0.0) {
     // What it pays instead of a limit (springlab/iterative_cost.hpp).
     // Taken out in all: E0 + W - E = -net; by the physics' damping: dissipated; the rest, the
-    // method's own (negative: its springs' stretch counted with k_s grew).
+    // method's own. Negative, it put energy in: its springs' stretch, counted with k_s, grew.
     const double artificial = -(sim.net_energy() + sim.dissipated());
-    std::printf("damping    %s J taken out beyond the physics' damping (%s W on average; the physics' damping took %s J)\n",
-                format(artificial).c_str(), format(artificial / sim.state().t).c_str(), format(sim.dissipated()).c_str());
-    if (at_rest(sim.model(), sim.state(), sim.energy_scale())) {
+    if (!energy_account_closed(sim.model()))
+      std::printf("damping    not stated: the colliders' contacts and friction take energy the account does not "
+                  "count apart\n");
+    else if (artificial >= 0.0)
+      std::printf("damping    %s J taken out beyond the physics' damping (%s W on average; the physics' damping took %s J)\n",
+                  format(artificial).c_str(), format(artificial / sim.state().t).c_str(), format(sim.dissipated()).c_str());
+    else
+      std::printf("energy in  %s J put in beyond the physics (%s W on average): its springs ended stretched or compressed further than k_s "
+                  "would hold them, and that counts with k_s (the physics' damping took %s J)\n",
+                  format(-artificial).c_str(), format(-artificial / sim.state().t).c_str(), format(sim.dissipated()).c_str());
+    const double lengths = length_ratio(sim.model(), sim.state());
+    if (!at_rest(sim.model(), sim.state(), sim.energy_scale())) {
+      std::printf("stretch    in motion: springs at %sx their rest length in all\n", format(lengths).c_str());
+    } else if (loaded_balance(sim.model())) {
       const Softness s = softness(sim.model(), sim.state());
-      std::printf("stretch    at rest, %s m RMS against the spring model's %s m under the same load: its springs act as "
-                  "k_s x %s\n",
-                  format(s.stretch).c_str(), format(s.model_stretch).c_str(), format(s.ratio()).c_str());
+      std::printf("stretch    at rest, springs at %sx their rest length in all; %s m RMS against the spring model's %s m "
+                  "under the same load: its springs act as k_s x %s\n",
+                  format(lengths).c_str(), format(s.stretch).c_str(), format(s.model_stretch).c_str(),
+                  format(s.ratio()).c_str());
+    } else {
+      std::printf("stretch    at rest, springs at %sx their rest length in all; no load carried to pins (free, or resting "
+                  "on a collider), so no effective stiffness to state\n",
+                  format(lengths).c_str());
     }
+  }
+  if (!p.scene.cells.empty()) {
+    // Springs cannot undo an inverted cell (cells.hpp): counted for every method.
+    const int inverted = inverted_cells(p.scene.cells, sim.state().x);
+    std::printf("cells      %d of %zu inverted%s\n", inverted, p.scene.cells.size(),
+                inverted > 0 ? " (turned inside out: springs alone cannot turn them back)" : "");
   }
   if (free_body(sim.model()) && !sim.diverged()) {
     // No outside force: P and L are constants of the motion, and any change is the method's.

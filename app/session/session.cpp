@@ -144,6 +144,12 @@ void Session::sample(Lane& lane) {
   if (lane.ik) h.ik_error.push(lane.ik->status.error);
   h.step.push(sim.adaptive_step());
   h.rejected.push(static_cast<double>(sim.counters().rejected));
+  // Inverted cells: every frame, or twice a second for a box past 32768 cells (a 128^3 lattice's
+  // two million take tens of milliseconds).
+  if (!scene_.cells.empty() && (scene_.cells.size() <= 32768 || frame_ % 30 == 0))
+    lane.inverted_cells = sim.diverged() ? 0 : springlab::inverted_cells(scene_.cells, sim.state().x);
+  if (!free_body(sim.model())) lane.free_since.reset();
+  else if (!lane.free_since) lane.free_since = momentum(sim.model(), sim.state());
   // Trails follow sane states only (a diverged lane's last good one may be far off).
   const bool sane = !sim.diverged() && lane.sane.t == t;
   for (std::size_t k = 0; k < lane.trails.size() && sane; ++k) {
@@ -325,6 +331,7 @@ void Session::reset() {
   for (Lane& l : lanes_) {
     l.sim.reset();
     l.history.clear();
+    l.free_since.reset();
     for (auto& trail : l.trails) trail.clear();
     l.exact = ExactOscillator::detect(l.sim.model(), l.sim.state());
     l.sane = l.sim.state();

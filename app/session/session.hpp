@@ -21,6 +21,7 @@
 #include "springlab/exact.hpp"
 #include "springlab/scene.hpp"
 #include "springlab/script.hpp"
+#include "springlab/momentum.hpp"
 #include "springlab/simulation.hpp"
 
 namespace springlab::app {
@@ -48,6 +49,11 @@ struct Lane {
   // The last state that looked sane (positions within a few scene sizes of where they started):
   // what a diverged lane is drawn as, never its blown-up geometry.
   State sane;
+  // A free body's momentum (momentum.hpp) since it last became free (a drag pins what it holds),
+  // against which the gauge measures what the method changes of it; empty while not free.
+  std::optional<Momentum> free_since;
+  // How many of the scene's cells are inverted now (cells.hpp), counted as the lane is sampled.
+  int inverted_cells = 0;
   // Whether the lane waits for its first analysis before it steps (automatic sub-steps, in the
   // session's background mode; otherwise the simulation makes it when it first steps).
   bool waiting() const { return !sim.ready(); }

@@ -13,6 +13,7 @@
 #include "ui/layout.hpp"
 #include "ui/overlay.hpp"
 #include "springlab/iterative_cost.hpp"
+#include "springlab/momentum.hpp"
 #include "ui/text_wrap.hpp"
 #include "springlab/text.hpp"
 #include "util/language.hpp"
@@ -107,11 +108,15 @@ void gauge(app::Session& session, app::Lane& lane, float width, bool explain) {
       if (m.family == MethodFamily::Iterative) {
         const app::History& hist = lane.history;
         const std::size_t n = hist.t.size(), back = std::min<std::size_t>(n, 61);
-        if (analysis->rest_stretch() > 0.0 && at_rest(sim.model(), sim.state(), sim.energy_scale())) {
+        // Each only where it is defined: the stiffness it acts as where the springs carry a load to
+        // pins, the energy it takes where no collider's contacts take any (iterative_cost.hpp).
+        const bool resting = at_rest(sim.model(), sim.state(), sim.energy_scale());
+        if (resting && loaded_balance(sim.model()) && analysis->rest_stretch() > 0.0) {
           const double ratio = analysis->rest_stretch() / std::max(rms_stretch(sim.model(), sim.state()), 1e-300);
           verdict = fmt(tr("bounded; at rest acts as k_s x%.2g"), ratio);
           if (ratio < 0.5) color = kNear;
-        } else if (back >= 2 && hist.net.size() == n && hist.dissipated.size() == n) {
+        } else if (!resting && energy_account_closed(sim.model()) && back >= 2 && hist.net.size() == n &&
+                   hist.dissipated.size() == n) {
           const std::size_t a = n - back, b = n - 1;
           const double dt = hist.t[b] - hist.t[a];
           const double lost = -((hist.net[b] - hist.net[a]) + (hist.dissipated[b] - hist.dissipated[a]));
@@ -135,6 +140,24 @@ void gauge(app::Session& session, app::Lane& lane, float width, bool explain) {
                                 : ratio > 0.8 ? tr("near: %.2fx") : tr("safe: %.2fx"),
                     ratio);
     }
+  }
+  // A free body: the momentum the method changes (momentum.hpp), said where it is more than a
+  // rounding or a solver's tolerance would make it (the method table says what each keeps).
+  std::string momentum_line;
+  if (lane.free_since && !sim.trouble()) {
+    const MomentumChange d = momentum_change(*lane.free_since, momentum(sim.model(), sim.state()));
+    momentum_line = format_text(tr("a free body: its momentum changed by %s of sum m|v|, its angular momentum by %s; "
+                                   "%s keeps P: %s, L: %s"),
+                                fmt("%.2g", d.linear).c_str(), fmt("%.2g", d.angular).c_str(), tr(m.label),
+                                tr(kept_text(m.momentum)), tr(kept_text(m.angular_momentum)));
+    if (d.linear > kMomentumVisible) {
+      verdict += fmt(tr("; momentum off by %.2g%%"), 100.0 * d.linear);
+      color = kNear;
+    }
+  }
+  if (lane.inverted_cells > 0 && !sim.trouble()) {
+    verdict += fmt(tr("; %.0f cells inverted"), lane.inverted_cells);
+    color = kNear;
   }
   if (const Divergence* trouble = sim.trouble()) {
     color = kBeyond;
@@ -161,10 +184,13 @@ void gauge(app::Session& session, app::Lane& lane, float width, bool explain) {
   }
   ImGui::Dummy(ImVec2(bar_w, line_h));
   same_line_if_fits(ImGui::CalcTextSize(verdict.c_str()).x);
+  ImGui::PushTextWrapPos(0.0f);  // a verdict longer than the panel wraps, never clips
   ImGui::TextColored(color, "%s", verdict.c_str());
+  ImGui::PopTextWrapPos();
   if (ImGui::IsItemHovered() && limit) ImGui::SetTooltip("%s", tr(m.stability));
   if (!explain || !limit) return;
   if (g_touch) text_wrapped_disabled(tr(m.stability));  // (no hover under a finger)
+  if (!momentum_line.empty()) text_wrapped_disabled(momentum_line);
   if (analysis && !analysis->oscillates()) {
     text_wrapped_disabled(format_text(tr("no oscillating modes (%s); %s"), tr(analysis->no_modes_reason()).c_str(),
                                       describe(*limit).c_str()));

@@ -9,6 +9,7 @@
 
 #include "support.hpp"
 #include "methods/iterative.hpp"
+#include "springlab/cells.hpp"
 #include "springlab/energy.hpp"
 #include "springlab/forces.hpp"
 #include "springlab/iterative_cost.hpp"
@@ -240,6 +241,31 @@ TEST(Iterative, RunsFindThemStableAtAnyStep) {
   const MeasuredLimit measured = measured_limit(Method::LocalGlobal, chain.model, chain.state,
                                                 a.limit(Method::LocalGlobal), a.w_max(), over);
   EXPECT_TRUE(std::isfinite(measured.h)) << measured.h;
+}
+
+// A cell is inverted when a corner's edges turn inside out: the box as loaded has none; one node
+// pushed through the opposite face of its cell inverts that cell and only it; the box mirrored
+// (every x negated: left-handed) has every cell inverted.
+TEST(Cells, InvertedCellsAreCountedByTheirCornersJacobians) {
+  const Scene jelly = test::shipped("jelly");
+  ASSERT_EQ(jelly.cells.size(), 64u);  // 5 x 5 x 5 nodes
+  EXPECT_EQ(inverted_cells(jelly.cells, jelly.state.x), 0);
+  Points pushed = jelly.state.x;
+  const Cell& corner_cell = jelly.cells.front();  // node 0 is only in the first cell
+  pushed.row(corner_cell[0]) = 2.0 * pushed.row(corner_cell[7]) - pushed.row(corner_cell[0]);
+  EXPECT_EQ(inverted_cells(jelly.cells, pushed), 1);
+  Points mirrored = jelly.state.x;
+  mirrored.col(0) *= -1.0;
+  EXPECT_EQ(inverted_cells(jelly.cells, mirrored), 64);
+}
+
+// A loaded balance (an effective stiffness to state) only where the springs carry gravity to pins.
+TEST(Iterative, ALoadedBalanceOnlyWherePinsCarryTheLoad) {
+  EXPECT_TRUE(loaded_balance(test::shipped("chain").model));
+  EXPECT_TRUE(loaded_balance(test::shipped("cloth").model));
+  EXPECT_FALSE(loaded_balance(test::shipped("jelly").model));  // on its ground
+  EXPECT_FALSE(loaded_balance(test::shipped("cloth", {"cloth.pinned=[]"}).model));  // falls freely
+  EXPECT_FALSE(loaded_balance(test::shipped("chain", {"gravity=[0,0,0]"}).model));  // no load
 }
 
 }  // namespace

@@ -35,5 +35,8 @@ MomentumChange momentum_change(const Momentum& from, const Momentum& to);
 /// Kept: a change within this of its scale, rounding over a run's steps (a double's 1e-16 a
 /// particle, a step, summed over thousands of either).
 inline constexpr double kMomentumKept = 1e-9;
+/// Broken for all to see: a change of a thousandth of its scale (a conjugate-gradient solve's
+/// 1e-5 is not; VBD's 10 sweeps on a stiff cloth, 0.84, is).
+inline constexpr double kMomentumVisible = 1e-3;
 
 }  // namespace springlab

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "springlab/cells.hpp"
 #include "springlab/ik.hpp"
 #include "springlab/methods.hpp"
 #include "springlab/model.hpp"
@@ -70,6 +71,7 @@ struct Scene {
   double tolerance = 1e-4;
   Camera camera;
   std::vector<Surface> surfaces;
+  std::vector<Cell> cells;  ///< a box's lattice cells, whose inversion is counted (cells.hpp)
   std::vector<int> trails;  ///< particles whose paths are drawn
   /// Each generator's particles by name: first index and count ("rope:-1" in scripts).
   std::vector<std::pair<std::string, std::pair<int, int>>> named;

@@ -241,6 +241,13 @@ void box(ObjectReader& r, const std::string& name, Builder& b) {
         b.particle(center + R * local, velocity + spin.cross(R * local), mass / double(count),
                    pinned[index(i, j, k) - first]);
       }
+  for (long k = 0; k + 1 < n[2]; ++k)
+    for (long j = 0; j + 1 < n[1]; ++j)
+      for (long i = 0; i + 1 < n[0]; ++i) {
+        Cell cell;
+        for (int c = 0; c < 8; ++c) cell[c] = index(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2 & 1));
+        b.cells.push_back(cell);
+      }
   // Every neighbour in the 3 x 3 x 3 cell around a node: edges, face and body diagonals. The
   // 13 "forward" offsets visit each pair once. k_s = stiffness x rest length (see the header).
   // Rest lengths from the lattice's spacing (as for the cloth), one material for each length.

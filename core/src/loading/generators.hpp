@@ -23,6 +23,7 @@ struct Builder {
   std::vector<Vec3>& x;
   std::vector<Vec3>& v;
   std::vector<Surface>& surfaces;
+  std::vector<Cell>& cells;
   // Particles of each generator, by name: first index and count.
   std::map<std::string, std::pair<int, int>>& named;
   long springs_planned = 0;

@@ -195,7 +195,7 @@ Scene parse_scene(const std::string& text, const std::string& file,
   Model& model = scene.model;
   std::vector<Vec3> x, v;
   std::map<std::string, std::pair<int, int>> named;
-  generators::Builder builder{model, x, v, scene.surfaces, named};
+  generators::Builder builder{model, x, v, scene.surfaces, scene.cells, named};
 
   // Particles declared one by one.
   auto particles = top.objects("particles");

@@ -26,6 +26,7 @@
 
 #include "dynamics/threads.hpp"
 #include "local_global.hpp"
+#include "springlab/iterative_cost.hpp"
 #include "springlab/error.hpp"
 #include "springlab/spring_kernel.hpp"
 #include "steps.hpp"
@@ -253,4 +254,33 @@ void local_global(const Model& model, const State& in, State& out, double h, con
 }
 
 }  // namespace steps
+
+// The plain iteration's contraction an iteration near its fixed point, as a power method finds a
+// spectral radius: successive updates |x_k - x_(k-1)| shrink by it, measured over the last 8 of
+// `iterations` from y.
+double local_global_radius(const Model& model, const State& state, double h, int iterations) {
+  using namespace local_global_parts;
+  IterativeSolvers I;
+  LocalGlobalSolver& S = I.local_global;
+  iterative::predict(model, state, h, I.y, I.mass);
+  factorise(model, h, I.mass, S);
+  Points x = I.y;
+  std::vector<double> updates;
+  for (int k = 0; k < iterations; ++k) {
+    global_rhs(model, state, h, x, I.y, S);
+    solve_in_place(S, S.rhs);
+    double squared = 0.0;
+    for (int i = 0; i < model.particle_count(); ++i)
+      for (int c = 0; c < 3 && S.row[i] >= 0; ++c) {
+        const double next = I.y(i, c) + S.rhs[3 * S.row[i] + c];
+        squared += (next - x(i, c)) * (next - x(i, c));
+        x(i, c) = next;
+      }
+    updates.push_back(std::sqrt(squared));
+  }
+  const int tail = std::min(8, iterations / 2), last = iterations - 1;
+  if (tail < 1 || !(updates[last - tail] > 0.0)) return 0.0;
+  return std::pow(updates[last] / updates[last - tail], 1.0 / tail);
+}
+
 }  // namespace springlab

@@ -227,9 +227,9 @@ Method add_tableau_method(const ButcherTableau& tableau, const std::string& name
 
 const char* kept_text(Kept kept) {
   switch (kept) {
-    case Kept::Exactly: return "kept";
-    case Kept::ToSolverTolerance: return "kept to the solver's tolerance";
-    case Kept::No: return "not kept";
+    case Kept::Exactly: return N_("kept");
+    case Kept::ToSolverTolerance: return N_("kept to the solver's tolerance");
+    case Kept::No: return N_("not kept");
   }
   return "";
 }

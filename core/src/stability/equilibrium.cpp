@@ -38,6 +38,7 @@
 #include "stability/cancel.hpp"
 #include "stability/lanczos.hpp"
 #include "stability/linearised.hpp"
+#include "stability/parts.hpp"
 #include "springlab/forces.hpp"
 #include "springlab/simd.hpp"
 #include "springlab/spring_kernel.hpp"
@@ -49,17 +50,6 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-// Union-find over the particles joined by springs.
-struct Parts {
-  std::vector<int> parent;
-  explicit Parts(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  }
-  void join(int a, int b) { parent[find(a)] = find(b); }
-};
-
 struct Balance {
   const Model& model;
   std::vector<char> weighed;  // gravity acts on it
@@ -68,14 +58,9 @@ struct Balance {
 
   explicit Balance(const Model& m) : model(m), weighed(m.particle_count(), 0), index(m.particle_count(), -1) {
     const int n = m.particle_count();
-    Parts parts(n);
-    for (int s = 0; s < m.spring_count(); ++s)
-      if (m.ks(s) > 0.0) parts.join(m.spring_a[s], m.spring_b[s]);
-    std::vector<char> held(n, 0);
-    for (int i = 0; i < n; ++i)
-      if (m.pinned(i)) held[parts.find(i)] = 1;
+    Parts parts(m);
     for (int i = 0; i < n; ++i) {
-      weighed[i] = !m.pinned(i) && held[parts.find(i)];
+      weighed[i] = !m.pinned(i) && parts.held_part(i);
       if (!m.pinned(i)) index[i] = free++;
     }
   }

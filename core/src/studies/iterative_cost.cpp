@@ -4,6 +4,7 @@
 
 #include "springlab/energy.hpp"
 #include "springlab/stability.hpp"
+#include "stability/parts.hpp"
 
 namespace springlab {
 
@@ -17,6 +18,28 @@ double rms_stretch(const Model& model, const State& state) {
     ++counted;
   }
   return counted > 0 ? std::sqrt(sum / counted) : 0.0;
+}
+
+double length_ratio(const Model& model, const State& state) {
+  double length = 0.0, rest = 0.0;
+  for (int s = 0; s < model.spring_count(); ++s) {
+    if (model.ks(s) <= 0.0) continue;
+    length += (state.x.row(model.spring_b[s]) - state.x.row(model.spring_a[s])).norm();
+    rest += model.rest_length[s];
+  }
+  return rest > 0.0 ? length / rest : 1.0;
+}
+
+bool loaded_balance(const Model& model) {
+  if (model.gravity == Vec3::Zero() || model.has_colliders() || !model.attractors.empty()) return false;
+  Parts parts(model);
+  bool any = false;
+  for (int i = 0; i < model.particle_count(); ++i) {
+    if (model.pinned(i)) continue;
+    if (!parts.held_part(i)) return false;
+    any = true;
+  }
+  return any;
 }
 
 bool at_rest(const Model& model, const State& state, double energy_scale) {
