@@ -169,6 +169,10 @@ using DefiniteRule = DefiniteForm (*)(double verlet_damping);
 enum class Kept { Exactly, ToSolverTolerance, No };
 /// "kept", "kept to the solver's tolerance", "not kept".
 const char* kept_text(Kept kept);
+struct MethodInfo;
+/// What a row keeps, as the README's table writes it: "P", "P, L", "P to the solver's tolerance",
+/// "neither".
+std::string kept_summary(const MethodInfo& method);
 
 /// A row of the method table: a method's name, order, cost, family, what its stability needs
 /// (its tableau's R(z), a closed form, a definite form) and its step function. The app, the

@@ -234,6 +234,17 @@ const char* kept_text(Kept kept) {
   return "";
 }
 
+std::string kept_summary(const MethodInfo& m) {
+  std::string out;
+  for (const auto& [kept, name] : {std::pair{m.momentum, "P"}, std::pair{m.angular_momentum, "L"}}) {
+    if (kept == Kept::No) continue;
+    if (!out.empty()) out += ", ";
+    out += name;
+    if (kept == Kept::ToSolverTolerance) out += " to the solver's tolerance";
+  }
+  return out.empty() ? "neither" : out;
+}
+
 const ButcherTableau* tableau_source(Method method) {
   Table& t = table();
   const std::lock_guard lock(t.adding);
