@@ -293,6 +293,10 @@ ClaimResult judge(const LessonClaim& c, const Session& session, const std::vecto
     }
     case K::ActsAs: {
       const Model& model = lane.sim.model();
+      if (!loaded_balance(model)) {  // (iterative_cost.hpp: no load, no stiffness to act as)
+        out.measured = "no load carried to pins (free, or resting on a collider): no effective stiffness";
+        break;
+      }
       if (!at_rest(model, lane.sim.state(), lane.sim.energy_scale())) {
         out.measured = fmt("not at rest at the end (kinetic energy %.3g J)", kinetic_energy(model, lane.sim.state()));
         break;
