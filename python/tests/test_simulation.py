@@ -116,6 +116,22 @@ def test_every_shipped_scene_loads_steps_and_is_analysed():
         sim = springlab.Simulation(name)
         assert sim.advance(5) == 5, name
         assert np.isfinite(sim.positions).all() and np.isfinite(sim.energy().total), name
+        # The analysis says something true of each: where the scene oscillates, its highest
+        # frequency within Gershgorin's bound, and each row's limit of its kind (stable-at-any-step
+        # rows infinite, adaptive ones none, symplectic Euler's and Verlet's within 2 / w_max,
+        # which damping only shortens); where it does not, the reason.
         analysis = sim.stability()
+        if analysis.oscillates:
+            assert 0 < analysis.w_max <= analysis.w_bound * (1 + 1e-9), name
+        else:
+            assert analysis.no_modes_reason, name
         for row in springlab.methods():
-            analysis.limit(row.name)  # every row has a limit on every scene (0, a step, inf or nan)
+            h = analysis.limit(row.name).h
+            if row.any_step:
+                assert h == math.inf, (name, row.name, h)
+            elif row.adaptive:
+                assert math.isnan(h), (name, row.name, h)
+            elif row.name in ("symplectic-euler", "verlet") and analysis.oscillates:
+                assert 0 < h * analysis.w_max <= 2 * (1 + 1e-9), (name, row.name, h)
+    # On the undamped spring, symplectic Euler's limit is 2 / w exactly (w = 10 rad/s).
+    assert springlab.Simulation("spring").stability().limit("symplectic-euler").h == pytest.approx(0.2, rel=1e-9)

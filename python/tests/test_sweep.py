@@ -2,6 +2,7 @@
 as its results.csv, and the orders of docs/numerics.md."""
 
 import csv
+import json
 
 import numpy as np
 import pytest
@@ -56,10 +57,19 @@ def test_the_runs_are_compares_results(cli, tmp_path, result):
     assert np.allclose([float(r["error"]) for r in rows], runs["error"], rtol=1e-9, atol=0)
 
 
-def test_a_sweep_from_a_loaded_scene_keeps_its_overrides():
-    scene = springlab.load_scene("rope", set={"rope.nodes": 6})
-    r = springlab.sweep(scene, methods="rk4,symplectic-euler", points=2, dt_range=(5e-4, 1e-3), duration=0.05,
-                        stability_budget=0, drift_duration=0, threads=1)
-    assert r.reference.startswith("rk4 at h = ")
-    assert set(r.runs["method"]) == {"rk4", "symplectic-euler"}
-    assert np.all(r.runs["error"] > 0) and np.all(np.isfinite(r.runs["error"]))
+def test_a_sweep_from_a_loaded_scene_keeps_its_overrides(tmp_path):
+    # The same sweep from the scene with its override, and from a file that is that scene: the
+    # same numbers, to the bit (one thread); from the rope as shipped (16 nodes), others.
+    options = dict(methods="rk4,symplectic-euler", points=2, dt_range=(5e-4, 1e-3), duration=0.05,
+                   stability_budget=0, drift_duration=0, threads=1)
+    overridden = springlab.sweep(springlab.load_scene("rope", set={"rope.nodes": 6}), **options)
+    rope = json.loads(open(f"{springlab.data_dir()}/assets/scenes/rope.json").read())
+    rope["generators"][0]["nodes"] = 6
+    (tmp_path / "rope6.json").write_text(json.dumps(rope))
+    six = springlab.sweep(springlab.load_scene(str(tmp_path / "rope6.json")), **options)
+    shipped = springlab.sweep(springlab.load_scene("rope"), **options)
+    assert overridden.reference.startswith("rk4 at h = ")
+    assert set(overridden.runs["method"]) == {"rk4", "symplectic-euler"}
+    assert np.all(overridden.runs["error"] > 0) and np.all(np.isfinite(overridden.runs["error"]))
+    assert np.array_equal(overridden.runs["error"], six.runs["error"])
+    assert not np.array_equal(overridden.runs["error"], shipped.runs["error"])
