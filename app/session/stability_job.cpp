@@ -11,10 +11,25 @@
 
 namespace springlab::app {
 
+namespace {
+std::atomic<int> g_freed_while_locked{0};
+}  // namespace
+
+// What a job shares with its thread. Its mutex says whether it is held, so that freeing it while
+// held (the bug take() once had: a later unlock wrote into freed memory, which no sanitizer sees
+// alone) is counted where it happens (freed_while_locked(), for the tests).
 struct StabilityJob::Shared {
-  std::mutex mutex;
+  struct Mutex {
+    std::mutex m;
+    std::atomic<bool> held{false};
+    void lock() { m.lock(), held = true; }
+    void unlock() { held = false, m.unlock(); }
+  } mutex;
   std::atomic<bool> done{false}, cancel{false};
   Result result;
+  ~Shared() {
+    if (mutex.held) ++g_freed_while_locked;
+  }
 };
 
 namespace {
@@ -127,6 +142,15 @@ std::optional<StabilityJob::Result> StabilityJob::take() {
 }
 
 void StabilityJob::shutdown() { threads().join_all(); }
+
+int StabilityJob::analyses_running() {
+  Threads& all = threads();
+  std::lock_guard lock(all.mutex);
+  return static_cast<int>(std::count_if(all.entries.begin(), all.entries.end(),
+                                        [](const auto& e) { return !e.shared->done; }));
+}
+
+int StabilityJob::freed_while_locked() { return g_freed_while_locked.load(); }
 
 int StabilityJob::threads_alive() {
   Threads& all = threads();

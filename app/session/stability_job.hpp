@@ -41,6 +41,10 @@ class StabilityJob {
   static void shutdown();
   // Threads started and not yet joined (for the tests).
   static int threads_alive();
+  // Of those, the ones still analysing (not cancelled in time, or not cancelled at all).
+  static int analyses_running();
+  // How many jobs' shared states were freed while their mutex was held (0, or a bug).
+  static int freed_while_locked();
 
   struct Shared;  // (the threads' registry holds it too)
 

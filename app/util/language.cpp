@@ -72,9 +72,17 @@ std::string environment_language() {
   std::string locale = get("LC_ALL");
   if (locale.empty()) locale = get("LC_MESSAGES");
   if (locale.empty()) locale = get("LANG");
-  // LANGUAGE, a list ("zh_CN:en"), comes first, except under the C locale (as GNU gettext does).
+  // LANGUAGE, a list in order of preference ("fr:zh_CN:en"), comes first, except under the C
+  // locale (as GNU gettext does): its first language springlab speaks, English included.
   const std::string list = get("LANGUAGE");
-  if (!list.empty() && locale != "C" && locale != "POSIX") return supported_language(list.substr(0, list.find(':')));
+  if (!list.empty() && locale != "C" && locale != "POSIX") {
+    std::istringstream items(list);
+    for (std::string item; std::getline(items, item, ':');) {
+      const std::string lang = supported_language(item);
+      if (lang != "en" || item == "en" || item.rfind("en_", 0) == 0 || item.rfind("en-", 0) == 0) return lang;
+    }
+    return "en";  // (none it speaks: gettext then shows the messages untranslated)
+  }
   return locale.empty() ? "en" : supported_language(locale);
 }
 

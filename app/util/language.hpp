@@ -24,8 +24,8 @@ std::string use_language(const std::string& tag);
 // Throws InputError for a language springlab has no translation for.
 std::string check_language(const std::string& tag, const std::string& what);
 
-// The desktop's language from the environment, as gettext reads it: LANGUAGE (its first entry),
-// then LC_ALL, LC_MESSAGES, LANG; "en" when none is set.
+// The desktop's language from the environment, as gettext reads it: LANGUAGE (the first entry
+// springlab speaks, unless the locale is C), then LC_ALL, LC_MESSAGES, LANG; "en" when none is set.
 std::string environment_language();
 
 // The CJK font's file (the subset of Noto Sans CJK SC the build makes for the translations'

@@ -325,8 +325,11 @@ TEST(Interaction, ALaneStartsAtOnceAndTakesTheAnalysedStepWhenItComes) {
 // closing) leaves no thread behind: its job is cancelled, and shutdown() joins it at once rather
 // than after the seconds a 64 x 64 cloth's analysis takes.
 TEST(Interaction, AClosedSessionLeavesNoAnalysisRunning) {
+  // A 128 x 128 cloth's analysis takes seconds; closing the session must cancel it, so that it
+  // stops within milliseconds on its own, before anything joins it (shutdown() would wait for an
+  // analysis left running, and this test would pass without the cancel if it only joined).
   {
-    Scene scene = test::shipped("cloth", {"cloth.width=64", "cloth.height=64"});
+    Scene scene = test::shipped("cloth", {"cloth.width=128", "cloth.height=128"});
     app::Session session(std::move(scene), settings_for(test::shipped("cloth")), 60.0);
     session.set_background_analysis(true);
     session.advance_frame();
@@ -334,10 +337,13 @@ TEST(Interaction, AClosedSessionLeavesNoAnalysisRunning) {
   }
   EXPECT_GE(app::StabilityJob::threads_alive(), 1);
   const auto t0 = std::chrono::steady_clock::now();
+  while (app::StabilityJob::analyses_running() > 0 && std::chrono::steady_clock::now() - t0 < std::chrono::seconds(1))
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  const double stopped = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_EQ(app::StabilityJob::analyses_running(), 0) << "the closed session's analysis still runs after " << stopped << " s";
   app::StabilityJob::shutdown();
-  const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   EXPECT_EQ(app::StabilityJob::threads_alive(), 0);
-  std::printf("  shutdown joined the cancelled analysis in %.3f s\n", waited);
+  std::printf("  the closed session's analysis stopped in %.3f s\n", stopped);
 }
 
 // The frame loop may take a result after its thread has finished and been joined: the job then
@@ -345,8 +351,8 @@ TEST(Interaction, AClosedSessionLeavesNoAnalysisRunning) {
 // while still using it. take() did: it released a lock on the mutex it had just freed, a write
 // into freed memory (the heap corruption seen once). ThreadSanitizer reported it in the stress
 // test (`scripts/stress.sh tsan`); alone, this test reaches the same path (the job the last
-// owner) but neither sanitizer reported it there, and AddressSanitizer cannot (the write is
-// libc's unlock, not instrumented): it checks the result, and stress.sh runs it too.
+// owner), where neither sanitizer reports it (the write is libc's unlock, not instrumented), so
+// the shared state counts being freed while its lock is held (freed_while_locked()).
 TEST(StabilityJobs, AResultTakenAfterItsThreadIsJoinedIsWhole) {
   const Scene spring = test::shipped("spring");
   app::StabilityJob job;
@@ -354,7 +360,9 @@ TEST(StabilityJobs, AResultTakenAfterItsThreadIsJoinedIsWhole) {
   while (job.running()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
   app::StabilityJob::shutdown();  // joins the thread, and the registry lets go of its share
   EXPECT_EQ(app::StabilityJob::threads_alive(), 0);
-  const auto result = job.take();
+  const int before = app::StabilityJob::freed_while_locked();
+  const auto result = job.take();  // the last owner: the shared state is freed here
+  EXPECT_EQ(app::StabilityJob::freed_while_locked(), before) << "take() freed the job's state while holding its lock";
   ASSERT_TRUE(result);
   EXPECT_EQ(result->version, 7u);
   EXPECT_NEAR(result->analysis->w_max(), 10.0, 1e-9);  // k_s = 100, m = 1

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <thread>
 #include <cstdlib>
 #include <memory>
 
@@ -67,7 +68,21 @@ TEST(Stress, AnalysesSweepsAndLessonStepsBesideTheFrameLoop) {
     ++frames;
   }
   accuracy.sweep.cancel();
+  // Last, a session whose analysis takes seconds (a 128 x 128 cloth), closed while it runs: it is
+  // cancelled and stops within a second on its own, before shutdown() joins anything.
+  {
+    Scene scene = test::shipped("cloth", {"cloth.width=128", "cloth.height=128"});
+    const SimulationSettings settings = settings_for(scene);
+    session = std::make_unique<Session>(std::move(scene), settings, 60.0);
+    session->set_background_analysis(true);
+    session->advance_frame();
+    EXPECT_TRUE(session->analysing());
+  }
   session.reset();
+  const auto closed = Clock::now();
+  while (StabilityJob::analyses_running() > 0 && Clock::now() - closed < std::chrono::seconds(1))
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  EXPECT_EQ(StabilityJob::analyses_running(), 0) << "analyses still running a second after their sessions closed";
   StabilityJob::shutdown();
   EXPECT_EQ(StabilityJob::threads_alive(), 0);
   std::printf("  %ld frames, %ld sessions, %ld sweeps\n", frames, sessions, sweeps);

@@ -3,10 +3,13 @@
 // switches method; no display; bad options.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
 #include <filesystem>
 #include <regex>
 #include <set>
 
+#include "util/language.hpp"
 #include "cli/cli_support.hpp"
 #include "io/png.hpp"
 
@@ -124,6 +127,26 @@ TEST(View, SpeaksTheLanguageOfTheEnvironmentOrOfLang) {
     ASSERT_EQ(r.status, 0) << env << " " << args << "\n" << r.err;
     EXPECT_NE(r.out.find("language   " + expected + "\n"), std::string::npos) << env << " " << args << "\n" << r.out;
   }
+}
+
+// The environment's language without a window (every case gettext's reading decides): LANGUAGE's
+// list before the locale, its first language springlab speaks, ignored under the C locale.
+TEST(View, TheEnvironmentsLanguageAsGettextReadsIt) {
+  const auto with = [](const char* language, const char* lang) {
+    for (const char* name : {"LC_ALL", "LC_MESSAGES"}) unsetenv(name);
+    setenv("LANGUAGE", language, 1);
+    setenv("LANG", lang, 1);
+    return app::environment_language();
+  };
+  EXPECT_EQ(with("zh_CN:en", "en_US.UTF-8"), "zh-CN");
+  EXPECT_EQ(with("en:zh_CN", "zh_CN.UTF-8"), "en");
+  EXPECT_EQ(with("fr:zh_CN:en", "en_US.UTF-8"), "zh-CN");  // (no French: the next it speaks)
+  EXPECT_EQ(with("fr:de", "zh_CN.UTF-8"), "en");            // (none it speaks: untranslated)
+  EXPECT_EQ(with("zh_CN:en", "C"), "en");                   // (the C locale ignores LANGUAGE)
+  EXPECT_EQ(with("", "zh_TW.UTF-8"), "zh-CN");
+  EXPECT_EQ(with("", "en_GB.UTF-8"), "en");
+  unsetenv("LANGUAGE");
+  unsetenv("LANG");
 }
 
 // A lesson in the window: its band across the top (the caption's text), the scene and the panels
