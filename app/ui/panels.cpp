@@ -10,10 +10,9 @@
 #include "chart/imgui_chart.hpp"
 #include "chart/stability_region.hpp"
 #include "draw/palette.hpp"
+#include "ui/gauge_verdict.hpp"
 #include "ui/layout.hpp"
 #include "ui/overlay.hpp"
-#include "springlab/iterative_cost.hpp"
-#include "springlab/momentum.hpp"
 #include "ui/text_wrap.hpp"
 #include "springlab/text.hpp"
 #include "util/language.hpp"
@@ -86,86 +85,21 @@ const StabilityAnalysis* shown_analysis(app::Session& session, app::Lane& lane) 
 // The stability gauge of one lane: h against the method's limit on one row (the verdict on the
 // next when it is long), and with `explain` the limit and the mode that sets it.
 void gauge(app::Session& session, app::Lane& lane, float width, bool explain) {
-  Simulation& sim = lane.sim;
+  const Simulation& sim = lane.sim;
   const MethodInfo& m = method_info(sim.settings().method);
-  const double h = sim.h();
   const StabilityAnalysis* analysis = shown_analysis(session, lane);
-  double fraction = 0.0;
-  ImVec4 color = kNeutral;
-  std::string verdict = tr("analysing...");
   const StabilityLimit* limit = analysis ? &analysis->limit(m.id) : nullptr;
-  if (limit) {
-    if (std::isnan(limit->h)) {
-      fraction = 0.5;
-      verdict = tr("adaptive");
-    } else if (std::isinf(limit->h)) {
-      fraction = std::min(1.0, h * analysis->w_max() / 10.0) * 0.6;
-      color = kSafe;
-      verdict = tr("always stable");
-      // An iterative row pays instead: at rest in softness, its stretch against the spring
-      // model's under the same load; in motion in damping, the energy it takes out beyond the
-      // physics' damping over the last second (iterative_cost.hpp).
-      if (m.family == MethodFamily::Iterative) {
-        const app::History& hist = lane.history;
-        const std::size_t n = hist.t.size(), back = std::min<std::size_t>(n, 61);
-        // Each only where it is defined: the stiffness it acts as where the springs carry a load to
-        // pins, the energy it takes where no collider's contacts take any (iterative_cost.hpp).
-        const bool resting = at_rest(sim.model(), sim.state(), sim.energy_scale());
-        if (resting && loaded_balance(sim.model()) && analysis->rest_stretch() > 0.0) {
-          const double ratio = analysis->rest_stretch() / std::max(rms_stretch(sim.model(), sim.state()), 1e-300);
-          verdict = fmt(tr("bounded; at rest acts as k_s x%.2g"), ratio);
-          if (ratio < 0.5) color = kNear;
-        } else if (!resting && energy_account_closed(sim.model()) && back >= 2 && hist.net.size() == n &&
-                   hist.dissipated.size() == n) {
-          const std::size_t a = n - back, b = n - 1;
-          const double dt = hist.t[b] - hist.t[a];
-          const double lost = -((hist.net[b] - hist.net[a]) + (hist.dissipated[b] - hist.dissipated[a]));
-          // Negative: energy went into the springs' stretch, counted with k_s (XPBD at few passes).
-          if (dt > 0.0 && lost >= 0.0) verdict = fmt(tr("bounded; damps %.2g W extra"), lost / dt);
-          if (dt > 0.0 && lost < 0.0) {
-            verdict = fmt(tr("bounded; +%.2g W into stretch"), -lost / dt);
-            color = kNear;
-          }
-        }
-      }
-    } else if (limit->h == 0.0) {
-      fraction = 1.0;
-      color = kBeyond;
-      verdict = tr("never stable");
-    } else {
-      const double ratio = h / limit->h;
-      fraction = std::min(1.0, ratio / 1.5);
-      color = ratio > 1.0 ? (limit->exact ? kBeyond : kNear) : ratio > 0.8 ? kNear : kSafe;
-      verdict = fmt(ratio > 1.0 ? (limit->exact ? tr("beyond: %.2fx") : tr("past proven: %.2fx"))
-                                : ratio > 0.8 ? tr("near: %.2fx") : tr("safe: %.2fx"),
-                    ratio);
-    }
-  }
-  // A free body: the momentum the method changes (momentum.hpp), said where it is more than a
-  // rounding or a solver's tolerance would make it (the method table says what each keeps).
-  std::string momentum_line;
-  if (lane.free_since && !sim.trouble()) {
-    const MomentumChange d = momentum_change(*lane.free_since, momentum(sim.model(), sim.state()));
-    momentum_line = format_text(tr("a free body: its momentum changed by %s of sum m|v|, its angular momentum by %s; "
-                                   "%s keeps P: %s, L: %s"),
-                                fmt("%.2g", d.linear).c_str(), fmt("%.2g", d.angular).c_str(), tr(m.label),
-                                tr(kept_text(m.momentum)), tr(kept_text(m.angular_momentum)));
-    if (d.linear > kMomentumVisible) {
-      verdict += fmt(tr("; momentum off by %.2g%%"), 100.0 * d.linear);
-      color = kNear;
-    }
-  }
-  if (lane.inverted_cells > 0 && !sim.trouble()) {
-    verdict += fmt(tr("; %.0f cells inverted"), lane.inverted_cells);
-    color = kNear;
-  }
-  if (const Divergence* trouble = sim.trouble()) {
-    color = kBeyond;
-    verdict = explain ? fmt(trouble->unstable ? tr("unstable at %.3g s") : tr("diverged at %.3g s"), trouble->t)
-                      : std::string(trouble->unstable ? tr("unstable") : tr("diverged"));
-  }
+  const GaugeVerdict said = gauge_verdict(lane, analysis, explain);
+  const double fraction = said.fraction;
+  const std::string& verdict = said.text;
+  const std::string& momentum_line = said.momentum;
+  const ImVec4 color = said.tone == Tone::Safe ? kSafe : said.tone == Tone::Near ? kNear
+                       : said.tone == Tone::Beyond ? kBeyond : kNeutral;
   const ImGuiStyle& style = ImGui::GetStyle();
-  const float label_w = ImGui::CalcTextSize(tr("Symplectic Euler ")).x;
+  // The bars line up after the usual label ("Symplectic Euler"); a longer one pushes its bar on
+  // ("Vertex block descent" was drawn under it).
+  const float label_w = std::max(ImGui::CalcTextSize(tr("Symplectic Euler ")).x,
+                                 ImGui::CalcTextSize(tr(m.label)).x + style.ItemSpacing.x);
   ImGui::TextColored(v4(draw::method_color(m.id)), "%s", tr(m.label));
   ImGui::SameLine(label_w + style.WindowPadding.x);
   // The bar (the limit sits at two thirds of it), then the verdict; a verdict too long for the

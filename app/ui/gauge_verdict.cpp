@@ -1,0 +1,95 @@
+#include "ui/gauge_verdict.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "springlab/iterative_cost.hpp"
+#include "springlab/momentum.hpp"
+#include "springlab/text.hpp"
+
+namespace springlab::ui {
+
+GaugeVerdict gauge_verdict(const app::Lane& lane, const StabilityAnalysis* analysis, bool explain) {
+  const Simulation& sim = lane.sim;
+  const MethodInfo& m = method_info(sim.settings().method);
+  const double h = sim.h();
+  GaugeVerdict out;
+  double& fraction = out.fraction;
+  Tone& color = out.tone;
+  std::string& verdict = out.text;
+  verdict = tr("analysing...");
+  const StabilityLimit* limit = analysis ? &analysis->limit(m.id) : nullptr;
+  if (limit) {
+    if (std::isnan(limit->h)) {
+      fraction = 0.5;
+      verdict = tr("adaptive");
+    } else if (std::isinf(limit->h)) {
+      fraction = std::min(1.0, h * analysis->w_max() / 10.0) * 0.6;
+      color = Tone::Safe;
+      verdict = tr("always stable");
+      // An iterative row pays instead: at rest in softness, its stretch against the spring
+      // model's under the same load; in motion in damping, the energy it takes out beyond the
+      // physics' damping over the last second (iterative_cost.hpp).
+      if (m.family == MethodFamily::Iterative) {
+        const app::History& hist = lane.history;
+        const std::size_t n = hist.t.size(), back = std::min<std::size_t>(n, 61);
+        // Each only where it is defined: the stiffness it acts as where the springs carry a load to
+        // pins, the energy it takes where no collider's contacts take any (iterative_cost.hpp).
+        const bool resting = at_rest(sim.model(), sim.state(), sim.energy_scale());
+        if (resting && loaded_balance(sim.model()) && analysis->rest_stretch() > 0.0) {
+          const double ratio = analysis->rest_stretch() / std::max(rms_stretch(sim.model(), sim.state()), 1e-300);
+          verdict = format_text(tr("bounded; at rest acts as k_s x%.2g"), ratio);
+          if (ratio < 0.5) color = Tone::Near;
+        } else if (!resting && energy_account_closed(sim.model()) && back >= 2 && hist.net.size() == n &&
+                   hist.dissipated.size() == n) {
+          const std::size_t a = n - back, b = n - 1;
+          const double dt = hist.t[b] - hist.t[a];
+          const double lost = -((hist.net[b] - hist.net[a]) + (hist.dissipated[b] - hist.dissipated[a]));
+          // Negative: energy went into the springs' stretch, counted with k_s (XPBD at few passes).
+          if (dt > 0.0 && lost >= 0.0) verdict = format_text(tr("bounded; damps %.2g W extra"), lost / dt);
+          if (dt > 0.0 && lost < 0.0) {
+            verdict = format_text(tr("bounded; +%.2g W into stretch"), -lost / dt);
+            color = Tone::Near;
+          }
+        }
+      }
+    } else if (limit->h == 0.0) {
+      fraction = 1.0;
+      color = Tone::Beyond;
+      verdict = tr("never stable");
+    } else {
+      const double ratio = h / limit->h;
+      fraction = std::min(1.0, ratio / 1.5);
+      color = ratio > 1.0 ? (limit->exact ? Tone::Beyond : Tone::Near) : ratio > 0.8 ? Tone::Near : Tone::Safe;
+      verdict = format_text(ratio > 1.0 ? (limit->exact ? tr("beyond: %.2fx") : tr("past proven: %.2fx"))
+                                : ratio > 0.8 ? tr("near: %.2fx") : tr("safe: %.2fx"),
+                    ratio);
+    }
+  }
+  // A free body: the momentum the method changes (momentum.hpp), said where it is more than a
+  // rounding or a solver's tolerance would make it (the method table says what each keeps).
+  std::string& momentum_line = out.momentum;
+  if (lane.free_since && !sim.trouble()) {
+    const MomentumChange d = momentum_change(*lane.free_since, momentum(sim.model(), sim.state()));
+    momentum_line = format_text(tr("a free body: its momentum changed by %s of sum m|v|, its angular momentum by %s; "
+                                   "%s keeps P: %s, L: %s"),
+                                format_text("%.2g", d.linear).c_str(), format_text("%.2g", d.angular).c_str(), tr(m.label),
+                                tr(kept_text(m.momentum)), tr(kept_text(m.angular_momentum)));
+    if (d.linear > kMomentumVisible) {
+      verdict += format_text(tr("; momentum off by %.2g%%"), 100.0 * d.linear);
+      color = Tone::Near;
+    }
+  }
+  if (lane.inverted_cells > 0 && !sim.trouble()) {
+    verdict += format_text(tr("; %d cells inverted"), lane.inverted_cells);
+    color = Tone::Near;
+  }
+  if (const Divergence* trouble = sim.trouble()) {
+    color = Tone::Beyond;
+    verdict = explain ? format_text(trouble->unstable ? tr("unstable at %.3g s") : tr("diverged at %.3g s"), trouble->t)
+                      : std::string(trouble->unstable ? tr("unstable") : tr("diverged"));
+  }
+  return out;
+}
+
+}  // namespace springlab::ui
