@@ -72,7 +72,7 @@ GaugeVerdict gauge_verdict(const app::Lane& lane, const StabilityAnalysis* analy
   if (lane.free_since && !sim.trouble()) {
     const MomentumChange d = momentum_change(*lane.free_since, momentum(sim.model(), sim.state()));
     momentum_line = format_text(tr("a free body: its momentum changed by %s of sum m|v|, its angular momentum by %s; "
-                                   "%s keeps P: %s, L: %s"),
+                                   "%s: P %s, L %s"),
                                 format_text("%.2g", d.linear).c_str(), format_text("%.2g", d.angular).c_str(), tr(m.label),
                                 tr(kept_text(m.momentum)), tr(kept_text(m.angular_momentum)));
     if (d.linear > kMomentumVisible) {

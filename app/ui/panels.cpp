@@ -99,7 +99,7 @@ void gauge(app::Session& session, app::Lane& lane, float width, bool explain) {
   // The bars line up after the usual label ("Symplectic Euler"); a longer one pushes its bar on
   // ("Vertex block descent" was drawn under it).
   const float label_w = std::max(ImGui::CalcTextSize(tr("Symplectic Euler ")).x,
-                                 ImGui::CalcTextSize(tr(m.label)).x + style.ItemSpacing.x);
+                                 ImGui::CalcTextSize((std::string(tr(m.label)) + " ").c_str()).x);
   ImGui::TextColored(v4(draw::method_color(m.id)), "%s", tr(m.label));
   ImGui::SameLine(label_w + style.WindowPadding.x);
   // The bar (the limit sits at two thirds of it), then the verdict; a verdict too long for the

@@ -116,6 +116,9 @@ void bind_methods(py::module_& m) {
       .def_property_readonly("implicit", &MethodInfo::implicit)
       .def_property_readonly("any_step", &MethodInfo::any_step, "stable at any step")
       .def_property_readonly("damping_helps", &MethodInfo::damping_helps, "never stable without damping")
+      .def_property_readonly("keeps", [](const MethodInfo& r) { return kept_summary(r); },
+                             "what it keeps on a free body: \"P\", \"P, L\", \"P to the solver's tolerance\", \"neither\" "
+                             "(P the momentum, L the angular momentum; springlab/momentum.hpp)")
       .def("__repr__", [](const MethodInfo& r) { return std::string("<springlab.MethodInfo '") + r.name + "'>"; });
 
   m.def(

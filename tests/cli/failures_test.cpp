@@ -55,7 +55,6 @@ TEST(Failures, AnEffectiveStiffnessOnlyWhereItIsDefined) {
   const Result jelly = springlab("run jelly --method vbd" + kFrame);
   ASSERT_EQ(jelly.status, 0) << jelly.err;
   EXPECT_EQ(jelly.out.find("act as k_s"), std::string::npos) << jelly.out;
-  EXPECT_NE(jelly.out.find("no effective stiffness to state"), std::string::npos) << jelly.out;
   EXPECT_NE(jelly.out.find("damping    not stated: the colliders' contacts"), std::string::npos) << jelly.out;
   const Result chain = springlab("run chain --method vbd" + kFrame);
   ASSERT_EQ(chain.status, 0) << chain.err;

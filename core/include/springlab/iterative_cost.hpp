@@ -14,7 +14,8 @@ namespace springlab {
 // The RMS over the springs with stiffness of their stretch l - L (m).
 double rms_stretch(const Model& model, const State& state);
 
-// At rest: the kinetic energy at most 1e-6 of the scene's energy scale (energy.hpp).
+// At rest: the kinetic energy at most 1e-6 of the scene's energy scale (energy.hpp), or of its
+// weight's, sum m |g| times its extent, where that is smaller.
 bool at_rest(const Model& model, const State& state, double energy_scale);
 
 // Whether the energy account's remainder, E0 + W - E - dissipated, is the method's own: only
