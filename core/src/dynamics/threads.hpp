@@ -167,8 +167,9 @@ class Team {
 // ---- Parallel loops ------------------------------------------------------------------------------
 //
 // The one place that decides when a loop is worth a second thread: below kParallelWork
-// particle- and spring-visits a pass, one thread is faster than waking another (the figure is
-// measured in README.md, "Threads"). A solver's pass (implicit Euler's products, local-global's
+// particle- and spring-visits a pass, one thread is taken to be faster than waking another. The
+// figure is the force pass's former threshold carried over to every pass, not yet measured for
+// each solver's (the crossover per pass kind is open work, said in issue 41's notes). A solver's pass (implicit Euler's products, local-global's
 // local step, a VBD colour) states its work in the same units: what one force pass over the same
 // particles and springs would visit.
 inline constexpr double kParallelWork = 4096;
