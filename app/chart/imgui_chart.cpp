@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "draw/palette.hpp"
-#include "ui/text_wrap.hpp"
+#include "chart/text_wrap.hpp"
 
 namespace springlab::chart {
 

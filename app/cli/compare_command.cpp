@@ -16,7 +16,7 @@
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
 #include "gfx/offscreen.hpp"
-#include "platform/sweep_options.hpp"
+#include "options/sweep_options.hpp"
 #include "springlab/error.hpp"
 #include "springlab/forces.hpp"
 #include "util/language.hpp"
@@ -30,7 +30,7 @@ namespace {
 struct CompareOptions {
   std::string scene, out;
   SimOptions sim;
-  SweepOptions sweep;  // (platform/sweep_options.hpp: shared with the Python module)
+  SweepOptions sweep;  // (options/sweep_options.hpp: shared with the Python module)
   bool software = false, no_charts = false;
   std::string lang = "en";  // the charts' titles, axes and legends
 };

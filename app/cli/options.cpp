@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "platform/option_ranges.hpp"
+#include "options/option_ranges.hpp"
 #include "springlab/error.hpp"
 #include "springlab/forces.hpp"
 #include "springlab/iterative_cost.hpp"

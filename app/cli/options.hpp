@@ -1,11 +1,11 @@
 // The simulation options every command shares (DESIGN.md, "The command line") as command-line
-// flags; what they mean and how they are checked is platform/scene_options.hpp.
+// flags; what they mean and how they are checked is options/scene_options.hpp.
 #pragma once
 
 #include <CLI/CLI.hpp>
 #include <string>
 
-#include "platform/scene_options.hpp"
+#include "options/scene_options.hpp"
 #include "springlab/scene.hpp"
 #include "springlab/simulation.hpp"
 

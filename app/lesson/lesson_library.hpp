@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "platform/scene_options.hpp"
+#include "options/scene_options.hpp"
 #include "session/session.hpp"
 #include "springlab/lesson.hpp"
 

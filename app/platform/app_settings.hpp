@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "platform/scene_options.hpp"
+#include "options/scene_options.hpp"
 
 namespace springlab::app {
 

@@ -10,7 +10,7 @@
 #include "chart/imgui_chart.hpp"
 #include "draw/palette.hpp"
 #include "springlab/text.hpp"
-#include "ui/text_wrap.hpp"
+#include "chart/text_wrap.hpp"
 
 namespace springlab::ui {
 

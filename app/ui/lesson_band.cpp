@@ -6,7 +6,7 @@
 #include <cfloat>
 #include <numeric>
 
-#include "ui/text_wrap.hpp"
+#include "chart/text_wrap.hpp"
 #include "ui/theme.hpp"
 #include "springlab/text.hpp"
 

@@ -13,7 +13,7 @@
 #include "ui/gauge_verdict.hpp"
 #include "ui/layout.hpp"
 #include "ui/overlay.hpp"
-#include "ui/text_wrap.hpp"
+#include "chart/text_wrap.hpp"
 #include "springlab/text.hpp"
 #include "util/language.hpp"
 

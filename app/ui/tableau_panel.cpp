@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "springlab/error.hpp"
-#include "ui/text_wrap.hpp"
+#include "chart/text_wrap.hpp"
 #include "util/data_dir.hpp"
 #include "springlab/text.hpp"
 

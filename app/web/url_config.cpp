@@ -9,7 +9,7 @@
 #include <sstream>
 #include <vector>
 
-#include "platform/option_ranges.hpp"
+#include "options/option_ranges.hpp"
 #include "springlab/butcher.hpp"
 #include "springlab/error.hpp"
 #include "lesson/lesson_library.hpp"

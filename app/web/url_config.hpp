@@ -5,7 +5,7 @@
 // stability region, lesson=NAME&step=N to teach a lesson from a step (--lesson, --step), and
 // tableau=<a tableau's JSON> (assets/tableaux/README.md) to add a method of one's own, named after
 // its "name" ("My RK" is my-rk), for method= and compare= to use: a teacher sends the link.
-// Every value gets the checks the command line's flags get (platform/scene_options.hpp).
+// Every value gets the checks the command line's flags get (options/scene_options.hpp).
 #pragma once
 
 #include <optional>

@@ -11,7 +11,7 @@
 #include <exception>
 #include <string>
 
-#include "platform/scene_options.hpp"
+#include "options/scene_options.hpp"
 
 int main(int argc, char** argv) {
   using namespace springlab;

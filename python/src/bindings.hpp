@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "platform/scene_options.hpp"
+#include "options/scene_options.hpp"
 #include "springlab/scene.hpp"
 #include "springlab/state.hpp"
 

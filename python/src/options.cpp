@@ -1,12 +1,12 @@
 // Keyword options -> the command line's SimOptions. The values are checked where the command line
-// checks them (app::prepare, platform/scene_options.cpp), so Python and the command line refuse
+// checks them (app::prepare, options/scene_options.cpp), so Python and the command line refuse
 // the same values with the same message; the whole-number options are read as CLI11 reads them
 // (cli/options.cpp, whole_number) and refused with the message it gives.
 #include <algorithm>
 #include <cmath>
 
 #include "bindings.hpp"
-#include "platform/option_ranges.hpp"
+#include "options/option_ranges.hpp"
 #include "springlab/error.hpp"
 #include "util/data_dir.hpp"
 

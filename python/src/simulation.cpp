@@ -6,7 +6,7 @@
 
 #include "bindings.hpp"
 #include "divergence_error.hpp"
-#include "platform/option_ranges.hpp"
+#include "options/option_ranges.hpp"
 #include "springlab/error.hpp"
 #include "springlab/simulation.hpp"
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "bindings.hpp"
-#include "platform/sweep_options.hpp"
+#include "options/sweep_options.hpp"
 #include "springlab/sweep.hpp"
 
 namespace springlab::python {

@@ -11,7 +11,7 @@
 #include "springlab/text.hpp"
 #include "util/language.hpp"
 #include "ui/lesson_band.hpp"
-#include "ui/text_wrap.hpp"
+#include "chart/text_wrap.hpp"
 #include "ui/theme.hpp"
 
 namespace springlab::test {

@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "platform/scene_options.hpp"
+#include "options/scene_options.hpp"
 #include "springlab/sweep.hpp"
 
 namespace springlab::app {

@@ -1,10 +1,10 @@
-#include "platform/scene_options.hpp"
+#include "options/scene_options.hpp"
 
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
 
-#include "platform/option_ranges.hpp"
+#include "options/option_ranges.hpp"
 #include "springlab/error.hpp"
 #include "springlab/forces.hpp"
 #include "util/data_dir.hpp"

@@ -1,4 +1,4 @@
-#include "platform/sweep_options.hpp"
+#include "options/sweep_options.hpp"
 
 #include <algorithm>
 #include <cstdio>

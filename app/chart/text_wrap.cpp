@@ -1,4 +1,4 @@
-#include "ui/text_wrap.hpp"
+#include "chart/text_wrap.hpp"
 
 #include <cfloat>
 #include <string_view>
