@@ -31,8 +31,7 @@ std::string fmt(const char* format, double x) {
 // What a lane did, frame by frame (index k: after k frames).
 struct Record {
   std::vector<double> energy, steps, adaptive_step, rejected, x_error;
-  std::vector<Vec3> momentum, angular;
-  std::vector<Momentum> free_momentum;  // momentum.hpp's, with its scales
+  std::vector<Momentum> momentum;  // of the free particles (momentum.hpp), with its scales
   std::vector<std::int64_t> born;  // particles born so far (emitters)
   std::vector<double> internal;  // kinetic energy besides the rigid motion's
   std::vector<double> time;      // simulated
@@ -55,14 +54,13 @@ void record(const Lane& lane, int frame, Record& r) {
   // Momentum and angular momentum (about the origin) of the free particles; the kinetic energy
   // of their rigid motion: the centre of mass's, and the spin's, L_c^T I^-1 L_c / 2 with L_c and
   // I about the centre of mass (a pseudo-inverse: a straight rope has no inertia about its axis).
-  Vec3 p = Vec3::Zero(), l = Vec3::Zero(), xc = Vec3::Zero();
+  r.momentum.push_back(springlab::momentum(m, s));
+  const Vec3 p = r.momentum.back().linear;
+  Vec3 xc = Vec3::Zero();
   double mass = 0.0;
   for (int i = 0; i < s.particle_count(); ++i)
     if (!m.pinned(i)) {
-      const Vec3 x = s.x.row(i).transpose(), v = s.v.row(i).transpose();
-      p += m.mass[i] * v;
-      l += m.mass[i] * x.cross(v);
-      xc += m.mass[i] * x;
+      xc += m.mass[i] * s.x.row(i).transpose();
       mass += m.mass[i];
     }
   double rigid = 0.0;
@@ -88,9 +86,6 @@ void record(const Lane& lane, int frame, Record& r) {
       if (eig.eigenvalues()[k] > floor) spin += along[k] * along[k] / eig.eigenvalues()[k];
     rigid = 0.5 * p.squaredNorm() / mass + 0.5 * spin;
   }
-  r.momentum.push_back(p);
-  r.free_momentum.push_back(springlab::momentum(m, s));
-  r.angular.push_back(l);
   r.born.push_back(sim.emission().born());
   r.internal.push_back(mass > 0.0 ? std::max(0.0, e.kinetic - rigid) : 0.0);
   if (r.diverged_at < 0 && sim.diverged()) r.diverged_at = frame;
@@ -243,9 +238,10 @@ ClaimResult judge(const LessonClaim& c, const Session& session, const std::vecto
       break;
     }
     case K::MomentumKept: {
-      const double p0 = r.momentum[i0].norm(), l0 = r.angular[i0].norm();
-      const double dp = (r.momentum[sane_end] - r.momentum[i0]).norm() / std::max(p0, 1e-300);
-      const double dl = (r.angular[sane_end] - r.angular[i0]).norm() / std::max(l0, 1e-300);
+      const Momentum &from = r.momentum[i0], &to = r.momentum[sane_end];
+      const double p0 = from.linear.norm(), l0 = from.angular.norm();
+      const double dp = (to.linear - from.linear).norm() / std::max(p0, 1e-300);
+      const double dl = (to.angular - from.angular).norm() / std::max(l0, 1e-300);
       out.measured = fmt("|P| = %.4g kg m/s", p0) + fmt(" changed by %.2g of it", dp) + fmt(", |L| = %.4g kg m^2/s", l0) +
                      fmt(" by %.2g", dl);
       out.passed = p0 > 0.0 && dp <= c.within && l0 > 0.0 && dl <= c.within;
@@ -256,11 +252,11 @@ ClaimResult judge(const LessonClaim& c, const Session& session, const std::vecto
       // Over the window, the largest change from its start: a break need not last to its end.
       double most = 0.0;
       for (int k = i0; k <= sane_end; ++k)
-        most = std::max(most, momentum_change(r.free_momentum[i0], r.free_momentum[k]).linear);
+        most = std::max(most, momentum_change(r.momentum[i0], r.momentum[k]).linear);
       out.measured = fmt("P changed by %.2g of sum m|v|", most) +
-                     fmt(" (%.4g kg m/s)", r.free_momentum[i0].linear_scale) +
+                     fmt(" (%.4g kg m/s)", r.momentum[i0].linear_scale) +
                      (free_body(lane.sim.model()) ? "" : "; not a free body: an outside force acts");
-      out.passed = free_body(lane.sim.model()) && r.free_momentum[i0].linear_scale > 0.0 &&
+      out.passed = free_body(lane.sim.model()) && r.momentum[i0].linear_scale > 0.0 &&
                    (c.kind == K::LinearMomentumKept ? most <= c.within : most > c.above);
       break;
     }
@@ -271,7 +267,7 @@ ClaimResult judge(const LessonClaim& c, const Session& session, const std::vecto
       for (int i = 0; i < m.particle_count(); ++i)
         if (!m.pinned(i)) mass += m.mass[i], ++n;
       const double expected = std::exp(-m.drag * n * (r.time[sane_end] - r.time[i0]) / mass);
-      const double measured = r.momentum[sane_end].norm() / std::max(r.momentum[i0].norm(), 1e-300);
+      const double measured = r.momentum[sane_end].linear.norm() / std::max(r.momentum[i0].linear.norm(), 1e-300);
       out.measured = fmt("speed ratio %.4f", measured) + fmt(" (exp(-k_drag n t / M) = %.4f)", expected);
       out.passed = std::abs(measured / expected - 1.0) <= c.within;
       break;
