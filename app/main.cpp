@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
   commands["bench"] = add_bench_command(app);
   commands["lesson"] = add_lesson_command(app);
   commands["tableau"] = add_tableau_command(app);
+  commands["homework"] = add_homework_command(app);
 
   try {
     app.parse(argc, argv);

@@ -20,6 +20,7 @@ Command add_compare_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
 Command add_lesson_command(CLI::App& app);
 Command add_tableau_command(CLI::App& app);
+Command add_homework_command(CLI::App& app);
 // `springlab` with no subcommand: the app on the default scene.
 Command default_view_command();
 

@@ -1,0 +1,112 @@
+// Homework 8, checked: the rope exercise's code (its constructor, simulateEuler, simulateVerlet)
+// measured against springlab's own methods on the same rope, wherever that code runs (a child
+// process for C++: app/homework/; Python and the browser give their own RopeCode).
+//
+// The checker never trusts the code's account of itself: it builds ropes through the code's
+// constructor, sets states, calls the steps and reads the masses back, then says
+//   - whether the rope is built as asked (spacing, masses, springs, rest lengths, pins);
+//   - which textbook method each step is: one step at a time from the code's own states, against
+//     springlab's explicit Euler, symplectic (semi-implicit) Euler and Verlet rows, with the
+//     code's global damping fitted (a drag -c v for Euler, a factor d for Verlet), to rounding;
+//   - its order measured on a spring against the exact solution, its stability by runs either
+//     side of the limit springlab states for that method, and its energy's rate a step against
+//     the rate the method's amplification matrix predicts;
+//   - the usual mistakes, each from a probe built to show it (a spring stretched one way and
+//     squeezed the other, a rope at rest under gravity, a rope in uniform motion).
+// docs/homework.md explains each check and its tolerances.
+#pragma once
+
+#include <Eigen/Core>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace springlab::homework {
+
+using Vec2 = Eigen::Vector2d;
+
+/// A mass as the exercise keeps it: position, last_position (Verlet), velocity (Euler) and the
+/// forces it has gathered.
+struct MassState {
+  Vec2 x = Vec2::Zero(), x_last = Vec2::Zero(), v = Vec2::Zero(), f = Vec2::Zero();
+};
+using RopeState = std::vector<MassState>;
+
+struct BuiltMass {
+  Vec2 start = Vec2::Zero();  ///< start_position
+  bool pinned = false;
+  double mass = 0.0;
+  MassState state;
+};
+/// A spring as built: the indices of its masses in the rope's list (-1: a mass not in the list).
+struct BuiltSpring {
+  int m1 = -1, m2 = -1;
+  double k = 0.0, rest = 0.0;
+};
+struct BuiltRope {
+  std::vector<BuiltMass> masses;
+  std::vector<BuiltSpring> springs;
+};
+
+/// The constructor's arguments: Rope(start, end, num_nodes, node_mass, k, pinned_nodes).
+struct RopeRequest {
+  Vec2 start = Vec2::Zero(), end = Vec2::Zero();
+  int nodes = 0;
+  double node_mass = 0.0, k = 0.0;
+  std::vector<int> pinned;
+};
+
+enum class Step { Euler, Verlet };  ///< simulateEuler, simulateVerlet
+const char* step_name(Step step);
+
+/// The code could not do what it was asked: it crashed, threw, ran past its time or answered
+/// nonsense. The message says what happened and when, in a sentence.
+struct CodeFailure : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// The student's code, wherever it runs. Every call may throw CodeFailure.
+class RopeCode {
+ public:
+  virtual ~RopeCode() = default;
+  /// Builds a new rope with the code's constructor (the one later calls act on).
+  virtual BuiltRope build(const RopeRequest& request) = 0;
+  /// Sets every mass's position, last_position, velocity and forces.
+  virtual void set_state(const RopeState& state) = 0;
+  /// Calls the step `steps` times with (float) dt and gravity: the state after each call.
+  virtual std::vector<RopeState> simulate(Step step, double dt, const Vec2& gravity, int steps) = 0;
+};
+
+struct CheckLine {
+  enum Kind { Pass, Fail, Note } kind = Note;
+  std::string text;
+};
+struct CheckSection {
+  std::string title;
+  std::vector<CheckLine> lines;
+};
+
+/// What a step was found to be: a row of springlab's table ("euler", "symplectic-euler",
+/// "verlet"; empty: none of them) and the damping fitted to it.
+struct Identified {
+  std::string method;
+  double drag = 0.0;            ///< Euler: the global drag c of f = -c v (N s/m)
+  double verlet_damping = 0.0;  ///< Verlet: d of x1 = x + (1 - d)(x - x_last) + h^2 a
+  double deviation = 0.0;       ///< the largest difference from that row, in units of a step's motion
+};
+
+struct Report {
+  std::vector<CheckSection> sections;
+  Identified euler, verlet;
+  int passed() const;
+  int failed() const;
+};
+
+/// Runs every check. A CodeFailure ends the report where it happened, with its message.
+Report check_rope(RopeCode& code);
+
+/// The report as `springlab homework check` prints it: a section a title, a line a check
+/// ("  ok    ...", "  FAIL  ...", "        ..."), and a last line counting them.
+std::string format_report(const Report& report);
+
+}  // namespace springlab::homework

@@ -1,0 +1,181 @@
+// The step on a spring, against what its row promises: a mass m = 1 kg hanging from a pin by a
+// spring k = 64 N/m (w = 8 rad/s) under g = 8 m/s^2, let go from the spring's rest length, a
+// swing of A = m g / k = 0.125 m about y_eq = -1.125 m. The code's own 2-mass rope, its own steps.
+//   order:     the error at t = 1 s against the exact (damped) oscillation, h = 1/128 ... 1/1024;
+//   stability: runs at 0.9 and 1.1 of the limit springlab states for the row (mode_limit);
+//   energy:    its rate a step over 16 s against the determinant of the row's amplification
+//              matrix on the mode, which is |lambda|^2, the energy's factor a step on average:
+//                explicit Euler  [1, h; -k h, 1 - g h]                  1 - g h + k h^2
+//                symplectic      [1 - k h^2, h (1 - g h); -k h, 1 - g h]   1 - g h
+//                Verlet (y, y_last)  [2 - d - k h^2, -(1 - d); 1, 0]        1 - d
+//              (k: kappa = w^2, g: gamma = c / m).
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <numeric>
+
+#include "parts.hpp"
+#include "springlab/stability.hpp"
+
+namespace springlab::homework {
+
+namespace {
+
+constexpr double kW = 8.0, kMass = 1.0, kG = 8.0, kRest = 1.0;
+constexpr double kKappa = kW * kW;
+constexpr double kYeq = -kRest - kG / kKappa;
+constexpr double kA = kG / kKappa;  // y(0) - y_eq
+const double kTwoPi = 2.0 * std::acos(-1.0);
+
+struct Mode {
+  double gamma = 0.0, d = 0.0;
+  Method row = Method::SymplecticEuler;
+};
+
+// The exact y(t) of y'' = -kappa (y - y_eq) - gamma y', let go at rest from y_eq + A.
+double exact_y(const Mode& m, double t) {
+  const double wd = std::sqrt(kKappa - 0.25 * m.gamma * m.gamma);
+  return kYeq + kA * std::exp(-0.5 * m.gamma * t) * (std::cos(wd * t) + 0.5 * m.gamma / wd * std::sin(wd * t));
+}
+
+std::complex<double> largest_root(double trace, double det) {
+  const std::complex<double> disc = std::sqrt(std::complex<double>(0.25 * trace * trace - det));
+  const std::complex<double> a = 0.5 * trace + disc, b = 0.5 * trace - disc;
+  return std::abs(a) > std::abs(b) ? a : b;
+}
+
+// The row's amplification matrix on the mode at step h: its trace and determinant.
+void amplification(const Mode& m, double h, double& trace, double& det) {
+  const double kh2 = kKappa * h * h, gh = m.gamma * h;
+  switch (m.row) {
+    case Method::Euler: trace = 2.0 - gh, det = 1.0 - gh + kh2; break;
+    case Method::Verlet: trace = 2.0 - m.d - kh2, det = 1.0 - m.d; break;
+    default: trace = 2.0 - kh2 - gh, det = 1.0 - gh; break;
+  }
+}
+
+struct Swing {
+  std::vector<double> y, v;  // y_0 .. y_n, and the code's velocities (Euler)
+};
+
+Swing swing(RopeCode& code, Step step, const Mode& mode, double h, int steps) {
+  const RopeRequest spring{Vec2(0, 0), Vec2(0, -kRest), 2, kMass, kKappa * kMass, {0}};
+  code.build(spring);
+  RopeState s(2);
+  s[1].x = s[1].x_last = Vec2(0.0, -kRest);
+  // Verlet from the exact last position, so that the start costs no order (the exercise's own
+  // start, last_position = position, makes the first velocity h a instead of h a / 2).
+  if (step == Step::Verlet) s[1].x_last.y() = exact_y(mode, -h);
+  code.set_state(s);
+  Swing out;
+  out.y.push_back(s[1].x.y());
+  out.v.push_back(0.0);
+  for (const RopeState& state : code.simulate(step, h, Vec2(0.0, -kG), steps)) {
+    out.y.push_back(state[1].x.y());
+    out.v.push_back(state[1].v.y());
+  }
+  return out;
+}
+
+void check_order(RopeCode& code, Step step, const Mode& mode, CheckSection& section) {
+  const int expected = method_info(mode.row).order;
+  if (mode.row == Method::Verlet && mode.d != 0.0) {
+    note(section, "order: not measured: a damping factor d a step has no limit as h -> 0 (at a fixed d, halving h "
+                  "doubles the damping a second)");
+    return;
+  }
+  std::vector<double> errors;
+  std::string list;
+  for (int k = 7; k <= 10; ++k) {
+    const double h = std::ldexp(1.0, -k);
+    const Swing s = swing(code, step, mode, h, 1 << k);
+    errors.push_back(std::abs(s.y.back() - exact_y(mode, 1.0)));
+    list += (list.empty() ? "" : ", ") + num(errors.back());
+  }
+  const double slope = std::log2(errors[errors.size() - 2] / errors.back());
+  const std::string text = "order " + num(slope) + " measured (" + method_info(mode.row).label + ": " +
+                           std::to_string(expected) + "): errors at t = 1 s against the exact swing " + list +
+                           " m at h = 1/128 ... 1/1024 s";
+  if (std::isfinite(slope) && std::abs(slope - expected) <= 0.15) pass(section, text);
+  else fail(section, text);
+}
+
+void check_stability(RopeCode& code, Step step, const Mode& mode, CheckSection& section) {
+  const double limit = mode_limit(mode.row, mode.gamma, kKappa, mode.d);
+  if (limit == 0.0) {
+    note(section, std::string("stability: ") + method_info(mode.row).label +
+                      " is stable at no step on an undamped spring (its limit is 0): the energy below grows at every step");
+    return;
+  }
+  double trace, det;
+  const double over = as_float(1.1 * limit), under = as_float(0.9 * limit);
+  amplification(mode, over, trace, det);
+  const double growth = std::abs(largest_root(trace, det));
+  const double needed = std::log(1e3) / std::log(growth);  // steps for the swing to grow 1000 times
+  const std::string stated = "springlab's limit for " + std::string(method_info(mode.row).label) + " here: h = " + num(limit) + " s";
+  if (!(needed <= 20000)) {
+    note(section, "stability: " + stated + "; at 1.1 of it the swing grows only x" + num(growth) +
+                      " a step, too slowly to see in 20000 steps (the energy's rate below measures it)");
+    return;
+  }
+  const int steps = std::max(400, static_cast<int>(std::ceil(needed)));
+  auto widest = [&](double h) {
+    double w = 0.0;
+    for (double y : swing(code, step, mode, h, steps).y) w = std::isfinite(y) ? std::max(w, std::abs(y - kYeq)) : INFINITY;
+    return w;
+  };
+  const double calm = widest(under), wild = widest(over);
+  const std::string text = "stability: " + stated + "; over " + std::to_string(steps) + " steps the swing of " + num(kA) +
+                           " m reaches " + num(calm) + " m at 0.9 of it and " + num(wild) + " m at 1.1 of it";
+  if (calm <= 10.0 * kA && wild >= 100.0 * kA) pass(section, text);
+  else fail(section, text + (calm > 10.0 * kA ? " (unstable below the limit)" : " (stable past the limit)"));
+}
+
+void check_energy(RopeCode& code, Step step, const Mode& mode, CheckSection& section) {
+  const double h = 1.0 / 256;
+  const int steps = 4096;
+  const Swing s = swing(code, step, mode, h, steps);
+  std::vector<double> energy;
+  for (int n = 1; n < steps; ++n) {
+    const double v = step == Step::Verlet ? (s.y[n + 1] - s.y[n - 1]) / (2.0 * h) : s.v[n];
+    energy.push_back(0.5 * kMass * v * v + 0.5 * kKappa * kMass * (s.y[n] - kYeq) * (s.y[n] - kYeq));
+  }
+  // Means over a swing at each end, so that the energy's swing within a period cancels.
+  const int period = static_cast<int>(std::lround(kTwoPi / (kW * h)));
+  const int n = static_cast<int>(energy.size());
+  const double first = std::accumulate(energy.begin(), energy.begin() + period, 0.0);
+  const double last = std::accumulate(energy.end() - period, energy.end(), 0.0);
+  const double measured = std::pow(last / first, 1.0 / (n - period));
+  double trace, det;
+  amplification(mode, h, trace, det);
+  const double log_gap = std::abs(std::log(measured) - std::log(det));
+  const std::string says = mode.row == Method::Euler ? "1 + (w h)^2 - (c/m) h"
+                           : mode.row == Method::Verlet ? "1 - d" : "1 - (c/m) h";
+  std::string verdict = det > 1.0 ? "grows" : det < 1.0 ? "falls" : "holds";
+  std::string text = "energy " + verdict + ": x" + std::to_string(measured) + " a step at h = 1/256 s (" +
+                     method_info(mode.row).label + " predicts " + says + " = " + std::to_string(det) + "), x" +
+                     num(last / first) + " over 16 s";
+  if (mode.row == Method::Verlet && mode.d != 0.0)
+    text += "; d is a step's loss, so it takes " + num(100.0 * (1.0 - std::pow(1.0 - mode.d, 1.0 / h))) +
+            " % of the energy a second at this h and about twice that at h/2";
+  if (std::isfinite(log_gap) && log_gap <= 2e-6 + 0.02 * std::abs(std::log(det))) pass(section, text);
+  else fail(section, text);
+}
+
+}  // namespace
+
+void check_on_a_spring(RopeCode& code, Step step, const Identified& found, CheckSection& section) {
+  if (found.method.empty()) {
+    note(section, "order, stability and energy: not measured, since the step is none of the textbook methods");
+    return;
+  }
+  Mode mode;
+  mode.row = *find_method(found.method);
+  mode.gamma = found.drag / kMass;
+  mode.d = found.verlet_damping;
+  check_order(code, step, mode, section);
+  check_stability(code, step, mode, section);
+  check_energy(code, step, mode, section);
+}
+
+}  // namespace springlab::homework
