@@ -17,12 +17,6 @@ std::string hex(double v) {
   return text;
 }
 
-std::string short_number(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g", v);
-  return text;
-}
-
 double number(std::istringstream& in) {
   std::string word;
   in >> word;
@@ -129,7 +123,7 @@ std::vector<RopeState> RopeProcess::simulate(Step step, double dt, const Vec2& g
   std::vector<RopeState> states;
   for (int n = 1; n <= steps; ++n) {
     const std::string doing = name + " (step " + std::to_string(n) + " of " + std::to_string(steps) + ", h = " +
-                              short_number(dt) + " s)";
+                              step_text(dt) + ")";
     next(doing, deadline);  // state n
     RopeState s;
     for (int i = 0; i < masses_; ++i) {

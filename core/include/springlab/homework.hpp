@@ -58,6 +58,8 @@ struct RopeRequest {
 
 enum class Step { Euler, Verlet };  ///< simulateEuler, simulateVerlet
 const char* step_name(Step step);
+/// A step as the report writes it: "1/1024 s" where 1/h is a whole number, else "0.2249 s".
+std::string step_text(double h);
 
 /// The code could not do what it was asked: it crashed, threw, ran past its time or answered
 /// nonsense. The message says what happened and when, in a sentence.

@@ -18,6 +18,7 @@ inline double as_float(double h) { return static_cast<double>(static_cast<float>
 std::string num(double value);
 std::string vec(const Vec2& v);
 
+
 /// The rope as asked, in springlab's terms (springs of the spacing's rest length, k, the pins),
 /// with gravity and the damping fitted to the code.
 Model rope_model(const RopeRequest& request, const Vec2& gravity, double drag = 0.0, double verlet_damping = 0.0);

@@ -18,6 +18,12 @@ std::string num(double value) {
 
 std::string vec(const Vec2& v) { return "(" + num(v.x()) + ", " + num(v.y()) + ")"; }
 
+std::string step_text(double h) {
+  const double inverse = 1.0 / h;
+  if (inverse >= 2.0 && inverse == std::round(inverse)) return "1/" + num(inverse) + " s";
+  return num(h) + " s";
+}
+
 Model rope_model(const RopeRequest& request, const Vec2& gravity, double drag, double verlet_damping) {
   Model model;
   const int material = add_material(model, {request.k, 0.0});
@@ -69,6 +75,7 @@ double step_deviation(const RopeState& before, const RopeState& after, const Rop
   for (size_t i = 0; i < after.size(); ++i) {
     moved = std::max(moved, (after[i].x - before[i].x).norm());
     off = std::max(off, (after[i].x - reference[i].x).norm());
+    if (!velocities) off = std::max(off, (after[i].x_last - reference[i].x_last).norm());  // Verlet's bookkeeping
     dv = std::max(dv, (after[i].v - before[i].v).norm());
     off_v = std::max(off_v, (after[i].v - reference[i].v).norm());
   }
@@ -171,7 +178,7 @@ Identified identify(RopeCode& code, Step step, const RopeRequest& request, Check
   std::string names;
   for (Method r : rows) names += std::string(names.empty() ? "" : " or ") + method_info(r).label;
   fail(section, std::string(step_name(step)) + " is not " + names + ", with or without damping: over " + where +
-                    ", the nearest (" + row.label + ", " + damping + ") is off by " + num(best.deviation) +
+                    ", the nearest, " + row.label + ", is off by " + num(best.deviation) +
                     " of a step's motion (rounding: 1e-10); the probes below say where");
   best.method.clear();
   return best;

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <cstdio>
 #include <numeric>
 
 #include "parts.hpp"
@@ -57,6 +58,12 @@ void amplification(const Mode& m, double h, double& trace, double& det) {
 struct Swing {
   std::vector<double> y, v;  // y_0 .. y_n, and the code's velocities (Euler)
 };
+
+std::string precise(double factor) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.9f", factor);
+  return text;
+}
 
 Swing swing(RopeCode& code, Step step, const Mode& mode, double h, int steps) {
   const RopeRequest spring{Vec2(0, 0), Vec2(0, -kRest), 2, kMass, kKappa * kMass, {0}};
@@ -114,7 +121,7 @@ void check_stability(RopeCode& code, Step step, const Mode& mode, CheckSection& 
   const double needed = std::log(1e3) / std::log(growth);  // steps for the swing to grow 1000 times
   const std::string stated = "springlab's limit for " + std::string(method_info(mode.row).label) + " here: h = " + num(limit) + " s";
   if (!(needed <= 20000)) {
-    note(section, "stability: " + stated + "; at 1.1 of it the swing grows only x" + num(growth) +
+    note(section, "stability: " + stated + "; at 1.1 of it the swing grows only x" + precise(growth) +
                       " a step, too slowly to see in 20000 steps (the energy's rate below measures it)");
     return;
   }
@@ -126,7 +133,7 @@ void check_stability(RopeCode& code, Step step, const Mode& mode, CheckSection& 
   };
   const double calm = widest(under), wild = widest(over);
   const std::string text = "stability: " + stated + "; over " + std::to_string(steps) + " steps the swing of " + num(kA) +
-                           " m reaches " + num(calm) + " m at 0.9 of it and " + num(wild) + " m at 1.1 of it";
+                           " m reaches " + num(calm) + " m at h = " + step_text(under) + " (0.9 of it) and " + num(wild) + " m at h = " + step_text(over) + " (1.1 of it)";
   if (calm <= 10.0 * kA && wild >= 100.0 * kA) pass(section, text);
   else fail(section, text + (calm > 10.0 * kA ? " (unstable below the limit)" : " (stable past the limit)"));
 }
@@ -152,8 +159,8 @@ void check_energy(RopeCode& code, Step step, const Mode& mode, CheckSection& sec
   const std::string says = mode.row == Method::Euler ? "1 + (w h)^2 - (c/m) h"
                            : mode.row == Method::Verlet ? "1 - d" : "1 - (c/m) h";
   std::string verdict = det > 1.0 ? "grows" : det < 1.0 ? "falls" : "holds";
-  std::string text = "energy " + verdict + ": x" + std::to_string(measured) + " a step at h = 1/256 s (" +
-                     method_info(mode.row).label + " predicts " + says + " = " + std::to_string(det) + "), x" +
+  std::string text = "energy " + verdict + ": x" + precise(measured) + " a step at h = 1/256 s (" +
+                     method_info(mode.row).label + " predicts " + says + " = " + precise(det) + "), x" +
                      num(last / first) + " over 16 s";
   if (mode.row == Method::Verlet && mode.d != 0.0)
     text += "; d is a step's loss, so it takes " + num(100.0 * (1.0 - std::pow(1.0 - mode.d, 1.0 / h))) +

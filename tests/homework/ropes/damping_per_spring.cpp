@@ -1,0 +1,3 @@
+// A rope.cpp with one planted mistake (rope_with.hpp: DAMPING_PER_SPRING).
+#define DAMPING_PER_SPRING
+#include "rope_with.hpp"

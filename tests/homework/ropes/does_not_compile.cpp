@@ -1,0 +1,11 @@
+// A rope.cpp that does not compile: simulateVerlet uses a name it never declared.
+#include "CGL/vector2D.h"
+#include "mass.h"
+#include "rope.h"
+#include "spring.h"
+
+namespace CGL {
+Rope::Rope(Vector2D start, Vector2D end, int num_nodes, float node_mass, float k, vector<int> pinned_nodes) {}
+void Rope::simulateEuler(float delta_t, Vector2D gravity) {}
+void Rope::simulateVerlet(float delta_t, Vector2D gravity) { damping += 1; }
+}  // namespace CGL

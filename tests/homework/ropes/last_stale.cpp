@@ -1,0 +1,3 @@
+// A rope.cpp with one planted mistake (rope_with.hpp: LAST_STALE).
+#define LAST_STALE
+#include "rope_with.hpp"

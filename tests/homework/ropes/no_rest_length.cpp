@@ -1,0 +1,3 @@
+// A rope.cpp with one planted mistake (rope_with.hpp: NO_REST_LENGTH).
+#define NO_REST_LENGTH
+#include "rope_with.hpp"
