@@ -18,7 +18,8 @@ namespace fs = std::filesystem;
 const std::vector<std::string> kCourse = {"hooke",       "damping-vs-drag",    "euler-explodes",
                                           "damping-buys-a-limit", "midpoint-modified-euler", "adaptive-step",
                                           "implicit-stiff", "rk4-work-precision", "particle-systems",
-                                          "inverse-kinematics", "what-games-use", "write-your-own-step"};
+                                          "inverse-kinematics", "what-games-use", "write-your-own-step",
+                                          "homework-8"};
 
 class ShippedLesson : public ::testing::TestWithParam<std::string> {};
 

@@ -13,6 +13,7 @@ from decimal import Decimal
 springlab, root = sys.argv[1], sys.argv[2]
 NUMBER = r"([-+]?[0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?)"
 CHAIN = "run chain --dt 0.0333333 --substeps 1 --duration 30 --method "
+VERLET_D = "run spring --method verlet --substeps 1 --set verlet_damping=0.00005 --duration 8 --dt "  # lesson 13's d
 
 # (document, its sentence with {} for the figure, command, its output with {} for the value, kind)
 # kind: "rounded" (the value rounded to the document's digits is the document's) or "bound" (the
@@ -44,6 +45,17 @@ FIGURES = [
     ("README.md", "the same x{} a step at hω = 0.5", "lesson check", "heun: energy grows by x1.015625 a step: x{} a step", "rounded"),
     ("README.md", "Heun with one wrong entry drops to {};", "lesson check", "heun 2.00 heun-wrong {} ;", "rounded"),
     ("README.md", "keeps the undamped spring's energy to {} of its scale", "lesson check", "implicit-midpoint: energy stays within 1e-09 of its scale: within {} of", "rounded"),
+    ("README.md", "despite the drag and diverges at t = {} s,", "lesson check", "euler: diverges by t = 2.2 s: diverged at t = {} s", "rounded"),
+    ("README.md", "keep the falling rope's energy (to {} and", "lesson check", "symplectic-euler: energy stays within 1e-05 of its scale: within {} of", "rounded"),
+    ("README.md", "and {} of its scale); Verlet's", "lesson check", "verlet: energy stays within 2e-07 of its scale: within {} of", "rounded"),
+    ("README.md", "x{} a step at h = 1/1024 s", "lesson check", "step 4: Verlet's damping d\n    ok    energy decays by x0.99995 a step: x{} a step", "rounded"),
+    ("README.md", "and x{} at h = 1/2048 s", "lesson check", "step 5: Half the step, twice the damping\n    ok    energy decays by x0.99995 a step: x{} a step", "rounded"),
+    ("README.md", "falls in 8 s to {} J and", VERLET_D + "0.0009765625", "total {} J (initially 12.5 J)", "rounded"),
+    ("README.md", "and to {} J; on the spring", VERLET_D + "0.00048828125", "total {} J (initially 12.5 J)", "rounded"),
+    ("README.md", "orders {} (explicit Euler),", "lesson check", "most accurate for its cost: verlet: euler {} ", "rounded"),
+    ("README.md", "{} (semi-implicit) and", "lesson check", "verlet: euler 1.03 symplectic-euler {} verlet ", "rounded"),
+    ("README.md", "and {} (Verlet), as the checker", "lesson check", " verlet {} ;", "rounded"),
+    ("README.md", "their stated limit of {} s", "lesson check", "verlet: stated stability limit h = 0.2 s: stated limit h = {} s", "rounded"),
     # What a large step costs the practitioners' methods: the chain at one step a frame.
     ("README.md", "XPBD's one pass leaves its springs acting as k_s x {} at rest", CHAIN + "xpbd", "act as k_s x {}\n", "rounded"),
     ("README.md", "at rest (VBD x {},", CHAIN + "vbd", "act as k_s x {}\n", "rounded"),

@@ -17,9 +17,12 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "springlab/methods.hpp"
 
 namespace springlab::homework {
 
@@ -92,6 +95,7 @@ struct CheckSection {
 /// "verlet"; empty: none of them) and the damping fitted to it.
 struct Identified {
   std::string method;
+  bool velocity_verlet = false;  ///< Verlet as a step of (x, v): x + h v + h^2/2 a, v + h/2 (a + a1)
   double drag = 0.0;            ///< Euler: the global drag c of f = -c v (N s/m)
   double verlet_damping = 0.0;  ///< Verlet: d of x1 = x + (1 - d)(x - x_last) + h^2 a
   double deviation = 0.0;       ///< the largest difference from that row, in units of a step's motion
@@ -106,6 +110,16 @@ struct Report {
 
 /// Runs every check. A CodeFailure ends the report where it happened, with its message.
 Report check_rope(RopeCode& code);
+
+/// A whole step of the student's own, over springlab's state (Python's fn(x, v, force, h) ->
+/// (x, v), with force(x, v) the core's accelerations): (x, v) advanced by h on `model`, the
+/// forces asked for through accelerations(model, x, v, a, ws). As SimulationSettings::own_step.
+using OwnStep = std::function<void(const Model& model, const State& in, State& out, double h, Workspace& ws)>;
+
+/// The same checks for such a step: which of springlab's fixed-step rows it is (on the rope
+/// falling from rest, step by step from its own states), whether it holds a pin, then its order,
+/// stability and energy on the spring against that row's. `name` names it in the report.
+Report check_step(const OwnStep& step, const std::string& name);
 
 /// The report as `springlab homework check` prints it: a section a title, a line a check
 /// ("  ok    ...", "  FAIL  ...", "        ..."), and a last line counting them.

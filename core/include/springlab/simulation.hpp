@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -57,6 +58,13 @@ struct SimulationSettings {
   /// The audit's window in seconds (energy_audit.hpp; tests shorten it to see the audit at work
   /// within a run a budget cuts short).
   double audit_window = EnergyAudit::kWindow;
+  /// A step from outside the method table (a student's own, from Python: springlab.homework),
+  /// taken instead of `method`'s row, which then only stands for the scene's defaults. Nothing
+  /// that needs a row's theory reads it (no stability analysis explains its divergence, no audit
+  /// watches it, sub-steps stay as set); the divergence tests watch it as any step. It counts its
+  /// force evaluations through `ws` (accelerations(), methods.hpp). Named `own_step_name`.
+  std::function<void(const Model& model, const State& in, State& out, double h, Workspace& ws)> own_step;
+  std::string own_step_name;
 };
 
 /// A scene's own settings: its first method, its step, its sub-steps (automatic unless it fixes
@@ -88,6 +96,7 @@ struct Divergence {
   bool unstable = false;
   EnergyAudit::Finding audit;
   std::string reason;
+  std::string own_step;  ///< the name of a step from outside the table, if it was one
 
   std::string message() const;  ///< one paragraph for people
 };

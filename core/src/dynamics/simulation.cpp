@@ -54,12 +54,14 @@ std::string Divergence::message() const {
                                             "%s. Method %s, h = %.4g s")
                                        : tr("diverged during step %lld (last good state at t = %.4g s): %s. Method %s, "
                                             "h = %.4g s"),
-                              static_cast<long long>(step), t, reason.c_str(), method_info(method).name, h);
+                              static_cast<long long>(step), t, reason.c_str(),
+                              own_step.empty() ? method_info(method).name : own_step.c_str(), h);
   if (analysed)
     s += format_text(tr(", h w_max = %.4g (w_max = %.4g rad/s); limit: %s"), h * w_max, w_max, describe(limit).c_str());
   if (analysed && limit.mode && std::isfinite(limit.h) && limit.h > 0.0)
     s += format_text(tr(", set by a mode of %.4g rad/s with damping ratio %.4g"), limit.mode->w,
                      limit.mode->damping_ratio());
+  if (!own_step.empty()) return s + tr(". A step of your own has no stated limit: try a smaller --dt or more --substeps.");
   if (analysed && limit.h == 0.0)
     s += tr(". No step is small enough: try a method stable without damping (symplectic-euler, verlet, rk4, "
             "implicit-euler), or more damping.");
@@ -120,7 +122,7 @@ void Simulation::reset() {
 // steps. A held particle is moved by the user, not the method: the audit waits for its release.
 bool Simulation::audited() const {
   const Method m = settings_.method;
-  return settings_.audit_fraction > 0.0 && method_info(m).audited && has_stiffness_ && grabbed_ < 0;
+  return settings_.audit_fraction > 0.0 && method_info(m).audited && has_stiffness_ && grabbed_ < 0 && !settings_.own_step;
 }
 
 void Simulation::audit_changed() {
@@ -191,7 +193,8 @@ bool Simulation::step() {
   ws_.measure_power = dissipation;
   for (int k = 0; k < settings_.substeps; ++k) {
     try {
-      springlab::step(settings_.method, model_, current_, next_, h, settings_.step, ws_);
+      if (settings_.own_step) settings_.own_step(model_, current_, next_, h, ws_);
+      else springlab::step(settings_.method, model_, current_, next_, h, settings_.step, ws_);
     } catch (const StepFailure& failure) {
       ++steps_;
       diverge(failure.what());
@@ -284,6 +287,7 @@ Divergence Simulation::report(std::string reason) const {
   d.step = steps_;
   d.t = current_.t;
   d.method = settings_.method;
+  d.own_step = settings_.own_step ? settings_.own_step_name : std::string();
   d.h = h();
   d.reason = std::move(reason);
   return d;
@@ -297,7 +301,7 @@ void Simulation::diverge(std::string reason) {
 }
 
 void Simulation::explain(Divergence& d) {
-  if (d.analysed) return;
+  if (d.analysed || settings_.own_step) return;  // no row, no theory to explain it by
   // The analysis of the scene as it is (kept, or made from the last good state, which is finite).
   const StabilityAnalysis& analysis = stability();
   d.w_max = analysis.w_max();
@@ -369,6 +373,7 @@ void Simulation::set_analyse_when_needed(bool on) {
 
 void Simulation::set_method(Method method) {
   settings_.method = method;
+  settings_.own_step = nullptr;  // a row of the table from now on
   quick_tried_ = false;
   audit_changed();  // a new step: what a stable run may do changes
   ws_.invalidate();

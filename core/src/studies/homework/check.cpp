@@ -26,9 +26,7 @@ int Report::failed() const {
 
 namespace {
 
-// The rope the steps are measured on: 16 masses of 0.25 kg, 0.5 m apart, k = 64 N/m, pinned at
-// one end (every figure exact in float, so the code and springlab see the same numbers).
-const RopeRequest kRope{Vec2(0, 0), Vec2(7.5, 0), 16, 0.25, 64.0, {0}};
+const RopeRequest kRope = checked_rope();
 // A second, slanted and pinned at both ends, for the constructor only.
 const RopeRequest kSlanted{Vec2(1, 2), Vec2(-3, -1), 5, 0.5, 100.0, {0, 4}};
 
@@ -135,7 +133,8 @@ Report check_rope(RopeCode& code) {
     try {
       found = identify(code, step, kRope, section);
       probe_mistakes(code, step, found, section);
-      check_on_a_spring(code, step, found, section);
+      check_on_a_spring([&](double h, int steps, double y_before) { return rope_swing(code, step, h, steps, y_before); },
+                        found, section);
     } catch (const CodeFailure& e) {
       fail(section, e.what());
     }

@@ -70,6 +70,13 @@ RopeState reference_step(Method method, const Model& model, const RopeState& sta
   return next;
 }
 
+State reference_step(Method method, const Model& model, const State& state, double h) {
+  State out;
+  Workspace ws;
+  step(method, model, state, out, h, StepSettings{}, ws);
+  return out;
+}
+
 double step_deviation(const RopeState& before, const RopeState& after, const RopeState& reference, bool velocities) {
   double moved = 0.0, off = 0.0, dv = 0.0, off_v = 0.0;
   for (size_t i = 0; i < after.size(); ++i) {
@@ -132,14 +139,13 @@ double fit_damping(Step step, const Model& undamped, const std::vector<RopeState
   return step == Step::Euler ? num / den : 1.0 - num / den;
 }
 
-constexpr double kMatch = 1e-6;  // of a step's motion: rounding is 1e-10 here, float forces 1e-7
-constexpr int kSteps = 64;
+constexpr int kSteps = kCheckSteps;
 
 }  // namespace
 
 Identified identify(RopeCode& code, Step step, const RopeRequest& request, CheckSection& section) {
-  const double h = 1.0 / 1024;
-  const Vec2 g(0.0, -8.0);
+  const double h = kCheckStep;
+  const Vec2 g = kCheckGravity;
   const BuiltRope rope = code.build(request);
   RopeState start;
   for (const BuiltMass& m : rope.masses) start.push_back(m.state);
@@ -158,7 +164,11 @@ Identified identify(RopeCode& code, Step step, const RopeRequest& request, Check
       for (size_t n = 0; n + 1 < run.size(); ++n)
         worst = std::max(worst, step_deviation(run[n], run[n + 1], reference_step(row, model, run[n], h), step == Step::Euler));
       if (worst < best.deviation) {
-        best = {method_info(row).name, step == Step::Euler ? damping : 0.0, step == Step::Verlet ? damping : 0.0, worst};
+        best = {};
+        best.method = method_info(row).name;
+        best.drag = step == Step::Euler ? damping : 0.0;
+        best.verlet_damping = step == Step::Verlet ? damping : 0.0;
+        best.deviation = worst;
       }
     }
   }

@@ -1,0 +1,132 @@
+// The homework checker on steps written here in C++ as a student would write them in Python
+// (homework.hpp's OwnStep: (x, v) -> (x, v), forces from the core): each textbook step is named
+// as springlab's row, measured at its order, and its energy's rate is the row's; a step that is
+// none of them is said to be none, and never named; and a Simulation takes such a step as its own.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "springlab/homework.hpp"
+#include "springlab/simulation.hpp"
+
+namespace springlab {
+namespace {
+
+using homework::CheckLine;
+using homework::OwnStep;
+using homework::Report;
+
+Points accel(const Model& m, const Points& x, const Points& v, Workspace& ws) {
+  Points a;
+  accelerations(m, x, v, a, ws);
+  return a;
+}
+
+const OwnStep kExplicitEuler = [](const Model& m, const State& in, State& out, double h, Workspace& ws) {
+  const Points a = accel(m, in.x, in.v, ws);
+  out.x = in.x + h * in.v;
+  out.v = in.v + h * a;
+};
+const OwnStep kVelocityVerlet = [](const Model& m, const State& in, State& out, double h, Workspace& ws) {
+  const Points a = accel(m, in.x, in.v, ws);
+  out.x = in.x + h * in.v + (0.5 * h * h) * a;
+  const Points a1 = accel(m, out.x, in.v, ws);
+  out.v = in.v + (0.5 * h) * (a + a1);
+};
+const OwnStep kRk4 = [](const Model& m, const State& in, State& out, double h, Workspace& ws) {
+  const Points k1v = accel(m, in.x, in.v, ws);
+  const Points x2 = in.x + 0.5 * h * in.v, v2 = in.v + 0.5 * h * k1v;
+  const Points k2v = accel(m, x2, v2, ws);
+  const Points x3 = in.x + 0.5 * h * v2, v3 = in.v + 0.5 * h * k2v;
+  const Points k3v = accel(m, x3, v3, ws);
+  const Points x4 = in.x + h * v3, v4 = in.v + h * k3v;
+  const Points k4v = accel(m, x4, v4, ws);
+  out.x = in.x + (h / 6.0) * (in.v + 2.0 * v2 + 2.0 * v3 + v4);
+  out.v = in.v + (h / 6.0) * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
+};
+// Half a step of gravity forgotten: x + h v + h^2 a / 4. A step of no textbook's.
+const OwnStep kMadeUp = [](const Model& m, const State& in, State& out, double h, Workspace& ws) {
+  const Points a = accel(m, in.x, in.v, ws);
+  out.v = in.v + h * a;
+  out.x = in.x + h * in.v + (0.25 * h * h) * a;
+};
+
+std::string text(const Report& r) { return homework::format_report(r); }
+
+double number_after(const std::string& s, const std::string& before) {
+  const std::size_t at = s.find(before);
+  return at == std::string::npos ? std::nan("") : std::stod(s.substr(at + before.size()));
+}
+
+TEST(Homework, EachTextbookStepIsNamedAsItsRowAndMeasuredAtItsOrder) {
+  struct Case {
+    const OwnStep* step;
+    const char* row;
+    double order;
+  };
+  for (const Case& c : {Case{&kExplicitEuler, "euler", 1.0}, Case{&kVelocityVerlet, "verlet", 2.0}, Case{&kRk4, "rk4", 4.0}}) {
+    const Report r = homework::check_step(*c.step, "fn");
+    const std::string t = text(r);
+    EXPECT_EQ(r.euler.method, c.row) << t;
+    EXPECT_EQ(r.failed(), 0) << t;
+    EXPECT_NEAR(number_after(t, "order "), c.order, 0.15) << t;
+  }
+}
+
+// Explicit Euler's energy grows by exactly 1 + (w h)^2 a step on the undamped spring (w = 8
+// rad/s, h = 1/256 s: 1.0009765625); velocity Verlet's holds.
+TEST(Homework, TheEnergyRateIsTheRowsOwn) {
+  const std::string euler = text(homework::check_step(kExplicitEuler, "fn"));
+  EXPECT_NE(euler.find("energy grows: x1.00097"), std::string::npos) << euler;
+  EXPECT_NE(euler.find("= 1.000976562"), std::string::npos) << euler;
+  const std::string verlet = text(homework::check_step(kVelocityVerlet, "fn"));
+  EXPECT_NE(verlet.find("energy holds"), std::string::npos) << verlet;
+}
+
+TEST(Homework, AStepOfNoTextbookIsNeverNamed) {
+  const Report r = homework::check_step(kMadeUp, "fn");
+  EXPECT_EQ(r.euler.method, "") << text(r);
+  EXPECT_NE(text(r).find("fn is none of springlab's explicit fixed-step rows"), std::string::npos) << text(r);
+  EXPECT_GT(r.failed(), 0);
+}
+
+TEST(Homework, ASimulationTakesAStepOfItsOwnAndNamesItWhenItDiverges) {
+  // Two particles on a stiff spring, explicit Euler of one's own at a step past any use: it
+  // diverges, and the message names the own step, with no row's limit to explain it.
+  Model m;
+  const int material = add_material(m, {1e4, 0.0});
+  add_particle(m, 1.0, true);
+  add_particle(m, 1.0, false);
+  add_spring(m, 0, 1, 1.0, material);
+  finalize(m);
+  State s;
+  s.resize(2);
+  s.x.setZero();
+  s.v.setZero();
+  s.x(1, 0) = 1.1;
+  SimulationSettings settings;
+  settings.method = Method::SymplecticEuler;
+  settings.dt = 0.05;
+  settings.own_step = [](const Model& model, const State& in, State& out, double h, Workspace& ws) {
+    kExplicitEuler(model, in, out, h, ws);
+  };
+  settings.own_step_name = "my_euler";
+  Simulation sim(m, s, settings);
+  EXPECT_LT(sim.advance(1000), 1000);
+  ASSERT_TRUE(sim.divergence());
+  const std::string message = sim.explain_divergence()->message();
+  EXPECT_NE(message.find("Method my_euler"), std::string::npos) << message;
+  EXPECT_NE(message.find("A step of your own has no stated limit"), std::string::npos) << message;
+  EXPECT_GT(sim.counters().force_evals, 0);  // it asked for its forces through the workspace
+  // The same run with the row itself diverges at the same step: the own step is explicit Euler.
+  settings.own_step = nullptr;
+  settings.method = Method::Euler;
+  settings.audit_fraction = 0.0;
+  Simulation row(m, s, settings);
+  row.advance(1000);
+  ASSERT_TRUE(row.divergence());
+  EXPECT_EQ(row.divergence()->step, sim.divergence()->step);
+}
+
+}  // namespace
+}  // namespace springlab
