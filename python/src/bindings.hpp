@@ -9,6 +9,7 @@
 //   simulation.cpp  Simulation: stepped; its state as numpy views; energies; divergence
 //   stability.cpp   StabilityAnalysis: each method's limit and its limiting mode
 //   sweep.cpp       sweep(): accuracy against cost, as numpy arrays
+//   homework.cpp    a step of one's own (fn(x, v, force, h)) and springlab.homework.check
 #pragma once
 
 #include <pybind11/eigen.h>
@@ -34,6 +35,7 @@ void bind_scenes(py::module_& m);
 void bind_stability(py::module_& m);
 void bind_simulation(py::module_& m);
 void bind_sweep(py::module_& m);
+void bind_homework(py::module_& m);
 
 // A scene as load_scene() gave it, and where it came from: a Simulation or a sweep made from it
 // loads it again through the command line's own path (app::prepare), options and all.

@@ -13,4 +13,5 @@ PYBIND11_MODULE(_springlab, m) {
   bind_stability(m);
   bind_simulation(m);
   bind_sweep(m);
+  bind_homework(m);
 }

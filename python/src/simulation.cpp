@@ -6,6 +6,7 @@
 
 #include "bindings.hpp"
 #include "divergence_error.hpp"
+#include "own_step.hpp"
 #include "options/option_ranges.hpp"
 #include "springlab/error.hpp"
 #include "springlab/simulation.hpp"
@@ -20,7 +21,15 @@ struct PySimulation {
   std::unique_ptr<Simulation> sim;
 };
 
-std::unique_ptr<PySimulation> make(const py::object& scene, const py::kwargs& kw) {
+std::unique_ptr<PySimulation> make(const py::object& scene, const py::kwargs& given) {
+  // method= a function: a step of one's own (own_step.hpp) in place of a row, which is then the
+  // scene's own method, standing for its defaults (sub-steps: as given, or those it would take).
+  py::kwargs kw;
+  py::object own;
+  for (const auto& [key, value] : given) {
+    if (key.cast<std::string>() == "method" && PyCallable_Check(value.ptr())) own = py::reinterpret_borrow<py::object>(value);
+    else kw[key] = value;
+  }
   std::vector<std::string> known;
   app::SimOptions options = sim_options(kw, known);
   refuse_unknown("Simulation", kw, known);
@@ -35,6 +44,11 @@ std::unique_ptr<PySimulation> make(const py::object& scene, const py::kwargs& kw
   app::Prepared p = app::prepare(source, options);
   // As `run` does: the iterative methods' artificial damping is measured against the physics'.
   if (method_info(p.settings.method).family == MethodFamily::Iterative) p.settings.track_dissipation = true;
+  if (own) {
+    p.settings.own_step_name = step_name(own);
+    p.settings.own_step = python_step(own, p.settings.own_step_name);
+    p.settings.track_dissipation = false;
+  }
   auto out = std::make_unique<PySimulation>();
   out->scene = p.scene.name;
   out->planned_steps = p.steps;
@@ -97,7 +111,9 @@ void bind_simulation(py::module_& m) {
   py::class_<Divergence>(m, "Divergence", "how a run diverged or went numerically unstable")
       .def_readonly("step", &Divergence::step, "the step during which it happened (1-based)")
       .def_readonly("t", &Divergence::t, "time of the last good state kept, s")
-      .def_property_readonly("method", [](const Divergence& d) { return std::string(method_info(d.method).name); })
+      .def_property_readonly("method", [](const Divergence& d) {
+        return d.own_step.empty() ? std::string(method_info(d.method).name) : d.own_step;
+      })
       .def_readonly("h", &Divergence::h)
       .def_readonly("stable_h", &Divergence::stable_h, "the method's stated limit")
       .def_readonly("unstable", &Divergence::unstable, "caught by the energy audit")
@@ -107,7 +123,8 @@ void bind_simulation(py::module_& m) {
   py::class_<PySimulation>(m, "Simulation", R"(A scene stepped as `springlab run` steps it.
 
 Simulation(scene, **options): scene is a shipped scene's name, a JSON file or a Scene; options are
-the command line's: method="rk4", dt=1e-3, substeps=4 or "auto", steps=N or duration=T (what
+the command line's: method="rk4" (or a function of your own, fn(x, v, force, h) -> (x, v): see
+springlab.homework), dt=1e-3, substeps=4 or "auto", steps=N or duration=T (what
 run() takes), ks=, kd=, tol=, iterations=, rho=, set={"rope.nodes": 64} (or "KEY=VALUE" strings),
 threads=. Bad input raises springlab.InputError with the command line's message.
 
@@ -140,8 +157,9 @@ stepping (or keep a .copy()).)")
       .def_property_readonly("scene", [](const PySimulation& s) { return s.scene; })
       .def_property_readonly("planned_steps", [](const PySimulation& s) { return s.planned_steps; })
       .def_property_readonly("method", [](const PySimulation& s) {
-        return std::string(method_info(s.sim->settings().method).name);
-      })
+        const SimulationSettings& settings = s.sim->settings();
+        return settings.own_step ? settings.own_step_name : std::string(method_info(settings.method).name);
+      }, "the row's name, or the name of the function given as method=")
       .def_property_readonly("t", [](const PySimulation& s) { return s.sim->state().t; }, "s")
       .def_property_readonly("steps_taken", [](const PySimulation& s) { return s.sim->steps_taken(); })
       .def_property_readonly("dt", [](const PySimulation& s) { return s.sim->settings().dt; })
@@ -189,13 +207,16 @@ stepping (or keep a .copy()).)")
       .def(
           "stability_limit",
           [](PySimulation& s) {
+            if (s.sim->settings().own_step)
+              throw InputError(s.sim->settings().own_step_name + " is a step of your own: springlab states no limit for it "
+                               "(springlab.homework.check measures its stability against the row it is)");
             {
               py::gil_scoped_release unlocked;
               s.sim->stability();
             }
             return s.sim->stability_limit();
           },
-          "the current method's stated limit (a copy)")
+          "the current method's stated limit (a copy); InputError for a step of your own")
       .def(
           "set_method", [](PySimulation& s, const std::string& name) { s.sim->set_method(method_named(name)); },
           py::arg("method"))
@@ -232,7 +253,9 @@ stepping (or keep a .copy()).)")
           },
           py::arg("kd"))
       .def("__repr__", [](const PySimulation& s) {
-        return "<springlab.Simulation '" + s.scene + "' " + method_info(s.sim->settings().method).name +
+        const SimulationSettings& settings = s.sim->settings();
+        return "<springlab.Simulation '" + s.scene + "' " +
+               (settings.own_step ? settings.own_step_name : std::string(method_info(settings.method).name)) +
                ", t = " + format(s.sim->state().t) + " s>";
       });
 }

@@ -1,5 +1,6 @@
-"""`cmake --install` puts a package that imports on its own: from a scratch prefix, with no
-source tree or build on its path, it loads the shipped scenes it carries and steps one."""
+"""`cmake --install` and `pip install .` put a package that imports on its own: from a scratch
+prefix, with no source tree or build on its path, it loads the shipped scenes it carries and
+steps one."""
 
 import os
 import subprocess
@@ -32,3 +33,32 @@ def test_the_installed_package_runs_from_its_prefix(tmp_path):
     assert Path(module).is_relative_to(prefix)
     assert Path(data).is_relative_to(prefix)  # its own scenes, not the source tree's
     assert float(t) > 0
+
+
+def test_pip_installs_the_package_offline(tmp_path):
+    # `python3 -m pip install --no-build-isolation .` as the README gives it, into a scratch
+    # folder, from Debian's pip, setuptools and wheel with no index: this build's CMake folder is
+    # built (up to date: a no-op) and packaged, rather than a fresh one (minutes; the README gives
+    # the time of that). Nothing is written into the source tree's tracked files.
+    source = Path(os.environ["SPRINGLAB_SOURCE_DIR"])
+    site = tmp_path / "site"
+    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "SPRINGLAB_DATA")}
+    env.update(SPRINGLAB_CMAKE_BUILD_DIR=os.environ["SPRINGLAB_BUILD_DIR"],
+               SPRINGLAB_PIP_BUILD_BASE=str(tmp_path / "build"), PIP_NO_INDEX="1", PIP_DISABLE_PIP_VERSION_CHECK="1")
+    pip = subprocess.run([sys.executable, "-m", "pip", "install", "--no-build-isolation", "--no-deps", "--target",
+                          str(site), str(source)], cwd=tmp_path, env=env, capture_output=True, text=True, timeout=280)
+    assert pip.returncode == 0, pip.stdout[-3000:] + pip.stderr[-3000:]
+    assert (site / "springlab" / "data" / "assets" / "tableaux" / "heun.json").is_file()
+
+    code = ("import springlab, springlab.homework\n"
+            "sim = springlab.Simulation('rope', method='verlet', steps=10)\n"
+            "sim.run()\n"
+            "r = springlab.homework.check(lambda x, v, force, h: (x + h * v, v + h * force(x, v)))\n"
+            "print(springlab.__file__, springlab.data_dir(), r.method, sep='\\n')\n")
+    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "SPRINGLAB_DATA")}
+    env["PYTHONPATH"] = str(site)
+    run = subprocess.run([sys.executable, "-c", code], cwd=tmp_path, env=env, capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    module, data, method = run.stdout.split("\n")[:3]
+    assert Path(module).is_relative_to(site) and Path(data).is_relative_to(site)
+    assert method == "euler"
