@@ -13,6 +13,7 @@ from decimal import Decimal
 springlab, root = sys.argv[1], sys.argv[2]
 NUMBER = r"([-+]?[0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?)"
 CHAIN = "run chain --dt 0.0333333 --substeps 1 --duration 30 --method "
+HOMEWORK = "homework check tests/homework/ropes/"
 VERLET_D = "run spring --method verlet --substeps 1 --set verlet_damping=0.00005 --duration 8 --dt "  # lesson 13's d
 
 # (document, its sentence with {} for the figure, command, its output with {} for the value, kind)
@@ -56,6 +57,12 @@ FIGURES = [
     ("README.md", "{} (semi-implicit) and", "lesson check", "verlet: euler 1.03 symplectic-euler {} verlet ", "rounded"),
     ("README.md", "and {} (Verlet), as the checker", "lesson check", " verlet {} ;", "rounded"),
     ("README.md", "their stated limit of {} s", "lesson check", "verlet: stated stability limit h = 0.2 s: stated limit h = {} s", "rounded"),
+    # Homework 8's checker on the rope files the tests plant (tests/homework/ropes).
+    ("README.md", "(a correct rope matches to {} of a step's motion;", HOMEWORK + "correct.cpp", "matches it to {} of the step's motion", "rounded"),
+    ("README.md", "(explicit Euler x{} measured against", HOMEWORK + "explicit.cpp", "energy grows: x{} a step", "rounded"),
+    ("README.md", "1 + (wh)² - (c/m)h = {} at", HOMEWORK + "explicit.cpp", "(c/m) h = {}), x", "rounded"),
+    ("README.md", "damped Verlet x{} against 1 - d)", HOMEWORK + "correct.cpp", "energy falls: x{} a step at h = 1/256 s (Verlet", "rounded"),
+    ("README.md", "(Verlet's order measured {})", HOMEWORK + "no_damping.cpp", "order {} measured (Verlet", "rounded"),
     # What a large step costs the practitioners' methods: the chain at one step a frame.
     ("README.md", "XPBD's one pass leaves its springs acting as k_s x {} at rest", CHAIN + "xpbd", "act as k_s x {}\n", "rounded"),
     ("README.md", "at rest (VBD x {},", CHAIN + "vbd", "act as k_s x {}\n", "rounded"),
