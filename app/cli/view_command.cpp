@@ -41,6 +41,8 @@ int view(ViewCli& o) {
   // A lesson is checked before any window opens: a bad one is bad input, display or not.
   if (o.app.lesson) check_lesson_step(open_lesson(*o.app.lesson), o.app.lesson_step, "--step");
   o.window.threads_given = o.app.sim.threads.has_value();
+  if (o.window.homework && (o.app.lesson || o.compare))
+    throw InputError("--homework: shows your rope's lanes; it goes with neither --lesson nor --compare");
   return run_window(o.app, o.window);
 }
 
@@ -58,6 +60,8 @@ void add_options(CLI::App& c, ViewCli& o) {
   c.add_option("--lesson", o.app.lesson, "teach a lesson: a name or number from `springlab lesson list`, or a file");
   c.add_option("--step", o.app.lesson_step, "start the lesson at this step (from 1)");
   c.add_option("--msaa", o.window.msaa, "multisampling (default: 4 on a GPU, 0 on a software rasteriser)");
+  c.add_option("--homework", o.window.homework,
+               "your rope.cpp (homework 8): its simulateEuler and simulateVerlet as lanes beside springlab's, rebuilt when saved");
 }
 
 }  // namespace

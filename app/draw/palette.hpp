@@ -7,6 +7,7 @@
 #include <string>
 
 #include "draw/frame.hpp"
+#include "session/session.hpp"
 #include "springlab/ik.hpp"
 #include "springlab/methods.hpp"
 
@@ -55,6 +56,10 @@ inline Rgba method_color(Method m) {
   return {channel(0.0f), channel(-1.0f / 3.0f), channel(1.0f / 3.0f), 1};
 }
 
+// A lane's colour: its row's, its IK solver's, or, for a lane of one's own (homework), one of two
+// kept for those, apart from every row's: white and rose.
+inline Rgba lane_color(const app::Lane& lane);
+
 // The IK solvers, distinct from one another in compare mode (the same hues).
 inline Rgba solver_color(IkSolver s) {
   switch (s) {
@@ -95,5 +100,11 @@ inline constexpr Rgba kParticle{0.92f, 0.93f, 0.95f, 1};
 inline constexpr Rgba kClothFront{0.93f, 0.55f, 0.28f, 1};
 inline constexpr Rgba kClothBack{0.28f, 0.60f, 0.72f, 1};
 inline constexpr Rgba kCollider{0.55f, 0.58f, 0.64f, 1};
+
+inline Rgba lane_color(const app::Lane& lane) {
+  static constexpr Rgba kOwn[] = {{0.96f, 0.96f, 0.96f, 1}, {1.00f, 0.36f, 0.54f, 1}};  // white, rose #FF5C8A
+  if (!lane.own.empty()) return kOwn[static_cast<std::size_t>(lane.own_index) % std::size(kOwn)];
+  return lane.ik ? solver_color(lane.ik->solver) : method_color(lane.sim.settings().method);
+}
 
 }  // namespace springlab::draw

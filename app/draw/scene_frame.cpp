@@ -104,7 +104,7 @@ Frame build_frame(const app::Session& session, const ViewOptions& options, Viewp
     // A lane that diverged: its last sane state, faded (its last good state may be blown up).
     const State& state = lane.sim.diverged() ? lane.sane : lane.sim.state();
     const Model& m = lane.sim.model();
-    Rgba tint = lane.ik ? solver_color(lane.ik->solver) : method_color(lane.sim.settings().method);
+    Rgba tint = lane_color(lane);
     if (lane.sim.diverged()) tint.a = 0.35f;
 
     if (options.surfaces && !compare)

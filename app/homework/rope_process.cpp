@@ -1,5 +1,6 @@
 #include "homework/rope_process.hpp"
 
+#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
@@ -35,10 +36,14 @@ MassState parse_state(std::istringstream& in) {
 }  // namespace
 
 RopeProcess::RopeProcess(std::filesystem::path runner, std::filesystem::path folder, std::chrono::milliseconds limit)
-    : runner_(std::move(runner)), folder_(std::move(folder)), limit_(limit) {}
+    : runner_(std::move(runner)), folder_(std::move(folder)), limit_(limit) {
+  // Its own file for what the student's code prints: a check and the app's lanes run side by side.
+  static std::atomic<int> made{0};
+  output_ = folder_ / ("output-" + std::to_string(++made) + ".txt");
+}
 
 ChildProcess& RopeProcess::child() {
-  if (!child_) child_ = std::make_unique<ChildProcess>(std::vector<std::string>{runner_.string()}, folder_ / "output.txt");
+  if (!child_) child_ = std::make_unique<ChildProcess>(std::vector<std::string>{runner_.string()}, output_);
   return *child_;
 }
 
@@ -52,7 +57,7 @@ void RopeProcess::failed(const std::string& doing, const std::string& error) {
     const std::string how = child_ ? child_->wait() : "";
     what = doing + (how.empty() ? " ended the program" : " " + how);
   }
-  const std::string printed = last_lines(folder_ / "output.txt", 3);
+  const std::string printed = last_lines(output_, 3);
   if (!printed.empty()) what += "; it printed: " + printed;
   child_.reset();  // the next call starts afresh
   throw CodeFailure(what);

@@ -30,7 +30,7 @@ class RopeProcess : public homework::RopeCode {
   std::string next(const std::string& doing, std::chrono::steady_clock::time_point deadline);
   [[noreturn]] void failed(const std::string& doing, const std::string& error = {});
 
-  std::filesystem::path runner_, folder_;
+  std::filesystem::path runner_, folder_, output_;
   std::chrono::milliseconds limit_;
   std::unique_ptr<ChildProcess> child_;
   int masses_ = 0;

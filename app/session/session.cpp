@@ -1,5 +1,8 @@
 #include "session/session.hpp"
 
+#include "springlab/ik.hpp"
+#include "springlab/text.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -220,6 +223,35 @@ void Session::step_once() {
     sample(lane);
   }
   target_ = latest;
+}
+
+std::string lane_label(const Lane& lane) {
+  if (!lane.own.empty()) return lane.own;
+  return tr(lane.ik ? ik_solver_info(lane.ik->solver).label : method_info(lane.sim.settings().method).label);
+}
+
+std::string lane_name(const Lane& lane) {
+  return lane.own.empty() ? std::string(method_info(lane.sim.settings().method).name) : lane.own;
+}
+
+void Session::set_own_lanes(const std::vector<OwnLane>& own, const std::vector<Method>& beside) {
+  ++edits_;
+  release();
+  lanes_.clear();
+  for (const OwnLane& o : own) {
+    if (lanes_.size() == kMaxLanes) break;
+    Lane lane = make_lane(o.like);
+    lane.sim.set_own_step(o.step, o.label);
+    lane.own = o.label;
+    lane.own_known = o.known;
+    lane.own_index = static_cast<int>(lanes_.size());
+    lanes_.push_back(std::move(lane));
+  }
+  for (Method m : beside)
+    if (lanes_.size() < kMaxLanes) lanes_.push_back(make_lane(m));
+  if (lanes_.empty()) lanes_.push_back(make_lane(settings_.method));
+  target_ = scene_.state.t;
+  for (Lane& lane : lanes_) sample(lane);
 }
 
 void Session::set_compare(const std::vector<Method>& methods) {

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -54,9 +55,29 @@ struct Lane {
   std::optional<Momentum> free_since;
   // How many of the scene's cells are inverted now (cells.hpp), counted as the lane is sampled.
   int inverted_cells = 0;
+  // A lane of one's own (a student's step: homework, app/homework/): its label, in place of its
+  // row's ("Your simulateEuler"), and whether the homework checker found the row it is (the row
+  // its simulation names, whose theory the gauge then reads) or none. Empty for a row's lane.
+  std::string own;
+  bool own_known = true;
+  int own_index = 0;  // 0, 1, ...: its colour among the lanes of one's own
   // Whether the lane waits for its first analysis before it steps (automatic sub-steps, in the
   // session's background mode; otherwise the simulation makes it when it first steps).
   bool waiting() const { return !sim.ready(); }
+};
+
+// A lane's label as shown (translated): its row's, its IK solver's, or its own.
+std::string lane_label(const Lane& lane);
+// Its short name (charts' series): its row's name ("verlet") or its own label.
+std::string lane_name(const Lane& lane);
+
+// A step of one's own as a lane (Session::set_own_lanes): the step, its label, the row it was found
+// to be (`like`), or none (`known` false: the row is only a stand-in, named nowhere).
+struct OwnLane {
+  std::function<void(const Model&, const State&, State&, double, Workspace&)> step;
+  std::string label;
+  Method like = Method::SymplecticEuler;
+  bool known = true;
 };
 
 class Session {
@@ -95,6 +116,9 @@ class Session {
   // with the first method. Every lane restarts from the initial state.
   void set_compare(const std::vector<Method>& methods);
   bool comparing() const { return lanes_.size() > 1; }
+  // Lanes of one's own (homework) first, then the rows `beside` (4 lanes at most). Every lane
+  // restarts from the initial state.
+  void set_own_lanes(const std::vector<OwnLane>& own, const std::vector<Method>& beside);
 
   // Inverse kinematics (scenes with an "ik" part): the solver of the single lane, or one lane
   // per solver side by side (2 to 3; empty: back to one lane), and the iterations a frame.

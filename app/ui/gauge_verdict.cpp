@@ -66,10 +66,18 @@ GaugeVerdict gauge_verdict(const app::Lane& lane, const StabilityAnalysis* analy
                     ratio);
     }
   }
+  // A step of one's own that the homework checker found to be no row of the table: its row is a
+  // stand-in, whose limit and claims are not its own.
+  const bool unknown = !lane.own.empty() && !lane.own_known;
+  if (unknown) {
+    fraction = 0.5;
+    color = Tone::Neutral;
+    verdict = tr("not a textbook method: no stated limit");
+  }
   // A free body: the momentum the method changes (momentum.hpp), said where it is more than a
   // rounding or a solver's tolerance would make it (the method table says what each keeps).
   std::string& momentum_line = out.momentum;
-  if (lane.free_since && !sim.trouble()) {
+  if (lane.free_since && !sim.trouble() && !unknown) {
     const MomentumChange d = momentum_change(*lane.free_since, momentum(sim.model(), sim.state()));
     momentum_line = format_text(tr("a free body: its momentum changed by %s of sum m|v|, its angular momentum by %s; "
                                    "%s: P %s, L %s"),

@@ -18,9 +18,6 @@ namespace springlab::ui {
 namespace {
 ImU32 u32(const draw::Rgba& c) { return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, c.a)); }
 
-std::string lane_name(const app::Lane& lane) {
-  return tr(lane.ik ? ik_solver_info(lane.ik->solver).label : method_info(lane.sim.settings().method).label);
-}
 
 const ImU32 kText = IM_COL32(240, 242, 245, 255), kBack = IM_COL32(10, 12, 14, 190);
 
@@ -37,7 +34,7 @@ Legend legend_of(const app::Session& session, const draw::Viewport& viewport, fl
   Legend legend;
   float width = 0.0f;
   for (const app::Lane& lane : session.lanes()) {
-    std::string row = lane_name(lane);
+    std::string row = app::lane_label(lane);
     char s[96];
     if (lane.ik) {
       std::snprintf(s, sizeof s, tr("  %d it., error %.2g m%s"), lane.ik->status.iterations, lane.ik->status.error,
@@ -65,7 +62,7 @@ void draw_legend(const app::Session& session, const Legend& legend, float scale)
   for (std::size_t k = 0; k < legend.rows.size(); ++k) {
     const app::Lane& lane = session.lanes()[k];
     const float y = legend.at.y + k * line;
-    const draw::Rgba c = lane.ik ? draw::solver_color(lane.ik->solver) : draw::method_color(lane.sim.settings().method);
+    const draw::Rgba c = draw::lane_color(lane);
     dl->AddLine(ImVec2(legend.at.x, y + 0.5f * line), ImVec2(legend.at.x + swatch, y + 0.5f * line), u32(c),
                 4.0f * scale);
     dl->AddText(ImVec2(legend.at.x + swatch + 8.0f * scale, y), lane.sim.trouble() ? u32(draw::kDiverged) : kText,
@@ -129,7 +126,7 @@ void draw_overlay(const app::Session& session, const draw::ViewCamera& camera, c
     const Divergence* trouble = lane.sim.trouble();
     if (!trouble) continue;
     char s[160];
-    std::snprintf(s, sizeof s, tr("%s %s at t = %.3g s"), lane_name(lane).c_str(),
+    std::snprintf(s, sizeof s, tr("%s %s at t = %.3g s"), app::lane_label(lane).c_str(),
                   trouble->unstable ? tr("went unstable") : tr("diverged"), trouble->t);
     const Eigen::Vector3d at = draw::project(camera, draw::label_anchor(lane), viewport.width, viewport.height);
     const ImVec2 size = ImGui::CalcTextSize(s);

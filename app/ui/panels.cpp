@@ -98,9 +98,10 @@ void gauge(app::Session& session, app::Lane& lane, float width, bool explain) {
   const ImGuiStyle& style = ImGui::GetStyle();
   // The bars line up after the usual label ("Symplectic Euler"); a longer one pushes its bar on
   // ("Vertex block descent" was drawn under it).
+  const std::string label = app::lane_label(lane);
   const float label_w = std::max(ImGui::CalcTextSize(tr("Symplectic Euler ")).x,
-                                 ImGui::CalcTextSize((std::string(tr(m.label)) + " ").c_str()).x);
-  ImGui::TextColored(v4(draw::method_color(m.id)), "%s", tr(m.label));
+                                 ImGui::CalcTextSize((label + " ").c_str()).x);
+  ImGui::TextColored(v4(draw::lane_color(lane)), "%s", label.c_str());
   ImGui::SameLine(label_w + style.WindowPadding.x);
   // The bar (the limit sits at two thirds of it), then the verdict; a verdict too long for the
   // row goes on the next.
@@ -192,8 +193,8 @@ chart::Chart energy_chart(const app::Session& session) {
   energy.y.label = "J";
   for (const app::Lane& lane : session.lanes()) {
     const app::History& h = lane.history;
-    const draw::Rgba c = draw::method_color(lane.sim.settings().method);
-    const std::string name = method_info(lane.sim.settings().method).name;
+    const draw::Rgba c = draw::lane_color(lane);
+    const std::string name = app::lane_name(lane);
     if (!compare) {
       energy.series.push_back(series(tr("kinetic"), ke, h.t, h.kinetic));
       energy.series.push_back(series(tr("potential"), pe, h.t, h.potential));
@@ -201,11 +202,15 @@ chart::Chart energy_chart(const app::Session& session) {
     } else {
       energy.series.push_back(series(name, c, h.t, h.total));
     }
-    // Total plus what damping, drag and friction took: flat unless the method itself drifts.
-    chart::Series kept = series(compare ? "" : tr("total + lost"), compare ? c : lost, h.t, h.total, true);
-    for (std::size_t k = 0; k < kept.y.size(); ++k) kept.y[k] += h.dissipated[h.dissipated.size() - kept.y.size() + k];
-    energy.series.push_back(kept);
-    const std::size_t from = energy.series.size() - (compare ? 2 : 4);
+    // Total plus what damping, drag and friction took: flat unless the method itself drifts. Not
+    // for a step of one's own, whose damping is its own, not the scene's that this counts.
+    const bool counted = lane.own.empty();
+    if (counted) {
+      chart::Series kept = series(compare ? "" : tr("total + lost"), compare ? c : lost, h.t, h.total, true);
+      for (std::size_t k = 0; k < kept.y.size(); ++k) kept.y[k] += h.dissipated[h.dissipated.size() - kept.y.size() + k];
+      energy.series.push_back(kept);
+    }
+    const std::size_t from = energy.series.size() - (compare ? 1 : 3) - (counted ? 1 : 0);
     for (std::size_t k = from; k < energy.series.size(); ++k) mark_diverged(energy.series[k], lane, "J");
   }
   return energy;
@@ -220,8 +225,7 @@ chart::Chart position_chart(const app::Session& session) {
   position.x.label = "t (s)";
   position.y.label = std::string(1, kAxes[a]) + " (m)";
   for (const app::Lane& lane : session.lanes()) {
-    const draw::Rgba c = draw::method_color(lane.sim.settings().method);
-    position.series.push_back(series(method_info(lane.sim.settings().method).name, c, lane.history.t, lane.history.x));
+    position.series.push_back(series(app::lane_name(lane), draw::lane_color(lane), lane.history.t, lane.history.x));
     mark_diverged(position.series.back(), lane, "m");
   }
   if (session.primary().history.exact_x.size() > 0)
@@ -238,7 +242,7 @@ chart::Chart phase_chart(const app::Session& session) {
   phase.legend = false;
   for (const app::Lane& lane : session.lanes()) {
     if (lane.sim.diverged()) continue;  // its phase plot would set the scale to its blow-up
-    phase.series.push_back(series("", draw::method_color(lane.sim.settings().method), lane.history.x, lane.history.v));
+    phase.series.push_back(series("", draw::lane_color(lane), lane.history.x, lane.history.v));
   }
   return phase;
 }
@@ -452,7 +456,7 @@ void clocks(app::Session& session, const FrameStats& stats) {
     for (const app::Lane& lane : session.lanes()) {
       if (!first) ImGui::SameLine();
       first = false;
-      ImGui::TextColored(lane.sim.diverged() ? kBeyond : v4(draw::method_color(lane.sim.settings().method)), "%.3f",
+      ImGui::TextColored(lane.sim.diverged() ? kBeyond : v4(draw::lane_color(lane)), "%.3f",
                          lane.sim.state().t);
     }
     ImGui::SameLine();
@@ -518,7 +522,7 @@ void parameters(app::Session& session, UiState& ui, bool few) {
   for (const app::Lane& lane : session.lanes())
     if (lane.sim.auto_substeps() && lane.sim.substeps_capped() && lane.analysis) {
       const bool hopeless = lane.analysis->limit(lane.sim.settings().method).h == 0.0;
-      text_wrapped(std::string(method_info(lane.sim.settings().method).name) + ": " +
+      text_wrapped(app::lane_name(lane) + ": " +
                        (hopeless ? tr("unstable at any step: sub-steps cannot help") : tr("sub-steps capped: still past its limit")),
                    kNear);
       break;

@@ -2,6 +2,9 @@
 #include "util/language.hpp"
 #include "window/window_app.hpp"
 
+#include "homework/homework_watch.hpp"
+#include "ui/homework_status.hpp"
+
 // GL through epoxy first, then GLFW without its own GL header.
 #include "gfx/gl.hpp"
 #define GLFW_INCLUDE_NONE
@@ -51,6 +54,10 @@ int run_window(const AppSettings& settings, const WindowOptions& o) {
   Prepared prepared = prepare(settings.scene, settings.sim);
   std::optional<Script> script;
   if (settings.script) script = load_script(*settings.script, prepared.scene);
+  // The student's rope, built and checked before any window opens: a file that does not compile
+  // is bad input, display or not.
+  std::unique_ptr<HomeworkWatch> homework;
+  if (o.homework) homework = std::make_unique<HomeworkWatch>(*o.homework);
 
   glfwSetErrorCallback([](int, const char* message) { g_glfw_error = message; });
   if (!glfwInit())
@@ -104,6 +111,7 @@ int run_window(const AppSettings& settings, const WindowOptions& o) {
     if (software && !o.threads_given) set_thread_count(1);
 
     InteractiveApp app(std::move(prepared), settings, std::move(script), scale, samples, !o.frames);
+    if (homework) app.set_platform_controls([&homework] { ui::draw_homework_status(homework->status()); });
     glfwSetWindowUserPointer(window, &app);
     // A scene file dropped on the window opens.
     glfwSetDropCallback(window, [](GLFWwindow* w, int count, const char** paths) {
@@ -137,6 +145,7 @@ int run_window(const AppSettings& settings, const WindowOptions& o) {
       if (app.apply_language()) ImGui_ImplOpenGL3_DestroyDeviceObjects();  // its font texture, remade
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
+      if (homework) homework->poll(app.session());
       app.frame(size);
       if (app.quit_requested()) glfwSetWindowShouldClose(window, GLFW_TRUE);
       if (const auto opened = app.take_opened())
@@ -167,8 +176,9 @@ int run_window(const AppSettings& settings, const WindowOptions& o) {
         std::printf("steady     %.1f frames/s, %.3gx real time (after the first frame)\n", (frames - 1) / steady,
                     (session.primary().sim.state().t - first_t) / steady);
       for (const Lane& lane : session.lanes())
-        std::printf("lane       %s at t = %.4g s%s\n", method_info(lane.sim.settings().method).name,
-                    lane.sim.state().t, lane.sim.diverged() ? " (diverged)" : lane.sim.instability() ? " (unstable)" : "");
+        std::printf("lane       %s at t = %.4g s%s\n", lane_name(lane).c_str(), lane.sim.state().t,
+                    lane.sim.diverged() ? (" (diverged: " + lane.sim.divergence()->reason + ")").c_str()
+                    : lane.sim.instability() ? " (unstable)" : "");
       for (const Session::DragRecord& d : session.drags())
         std::printf("dragged    particle %d from (%.4g, %.4g, %.4g) to (%.4g, %.4g, %.4g): %.4g m\n", d.particle,
                     d.from.x(), d.from.y(), d.from.z(), d.to.x(), d.to.y(), d.to.z(), (d.to - d.from).norm());

@@ -180,6 +180,9 @@ class Simulation {
 
   // Changes. Each takes effect at the next step.
   void set_method(Method method);
+  /// A step of one's own (SimulationSettings::own_step) in place of the row's, from the next step;
+  /// `method` stays the row that stands for it. An empty step goes back to the row.
+  void set_own_step(std::function<void(const Model&, const State&, State&, double, Workspace&)> step, std::string name);
   void set_dt(double dt);
   void set_substeps(int substeps);  ///< fixes them (automatic sub-steps off)
   void set_auto_substeps(double safety = kSafeFraction);

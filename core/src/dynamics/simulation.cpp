@@ -371,6 +371,14 @@ void Simulation::set_analyse_when_needed(bool on) {
   choose_substeps();
 }
 
+void Simulation::set_own_step(std::function<void(const Model&, const State&, State&, double, Workspace&)> step,
+                              std::string name) {
+  settings_.own_step = std::move(step);
+  settings_.own_step_name = settings_.own_step ? std::move(name) : std::string();
+  audit_changed();
+  ws_.invalidate();
+}
+
 void Simulation::set_method(Method method) {
   settings_.method = method;
   settings_.own_step = nullptr;  // a row of the table from now on

@@ -20,7 +20,8 @@ std::string vec(const Vec2& v) { return "(" + num(v.x()) + ", " + num(v.y()) + "
 
 std::string step_text(double h) {
   const double inverse = 1.0 / h;
-  if (inverse >= 2.0 && inverse == std::round(inverse)) return "1/" + num(inverse) + " s";
+  if (inverse >= 2.0 && inverse == std::round(inverse) && inverse < 1e9)
+    return "1/" + std::to_string(static_cast<long long>(inverse)) + " s";
   return num(h) + " s";
 }
 
