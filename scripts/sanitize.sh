@@ -32,5 +32,10 @@ export OMP_WAIT_POLICY="${OMP_WAIT_POLICY:-passive}"
 # single springs, the rope for 68 s and the cloth for 10 s, and clothes past their limits, 25 s
 # in Release): the audit's rule, its transient growth and its lower bound are run here by
 # EnergyAuditRule.*, TransientGrowth.* and LowestEnergy.*, and a caught run by the Stability tests.
+# And the iterative rows' two long sweeps (Iterative.BoundedAtOneStepAFrameOnEveryScene: eight
+# scenes, three methods, two steps, 10 s each; Iterative.RunsFindThemStableAtAnyStep: bisections
+# up to h w = 1000; 40 s and 46 s here, a few in Release): XPBD's, local-global's and VBD's steps
+# run here in the other Iterative tests (converged to the backward-Euler step, Chebyshev, softness,
+# factorisation, colouring) and in the momentum tests.
 ctest --output-on-failure --parallel "$(nproc)" --timeout 600 -L 'core|fuzz' \
-  -E '^Determinism\.ThreadCountDoesNotChangeABit$|^Scenes/Limits\.|^Analysis\.RunsFindTheAnalysisLimits$|^Sweep\.OnTheSpringOrdersAndStabilityLimitsAreThoseOfNumericsMd$|^Audit(Silence|Catches)\.' "$@"
+  -E '^Determinism\.ThreadCountDoesNotChangeABit$|^Scenes/Limits\.|^Analysis\.RunsFindTheAnalysisLimits$|^Sweep\.OnTheSpringOrdersAndStabilityLimitsAreThoseOfNumericsMd$|^Audit(Silence|Catches)\.|^Iterative\.(BoundedAtOneStepAFrameOnEveryScene|RunsFindThemStableAtAnyStep)$' "$@"

@@ -1,5 +1,6 @@
 #include "homework/homework_watch.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <ctime>
 
@@ -66,7 +67,6 @@ void HomeworkWatch::install(Session& session) {
     beside.push_back(row.value_or(step == Step::Euler ? Method::SymplecticEuler : Method::Verlet));
   }
   session.set_own_lanes(own, beside);
-  installed_in_ = &session;
 
   status_.lines.clear();
   status_.lines.push_back(format_text(tr("built and checked in %.1f s: %d checks passed, %d failed"), current_->seconds,
@@ -83,7 +83,7 @@ void HomeworkWatch::poll(Session& session) {
     if (fresh_) {
       current_ = std::move(fresh_);
       status_.error.clear();
-      installed_in_ = nullptr;
+      installed_in_ = 0;  // installed again below
     }
     if (failed_) {
       status_.error = *failed_;
@@ -91,7 +91,14 @@ void HomeworkWatch::poll(Session& session) {
     }
   }
   status_.building = building_;
-  if (installed_in_ != &session) install(session);
+  // Lanes of one's own in a session new to the watch (the first, a scene opened, a lesson's step)
+  // or after a new build, where the scene is one rope that the student's constructor can build;
+  // what the class does with the lanes after that (compare other methods) is theirs.
+  if (installed_in_ != session.serial()) {
+    installed_in_ = session.serial();
+    if (is_one_rope(session.scene().model)) install(session);
+    else status_.lines = {tr("open a rope scene to see your rope's lanes")};
+  }
 
   // The file saved since the last look (twice a second): built and checked on the worker.
   const auto now = std::chrono::steady_clock::now();

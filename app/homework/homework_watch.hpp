@@ -41,7 +41,7 @@ class HomeworkWatch {
   std::filesystem::path file_;
   std::filesystem::file_time_type seen_{};
   std::unique_ptr<Built> current_;
-  const Session* installed_in_ = nullptr;
+  std::uint64_t installed_in_ = 0;  // the serial of the session given the lanes (0: none)
   ui::HomeworkStatus status_;
 
   Worker worker_;

@@ -70,7 +70,8 @@ RopeRequest as_rope(const Model& model, const State& in) {
 
 RopeState next_state(Lane& lane, const Model& model, const State& in, double h, const Vec2& gravity) {
   const int n = in.particle_count();
-  const bool continues = lane.synced && lane.made.x == in.x && lane.made.v == in.v;
+  const bool continues =
+      lane.synced && lane.made.x.rows() == in.x.rows() && lane.made.x == in.x && lane.made.v == in.v;
   if (continues && !lane.ahead.empty() && lane.ahead_h == h && lane.ahead_g == gravity) {
     RopeState next = std::move(lane.ahead.front());
     lane.ahead.pop_front();
@@ -139,6 +140,19 @@ void step_lane(Lane& lane, const Model& model, const State& in, State& out, doub
 }
 
 }  // namespace
+
+bool is_one_rope(const Model& model) {
+  try {
+    State s;
+    s.resize(model.particle_count());
+    s.x.setZero();
+    s.v.setZero();
+    as_rope(model, s);
+    return true;
+  } catch (const StepFailure&) {
+    return false;
+  }
+}
 
 OwnStep rope_lane_step(std::shared_ptr<RopeProcess> code, Step step) {
   auto lane = std::make_shared<Lane>();

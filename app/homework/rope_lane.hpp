@@ -16,4 +16,8 @@ namespace springlab::app {
 
 homework::OwnStep rope_lane_step(std::shared_ptr<RopeProcess> code, homework::Step step);
 
+// Whether the model is one rope the exercise's constructor can build: n masses of one mass, n - 1
+// springs joining neighbours, of one k and one rest length.
+bool is_one_rope(const Model& model);
+
 }  // namespace springlab::app

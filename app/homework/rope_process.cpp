@@ -18,6 +18,13 @@ std::string hex(double v) {
   return text;
 }
 
+// "0.5 s", "3 s": a limit as the report writes it.
+std::string step_text_seconds(std::chrono::milliseconds limit) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g s", static_cast<double>(limit.count()) / 1000.0);
+  return text;
+}
+
 double number(std::istringstream& in) {
   std::string word;
   in >> word;
@@ -51,8 +58,7 @@ void RopeProcess::failed(const std::string& doing, const std::string& error) {
   std::string what;
   if (!error.empty()) what = doing + " threw an exception: " + error;
   else if (child_ && child_->timed_out())
-    what = doing + " did not return within " + std::to_string(limit_.count() / 1000.0).substr(0, 3) +
-           " s and was stopped (an endless loop?)";
+    what = doing + " did not return within " + step_text_seconds(limit_) + " and was stopped (an endless loop?)";
   else {
     const std::string how = child_ ? child_->wait() : "";
     what = doing + (how.empty() ? " ended the program" : " " + how);

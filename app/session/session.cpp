@@ -4,13 +4,21 @@
 #include "springlab/text.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
 namespace springlab::app {
 
+namespace {
+std::uint64_t next_serial() {
+  static std::atomic<std::uint64_t> made{0};
+  return ++made;
+}
+}  // namespace
+
 Session::Session(Scene scene, SimulationSettings settings, double fps)
-    : scene_(std::move(scene)), settings_(settings), fps_(fps) {
+    : serial_(next_serial()), scene_(std::move(scene)), settings_(settings), fps_(fps) {
   settings_.track_dissipation = true;
   // An unstable lane goes on, marked (Simulation::trouble()), until it diverges or is reset: the
   // class sees where the instability leads; `run` stops there instead.

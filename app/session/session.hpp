@@ -182,6 +182,9 @@ class Session {
   // stepping or resetting): a lesson compares it around the user's input to see that the class
   // took over.
   std::uint64_t edits() const { return edits_; }
+  // A number no other session of this process has had (a new scene, a lesson's step): what
+  // watches a session, as the homework's lanes do, tells a new one by it, not by its address.
+  std::uint64_t serial() const { return serial_; }
 
   // Scripts.
   void play(Script script);
@@ -197,6 +200,7 @@ class Session {
   void keep_if_sane(Lane& lane);
   Lane make_lane(Method method, std::optional<IkSolver> solver = std::nullopt) const;
 
+  std::uint64_t serial_;
   Scene scene_;
   SimulationSettings settings_;
   std::vector<Lane> lanes_;

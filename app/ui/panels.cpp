@@ -1,3 +1,18 @@
+// The app's panels, drawn with Dear ImGui each frame from the session and the UI's state. One
+// function a window (draw_panels calls them in this order), as imgui_demo.cpp is laid out:
+//
+//   strip               the strip of buttons along the foot (a phone held upright)
+//   controls_window     "springlab": pickers, the platform's controls, about, simulation_controls
+//                       (method or solver, transport, clocks, gauge per lane, parameters), tools
+//                       (cost, panels' buttons, compare choices, view and files)
+//   charts_window       "Charts": energy, position, phase, the adaptive step, a lesson's own
+//   region              the stability region (region_window)
+//   divergence_window   "Diverged": the single view's banner and the way out
+//   message_window      "Message": a file that failed to load
+//   keys_window         "Keys" (F1)
+//
+// The charts' contents (energy_chart, position_chart, ...) and the controls' parts (gauge,
+// clocks, parameters, ...) are the functions above them.
 #include "ui/panels.hpp"
 
 #include <imgui.h>
@@ -601,184 +616,186 @@ void strip(app::Session& session, UiState& ui, const PanelLayout& layout, float 
   ImGui::End();
 }
 
-}  // namespace
+// Each window of the panels, a function (the index is at the top of this file).
 
-Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats, int width, int height) {
-  Requests requests;
-  ImGuiIO& io = ImGui::GetIO();
-  const bool large = ui.presentation && io.Fonts->Fonts.Size > 1;
-  if (large) ImGui::PushFont(io.Fonts->Fonts[1]);
-  const float s = layout_scale(ui);
-  const float pad = 8.0f * s;
-  const bool few = ui.presentation;
-  const PanelLayout layout = panel_layout(ui, width, height);
-  g_touch = layout.touch;
-  // A thumb's targets: frames at least 44 units high (Apple's guideline; Material's is 48 dp).
-  if (layout.touch) {
-    const float frame_pad = std::max(ImGui::GetStyle().FramePadding.y, 0.5f * (44.0f * s - ImGui::GetFontSize()));
-    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(ImGui::GetStyle().FramePadding.x, frame_pad));
-    ImGui::PushStyleVar(ImGuiStyleVar_GrabMinSize, 30.0f * s);
+// The scene's picker and the lessons' (a choice is a request, taken after the frame).
+void pickers(const UiState& ui, Requests& requests) {
+  if (!ui.scenes.empty() && ImGui::BeginCombo(tr("scene"), ui.scene_name.c_str())) {
+    for (const std::string& name : ui.scenes)
+      if (ImGui::Selectable(name.c_str(), name == ui.scene_name)) requests.load = name;
+    ImGui::EndCombo();
   }
-  // The panels over the scene (a window too small to share): they keep their background.
-  const bool over = layout.scene.x == 0 && layout.scene.width == width && !layout.controls.empty() &&
-                    (layout.kind == LayoutKind::Wide || layout.kind == LayoutKind::Compact);
-  const ImGuiWindowFlags docked = over || layout.touch ? kPanel : kDocked;
-
-  if (ui.panels && !layout.strip.empty()) strip(session, ui, layout, s);
-  if (ui.panels && !layout.controls.empty()) {
-    // Controls.
-    const Rect& c = layout.controls;
-    ImGui::SetNextWindowPos(ImVec2(c.x, c.y));
-    ImGui::SetNextWindowSize(ImVec2(c.w, c.h));
-    ImGui::Begin("springlab", nullptr, docked | ImGuiWindowFlags_NoTitleBar);
-    ImGui::PushItemWidth(-std::min(130.0f * s, 0.4f * c.w));
-    if (layout.touch) {  // the way back to the scene's room: close the sheet, fold the panel
-      if (ImGui::Button(layout.kind == LayoutKind::Upright ? "\u2193" : "\u2190", ImVec2(ImGui::GetFrameHeight(), 0))) {
-        if (layout.kind == LayoutKind::Upright) ui.sheet_open = false;
-        else ui.side_open = false;
+  // The lessons: the lecture, step by step (the band across the top then leads).
+  if (!ui.lessons.empty()) {
+    std::string current = tr("(none: explore freely)");
+    for (std::size_t k = 0; k < ui.lessons.size(); ++k)
+      if (ui.lessons[k].first == ui.lesson) current = std::to_string(k + 1) + "  " + tr(ui.lessons[k].second);
+    if (ImGui::BeginCombo(tr("lesson"), current.c_str())) {
+      if (ImGui::Selectable(tr("(none: explore freely)"), ui.lesson.empty())) requests.lesson = "";
+      for (std::size_t k = 0; k < ui.lessons.size(); ++k) {
+        const std::string label = std::to_string(k + 1) + "  " + tr(ui.lessons[k].second);
+        if (ImGui::Selectable(label.c_str(), ui.lessons[k].first == ui.lesson)) requests.lesson = ui.lessons[k].first;
       }
-      ImGui::SameLine();
-    }
-
-    // The scene: its picker, and what it shows (its first sentence; the rest on hover).
-    if (!ui.scenes.empty() && ImGui::BeginCombo(tr("scene"), ui.scene_name.c_str())) {
-      for (const std::string& name : ui.scenes)
-        if (ImGui::Selectable(name.c_str(), name == ui.scene_name)) requests.load = name;
       ImGui::EndCombo();
     }
-    // The lessons: the lecture, step by step (the band across the top then leads).
-    if (!ui.lessons.empty()) {
-      std::string current = tr("(none: explore freely)");
-      for (std::size_t k = 0; k < ui.lessons.size(); ++k)
-        if (ui.lessons[k].first == ui.lesson) current = std::to_string(k + 1) + "  " + tr(ui.lessons[k].second);
-      if (ImGui::BeginCombo(tr("lesson"), current.c_str())) {
-        if (ImGui::Selectable(tr("(none: explore freely)"), ui.lesson.empty())) requests.lesson = "";
-        for (std::size_t k = 0; k < ui.lessons.size(); ++k) {
-          const std::string label = std::to_string(k + 1) + "  " + tr(ui.lessons[k].second);
-          if (ImGui::Selectable(label.c_str(), ui.lessons[k].first == ui.lesson)) requests.lesson = ui.lessons[k].first;
+  }
+}
+
+// The scene's description: its first sentence, the rest on hover (on touch, all of it).
+void about(const app::Session& session, float s) {
+  const std::string text = tr(session.scene().description);
+  const std::size_t stop = g_touch ? std::string::npos : text.find(". ");  // (touch: all of it, no hover)
+  text_wrapped_disabled(stop == std::string::npos ? text : text.substr(0, stop + 1) + " (...)");
+  if (ImGui::IsItemHovered() && stop != std::string::npos) {
+    ImGui::BeginTooltip();
+    text_wrapped(text, {}, 420.0f * s);
+    ImGui::EndTooltip();
+  }
+}
+
+// The simulation's own controls: the method (or the IK solver), play and step, the clocks, each
+// lane's stability gauge and the parameters.
+void simulation_controls(app::Session& session, UiState& ui, const FrameStats& stats, const PanelLayout& layout, bool few) {
+  if (session.scene().ik) {
+    ik_controls(session);
+    transport(session);
+    clocks(session, stats);
+  } else {
+    if (!session.comparing()) {
+      const MethodInfo& current = method_info(session.method());
+      if (ImGui::BeginCombo(tr("method"), tr(current.label))) {
+        int key = 1;
+        for (const MethodInfo& m : methods()) {
+          const std::string label = std::to_string(key++) + "  " + tr(m.label);
+          ImGui::PushStyleColor(ImGuiCol_Text, v4(draw::method_color(m.id)));
+          if (ImGui::Selectable(label.c_str(), m.id == current.id)) session.set_method(m.id);
+          ImGui::PopStyleColor();
         }
         ImGui::EndCombo();
       }
     }
-    if (ui.platform_controls) ui.platform_controls();
-    const std::string about = tr(session.scene().description);
-    const std::size_t stop = g_touch ? std::string::npos : about.find(". ");  // (touch: all of it, no hover)
-    text_wrapped_disabled(stop == std::string::npos ? about : about.substr(0, stop + 1) + " (...)");
-    if (ImGui::IsItemHovered() && stop != std::string::npos) {
-      ImGui::BeginTooltip();
-      text_wrapped(about, {}, 420.0f * s);
-      ImGui::EndTooltip();
-    }
+    transport(session);
+    clocks(session, stats);
+    // Stability: the gauge of each lane, under the method it judges.
+    const float inner_w = layout.controls.w - 2 * ImGui::GetStyle().WindowPadding.x - ImGui::GetStyle().ScrollbarSize;
+    for (app::Lane& lane : session.lanes()) gauge(session, lane, inner_w, !session.comparing());
     ImGui::Separator();
-
-    if (session.scene().ik) {
-      ik_controls(session);
-      transport(session);
-      clocks(session, stats);
-    } else {
-      if (!session.comparing()) {
-        const MethodInfo& current = method_info(session.method());
-        if (ImGui::BeginCombo(tr("method"), tr(current.label))) {
-          int key = 1;
-          for (const MethodInfo& m : methods()) {
-            const std::string label = std::to_string(key++) + "  " + tr(m.label);
-            ImGui::PushStyleColor(ImGuiCol_Text, v4(draw::method_color(m.id)));
-            if (ImGui::Selectable(label.c_str(), m.id == current.id)) session.set_method(m.id);
-            ImGui::PopStyleColor();
-          }
-          ImGui::EndCombo();
-        }
-      }
-      transport(session);
-      clocks(session, stats);
-      // Stability: the gauge of each lane, under the method it judges.
-      const float inner_w = layout.controls.w - 2 * ImGui::GetStyle().WindowPadding.x - ImGui::GetStyle().ScrollbarSize;
-      for (app::Lane& lane : session.lanes()) gauge(session, lane, inner_w, !session.comparing());
-      ImGui::Separator();
-      parameters(session, ui, few);
-    }
-    if (!few) {
-      if (stats.timed)
-        ImGui::TextDisabled(tr("a frame: %.1f ms simulating, %.1f drawing"), stats.sim_ms, stats.draw_ms);
-      else
-        ImGui::TextDisabled(tr("a frame: %lld force evaluations"), static_cast<long long>(stats.force_evals));
-      if (!session.scene().ik) {
-        if (ImGui::Button(ui.accuracy ? tr("Hide accuracy (A)") : tr("Accuracy vs cost (A)"))) ui.accuracy = !ui.accuracy;
-        ImGui::SameLine();
-        if (ImGui::Button(ui.region ? tr("Hide region (G)") : tr("Stability region (G)"))) ui.region = !ui.region;
-        if (ImGui::Button(ui.tableau ? tr("Hide your method (Y)") : tr("Your method (Y)"))) ui.tableau = !ui.tableau;
-      }
-      if (!session.scene().ik && ImGui::CollapsingHeader(tr("Compare methods"))) {
-        if (ImGui::Button(session.comparing() ? tr("Single view (C)") : tr("Compare (C)"))) {
-          if (session.comparing()) session.set_compare({});
-          else if (compare_methods(ui).size() >= 2) session.set_compare(compare_methods(ui));
-        }
-        ImGui::SameLine();
-        ImGui::TextDisabled(tr("tick 2 to 4:"));
-        if (ImGui::BeginTable("compare", 2)) {
-          for (const MethodInfo& m : methods()) {
-            ImGui::TableNextColumn();
-            ImGui::PushStyleColor(ImGuiCol_Text, v4(draw::method_color(m.id)));
-            ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(3 * s, 1 * s));
-            bool on = ui.compare_choice.has(m.id);
-            if (ImGui::Checkbox(m.name, &on)) ui.compare_choice.set(m.id, on);
-            ImGui::PopStyleVar();
-            ImGui::PopStyleColor();
-          }
-          ImGui::EndTable();
-        }
-      }
-      if (ImGui::CollapsingHeader(tr("View and files"))) {
-        ImGui::InputTextWithHint("##open", tr("a scene file (or drop one)"), ui.open_path, sizeof ui.open_path);
-        ImGui::SameLine();
-        if (ImGui::Button(tr("Open")) && ui.open_path[0]) requests.load = std::string(ui.open_path);
-        ImGui::Checkbox(tr("springs"), &ui.view.springs);
-        ImGui::SameLine();
-        ImGui::Checkbox(tr("particles"), &ui.view.particles);
-        ImGui::SameLine();
-        ImGui::Checkbox(tr("surface"), &ui.view.surfaces);
-        ImGui::Checkbox(tr("the limiting mode (M)"), &ui.view.mode);
-        double strain = ui.view.strain_scale;
-        if (slider(tr("strain scale"), strain, 1e-3, 0.5, true, "+-%.3f")) ui.view.strain_scale = strain;
-        ImGui::Checkbox(tr("presentation (P)"), &ui.presentation);
-        // The language, switched live (the fonts are remade before the next frame).
-        const std::string now = current_language();
-        const auto& all = app::languages();
-        const auto shown = std::find_if(all.begin(), all.end(), [&](const app::Language& l) { return now == l.tag; });
-        if (ImGui::BeginCombo(tr("language"), shown == all.end() ? now.c_str() : shown->name)) {
-          for (const app::Language& l : all)
-            if (ImGui::Selectable(l.name, now == l.tag) && now != l.tag) requests.language = l.tag;
-          ImGui::EndCombo();
-        }
-      }
-    }
-    ImGui::PopItemWidth();
-    ImGui::End();
-
+    parameters(session, ui, few);
   }
-  if (ui.panels && !layout.charts.empty()) {
-    // Charts: side by side; one in presentation mode and in the upright layout (the lesson's first).
-    const Rect& c = layout.charts;
-    ImGui::SetNextWindowPos(ImVec2(c.x, c.y));
-    ImGui::SetNextWindowSize(ImVec2(c.w, c.h));
-    ImGui::Begin("Charts", nullptr, docked | ImGuiWindowFlags_NoTitleBar);
-    std::vector<LessonChart> only = ui.lesson_charts;
-    const bool one = layout.kind == LayoutKind::Upright || layout.kind == LayoutKind::Compact;
-    if (one && only.size() > 1) only.erase(only.begin() + 1, only.end());
-    charts(session, ImGui::GetContentRegionAvail().x, ImGui::GetContentRegionAvail().y, ui.presentation || one, only);
-    ImGui::End();
+}
+
+// Below the controls: what a frame costs, the accuracy, region and tableau panels' buttons, the
+// compare choices and the view and files.
+void tools(app::Session& session, UiState& ui, const FrameStats& stats, float s, Requests& requests) {
+  if (stats.timed)
+    ImGui::TextDisabled(tr("a frame: %.1f ms simulating, %.1f drawing"), stats.sim_ms, stats.draw_ms);
+  else
+    ImGui::TextDisabled(tr("a frame: %lld force evaluations"), static_cast<long long>(stats.force_evals));
+  if (!session.scene().ik) {
+    if (ImGui::Button(ui.accuracy ? tr("Hide accuracy (A)") : tr("Accuracy vs cost (A)"))) ui.accuracy = !ui.accuracy;
+    ImGui::SameLine();
+    if (ImGui::Button(ui.region ? tr("Hide region (G)") : tr("Stability region (G)"))) ui.region = !ui.region;
+    if (ImGui::Button(ui.tableau ? tr("Hide your method (Y)") : tr("Your method (Y)"))) ui.tableau = !ui.tableau;
   }
-  if (ui.panels) {  // the region's window opens over the scene's top left
-    if (layout.kind == LayoutKind::Wide) {
-      region_window(session, ui, layout.charts.x, layout.controls.y, 0.55f * (width - layout.charts.x), 0.55f * height);
-    } else {
-      const float x = layout.scene.x + pad, y = layout.scene.y + pad;
-      region_window(session, ui, x, y, std::max(0.55f * (width - x), std::min(480.0f * s, width - x - pad)),
-                    std::max(0.55f * height, 0.5f * layout.scene.height));
+  if (!session.scene().ik && ImGui::CollapsingHeader(tr("Compare methods"))) {
+    if (ImGui::Button(session.comparing() ? tr("Single view (C)") : tr("Compare (C)"))) {
+      if (session.comparing()) session.set_compare({});
+      else if (compare_methods(ui).size() >= 2) session.set_compare(compare_methods(ui));
+    }
+    ImGui::SameLine();
+    ImGui::TextDisabled(tr("tick 2 to 4:"));
+    if (ImGui::BeginTable("compare", 2)) {
+      for (const MethodInfo& m : methods()) {
+        ImGui::TableNextColumn();
+        ImGui::PushStyleColor(ImGuiCol_Text, v4(draw::method_color(m.id)));
+        ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(3 * s, 1 * s));
+        bool on = ui.compare_choice.has(m.id);
+        if (ImGui::Checkbox(m.name, &on)) ui.compare_choice.set(m.id, on);
+        ImGui::PopStyleVar();
+        ImGui::PopStyleColor();
+      }
+      ImGui::EndTable();
     }
   }
+  if (ImGui::CollapsingHeader(tr("View and files"))) {
+    ImGui::InputTextWithHint("##open", tr("a scene file (or drop one)"), ui.open_path, sizeof ui.open_path);
+    ImGui::SameLine();
+    if (ImGui::Button(tr("Open")) && ui.open_path[0]) requests.load = std::string(ui.open_path);
+    ImGui::Checkbox(tr("springs"), &ui.view.springs);
+    ImGui::SameLine();
+    ImGui::Checkbox(tr("particles"), &ui.view.particles);
+    ImGui::SameLine();
+    ImGui::Checkbox(tr("surface"), &ui.view.surfaces);
+    ImGui::Checkbox(tr("the limiting mode (M)"), &ui.view.mode);
+    double strain = ui.view.strain_scale;
+    if (slider(tr("strain scale"), strain, 1e-3, 0.5, true, "+-%.3f")) ui.view.strain_scale = strain;
+    ImGui::Checkbox(tr("presentation (P)"), &ui.presentation);
+    // The language, switched live (the fonts are remade before the next frame).
+    const std::string now = current_language();
+    const auto& all = app::languages();
+    const auto shown = std::find_if(all.begin(), all.end(), [&](const app::Language& l) { return now == l.tag; });
+    if (ImGui::BeginCombo(tr("language"), shown == all.end() ? now.c_str() : shown->name)) {
+      for (const app::Language& l : all)
+        if (ImGui::Selectable(l.name, now == l.tag) && now != l.tag) requests.language = l.tag;
+      ImGui::EndCombo();
+    }
+  }
+}
 
-  // Divergence in the single view: a banner, and the way out.
+// The controls' window: the pickers, the platform's own controls, the simulation's and the tools.
+void controls_window(app::Session& session, UiState& ui, const FrameStats& stats, const PanelLayout& layout,
+                     ImGuiWindowFlags docked, float s, bool few, Requests& requests) {
+  const Rect& c = layout.controls;
+  ImGui::SetNextWindowPos(ImVec2(c.x, c.y));
+  ImGui::SetNextWindowSize(ImVec2(c.w, c.h));
+  ImGui::Begin("springlab", nullptr, docked | ImGuiWindowFlags_NoTitleBar);
+  ImGui::PushItemWidth(-std::min(130.0f * s, 0.4f * c.w));
+  if (layout.touch) {  // the way back to the scene's room: close the sheet, fold the panel
+    if (ImGui::Button(layout.kind == LayoutKind::Upright ? "\u2193" : "\u2190", ImVec2(ImGui::GetFrameHeight(), 0))) {
+      if (layout.kind == LayoutKind::Upright) ui.sheet_open = false;
+      else ui.side_open = false;
+    }
+    ImGui::SameLine();
+  }
+  pickers(ui, requests);
+  if (ui.platform_controls) ui.platform_controls();
+  about(session, s);
+  ImGui::Separator();
+  simulation_controls(session, ui, stats, layout, few);
+  if (!few) tools(session, ui, stats, s, requests);
+  ImGui::PopItemWidth();
+  ImGui::End();
+}
+
+// The charts' window: side by side; one in presentation mode and in the upright layout (the
+// lesson's first).
+void charts_window(app::Session& session, const UiState& ui, const PanelLayout& layout, ImGuiWindowFlags docked) {
+  const Rect& c = layout.charts;
+  ImGui::SetNextWindowPos(ImVec2(c.x, c.y));
+  ImGui::SetNextWindowSize(ImVec2(c.w, c.h));
+  ImGui::Begin("Charts", nullptr, docked | ImGuiWindowFlags_NoTitleBar);
+  std::vector<LessonChart> only = ui.lesson_charts;
+  const bool one = layout.kind == LayoutKind::Upright || layout.kind == LayoutKind::Compact;
+  if (one && only.size() > 1) only.erase(only.begin() + 1, only.end());
+  charts(session, ImGui::GetContentRegionAvail().x, ImGui::GetContentRegionAvail().y, ui.presentation || one, only);
+  ImGui::End();
+}
+
+// The stability region's window, over the scene's top left.
+void region(app::Session& session, UiState& ui, const PanelLayout& layout, float s, int width, int height) {
+  const float pad = 8.0f * s;
+  if (layout.kind == LayoutKind::Wide) {
+    region_window(session, ui, layout.charts.x, layout.controls.y, 0.55f * (width - layout.charts.x), 0.55f * height);
+  } else {
+    const float x = layout.scene.x + pad, y = layout.scene.y + pad;
+    region_window(session, ui, x, y, std::max(0.55f * (width - x), std::min(480.0f * s, width - x - pad)),
+                  std::max(0.55f * height, 0.5f * layout.scene.height));
+  }
+}
+
+// Divergence in the single view: a banner, and the way out.
+void divergence_window(app::Session& session, const UiState& ui, float s, int width, int height) {
+  const float pad = 8.0f * s;
   const Simulation& first = session.primary().sim;
   if (const Divergence* trouble = first.trouble(); !session.comparing() && trouble) {
     // In a lesson, where diverging is often the point, one line at the foot of the scene (the
@@ -810,44 +827,77 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
     ImGui::End();
     ImGui::PopStyleColor();
   }
+}
 
-  if (!ui.message.empty()) {
-    ImGui::SetNextWindowPos(ImVec2(0.5f * width, 0.12f * height), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    ImGui::SetNextWindowSize(ImVec2(600.0f * s, 0.0f));
-    ImGui::Begin((tr("Message") + std::string("###message")).c_str(), nullptr, kPanel | ImGuiWindowFlags_AlwaysAutoResize);
-    text_wrapped(ui.message, kNear, 600.0f * s - 2.0f * ImGui::GetStyle().WindowPadding.x);
-    if (ImGui::Button(tr("OK"))) ui.message.clear();
-    ImGui::End();
-  }
+// A message (a file that failed to load), until dismissed.
+void message_window(UiState& ui, float s, int width, int height) {
+  ImGui::SetNextWindowPos(ImVec2(0.5f * width, 0.12f * height), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowSize(ImVec2(600.0f * s, 0.0f));
+  ImGui::Begin((tr("Message") + std::string("###message")).c_str(), nullptr, kPanel | ImGuiWindowFlags_AlwaysAutoResize);
+  text_wrapped(ui.message, kNear, 600.0f * s - 2.0f * ImGui::GetStyle().WindowPadding.x);
+  if (ImGui::Button(tr("OK"))) ui.message.clear();
+  ImGui::End();
+}
 
-  if (ui.help) {
-    ImGui::SetNextWindowPos(ImVec2(0.5f * width, 0.5f * height), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    ImGui::Begin((tr("Keys") + std::string("###keys")).c_str(), &ui.help, kPanel | ImGuiWindowFlags_AlwaysAutoResize);
-    const char* keys[][2] = {{N_("space"), N_("pause or resume")}, {N_("S"), N_("one step")}, {N_("R"), N_("reset")},
-                             {N_("1 - 9"), N_("choose a method")}, {N_("C"), N_("compare mode on or off")},
-                             {N_("H"), N_("hide or show the panels")}, {N_("A"), N_("accuracy against cost: chart every method")},
-                             {N_("G"), N_("the stability region, with the scene's modes")},
-                             {N_("Y"), N_("your method: type a Butcher tableau, run it beside")},
-                             {N_("M"), N_("show the mode that limits the step")},
-                             {N_("P"), N_("presentation mode: larger, for a projector")},
-                             {N_("\u2192  PgDn  N"), N_("lesson: the next step")},
-                             {N_("\u2190  PgUp  B"), N_("lesson: the step before")},
-                             {N_("F1"), N_("this help")},
-                             {N_("left drag"), N_("move a particle (release lets it go with its speed)")},
-                             {N_("right drag"), N_("orbit the camera (3D) / pan (2D)")},
-                             {N_("middle drag"), N_("pan")}, {N_("wheel"), N_("zoom")}, {N_("Esc"), N_("quit")}};
-    if (ImGui::BeginTable("keys", 2)) {
-      for (const auto& k : keys) {
-        ImGui::TableNextRow();
-        ImGui::TableNextColumn();
-        ImGui::TextColored(kNeutral, "%s", tr(k[0]));
-        ImGui::TableNextColumn();
-        ImGui::TextUnformatted(tr(k[1]));
-      }
-      ImGui::EndTable();
+// The keys (F1).
+void keys_window(UiState& ui, int width, int height) {
+  ImGui::SetNextWindowPos(ImVec2(0.5f * width, 0.5f * height), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+  ImGui::Begin((tr("Keys") + std::string("###keys")).c_str(), &ui.help, kPanel | ImGuiWindowFlags_AlwaysAutoResize);
+  const char* keys[][2] = {{N_("space"), N_("pause or resume")}, {N_("S"), N_("one step")}, {N_("R"), N_("reset")},
+                           {N_("1 - 9"), N_("choose a method")}, {N_("C"), N_("compare mode on or off")},
+                           {N_("H"), N_("hide or show the panels")}, {N_("A"), N_("accuracy against cost: chart every method")},
+                           {N_("G"), N_("the stability region, with the scene's modes")},
+                           {N_("Y"), N_("your method: type a Butcher tableau, run it beside")},
+                           {N_("M"), N_("show the mode that limits the step")},
+                           {N_("P"), N_("presentation mode: larger, for a projector")},
+                           {N_("\u2192  PgDn  N"), N_("lesson: the next step")},
+                           {N_("\u2190  PgUp  B"), N_("lesson: the step before")},
+                           {N_("F1"), N_("this help")},
+                           {N_("left drag"), N_("move a particle (release lets it go with its speed)")},
+                           {N_("right drag"), N_("orbit the camera (3D) / pan (2D)")},
+                           {N_("middle drag"), N_("pan")}, {N_("wheel"), N_("zoom")}, {N_("Esc"), N_("quit")}};
+  if (ImGui::BeginTable("keys", 2)) {
+    for (const auto& k : keys) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextColored(kNeutral, "%s", tr(k[0]));
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(tr(k[1]));
     }
-    ImGui::End();
+    ImGui::EndTable();
   }
+  ImGui::End();
+}
+
+}  // namespace
+
+Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats, int width, int height) {
+  Requests requests;
+  ImGuiIO& io = ImGui::GetIO();
+  const bool large = ui.presentation && io.Fonts->Fonts.Size > 1;
+  if (large) ImGui::PushFont(io.Fonts->Fonts[1]);
+  const float s = layout_scale(ui);
+  const bool few = ui.presentation;
+  const PanelLayout layout = panel_layout(ui, width, height);
+  g_touch = layout.touch;
+  // A thumb's targets: frames at least 44 units high (Apple's guideline; Material's is 48 dp).
+  if (layout.touch) {
+    const float frame_pad = std::max(ImGui::GetStyle().FramePadding.y, 0.5f * (44.0f * s - ImGui::GetFontSize()));
+    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(ImGui::GetStyle().FramePadding.x, frame_pad));
+    ImGui::PushStyleVar(ImGuiStyleVar_GrabMinSize, 30.0f * s);
+  }
+  // The panels over the scene (a window too small to share): they keep their background.
+  const bool over = layout.scene.x == 0 && layout.scene.width == width && !layout.controls.empty() &&
+                    (layout.kind == LayoutKind::Wide || layout.kind == LayoutKind::Compact);
+  const ImGuiWindowFlags docked = over || layout.touch ? kPanel : kDocked;
+
+  if (ui.panels && !layout.strip.empty()) strip(session, ui, layout, s);
+  if (ui.panels && !layout.controls.empty()) controls_window(session, ui, stats, layout, docked, s, few, requests);
+  if (ui.panels && !layout.charts.empty()) charts_window(session, ui, layout, docked);
+  if (ui.panels) region(session, ui, layout, s, width, height);
+  divergence_window(session, ui, s, width, height);
+  if (!ui.message.empty()) message_window(ui, s, width, height);
+  if (ui.help) keys_window(ui, width, height);
   if (layout.touch) ImGui::PopStyleVar(2);
   if (large) ImGui::PopFont();
   return requests;
