@@ -61,10 +61,12 @@ void HomeworkWatch::install(Session& session) {
   for (const auto& [step, found, label] : {std::tuple{Step::Euler, r.euler, tr("Your simulateEuler")},
                                            std::tuple{Step::Verlet, r.verlet, tr("Your simulateVerlet")}}) {
     auto code = std::make_shared<RopeProcess>(current_->build->runner(), current_->build->folder(), kLaneLimit);
-    const std::optional<Method> row = found.method.empty() ? std::nullopt : find_method(found.method);
-    own.push_back({rope_lane_step(code, step), label, row.value_or(step == Step::Euler ? Method::SymplecticEuler : Method::Verlet),
-                   row.has_value()});
-    beside.push_back(row.value_or(step == Step::Euler ? Method::SymplecticEuler : Method::Verlet));
+    // The row it was found to be (its theory is the lane's), or, found none, the exercise's own.
+    Method like = step == Step::Euler ? Method::SymplecticEuler : Method::Verlet;
+    const bool known = !found.method.empty();
+    if (known) like = method_info(*find_method(found.method)).id;
+    own.push_back({rope_lane_step(code, step), label, like, known});
+    beside.push_back(like);
   }
   session.set_own_lanes(own, beside);
 

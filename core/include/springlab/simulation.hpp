@@ -25,6 +25,8 @@
 
 namespace springlab {
 
+struct ContactResult;  // colliders.hpp
+
 /// The energy audit (energy_audit.hpp): a rise of the net energy counts only beyond what a stable
 /// step allows plus this fraction of the scene's energy scale (rounding, contacts' pushes).
 inline constexpr double kAuditFraction = 1e-3;
@@ -210,6 +212,14 @@ class Simulation {
 
  private:
   void model_changed();
+  // step()'s stages, in order (simulation.cpp says what each does and when it ends the run).
+  bool ready_to_step();
+  bool integrate(double h);
+  bool still_bounded();
+  void advance_clock(double h);
+  void count_outside_work(double h, const ContactResult& contact);
+  void emit(bool outside);
+  bool check_energy(bool audit);
   void choose_substeps();
   void substeps_changed(int substeps);
   // Runs `change`, counting the jump in the total energy it makes as work done from outside.

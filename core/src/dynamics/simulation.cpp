@@ -179,84 +179,120 @@ void Simulation::audit(double total) {
   if (settings_.audit_stops) divergence_ = std::move(d);
 }
 
+// One step of dt, as named stages (a stage that ends the run returns false, the divergence set):
+//   ready_to_step    automatic sub-steps chosen, or the lane waits for its analysis
+//   then per sub-step of h:
+//     integrate          the method's step (or one's own) from current_ into next_
+//     still_bounded      next_ finite, its kinetic energy within 1e6 times the scene's scale
+//     advance_clock      next_.t = t_since_ + n h, no drift from adding h over and over
+//     resolve_contacts   colliders push particles out (the workspace forgets what it derived)
+//     count_outside_work what contacts, fields, wind and a held particle put in or took, and what
+//                        damping dissipated (for the net energy and the audit), at current_
+//     (swap)             next_ becomes current_
+//     emit               an emitter's births and deaths
+//   check_energy     the total energy (every step on a small scene) and the audit
 bool Simulation::step() {
   if (divergence_) return false;
+  if (!ready_to_step()) return true;  // nothing tells a safe step yet: wait
+  const double h = this->h();
+  const bool audit = audited();
+  const bool outside = settings_.track_dissipation || audit;  // the work from outside, for the net energy
+  ws_.measure_power = settings_.track_dissipation;
+  for (int k = 0; k < settings_.substeps; ++k) {
+    if (!integrate(h) || !still_bounded()) return false;
+    advance_clock(h);
+    const ContactResult contact = resolve_contacts(model_, next_);
+    if (contact.contacts > 0) ws_.invalidate();
+    if (outside) count_outside_work(h, contact);
+    std::swap(current_, next_);
+    if (!emission_.empty()) emit(outside);
+  }
+  ++steps_;
+  return check_energy(audit);
+}
+
+bool Simulation::ready_to_step() {
   if (settings_.auto_substeps && !stability_) {
     if (settings_.analyse_when_needed) stability();  // chooses them
     else if (!provisional_) choose_substeps();       // from the quick bound, while it comes
-    if (!ready()) return true;                       // nothing tells a safe step yet: wait
+    return ready();
   }
-  const double h = this->h();
-  const bool audit = audited();
-  const bool dissipation = settings_.track_dissipation;
-  const bool outside = dissipation || audit;  // the work from outside, for the net energy
-  ws_.measure_power = dissipation;
-  for (int k = 0; k < settings_.substeps; ++k) {
-    try {
-      if (settings_.own_step) settings_.own_step(model_, current_, next_, h, ws_);
-      else springlab::step(settings_.method, model_, current_, next_, h, settings_.step, ws_);
-    } catch (const StepFailure& failure) {
-      ++steps_;
-      diverge(failure.what());
-      return false;
-    }
-    // One pass over the particles: finite, and the kinetic part of the energy test, every step,
-    // so that a blow-up is stopped near where it starts. The whole energy is checked below.
-    const StepProbe check = ws_.step_probe ? *ws_.step_probe : probe(model_, next_);
-    if (!check.finite) {
-      ++steps_;
-      diverge(tr("a position or velocity became infinite or NaN"));
-      return false;
-    }
-    const double kinetic = check.kinetic;
-    if (!(kinetic <= kDivergenceFactor * energy_scale_)) {
-      ++steps_;
-      std::swap(current_, next_);  // still finite: kept, as the state where it was caught
-      diverge(format_text(tr("the kinetic energy reached %.4g J, more than 1e6 times the scene's energy scale (%.4g J)"),
-                          kinetic, energy_scale_));
-      return false;
-    }
-    // Time as a multiple of h since h last changed: no drift from adding h over and over.
-    next_.t = t_since_ + static_cast<double>(++substeps_done_) * h;
-    const ContactResult contact = resolve_contacts(model_, next_);
-    if (contact.contacts > 0) ws_.invalidate();
-    if (outside) {
-      // Work from outside: contacts push particles out of colliders (raising their potential),
-      // a swirl or a wind puts energy in (the charts count them with what damping takes), and a held
-      // particle's prescribed motion does work on the rest through its springs: -f . v, f their
-      // force on it.
-      const double pushed = contact.potential_gained + (model_.attractors.empty() ? 0.0 : h * field_power(model_, current_));
-      // A wind's work through the drag (which the dissipated power already nets out).
-      const double blown = h * wind_power(model_, current_);
-      baseline_ += pushed + blown;
-      external_ += pushed + blown;
-      // The power at the step's start (the explicit methods measured it in their force pass),
-      // over h, and what contacts took.
-      if (dissipation)
-        dissipated_ += h * (ws_.input_power ? *ws_.input_power : dissipation_power(model_, current_)) +
-                       contact.kinetic_lost - pushed;
-      if (grabbed_ >= 0) {
-        const double work = -h * held_force(model_, current_, grabbed_, grabbed_springs_).dot(
-                                     current_.v.row(grabbed_).transpose());
-        baseline_ += work;
-        external_ += work;
-      }
-    }
-    std::swap(current_, next_);
-    if (!emission_.empty()) {
-      bool changed = false;
-      const auto births_and_deaths = [&] { changed = emission_.update(model_, current_); };
-      if (outside) from_outside(births_and_deaths);
-      else births_and_deaths();
-      if (changed) {
-        ws_.invalidate();
-        // A held particle whose time is up is let go of: it is no longer there.
-        if (grabbed_ >= 0 && !model_.emitters.empty() && !emission_.alive(grabbed_) && emission_.owned(grabbed_))
-          grabbed_ = -1;
-      }
-    }
+  return true;
+}
+
+bool Simulation::integrate(double h) {
+  try {
+    if (settings_.own_step) settings_.own_step(model_, current_, next_, h, ws_);
+    else springlab::step(settings_.method, model_, current_, next_, h, settings_.step, ws_);
+  } catch (const StepFailure& failure) {
+    ++steps_;
+    diverge(failure.what());
+    return false;
   }
-  ++steps_;
+  return true;
+}
+
+bool Simulation::still_bounded() {
+  // One pass over the particles: finite, and the kinetic part of the energy test, every step,
+  // so that a blow-up is stopped near where it starts. The whole energy is checked by check_energy.
+  const StepProbe check = ws_.step_probe ? *ws_.step_probe : probe(model_, next_);
+  if (!check.finite) {
+    ++steps_;
+    diverge(tr("a position or velocity became infinite or NaN"));
+    return false;
+  }
+  if (!(check.kinetic <= kDivergenceFactor * energy_scale_)) {
+    ++steps_;
+    std::swap(current_, next_);  // still finite: kept, as the state where it was caught
+    diverge(format_text(tr("the kinetic energy reached %.4g J, more than 1e6 times the scene's energy scale (%.4g J)"),
+                        check.kinetic, energy_scale_));
+    return false;
+  }
+  return true;
+}
+
+void Simulation::advance_clock(double h) {
+  // Time as a multiple of h since h last changed: no drift from adding h over and over.
+  next_.t = t_since_ + static_cast<double>(++substeps_done_) * h;
+}
+
+void Simulation::count_outside_work(double h, const ContactResult& contact) {
+  // Work from outside: contacts push particles out of colliders (raising their potential), a
+  // swirl or a wind puts energy in (the charts count them with what damping takes), and a held
+  // particle's prescribed motion does work on the rest through its springs: -f . v, f their
+  // force on it.
+  const double pushed = contact.potential_gained + (model_.attractors.empty() ? 0.0 : h * field_power(model_, current_));
+  // A wind's work through the drag (which the dissipated power already nets out).
+  const double blown = h * wind_power(model_, current_);
+  baseline_ += pushed + blown;
+  external_ += pushed + blown;
+  // The power at the step's start (the explicit methods measured it in their force pass), over
+  // h, and what contacts took.
+  if (settings_.track_dissipation)
+    dissipated_ += h * (ws_.input_power ? *ws_.input_power : dissipation_power(model_, current_)) +
+                   contact.kinetic_lost - pushed;
+  if (grabbed_ >= 0) {
+    const double work =
+        -h * held_force(model_, current_, grabbed_, grabbed_springs_).dot(current_.v.row(grabbed_).transpose());
+    baseline_ += work;
+    external_ += work;
+  }
+}
+
+void Simulation::emit(bool outside) {
+  bool changed = false;
+  const auto births_and_deaths = [&] { changed = emission_.update(model_, current_); };
+  if (outside) from_outside(births_and_deaths);
+  else births_and_deaths();
+  if (changed) {
+    ws_.invalidate();
+    // A held particle whose time is up is let go of: it is no longer there.
+    if (grabbed_ >= 0 && !model_.emitters.empty() && !emission_.alive(grabbed_) && emission_.owned(grabbed_))
+      grabbed_ = -1;
+  }
+}
+
+bool Simulation::check_energy(bool audit) {
   // A small scene is checked every step: a pass over it costs little, and its energy, often all
   // in one mode, oscillates within a few steps near a symplectic method's limit; the audit needs
   // those oscillations sampled to see through them.
