@@ -41,8 +41,8 @@ int view(ViewCli& o) {
   // A lesson is checked before any window opens: a bad one is bad input, display or not.
   if (o.app.lesson) check_lesson_step(open_lesson(*o.app.lesson), o.app.lesson_step, "--step");
   o.window.threads_given = o.app.sim.threads.has_value();
-  if (o.window.homework && (o.app.lesson || o.compare))
-    throw InputError("--homework: shows your rope's lanes; it goes with neither --lesson nor --compare");
+  if (o.window.homework && o.compare)
+    throw InputError("--homework: shows your rope's lanes beside springlab's; it does not go with --compare");
   return run_window(o.app, o.window);
 }
 

@@ -75,13 +75,25 @@ TEST(HomeworkView, ACrashStopsItsOwnLaneAndTheAppGoesOn) {
   EXPECT_NE(r.out.find("lane       verlet at t = 0.3333 s\n"), std::string::npos) << r.out;
 }
 
+// Lesson 13 with the student's code: each of its steps shows the student's lanes beside
+// springlab's (step 4 is the spring: a rope of two masses to the student's constructor).
+TEST(HomeworkView, TheLessonShowsTheStudentsLanes) {
+  const Result r = springlab_with("xvfb-run -a -s '-screen 0 1280x720x24' ",
+                                  "view --lesson homework-8 --step 4 --homework " + (kRopes / "correct.cpp").string() +
+                                      " --frames 30");
+  EXPECT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("lane       Your simulateEuler at t = 0.5 s\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("lane       Your simulateVerlet at t = 0.5 s\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("lane       verlet at t = 0.5 s\n"), std::string::npos) << r.out;
+}
+
 TEST(HomeworkView, AFileThatDoesNotCompileIsRefusedBeforeAnyWindow) {
   const Result r = springlab("view --homework " + (kRopes / "does_not_compile.cpp").string());  // no display needed
   EXPECT_EQ(r.status, 2) << r.out << r.err;
   EXPECT_NE(r.err.find("does_not_compile.cpp does not compile: "), std::string::npos) << r.err;
   const Result both = springlab("view --homework " + (kRopes / "correct.cpp").string() + " --compare euler,rk4");
   EXPECT_EQ(both.status, 2);
-  EXPECT_NE(both.err.find("--homework: shows your rope's lanes; it goes with neither --lesson nor --compare"),
+  EXPECT_NE(both.err.find("--homework: shows your rope's lanes beside springlab's; it does not go with --compare"),
             std::string::npos) << both.err;
 }
 
