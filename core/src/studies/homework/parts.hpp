@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -59,6 +60,13 @@ Identified identify(RopeCode& code, Step step, const RopeRequest& request, Check
 
 /// The usual mistakes, one probe each (probes.cpp).
 void probe_mistakes(RopeCode& code, Step step, const Identified& found, CheckSection& section);
+
+/// Whether simulateVerlet holds its springs as constraints, moving the masses (position-based, as
+/// CS 184's rope and the exercise's "(solving constraints)" have it) rather than by their force:
+/// what a step does to a spring stretched by 25 %, or nullopt for a force's pull.
+std::optional<std::string> constraint_probe(RopeCode& code);
+/// The probes that still mean something then: the damping, last_position and the pin.
+void probe_constraint_mistakes(RopeCode& code, CheckSection& section);
 
 /// The spring the steps are measured on (spring_checks.cpp): a mass of 1 kg hanging from a pin by
 /// a spring of 64 N/m and rest length 1 m under g = 8 m/s^2, let go at rest from the rest length.

@@ -9,6 +9,7 @@
 //             or once per spring), and where Verlet's last_position goes.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "parts.hpp"
 
@@ -132,7 +133,7 @@ Rule probe_springs(RopeCode& code, Step step, double damping, CheckSection& sect
   return rule;
 }
 
-void probe_gravity(RopeCode& code, Step step, double damping, Rule rule, CheckSection& section) {
+void probe_gravity(RopeCode& code, Step step, double damping, Rule rule, CheckSection& section, bool pin_only = false) {
   const RopeRequest request = three_masses({0});
   const BuiltRope rope = code.build(request);
   const RopeState s = at_rest(rope);
@@ -146,6 +147,7 @@ void probe_gravity(RopeCode& code, Step step, double damping, Rule rule, CheckSe
     fail(section, "a pinned mass moves: mass 0 went from " + vec(s[0].x) + " to " + vec(after[0].x) +
                       " in one step (pinned masses get no force, no gravity and no motion)");
   else pass(section, "pins: the pinned mass stays where it is");
+  if (pin_only) return;
 
   // Gravity alone: what the step implies less what the code's springs give (nothing, by Hooke's
   // law, at rest length).
@@ -208,6 +210,26 @@ double probe_motion(RopeCode& code, Step step, CheckSection& section) {
 }
 
 }  // namespace
+
+std::optional<std::string> constraint_probe(RopeCode& code) {
+  // One spring, both ends free, stretched by 25 %, no gravity, at rest: a force pulls its masses
+  // back by h^2 k s / m a step (2e-4 of the stretch here); a constraint puts the length back.
+  const BuiltRope rope = code.build({Vec2(0, 0), Vec2(1, 0), 2, 0.25, 64.0, {}});
+  RopeState s = at_rest(rope);
+  s[1].x = s[1].x_last = Vec2(1.25, 0.0);
+  code.set_state(s);
+  const RopeState after = code.simulate(Step::Verlet, kH, Vec2::Zero(), 1).back();
+  const double length = (after[1].x - after[0].x).norm(), taken = (1.25 - length) / 0.25;
+  if (!(taken > 0.1)) return std::nullopt;  // a force's pull (or nothing sane): the force probes say
+  if (std::abs(length - 1.0) <= 1e-9)
+    return "a spring stretched by 25 % is back at its rest length after one step (to " + num(std::abs(length - 1.0)) + " m)";
+  return "a spring stretched by 25 % is pulled " + num(100.0 * taken) + " % of the way back in one step";
+}
+
+void probe_constraint_mistakes(RopeCode& code, CheckSection& section) {
+  probe_motion(code, Step::Verlet, section);
+  probe_gravity(code, Step::Verlet, 0.0, Rule::Hooke, section, true);
+}
 
 void probe_mistakes(RopeCode& code, Step step, const Identified&, CheckSection& section) {
   // The damping first, from masses moving together (no spring, no gravity at work): the other
