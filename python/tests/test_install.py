@@ -10,6 +10,16 @@ from pathlib import Path
 import pytest
 
 
+def run_installed(site, code, cwd):
+    """Runs `code` with only the installed package at `site` on the path (no source tree, no
+    build, no SPRINGLAB_DATA); returns its printed lines."""
+    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "SPRINGLAB_DATA")}
+    env["PYTHONPATH"] = str(site)
+    run = subprocess.run([sys.executable, "-c", code], cwd=cwd, env=env, capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    return run.stdout.split("\n")
+
+
 def test_the_installed_package_runs_from_its_prefix(tmp_path):
     build = os.environ["SPRINGLAB_BUILD_DIR"]
     if Path(os.environ["SPRINGLAB_PYTHON_INSTALL_DIR"]).is_absolute():
@@ -25,11 +35,7 @@ def test_the_installed_package_runs_from_its_prefix(tmp_path):
             "sim = springlab.Simulation('rope', method='rk4', steps=10)\n"
             "sim.run()\n"
             "print(springlab.__file__, springlab.data_dir(), sim.t, sep='\\n')\n")
-    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "SPRINGLAB_DATA")}
-    env["PYTHONPATH"] = str(site)
-    run = subprocess.run([sys.executable, "-c", code], cwd=tmp_path, env=env, capture_output=True, text=True)
-    assert run.returncode == 0, run.stderr
-    module, data, t = run.stdout.split("\n")[:3]
+    module, data, t = run_installed(site, code, tmp_path)[:3]
     assert Path(module).is_relative_to(prefix)
     assert Path(data).is_relative_to(prefix)  # its own scenes, not the source tree's
     assert float(t) > 0
@@ -55,10 +61,6 @@ def test_pip_installs_the_package_offline(tmp_path):
             "sim.run()\n"
             "r = springlab.homework.check(lambda x, v, force, h: (x + h * v, v + h * force(x, v)))\n"
             "print(springlab.__file__, springlab.data_dir(), r.method, sep='\\n')\n")
-    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "SPRINGLAB_DATA")}
-    env["PYTHONPATH"] = str(site)
-    run = subprocess.run([sys.executable, "-c", code], cwd=tmp_path, env=env, capture_output=True, text=True)
-    assert run.returncode == 0, run.stderr
-    module, data, method = run.stdout.split("\n")[:3]
+    module, data, method = run_installed(site, code, tmp_path)[:3]
     assert Path(module).is_relative_to(site) and Path(data).is_relative_to(site)
     assert method == "euler"

@@ -7,14 +7,11 @@
 #include <optional>
 
 #include "parts.hpp"
+#include "springlab/text.hpp"
 
 namespace springlab::homework {
 
-std::string num(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g", value);
-  return text;
-}
+std::string num(double value) { return format_text("%.4g", value); }
 
 std::string vec(const Vec2& v) { return "(" + num(v.x()) + ", " + num(v.y()) + ")"; }
 
