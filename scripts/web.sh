@@ -28,7 +28,7 @@ fi
 apt() { DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get -o DPkg::Lock::Timeout=300 -q "$@"; }
 
 # Debian's packages, only those missing. (Node: the machine's own when it has one.)
-packages=(emscripten chromium cmake ninja-build libeigen3-dev nlohmann-json3-dev libboost-dev googletest fonts-dejavu-core
+packages=(emscripten node-acorn chromium cmake ninja-build libeigen3-dev nlohmann-json3-dev libboost-dev googletest fonts-dejavu-core
           fonts-noto-cjk python3-fonttools python3 xz-utils)
 command -v node >/dev/null || packages+=(nodejs)
 command -v npm >/dev/null || packages+=(npm)
@@ -68,7 +68,7 @@ if [[ ! -f "$build/build.ninja" ]]; then
 fi
 cmake --build "$build" --parallel "$(nproc)"
 
-files=(index.html springlab.js springlab.wasm springlab.data sw.js manifest.webmanifest icon-192.png icon-512.png)
+files=(index.html springlab.js springlab.wasm springlab.data sw.js manifest.webmanifest icon-192.png icon-512.png homework.js acorn.js acorn-walk.js)
 bytes=0 gz=0
 for f in "${files[@]}"; do
   bytes=$((bytes + $(stat -c %s "$site/$f")))

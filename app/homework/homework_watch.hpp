@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "homework/own_lanes.hpp"
 #include "homework/rope_build.hpp"
 #include "session/session.hpp"
 #include "springlab/homework.hpp"
@@ -36,12 +37,12 @@ class HomeworkWatch {
  private:
   struct Built;  // a build, checked
   static std::unique_ptr<Built> build(const std::filesystem::path& file);
-  void install(Session& session);
+  void use(std::unique_ptr<Built> built);
 
   std::filesystem::path file_;
   std::filesystem::file_time_type seen_{};
   std::unique_ptr<Built> current_;
-  std::uint64_t installed_in_ = 0;  // the serial of the session given the lanes (0: none)
+  HomeworkLanes lanes_;
   ui::HomeworkStatus status_;
 
   Worker worker_;

@@ -14,13 +14,13 @@ using namespace homework;
 namespace {
 
 // Steps are asked for a batch at a time, ahead of the lane: a round trip to the runner costs more
-// than a rope's step, and while nothing from outside changes the lane's state (a reset, a drag,
+// than a rope's step (and a call into the page's JavaScript some), and while nothing from outside changes the lane's state (a reset, a drag,
 // a slider, a new h) the steps it will ask for next are those the runner would make anyway. A
 // batch that fails is taken again a step at a time, so that a crash is told at its own step.
 constexpr int kAhead = 32;
 
 struct Lane {
-  std::shared_ptr<RopeProcess> code;
+  std::shared_ptr<RopeCode> code;
   Step step;
   std::optional<RopeRequest> built;  // the rope the runner holds
   State made;                        // the state the lane was last given (the runner's, when synced)
@@ -154,7 +154,7 @@ bool is_one_rope(const Model& model) {
   }
 }
 
-OwnStep rope_lane_step(std::shared_ptr<RopeProcess> code, Step step) {
+OwnStep rope_lane_step(std::shared_ptr<RopeCode> code, Step step) {
   auto lane = std::make_shared<Lane>();
   lane->code = std::move(code);
   lane->step = step;

@@ -23,6 +23,8 @@ struct AppSettings {
   // A lesson to teach (a shipped lesson's name or number, or a file), from this step (from 1).
   std::optional<std::string> lesson;
   int lesson_step = 1;
+  // The browser's Homework 8: the student's JavaScript steps (a link's homework=), run at start.
+  std::string homework_js;
 };
 
 }  // namespace springlab::app

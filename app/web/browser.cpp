@@ -59,6 +59,14 @@ EM_JS(void, js_first_frame_shown, (), {
 
 EM_JS(void, js_set_page_link, (const char* text), { window.springlabLink = UTF8ToString(text); });
 
+EM_JS(void, js_open_homework_panel, (), {
+  if (window.springlabHomework && window.springlabHomework.open) window.springlabHomework.open();
+});
+
+EM_JS(void, js_start_homework, (const char* code), {
+  if (window.springlabHomework && window.springlabHomework.start) window.springlabHomework.start(UTF8ToString(code));
+});
+
 std::string taken(char* p) {
   std::unique_ptr<char, decltype(&std::free)> owned(p, &std::free);
   return p ? std::string(p) : std::string();
@@ -75,5 +83,7 @@ void copy_to_clipboard(const std::string& text) { js_copy_to_clipboard(text.c_st
 void choose_scene_file() { js_choose_scene_file(); }
 void first_frame_shown() { js_first_frame_shown(); }
 void set_page_link(const std::string& link) { js_set_page_link(link.c_str()); }
+void open_homework_panel() { js_open_homework_panel(); }
+void start_homework(const std::string& code) { js_start_homework(code.c_str()); }
 
 }  // namespace springlab::app::web

@@ -125,6 +125,12 @@ AppSettings settings_from_link(const std::string& fragment) {
     else if (key == "script") s.script = value;
     else if (key == "set") s.sim.sets.push_back(value);  // set=cloth.width%3D64, as --set
     else if (key == "lesson") s.lesson = value;
+    else if (key == "homework") {
+      if (value.size() > kMaxHomework)
+        throw InputError("link: homework: the code is " + std::to_string(value.size()) + " bytes, more than a link takes (" +
+                         std::to_string(kMaxHomework) + "): share the file instead");
+      s.homework_js = value;
+    }
     else if (key == "step") {
       const double step = number(key, value);
       if (!(step >= 1 && step <= 12 && step == std::floor(step)))
@@ -176,11 +182,13 @@ namespace {
 std::string language_part() { return current_language() == "en" ? "" : "&lang=" + current_language(); }
 }  // namespace
 
-std::string link_of(const InteractiveApp& app, const std::vector<std::string>& sets, double ui_scale) {
+std::string link_of(const InteractiveApp& app, const std::vector<std::string>& sets, double ui_scale,
+                    const std::string& homework_js) {
+  const std::string homework = homework_js.empty() ? "" : "&homework=" + percent_encoded(homework_js);
   // In a lesson (the class has not taken over): the lesson at its step.
   if (app.lesson() && !app.interrupted())
     return "lesson=" + percent_encoded(app.lesson()->name) + "&step=" + std::to_string(app.step() + 1) +
-           (std::abs(ui_scale - 1.0) > 1e-12 ? "&ui-scale=" + shortest(ui_scale) : "") + language_part();
+           (std::abs(ui_scale - 1.0) > 1e-12 ? "&ui-scale=" + shortest(ui_scale) : "") + language_part() + homework;
   const Session& session = app.session();
   const Lane& lane = session.primary();
   std::string link = "scene=" + percent_encoded(app.scene_name());
@@ -197,12 +205,15 @@ std::string link_of(const InteractiveApp& app, const std::vector<std::string>& s
   const Model& model = file ? file->scene.model : lane.sim.model();
   const double file_ks = model.materials.empty() ? 0.0 : model.materials.front().ks;
   const double file_kd = model.materials.empty() ? 0.0 : model.materials.front().kd;
+  // The homework's lanes are made by its code (homework=) with the rows it puts beside them.
+  const bool own = std::any_of(session.lanes().begin(), session.lanes().end(), [](const Lane& l) { return !l.own.empty(); });
   // A lane's tableau travels with the link unless it is a shipped one of that name.
   std::vector<Method> shown;
   if (session.comparing())
     for (const Lane& l : session.lanes()) shown.push_back(l.sim.settings().method);
   else
     shown.push_back(session.method());
+  if (own) shown.clear();
   for (Method m : shown) {
     const ButcherTableau* t = tableau_source(m);
     if (!t) continue;
@@ -221,7 +232,9 @@ std::string link_of(const InteractiveApp& app, const std::vector<std::string>& s
       link += "&tableau=" + percent_encoded(tableau_json(named));
     }
   }
-  if (session.comparing()) {
+  if (own) {
+    // (no compare= nor method=: the homework's code makes its lanes and the rows beside them)
+  } else if (session.comparing()) {
     std::string lanes;
     for (const Lane& l : session.lanes()) lanes += (lanes.empty() ? "" : ",") + std::string(method_info(l.sim.settings().method).name);
     link += "&compare=" + lanes;
@@ -238,7 +251,7 @@ std::string link_of(const InteractiveApp& app, const std::vector<std::string>& s
   if (step.iterations > 0) link += "&iterations=" + std::to_string(step.iterations);
   if (step.chebyshev_rho > 0.0) link += "&rho=" + shortest(step.chebyshev_rho);
   if (differs(ui_scale, 1.0)) link += "&ui-scale=" + shortest(ui_scale);
-  return link + language_part();
+  return link + language_part() + homework;
 }
 
 }  // namespace springlab::app::web

@@ -5,6 +5,7 @@
 // stability region, lesson=NAME&step=N to teach a lesson from a step (--lesson, --step), and
 // tableau=<a tableau's JSON> (assets/tableaux/README.md) to add a method of one's own, named after
 // its "name" ("My RK" is my-rk), for method= and compare= to use: a teacher sends the link.
+// homework=<the student's JavaScript> opens Homework 8's panel with that code and runs it.
 // Every value gets the checks the command line's flags get (options/scene_options.hpp).
 #pragma once
 
@@ -31,9 +32,13 @@ Opened open_settings(const AppSettings& settings);
 
 // The fragment that reopens what `app` shows now: its scene (with the `sets` it was opened with),
 // and whatever differs from that (method, dt, fixed sub-steps, k_s, k_d, compare lanes).
-std::string link_of(const InteractiveApp& app, const std::vector<std::string>& sets, double ui_scale);
+// The homework's code (empty: none) travels too.
+std::string link_of(const InteractiveApp& app, const std::vector<std::string>& sets, double ui_scale,
+                    const std::string& homework_js = {});
 
 // The names a link takes, for messages.
-inline constexpr const char* kLinkParameters = "scene, method, tableau, dt, substeps, ks, kd, iterations, rho, compare, script, set, accuracy, region, lesson, step, ui-scale, lang";
+inline constexpr const char* kLinkParameters = "scene, method, tableau, dt, substeps, ks, kd, iterations, rho, compare, script, set, accuracy, region, lesson, step, ui-scale, lang, homework";
+// The longest code a link carries (browsers take links of 2 MB; 64 KB is many times a rope's).
+inline constexpr std::size_t kMaxHomework = 65536;
 
 }  // namespace springlab::app::web

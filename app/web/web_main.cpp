@@ -27,11 +27,14 @@
 #include <utility>
 #include <vector>
 
+#include "homework/own_lanes.hpp"
 #include "platform/interactive_app.hpp"
 #include "springlab/error.hpp"
 #include "ui/panels.hpp"
 #include "ui/theme.hpp"
+#include "ui/homework_status.hpp"
 #include "web/browser.hpp"
+#include "web/js_rope.hpp"
 #include "web/url_config.hpp"
 #include "springlab/text.hpp"
 #include "util/language.hpp"
@@ -56,9 +59,15 @@ struct Page {
   long frames = 0;
   double frame_ms = 0.0;  // the last frame's whole time in the app (the browser composites after)
   ImVec4 copy_button;  // where Copy link is (x, y, width, height), for the page's tests
+  ImVec4 homework_button;  // and Homework 8's
   draw::Viewport scene;  // where the scene is drawn (window pixels from the top left), for the tests
   double css_width = 0, css_height = 0;  // the canvas's CSS box, as the last frame was laid out in
   int win_width = 0, win_height = 0;  // and its size in window pixels (the panels' units)
+  // Homework 8 in JavaScript (the page's panel, homework.js): the student's steps as lanes, what
+  // the checker found, and their code as the link carries it (homework=).
+  HomeworkLanes homework;
+  ui::HomeworkStatus homework_status;
+  std::string homework_code;
 };
 Page* g_page = nullptr;
 
@@ -94,7 +103,7 @@ void browser_controls(Page& page) {
   page.copy_button = {ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
                       ImGui::GetItemRectSize().y};
   if (copy) {
-    page.link = page_address() + "#" + link_of(*page.app, page.sets, page.ui_scale);
+    page.link = page_address() + "#" + link_of(*page.app, page.sets, page.ui_scale, page.homework_code);
     copy_to_clipboard(page.link);
     set_page_link(page.link);
   }
@@ -113,6 +122,10 @@ void browser_controls(Page& page) {
     }
     ImGui::EndCombo();
   }
+  if (ImGui::Button(tr("Homework 8 in JavaScript..."))) open_homework_panel();
+  page.homework_button = {ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
+                          ImGui::GetItemRectSize().y};
+  if (page.homework.has_code()) ui::draw_homework_status(page.homework_status);
   if (!page.link.empty()) {
     // What was copied, as text to see or to copy by hand.
     ImGui::SetNextItemWidth(-1.0f);
@@ -135,13 +148,17 @@ void frame() {
   const double start = emscripten_get_now();
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
+  page.homework.poll(page.app->session(), page.homework_status);
   page.app->frame(size);
   page.frame_ms = emscripten_get_now() - start;
   page.scene = ui::scene_viewport(page.app->ui(), size.win_width, size.win_height);
   page.win_width = size.win_width;
   page.win_height = size.win_height;
   if (page.app->take_opened()) page.sets.clear();  // another scene, opened as its file says
-  if (++page.frames == 1) first_frame_shown();
+  if (++page.frames == 1) {
+    first_frame_shown();
+    if (!page.homework_code.empty()) start_homework(page.homework_code);  // the link's code, run
+  }
 }
 
 // The app for the page's link; a link that cannot be followed opens the default scene instead,
@@ -160,6 +177,7 @@ std::unique_ptr<InteractiveApp> app_for_link(Page& page) {
   }
   page.ui_scale = settings.ui_scale;
   page.sets = settings.sim.sets;
+  page.homework_code = settings.homework_js;
   page.pixel_ratio = std::clamp(emscripten_get_device_pixel_ratio(), 0.5, 4.0);
   const float scale = static_cast<float>(page.ui_scale * page.pixel_ratio);
   // The link's language, else the browser's (before the fonts: they carry its glyphs).
@@ -202,6 +220,36 @@ EMSCRIPTEN_KEEPALIVE void springlab_open_scene_text(const char* file_name, const
   g_page->app->open_after_frame(path.string());
 }
 
+// Homework 8: the student's JavaScript, compiled by the page (homework.js), checked here by the
+// checker of `springlab homework check` and run as lanes beside springlab's rows: the report, as
+// the command line prints it. The checker's calls have 1 s each (and 0.05 ms a step); a lane's
+// 0.25 s, so that an endless loop stops its lane, not the page, for long.
+EMSCRIPTEN_KEEPALIVE const char* springlab_homework_check(const char* code) {
+  using namespace springlab;
+  using namespace springlab::app::web;
+  static std::string text;
+  if (!g_page || !js_code_ready()) return "";
+  const double start = emscripten_get_now();
+  JsRope checking(1000.0, 0.05);
+  homework::Report report = homework::check_rope(checking);
+  const double seconds = (emscripten_get_now() - start) / 1000.0;
+  text = homework::format_report(report);
+  g_page->homework_code = code ? code : "";
+  g_page->homework_status.file = tr("your JavaScript");
+  g_page->homework_status.error.clear();
+  g_page->homework.set(std::move(report), seconds, [] { return std::make_shared<JsRope>(250.0, 0.05); });
+  return text.c_str();
+}
+
+// The student's code did not compile (the page says why): said in the app's panel too, while the
+// last good code's lanes run on.
+EMSCRIPTEN_KEEPALIVE void springlab_homework_failed(const char* message) {
+  using namespace springlab::app::web;
+  if (!g_page) return;
+  g_page->homework_status.file = springlab::tr("your JavaScript");
+  g_page->homework_status.error = message ? message : "";
+}
+
 // The UI scale from the page's script: the desktop's --ui-scale (0.5 to 4, times the pixel ratio).
 EMSCRIPTEN_KEEPALIVE void springlab_set_ui_scale(double scale) {
   using namespace springlab::app::web;
@@ -240,6 +288,9 @@ EMSCRIPTEN_KEEPALIVE const char* springlab_status() {
   const ImVec4& b = g_page->copy_button;
   std::snprintf(number, sizeof number, ",\"copy_link\":[%g,%g,%g,%g]", b.x, b.y, b.z, b.w);
   json += number;
+  const ImVec4& hb = g_page->homework_button;
+  std::snprintf(number, sizeof number, ",\"homework_button\":[%g,%g,%g,%g]", hb.x, hb.y, hb.z, hb.w);
+  json += number;
   const draw::Viewport& v = g_page->scene;
   std::snprintf(number, sizeof number, ",\"viewport\":[%d,%d,%d,%d]", v.x, v.y, v.width, v.height);
   json += number;
@@ -256,10 +307,14 @@ EMSCRIPTEN_KEEPALIVE const char* springlab_status() {
   json += ",\"lanes\":[";
   for (std::size_t i = 0; i < session.lanes().size(); ++i) {
     const app::Lane& lane = session.lanes()[i];
-    std::snprintf(number, sizeof number, "%s{\"method\":\"%s\",\"t\":%.17g,\"diverged\":%s,\"unstable\":%s}",
+    std::snprintf(number, sizeof number, "%s{\"method\":\"%s\",\"t\":%.17g,\"diverged\":%s,\"unstable\":%s",
                   i ? "," : "", method_info(lane.sim.settings().method).name, lane.sim.state().t,
                   lane.sim.diverged() ? "true" : "false", lane.sim.instability() ? "true" : "false");
     json += number;
+    // A lane of one's own (homework): its label, and why it stopped where it did.
+    if (!lane.own.empty()) json += ",\"own\":" + quoted(lane.own);
+    if (lane.sim.divergence()) json += ",\"why\":" + quoted(lane.sim.divergence()->reason);
+    json += "}";
   }
   json += "]}";
   return json.c_str();

@@ -128,5 +128,73 @@ TEST(Homework, ASimulationTakesAStepOfItsOwnAndNamesItWhenItDiverges) {
   EXPECT_EQ(row.divergence()->step, sim.divergence()->step);
 }
 
+// The exercise's rope held in this process: springlab's exercise_rope as its constructor and the
+// exercise's two steps written as a student would (semi-implicit Euler, Verlet), each spring's
+// force on both its masses, gravity on the free ones.
+class InProcessRope : public homework::RopeCode {
+ public:
+  explicit InProcessRope(bool own) : own_(own) {}
+  homework::BuiltRope build(const homework::RopeRequest& request) override {
+    rope_ = homework::exercise_rope(request);
+    return rope_;
+  }
+  void set_state(const homework::RopeState& state) override {
+    for (std::size_t i = 0; i < state.size(); ++i) rope_.masses[i].state = state[i];
+  }
+  std::vector<homework::RopeState> simulate(homework::Step step, double dt, const homework::Vec2& g, int steps) override {
+    std::vector<homework::RopeState> out;
+    for (int n = 0; n < steps; ++n) {
+      for (const homework::BuiltSpring& s : rope_.springs) {
+        homework::MassState &a = rope_.masses[s.m1].state, &b = rope_.masses[s.m2].state;
+        const homework::Vec2 d = b.x - a.x;
+        const homework::Vec2 f = s.k * (d.norm() - s.rest) * d.normalized();
+        a.f += f;
+        b.f -= f;
+      }
+      homework::RopeState now;
+      for (homework::BuiltMass& m : rope_.masses) {
+        homework::MassState& st = m.state;
+        if (!m.pinned) {
+          const homework::Vec2 a = st.f / m.mass + g;
+          if (step == homework::Step::Euler) {
+            st.v += a * dt;
+            st.x += st.v * dt;
+          } else {
+            const homework::Vec2 x = st.x;
+            st.x = st.x + (st.x - st.x_last) + a * dt * dt;
+            st.x_last = x;
+          }
+        }
+        st.f.setZero();
+        now.push_back(st);
+      }
+      out.push_back(now);
+    }
+    return out;
+  }
+  bool own_constructor() const override { return own_; }
+
+ private:
+  bool own_;
+  homework::BuiltRope rope_;
+};
+
+// springlab's own constructor builds the rope the construction check asks for; code that brings
+// only the steps (the browser's) has its construction said to be springlab's, and its steps checked.
+TEST(Homework, TheExercisesRopeIsBuiltAsAskedAndStepsAloneAreCheckedAlone) {
+  InProcessRope whole(true);
+  const Report r = homework::check_rope(whole);
+  EXPECT_EQ(r.failed(), 0) << text(r);
+  EXPECT_EQ(r.euler.method, "symplectic-euler") << text(r);
+  EXPECT_EQ(r.verlet.method, "verlet") << text(r);
+  ASSERT_FALSE(r.sections.empty());
+  EXPECT_EQ(r.sections[0].lines.size(), 6u) << text(r);  // three checks on each of two ropes
+  InProcessRope steps(false);
+  const Report s = homework::check_rope(steps);
+  EXPECT_EQ(s.failed(), 0) << text(s);
+  EXPECT_EQ(s.passed(), r.passed() - 6) << text(s);
+  EXPECT_NE(text(s).find("built by springlab's constructor"), std::string::npos) << text(s);
+}
+
 }  // namespace
 }  // namespace springlab

@@ -440,7 +440,8 @@ check("offline: the cache is named by the site's files", async ({ browser }) => 
   // The build's step on a site of its own: the same files give the same name, any changed file another.
   const tmp = fs.mkdtempSync(path.join(os.tmpdir(), "springlab-site-"));
   try {
-    const names = ["springlab.js", "springlab.wasm", "springlab.data", "icon-192.png", "icon-512.png"];
+    const names = ["springlab.js", "springlab.wasm", "springlab.data", "icon-192.png", "icon-512.png", "homework.js",
+                   "acorn.js", "acorn-walk.js"];
     for (const n of names) fs.writeFileSync(path.join(tmp, n), n);
     const version = () => {
       execFileSync("cmake", [`-DSITE=${tmp}`, `-DSOURCE=${path.join(root, "app/web")}`, "-P",
@@ -488,7 +489,8 @@ check("offline: a new build replaces the cache, and half of one is refused", inO
   const own = await serve(dir);
   const context = await browser.createBrowserContext();
   try {
-    for (const f of ["springlab.js", "springlab.wasm", "springlab.data"]) fs.symlinkSync(path.join(site, f), path.join(dir, f));
+    for (const f of ["springlab.js", "springlab.wasm", "springlab.data", "homework.js", "acorn.js", "acorn-walk.js"])
+      fs.symlinkSync(path.join(site, f), path.join(dir, f));
     for (const f of ["icon-192.png", "icon-512.png"]) fs.copyFileSync(path.join(site, f), path.join(dir, f));
     const publish = (icon) => {
       if (icon) fs.appendFileSync(path.join(dir, "icon-192.png"), icon);
@@ -659,6 +661,132 @@ check("a pinch zooms the view on a phone", async ({ browser, base }) => {
   await pinch(120, 30);
   const back = (await status(page)).zoom;
   expect(Math.abs(back / before - 1) < 0.15, `pinching in zoomed back from ${closer} to ${back} (started at ${before})`);
+  await page.close();
+});
+
+// Homework 8 in the browser, as a student does it: the panel opened by the app's button, code
+// typed in (its keys stay in the panel: the app neither pauses nor resets), Ctrl+Enter; the
+// checker's report and the student's two lanes beside springlab's; the link carries the code.
+// Then code that loops forever, throws or does not parse: each said, with the step or the line,
+// and the page runs on.
+const homeworkCode = (name) => fs.readFileSync(path.join(root, "tests/homework/js", name), "utf8");
+async function homeworkReport(page, before) {
+  await page.waitForFunction((b) => { const t = document.getElementById("homework-report").textContent;
+                                      return t !== b && t !== "checking\u2026"; }, { timeout: 60000 }, before);
+  return page.$eval("#homework-report", (e) => e.textContent);
+}
+async function runHomework(page, code) {
+  const before = await page.$eval("#homework-report", (e) => e.textContent);
+  await page.$eval("#homework-code", (e, c) => { e.value = c; }, code);
+  await page.click("#homework-run");
+  return homeworkReport(page, before);
+}
+
+// homework.js's guard, in this Node (no page): every kind of loop in the student's code stops at
+// its time, however it is written, and the code's lines are kept for messages.
+check("homework 8: every kind of endless loop is stopped in time", async () => {
+  global.acorn = require("/usr/share/nodejs/acorn/dist/acorn.js");
+  global.acorn.walk = require("/usr/share/nodejs/acorn-walk/dist/walk.js");
+  require(path.join(root, "app/web/homework.js"));
+  const hw = global.springlabHomework;
+  const verlet = "function simulateVerlet(rope) {}\n";
+  const loops = {
+    "for (;;)": "for (;;) {}",
+    "while without braces": "let i = 0; while (true) i++;",
+    "do ... while": "do {} while (true);",
+    "for ... of a generator": "function* g() { for (let i = 0; ; i++) yield i; } for (const k of g()) {}",
+    "labelled, continued": "outer: for (;;) { for (let j = 0; j < 3; j++) continue outer; }",
+    "a try/catch that swallows": "for (;;) { try { for (;;) {} } catch (e) {} }",
+    "in a callback": "[1].forEach(() => { while (1) {} });",
+  };
+  hw.build(1, [0, 0, 1, 1, 1, 0, 1, 0], [0, 1, 10, 1]);
+  for (const [name, body] of Object.entries(loops)) {
+    hw.compile(`function simulateEuler(rope, h, g) {\n  ${body}\n}\n${verlet}`);
+    const start = Date.now();
+    const r = hw.simulate(1, 0, 0.01, 0, -9.8, 1, 100);
+    const ms = Date.now() - start;
+    expect(r.error === "time" && ms < 1000, `${name}: ${JSON.stringify(r)} after ${ms} ms`);
+  }
+  hw.compile("function simulateEuler(rope) {\n  return simulateEuler(rope);\n}\n" + verlet);
+  let r = hw.simulate(1, 0, 0.01, 0, -9.8, 1, 100);
+  expect(/^RangeError: .*\(line 2 of your code\)$/.test(r.error), `endless recursion: ${JSON.stringify(r)}`);
+  // A loop that ends is left to end, and its line numbers are the code's own.
+  hw.compile("function simulateEuler(rope) {\n  for (const m of rope.masses) m.velocity.x += 1;\n  null.x;\n}\n" + verlet);
+  r = hw.simulate(1, 0, 0.01, 0, -9.8, 1, 100);
+  expect(/^TypeError: .*\(line 3 of your code\)$/.test(r.error), `after a loop: ${JSON.stringify(r)}`);
+  let threw = "";
+  try { hw.compile("while (true) {}\n" + verlet); } catch (e) { threw = e.message; }
+  expect(/top level ran past 1 s/.test(threw), `an endless top level: ${threw}`);
+});
+
+check("homework 8: JavaScript typed into the panel is checked and runs beside springlab's lanes", async ({ browser, base }) => {
+  const page = await openApp(browser, base, "scene=rope");
+  const [x, y, w, h] = (await status(page)).homework_button;
+  await page.mouse.click(x + w / 2, y + h / 2);
+  await page.waitForSelector("#homework:not([hidden])", { timeout: 5000 });
+  expect(await page.evaluate(() => document.activeElement.id === "homework-code"), "the code field is not focused");
+  expect((await page.$eval("#homework-code", (e) => e.value)).includes("TODO (Part 2)"), "no starter code in the panel");
+  // (Typing costs about 0.1 s a key here, a frame of SwiftShader's: the code goes in whole but for
+  // one line, which is typed, with the Space and Backspace that the app would otherwise take.)
+  const typed = homeworkCode("correct.js");
+  const line = "m.last_position = temp_position;";
+  const running = await status(page);
+  await page.$eval("#homework-code", (e, code, line) => {
+    e.value = code.replace(line, "");
+    const at = code.indexOf(line);
+    e.setSelectionRange(at, at);
+  }, typed, line);
+  await page.keyboard.type(line.slice(0, -1) + "n");
+  await page.keyboard.press("Backspace");
+  await page.keyboard.type(";");
+  expect(await page.$eval("#homework-code", (e) => e.value) === typed, "the panel does not hold what was typed");
+  const after = await status(page);
+  expect(after.paused === running.paused && after.frames > running.frames && after.lanes[0].t > running.lanes[0].t,
+         `typing reached the app (paused ${running.paused} -> ${after.paused}, t ${running.lanes[0].t} -> ${after.lanes[0].t})`);
+  await page.keyboard.down("Control");
+  await page.keyboard.press("Enter");
+  await page.keyboard.up("Control");
+  const report = await homeworkReport(page, "");
+  expect(/checks passed, 0 failed\.\s*$/.test(report), `the report:\n${report}`);
+  expect(report.includes("built by springlab's constructor") && report.includes("(springlab's symplectic-euler)") &&
+         report.includes("(springlab's verlet)"), `the report names no rows:\n${report}`);
+  await waitFrames(page, 20);
+  const s = await status(page);
+  const own = s.lanes.filter((l) => l.own).map((l) => l.own);
+  expect(own.join() === "Your simulateEuler,Your simulateVerlet" && s.lanes.length === 4,
+         `lanes ${JSON.stringify(s.lanes)}`);
+  expect(s.lanes.every((l) => !l.diverged && l.t > 0.2), `lanes ${JSON.stringify(s.lanes)}`);
+  fs.writeFileSync(path.join(out, "homework.png"), await page.screenshot({ type: "png" }));
+  // The link carries the code: opened, it checks and runs it again.
+  await page.focus("#canvas");
+  const link = await copyLink(page);
+  expect(link.includes("&homework="), `the link carries no code: ${link}`);
+  const again = await openApp(browser, base, link.split("#")[1]);
+  const reopened = await homeworkReport(again, "");
+  expect(/ 0 failed\.\s*$/.test(reopened) && (await again.$eval("#homework-code", (e) => e.value)) === typed,
+         `the link's code:\n${reopened}`);
+  await again.close();
+
+  // Code that loops forever, throws, or does not parse: said, and the page runs on.
+  const endless = typed.replace("function simulateEuler(rope, delta_t, gravity) {",
+                                "function simulateEuler(rope, delta_t, gravity) {\n  for (;;) {}");
+  let r = await runHomework(page, endless);
+  expect(/simulateEuler \(step 1 of \d+, h = 1\/1024 s\) did not return within 1 s and was stopped/.test(r), `endless:\n${r}`);
+  expect(/simulateVerlet[^]*ok /.test(r), `the Verlet step was not checked after Euler's endless loop:\n${r}`);
+  await waitFrames(page, 10);
+  let lanes = (await status(page)).lanes;
+  expect(lanes[0].own === "Your simulateEuler" && lanes[0].diverged && /did not return within 0\.25/.test(lanes[0].why) &&
+         !lanes[1].diverged, `an endless loop's lanes: ${JSON.stringify(lanes)}`);
+  const throws = typed.replace(line, line + "\n    if (m.position.y < -1) rope.masses[99].forces.x = 0;");
+  r = await runHomework(page, throws);
+  expect(/simulateVerlet \(step \d+ of \d+, h = [^)]*\) threw an exception: TypeError: .* \(line 32 of your code\)/.test(r),
+         `throws:\n${r}`);
+  const broken = typed.replace("function simulateVerlet(rope, delta_t, gravity) {", "function simulateVerlet(rope, delta_t, gravity {");
+  r = await runHomework(page, broken);
+  expect(/^your code does not parse: .* at line 24, column \d+/.test(r), `a syntax error:\n${r}`);
+  await waitFrames(page, 5);
+  lanes = (await status(page)).lanes;
+  expect(lanes[1].own === "Your simulateVerlet", `code that does not parse replaced the lanes: ${JSON.stringify(lanes)}`);
   await page.close();
 });
 

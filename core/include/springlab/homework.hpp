@@ -80,7 +80,15 @@ class RopeCode {
   virtual void set_state(const RopeState& state) = 0;
   /// Calls the step `steps` times with (float) dt and gravity: the state after each call.
   virtual std::vector<RopeState> simulate(Step step, double dt, const Vec2& gravity, int steps) = 0;
+  /// Whether `build` runs the code's own constructor (C++), or springlab's exercise_rope (the
+  /// browser's exercise is the two steps): then the construction is not the code's, and not checked.
+  virtual bool own_constructor() const { return true; }
 };
+
+/// The rope as the exercise's constructor must build it from its arguments: num_nodes masses
+/// evenly spaced from start to end, node_mass each, at rest (last_position = position); a spring
+/// of k between each pair of neighbours, its rest length their distance; the pinned_nodes pinned.
+BuiltRope exercise_rope(const RopeRequest& request);
 
 struct CheckLine {
   enum Kind { Pass, Fail, Note } kind = Note;

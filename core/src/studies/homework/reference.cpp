@@ -37,6 +37,22 @@ Model rope_model(const RopeRequest& request, const Vec2& gravity, double drag, d
   return model;
 }
 
+BuiltRope exercise_rope(const RopeRequest& request) {
+  BuiltRope rope;
+  const int n = request.nodes;
+  for (int i = 0; i < n; ++i) {
+    BuiltMass m;
+    m.start = request.start + (request.end - request.start) * (n > 1 ? static_cast<double>(i) / (n - 1) : 0.0);
+    m.state.x = m.state.x_last = m.start;
+    m.mass = request.node_mass;
+    m.pinned = std::find(request.pinned.begin(), request.pinned.end(), i) != request.pinned.end();
+    rope.masses.push_back(m);
+  }
+  for (int i = 0; i + 1 < n; ++i)
+    rope.springs.push_back({i, i + 1, request.k, (rope.masses[i + 1].start - rope.masses[i].start).norm()});
+  return rope;
+}
+
 RopeState reference_step(Method method, const Model& model, const RopeState& state, double h) {
   const int n = static_cast<int>(state.size());
   State in, out;
