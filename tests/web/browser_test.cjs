@@ -173,11 +173,13 @@ check("method and dt from the panels take effect", async ({ browser, base }) => 
   const page = await openApp(browser, base, "scene=rope");
   const before = await status(page);
   // dt: a ctrl-click on its slider (where the rope scene's panel has it at scale 1 in a 1280 x 720
-  // page: panel-method-dt.png shows it) types a value, as in Dear ImGui anywhere. Each key and
-  // button is held for frames: the app reads the keyboard's state once a frame.
+  // page, a row under the browser's Homework 8 button: panel-method-dt.png shows it) types a
+  // value, as in Dear ImGui anywhere. Each key and button is held for frames: the app reads the
+  // keyboard's state once a frame.
+  const row = before.homework_button[1] - before.copy_link[1];
   await page.keyboard.down("Control");
   await waitFrames(page, 2);
-  await page.mouse.move(122, 384);
+  await page.mouse.move(122, 384 + row);
   await page.mouse.down();
   await waitFrames(page, 2);
   await page.mouse.up();
@@ -766,6 +768,29 @@ check("homework 8: JavaScript typed into the panel is checked and runs beside sp
   expect(/ 0 failed\.\s*$/.test(reopened) && (await again.$eval("#homework-code", (e) => e.value)) === typed,
          `the link's code:\n${reopened}`);
   await again.close();
+
+  // The usual mistakes, each planted alone in the correct code, each named by the checker (as
+  // tests/homework/ropes/ plants them in C++: tests/cli/homework_test.cpp).
+  const planted = [
+    ["explicit Euler (correct too)", (c) => c.replace(/(      m\.velocity = .*\n)(      m\.position = .*\n)/, "$2$1"),
+     "simulateEuler is Explicit Euler (springlab's euler)"],
+    ["forces kept", (c) => c.replaceAll("    m.forces = new Vector2D(0, 0);\n", ""), "forces are not cleared between steps"],
+    ["one end", (c) => c.replace("    s.m2.forces = s.m2.forces.minus(f);\n", ""), "the spring force acts on one end only (m1)"],
+    ["wrong sign", (c) => c.replace("times(s.k * (", "times(-s.k * ("), "the spring force has the wrong sign"],
+    ["no rest length", (c) => c.replace("d.unit().times(s.k * (d.norm() - s.rest_length))", "d.times(s.k)"),
+     "the rest length is not used"],
+    ["pin falls", (c) => c.replaceAll("if (!m.pinned)", "if (true)"), "a pinned mass moves"],
+    ["last_position stale", (c) => c.replace(line, ""), "last_position is never advanced"],
+    ["damping per spring", (c) => c.replace(".minus(m.velocity.times(0.02))", "").replace("    s.m2.forces = s.m2.forces.minus(f);",
+       "    s.m2.forces = s.m2.forces.minus(f);\n    for (const m of [s.m1, s.m2]) m.forces = m.forces.minus(m.velocity.times(0.02));"),
+     "damping is applied twice on the middle masses"],
+  ];
+  for (const [name, plant, named] of planted) {
+    const code = plant(typed);
+    expect(code !== typed, `${name}: nothing planted`);
+    const r = await runHomework(page, code);
+    expect(r.includes(named) && (name.includes("correct") ? / 0 failed\./ : / [1-9]\d* failed\./).test(r), `${name}:\n${r}`);
+  }
 
   // Code that loops forever, throws, or does not parse: said, and the page runs on.
   const endless = typed.replace("function simulateEuler(rope, delta_t, gravity) {",
