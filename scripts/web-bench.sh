@@ -8,7 +8,7 @@
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 "$root/scripts/web.sh"
-NODE_PATH=/usr/share/nodejs cmake --build "$root/build-web/_build" --target step_bench_web --parallel "$(nproc)"
+NODE_PATH=/usr/share/nodejs cmake --build "$root/build-wasm" --target step_bench_web --parallel "$(nproc)"
 "$root/scripts/build.sh" >/dev/null
 bin="${SPRINGLAB_BUILD_DIR:-$root/build}/springlab"
 

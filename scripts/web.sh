@@ -3,8 +3,8 @@
 # npm; Dear ImGui's sources from Debian's source package), builds the app for WebAssembly +
 # WebGL2 and writes the static site into build-web/: index.html, springlab.js, springlab.wasm,
 # springlab.data, and for offline use and a phone's home screen sw.js (the service worker),
-# manifest.webmanifest and two icons, which any static web host serves as they are (the build tree
-# is build-web/_build).
+# manifest.webmanifest, two icons and Homework 8's scripts, which any static web host serves as
+# they are: build-web/ holds the site and nothing else (the build tree is build-wasm/).
 # Usage: scripts/web.sh            build, and print the site's size
 #        scripts/web.sh --serve    build, then serve build-web/ on http://127.0.0.1:PORT/ (PORT: 8765,
 #                                  or $SPRINGLAB_WEB_PORT) until Ctrl-C
@@ -12,7 +12,7 @@
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 site="$root/build-web"
-build="$site/_build"
+build="$root/build-wasm"
 deps="$build/_deps"
 mode="${1:-}"
 case "$mode" in
@@ -59,6 +59,13 @@ if [[ ! -f "$imgui/imgui.cpp" ]]; then
   tar -xf "$deps"/imgui_1.86*.orig.tar.xz -C "$deps"
 fi
 
+# The build tree of older clones, inside the site (build-web/_build): gone, so that the folder a
+# teacher copies is the site alone.
+if [[ -d "$site/_build" ]]; then
+  echo "web.sh: the build tree moved from build-web/_build to build-wasm/: removing the old one"
+  rm -rf "$site/_build"
+fi
+
 # Build. Debian's emscripten: its JavaScript optimiser needs Debian's acorn (NODE_PATH), and its
 # system libraries come prebuilt in its own cache (EM_CACHE left alone).
 export NODE_PATH=/usr/share/nodejs
@@ -68,7 +75,7 @@ if [[ ! -f "$build/build.ninja" ]]; then
 fi
 cmake --build "$build" --parallel "$(nproc)"
 
-files=(index.html springlab.js springlab.wasm springlab.data sw.js manifest.webmanifest icon-192.png icon-512.png homework.js acorn.js acorn-walk.js)
+files=(index.html springlab.js springlab.wasm springlab.data sw.js manifest.webmanifest icon-192.png icon-512.png homework.js acorn.js acorn-walk.js access.js)
 bytes=0 gz=0
 for f in "${files[@]}"; do
   bytes=$((bytes + $(stat -c %s "$site/$f")))

@@ -296,6 +296,7 @@ void InteractiveApp::frame(const FrameSize& size) {
   const draw::ViewCamera camera = draw::view_camera(ui_.view.camera, viewport.width, viewport.height);
   // What the class changes (a drag, a slider, a key) interrupts a lesson: compared around the input.
   const std::uint64_t edits = session_->edits();
+  for (auto& change : std::exchange(controls_, {})) change(*session_, ui_);
   mouse(camera, viewport, to_fb);
   keyboard();
 

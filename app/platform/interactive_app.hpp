@@ -14,6 +14,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "gfx/render_target.hpp"
 #include "gfx/renderer.hpp"
@@ -69,6 +70,9 @@ class InteractiveApp {
   bool open(const std::string& scene);
   // Opens it after the next frame (a file dropped on the window during one).
   void open_after_frame(std::string scene) { pending_ = std::move(scene); }
+  // A change asked for from outside the panels (the browser's accessible controls, web/access.js):
+  // made in the next frame where the panels make theirs, so that it interrupts a lesson as theirs do.
+  void control(std::function<void(Session&, ui::UiState&)> change) { controls_.push_back(std::move(change)); }
   // A one-line message in the panels' banner (a bad file, a bad link).
   void say(std::string message) { ui_.message = std::move(message); }
 
@@ -131,6 +135,7 @@ class InteractiveApp {
   int step_ = 0, lesson_number_ = 0;  // lesson_number_: its place in the course (0: not shipped)
   bool interrupted_ = false;
   std::optional<std::function<void()>> lesson_move_;  // a move between steps, made after the frame
+  std::vector<std::function<void(Session&, ui::UiState&)>> controls_;  // control()'s, for the next frame
   bool quit_ = false;
 };
 

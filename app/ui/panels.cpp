@@ -14,6 +14,7 @@
 // The charts' contents (energy_chart, position_chart, ...) and the controls' parts (gauge,
 // clocks, parameters, ...) are the functions above them.
 #include "ui/panels.hpp"
+#include "ui/physics_controls.hpp"
 
 #include <imgui.h>
 
@@ -499,15 +500,16 @@ void clocks(app::Session& session, const FrameStats& stats) {
 void parameters(app::Session& session, UiState& ui, bool few) {
   const float s = layout_scale(ui);
   Simulation& sim = session.lanes()[0].sim;
-  double ks = session.stiffness(), kd = session.damping(), dt = sim.settings().dt, mass = session.mass();
-  double g = sim.model().gravity.norm(), drag = sim.model().drag, mu = session.friction();
+  double mu = session.friction();
   double tol = sim.settings().step.tolerance;
-  const bool springs = sim.model().spring_count() > 0;  // a particle system has none to set
-  if (springs && slider("k_s (N/m)", ks, ui.ranges.ks / 100, ui.ranges.ks * 100, true)) session.set_stiffness(ks);
-  const double kd_max = std::max(10 * ui.ranges.kd, 2 * std::sqrt(ui.ranges.ks * ui.ranges.mass));
-  if (springs && slider("k_d (N s/m)", kd, 0.0, kd_max, true)) session.set_damping(kd);
-  if (slider(tr("dt (s)"), dt, ui.ranges.dt / 100, std::min(1.0, std::max(0.1, ui.ranges.dt * 100)), true, "%.3g"))
-    session.set_dt(dt);
+  const std::vector<PhysicsControl> controls = physics_controls(session, ui);
+  // k_s, k_d and dt, then the sub-steps, then the rest (not in presentation mode).
+  const auto draw = [&](const PhysicsControl& c) {
+    double v = c.value;
+    if (slider(c.label.c_str(), v, c.lo, c.hi, c.log, c.format)) c.set(session, v);
+  };
+  std::size_t next = 0;
+  for (; next < controls.size() && std::string_view(controls[next].id) != "mass"; ++next) draw(controls[next]);
   // Sub-steps: chosen from each lane's limit ("auto (N)"), until the slider fixes them.
   int substeps = sim.settings().substeps;
   std::string shown = std::to_string(substeps);
@@ -543,12 +545,7 @@ void parameters(app::Session& session, UiState& ui, bool few) {
       break;
     }
   if (few) return;
-  if (slider(tr("mass (kg)"), mass, ui.ranges.mass / 100, ui.ranges.mass * 100, true)) session.set_mass(mass);
-  if (slider(tr("gravity (m/s^2)"), g, 0.0, 30.0, false, "%.2f")) {
-    const Vec3 dir = sim.model().gravity.norm() > 0 ? Vec3(sim.model().gravity.normalized()) : Vec3(-Vec3::UnitY());
-    session.set_gravity(g * dir);
-  }
-  if (slider(tr("drag (N s/m)"), drag, 0.0, std::max(1.0, 100 * ui.ranges.drag), true)) session.set_drag(drag);
+  for (; next < controls.size(); ++next) draw(controls[next]);
   if (sim.model().has_colliders() && slider(tr("friction"), mu, 0.0, 2.0, false, "%.2f")) session.set_friction(mu);
   if (method_info(session.method()).adaptive() && slider(tr("tolerance"), tol, 1e-10, 1e-1, true, "%.1e"))
     session.set_tolerance(tol);

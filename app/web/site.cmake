@@ -35,7 +35,7 @@ function(version_of out lines_out)
   set(${lines_out} "${lines}" PARENT_SCOPE)
 endfunction()
 
-set(assets springlab.js springlab.wasm springlab.data icon-192.png icon-512.png homework.js acorn.js acorn-walk.js)
+set(assets springlab.js springlab.wasm springlab.data icon-192.png icon-512.png homework.js acorn.js acorn-walk.js access.js)
 set(pairs "")
 foreach(f IN LISTS assets)
   list(APPEND pairs "${f}=${SITE}/${f}")

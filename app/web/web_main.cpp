@@ -33,6 +33,7 @@
 #include "ui/panels.hpp"
 #include "ui/theme.hpp"
 #include "ui/homework_status.hpp"
+#include "web/access.hpp"
 #include "web/browser.hpp"
 #include "web/js_rope.hpp"
 #include "web/url_config.hpp"
@@ -248,6 +249,22 @@ EMSCRIPTEN_KEEPALIVE void springlab_homework_failed(const char* message) {
   if (!g_page) return;
   g_page->homework_status.file = springlab::tr("your JavaScript");
   g_page->homework_status.error = message ? message : "";
+}
+
+// springlab in words (access.js, web/access.hpp): the app's state as JSON, and its controls.
+EMSCRIPTEN_KEEPALIVE const char* springlab_describe() {
+  static std::string json;
+  if (!springlab::app::web::g_page) return "{}";
+  json = springlab::app::web::describe(*springlab::app::web::g_page->app);
+  return json.c_str();
+}
+EMSCRIPTEN_KEEPALIVE int springlab_control(const char* name, double value) {
+  using namespace springlab::app::web;
+  return g_page && name && control(*g_page->app, name, value) ? 1 : 0;
+}
+EMSCRIPTEN_KEEPALIVE int springlab_choose(const char* what, const char* name) {
+  using namespace springlab::app::web;
+  return g_page && what && name && choose(*g_page->app, what, name) ? 1 : 0;
 }
 
 // The UI scale from the page's script: the desktop's --ui-scale (0.5 to 4, times the pixel ratio).

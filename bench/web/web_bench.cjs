@@ -8,6 +8,7 @@ const path = require("path");
 const { serve, launch, openApp, status } = require("../../tests/web/page.cjs");
 
 const site = path.resolve(__dirname, "../../build-web");
+const build = path.resolve(__dirname, "../../build-wasm");  // its bench page, served as /_build/
 const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
 
 const pages = [
@@ -18,7 +19,7 @@ const pages = [
 const steps = (process.env.SPRINGLAB_BENCH_STEPS || "").split(";").filter(Boolean);
 
 (async () => {
-  const { server, base } = await serve(site);
+  const { server, base } = await serve(site, build);
   const browser = await launch();
   for (const [name, link] of pages) {
     const page = await openApp(browser, base, link);

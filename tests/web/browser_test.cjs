@@ -2,7 +2,7 @@
 // (WebGL2 on SwiftShader) and checks the app as a user meets it, then runs the core's tests
 // compiled to WebAssembly. Prints a line per check; exits with the number of failures.
 //   node tests/web/browser_test.cjs [check name filter]   (a part of the checks' names; a|b: either)
-// Screenshots and diff images go to build-web/_build/web-test/; SPRINGLAB_UPDATE_GOLDENS=1 writes
+// Screenshots and diff images go to build-wasm/web-test/; SPRINGLAB_UPDATE_GOLDENS=1 writes
 // the golden images (tests/web/golden/) instead of comparing with them (look at them first).
 "use strict";
 const crypto = require("crypto");
@@ -15,7 +15,8 @@ const { serve, launch, insecureHost, openApp, status, waitFrames, key, pauseAtSt
 
 const root = path.resolve(__dirname, "../..");
 const site = path.join(root, "build-web");
-const out = path.join(site, "_build", "web-test");
+const build = path.join(root, "build-wasm");  // the build tree: the core's tests' page, served as /_build/
+const out = path.join(build, "web-test");
 const goldens = path.join(__dirname, "golden");
 const update = process.env.SPRINGLAB_UPDATE_GOLDENS === "1";
 fs.mkdirSync(out, { recursive: true });
@@ -443,7 +444,7 @@ check("offline: the cache is named by the site's files", async ({ browser }) => 
   const tmp = fs.mkdtempSync(path.join(os.tmpdir(), "springlab-site-"));
   try {
     const names = ["springlab.js", "springlab.wasm", "springlab.data", "icon-192.png", "icon-512.png", "homework.js",
-                   "acorn.js", "acorn-walk.js"];
+                   "acorn.js", "acorn-walk.js", "access.js"];
     for (const n of names) fs.writeFileSync(path.join(tmp, n), n);
     const version = () => {
       execFileSync("cmake", [`-DSITE=${tmp}`, `-DSOURCE=${path.join(root, "app/web")}`, "-P",
@@ -491,7 +492,7 @@ check("offline: a new build replaces the cache, and half of one is refused", inO
   const own = await serve(dir);
   const context = await browser.createBrowserContext();
   try {
-    for (const f of ["springlab.js", "springlab.wasm", "springlab.data", "homework.js", "acorn.js", "acorn-walk.js"])
+    for (const f of ["springlab.js", "springlab.wasm", "springlab.data", "homework.js", "acorn.js", "acorn-walk.js", "access.js"])
       fs.symlinkSync(path.join(site, f), path.join(dir, f));
     for (const f of ["icon-192.png", "icon-512.png"]) fs.copyFileSync(path.join(site, f), path.join(dir, f));
     const publish = (icon) => {
@@ -839,7 +840,7 @@ check("the console has no errors", async () => {
 
 (async () => {
   const filter = process.argv[2] || "";
-  const { server, base } = await serve(site);
+  const { server, base } = await serve(site, build);
   const browser = await launch();
   let failed = 0, ran = 0;
   const start = Date.now();

@@ -35,11 +35,14 @@ const types = {
   ".png": "image/png", ".json": "application/json", ".webmanifest": "application/manifest+json",
 };
 
-// Serves `dir` on 127.0.0.1 at a free port; resolves to { server, base }.
-function serve(dir) {
+// Serves `dir` on 127.0.0.1 at a free port, and the build tree `build` (if given) under /_build/
+// (the core's tests' and benchmarks' pages); resolves to { server, base }.
+function serve(dir, build) {
   const server = http.createServer((req, res) => {
-    const file = path.join(dir, decodeURIComponent(new URL(req.url, "http://x").pathname));
-    if (!file.startsWith(dir) || !fs.existsSync(file) || fs.statSync(file).isDirectory()) {
+    const at = decodeURIComponent(new URL(req.url, "http://x").pathname);
+    const root = build && at.startsWith("/_build/") ? build : dir;
+    const file = path.join(root, root === dir ? at : at.slice("/_build".length));
+    if (!file.startsWith(root) || !fs.existsSync(file) || fs.statSync(file).isDirectory()) {
       res.writeHead(404);
       res.end();
       return;

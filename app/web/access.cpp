@@ -1,0 +1,145 @@
+#include "web/access.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "springlab/energy.hpp"
+#include "springlab/text.hpp"
+#include "ui/actions.hpp"
+#include "ui/gauge_verdict.hpp"
+#include "ui/physics_controls.hpp"
+
+namespace springlab::app::web {
+
+namespace {
+
+std::string quoted(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (c == '\n') out += "\\n";
+    else if (static_cast<unsigned char>(c) >= 0x20) out += c;
+  }
+  return out + "\"";
+}
+
+std::string number(double v) {
+  if (!std::isfinite(v)) return "null";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", v);
+  return text;
+}
+
+const char* tone_name(ui::Tone tone) {
+  switch (tone) {
+    case ui::Tone::Safe: return "safe";
+    case ui::Tone::Near: return "near";
+    case ui::Tone::Beyond: return "beyond";
+    default: return "neutral";
+  }
+}
+
+}  // namespace
+
+std::string describe(const InteractiveApp& app) {
+  const Session& session = app.session();
+  const ui::UiState& ui = app.ui();
+  std::string json = "{\"scene\":" + quoted(app.scene_name());
+  json += ",\"description\":" + quoted(session.scene().description);
+  json += ",\"scenes\":[";
+  for (std::size_t i = 0; i < ui.scenes.size(); ++i) json += (i ? "," : "") + quoted(ui.scenes[i]);
+  json += "],\"method\":" + quoted(method_info(session.method()).name) + ",\"methods\":[";
+  bool first = true;
+  for (const MethodInfo& m : methods()) {
+    json += std::string(first ? "" : ",") + "{\"name\":" + quoted(m.name) + ",\"label\":" + quoted(tr(m.label)) + "}";
+    first = false;
+  }
+  json += "],\"paused\":" + std::string(session.paused() ? "true" : "false");
+  json += ",\"t\":" + number(session.primary().sim.state().t);
+  json += ",\"controls\":[";
+  first = true;
+  for (const ui::PhysicsControl& c : ui::physics_controls(session, ui)) {
+    json += std::string(first ? "" : ",") + "{\"id\":\"" + c.id + "\",\"label\":" + quoted(c.label) +
+            ",\"value\":" + number(c.value) + ",\"lo\":" + number(c.lo) + ",\"hi\":" + number(c.hi) +
+            ",\"log\":" + (c.log ? "true" : "false") + "}";
+    first = false;
+  }
+  json += "],\"lanes\":[";
+  first = true;
+  for (const Lane& lane : session.lanes()) {
+    const StabilityAnalysis* analysis = lane.analysis ? lane.analysis.get() : nullptr;
+    const ui::GaugeVerdict verdict = ui::gauge_verdict(lane, analysis, false);
+    const Energy e = energy(lane.sim.model(), lane.sim.state());
+    json += std::string(first ? "" : ",") + "{\"label\":" + quoted(lane_label(lane)) + ",\"t\":" + number(lane.sim.state().t) +
+            ",\"verdict\":" + quoted(verdict.text) + ",\"tone\":\"" + tone_name(verdict.tone) + "\"" +
+            ",\"diverged\":" + (lane.sim.diverged() ? "true" : "false") +
+            ",\"why\":" + quoted(lane.sim.divergence() ? lane.sim.divergence()->reason : "") +
+            ",\"energy\":" + number(e.total()) + "}";
+    first = false;
+  }
+  json += "],\"lesson\":";
+  if (app.lesson()) {
+    const Lesson& l = *app.lesson();
+    const LessonStep& s = l.steps[app.step()];
+    json += "{\"title\":" + quoted(l.title) + ",\"step\":" + std::to_string(app.step() + 1) +
+            ",\"steps\":" + std::to_string(l.steps.size()) + ",\"step_title\":" + quoted(s.title) +
+            ",\"caption\":" + quoted(s.caption) + ",\"prompt\":" + quoted(s.prompt) + "}";
+  } else {
+    json += "null";
+  }
+  json += ",\"message\":" + quoted(ui.message);
+  // The words of the document's own controls and headings, in the app's language.
+  json += ",\"labels\":{\"pause\":" + quoted(tr("Pause (space)")) + ",\"resume\":" + quoted(tr("Resume (space)")) +
+          ",\"step\":" + quoted(tr("Step (S)")) + ",\"reset\":" + quoted(tr("Reset (R)")) +
+          ",\"scene\":" + quoted(tr("scene")) + ",\"method\":" + quoted(tr("method")) +
+          ",\"back\":" + quoted(tr("\u2190 Back")) + ",\"next\":" + quoted(tr("Next \u2192")) +
+          ",\"energy\":" + quoted(tr("Energy")) + "}";
+  return json + "}";
+}
+
+bool control(InteractiveApp& app, const std::string& name, double value) {
+  if (name == "next") {
+    if (app.lesson()) app.next_step();
+    return true;
+  }
+  if (name == "back") {
+    if (app.lesson()) app.previous_step();
+    return true;
+  }
+  if (name == "pause") {
+    app.control([value](Session& s, ui::UiState&) { s.set_paused(value != 0.0); });
+    return true;
+  }
+  if (name == "step" || name == "reset") {
+    const ui::Action action = name == "step" ? ui::Action::Step : ui::Action::Reset;
+    app.control([action](Session& s, ui::UiState& ui) { ui::perform(action, s, ui); });
+    return true;
+  }
+  for (const ui::PhysicsControl& c : ui::physics_controls(app.session(), app.ui()))
+    if (name == c.id) {
+      if (!std::isfinite(value)) return false;
+      const double v = std::clamp(value, c.lo, c.hi);
+      app.control([id = std::string(c.id), v](Session& s, ui::UiState& ui) {
+        for (const ui::PhysicsControl& now : ui::physics_controls(s, ui))
+          if (id == now.id) now.set(s, v);
+      });
+      return true;
+    }
+  return false;
+}
+
+bool choose(InteractiveApp& app, const std::string& what, const std::string& name) {
+  if (what == "method") {
+    const std::optional<Method> m = find_method(name);
+    if (!m) return false;
+    app.control([m](Session& s, ui::UiState&) { s.set_method(*m); });
+    return true;
+  }
+  if (what == "scene") {
+    app.open_after_frame(name);
+    return true;
+  }
+  return false;
+}
+
+}  // namespace springlab::app::web

@@ -1,0 +1,26 @@
+// The browser's accessible document (app/web/access.js): what the app shows, in words a screen
+// reader reads, and its controls as the page's own. describe() is the state as JSON, in the app's
+// language; control() and choose() make a change as the panels would (in the next frame, through
+// InteractiveApp::control, so that it interrupts a lesson as theirs do).
+#pragma once
+
+#include <string>
+
+#include "platform/interactive_app.hpp"
+
+namespace springlab::app::web {
+
+// {"scene", "description", "scenes": [...], "method", "methods": [{"name", "label"}], "paused",
+//  "t", "controls": [{"id", "label", "value", "lo", "hi", "log"}], "lanes": [{"label", "t",
+//  "verdict", "tone", "diverged", "why", "energy"}], "lesson": {...} or null, "message",
+//  "labels": {the buttons' words}}
+std::string describe(const InteractiveApp& app);
+
+// "ks", "kd", "dt", "mass", "gravity", "drag": that slider set to `value`; "pause" (1 paused, 0
+// running), "step", "reset", "next", "back" (a lesson's steps). False for an unknown name.
+bool control(InteractiveApp& app, const std::string& name, double value);
+
+// what = "method" or "scene": chosen by its name. False for an unknown one.
+bool choose(InteractiveApp& app, const std::string& what, const std::string& name);
+
+}  // namespace springlab::app::web

@@ -1,0 +1,163 @@
+// springlab in words: a document beside the canvas, kept in step with the app, that a screen
+// reader walks and a keyboard operates (the canvas alone is one node to them). It holds the scene
+// and its description, the method and scene choices, play, step and reset, the physics' sliders
+// with their values and units, each lane's method, time, stability verdict and energy, and the
+// lesson's step with back and next; the changes that matter are said in a polite live region
+// (a lane that diverges, with when and why; a lane past its stability limit; a lesson's step; the
+// app's message), once each, never every frame. Its words come from the app (web/access.cpp), in
+// the app's language. Hidden from sight until the keyboard enters it; then shown, over the scene.
+//
+// With prefers-reduced-motion, a lesson's steps start paused.
+(function () {
+  "use strict";
+  const $ = (id) => document.getElementById(id);
+  const call = (name, ret, types, args) => window.Module.ccall(name, ret, types, args);
+  const announced = [];  // what the live region said, in order (for the tests)
+  window.springlabAnnounced = announced;
+  const reduceMotion = window.matchMedia && window.matchMedia("(prefers-reduced-motion: reduce)").matches;
+
+  function say(text) {
+    if (!text) return;
+    announced.push(text);
+    const live = $("access-live");
+    // (a new node each time: screen readers say an added node, not always a changed one)
+    const p = document.createElement("p");
+    p.textContent = text;
+    live.replaceChildren(p);
+  }
+
+  // A slider's place (0 to 1000) for a value, and back: logarithmic where the panel's is. A range
+  // from 0 that is logarithmic (k_d, drag) goes as (e^(k p) - 1) / (e^k - 1), k = ln 10^4.
+  const kSteps = 1000, kLog0 = Math.log(1e4);
+  function place(c, v) {
+    let p;
+    if (!c.log) p = (v - c.lo) / (c.hi - c.lo);
+    else if (c.lo > 0) p = Math.log(v / c.lo) / Math.log(c.hi / c.lo);
+    else p = Math.log1p((v / c.hi) * (Math.exp(kLog0) - 1)) / kLog0;
+    return Math.round(Math.min(1, Math.max(0, p)) * kSteps);
+  }
+  function value(c, at) {
+    const p = at / kSteps;
+    if (!c.log) return c.lo + p * (c.hi - c.lo);
+    if (c.lo > 0) return c.lo * Math.pow(c.hi / c.lo, p);
+    return c.hi * (Math.exp(kLog0 * p) - 1) / (Math.exp(kLog0) - 1);
+  }
+  const shown = (v) => (Math.abs(v) >= 1e4 || (v !== 0 && Math.abs(v) < 1e-2) ? v.toExponential(2) : String(+v.toPrecision(3)));
+  // "k_s (N/m)" -> "7500 N/m"
+  const withUnit = (c, v) => { const u = c.label.match(/\(([^)]*)\)\s*$/); return shown(v) + (u ? " " + u[1] : ""); };
+
+  let controls = [];  // the app's, as last described
+  const touched = {};  // slider id -> when the keyboard last moved it (its value is the user's meanwhile)
+
+  function buildSliders(list) {
+    const box = $("access-sliders");
+    box.replaceChildren();
+    for (const c of list) {
+      const label = document.createElement("label");
+      label.htmlFor = "access-" + c.id;
+      label.textContent = c.label;
+      const input = document.createElement("input");
+      Object.assign(input, { type: "range", id: "access-" + c.id, min: 0, max: kSteps, step: 1 });
+      input.addEventListener("input", () => {
+        const now = controls.find((k) => k.id === c.id) || c;
+        const v = value(now, Number(input.value));
+        touched[c.id] = performance.now();
+        input.setAttribute("aria-valuetext", withUnit(now, v));
+        call("springlab_control", "number", ["string", "number"], [c.id, v]);
+      });
+      const row = document.createElement("div");
+      row.append(label, input);
+      box.append(row);
+    }
+  }
+
+  function fillSelect(select, items, current) {
+    const names = items.map((i) => i.name).join("\n");
+    if (select.dataset.names !== names) {
+      select.replaceChildren(...items.map((i) => new Option(i.label, i.name)));
+      select.dataset.names = names;
+    }
+    if (document.activeElement !== select) select.value = current;
+  }
+
+  let last = null;  // the last description
+  const laneState = {};  // a lane's label -> { diverged, tone }
+  let lessonKey = "";
+
+  function update(d) {
+    $("access-scene-text").textContent = d.description;
+    $("access-scene-label").textContent = d.labels.scene;
+    $("access-method-label").textContent = d.labels.method;
+    fillSelect($("access-scene"), d.scenes.map((s) => ({ name: s, label: s })), d.scene);
+    fillSelect($("access-method"), d.methods, d.method);
+    $("access-pause").textContent = d.paused ? d.labels.resume : d.labels.pause;
+    $("access-step").textContent = d.labels.step;
+    $("access-back").textContent = d.labels.back;
+    $("access-next").textContent = d.labels.next;
+    $("access-reset").textContent = d.labels.reset;
+    if (controls.map((c) => c.id + c.label).join() !== d.controls.map((c) => c.id + c.label).join()) buildSliders(d.controls);
+    controls = d.controls;
+    for (const c of controls) {
+      const input = $("access-" + c.id);
+      if (!input || performance.now() - (touched[c.id] || -1e9) < 1500) continue;
+      input.value = place(c, c.value);
+      input.setAttribute("aria-valuetext", withUnit(c, c.value));
+    }
+    // The lanes, and what changed in them that matters.
+    const items = d.lanes.map((l) => {
+      const energy = l.energy === null ? "" : `; ${d.labels.energy} ${shown(l.energy)} J`;
+      return `${l.label}: t = ${l.t.toFixed(2)} s; ${l.verdict}${energy}`;
+    });
+    const list = $("access-lanes");
+    if (list.children.length !== items.length) list.replaceChildren(...items.map(() => document.createElement("li")));
+    items.forEach((text, i) => { if (list.children[i].textContent !== text) list.children[i].textContent = text; });
+    for (const l of d.lanes) {
+      const was = laneState[l.label] || { diverged: false, tone: "" };
+      if (l.diverged && !was.diverged) say(`${l.label}, t = ${l.t.toFixed(3)} s: ${l.verdict}. ${l.why}`);
+      else if (!l.diverged && l.tone === "beyond" && was.tone !== "beyond") say(`${l.label}: ${l.verdict}`);
+      laneState[l.label] = { diverged: l.diverged, tone: l.tone };
+    }
+    // The lesson.
+    const lesson = $("access-lesson");
+    lesson.hidden = !d.lesson;
+    if (d.lesson) {
+      const key = `${d.lesson.title} ${d.lesson.step}`;
+      $("access-lesson-title").textContent = `${d.lesson.title}: ${d.lesson.step} / ${d.lesson.steps}, ${d.lesson.step_title}`;
+      $("access-lesson-caption").textContent = d.lesson.caption + (d.lesson.prompt ? " " + d.lesson.prompt : "");
+      if (key !== lessonKey) {
+        lessonKey = key;
+        say(`${d.lesson.title}, ${d.lesson.step} / ${d.lesson.steps}: ${d.lesson.step_title}. ${d.lesson.caption}`);
+        if (reduceMotion && !d.paused) call("springlab_control", "number", ["string", "number"], ["pause", 1]);
+      }
+    } else {
+      lessonKey = "";
+    }
+    if (d.message && (!last || last.message !== d.message)) say(d.message);
+    last = d;
+  }
+
+  function refresh() {
+    try {
+      update(JSON.parse(call("springlab_describe", "string", [], [])));
+    } catch (e) {
+      console.warn("springlab: the accessible document could not follow the app: " + e.message);
+    }
+  }
+
+  const act = (name) => () => { call("springlab_control", "number", ["string", "number"], [name, last && name === "pause" ? (last.paused ? 0 : 1) : 0]); setTimeout(refresh, 100); };
+
+  window.springlabAccess = {
+    start() {
+      $("access-pause").addEventListener("click", act("pause"));
+      $("access-step").addEventListener("click", act("step"));
+      $("access-reset").addEventListener("click", act("reset"));
+      $("access-back").addEventListener("click", act("back"));
+      $("access-next").addEventListener("click", act("next"));
+      $("access-method").addEventListener("change", (e) => call("springlab_choose", "number", ["string", "string"], ["method", e.target.value]));
+      $("access-scene").addEventListener("change", (e) => call("springlab_choose", "number", ["string", "string"], ["scene", e.target.value]));
+      refresh();
+      setInterval(refresh, 250);
+    },
+    refresh,
+  };
+})();
