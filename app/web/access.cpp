@@ -7,6 +7,7 @@
 #include "springlab/text.hpp"
 #include "ui/actions.hpp"
 #include "ui/gauge_verdict.hpp"
+#include "ui/lesson_band.hpp"
 #include "ui/physics_controls.hpp"
 
 namespace springlab::app::web {
@@ -45,7 +46,7 @@ std::string describe(const InteractiveApp& app) {
   const Session& session = app.session();
   const ui::UiState& ui = app.ui();
   std::string json = "{\"scene\":" + quoted(app.scene_name());
-  json += ",\"description\":" + quoted(session.scene().description);
+  json += ",\"description\":" + quoted(tr(session.scene().description));
   json += ",\"scenes\":[";
   for (std::size_t i = 0; i < ui.scenes.size(); ++i) json += (i ? "," : "") + quoted(ui.scenes[i]);
   json += "],\"method\":" + quoted(method_info(session.method()).name) + ",\"methods\":[";
@@ -80,10 +81,10 @@ std::string describe(const InteractiveApp& app) {
   json += "],\"lesson\":";
   if (app.lesson()) {
     const Lesson& l = *app.lesson();
-    const LessonStep& s = l.steps[app.step()];
-    json += "{\"title\":" + quoted(l.title) + ",\"step\":" + std::to_string(app.step() + 1) +
-            ",\"steps\":" + std::to_string(l.steps.size()) + ",\"step_title\":" + quoted(s.title) +
-            ",\"caption\":" + quoted(s.caption) + ",\"prompt\":" + quoted(s.prompt) + "}";
+    const ui::LessonBand b = ui::band_of(l, app.step(), 0, 0);  // (its words in the app's language)
+    json += "{\"title\":" + quoted(b.title) + ",\"step\":" + std::to_string(app.step() + 1) +
+            ",\"steps\":" + std::to_string(l.steps.size()) + ",\"step_title\":" + quoted(b.step_title) +
+            ",\"caption\":" + quoted(b.caption) + ",\"prompt\":" + quoted(b.prompt) + "}";
   } else {
     json += "null";
   }

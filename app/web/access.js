@@ -44,31 +44,62 @@
   }
   const shown = (v) => (Math.abs(v) >= 1e4 || (v !== 0 && Math.abs(v) < 1e-2) ? v.toExponential(2) : String(+v.toPrecision(3)));
   // "k_s (N/m)" -> "7500 N/m"
-  const withUnit = (c, v) => { const u = c.label.match(/\(([^)]*)\)\s*$/); return shown(v) + (u ? " " + u[1] : ""); };
+  const withUnit = (c, v) => { const u = c.label.match(/[(\uff08]([^)\uff09]*)[)\uff09]\s*$/); return shown(v) + (u ? " " + u[1] : ""); };
 
   let controls = [];  // the app's, as last described
   const touched = {};  // slider id -> when the keyboard last moved it (its value is the user's meanwhile)
 
+  // A slider as WAI-ARIA's slider pattern (a native range input's value would be read as its
+  // place, 0 to 1000: Chromium ignores aria-valuetext on one): arrows move it a hundredth of its
+  // travel, Page Up and Down a tenth, Home and End to its ends; it says its value with its unit.
+  function showSlider(el, c, v) {
+    const at = place(c, v);
+    el.setAttribute("aria-valuenow", String(+v.toPrecision(6)));
+    el.setAttribute("aria-valuemin", String(c.lo));
+    el.setAttribute("aria-valuemax", String(c.hi));
+    el.setAttribute("aria-valuetext", withUnit(c, v));
+    el.textContent = withUnit(c, v);
+    el.style.setProperty("--at", `${(100 * at) / kSteps}%`);
+    el.dataset.at = String(at);
+  }
+  function moveSlider(el, c, at) {
+    at = Math.min(kSteps, Math.max(0, at));
+    const v = value(c, at);
+    touched[c.id] = performance.now();
+    showSlider(el, c, v);
+    el.dataset.at = String(at);
+    call("springlab_control", "number", ["string", "number"], [c.id, v]);
+  }
   function buildSliders(list) {
     const box = $("access-sliders");
     box.replaceChildren();
     for (const c of list) {
-      const label = document.createElement("label");
-      label.htmlFor = "access-" + c.id;
+      const label = document.createElement("span");
+      label.id = "access-" + c.id + "-label";
+      label.className = "label";
       label.textContent = c.label;
-      const input = document.createElement("input");
-      Object.assign(input, { type: "range", id: "access-" + c.id, min: 0, max: kSteps, step: 1 });
-      input.addEventListener("input", () => {
-        const now = controls.find((k) => k.id === c.id) || c;
-        const v = value(now, Number(input.value));
-        touched[c.id] = performance.now();
-        input.setAttribute("aria-valuetext", withUnit(now, v));
-        call("springlab_control", "number", ["string", "number"], [c.id, v]);
-      });
+      const el = document.createElement("div");
+      Object.assign(el, { id: "access-" + c.id, tabIndex: 0, className: "slider" });
+      el.setAttribute("role", "slider");
+      el.setAttribute("aria-labelledby", label.id);
       const row = document.createElement("div");
-      row.append(label, input);
+      row.append(label, el);
       box.append(row);
     }
+  }
+  // The keys on a slider (index.html hands the document's keys over).
+  function key(e) {
+    const el = e.target;
+    if (!el || el.getAttribute("role") !== "slider" || !el.id.startsWith("access-")) return;
+    const c = controls.find((k) => "access-" + k.id === el.id);
+    if (!c) return;
+    const at = Number(el.dataset.at || 0);
+    const moves = { ArrowRight: 10, ArrowUp: 10, ArrowLeft: -10, ArrowDown: -10, PageUp: 100, PageDown: -100 };
+    if (e.key in moves) moveSlider(el, c, at + moves[e.key]);
+    else if (e.key === "Home") moveSlider(el, c, 0);
+    else if (e.key === "End") moveSlider(el, c, kSteps);
+    else return;
+    e.preventDefault();
   }
 
   function fillSelect(select, items, current) {
@@ -98,10 +129,9 @@
     if (controls.map((c) => c.id + c.label).join() !== d.controls.map((c) => c.id + c.label).join()) buildSliders(d.controls);
     controls = d.controls;
     for (const c of controls) {
-      const input = $("access-" + c.id);
-      if (!input || performance.now() - (touched[c.id] || -1e9) < 1500) continue;
-      input.value = place(c, c.value);
-      input.setAttribute("aria-valuetext", withUnit(c, c.value));
+      const el = $("access-" + c.id);
+      if (!el || performance.now() - (touched[c.id] || -1e9) < 1500) continue;
+      showSlider(el, c, c.value);
     }
     // The lanes, and what changed in them that matters.
     const items = d.lanes.map((l) => {
@@ -159,5 +189,6 @@
       setInterval(refresh, 250);
     },
     refresh,
+    key,
   };
 })();

@@ -688,6 +688,108 @@ async function runHomework(page, code) {
 
 // homework.js's guard, in this Node (no page): every kind of loop in the student's code stops at
 // its time, however it is written, and the code's lines are kept for messages.
+// springlab in words (access.js): what a screen reader finds (Chromium's accessibility tree), the
+// keyboard's way through it (Tab, no trap, a visible focus), its controls operating the app, the
+// live region saying a divergence once and a lesson's steps, and axe-core's audit of the page.
+function axText(node) {
+  return node.role === "StaticText" ? node.name : (node.children || []).map(axText).join("");
+}
+function axTree(node, out = []) {
+  if (!node) return out;
+  // (a list item's words are its text's: Chromium leaves its own name empty)
+  out.push({ role: node.role, name: node.role === "listitem" ? axText(node) : node.name || "", value: node.valuetext || node.value });
+  for (const c of node.children || []) axTree(c, out);
+  return out;
+}
+async function described(page) {
+  return JSON.parse(await page.evaluate(() => Module.ccall("springlab_describe", "string", [], [])));
+}
+
+check("springlab in words: a screen reader's view, the keyboard's way, the live region, axe-core", async ({ browser, base }) => {
+  const page = await openApp(browser, base, "scene=rope&compare=euler,symplectic-euler");
+  await page.waitForFunction(() => document.querySelectorAll("#access-lanes li").length === 2 &&
+                                    document.querySelectorAll("#access-sliders [role=slider]").length >= 6, { timeout: 10000 });
+  await page.waitForFunction(() => [...document.querySelectorAll("#access-lanes li")].every((li) => !/analysing/.test(li.textContent)),
+                             { timeout: 20000 });
+  const nodes = axTree(await page.accessibility.snapshot({ interestingOnly: false }));
+  const has = (role, name) => nodes.some((n) => n.role === role && (name instanceof RegExp ? name.test(n.name) : n.name === name));
+  for (const [role, name] of [["combobox", "scene"], ["combobox", "method"], ["button", "Pause (space)"], ["button", "Step (S)"],
+                              ["button", "Reset (R)"], ["slider", "k_s (N/m)"], ["slider", "k_d (N s/m)"], ["slider", "dt (s)"],
+                              ["slider", "mass (kg)"], ["slider", "gravity (m/s^2)"], ["slider", "drag (N s/m)"],
+                              ["listitem", /^Explicit Euler: t = [\d.]+ s; .*(safe|stable|beyond|x)/],
+                              ["listitem", /^Symplectic Euler: t = [\d.]+ s; .*; Energy -?[\d.e+-]+ J$/]])
+    expect(has(role, name), `no ${role} "${name}" in the accessibility tree: ${JSON.stringify(nodes.filter((n) => n.role !== "StaticText"))}`);
+  // Its value is the quantity's own (aria-valuenow), with its unit in words (aria-valuetext, which
+  // this Chromium's tree reports empty whatever it is: read from the element).
+  const ks = nodes.find((n) => n.role === "slider" && n.name === "k_s (N/m)");
+  expect(Number(ks.value) === 7500, `k_s is read as ${ks.value}`);
+  const ksText = await page.$eval("#access-ks", (e) => e.getAttribute("aria-valuetext"));
+  expect(ksText === "7500 N/m", `k_s says ${ksText}`);
+
+  // Tab from the scene: every control in order, shown while in use, and back out (no trap).
+  await page.focus("#canvas");
+  const visited = [];
+  for (let i = 0; i < 20; i++) {
+    await page.keyboard.press("Tab");
+    visited.push(await page.evaluate(() => document.activeElement.id || document.activeElement.tagName));
+  }
+  const order = ["access-scene", "access-method", "access-pause", "access-step", "access-reset", "access-ks", "access-kd", "access-dt",
+                 "access-mass", "access-gravity", "access-drag"];
+  expect(visited.slice(0, order.length).join() === order.join(), `Tab visited ${visited.join(", ")}`);
+  expect(visited.includes("canvas") || visited.includes("BODY"), `Tab never left the controls: ${visited.join(", ")}`);
+  await page.focus("#access-ks");
+  const box = await page.$eval("#access", (e) => e.getBoundingClientRect().width);
+  expect(box > 200, `the document is not shown while the keyboard is in it (${box} px wide)`);
+  // The keyboard operates the app: k_s up by arrows, pause by Enter, the method by the choice.
+  const before = await status(page);
+  for (let i = 0; i < 20; i++) await page.keyboard.press("ArrowRight");
+  await waitFrames(page, 3);
+  let now = await status(page);
+  expect(now.ks > before.ks * 1.3, `k_s after 20 arrow keys: ${before.ks} -> ${now.ks}`);
+  await page.focus("#access-pause");
+  await page.keyboard.press("Enter");
+  await waitFrames(page, 3);
+  now = await status(page);
+  expect(now.paused !== before.paused, `Enter on pause: paused ${before.paused} -> ${now.paused}`);
+  await page.select("#access-scene", "spring");
+  await page.waitForFunction(() => JSON.parse(Module.ccall("springlab_status", "string", [], [])).scene === "spring", { timeout: 10000 });
+
+  // axe-core on the page as it is: no serious or critical violation.
+  await page.addScriptTag({ path: require.resolve("axe-core/axe.min.js") });
+  const violations = await page.evaluate(async () => (await axe.run(document, { resultTypes: ["violations"] })).violations
+    .map((v) => ({ id: v.id, impact: v.impact, nodes: v.nodes.map((n) => n.target.join(" ")).slice(0, 3) })));
+  const serious = violations.filter((v) => v.impact === "serious" || v.impact === "critical");
+  expect(serious.length === 0, `axe-core: ${JSON.stringify(serious)}`);
+  console.log(`    axe-core: ${violations.length} lesser violation(s): ${violations.map((v) => `${v.id} (${v.impact})`).join(", ") || "none"}`);
+  await page.close();
+
+  // A lane that diverges is said once, with when and why; a stable one never.
+  const diverging = await openApp(browser, base, "scene=spring&compare=euler,symplectic-euler&dt=0.15&substeps=1");
+  await diverging.waitForFunction(() => JSON.parse(Module.ccall("springlab_status", "string", [], [])).lanes[0].diverged,
+                                  { timeout: 30000 });
+  await waitFrames(diverging, 10);
+  const said = await diverging.evaluate(() => window.springlabAnnounced.slice());
+  const diverged = said.filter((s) => s.startsWith("Explicit Euler, t = "));
+  expect(diverged.length === 1 && /diverged/.test(diverged[0]), `the divergence was said ${diverged.length} times: ${JSON.stringify(said)}`);
+  expect(!said.some((s) => s.startsWith("Symplectic Euler")), `a stable lane was said: ${JSON.stringify(said)}`);
+  await diverging.close();
+
+  // A lesson's steps, said as they come (Next from the document).
+  const lesson = await openApp(browser, base, "lesson=hooke");
+  await lesson.waitForFunction(() => window.springlabAnnounced.some((s) => s.includes("1 / 2")), { timeout: 10000 });
+  expect(!(await status(lesson)).paused, "a lesson started paused without prefers-reduced-motion");
+  await lesson.focus("#access-next");
+  await lesson.keyboard.press("Enter");
+  await lesson.waitForFunction(() => window.springlabAnnounced.some((s) => s.includes("2 / 2")), { timeout: 10000 });
+  expect((await status(lesson)).step === 2, "Next in the document did not move the lesson on");
+  // With prefers-reduced-motion, the lesson's step starts paused.
+  await lesson.emulateMediaFeatures([{ name: "prefers-reduced-motion", value: "reduce" }]);
+  await lesson.reload();
+  await lesson.waitForFunction("window.springlabReady === true", { timeout: 60000 });
+  await lesson.waitForFunction(() => JSON.parse(Module.ccall("springlab_status", "string", [], [])).paused, { timeout: 10000 });
+  await lesson.close();
+});
+
 check("homework 8: every kind of endless loop is stopped in time", async () => {
   global.acorn = require("/usr/share/nodejs/acorn/dist/acorn.js");
   global.acorn.walk = require("/usr/share/nodejs/acorn-walk/dist/walk.js");

@@ -5,8 +5,8 @@
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 node_dir="$root/build-wasm/node"
-if [[ ! -d "$node_dir/node_modules/puppeteer-core" ]]; then
+if [[ ! -d "$node_dir/node_modules/puppeteer-core" || ! -d "$node_dir/node_modules/axe-core" ]]; then
   mkdir -p "$node_dir"
-  npm install --prefix "$node_dir" --no-audit --no-fund --loglevel=error puppeteer-core@22 >/dev/null
+  npm install --prefix "$node_dir" --no-audit --no-fund --loglevel=error puppeteer-core@22 axe-core@4 >/dev/null
 fi
 NODE_PATH="$node_dir/node_modules" exec node "$@"
