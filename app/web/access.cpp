@@ -71,11 +71,16 @@ std::string describe(const InteractiveApp& app) {
     const StabilityAnalysis* analysis = lane.analysis ? lane.analysis.get() : nullptr;
     const ui::GaugeVerdict verdict = ui::gauge_verdict(lane, analysis, false);
     const Energy e = energy(lane.sim.model(), lane.sim.state());
+    // Where it started and the scene's scale of energy: what the sound measures its change by.
+    const State& start = session.scene().state;
+    const bool same_start = start.x.rows() == lane.sim.state().x.rows();
+    const double e0 = same_start ? energy(lane.sim.model(), start).total() : e.total();
+    const double scale = same_start ? energy_scale(lane.sim.model(), start) : 1.0;
     json += std::string(first ? "" : ",") + "{\"label\":" + quoted(lane_label(lane)) + ",\"t\":" + number(lane.sim.state().t) +
             ",\"verdict\":" + quoted(verdict.text) + ",\"tone\":\"" + tone_name(verdict.tone) + "\"" +
             ",\"diverged\":" + (lane.sim.diverged() ? "true" : "false") +
             ",\"why\":" + quoted(lane.sim.divergence() ? lane.sim.divergence()->reason : "") +
-            ",\"energy\":" + number(e.total()) + "}";
+            ",\"energy\":" + number(e.total()) + ",\"energy0\":" + number(e0) + ",\"scale\":" + number(scale) + "}";
     first = false;
   }
   json += "],\"lesson\":";
@@ -94,7 +99,7 @@ std::string describe(const InteractiveApp& app) {
           ",\"step\":" + quoted(tr("Step (S)")) + ",\"reset\":" + quoted(tr("Reset (R)")) +
           ",\"scene\":" + quoted(tr("scene")) + ",\"method\":" + quoted(tr("method")) +
           ",\"back\":" + quoted(tr("\u2190 Back")) + ",\"next\":" + quoted(tr("Next \u2192")) +
-          ",\"energy\":" + quoted(tr("Energy")) + "}";
+          ",\"energy\":" + quoted(tr("Energy")) + ",\"sound\":" + quoted(tr("Hear the energy of")) + "}";
   return json + "}";
 }
 

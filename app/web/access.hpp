@@ -12,7 +12,7 @@ namespace springlab::app::web {
 
 // {"scene", "description", "scenes": [...], "method", "methods": [{"name", "label"}], "paused",
 //  "t", "controls": [{"id", "label", "value", "lo", "hi", "log"}], "lanes": [{"label", "t",
-//  "verdict", "tone", "diverged", "why", "energy"}], "lesson": {...} or null, "message",
+//  "verdict", "tone", "diverged", "why", "energy", "energy0", "scale"}], "lesson": {...} or null, "message",
 //  "labels": {the buttons' words}}
 std::string describe(const InteractiveApp& app);
 

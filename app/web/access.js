@@ -7,7 +7,11 @@
 // app's message), once each, never every frame. Its words come from the app (web/access.cpp), in
 // the app's language. Hidden from sight until the keyboard enters it; then shown, over the scene.
 //
-// With prefers-reduced-motion, a lesson's steps start paused.
+// With prefers-reduced-motion, a lesson's steps start paused. And a lane's energy can be heard, as
+// Desmos's audio trace plays a graph: a tone whose pitch rises an octave for each energy scale of
+// the scene that the lane has gained since its start (explicit Euler's climbs, symplectic
+// Euler's holds), silent once the lane diverges. Off until asked for (the checkbox: a browser
+// plays sound only after such a gesture).
 (function () {
   "use strict";
   const $ = (id) => document.getElementById(id);
@@ -111,6 +115,40 @@
     if (document.activeElement !== select) select.value = current;
   }
 
+  // --- Sound -------------------------------------------------------------------------------
+  const sound = { context: null, tone: null, gain: null, frequency: 0, lane: "" };
+  window.springlabSound = sound;
+  const kBase = 440, kOctaves = 2;  // Hz at the start; +-2 octaves at most
+  function soundSwitch(on) {
+    if (on && !sound.context) {
+      const Context = window.AudioContext || window.webkitAudioContext;
+      if (!Context) return say("this browser plays no sound");
+      sound.context = new Context();
+      sound.tone = sound.context.createOscillator();
+      sound.gain = sound.context.createGain();
+      sound.gain.gain.value = 0.06;
+      sound.tone.frequency.value = kBase;
+      sound.tone.connect(sound.gain).connect(sound.context.destination);
+      sound.tone.start();
+    } else if (!on && sound.context) {
+      sound.context.close();
+      Object.assign(sound, { context: null, tone: null, gain: null, frequency: 0, lane: "" });
+    }
+  }
+  function soundFollow(d) {
+    const select = $("access-sound-lane");
+    fillSelect(select, d.lanes.map((l, i) => ({ name: String(i), label: l.label })), select.value || "0");
+    if (!sound.context) return;
+    const l = d.lanes[Number(select.value) || 0];
+    if (!l) return;
+    const rise = l.scale > 0 && l.energy !== null ? (l.energy - l.energy0) / l.scale : 0;
+    sound.frequency = l.diverged ? 0 : kBase * Math.pow(2, Math.max(-kOctaves, Math.min(kOctaves, rise)));
+    sound.lane = l.label;
+    const now = sound.context.currentTime;
+    sound.gain.gain.setTargetAtTime(l.diverged ? 0 : 0.06, now, 0.05);
+    if (sound.frequency > 0) sound.tone.frequency.setTargetAtTime(sound.frequency, now, 0.05);
+  }
+
   let last = null;  // the last description
   const laneState = {};  // a lane's label -> { diverged, tone }
   let lessonKey = "";
@@ -163,6 +201,8 @@
       lessonKey = "";
     }
     if (d.message && (!last || last.message !== d.message)) say(d.message);
+    $("access-sound-label").textContent = d.labels.sound;
+    soundFollow(d);
     last = d;
   }
 
@@ -184,6 +224,7 @@
       $("access-back").addEventListener("click", act("back"));
       $("access-next").addEventListener("click", act("next"));
       $("access-method").addEventListener("change", (e) => call("springlab_choose", "number", ["string", "string"], ["method", e.target.value]));
+      $("access-sound").addEventListener("change", (e) => soundSwitch(e.target.checked));
       $("access-scene").addEventListener("change", (e) => call("springlab_choose", "number", ["string", "string"], ["scene", e.target.value]));
       refresh();
       setInterval(refresh, 250);

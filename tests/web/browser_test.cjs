@@ -765,8 +765,18 @@ check("springlab in words: a screen reader's view, the keyboard's way, the live 
 
   // A lane that diverges is said once, with when and why; a stable one never.
   const diverging = await openApp(browser, base, "scene=spring&compare=euler,symplectic-euler&dt=0.15&substeps=1");
+  // The sound, turned on (a key press: a browser's gesture) for explicit Euler: its pitch rises
+  // above the start's 440 Hz as the energy grows, and falls silent once the lane diverges; turned
+  // off, it stops.
+  await diverging.focus("#access-sound");
+  await diverging.keyboard.press("Space");
+  await diverging.waitForFunction(() => window.springlabSound.frequency > 440 * 1.05, { timeout: 20000 });
   await diverging.waitForFunction(() => JSON.parse(Module.ccall("springlab_status", "string", [], [])).lanes[0].diverged,
                                   { timeout: 30000 });
+  await diverging.waitForFunction(() => window.springlabSound.frequency === 0, { timeout: 5000 });
+  await diverging.focus("#access-sound");
+  await diverging.keyboard.press("Space");
+  expect(await diverging.evaluate(() => window.springlabSound.context === null), "the sound did not stop");
   await waitFrames(diverging, 10);
   const said = await diverging.evaluate(() => window.springlabAnnounced.slice());
   const diverged = said.filter((s) => s.startsWith("Explicit Euler, t = "));
