@@ -6,8 +6,10 @@
 #include "springlab/energy.hpp"
 #include "springlab/text.hpp"
 #include "ui/actions.hpp"
+#include "chart/chart_text.hpp"
 #include "ui/gauge_verdict.hpp"
 #include "ui/lesson_band.hpp"
+#include "ui/live_charts.hpp"
 #include "ui/physics_controls.hpp"
 
 namespace springlab::app::web {
@@ -41,6 +43,11 @@ const char* tone_name(ui::Tone tone) {
 }
 
 }  // namespace
+
+std::vector<chart::Chart> charts(const Session& session) {
+  if (session.scene().ik) return {};  // (its chart is the solvers' distance: not yet said here)
+  return {ui::energy_chart(session), ui::position_chart(session), ui::phase_chart(session)};
+}
 
 std::string describe(const InteractiveApp& app) {
   const Session& session = app.session();
@@ -93,13 +100,21 @@ std::string describe(const InteractiveApp& app) {
   } else {
     json += "null";
   }
+  json += ",\"charts\":[";
+  first = true;
+  for (const chart::Chart& c : charts(session)) {
+    json += std::string(first ? "" : ",") + "{\"title\":" + quoted(c.title) + ",\"summary\":" + quoted(chart::describe_chart(c)) + "}";
+    first = false;
+  }
+  json += "]";
   json += ",\"message\":" + quoted(ui.message);
   // The words of the document's own controls and headings, in the app's language.
   json += ",\"labels\":{\"pause\":" + quoted(tr("Pause (space)")) + ",\"resume\":" + quoted(tr("Resume (space)")) +
           ",\"step\":" + quoted(tr("Step (S)")) + ",\"reset\":" + quoted(tr("Reset (R)")) +
           ",\"scene\":" + quoted(tr("scene")) + ",\"method\":" + quoted(tr("method")) +
           ",\"back\":" + quoted(tr("\u2190 Back")) + ",\"next\":" + quoted(tr("Next \u2192")) +
-          ",\"energy\":" + quoted(tr("Energy")) + ",\"sound\":" + quoted(tr("Hear the energy of")) + "}";
+          ",\"energy\":" + quoted(tr("Energy")) + ",\"sound\":" + quoted(tr("Hear the energy of")) +
+          ",\"csv\":" + quoted(tr("Download its data (CSV)")) + "}";
   return json + "}";
 }
 

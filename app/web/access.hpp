@@ -5,7 +5,9 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
+#include "chart/chart.hpp"
 #include "platform/interactive_app.hpp"
 
 namespace springlab::app::web {
@@ -15,6 +17,10 @@ namespace springlab::app::web {
 //  "verdict", "tone", "diverged", "why", "energy", "energy0", "scale"}], "lesson": {...} or null, "message",
 //  "labels": {the buttons' words}}
 std::string describe(const InteractiveApp& app);
+
+// The live charts the document says in words (describe's "charts": title and summary) and whose
+// data it gives as CSV (chart::chart_csv): energy, the watched particle's position, its phase.
+std::vector<chart::Chart> charts(const Session& session);
 
 // "ks", "kd", "dt", "mass", "gravity", "drag": that slider set to `value`; "pause" (1 paused, 0
 // running), "step", "reset", "next", "back" (a lesson's steps). False for an unknown name.

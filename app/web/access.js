@@ -115,6 +115,18 @@
     if (document.activeElement !== select) select.value = current;
   }
 
+  // A chart's points as a CSV file, saved by the browser.
+  function download(index, title) {
+    const csv = call("springlab_chart_csv", "string", ["number"], [index]);
+    const a = document.createElement("a");
+    a.href = URL.createObjectURL(new Blob([csv], { type: "text/csv" }));
+    a.download = `springlab-${title.replace(/[^\w\u4e00-\u9fff]+/g, "-").replace(/^-|-$/g, "") || "chart"}.csv`;
+    document.body.append(a);
+    a.click();
+    a.remove();
+    setTimeout(() => URL.revokeObjectURL(a.href), 1000);
+  }
+
   // --- Sound -------------------------------------------------------------------------------
   const sound = { context: null, tone: null, gain: null, frequency: 0, lane: "" };
   window.springlabSound = sound;
@@ -201,6 +213,23 @@
       lessonKey = "";
     }
     if (d.message && (!last || last.message !== d.message)) say(d.message);
+    // The charts: a sentence each, and its data to download.
+    const charts = $("access-charts");
+    if (charts.children.length !== d.charts.length) {
+      charts.replaceChildren(...d.charts.map((c, i) => {
+        const box = document.createElement("div");
+        const p = document.createElement("p");
+        const button = document.createElement("button");
+        button.addEventListener("click", () => download(i, c.title));
+        box.append(p, button);
+        return box;
+      }));
+    }
+    d.charts.forEach((c, i) => {
+      const [p, button] = charts.children[i].children;
+      if (p.textContent !== c.summary) p.textContent = c.summary;
+      button.textContent = `${d.labels.csv}: ${c.title}`;
+    });
     $("access-sound-label").textContent = d.labels.sound;
     soundFollow(d);
     last = d;

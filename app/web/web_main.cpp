@@ -33,6 +33,7 @@
 #include "ui/panels.hpp"
 #include "ui/theme.hpp"
 #include "ui/homework_status.hpp"
+#include "chart/chart_text.hpp"
 #include "web/access.hpp"
 #include "web/browser.hpp"
 #include "web/js_rope.hpp"
@@ -257,6 +258,14 @@ EMSCRIPTEN_KEEPALIVE const char* springlab_describe() {
   if (!springlab::app::web::g_page) return "{}";
   json = springlab::app::web::describe(*springlab::app::web::g_page->app);
   return json.c_str();
+}
+EMSCRIPTEN_KEEPALIVE const char* springlab_chart_csv(int index) {
+  using namespace springlab::app::web;
+  static std::string csv;
+  if (!g_page) return "";
+  const auto shown = charts(g_page->app->session());
+  csv = index >= 0 && index < static_cast<int>(shown.size()) ? springlab::chart::chart_csv(shown[index]) : "";
+  return csv.c_str();
 }
 EMSCRIPTEN_KEEPALIVE int springlab_control(const char* name, double value) {
   using namespace springlab::app::web;

@@ -717,7 +717,9 @@ check("springlab in words: a screen reader's view, the keyboard's way, the live 
                               ["button", "Reset (R)"], ["slider", "k_s (N/m)"], ["slider", "k_d (N s/m)"], ["slider", "dt (s)"],
                               ["slider", "mass (kg)"], ["slider", "gravity (m/s^2)"], ["slider", "drag (N s/m)"],
                               ["listitem", /^Explicit Euler: t = [\d.]+ s; .*(safe|stable|beyond|x)/],
-                              ["listitem", /^Symplectic Euler: t = [\d.]+ s; .*; Energy -?[\d.e+-]+ J$/]])
+                              ["listitem", /^Symplectic Euler: t = [\d.]+ s; .*; Energy -?[\d.e+-]+ J$/],
+                              ["StaticText", /^Energy \(J\) against t \(s\), from 0 to [\d.]+: euler (rises|falls|holds)/],
+                              ["button", "Download its data (CSV): Energy"]])
     expect(has(role, name), `no ${role} "${name}" in the accessibility tree: ${JSON.stringify(nodes.filter((n) => n.role !== "StaticText"))}`);
   // Its value is the quantity's own (aria-valuenow), with its unit in words (aria-valuetext, which
   // this Chromium's tree reports empty whatever it is: read from the element).
@@ -726,6 +728,8 @@ check("springlab in words: a screen reader's view, the keyboard's way, the live 
   const ksText = await page.$eval("#access-ks", (e) => e.getAttribute("aria-valuetext"));
   expect(ksText === "7500 N/m", `k_s says ${ksText}`);
 
+  const csv = await page.evaluate(() => Module.ccall("springlab_chart_csv", "string", ["number"], [0]));
+  expect(/^euler t \(s\),euler J,/.test(csv) && csv.trim().split("\n").length > 10, `the energy chart's CSV: ${csv.slice(0, 200)}`);
   // Tab from the scene: every control in order, shown while in use, and back out (no trap).
   await page.focus("#canvas");
   const visited = [];

@@ -1,0 +1,68 @@
+// The live charts in words (chart/chart_text.hpp), for whoever cannot see them: on the spring,
+// explicit Euler's energy is said to rise and symplectic Euler's to hold (the growth per step
+// 1 + (h w)^2 and the bounded energy of a symplectic step); a diverged lane is said to leave the
+// chart; the CSV holds every point of every line.
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <sstream>
+
+#include "chart/chart_text.hpp"
+#include "session/session.hpp"
+#include "support.hpp"
+#include "ui/live_charts.hpp"
+
+namespace springlab::test {
+namespace {
+
+std::unique_ptr<app::Session> compared(double dt, double seconds) {
+  Scene scene = shipped("spring");
+  SimulationSettings settings = settings_for(scene);
+  settings.dt = dt;
+  settings.substeps = 1;
+  settings.auto_substeps = false;
+  auto session = std::make_unique<app::Session>(std::move(scene), settings, 60.0);
+  session->set_compare({Method::Euler, Method::SymplecticEuler});
+  for (int frame = 0; frame < static_cast<int>(seconds * 60.0); ++frame) session->advance_frame();
+  return session;
+}
+
+bool has(const std::string& text, const std::string& words) { return text.find(words) != std::string::npos; }
+
+TEST(ChartText, ExplicitEulersEnergyRisesAndSymplecticEulersHolds) {
+  // h w = 0.1 on the spring (w = 10 rad/s): explicit Euler's energy x1.01 a step, 4 s of steps.
+  auto session = compared(0.01, 4.0);
+  const std::string said = chart::describe_chart(ui::energy_chart(*session));
+  EXPECT_TRUE(has(said, "Energy (J) against t (s), from 0")) << said;
+  EXPECT_TRUE(has(said, "euler rises from 12.5 to ")) << said;
+  // (its energy is bounded, not constant: it swings by O(h w) about the true 12.5 J)
+  EXPECT_TRUE(has(said, "symplectic-euler holds at about 1")) << said;
+  EXPECT_TRUE(has(said, "(11.9 to 13.2)")) << said;
+  EXPECT_FALSE(has(said, "symplectic-euler rises")) << said;
+  // Past its limit (h w = 2.5 > 2), symplectic Euler too leaves the chart; explicit Euler first.
+  auto past = compared(0.25, 20.0);
+  const std::string beyond = chart::describe_chart(ui::energy_chart(*past));
+  EXPECT_TRUE(has(beyond, "euler ")) << beyond;
+  EXPECT_TRUE(has(beyond, "leaves the chart (diverged)")) << beyond;
+  EXPECT_FALSE(has(said, "leaves the chart")) << said;
+}
+
+TEST(ChartText, TheCsvHoldsEveryPointOfEveryLine) {
+  auto session = compared(0.01, 1.0);
+  const chart::Chart energy = ui::energy_chart(*session);
+  std::istringstream csv(chart::chart_csv(energy));
+  std::string header, row;
+  std::getline(csv, header);
+  EXPECT_EQ(std::count(header.begin(), header.end(), ','), 2 * static_cast<long>(energy.series.size()) - 1) << header;
+  EXPECT_TRUE(has(header, "euler t (s),euler J")) << header;
+  std::size_t rows = 0;
+  std::string last;
+  while (std::getline(csv, row)) ++rows, last = row;
+  EXPECT_EQ(rows, energy.series.front().x.size());
+  // The last row is the last point of the first line, to 9 digits.
+  EXPECT_NEAR(std::stod(last.substr(last.find(',') + 1)), energy.series.front().y.back(),
+              1e-8 * std::abs(energy.series.front().y.back()));
+}
+
+}  // namespace
+}  // namespace springlab::test
