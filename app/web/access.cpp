@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <tuple>
 
 #include "springlab/energy.hpp"
 #include "springlab/text.hpp"
@@ -90,7 +91,13 @@ std::string describe(const InteractiveApp& app) {
             ",\"energy\":" + number(e.total()) + ",\"energy0\":" + number(e0) + ",\"scale\":" + number(scale) + "}";
     first = false;
   }
-  json += "],\"lesson\":";
+  json += "],\"particles\":" + std::to_string(session.primary().sim.state().particle_count());
+  json += ",\"held\":" + std::to_string(session.grabbed());
+  if (session.grabbed() >= 0) {  // where it is (the first lane's), m
+    const auto x = session.primary().sim.state().x.row(session.grabbed());
+    json += ",\"held_at\":[" + number(x(0)) + "," + number(x(1)) + "," + number(x(2)) + "]";
+  }
+  json += ",\"lesson\":";
   if (app.lesson()) {
     const Lesson& l = *app.lesson();
     const ui::LessonBand b = ui::band_of(l, app.step(), 0, 0);  // (its words in the app's language)
@@ -114,11 +121,52 @@ std::string describe(const InteractiveApp& app) {
           ",\"scene\":" + quoted(tr("scene")) + ",\"method\":" + quoted(tr("method")) +
           ",\"back\":" + quoted(tr("\u2190 Back")) + ",\"next\":" + quoted(tr("Next \u2192")) +
           ",\"energy\":" + quoted(tr("Energy")) + ",\"sound\":" + quoted(tr("Hear the energy of")) +
-          ",\"csv\":" + quoted(tr("Download its data (CSV)")) + "}";
+          ",\"csv\":" + quoted(tr("Download its data (CSV)")) + ",\"particle\":" + quoted(tr("particle")) +
+          ",\"hold\":" + quoted(tr("Hold it")) + ",\"release\":" + quoted(tr("Let go")) +
+          ",\"left\":" + quoted(tr("left")) + ",\"right\":" + quoted(tr("right")) + ",\"up\":" + quoted(tr("up")) +
+          ",\"down\":" + quoted(tr("down")) + "}";
   return json + "}";
 }
 
+namespace {
+
+// How far a press moves a held particle: a twentieth of the scene's extent at its start.
+double nudge(const Session& session) {
+  const Points& x = session.scene().state.x;
+  if (x.rows() == 0) return 0.05;
+  const double extent = (x.colwise().maxCoeff() - x.colwise().minCoeff()).norm();
+  return extent > 0.0 ? extent / 20.0 : 0.05;
+}
+
+}  // namespace
+
 bool control(InteractiveApp& app, const std::string& name, double value) {
+  // A particle held and moved by keyboard, as a drag holds and moves it: "hold" (its index),
+  // "left", "right", "up", "down" (a twentieth of the scene a press, in the view's plane), "release".
+  if (name == "hold") {
+    const int i = static_cast<int>(value);
+    if (!(value >= 0) || i >= app.session().primary().sim.state().particle_count()) return false;
+    app.control([i](Session& s, ui::UiState&) {
+      s.grab(i);
+      s.drag_to(s.primary().sim.state().x.row(i).transpose());
+    });
+    return true;
+  }
+  if (name == "release") {
+    app.control([](Session& s, ui::UiState&) { s.release(); });
+    return true;
+  }
+  for (const auto& [key, x, y] : {std::tuple{"left", -1, 0}, std::tuple{"right", 1, 0}, std::tuple{"up", 0, 1},
+                                  std::tuple{"down", 0, -1}})
+    if (name == key) {
+      const Vec3 step(x, y, 0.0);
+      app.control([step](Session& s, ui::UiState&) {
+        if (s.grabbed() < 0 || !s.drag_target()) return;
+        s.drag_to(*s.drag_target() + nudge(s) * step);
+      });
+      return true;
+    }
+
   if (name == "next") {
     if (app.lesson()) app.next_step();
     return true;

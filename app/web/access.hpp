@@ -23,7 +23,9 @@ std::string describe(const InteractiveApp& app);
 std::vector<chart::Chart> charts(const Session& session);
 
 // "ks", "kd", "dt", "mass", "gravity", "drag": that slider set to `value`; "pause" (1 paused, 0
-// running), "step", "reset", "next", "back" (a lesson's steps). False for an unknown name.
+// running), "step", "reset", "next", "back" (a lesson's steps); "hold" (a particle's index),
+// "left", "right", "up", "down" (a held particle moved a twentieth of the scene), "release".
+// False for an unknown name.
 bool control(InteractiveApp& app, const std::string& name, double value);
 
 // what = "method" or "scene": chosen by its name. False for an unknown one.

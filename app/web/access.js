@@ -232,6 +232,14 @@
     });
     $("access-sound-label").textContent = d.labels.sound;
     soundFollow(d);
+    // A particle held by keyboard.
+    $("access-particle-label").textContent = d.labels.particle;
+    $("access-particle").max = String(d.particles - 1);
+    $("access-grab").textContent = d.held >= 0 ? d.labels.release : d.labels.hold;
+    for (const k of ["left", "right", "up", "down"]) {
+      $("access-" + k).textContent = d.labels[k];
+      $("access-" + k).disabled = d.held < 0;
+    }
     last = d;
   }
 
@@ -253,6 +261,13 @@
       $("access-back").addEventListener("click", act("back"));
       $("access-next").addEventListener("click", act("next"));
       $("access-method").addEventListener("change", (e) => call("springlab_choose", "number", ["string", "string"], ["method", e.target.value]));
+      $("access-grab").addEventListener("click", () => {
+        if (last && last.held >= 0) call("springlab_control", "number", ["string", "number"], ["release", 0]);
+        else call("springlab_control", "number", ["string", "number"], ["hold", Number($("access-particle").value) || 0]);
+        setTimeout(refresh, 100);
+      });
+      for (const k of ["left", "right", "up", "down"])
+        $("access-" + k).addEventListener("click", () => call("springlab_control", "number", ["string", "number"], [k, 0]));
       $("access-sound").addEventListener("change", (e) => soundSwitch(e.target.checked));
       $("access-scene").addEventListener("change", (e) => call("springlab_choose", "number", ["string", "string"], ["scene", e.target.value]));
       refresh();

@@ -755,6 +755,22 @@ check("springlab in words: a screen reader's view, the keyboard's way, the live 
   await waitFrames(page, 3);
   now = await status(page);
   expect(now.paused !== before.paused, `Enter on pause: paused ${before.paused} -> ${now.paused}`);
+  // A particle held and moved by keyboard: the rope's free end, three presses right.
+  await page.focus("#access-particle");
+  await page.keyboard.press("Backspace");
+  await page.keyboard.type("15");
+  await page.focus("#access-grab");
+  await page.keyboard.press("Enter");
+  await page.waitForFunction(() => JSON.parse(Module.ccall("springlab_describe", "string", [], [])).held === 15, { timeout: 5000 });
+  const heldAt = (await described(page)).held_at;
+  await page.focus("#access-right");
+  for (let i = 0; i < 3; i++) await page.keyboard.press("Enter");
+  await waitFrames(page, 5);
+  const movedTo = (await described(page)).held_at;
+  expect(movedTo[0] > heldAt[0] + 0.5, `the held particle moved from ${heldAt} to ${movedTo}`);
+  await page.focus("#access-grab");
+  await page.keyboard.press("Enter");
+  await page.waitForFunction(() => JSON.parse(Module.ccall("springlab_describe", "string", [], [])).held === -1, { timeout: 5000 });
   await page.select("#access-scene", "spring");
   await page.waitForFunction(() => JSON.parse(Module.ccall("springlab_status", "string", [], [])).scene === "spring", { timeout: 10000 });
 
