@@ -9,13 +9,21 @@
 #   working); scripts/sanitize.sh takes the same options for the checking build.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
+# Each phase's time, said as it ends (CI's budget is 25 minutes: where it goes).
+phase_start=$SECONDS
+took() { echo "test.sh: $1 took $((SECONDS - phase_start)) s (all so far: $SECONDS s)"; phase_start=$SECONDS; }
 "$root/scripts/setup.sh"
+took "setting up"
 "$root/scripts/build.sh"
+took "building"
 # Two tests at once, each with its OpenMP threads: waiting threads sleep instead of spinning (a
 # spinning team took the cores from the other test: the suite ran 254 s instead of 175 s).
 export OMP_WAIT_POLICY="${OMP_WAIT_POLICY:-passive}"
 (cd "${SPRINGLAB_BUILD_DIR:-$root/build}" && ctest --output-on-failure --parallel "$(nproc)" --timeout 600 "$@")
+took "the normal suite"
 if [[ $# -eq 0 ]]; then
   "$root/scripts/sanitize.sh"
+  took "the checking build and its suite (sanitize.sh)"
   "$root/scripts/web.sh" --test
+  took "the browser build and its checks (web.sh --test)"
 fi
