@@ -1,8 +1,9 @@
 #include "web/access.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <tuple>
+
+#include <nlohmann/json.hpp>
 
 #include "springlab/energy.hpp"
 #include "springlab/text.hpp"
@@ -17,22 +18,8 @@ namespace springlab::app::web {
 
 namespace {
 
-std::string quoted(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (c == '\n') out += "\\n";
-    else if (static_cast<unsigned char>(c) >= 0x20) out += c;
-  }
-  return out + "\"";
-}
-
-std::string number(double v) {
-  if (!std::isfinite(v)) return "null";
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", v);
-  return text;
-}
+// A number for JSON: a diverged run's infinity or NaN as null.
+nlohmann::json finite(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
 const char* tone_name(ui::Tone tone) {
   switch (tone) {
@@ -51,81 +38,62 @@ std::vector<chart::Chart> charts(const Session& session) {
 }
 
 std::string describe(const InteractiveApp& app) {
+  using nlohmann::json;
   const Session& session = app.session();
   const ui::UiState& ui = app.ui();
-  std::string json = "{\"scene\":" + quoted(app.scene_name());
-  json += ",\"description\":" + quoted(tr(session.scene().description));
-  json += ",\"scenes\":[";
-  for (std::size_t i = 0; i < ui.scenes.size(); ++i) json += (i ? "," : "") + quoted(ui.scenes[i]);
-  json += "],\"method\":" + quoted(method_info(session.method()).name) + ",\"methods\":[";
-  bool first = true;
-  for (const MethodInfo& m : methods()) {
-    json += std::string(first ? "" : ",") + "{\"name\":" + quoted(m.name) + ",\"label\":" + quoted(tr(m.label)) + "}";
-    first = false;
-  }
-  json += "],\"paused\":" + std::string(session.paused() ? "true" : "false");
-  json += ",\"t\":" + number(session.primary().sim.state().t);
-  json += ",\"controls\":[";
-  first = true;
-  for (const ui::PhysicsControl& c : ui::physics_controls(session, ui)) {
-    json += std::string(first ? "" : ",") + "{\"id\":\"" + c.id + "\",\"label\":" + quoted(c.label) +
-            ",\"value\":" + number(c.value) + ",\"lo\":" + number(c.lo) + ",\"hi\":" + number(c.hi) +
-            ",\"log\":" + (c.log ? "true" : "false") + "}";
-    first = false;
-  }
-  json += "],\"lanes\":[";
-  first = true;
+  json d = {{"scene", app.scene_name()},
+            {"description", tr(session.scene().description)},
+            {"scenes", ui.scenes},
+            {"method", method_info(session.method()).name},
+            {"paused", session.paused()},
+            {"t", session.primary().sim.state().t},
+            {"message", ui.message}};
+  d["methods"] = json::array();
+  d["lanes"] = json::array();
+  for (const MethodInfo& m : methods()) d["methods"].push_back({{"name", m.name}, {"label", tr(m.label)}});
+  d["controls"] = json::array();
+  for (const ui::PhysicsControl& c : ui::physics_controls(session, ui))
+    d["controls"].push_back({{"id", c.id}, {"label", c.label}, {"value", c.value}, {"lo", c.lo}, {"hi", c.hi}, {"log", c.log}});
   for (const Lane& lane : session.lanes()) {
     const StabilityAnalysis* analysis = lane.analysis ? lane.analysis.get() : nullptr;
     const ui::GaugeVerdict verdict = ui::gauge_verdict(lane, analysis, false);
-    const Energy e = energy(lane.sim.model(), lane.sim.state());
+    const double e = energy(lane.sim.model(), lane.sim.state()).total();
     // Where it started and the scene's scale of energy: what the sound measures its change by.
     const State& start = session.scene().state;
     const bool same_start = start.x.rows() == lane.sim.state().x.rows();
-    const double e0 = same_start ? energy(lane.sim.model(), start).total() : e.total();
-    const double scale = same_start ? energy_scale(lane.sim.model(), start) : 1.0;
-    json += std::string(first ? "" : ",") + "{\"label\":" + quoted(lane_label(lane)) + ",\"t\":" + number(lane.sim.state().t) +
-            ",\"verdict\":" + quoted(verdict.text) + ",\"tone\":\"" + tone_name(verdict.tone) + "\"" +
-            ",\"diverged\":" + (lane.sim.diverged() ? "true" : "false") +
-            ",\"why\":" + quoted(lane.sim.divergence() ? lane.sim.divergence()->reason : "") +
-            ",\"energy\":" + number(e.total()) + ",\"energy0\":" + number(e0) + ",\"scale\":" + number(scale) + "}";
-    first = false;
+    d["lanes"].push_back({{"label", lane_label(lane)},
+                          {"t", lane.sim.state().t},
+                          {"verdict", verdict.text},
+                          {"tone", tone_name(verdict.tone)},
+                          {"diverged", lane.sim.diverged()},
+                          {"why", lane.sim.divergence() ? lane.sim.divergence()->reason : ""},
+                          {"energy", finite(e)},
+                          {"energy0", finite(same_start ? energy(lane.sim.model(), start).total() : e)},
+                          {"scale", same_start ? energy_scale(lane.sim.model(), start) : 1.0}});
   }
-  json += "],\"particles\":" + std::to_string(session.primary().sim.state().particle_count());
-  json += ",\"held\":" + std::to_string(session.grabbed());
+  d["particles"] = session.primary().sim.state().particle_count();
+  d["held"] = session.grabbed();
   if (session.grabbed() >= 0) {  // where it is (the first lane's), m
     const auto x = session.primary().sim.state().x.row(session.grabbed());
-    json += ",\"held_at\":[" + number(x(0)) + "," + number(x(1)) + "," + number(x(2)) + "]";
+    d["held_at"] = {finite(x(0)), finite(x(1)), finite(x(2))};
   }
-  json += ",\"lesson\":";
+  d["lesson"] = nullptr;
   if (app.lesson()) {
-    const Lesson& l = *app.lesson();
-    const ui::LessonBand b = ui::band_of(l, app.step(), 0, 0);  // (its words in the app's language)
-    json += "{\"title\":" + quoted(b.title) + ",\"step\":" + std::to_string(app.step() + 1) +
-            ",\"steps\":" + std::to_string(l.steps.size()) + ",\"step_title\":" + quoted(b.step_title) +
-            ",\"caption\":" + quoted(b.caption) + ",\"prompt\":" + quoted(b.prompt) + "}";
-  } else {
-    json += "null";
+    const ui::LessonBand b = ui::band_of(*app.lesson(), app.step(), 0, 0);  // (its words in the app's language)
+    d["lesson"] = {{"title", b.title}, {"step", app.step() + 1}, {"steps", app.lesson()->steps.size()},
+                   {"step_title", b.step_title}, {"caption", b.caption}, {"prompt", b.prompt}};
   }
-  json += ",\"charts\":[";
-  first = true;
-  for (const chart::Chart& c : charts(session)) {
-    json += std::string(first ? "" : ",") + "{\"title\":" + quoted(c.title) + ",\"summary\":" + quoted(chart::describe_chart(c)) + "}";
-    first = false;
-  }
-  json += "]";
-  json += ",\"message\":" + quoted(ui.message);
+  d["charts"] = json::array();
+  for (const chart::Chart& c : charts(session)) d["charts"].push_back({{"title", c.title}, {"summary", chart::describe_chart(c)}});
   // The words of the document's own controls and headings, in the app's language.
-  json += ",\"labels\":{\"pause\":" + quoted(tr("Pause (space)")) + ",\"resume\":" + quoted(tr("Resume (space)")) +
-          ",\"step\":" + quoted(tr("Step (S)")) + ",\"reset\":" + quoted(tr("Reset (R)")) +
-          ",\"scene\":" + quoted(tr("scene")) + ",\"method\":" + quoted(tr("method")) +
-          ",\"back\":" + quoted(tr("\u2190 Back")) + ",\"next\":" + quoted(tr("Next \u2192")) +
-          ",\"energy\":" + quoted(tr("Energy")) + ",\"sound\":" + quoted(tr("Hear the energy of")) +
-          ",\"csv\":" + quoted(tr("Download its data (CSV)")) + ",\"particle\":" + quoted(tr("particle")) +
-          ",\"hold\":" + quoted(tr("Hold it")) + ",\"release\":" + quoted(tr("Let go")) +
-          ",\"left\":" + quoted(tr("left")) + ",\"right\":" + quoted(tr("right")) + ",\"up\":" + quoted(tr("up")) +
-          ",\"down\":" + quoted(tr("down")) + "}";
-  return json + "}";
+  d["labels"] = {{"pause", tr("Pause (space)")}, {"resume", tr("Resume (space)")}, {"step", tr("Step (S)")},
+                 {"reset", tr("Reset (R)")}, {"scene", tr("scene")}, {"method", tr("method")},
+                 {"back", tr("\u2190 Back")}, {"next", tr("Next \u2192")}, {"energy", tr("Energy")},
+                 {"sound", tr("Hear the energy of")}, {"csv", tr("Download its data (CSV)")}, {"particle", tr("particle")},
+                 {"hold", tr("Hold it")}, {"release", tr("Let go")}, {"left", tr("left")}, {"right", tr("right")},
+                 {"up", tr("up")}, {"down", tr("down")}};
+  // (text that is not UTF-8, a file's, is replaced rather than thrown on)
+  return d.dump(-1, ' ', false, json::error_handler_t::replace);
 }
 
 namespace {
