@@ -208,4 +208,43 @@ Corner legend_corner(const Chart& chart, double width, double height, std::optio
   return corners[best];
 }
 
+std::vector<Pixel> marks_along(const std::vector<std::vector<Pixel>>& lines, double spacing, double phase) {
+  std::vector<Pixel> out;
+  double next = phase;  // the length along the lines at which the next mark goes
+  double walked = 0.0;
+  for (const std::vector<Pixel>& line : lines)
+    for (std::size_t k = 0; k + 1 < line.size(); ++k) {
+      const double dx = line[k + 1][0] - line[k][0], dy = line[k + 1][1] - line[k][1];
+      const double length = std::hypot(dx, dy);
+      while (length > 0.0 && next <= walked + length) {
+        const double f = (next - walked) / length;
+        out.push_back({line[k][0] + f * dx, line[k][1] + f * dy});
+        next += spacing;
+      }
+      walked += length;
+    }
+  return out;
+}
+
+std::vector<double> spread_labels(const std::vector<double>& wanted, double gap, double lo, double hi) {
+  const std::size_t n = wanted.size();
+  std::vector<std::size_t> order(n);
+  for (std::size_t k = 0; k < n; ++k) order[k] = k;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return wanted[a] < wanted[b]; });
+  // Down from the top, each at least `gap` below the one above; then, where the last ran past
+  // `hi`, back up from the bottom; a plot too short for them all keeps the top's.
+  std::vector<double> y(n);
+  double floor = lo;
+  for (std::size_t k = 0; k < n; ++k) {
+    y[order[k]] = std::max(wanted[order[k]], floor);
+    floor = y[order[k]] + gap;
+  }
+  double ceiling = hi;
+  for (std::size_t k = n; k-- > 0;) {
+    y[order[k]] = std::max(lo, std::min(y[order[k]], ceiling));
+    ceiling = y[order[k]] - gap;
+  }
+  return y;
+}
+
 }  // namespace springlab::chart

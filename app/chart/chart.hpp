@@ -3,6 +3,7 @@
 // so the app, the PNG charts and the SVG charts show the same thing.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <functional>
 #include <optional>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "draw/frame.hpp"
+#include "draw/marks.hpp"
 
 namespace springlab::chart {
 
@@ -18,7 +20,10 @@ struct Series {
   draw::Rgba color;
   std::vector<double> x, y;
   bool dashed = false;
-  bool markers = false;            // a dot on each point
+  bool markers = false;            // its mark (a dot if none) on each point
+  // Its shape (draw/marks.hpp): on each point with `markers`, else along its line every
+  // kMarkSpacing pixels, and on its legend's swatch: lines told apart by more than colour.
+  draw::Mark mark = draw::Mark::None;
   std::vector<bool> crossed;       // per point: drawn as a cross (a diverged run)
   float width = 2.0f;              // pixels
   // A series that left the sane range (a diverged lane): it does not set the axes' range (unless
@@ -28,6 +33,9 @@ struct Series {
 };
 
 inline constexpr double kEscapeReach = 100.0;
+// Marks along a line: one every this many pixels of its length, the first a little further for
+// each series after the first (so that lines on top of each other show each one's marks).
+inline constexpr double kMarkSpacing = 90.0;
 
 struct Axis {
   std::string label;  // with units: "step h (s)"
@@ -40,6 +48,10 @@ struct Chart {
   Axis x, y;
   std::vector<Series> series;
   bool legend = true;
+  // Each labelled line's label written at its last point (inside the plot, kept from running into
+  // another) in place of the legend, so that a line is named where the eye ends up, by its
+  // colour's text and not by a swatch to match: the live charts' lines.
+  bool end_labels = false;
   // A smaller chart drawn over a corner of the plot (the region chart's zoom on the dots near 0),
   // in the corner that hides the least data apart from the legend's.
   std::shared_ptr<const Chart> inset;
@@ -73,6 +85,16 @@ void axis_range(const Chart& chart, bool x_axis, double& lo, double& hi);
 // in this order, so that a legend stays top right unless it would hide something there.
 enum class Corner { TopRight, TopLeft, BottomRight, BottomLeft };
 Corner legend_corner(const Chart& chart, double width, double height, std::optional<Corner> taken = std::nullopt);
+
+// Where a line's marks go (kMarkSpacing): along the polylines a series is drawn as (pixels), one
+// every `spacing` of their length from `phase` on, the length carried from one polyline to the
+// next (a line broken where it left the plot keeps its rhythm).
+using Pixel = std::array<double, 2>;
+std::vector<Pixel> marks_along(const std::vector<std::vector<Pixel>>& lines, double spacing, double phase);
+
+// The end labels' heights: each wanted height (its line's end), moved apart as little as it
+// takes for no two to come closer than `gap`, kept within [lo, hi]; in the order given.
+std::vector<double> spread_labels(const std::vector<double>& wanted, double gap, double lo, double hi);
 
 // "0.5", "1e-06", "120": short tick labels; with the ticks' spacing, as many digits as the labels
 // need to differ ("1.9990", "1.9995").

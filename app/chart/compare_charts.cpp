@@ -53,6 +53,7 @@ Chart work_precision(const SweepResult& r, const std::string& scene, Cost cost) 
     Series s;
     s.label = std::string(method_info(m.method).name) + (adaptive ? tr(" (over tolerances)") : "");
     s.color = draw::method_color(m.method);
+    s.mark = draw::method_mark(m.method);
     s.markers = true;
     for (const SweepRun& run : r.runs) {
       // Adaptive methods at their tolerances: the accuracy they choose, at the price they pay.
@@ -79,6 +80,7 @@ Chart convergence(const SweepResult& r, const std::string& scene) {
     Series s;
     s.label = std::string(method_info(m.method).name) + order_text(m.order);
     s.color = draw::method_color(m.method);
+    s.mark = draw::method_mark(m.method);
     s.markers = true;
     for (const SweepRun& run : r.runs) {
       if (run.method != m.method || !std::isnan(run.tolerance)) continue;
@@ -130,6 +132,7 @@ Chart stability(const SweepResult& r, const std::string& scene) {
   for (const MethodSummary& m : r.methods) {
     Series s;
     s.color = draw::method_color(m.method);
+    s.mark = draw::method_mark(m.method);
     s.markers = true;
     s.width = 3.0f;
     const bool plotted = std::isfinite(m.theoretical_stable_h) && m.theoretical_stable_h > 0 &&
@@ -175,6 +178,7 @@ Chart energy_drift(const SweepResult& r, const std::string& scene) {
     Series s;
     s.label = method_info(d.method).name;
     s.color = draw::method_color(d.method);
+    s.mark = draw::method_mark(d.method);
     for (std::size_t k = 1; k < d.t.size(); ++k) {
       s.x.push_back(d.t[k]);
       s.y.push_back(std::max(std::abs(d.drift[k]), 1e-16));
@@ -202,6 +206,7 @@ Chart solver_convergence(const SweepResult& r, const std::string& scene) {
     s.label = method_info(curve.method).name;
     if (curve.method == Method::ImplicitEuler) s.label += tr(" (CG; linearised once: levels off)");
     s.color = draw::method_color(curve.method);
+    s.mark = draw::method_mark(curve.method);
     s.markers = true;
     for (std::size_t k = 0; k < curve.iterations.size(); ++k) {
       s.x.push_back(curve.iterations[k]);

@@ -31,6 +31,21 @@ struct Mapping {
 
 // The text (a title, an axis label), or as many of its words as fit `width` followed by an
 // ellipsis.
+// A mark (draw/marks.hpp) of radius r at c: filled, hollow (a 2 px outline) or two strokes.
+void draw_mark(ImDrawList* list, draw::Mark mark, ImVec2 c, float r, ImU32 colour) {
+  if (mark == draw::Mark::None) return;
+  std::vector<ImVec2> p;
+  for (const auto& [x, y] : draw::mark_outline(mark)) p.emplace_back(c.x + r * x, c.y + r * y);
+  if (draw::strokes(mark)) {
+    list->AddLine(p[0], p[1], colour, 2.0f);
+    list->AddLine(p[2], p[3], colour, 2.0f);
+  } else if (draw::hollow(mark)) {
+    list->AddPolyline(p.data(), static_cast<int>(p.size()), colour, ImDrawFlags_Closed, 2.0f);
+  } else {
+    list->AddConvexPolyFilled(p.data(), static_cast<int>(p.size()), colour);
+  }
+}
+
 std::string fitted(const std::string& text, float width) {
   const auto fits = [&](const std::string& t) { return ImGui::CalcTextSize(t.c_str()).x <= width; };
   if (fits(text)) return text;
@@ -91,7 +106,7 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
       legend_h += size.y;
     }
   };
-  if (chart.legend) {
+  if (chart.legend && !chart.end_labels) {  // (end labels name the lines in its place)
     stack(std::max(60.0f, right - left - 40.0f));
     if (legend_h + 8.0f > bottom - top) {
       const std::vector<std::string> boxed = labels;
@@ -168,10 +183,22 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
   list->AddRect(ImVec2(left, top), ImVec2(right, bottom), faint);
 
   list->PushClipRect(ImVec2(left, top), ImVec2(right, bottom), true);
-  for (const Series& s : chart.series) {
+  struct EndLabel {
+    ImVec2 at;
+    ImU32 colour;
+    const std::string* text;
+  };
+  std::vector<EndLabel> ends;
+  for (std::size_t index = 0; index < chart.series.size(); ++index) {
+    const Series& s = chart.series[index];
     const ImU32 c = color(s.color);
     std::vector<ImVec2> points;
+    std::vector<std::vector<Pixel>> drawn;  // (for the marks along it)
     const auto flush = [&] {
+      if (!s.markers && s.mark != draw::Mark::None && points.size() >= 2) {
+        drawn.emplace_back();
+        for (const ImVec2& q : points) drawn.back().push_back({q.x, q.y});
+      }
       if (points.size() >= 2) {
         if (s.dashed) {
           for (std::size_t k = 0; k + 1 < points.size(); k += 2) list->AddLine(points[k], points[k + 1], c, s.width);
@@ -210,9 +237,31 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
         continue;
       }
       points.push_back(p);
-      if (s.markers) list->AddCircleFilled(p, 2.0f + s.width, c);
+      if (s.markers) {
+        if (s.mark == draw::Mark::None) list->AddCircleFilled(p, 2.0f + s.width, c);
+        else draw_mark(list, s.mark, p, 3.0f + s.width, c);
+      }
     }
+    const ImVec2 last = points.empty() ? ImVec2(-1, -1) : points.back();
     flush();
+    const float mark_r = 2.5f + s.width;
+    for (const Pixel& m : marks_along(drawn, kMarkSpacing, 0.5 * kMarkSpacing * (1.0 + 0.37 * static_cast<double>(index % 5))))
+      draw_mark(list, s.mark, ImVec2(static_cast<float>(m[0]), static_cast<float>(m[1])), mark_r, c);
+    if (chart.end_labels && !s.label.empty() && last.x >= 0.0f) ends.push_back({last, c, &s.label});
+  }
+  // The end labels: left of each line's last point, moved apart, each on a backdrop.
+  if (!ends.empty()) {
+    std::vector<double> wanted;
+    for (const EndLabel& e : ends) wanted.push_back(e.at.y - 0.5f * line_h);
+    const std::vector<double> y = spread_labels(wanted, line_h, top + 2.0f, bottom - line_h - 2.0f);
+    for (std::size_t k = 0; k < ends.size(); ++k) {
+      const std::string shown = fitted(*ends[k].text, right - left - 12.0f);
+      const ImVec2 s = ImGui::CalcTextSize(shown.c_str());
+      const ImVec2 at(std::max(left + 4.0f, ends[k].at.x - s.x - 10.0f), static_cast<float>(y[k]));
+      list->AddRectFilled(ImVec2(at.x - 3, at.y), ImVec2(at.x + s.x + 3, at.y + s.y),
+                          ImGui::GetColorU32(ImGuiCol_WindowBg, 0.8f), 3.0f);
+      list->AddText(at, ends[k].colour, shown.c_str());
+    }
   }
   list->PopClipRect();
 
@@ -221,6 +270,7 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
     const Series& s = chart.series[k];
     const float mid = y + 0.5f * line_h;
     list->AddLine(ImVec2(x, mid), ImVec2(x + 20, mid), color(s.color), 3.0f);
+    draw_mark(list, s.mark, ImVec2(x + 10, mid), 0.22f * line_h, color(s.color));
     list->AddText(ImVec2(x + 26, y), s.escapes ? color(draw::kDiverged) : text, label.c_str());
   };
   if (place == Legend::Rows) {

@@ -247,6 +247,7 @@ Chart stability_region(const StabilityAnalysis& analysis, const std::vector<Regi
       for (const RegionLane& l : shown) {
         Series inside, outside;
         inside.color = draw::method_color(l.method);
+        inside.mark = draw::method_mark(l.method);
         inside.markers = true;
         inside.width = 1.5f;
         outside = inside;
@@ -313,6 +314,7 @@ Chart stability_region(const StabilityAnalysis& analysis, const std::vector<Regi
   for (const RegionLane& l : shown) {
     Series inside, outside;
     inside.color = draw::method_color(l.method);
+    inside.mark = draw::method_mark(l.method);
     inside.markers = true;
     inside.width = 1.5f;
     outside = inside;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 #include <sstream>
+#include <vector>
 
 #include "draw/palette.hpp"
 #include "springlab/text.hpp"
@@ -32,6 +33,86 @@ struct Map {
     return a + t * (b - a);
   }
 };
+
+// A mark (draw/marks.hpp) of radius r at (x, y).
+void write_mark(std::ostringstream& s, draw::Mark mark, double x, double y, double r, const std::string& colour) {
+  if (mark == draw::Mark::None) return;
+  const auto p = draw::mark_outline(mark);
+  if (draw::strokes(mark)) {
+    s << "<path d=\"M" << x + r * p[0][0] << " " << y + r * p[0][1] << "L" << x + r * p[1][0] << " " << y + r * p[1][1]
+      << "M" << x + r * p[2][0] << " " << y + r * p[2][1] << "L" << x + r * p[3][0] << " " << y + r * p[3][1]
+      << "\" stroke=\"" << colour << "\" stroke-width=\"2\"/>\n";
+    return;
+  }
+  s << "<polygon points=\"";
+  for (const auto& [px, py] : p) s << x + r * px << "," << y + r * py << " ";
+  s << "\"" << (draw::hollow(mark) ? " fill=\"none\" stroke=\"" + colour + "\" stroke-width=\"2\"" : " fill=\"" + colour + "\"")
+    << "/>\n";
+}
+
+// The series, clipped to the plot: lines, marks on their points or along them, crosses; then
+// the end labels (chart.hpp).
+void write_series(std::ostringstream& s, const Chart& chart, const Map& mx, const Map& my, double kFont, double line,
+                  double top, double bottom, double left) {
+  struct EndLabel {
+    double x, y;
+    std::string colour, text;
+  };
+  std::vector<EndLabel> ends;
+  for (std::size_t index = 0; index < chart.series.size(); ++index) {
+    const Series& series = chart.series[index];
+    const std::string colour = draw::hex(series.color);
+    const std::string opacity =
+        series.color.a < 1.0f ? " stroke-opacity=\"" + std::to_string(series.color.a) + "\"" : std::string();
+    std::ostringstream points;
+    points.precision(6);
+    std::vector<std::vector<Pixel>> drawn{{}};  // (for the marks along it)
+    const auto flush = [&] {
+      if (!series.markers && series.mark != draw::Mark::None && drawn.back().size() >= 2) drawn.emplace_back();
+      else drawn.back().clear();
+      const std::string p = points.str();
+      if (!p.empty() && p.find(' ') != p.rfind(' '))
+        s << "<polyline fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"" << series.width
+          << "\" stroke-linejoin=\"round\"" << (series.dashed ? " stroke-dasharray=\"7 5\"" : "") << opacity
+          << " points=\"" << p << "\"/>\n";
+      points.str("");
+    };
+    for (std::size_t k = 0; k < series.x.size(); ++k) {
+      const double xv = series.x[k], yv = series.y[k];
+      const bool ok = std::isfinite(xv) && std::isfinite(yv) && (!chart.x.log || xv > 0) && (!chart.y.log || yv > 0);
+      if (!ok) {
+        flush();
+        continue;
+      }
+      const double x = mx(xv), y = my(yv);
+      if (k < series.crossed.size() && series.crossed[k]) {
+        flush();
+        const double r = 4.0 + series.width;
+        s << "<path d=\"M" << x - r << " " << y - r << "L" << x + r << " " << y + r << "M" << x - r << " " << y + r
+          << "L" << x + r << " " << y - r << "\" stroke=\"" << colour << "\" stroke-width=\"2\"/>\n";
+        continue;
+      }
+      points << x << "," << y << " ";
+      drawn.back().push_back({x, y});
+      if (series.markers && series.mark == draw::Mark::None)
+        s << "<circle cx=\"" << x << "\" cy=\"" << y << "\" r=\"" << 2.0 + series.width << "\" fill=\"" << colour << "\"/>\n";
+      else if (series.markers)
+        write_mark(s, series.mark, x, y, 3.0 + series.width, colour);
+    }
+    const std::optional<Pixel> last = drawn.back().empty() ? std::nullopt : std::optional<Pixel>(drawn.back().back());
+    flush();
+    for (const Pixel& m : marks_along(drawn, kMarkSpacing, 0.5 * kMarkSpacing * (1.0 + 0.37 * static_cast<double>(index % 5))))
+      write_mark(s, series.mark, m[0], m[1], 2.5 + series.width, colour);
+    if (chart.end_labels && !series.label.empty() && last) ends.push_back({(*last)[0], (*last)[1], colour, series.label});
+  }
+  std::vector<double> wanted;
+  for (const EndLabel& e : ends) wanted.push_back(e.y);
+  const std::vector<double> y = spread_labels(wanted, line, top + line, bottom - 4.0);
+  for (std::size_t k = 0; k < ends.size(); ++k)
+    s << "<text x=\"" << std::max(left + 4.0, ends[k].x - 10.0) << "\" y=\"" << y[k] + kFont * 0.35 << "\" fill=\""
+      << ends[k].colour << "\" text-anchor=\"end\" paint-order=\"stroke\" stroke=\"#16181c\" stroke-width=\"4\">"
+      << escape(ends[k].text) << "</text>\n";
+}
 
 // The chart's drawing, in a picture of width x height: the root document's or a nested <svg>'s
 // (an inset). `id` keeps its clip path's name apart from another chart's in the same document.
@@ -85,44 +166,10 @@ void write_chart(std::ostringstream& s, const Chart& chart, double width, double
     << "\" fill=\"none\" stroke=\"#6b7280\"/>\n";
   s << "<clipPath id=\"" << id << "\"><rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << right - left
     << "\" height=\"" << bottom - top << "\"/></clipPath>\n<g clip-path=\"url(#" << id << ")\">\n";
-  for (const Series& series : chart.series) {
-    const std::string colour = draw::hex(series.color);
-    const std::string opacity =
-        series.color.a < 1.0f ? " stroke-opacity=\"" + std::to_string(series.color.a) + "\"" : std::string();
-    std::ostringstream points;
-    points.precision(6);
-    const auto flush = [&] {
-      const std::string p = points.str();
-      if (!p.empty() && p.find(' ') != p.rfind(' '))
-        s << "<polyline fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"" << series.width
-          << "\" stroke-linejoin=\"round\"" << (series.dashed ? " stroke-dasharray=\"7 5\"" : "") << opacity
-          << " points=\"" << p << "\"/>\n";
-      points.str("");
-    };
-    for (std::size_t k = 0; k < series.x.size(); ++k) {
-      const double xv = series.x[k], yv = series.y[k];
-      const bool ok = std::isfinite(xv) && std::isfinite(yv) && (!chart.x.log || xv > 0) && (!chart.y.log || yv > 0);
-      if (!ok) {
-        flush();
-        continue;
-      }
-      const double x = mx(xv), y = my(yv);
-      if (k < series.crossed.size() && series.crossed[k]) {
-        flush();
-        const double r = 4.0 + series.width;
-        s << "<path d=\"M" << x - r << " " << y - r << "L" << x + r << " " << y + r << "M" << x - r << " " << y + r
-          << "L" << x + r << " " << y - r << "\" stroke=\"" << colour << "\" stroke-width=\"2\"/>\n";
-        continue;
-      }
-      points << x << "," << y << " ";
-      if (series.markers)
-        s << "<circle cx=\"" << x << "\" cy=\"" << y << "\" r=\"" << 2.0 + series.width << "\" fill=\"" << colour << "\"/>\n";
-    }
-    flush();
-  }
+  write_series(s, chart, mx, my, kFont, line, top, bottom, left);
   s << "</g>\n";
   std::optional<Corner> legend_at;
-  if (chart.legend) {
+  if (chart.legend && !chart.end_labels) {  // (end labels name the lines in its place)
     std::size_t chars = 0;
     int rows = 0;
     for (const Series& series : chart.series)
@@ -149,6 +196,7 @@ void write_chart(std::ostringstream& s, const Chart& chart, double width, double
           << "/>\n<text x=\"" << x + 30 << "\" y=\"" << y + kFont * 0.35 << "\" fill=\""
           << (series.escapes ? draw::hex(draw::kDiverged) : std::string(text)) << "\">"
           << escape(series.label) << "</text>\n";
+        write_mark(s, series.mark, x + 11, y, 0.3 * kFont, draw::hex(series.color));
       }
     }
   }

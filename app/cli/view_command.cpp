@@ -52,6 +52,8 @@ void add_options(CLI::App& c, ViewCli& o) {
   c.add_option("--compare", o.compare, "start in compare mode with 2 to 4 methods, e.g. euler,verlet");
   c.add_option("--frames", o.frames, "run N frames, then exit (with --screenshot: write one)");
   c.add_option("--screenshot", o.window.screenshot, "after --frames N frames, write the window to this PNG");
+  c.add_option("--keys", o.window.keys,
+               "press these keys, one every other frame from the third, e.g. F6,Down,Space (the panels by keyboard, scripted)");
   c.add_option("--ui-scale", o.app.ui_scale, "size of the panels and text (times the monitor's scale)");
   c.add_option("--lang", o.app.language, "language of the panels and lessons: en or zh-CN (default: LANG, LC_MESSAGES)");
   c.add_option("--size", o.size, "window size WIDTHxHEIGHT (default 1280x720)");

@@ -231,12 +231,15 @@ void InteractiveApp::mouse(const draw::ViewCamera& camera, const draw::Viewport&
   }
 }
 
-// The keys of the help overlay, as actions.
+// The keys of the help overlay, as actions. While the panels have the keyboard (F6: ui/
+// keyboard_focus.hpp), Space, Esc and the arrows are theirs.
 void InteractiveApp::keyboard() {
   const ImGuiIO& io = ImGui::GetIO();
+  const bool panels = ui::update_keyboard_focus(keys_);
   if (io.WantTextInput) return;
+  if (!panels && ImGui::IsKeyPressed(GLFW_KEY_SPACE, false)) ui::perform(ui::Action::TogglePause, *session_, ui_);
   const std::pair<int, ui::Action> keys[] = {
-      {GLFW_KEY_SPACE, ui::Action::TogglePause}, {GLFW_KEY_S, ui::Action::Step},
+      {GLFW_KEY_S, ui::Action::Step},
       {GLFW_KEY_R, ui::Action::Reset},           {GLFW_KEY_C, ui::Action::ToggleCompare},
       {GLFW_KEY_H, ui::Action::TogglePanels},    {GLFW_KEY_F1, ui::Action::ToggleHelp},
       {GLFW_KEY_A, ui::Action::ToggleAccuracy},  {GLFW_KEY_G, ui::Action::ToggleRegion},
@@ -248,6 +251,7 @@ void InteractiveApp::keyboard() {
   for (int k = 0; k < std::min<int>(9, static_cast<int>(methods().size())); ++k)
     if (ImGui::IsKeyPressed(GLFW_KEY_1 + k, false))
       ui::perform(static_cast<ui::Action>(static_cast<int>(ui::Action::Method1) + k), *session_, ui_);
+  if (panels) return;
   if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) quit_ = true;
   if (lesson_) {
     for (int key : {GLFW_KEY_RIGHT, GLFW_KEY_PAGE_DOWN, GLFW_KEY_N})
@@ -353,6 +357,7 @@ void InteractiveApp::frame(const FrameSize& size) {
     session.stop_script();
   }
 
+  ui::end_keyboard_focus_frame(keys_);
   simulate();
 
   // Draw it, the panels over it, into the default framebuffer.

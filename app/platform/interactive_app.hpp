@@ -26,6 +26,7 @@
 #include "springlab/script.hpp"
 #include "ui/compare_panel.hpp"
 #include "ui/interaction.hpp"
+#include "ui/keyboard_focus.hpp"
 #include "ui/lesson_band.hpp"
 #include "ui/panels.hpp"
 
@@ -128,6 +129,7 @@ class InteractiveApp {
   int samples_;
   bool background_;
   std::optional<ui::Drag> drag_;
+  ui::KeyboardFocus keys_;  // whose the keys are: the scene's or the panels'
   ui::FrameStats stats_;
   std::deque<std::pair<Clock::time_point, double>> pace_;  // (wall, simulated target) a frame
   std::optional<std::string> pending_, opened_, language_;

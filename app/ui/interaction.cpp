@@ -56,6 +56,21 @@ void move(app::Session& session, const draw::ViewCamera& camera, const draw::Vie
 
 void release(app::Session& session) { session.release(); }
 
+bool hold(app::Session& session, int particle) {
+  if (particle < 0 || particle >= session.primary().sim.state().particle_count()) return false;
+  session.grab(particle);
+  session.drag_to(session.primary().sim.state().x.row(particle).transpose());
+  return true;
+}
+
+void nudge(app::Session& session, double dx, double dy) {
+  if (session.grabbed() < 0 || !session.drag_target()) return;
+  const Points& x = session.scene().state.x;
+  const double extent = x.rows() == 0 ? 0.0 : (x.colwise().maxCoeff() - x.colwise().minCoeff()).norm();
+  const double step = extent > 0.0 ? extent / 20.0 : 0.05;
+  session.drag_to(*session.drag_target() + step * Vec3(dx, dy, 0.0));
+}
+
 void orbit(Camera& camera, double dx, double dy) {
   if (camera.view == View::Planar) return;
   camera.yaw = std::fmod(camera.yaw - 0.3 * dx, 360.0);

@@ -31,6 +31,13 @@ void move(app::Session& session, const draw::ViewCamera& camera, const draw::Vie
 // Lets go: the particle keeps the velocity it was being dragged with.
 void release(app::Session& session);
 
+// A particle held and moved by keys, as a drag holds and moves it (the panels' "A particle by
+// keys", the browser's document): held where it is (false: no such particle), then moved a
+// twentieth of the scene's extent at its start a press, along the world's x and y (the plane
+// the 2D scenes are drawn in).
+bool hold(app::Session& session, int particle);
+void nudge(app::Session& session, double dx, double dy);
+
 // The camera, by pixels of mouse motion and wheel notches.
 void orbit(Camera& camera, double dx, double dy);  // 3D only
 void pan(Camera& camera, const draw::ViewCamera& view, double dx, double dy);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "draw/marks.hpp"
 #include "draw/palette.hpp"
 #include "springlab/text.hpp"
 
@@ -49,6 +50,7 @@ chart::Chart energy_chart(const app::Session& session) {
   energy.title = tr("Energy");
   energy.x.label = "t (s)";
   energy.y.label = "J";
+  energy.end_labels = true;
   for (const app::Lane& lane : session.lanes()) {
     const app::History& h = lane.history;
     const draw::Rgba c = draw::lane_color(lane);
@@ -59,6 +61,7 @@ chart::Chart energy_chart(const app::Session& session) {
       energy.series.push_back(series(tr("total"), white, h.t, h.total));
     } else {
       energy.series.push_back(series(name, c, h.t, h.total));
+      energy.series.back().mark = draw::lane_mark(lane);
     }
     // Total plus what damping, drag and friction took: flat unless the method itself drifts. Not
     // for a step of one's own, whose damping is its own, not the scene's that this counts.
@@ -80,8 +83,10 @@ chart::Chart position_chart(const app::Session& session) {
   position.title = format_text(tr("Particle %d, %c(t)"), session.watched(), kAxes[a]);
   position.x.label = "t (s)";
   position.y.label = std::string(1, kAxes[a]) + " (m)";
+  position.end_labels = true;
   for (const app::Lane& lane : session.lanes()) {
     position.series.push_back(series(app::lane_name(lane), draw::lane_color(lane), lane.history.t, lane.history.x));
+    position.series.back().mark = draw::lane_mark(lane);
     mark_diverged(position.series.back(), lane, "m");
   }
   if (session.primary().history.exact_x.size() > 0)
@@ -99,6 +104,7 @@ chart::Chart phase_chart(const app::Session& session) {
   for (const app::Lane& lane : session.lanes()) {
     if (lane.sim.diverged()) continue;  // its phase plot would set the scale to its blow-up
     phase.series.push_back(series("", draw::lane_color(lane), lane.history.x, lane.history.v));
+    phase.series.back().mark = draw::lane_mark(lane);
   }
   return phase;
 }
@@ -116,6 +122,7 @@ chart::Chart steps_chart(const app::Session& session) {
     const app::History& h = lane.history;
     chart::Series step = series(format_text(tr("%s step"), method_info(lane.sim.settings().method).name),
                                 draw::method_color(lane.sim.settings().method), h.t, h.step);
+    step.mark = draw::method_mark(lane.sim.settings().method);
     chart::Series rejected;
     rejected.label = tr("rejected");
     rejected.color = draw::kDiverged;

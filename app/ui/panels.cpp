@@ -23,11 +23,13 @@
 #include <cmath>
 #include <limits>
 #include <string_view>
+#include <tuple>
 
 #include "chart/imgui_chart.hpp"
 #include "chart/stability_region.hpp"
 #include "draw/palette.hpp"
 #include "ui/gauge_verdict.hpp"
+#include "ui/interaction.hpp"
 #include "ui/layout.hpp"
 #include "ui/overlay.hpp"
 #include "chart/text_wrap.hpp"
@@ -554,6 +556,30 @@ void simulation_controls(app::Session& session, UiState& ui, const FrameStats& s
   }
 }
 
+// A particle held and moved without a pointer (ui/interaction.hpp: hold, nudge), for the
+// keyboard's navigation of the panels: its number, Hold it or Let go, and four arrows that
+// repeat while held.
+void particle_by_keys(app::Session& session, UiState& ui) {
+  const int n = session.primary().sim.state().particle_count();
+  if (n == 0) return;
+  ImGui::InputInt(tr("particle"), &ui.key_particle);
+  ui.key_particle = std::clamp(ui.key_particle, 0, n - 1);
+  if (session.grabbed() < 0) {
+    if (ImGui::Button(tr("Hold it"))) hold(session, ui.key_particle);
+    return;
+  }
+  if (ImGui::Button(tr("Let go"))) return release(session);
+  ImGui::PushButtonRepeat(true);
+  const std::tuple<const char*, ImGuiDir, double, double> arrows[] = {
+      {"##left", ImGuiDir_Left, -1, 0}, {"##right", ImGuiDir_Right, 1, 0},
+      {"##up", ImGuiDir_Up, 0, 1}, {"##down", ImGuiDir_Down, 0, -1}};
+  for (const auto& [id, dir, dx, dy] : arrows) {
+    ImGui::SameLine();
+    if (ImGui::ArrowButton(id, dir)) nudge(session, dx, dy);
+  }
+  ImGui::PopButtonRepeat();
+}
+
 // Below the controls: what a frame costs, the accuracy, region and tableau panels' buttons, the
 // compare choices and the view and files.
 void tools(app::Session& session, UiState& ui, const FrameStats& stats, float s, Requests& requests) {
@@ -587,6 +613,7 @@ void tools(app::Session& session, UiState& ui, const FrameStats& stats, float s,
       ImGui::EndTable();
     }
   }
+  if (ImGui::CollapsingHeader(tr("A particle by keys"))) particle_by_keys(session, ui);
   if (ImGui::CollapsingHeader(tr("View and files"))) {
     ImGui::InputTextWithHint("##open", tr("a scene file (or drop one)"), ui.open_path, sizeof ui.open_path);
     ImGui::SameLine();
@@ -723,6 +750,9 @@ void keys_window(UiState& ui, int width, int height) {
                            {N_("\u2192  PgDn  N"), N_("lesson: the next step")},
                            {N_("\u2190  PgUp  B"), N_("lesson: the step before")},
                            {N_("F1"), N_("this help")},
+                           {N_("F6  Ctrl+Tab"), N_("the keys into the panels, panel after panel")},
+                           {N_("\u2190\u2191\u2192\u2193  space  Enter"), N_("in a panel: move, press, type a value")},
+                           {N_("Esc  (in a panel)"), N_("the keys back to the scene")},
                            {N_("left drag"), N_("move a particle (release lets it go with its speed)")},
                            {N_("right drag"), N_("orbit the camera (3D) / pan (2D)")},
                            {N_("middle drag"), N_("pan")}, {N_("wheel"), N_("zoom")}, {N_("Esc"), N_("quit")}};

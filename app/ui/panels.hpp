@@ -60,6 +60,7 @@ struct UiState {
   std::vector<std::string> scenes;  // the picker's list
   std::string scene_name;
   char open_path[512] = "";
+  int key_particle = 0;  // "A particle by keys": the one to hold
   std::string message;  // shown in a banner until dismissed (a file that failed to load)
   MethodChoice compare_choice;
   // A platform's own controls, drawn under the scene picker (the browser's Copy link, file

@@ -10,6 +10,7 @@
 #include "ui/actions.hpp"
 #include "chart/chart_text.hpp"
 #include "ui/gauge_verdict.hpp"
+#include "ui/interaction.hpp"
 #include "ui/lesson_band.hpp"
 #include "ui/live_charts.hpp"
 #include "ui/physics_controls.hpp"
@@ -96,28 +97,13 @@ std::string describe(const InteractiveApp& app) {
   return d.dump(-1, ' ', false, json::error_handler_t::replace);
 }
 
-namespace {
-
-// How far a press moves a held particle: a twentieth of the scene's extent at its start.
-double nudge(const Session& session) {
-  const Points& x = session.scene().state.x;
-  if (x.rows() == 0) return 0.05;
-  const double extent = (x.colwise().maxCoeff() - x.colwise().minCoeff()).norm();
-  return extent > 0.0 ? extent / 20.0 : 0.05;
-}
-
-}  // namespace
-
 bool control(InteractiveApp& app, const std::string& name, double value) {
   // A particle held and moved by keyboard, as a drag holds and moves it: "hold" (its index),
   // "left", "right", "up", "down" (a twentieth of the scene a press, in the view's plane), "release".
   if (name == "hold") {
     const int i = static_cast<int>(value);
     if (!(value >= 0) || i >= app.session().primary().sim.state().particle_count()) return false;
-    app.control([i](Session& s, ui::UiState&) {
-      s.grab(i);
-      s.drag_to(s.primary().sim.state().x.row(i).transpose());
-    });
+    app.control([i](Session& s, ui::UiState&) { ui::hold(s, i); });
     return true;
   }
   if (name == "release") {
@@ -127,11 +113,7 @@ bool control(InteractiveApp& app, const std::string& name, double value) {
   for (const auto& [key, x, y] : {std::tuple{"left", -1, 0}, std::tuple{"right", 1, 0}, std::tuple{"up", 0, 1},
                                   std::tuple{"down", 0, -1}})
     if (name == key) {
-      const Vec3 step(x, y, 0.0);
-      app.control([step](Session& s, ui::UiState&) {
-        if (s.grabbed() < 0 || !s.drag_target()) return;
-        s.drag_to(*s.drag_target() + nudge(s) * step);
-      });
+      app.control([x = x, y = y](Session& s, ui::UiState&) { ui::nudge(s, x, y); });
       return true;
     }
 

@@ -24,6 +24,7 @@
 #include "platform/interactive_app.hpp"
 #include "springlab/error.hpp"
 #include "ui/theme.hpp"
+#include "window/key_presses.hpp"
 
 namespace springlab::app {
 
@@ -58,6 +59,7 @@ int run_window(const AppSettings& settings, const WindowOptions& o) {
   // is bad input, display or not.
   std::unique_ptr<HomeworkWatch> homework;
   if (o.homework) homework = std::make_unique<HomeworkWatch>(*o.homework);
+  const std::vector<KeyPress> keys = o.keys ? parse_key_presses(*o.keys, "--keys") : std::vector<KeyPress>{};
 
   glfwSetErrorCallback([](int, const char* message) { g_glfw_error = message; });
   if (!glfwInit())
@@ -145,6 +147,7 @@ int run_window(const AppSettings& settings, const WindowOptions& o) {
       if (app.apply_language()) ImGui_ImplOpenGL3_DestroyDeviceObjects();  // its font texture, remade
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
+      press_keys(keys, frames, 2);  // (from the second frame: the first analyses the scene)
       if (homework) homework->poll(app.session());
       app.frame(size);
       if (app.quit_requested()) glfwSetWindowShouldClose(window, GLFW_TRUE);

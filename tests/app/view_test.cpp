@@ -106,7 +106,8 @@ TEST(View, BadOptionsExitTwo) {
            {"view spring --compare euler --frames 1", "--compare: give 2 to 4 methods"},
            {"view nope --frames 1", "scene 'nope'"},
            {"view spring --ui-scale 9 --frames 1", "--ui-scale"},
-           {"view spring --lang fr --frames 1", "--lang: 'fr' is not a language springlab speaks (en, zh-CN)"}}) {
+           {"view spring --lang fr --frames 1", "--lang: 'fr' is not a language springlab speaks (en, zh-CN)"},
+           {"view spring --keys F6,Bogus --frames 1", "--keys: unknown key 'Bogus'"}}) {
     const Result r = springlab(args);
     EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
     EXPECT_NE(r.err.find(expected), std::string::npos) << args << "\n" << r.err;
@@ -161,6 +162,42 @@ TEST(View, TeachesALessonWithItsCaptionAboveTheScene) {
   EXPECT_GT(content(im, 0, 30, 1280, 100).bright, 2000u);   // the caption, large
   EXPECT_GT(content(im, 380, 160, 1280, 450).colours, 10u);  // the scene, under the band
   EXPECT_GT(content(im, 0, 170, 360, 720).bright, 500u);    // the controls
+}
+
+// The panels by keyboard alone (ui/keyboard_focus.hpp), keys pressed as a person presses them
+// (--keys: one every other frame from the third). 40 frames are 0.667 s; a pause at the k-th key
+// stops the clock at frame 2k (t = k / 30 s). The key paths follow the rope's panel (scene,
+// lesson, method, then Pause; the last header "View and files" after "A particle by keys"): a
+// change there moves them.
+TEST(View, ThePanelsAreRunByKeyboardAlone) {
+  const auto lane = [](const std::string& keys) {
+    const Result r = view("rope --frames 40 --keys " + keys);
+    EXPECT_EQ(r.status, 0) << keys << "\n" << r.err;
+    const std::size_t at = r.out.find("lane       ");
+    return at == std::string::npos ? r.out : r.out.substr(at, r.out.find('\n', at) - at);
+  };
+  // Space: the scene's (pause) until F6 gives the keys to the panels, where it presses the
+  // control in focus (here the scene's list, opened); Esc, F6 past the last panel (the controls,
+  // then the charts), or Shift+F6 back past the first, give them back; Ctrl+Tab takes them too.
+  EXPECT_EQ(lane("Space"), "lane       euler at t = 0.03333 s");
+  EXPECT_EQ(lane("F6,Space"), "lane       euler at t = 0.6667 s");
+  EXPECT_EQ(lane("F6,Escape,Space"), "lane       euler at t = 0.1 s");
+  EXPECT_EQ(lane("F6,F6,F6,Space"), "lane       euler at t = 0.1333 s");
+  EXPECT_EQ(lane("F6,F6,Shift+F6,Shift+F6,Space"), "lane       euler at t = 0.1667 s");
+  EXPECT_EQ(lane("Ctrl+Tab,Space"), "lane       euler at t = 0.6667 s");
+  // The controls, operated: Pause (the arrows move between controls), the method's list (Space
+  // opens it, Down and Space choose the row after explicit Euler's).
+  EXPECT_EQ(lane("F6,Down,Down,Down,Space"), "lane       euler at t = 0.1667 s");
+  EXPECT_EQ(lane("F6,Down,Down,Space,Down,Space"), "lane       symplectic-euler at t = 0.6667 s");
+
+  // A particle held and moved by keys: "A particle by keys" opened (End, Up, Space), particle 15
+  // typed (Enter, 1, 5, Enter), held, moved right three times (a twentieth of the rope's 4 m
+  // extent each: 0.6 m in all), let go.
+  const Result r = view("rope --frames 60 --keys F6,End,Up,Space,Down,Enter,1,5,Enter,Down,Space,Right,Right,Right,"
+                        "Space,Space,Space,Left,Left,Left,Space");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("dragged    particle 15 from (3.826, -0.6358, 0) to (4.426, -0.6358, 0): 0.6 m"),
+            std::string::npos) << r.out;
 }
 
 }  // namespace

@@ -1,0 +1,86 @@
+// Marks: a shape per method, drawn on a chart's points, along its lines and on its legend's
+// swatches, so that lanes are told apart by more than colour (a colour-blind student, a grey
+// print, a washed-out projector). Filled and hollow circles, squares, diamonds and triangles, a
+// plus and a cross: twelve shapes, one for each built-in row, in the table's order; the five
+// compared most (explicit and symplectic Euler, RK4, Verlet, implicit Euler) the five most
+// unlike (a triangle up for the energy that climbs, a circle, a square, a diamond, a triangle down).
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+#include "session/session.hpp"
+#include "springlab/ik.hpp"
+#include "springlab/methods.hpp"
+
+namespace springlab::draw {
+
+enum class Mark {
+  None,
+  Circle, Square, Diamond, TriangleUp, TriangleDown,                       // filled
+  RingCircle, RingSquare, RingDiamond, RingTriangleUp, RingTriangleDown,  // hollow
+  Plus, Cross,                                                            // strokes
+};
+
+inline bool hollow(Mark m) { return m >= Mark::RingCircle && m <= Mark::RingTriangleDown; }
+inline bool strokes(Mark m) { return m == Mark::Plus || m == Mark::Cross; }
+
+// The outline of a shape of radius 1 about (0, 0), y down (a screen's): a circle as 16 sides;
+// a plus or a cross as two segments (four points).
+inline std::vector<std::array<float, 2>> mark_outline(Mark m) {
+  switch (m) {
+    case Mark::Square: case Mark::RingSquare: return {{-0.8f, -0.8f}, {0.8f, -0.8f}, {0.8f, 0.8f}, {-0.8f, 0.8f}};
+    case Mark::Diamond: case Mark::RingDiamond: return {{0.0f, -1.1f}, {1.1f, 0.0f}, {0.0f, 1.1f}, {-1.1f, 0.0f}};
+    case Mark::TriangleUp: case Mark::RingTriangleUp: return {{0.0f, -1.15f}, {1.05f, 0.7f}, {-1.05f, 0.7f}};
+    case Mark::TriangleDown: case Mark::RingTriangleDown: return {{0.0f, 1.15f}, {-1.05f, -0.7f}, {1.05f, -0.7f}};
+    case Mark::Plus: return {{-1.1f, 0.0f}, {1.1f, 0.0f}, {0.0f, -1.1f}, {0.0f, 1.1f}};
+    case Mark::Cross: return {{-0.85f, -0.85f}, {0.85f, 0.85f}, {-0.85f, 0.85f}, {0.85f, -0.85f}};
+    case Mark::None: return {};
+    default: {
+      std::vector<std::array<float, 2>> circle;
+      for (int k = 0; k < 16; ++k) {
+        const float a = 0.39269908f * static_cast<float>(k);
+        circle.push_back({0.9f * std::cos(a), 0.9f * std::sin(a)});
+      }
+      return circle;
+    }
+  }
+}
+
+// A method's mark, by its row in the table (methods()); rows made from tableaux take them
+// again from the first (their colours are their own).
+inline Mark method_mark(Method m) {
+  static constexpr Mark kByRow[] = {
+      Mark::TriangleUp,      // euler
+      Mark::Circle,          // symplectic-euler
+      Mark::Plus,            // midpoint
+      Mark::Cross,           // modified-euler
+      Mark::Square,          // rk4
+      Mark::RingCircle,      // adaptive-euler
+      Mark::RingSquare,      // rk45
+      Mark::TriangleDown,    // implicit-euler
+      Mark::Diamond,         // verlet
+      Mark::RingTriangleUp,  // xpbd
+      Mark::RingDiamond,     // local-global
+      Mark::RingTriangleDown,  // vbd
+  };
+  return kByRow[static_cast<std::size_t>(m) % std::size(kByRow)];
+}
+
+// A lane's: its row's, its IK solver's, or for a lane of one's own (homework) a cross or a plus
+// (the reference lanes beside it are the Euler rows' and Verlet's).
+inline Mark lane_mark(const app::Lane& lane) {
+  if (!lane.own.empty()) return lane.own_index % 2 == 0 ? Mark::Cross : Mark::Plus;
+  if (lane.ik) {
+    switch (lane.ik->solver) {
+      case IkSolver::CCD: return Mark::TriangleUp;
+      case IkSolver::FABRIK: return Mark::Circle;
+      case IkSolver::DLS: return Mark::Square;
+    }
+  }
+  return method_mark(lane.sim.settings().method);
+}
+
+}  // namespace springlab::draw
