@@ -96,6 +96,7 @@ class InteractiveApp {
   // The scene opened by the last frame, if any (the window puts its name in the title).
   std::optional<std::string> take_opened() { return std::exchange(opened_, std::nullopt); }
   const ui::FrameStats& stats() const { return stats_; }
+  const ui::ComparePanel& accuracy() const { return accuracy_; }  // the accuracy-against-cost panel (A)
 
   // Lessons. start_lesson opens a lesson at a step (from 0); lesson_step moves to another of its
   // steps (a new session from the step's start, its script playing); a drag or a change made by

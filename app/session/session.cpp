@@ -83,7 +83,7 @@ Lane Session::make_lane(Method method, std::optional<IkSolver> solver) const {
   SimulationSettings s = settings_;
   s.method = method;
   Lane lane{Simulation(scene_.model, scene_.state, s), {}, ExactOscillator::detect(scene_.model, scene_.state), {}, {}, {}, {},
-            scene_.state, {}, 0};
+            scene_.state, {}, 0, {}, true, 0};
   lane.trails.resize(scene_.trails.size());
   if (scene_.ik) {
     const Vec3 target = scene_.state.x.row(scene_.ik->target).transpose();

@@ -32,6 +32,7 @@
 #include "ui/interaction.hpp"
 #include "ui/layout.hpp"
 #include "ui/overlay.hpp"
+#include "ui/theme.hpp"
 #include "chart/text_wrap.hpp"
 #include "springlab/text.hpp"
 #include "util/language.hpp"
@@ -48,8 +49,7 @@ constexpr ImGuiWindowFlags kDocked = kPanel | ImGuiWindowFlags_NoBackground;
 
 ImVec4 v4(const draw::Rgba& c) { return ImVec4(c.r, c.g, c.b, c.a); }
 
-const ImVec4 kSafe(0.35f, 0.85f, 0.45f, 1), kNear(1.0f, 0.75f, 0.2f, 1), kBeyond(1.0f, 0.36f, 0.32f, 1),
-    kNeutral(0.55f, 0.75f, 1.0f, 1);
+const ImVec4 kSafe = v4(kSafeText), kNear = v4(kNearText), kBeyond = v4(kBeyondText), kNeutral = v4(kNeutralText);
 
 // This frame's panels are laid out for touch (ui/layout.hpp): no hover, thumbs.
 bool g_touch = false;

@@ -88,7 +88,7 @@ void apply_theme(float scale) {
   ImVec4* c = style.Colors;
   // Near-white text on a near-black, slightly opaque background: readable from the back row.
   c[ImGuiCol_Text] = ImVec4(0.96f, 0.97f, 0.98f, 1.0f);
-  c[ImGuiCol_TextDisabled] = ImVec4(0.62f, 0.65f, 0.70f, 1.0f);
+  c[ImGuiCol_TextDisabled] = ImVec4(0.70f, 0.73f, 0.77f, 1.0f);  // 4.5:1 on a field (tests/app/palette_test.cpp)
   c[ImGuiCol_WindowBg] = ImVec4(0.05f, 0.06f, 0.07f, 0.90f);
   c[ImGuiCol_PopupBg] = ImVec4(0.07f, 0.08f, 0.09f, 0.97f);
   c[ImGuiCol_Border] = ImVec4(0.45f, 0.48f, 0.53f, 0.60f);
@@ -97,8 +97,10 @@ void apply_theme(float scale) {
   c[ImGuiCol_FrameBgActive] = ImVec4(0.28f, 0.32f, 0.38f, 1.0f);
   c[ImGuiCol_TitleBg] = ImVec4(0.10f, 0.12f, 0.15f, 1.0f);
   c[ImGuiCol_TitleBgActive] = ImVec4(0.14f, 0.20f, 0.28f, 1.0f);
-  c[ImGuiCol_SliderGrab] = ImVec4(0.40f, 0.72f, 1.00f, 1.0f);
-  c[ImGuiCol_SliderGrabActive] = ImVec4(0.60f, 0.85f, 1.00f, 1.0f);
+  // A slider's value is written across its grab: dark enough for the text on it (4.5:1).
+  c[ImGuiCol_SliderGrab] = ImVec4(0.20f, 0.44f, 0.78f, 1.0f);
+  c[ImGuiCol_SliderGrabActive] = ImVec4(0.18f, 0.43f, 0.80f, 1.0f);
+  c[ImGuiCol_PlotHistogram] = ImVec4(0.13f, 0.45f, 0.25f, 1.0f);  // a progress bar, its count written on it
   c[ImGuiCol_Button] = ImVec4(0.20f, 0.36f, 0.55f, 1.0f);
   c[ImGuiCol_ButtonHovered] = ImVec4(0.28f, 0.46f, 0.68f, 1.0f);
   c[ImGuiCol_ButtonActive] = ImVec4(0.34f, 0.54f, 0.78f, 1.0f);

@@ -9,6 +9,7 @@
 #include "springlab/text.hpp"
 #include "ui/actions.hpp"
 #include "chart/chart_text.hpp"
+#include "chart/compare_charts.hpp"
 #include "ui/gauge_verdict.hpp"
 #include "ui/interaction.hpp"
 #include "ui/lesson_band.hpp"
@@ -33,9 +34,17 @@ const char* tone_name(ui::Tone tone) {
 
 }  // namespace
 
-std::vector<chart::Chart> charts(const Session& session) {
+std::vector<chart::Chart> charts(const InteractiveApp& app) {
+  const Session& session = app.session();
   if (session.scene().ik) return {};  // (its chart is the solvers' distance: not yet said here)
-  return {ui::energy_chart(session), ui::position_chart(session), ui::phase_chart(session)};
+  std::vector<chart::Chart> out = {ui::energy_chart(session), ui::position_chart(session), ui::phase_chart(session)};
+  // The accuracy panel's charts, once its sweep has runs: the work-precision charts' slopes.
+  if (app.accuracy().open) {
+    const SweepResult result = app.accuracy().sweep.snapshot();
+    if (!result.runs.empty())
+      for (chart::NamedChart& c : chart::compare_charts(result, session.scene().name)) out.push_back(std::move(c.chart));
+  }
+  return out;
 }
 
 std::string describe(const InteractiveApp& app) {
@@ -85,7 +94,7 @@ std::string describe(const InteractiveApp& app) {
                    {"step_title", b.step_title}, {"caption", b.caption}, {"prompt", b.prompt}};
   }
   d["charts"] = json::array();
-  for (const chart::Chart& c : charts(session)) d["charts"].push_back({{"title", c.title}, {"summary", chart::describe_chart(c)}});
+  for (const chart::Chart& c : charts(app)) d["charts"].push_back({{"title", c.title}, {"summary", chart::describe_chart(c)}});
   // The words of the document's own controls and headings, in the app's language.
   d["labels"] = {{"pause", tr("Pause (space)")}, {"resume", tr("Resume (space)")}, {"step", tr("Step (S)")},
                  {"reset", tr("Reset (R)")}, {"scene", tr("scene")}, {"method", tr("method")},

@@ -18,9 +18,11 @@ namespace springlab::app::web {
 //  "labels": {the buttons' words}}
 std::string describe(const InteractiveApp& app);
 
-// The live charts the document says in words (describe's "charts": title and summary) and whose
-// data it gives as CSV (chart::chart_csv): energy, the watched particle's position, its phase.
-std::vector<chart::Chart> charts(const Session& session);
+// The charts the document says in words (describe's "charts": title and summary) and whose data
+// it gives as CSV (chart::chart_csv): the live ones (energy, the watched particle's position, its
+// phase), then, while the accuracy panel is open and its sweep has runs, that panel's (error
+// against time and work, convergence, stability: each line's slope, the lowest line).
+std::vector<chart::Chart> charts(const InteractiveApp& app);
 
 // "ks", "kd", "dt", "mass", "gravity", "drag": that slider set to `value`; "pause" (1 paused, 0
 // running), "step", "reset", "next", "back" (a lesson's steps); "hold" (a particle's index),

@@ -263,7 +263,7 @@ EMSCRIPTEN_KEEPALIVE const char* springlab_chart_csv(int index) {
   using namespace springlab::app::web;
   static std::string csv;
   if (!g_page) return "";
-  const auto shown = charts(g_page->app->session());
+  const auto shown = charts(*g_page->app);
   csv = index >= 0 && index < static_cast<int>(shown.size()) ? springlab::chart::chart_csv(shown[index]) : "";
   return csv.c_str();
 }

@@ -5,9 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <regex>
 #include <sstream>
 
 #include "chart/chart_text.hpp"
+#include "chart/compare_charts.hpp"
+#include "springlab/sweep.hpp"
 #include "session/session.hpp"
 #include "support.hpp"
 #include "ui/live_charts.hpp"
@@ -62,6 +65,35 @@ TEST(ChartText, TheCsvHoldsEveryPointOfEveryLine) {
   // The last row is the last point of the first line, to 9 digits.
   EXPECT_NEAR(std::stod(last.substr(last.find(',') + 1)), energy.series.front().y.back(),
               1e-8 * std::abs(energy.series.front().y.back()));
+}
+
+// The accuracy panel's work-precision chart in words: on the spring, error against work falls
+// with slopes minus the orders (explicit Euler 1, midpoint 2, RK4 4: work grows as 1 / h), and
+// RK4 is said to be the lowest where every line has points.
+TEST(ChartText, WorkPrecisionIsSaidByItsSlopesAndItsLowestLine) {
+  const Scene scene = shipped("spring");
+  SweepSettings s;
+  s.methods = {Method::Euler, Method::Midpoint, Method::RK4};
+  s.h_min = 1e-3;
+  s.h_max = 1e-2;
+  s.points = 5;
+  s.duration = 1.0;
+  s.stability = false;
+  const SweepResult r = run_sweep(scene.model, scene.state, s);
+  std::string said;
+  for (const chart::NamedChart& c : chart::compare_charts(r, "spring"))
+    if (c.name == "work-precision-work") said = chart::describe_chart(c.chart);
+  ASSERT_FALSE(said.empty());
+  const auto slope = [&](const std::string& name) {
+    std::smatch m;
+    const std::regex re(name + R"( has slope ([-0-9.e+]+) on these log-log axes)");
+    return std::regex_search(said, m, re) ? std::stod(m[1]) : NAN;
+  };
+  EXPECT_NEAR(slope("euler"), -1.0, 0.25) << said;
+  EXPECT_NEAR(slope("midpoint"), -2.0, 0.3) << said;
+  EXPECT_NEAR(slope("rk4"), -4.0, 0.4) << said;
+  EXPECT_TRUE(has(said, "where every line has points")) << said;
+  EXPECT_TRUE(has(said, "), rk4 is lowest (")) << said;
 }
 
 }  // namespace
