@@ -327,13 +327,15 @@ namespace {
 
 // Pause, step, reset: the buttons a class sees pressed most.
 void transport(app::Session& session) {
+  // (On one line where they fit; at a large UI scale, the next button on the next line.)
+  const auto width = [](const char* label) { return ImGui::CalcTextSize(label).x + 2.0f * ImGui::GetStyle().FramePadding.x; };
   if (ImGui::Button(session.paused() ? tr("Resume (space)") : tr("Pause (space)"))) session.set_paused(!session.paused());
-  ImGui::SameLine();
+  same_line_if_fits(width(tr("Step (S)")));
   if (ImGui::Button(tr("Step (S)"))) {
     session.set_paused(true);
     session.step_once();
   }
-  ImGui::SameLine();
+  same_line_if_fits(width(tr("Reset (R)")));
   if (ImGui::Button(tr("Reset (R)"))) session.reset();
 }
 
