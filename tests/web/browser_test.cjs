@@ -195,6 +195,16 @@ check("method and dt from the panels take effect", async ({ browser, base }) => 
   fs.writeFileSync(path.join(out, "panel-method-dt.png"), await page.screenshot());
   expect(Math.abs(after.dt / 5e-5 - 1) < 1e-6, `dt after typing 5e-05 into its slider: ${after.dt} (was ${before.dt})`);
   expect(after.method === "rk4" && before.method !== "rk4", `method: ${before.method} -> ${after.method}`);
+  // The panels by keyboard (ui/keyboard_focus.hpp, as in the window): F6 gives them the keys, and
+  // Space presses the control in focus (the scene's list opens) instead of pausing; Esc closes
+  // the list, Esc again gives the keys back to the scene, where Space pauses.
+  await key(page, "F6");
+  await key(page, "Space");
+  expect(!(await status(page)).paused, "Space paused the scene while the panels had the keys");
+  await key(page, "Escape");
+  await key(page, "Escape");
+  await key(page, "Space");
+  expect((await status(page)).paused, "Space did not pause once Esc gave the keys back to the scene");
   await page.close();
 });
 
