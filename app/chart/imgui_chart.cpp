@@ -29,8 +29,6 @@ struct Mapping {
   }
 };
 
-// The text (a title, an axis label), or as many of its words as fit `width` followed by an
-// ellipsis.
 // A mark (draw/marks.hpp) of radius r at c: filled, hollow (a 2 px outline) or two strokes.
 void draw_mark(ImDrawList* list, draw::Mark mark, ImVec2 c, float r, ImU32 colour) {
   if (mark == draw::Mark::None) return;
@@ -46,6 +44,8 @@ void draw_mark(ImDrawList* list, draw::Mark mark, ImVec2 c, float r, ImU32 colou
   }
 }
 
+// The text (a title, an axis label), or as many of its words as fit `width` followed by an
+// ellipsis.
 std::string fitted(const std::string& text, float width) {
   const auto fits = [&](const std::string& t) { return ImGui::CalcTextSize(t.c_str()).x <= width; };
   if (fits(text)) return text;
@@ -58,39 +58,35 @@ std::string fitted(const std::string& text, float width) {
   return cut;
 }
 
-}  // namespace
 
-void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart) {
-  const ImGuiStyle& style = ImGui::GetStyle();
-  const ImU32 text = ImGui::GetColorU32(ImGuiCol_Text);
-  const ImU32 faint = ImGui::GetColorU32(ImGuiCol_Border);
-  const ImU32 grid = ImGui::GetColorU32(ImGuiCol_Border, 0.45f);
-  const float line_h = ImGui::GetTextLineHeight();
+// Where a chart is drawn: its box, its plot's edges, its text's line height (pixels), its ranges.
+struct Plot {
+  ImVec2 origin, size;
+  float line_h = 0.0f, heading = 0.0f, top = 0.0f, left = 0.0f, right = 0.0f, bottom = 0.0f;
+  double xlo = 0.0, xhi = 1.0, ylo = 0.0, yhi = 1.0;
+};
 
-  double xlo, xhi, ylo, yhi;
-  axis_range(chart, true, xlo, xhi);
-  axis_range(chart, false, ylo, yhi);
-  const auto yt = ticks(ylo, yhi, chart.y.log, 4);
-  float label_w = 0.0f;
-  for (const Tick& t : yt) label_w = std::max(label_w, ImGui::CalcTextSize(t.label.c_str()).x);
+// The legend: its labels (at most the plot's width, a longer one wrapped onto a second line at
+// spaces, never inside a number such as "x1.33") stacked in a box in the plot's corner where it
+// hides the least. Where that box would be taller than the plot (a phone's short chart, with
+// five series: it covered the plot's right half and ran off its foot) it goes outside the
+// plot: stacked beside it on the right, the plot made narrower, where the column fits the
+// chart's height and leaves the plot 40 % of its width; else in rows over the plot, the plot made
+// shorter, where it keeps two lines' height; else the box after all.
+enum class Legend { Box, Column, Rows };
+struct LegendLayout {
+  Legend place = Legend::Box;
+  std::vector<std::string> labels;
+  float w = 0.0f, h = 0.0f;
+  std::vector<int> row_of;  // in rows: each entry's row
+};
 
-  // Plot area: room for the title, the y label (rotated text is not available, so it goes above
-  // the axis), tick labels and the x label.
-  const float heading = origin.y + (chart.title.empty() ? 0.0f : line_h * 1.2f);
-  float top = heading + line_h * 1.1f;
-  const float left = origin.x + label_w + style.ItemSpacing.x + 4.0f;
-  float right = origin.x + size.x - 8.0f;
-  const float bottom = origin.y + size.y - line_h * (chart.x.label.empty() ? 1.3f : 2.4f);
-  if (right - left < 20 || bottom - top < 20) return;
-
-  // The legend: its labels (at most the plot's width, a longer one wrapped onto a second line at
-  // spaces, never inside a number such as "x1.33") stacked in a box in the plot's corner where it
-  // hides the least. Where that box would be taller than the plot (a phone's short chart, with
-  // five series: it covered the plot's right half and ran off its foot) it goes outside the
-  // plot: stacked beside it on the right, the plot made narrower, where the column fits the
-  // chart's height and leaves the plot 40 % of its width; else in rows over the plot, the plot made
-  // shorter, where it keeps two lines' height; else the box after all.
-  enum class Legend { Box, Column, Rows };
+// Places the legend; beside the plot or over it, it takes the plot's room (p.right, p.top).
+LegendLayout place_legend(const Chart& chart, Plot& p) {
+  const ImVec2 origin = p.origin, size = p.size;
+  const float line_h = p.line_h, heading = p.heading, left = p.left, bottom = p.bottom;
+  float& top = p.top;
+  float& right = p.right;
   Legend place = Legend::Box;
   std::vector<std::string> labels;
   float legend_w = 0.0f, legend_h = 0.0f;
@@ -140,6 +136,17 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
       }
     }
   }
+  return {place, labels, legend_w, legend_h, row_of};
+}
+
+// The title, the axes' labels, the ticks and their grid, the plot's frame.
+void draw_axes(ImDrawList* list, const Chart& chart, const Plot& p, const std::vector<Tick>& yt, Legend place) {
+  const ImVec2 origin = p.origin, size = p.size;
+  const float line_h = p.line_h, top = p.top, left = p.left, right = p.right, bottom = p.bottom;
+  const double xlo = p.xlo, xhi = p.xhi, ylo = p.ylo, yhi = p.yhi;
+  const ImU32 text = ImGui::GetColorU32(ImGuiCol_Text);
+  const ImU32 faint = ImGui::GetColorU32(ImGuiCol_Border);
+  const ImU32 grid = ImGui::GetColorU32(ImGuiCol_Border, 0.45f);
   const Mapping mx{xlo, xhi, chart.x.log, left, right}, my{ylo, yhi, chart.y.log, bottom, top};
   // The x ticks: as many as the labels leave room for, never two labels running together (a
   // narrow chart takes 5 ticks' "0 0.25 0.5 0.75 1" as "00.250.50.751").
@@ -158,7 +165,7 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
                        bottom + line_h * 1.15f),
                 text, x_label.c_str());
 
-  list->PushClipRect(ImVec2(origin.x, origin.y), ImVec2(origin.x + size.x, origin.y + size.y), true);
+  list->PushClipRect(ImVec2(origin.x, origin.y), ImVec2(origin.x + size.x, origin.y + size.y), true);  // (the tick labels kept within the chart)
   for (const Tick& t : xt) {
     const float x = mx(t.value);
     list->AddLine(ImVec2(x, top), ImVec2(x, bottom), t.major ? grid : ImGui::GetColorU32(ImGuiCol_Border, 0.2f));
@@ -181,7 +188,15 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
     }
   }
   list->AddRect(ImVec2(left, top), ImVec2(right, bottom), faint);
+  list->PopClipRect();
+}
 
+// The series within the plot: lines, marks on their points or along them, crosses, an escaping
+// line's edge marker; then the end labels.
+void draw_lines(ImDrawList* list, const Chart& chart, const Plot& p) {
+  const float line_h = p.line_h, top = p.top, left = p.left, right = p.right, bottom = p.bottom;
+  const double ylo = p.ylo, yhi = p.yhi;
+  const Mapping mx{p.xlo, p.xhi, chart.x.log, left, right}, my{ylo, yhi, chart.y.log, bottom, top};
   list->PushClipRect(ImVec2(left, top), ImVec2(right, bottom), true);
   struct EndLabel {
     ImVec2 at;
@@ -265,6 +280,18 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
   }
   list->PopClipRect();
 
+}
+
+// The legend as placed: in rows over the plot, in a column beside it, or in a box in the corner
+// where it hides the least. Returns that corner (the inset takes another).
+std::optional<Corner> draw_legend(ImDrawList* list, const Chart& chart, const Plot& p, const LegendLayout& legend) {
+  const ImVec2 origin = p.origin;
+  const float line_h = p.line_h, heading = p.heading, top = p.top, left = p.left, right = p.right, bottom = p.bottom;
+  const ImU32 text = ImGui::GetColorU32(ImGuiCol_Text);
+  const Legend place = legend.place;
+  const std::vector<std::string>& labels = legend.labels;
+  const float legend_w = legend.w, legend_h = legend.h;
+  const std::vector<int>& row_of = legend.row_of;
   std::optional<Corner> legend_at;
   const auto entry = [&](std::size_t k, float x, float y, const std::string& label) {  // a swatch, its label
     const Series& s = chart.series[k];
@@ -306,7 +333,39 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
       y += ImGui::CalcTextSize(labels[k].c_str()).y;
     }
   }
-  const float inset_w = static_cast<float>(kInsetWidth) * (right - left), inset_h = static_cast<float>(kInsetHeight) * (bottom - top);
+  return legend_at;
+}
+
+}  // namespace
+
+void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float line_h = ImGui::GetTextLineHeight();
+
+  double xlo, xhi, ylo, yhi;
+  axis_range(chart, true, xlo, xhi);
+  axis_range(chart, false, ylo, yhi);
+  const auto yt = ticks(ylo, yhi, chart.y.log, 4);
+  float label_w = 0.0f;
+  for (const Tick& t : yt) label_w = std::max(label_w, ImGui::CalcTextSize(t.label.c_str()).x);
+
+  // Plot area: room for the title, the y label (rotated text is not available, so it goes above
+  // the axis), tick labels and the x label.
+  const float heading = origin.y + (chart.title.empty() ? 0.0f : line_h * 1.2f);
+  const float top = heading + line_h * 1.1f;
+  const float left = origin.x + label_w + style.ItemSpacing.x + 4.0f;
+  const float right = origin.x + size.x - 8.0f;
+  const float bottom = origin.y + size.y - line_h * (chart.x.label.empty() ? 1.3f : 2.4f);
+  if (right - left < 20 || bottom - top < 20) return;
+
+  Plot p{origin, size, line_h, heading, top, left, right, bottom, xlo, xhi, ylo, yhi};
+  const LegendLayout legend = place_legend(chart, p);
+  draw_axes(list, chart, p, yt, legend.place);
+  list->PushClipRect(ImVec2(origin.x, origin.y), ImVec2(origin.x + size.x, origin.y + size.y), true);
+  draw_lines(list, chart, p);
+  const std::optional<Corner> legend_at = draw_legend(list, chart, p, legend);
+  const ImU32 faint = ImGui::GetColorU32(ImGuiCol_Border);
+  const float inset_w = static_cast<float>(kInsetWidth) * (p.right - p.left), inset_h = static_cast<float>(kInsetHeight) * (p.bottom - p.top);
   // (In a small chart there is no room for one worth reading: the dots stay in the main view.)
   if (chart.inset && inset_w >= 12.0f * line_h && inset_h >= 7.0f * line_h) {
     // Over the corner that hides the least apart from the legend's, on its own backdrop.
@@ -314,7 +373,7 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
     const float w = inset_w, h = inset_h;
     const bool on_left = at == Corner::TopLeft || at == Corner::BottomLeft;
     const bool below = at == Corner::BottomRight || at == Corner::BottomLeft;
-    const ImVec2 o(on_left ? left + 4.0f : right - w - 4.0f, below ? bottom - h - 4.0f : top + 4.0f);
+    const ImVec2 o(on_left ? p.left + 4.0f : p.right - w - 4.0f, below ? p.bottom - h - 4.0f : p.top + 4.0f);
     list->AddRectFilled(o, ImVec2(o.x + w, o.y + h), ImGui::GetColorU32(ImGuiCol_WindowBg, 0.97f), 3.0f);
     list->AddRect(o, ImVec2(o.x + w, o.y + h), faint, 3.0f);
     draw_imgui(list, ImVec2(o.x + 4.0f, o.y + 2.0f), ImVec2(w - 8.0f, h - 4.0f), *chart.inset);

@@ -187,108 +187,117 @@ std::string region_verdict(const StabilityAnalysis& analysis, const RegionLane& 
   return s;
 }
 
-Chart stability_region(const StabilityAnalysis& analysis, const std::vector<RegionLane>& lanes) {
-  Chart c;
-  c.legend = true;
-  if (lanes.empty()) return c;
-  const RegionPlane plane = region_plane(lanes.front().method);
-  std::vector<RegionLane> shown;
-  for (const RegionLane& l : lanes)
-    if (region_plane(l.method) == plane && !method_info(l.method).adaptive()) shown.push_back(l);
-  const draw::Rgba red = draw::kDiverged;
+namespace {
 
-  if (plane == RegionPlane::Complex) {
-    c.title = tr("Stability region, h lambda in the complex plane (dots: the scene's eigenvalues times h)");
-    c.x.label = tr("Re(h lambda)");
-    c.y.label = tr("Im(h lambda)");
-    const std::vector<Complex> lambdas = spectrum(analysis);
-    // The view, as Hairer and Wanner draw regions: every charted region whole (a bounded one's
-    // stable set, an unbounded one's unstable set), whatever its size, and the dots, each with some
-    // room, at most 40 across or the regions' size (a stiff scene's dots far out at a large step
-    // are drawn at the view's edge).
-    Extent regions;
-    for (const RegionLane& l : shown) {
-      const Extent e = region_extent(l.method);
-      regions.left = std::max(regions.left, e.left);
-      regions.right = std::max(regions.right, e.right);
-      regions.up = std::max(regions.up, e.up);
+// The lanes' dots: `points(lane, put)` puts each of a lane's dots, (x, y) and whether the lane's
+// region holds it; stable ones in the lane's colour and mark, the others in red, added after
+// every lane's stable ones (a red dot is never hidden under another lane's).
+template <typename Points>
+void lane_dots(std::vector<Series>& series, const std::vector<RegionLane>& shown, const Points& points) {
+  std::vector<Series> outsides;
+  for (const RegionLane& l : shown) {
+    Series inside, outside;
+    inside.color = draw::method_color(l.method);
+    inside.mark = draw::method_mark(l.method);
+    inside.markers = true;
+    inside.width = 1.5f;
+    outside = inside;
+    outside.color = draw::kDiverged;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    points(l, [&](double x, double y, bool stable) {
+      Series& s = stable ? inside : outside;
+      s.x.insert(s.x.end(), {x, nan});
+      s.y.insert(s.y.end(), {y, nan});
+    });
+    series.push_back(std::move(inside));
+    outsides.push_back(std::move(outside));
+  }
+  for (Series& o : outsides) series.push_back(std::move(o));
+}
+
+// The regions of h lambda in the complex plane (the Runge-Kutta rows and tableaux), with the
+// scene's eigenvalues times h as dots; an inset on the dots near 0 when they gather there.
+Chart complex_plane(const StabilityAnalysis& analysis, const std::vector<RegionLane>& shown, Chart c) {
+  c.title = tr("Stability region, h lambda in the complex plane (dots: the scene's eigenvalues times h)");
+  c.x.label = tr("Re(h lambda)");
+  c.y.label = tr("Im(h lambda)");
+  const std::vector<Complex> lambdas = spectrum(analysis);
+  // The view, as Hairer and Wanner draw regions: every charted region whole (a bounded one's
+  // stable set, an unbounded one's unstable set), whatever its size, and the dots, each with some
+  // room, at most 40 across or the regions' size (a stiff scene's dots far out at a large step
+  // are drawn at the view's edge).
+  Extent regions;
+  for (const RegionLane& l : shown) {
+    const Extent e = region_extent(l.method);
+    regions.left = std::max(regions.left, e.left);
+    regions.right = std::max(regions.right, e.right);
+    regions.up = std::max(regions.up, e.up);
+  }
+  Extent dots = regions;
+  for (const RegionLane& l : shown)
+    for (Complex lambda : lambdas) {
+      const Complex z = l.h * lambda;
+      if (!std::isfinite(z.real()) || !std::isfinite(z.imag())) continue;
+      dots.left = std::max(dots.left, -1.1 * z.real());
+      dots.right = std::max(dots.right, 1.1 * z.real());
+      dots.up = std::max(dots.up, 1.1 * std::abs(z.imag()));
     }
-    Extent dots = regions;
-    for (const RegionLane& l : shown)
+  const auto shown_to = [](double region, double dot) { return std::max(region, std::min(dot, std::max(region, 40.0))); };
+  const double x0 = -shown_to(regions.left, dots.left), x1 = shown_to(regions.right, dots.right);
+  const double y0 = -shown_to(regions.up, dots.up), y1 = -y0;
+  c.x.min = x0;
+  c.x.max = x1;
+  c.y.min = y0;
+  c.y.max = y1;
+  // A bounded region is sampled over its own box (its edge stays smooth however far the view
+  // reaches); an unbounded one over the view.
+  for (const RegionLane& l : shown) {
+    const Tableau* tableau = method_info(l.method).tableau;
+    const bool bounded = tableau && tableau->is_explicit();
+    const Extent e = region_extent(l.method);
+    region([&](double x, double y) { return margin_at(l.method, Complex(x, y)); },
+           bounded ? std::max(x0, -e.left) : x0, bounded ? std::min(x1, e.right) : x1,
+           bounded ? std::max(y0, -e.up) : y0, bounded ? std::min(y1, e.up) : y1, draw::method_color(l.method),
+           region_verdict(analysis, l), c.series);
+  }
+  // The dots, each lane's inside its region in its colour, outside in red (drawn last: a red dot
+  // is never hidden under another lane's).
+  const auto add_dots = [&](Chart& chart) {
+    lane_dots(chart.series, shown, [&](const RegionLane& l, const auto& put) {
       for (Complex lambda : lambdas) {
         const Complex z = l.h * lambda;
-        if (!std::isfinite(z.real()) || !std::isfinite(z.imag())) continue;
-        dots.left = std::max(dots.left, -1.1 * z.real());
-        dots.right = std::max(dots.right, 1.1 * z.real());
-        dots.up = std::max(dots.up, 1.1 * std::abs(z.imag()));
+        if (!std::isfinite(z.real()) || !std::isfinite(z.imag())) continue;  // never a NaN dot
+        put(z.real(), z.imag(), stable_at(l.method, z));
       }
-    const auto shown_to = [](double region, double dot) { return std::max(region, std::min(dot, std::max(region, 40.0))); };
-    const double x0 = -shown_to(regions.left, dots.left), x1 = shown_to(regions.right, dots.right);
-    const double y0 = -shown_to(regions.up, dots.up), y1 = -y0;
-    c.x.min = x0;
-    c.x.max = x1;
-    c.y.min = y0;
-    c.y.max = y1;
-    // A bounded region is sampled over its own box (its edge stays smooth however far the view
-    // reaches); an unbounded one over the view.
-    for (const RegionLane& l : shown) {
-      const Tableau* tableau = method_info(l.method).tableau;
-      const bool bounded = tableau && tableau->is_explicit();
-      const Extent e = region_extent(l.method);
-      region([&](double x, double y) { return margin_at(l.method, Complex(x, y)); },
-             bounded ? std::max(x0, -e.left) : x0, bounded ? std::min(x1, e.right) : x1,
-             bounded ? std::max(y0, -e.up) : y0, bounded ? std::min(y1, e.up) : y1, draw::method_color(l.method),
-             region_verdict(analysis, l), c.series);
-    }
-    // The dots, each lane's inside its region in its colour, outside in red (drawn last: a red dot
-    // is never hidden under another lane's).
-    const auto add_dots = [&](Chart& chart) {
-      std::vector<Series> outsides;
-      for (const RegionLane& l : shown) {
-        Series inside, outside;
-        inside.color = draw::method_color(l.method);
-        inside.mark = draw::method_mark(l.method);
-        inside.markers = true;
-        inside.width = 1.5f;
-        outside = inside;
-        outside.color = red;
-        const double nan = std::numeric_limits<double>::quiet_NaN();
-        for (Complex lambda : lambdas) {
-          const Complex z = l.h * lambda;
-          if (!std::isfinite(z.real()) || !std::isfinite(z.imag())) continue;  // never a NaN dot
-          Series& s = stable_at(l.method, z) ? inside : outside;
-          s.x.insert(s.x.end(), {z.real(), nan});
-          s.y.insert(s.y.end(), {z.imag(), nan});
-        }
-        chart.series.push_back(std::move(inside));
-        outsides.push_back(std::move(outside));
-      }
-      for (Series& o : outsides) chart.series.push_back(std::move(o));
-    };
-    add_dots(c);
-    // Dots near 0 at a small step (a hundredth of the view), where the regions' edges decide:
-    // an inset zooms on them, with the edges there.
-    double reach = 0.0;
+    });
+  };
+  add_dots(c);
+  // Dots near 0 at a small step (a hundredth of the view), where the regions' edges decide:
+  // an inset zooms on them, with the edges there.
+  double reach = 0.0;
+  for (const RegionLane& l : shown)
+    for (Complex lambda : lambdas)
+      if (std::isfinite(std::abs(l.h * lambda))) reach = std::max(reach, std::abs(l.h * lambda));
+  if (reach > 0.0 && reach < 0.08 * std::max(dots.left, dots.up)) {
+    auto zoom = std::make_shared<Chart>();
+    zoom->title = tr("near 0");
+    zoom->legend = false;
+    zoom->x.min = -1.6 * reach;
+    zoom->x.max = 0.6 * reach;
+    zoom->y.min = -1.3 * reach;
+    zoom->y.max = 1.3 * reach;
     for (const RegionLane& l : shown)
-      for (Complex lambda : lambdas)
-        if (std::isfinite(std::abs(l.h * lambda))) reach = std::max(reach, std::abs(l.h * lambda));
-    if (reach > 0.0 && reach < 0.08 * std::max(dots.left, dots.up)) {
-      auto zoom = std::make_shared<Chart>();
-      zoom->title = tr("near 0");
-      zoom->legend = false;
-      zoom->x.min = -1.6 * reach;
-      zoom->x.max = 0.6 * reach;
-      zoom->y.min = -1.3 * reach;
-      zoom->y.max = 1.3 * reach;
-      for (const RegionLane& l : shown)
-        region([&](double x, double y) { return margin_at(l.method, Complex(x, y)); }, *zoom->x.min, *zoom->x.max,
-               *zoom->y.min, *zoom->y.max, draw::method_color(l.method), "", zoom->series);
-      add_dots(*zoom);
-      c.inset = zoom;
-    }
-    return c;
+      region([&](double x, double y) { return margin_at(l.method, Complex(x, y)); }, *zoom->x.min, *zoom->x.max,
+             *zoom->y.min, *zoom->y.max, draw::method_color(l.method), "", zoom->series);
+    add_dots(*zoom);
+    c.inset = zoom;
   }
+  return c;
+}
 
+// The regions in the damped oscillator's plane (h w, h c), for the rows that have none in the
+// complex plane, with the scene's modes as dots.
+Chart oscillator_plane(const StabilityAnalysis& analysis, const std::vector<RegionLane>& shown, Chart c) {
   c.title = tr("Stability region in the damped oscillator's plane (h w, h c): these methods have none in the "
             "complex plane; dots: the scene's modes");
   c.x.label = "h w";
@@ -310,28 +319,27 @@ Chart stability_region(const StabilityAnalysis& analysis, const std::vector<Regi
   for (const RegionLane& l : shown)
     region([&](double x, double y) { return margin_at(l.method, x, y); }, 0.0, std::min(xmax, 2.2), 0.0,
            std::min(ymax, 2.2), draw::method_color(l.method), region_verdict(analysis, l), c.series);
-  std::vector<Series> outsides;
-  for (const RegionLane& l : shown) {
-    Series inside, outside;
-    inside.color = draw::method_color(l.method);
-    inside.mark = draw::method_mark(l.method);
-    inside.markers = true;
-    inside.width = 1.5f;
-    outside = inside;
-    outside.color = red;
-    const double nan = std::numeric_limits<double>::quiet_NaN();
+  lane_dots(c.series, shown, [&](const RegionLane& l, const auto& put) {
     for (const auto& m : analysis.modes()) {
       const double X = l.h * std::sqrt(std::max(m.kappa, 0.0)), Y = l.h * m.gamma;
       if (!std::isfinite(X) || !std::isfinite(Y)) continue;
-      Series& s = stable_at(l.method, X, Y) ? inside : outside;
-      s.x.insert(s.x.end(), {X, nan});
-      s.y.insert(s.y.end(), {Y, nan});
+      put(X, Y, stable_at(l.method, X, Y));
     }
-    c.series.push_back(std::move(inside));
-    outsides.push_back(std::move(outside));
-  }
-  for (Series& o : outsides) c.series.push_back(std::move(o));
+  });
   return c;
+}
+
+}  // namespace
+
+Chart stability_region(const StabilityAnalysis& analysis, const std::vector<RegionLane>& lanes) {
+  Chart c;
+  c.legend = true;
+  if (lanes.empty()) return c;
+  const RegionPlane plane = region_plane(lanes.front().method);
+  std::vector<RegionLane> shown;
+  for (const RegionLane& l : lanes)
+    if (region_plane(l.method) == plane && !method_info(l.method).adaptive()) shown.push_back(l);
+  return plane == RegionPlane::Complex ? complex_plane(analysis, shown, std::move(c)) : oscillator_plane(analysis, shown, std::move(c));
 }
 
 }  // namespace springlab::chart

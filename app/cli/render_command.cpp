@@ -122,7 +122,8 @@ Shot lesson_shot(const Lesson& lesson, int k, int number, int count, double fps,
   return shot;
 }
 
-int render(const RenderOptions& o) {
+// The options that do not go together, and each one's range; the frame's size.
+void check_render_options(const RenderOptions& o, int& width, int& height) {
   if (o.out.has_value() == o.video.has_value())
     throw InputError("render: give exactly one of --out DIR (PNG frames) and --video FILE.mp4");
   if (o.lesson.has_value() == !o.scene.empty())
@@ -131,7 +132,6 @@ int render(const RenderOptions& o) {
                    !o.sim.sets.empty()))
     throw InputError("render --lesson: the lesson sets each step's scene, methods, parameters and script; "
                      "leave out --script, --compare, --method, --dt, --substeps, --ks, --kd and --set");
-  int width = 0, height = 0;
   parse_size(*o.size, width, height);
   check_option("--fps", o.fps, 1.0, 240.0, false);
   if (o.ui_scale) check_option("--ui-scale", *o.ui_scale, 0.5, 4.0, false);
@@ -139,25 +139,39 @@ int render(const RenderOptions& o) {
   if (o.duration) check_option("--duration", *o.duration, 0.0, 1e6, true, " s");
   if (o.video && (width % 2 || height % 2))
     throw InputError("--size: a video needs an even width and height (yuv420p), got " + *o.size);
-  std::set<std::int64_t> selected;
-  if (o.select) {
-    std::stringstream s(*o.select);
-    for (std::string item; std::getline(s, item, ',');) {
-      char* end = nullptr;
-      const long long k = std::strtoll(item.c_str(), &end, 10);
-      if (item.empty() || *end || k < 0) throw InputError("--select: frame numbers separated by commas, got '" + *o.select + "'");
-      selected.insert(k);
-    }
-  }
-  const float scale = static_cast<float>(o.ui_scale ? *o.ui_scale : std::max(0.6, height / 720.0));
-  use_language(check_language(o.lang, "--lang"));
+}
 
-  // What to render: one scene, or a lesson's steps one after another.
+// --select's frame numbers, separated by commas.
+std::set<std::int64_t> parse_select(const std::string& text) {
+  std::set<std::int64_t> selected;
+  std::stringstream s(text);
+  for (std::string item; std::getline(s, item, ',');) {
+    char* end = nullptr;
+    const long long k = std::strtoll(item.c_str(), &end, 10);
+    if (item.empty() || *end || k < 0) throw InputError("--select: frame numbers separated by commas, got '" + text + "'");
+    selected.insert(k);
+  }
+  return selected;
+}
+
+// What to render: one scene (its session made now), or a lesson's steps one after another (each
+// step's session made as the step starts); the frames in all, cut by --duration and --frames.
+struct Plan {
   std::vector<Shot> shots;
   std::optional<Lesson> lesson;
   int lesson_number = 0, lesson_count = 0;
   std::string name;
   std::int64_t frames = 0;
+};
+
+Plan plan_shots(const RenderOptions& o, float scale) {
+  Plan plan;
+  std::vector<Shot>& shots = plan.shots;
+  std::optional<Lesson>& lesson = plan.lesson;
+  int& lesson_number = plan.lesson_number;
+  int& lesson_count = plan.lesson_count;
+  std::string& name = plan.name;
+  std::int64_t& frames = plan.frames;
   if (o.lesson) {
     lesson = open_lesson(*o.lesson);
     lesson_count = static_cast<int>(shipped_lesson_files().size());
@@ -193,6 +207,38 @@ int render(const RenderOptions& o) {
     shot.frames = frames;
     shots.push_back(std::move(shot));
   }
+  return plan;
+}
+
+// A scene's run at its end: each lane's sub-steps, and kDiverged (its reason on stderr) for the
+// first lane that diverged or went unstable.
+int lane_verdicts(Session& session, const std::string& name) {
+  for (const Lane& lane : session.lanes())
+    std::printf("substeps   %s: %d (%s)\n", method_info(lane.sim.settings().method).name, lane.sim.settings().substeps,
+                !lane.sim.auto_substeps() ? "fixed" : lane.sim.substeps_capped() ? "auto, capped" : "auto");
+  for (Lane& lane : session.lanes()) {
+    if (lane.sim.diverged()) lane.sim.explain_divergence();
+    if (const Divergence* trouble = lane.sim.trouble()) {
+      std::fflush(stdout);
+      std::fprintf(stderr, "springlab: %s: %s\n", name.c_str(), trouble->message().c_str());
+      return kDiverged;
+    }
+  }
+  return kOk;
+}
+
+int render(const RenderOptions& o) {
+  int width = 0, height = 0;
+  check_render_options(o, width, height);
+  const std::set<std::int64_t> selected = o.select ? parse_select(*o.select) : std::set<std::int64_t>{};
+  const float scale = static_cast<float>(o.ui_scale ? *o.ui_scale : std::max(0.6, height / 720.0));
+  use_language(check_language(o.lang, "--lang"));
+
+  // What to render: one scene, or a lesson's steps one after another.
+  Plan plan = plan_shots(o, scale);
+  std::vector<Shot>& shots = plan.shots;
+  const std::optional<Lesson>& lesson = plan.lesson;
+  const std::int64_t frames = plan.frames;
   if (!selected.empty() && *selected.rbegin() >= frames)
     throw InputError("--select: frame " + std::to_string(*selected.rbegin()) + " is past the last frame (" +
                      std::to_string(frames - 1) + ")");
@@ -218,7 +264,7 @@ int render(const RenderOptions& o) {
   // Mesa's software rasteriser draws with every core, and ffmpeg encodes beside it: the
   // simulation takes one core unless told (threads waiting for work would only take turns away).
   if (!o.sim.threads && gfx::software_renderer(offscreen.renderer_name())) set_thread_count(1);
-  Progress progress("render " + name, frames);
+  Progress progress("render " + plan.name, frames);
   ui::FrameStats stats;
   stats.timed = false;  // the same pixels for the same inputs
   const auto start = std::chrono::steady_clock::now();
@@ -248,7 +294,7 @@ int render(const RenderOptions& o) {
     }
     Shot& shot = shots[current];
     if (!shot.session) {
-      shot = lesson_shot(*lesson, static_cast<int>(current), lesson_number, lesson_count, o.fps, scale);
+      shot = lesson_shot(*lesson, static_cast<int>(current), plan.lesson_number, plan.lesson_count, o.fps, scale);
     } else if (k > shot_start) {
       Session& session = *shot.session;
       const std::int64_t before = session.primary().sim.counters().force_evals;
@@ -290,23 +336,11 @@ int render(const RenderOptions& o) {
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const Session& last = *shots[current].session;
   std::printf("rendered %lld frame%s of %s (%dx%d, %g frames/s, t = 0 to %.4g s) in %.3g s: %.3g frames/s, on %s\n",
-              static_cast<long long>(written), written == 1 ? "" : "s", name.c_str(), width, height, o.fps,
+              static_cast<long long>(written), written == 1 ? "" : "s", plan.name.c_str(), width, height, o.fps,
               lesson ? static_cast<double>(frames) / o.fps : last.primary().sim.state().t, wall,
               wall > 0 ? written / wall : 0.0, offscreen.renderer_name().c_str());
   std::printf("output     %s\n", (o.out ? *o.out : *o.video).c_str());
-  if (lesson) return kOk;  // (its steps diverge where they mean to)
-  for (const Lane& lane : last.lanes())
-    std::printf("substeps   %s: %d (%s)\n", method_info(lane.sim.settings().method).name, lane.sim.settings().substeps,
-                !lane.sim.auto_substeps() ? "fixed" : lane.sim.substeps_capped() ? "auto, capped" : "auto");
-  for (Lane& lane : shots[current].session->lanes()) {
-    if (lane.sim.diverged()) lane.sim.explain_divergence();
-    if (const Divergence* trouble = lane.sim.trouble()) {
-      std::fflush(stdout);
-      std::fprintf(stderr, "springlab: %s: %s\n", name.c_str(), trouble->message().c_str());
-      return kDiverged;
-    }
-  }
-  return kOk;
+  return lesson ? kOk : lane_verdicts(*shots[current].session, plan.name);  // (a lesson's steps diverge where they mean to)
 }
 
 }  // namespace

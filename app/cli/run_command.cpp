@@ -85,6 +85,39 @@ int run_ik(const Scene& scene, bool csv) {
   return kOk;
 }
 
+// An iterative row's account at the end of a run: the energy it took out (or put in) beyond the
+// physics' damping, and how far its springs stretch against the spring model's own.
+void print_iterative_account(const Simulation& sim) {
+  // What it pays instead of a limit (springlab/iterative_cost.hpp).
+  // Taken out in all: E0 + W - E = -net; by the physics' damping: dissipated; the rest, the
+  // method's own. Negative, it put energy in: its springs' stretch, counted with k_s, grew.
+  const double artificial = -(sim.net_energy() + sim.dissipated());
+  if (!energy_account_closed(sim.model()))
+    std::printf("damping    not stated: the colliders' contacts and friction take energy the account does not "
+                "count apart\n");
+  else if (artificial >= 0.0)
+    std::printf("damping    %s J taken out beyond the physics' damping (%s W on average; the physics' damping took %s J)\n",
+                format(artificial).c_str(), format(artificial / sim.state().t).c_str(), format(sim.dissipated()).c_str());
+  else
+    std::printf("energy in  %s J put in beyond the physics (%s W on average): its springs ended stretched or compressed further than k_s "
+                "would hold them, and that counts with k_s (the physics' damping took %s J)\n",
+                format(-artificial).c_str(), format(-artificial / sim.state().t).c_str(), format(sim.dissipated()).c_str());
+  const double lengths = length_ratio(sim.model(), sim.state());
+  if (!at_rest(sim.model(), sim.state(), sim.energy_scale())) {
+    std::printf("stretch    in motion: springs at %sx their rest length in all\n", format(lengths).c_str());
+  } else if (loaded_balance(sim.model())) {
+    const Softness s = softness(sim.model(), sim.state());
+    std::printf("stretch    at rest, springs at %sx their rest length in all; %s m RMS against the spring model's %s m "
+                "under the same load: its springs act as k_s x %s\n",
+                format(lengths).c_str(), format(s.stretch).c_str(), format(s.model_stretch).c_str(),
+                format(s.ratio()).c_str());
+  } else {
+    std::printf("stretch    at rest, springs at %sx their rest length in all; no load carried to pins (free, or resting "
+                "on a collider), so no effective stiffness to state\n",
+                format(lengths).c_str());
+  }
+}
+
 int run(const RunOptions& o) {
   Prepared p = prepare(o.scene, o.sim);
   if (p.scene.ik) return run_ik(p.scene, o.csv.has_value());
@@ -163,36 +196,7 @@ int run(const RunOptions& o) {
     std::printf(", %lld accepted and %lld rejected internal steps",
                 static_cast<long long>(c.accepted), static_cast<long long>(c.rejected));
   std::printf("\n");
-  if (iterative && !sim.diverged() && sim.state().t > 0.0) {
-    // What it pays instead of a limit (springlab/iterative_cost.hpp).
-    // Taken out in all: E0 + W - E = -net; by the physics' damping: dissipated; the rest, the
-    // method's own. Negative, it put energy in: its springs' stretch, counted with k_s, grew.
-    const double artificial = -(sim.net_energy() + sim.dissipated());
-    if (!energy_account_closed(sim.model()))
-      std::printf("damping    not stated: the colliders' contacts and friction take energy the account does not "
-                  "count apart\n");
-    else if (artificial >= 0.0)
-      std::printf("damping    %s J taken out beyond the physics' damping (%s W on average; the physics' damping took %s J)\n",
-                  format(artificial).c_str(), format(artificial / sim.state().t).c_str(), format(sim.dissipated()).c_str());
-    else
-      std::printf("energy in  %s J put in beyond the physics (%s W on average): its springs ended stretched or compressed further than k_s "
-                  "would hold them, and that counts with k_s (the physics' damping took %s J)\n",
-                  format(-artificial).c_str(), format(-artificial / sim.state().t).c_str(), format(sim.dissipated()).c_str());
-    const double lengths = length_ratio(sim.model(), sim.state());
-    if (!at_rest(sim.model(), sim.state(), sim.energy_scale())) {
-      std::printf("stretch    in motion: springs at %sx their rest length in all\n", format(lengths).c_str());
-    } else if (loaded_balance(sim.model())) {
-      const Softness s = softness(sim.model(), sim.state());
-      std::printf("stretch    at rest, springs at %sx their rest length in all; %s m RMS against the spring model's %s m "
-                  "under the same load: its springs act as k_s x %s\n",
-                  format(lengths).c_str(), format(s.stretch).c_str(), format(s.model_stretch).c_str(),
-                  format(s.ratio()).c_str());
-    } else {
-      std::printf("stretch    at rest, springs at %sx their rest length in all; no load carried to pins (free, or resting "
-                  "on a collider), so no effective stiffness to state\n",
-                  format(lengths).c_str());
-    }
-  }
+  if (iterative && !sim.diverged() && sim.state().t > 0.0) print_iterative_account(sim);
   if (!p.scene.cells.empty()) {
     // Springs cannot undo an inverted cell (cells.hpp): counted for every method.
     const int inverted = inverted_cells(p.scene.cells, sim.state().x);

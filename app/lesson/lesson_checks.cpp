@@ -167,17 +167,25 @@ ClaimResult orders(const LessonClaim& claim, const Session& session) {
   return out;
 }
 
-ClaimResult judge(const LessonClaim& c, const Session& session, const std::vector<Record>& records, double fps,
-                  int frames) {
-  ClaimResult out{c, false, ""};
-  const Lane& lane = lane_of(session, c.lane);
-  const Record& r = records[&lane - session.lanes().data()];
-  const int i0 = std::clamp(static_cast<int>(std::lround(c.from * fps)), 0, frames);
-  int i1 = std::clamp(static_cast<int>(std::lround(c.to.value_or(frames / fps) * fps)), i0, frames);
-  // Energy and motion claims look at the lane while it is sane: up to the frame before it diverged.
-  const int sane_end = r.diverged_at < 0 ? i1 : std::clamp(r.diverged_at - 1, i0, i1);
-  const double scale = std::max(r.scale, 1e-300);
+// A claim's window over a lane's record: its frames from i0 to i1, and to sane_end while the lane
+// was sane (the frame before it diverged); the lane's energy scale.
+struct Window {
+  const LessonClaim& c;
+  const Session& session;
+  const Lane& lane;
+  const Record& r;
+  double fps;
+  int i0, i1, sane_end;
+  double scale;
+};
 
+// Energy and motion: grows, decays, bounded, diverges, holds, follows the exact solution, the stated limit, the adaptive step.
+void judge_energy_and_motion(const Window& w, ClaimResult& out) {
+  const LessonClaim& c = w.c;
+  const Lane& lane = w.lane;
+  const Record& r = w.r;
+  const int i0 = w.i0, i1 = w.i1, sane_end = w.sane_end;
+  const double scale = w.scale, fps = w.fps;
   switch (c.kind) {
     case K::EnergyGrows:
     case K::EnergyDecays: {
@@ -237,6 +245,18 @@ ClaimResult judge(const LessonClaim& c, const Session& session, const std::vecto
       out.passed = rejected > 0 && hi >= c.ratio * lo;
       break;
     }
+    default: break;
+  }
+}
+
+// Momentum and drag: kept, changed, slowed by drag, the wiggles decaying.
+void judge_momentum_and_drag(const Window& w, ClaimResult& out) {
+  const LessonClaim& c = w.c;
+  const Lane& lane = w.lane;
+  const Record& r = w.r;
+  const int i0 = w.i0, sane_end = w.sane_end;
+  const double fps = w.fps;
+  switch (c.kind) {
     case K::MomentumKept: {
       const Momentum &from = r.momentum[i0], &to = r.momentum[sane_end];
       const double p0 = from.linear.norm(), l0 = from.angular.norm();
@@ -287,6 +307,18 @@ ClaimResult judge(const LessonClaim& c, const Session& session, const std::vecto
       out.passed = first > 0.0 && ratio <= c.below;
       break;
     }
+    default: break;
+  }
+}
+
+// The iterative rows, inverse kinematics and emitters: the stiffness a row acts as, its solver converging, an arm out of reach, the solvers' poses apart, bursts.
+void judge_solvers_and_scenes(const Window& w, ClaimResult& out) {
+  const LessonClaim& c = w.c;
+  const Lane& lane = w.lane;
+  const Record& r = w.r;
+  const int i0 = w.i0, i1 = w.i1;
+  const Session& session = w.session;
+  switch (c.kind) {
     case K::ActsAs: {
       const Model& model = lane.sim.model();
       if (!loaded_balance(model)) {  // (iterative_cost.hpp: no load, no stiffness to act as)
@@ -346,7 +378,6 @@ ClaimResult judge(const LessonClaim& c, const Session& session, const std::vecto
       out.passed = converged && closest >= c.min;
       break;
     }
-    case K::Orders: return orders(c, session);
     case K::Bursts: {
       // Every frame with more than half a burst's births: whole bursts of `count`, and at most a
       // shell born beside them.
@@ -362,10 +393,28 @@ ClaimResult judge(const LessonClaim& c, const Session& session, const std::vecto
       out.passed = bursts > 0 && odd == 0;
       break;
     }
-    case K::Particles: break;  // measured while playing (check_step)
+    default: break;
   }
+}
+
+ClaimResult judge(const LessonClaim& c, const Session& session, const std::vector<Record>& records, double fps,
+                  int frames) {
+  ClaimResult out{c, false, ""};
+  const Lane& lane = lane_of(session, c.lane);
+  const Record& r = records[&lane - session.lanes().data()];
+  const int i0 = std::clamp(static_cast<int>(std::lround(c.from * fps)), 0, frames);
+  int i1 = std::clamp(static_cast<int>(std::lround(c.to.value_or(frames / fps) * fps)), i0, frames);
+  // Energy and motion claims look at the lane while it is sane: up to the frame before it diverged.
+  const int sane_end = r.diverged_at < 0 ? i1 : std::clamp(r.diverged_at - 1, i0, i1);
+  const double scale = std::max(r.scale, 1e-300);
+  if (c.kind == K::Orders) return orders(c, session);
+  const Window w{c, session, lane, r, fps, i0, i1, sane_end, scale};
+  judge_energy_and_motion(w, out);
+  judge_momentum_and_drag(w, out);
+  judge_solvers_and_scenes(w, out);  // (Particles: measured while playing, check_step)
   return out;
 }
+
 
 }  // namespace
 

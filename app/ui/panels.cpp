@@ -4,7 +4,7 @@
 //   strip               the strip of buttons along the foot (a phone held upright)
 //   controls_window     "springlab": pickers, the platform's controls, about, simulation_controls
 //                       (method or solver, transport, clocks, gauge per lane, parameters), tools
-//                       (cost, panels' buttons, compare choices, view and files)
+//                       (cost, panels' buttons, compare choices, a particle by keys, view and files)
 //   charts_window       "Charts": energy, position, phase, the adaptive step, a lesson's own
 //   region              the stability region (region_window)
 //   divergence_window   "Diverged": the single view's banner and the way out

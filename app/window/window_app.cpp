@@ -49,6 +49,53 @@ void screenshot(const std::string& path, int width, int height) {
   write_png(path, image, 6);
 }
 
+// The window and its OpenGL 3.3 core context, current; swapping unpaced for a --frames run.
+GLFWwindow* open_window(const WindowOptions& o, const std::string& title) {
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
+  GLFWwindow* window = glfwCreateWindow(o.width, o.height, title.c_str(), nullptr, nullptr);
+  if (!window) throw std::runtime_error("no OpenGL 3.3 window could be made (" + g_glfw_error + ")");
+  glfwMakeContextCurrent(window);
+  glfwSwapInterval(o.frames ? 0 : 1);
+  return window;
+}
+
+// A --frames run's clock: frames drawn, wall seconds in all and since the first frame (the
+// scene's analysis), and the simulated time then.
+struct RunTimes {
+  long frames;
+  double wall, steady, first_t;
+};
+
+// What a --frames run did, for whoever scripted it (the tests read it); its exit status (3 when a
+// lane diverged or went unstable).
+int report_run(const Session& session, const WindowOptions& o, const RunTimes& r, int width, int height, int samples,
+               const std::string& renderer) {
+  std::printf("frames     %ld in %.3g s: %.1f frames/s (%dx%d, %d samples, %s)\n", r.frames, r.wall, r.frames / r.wall,
+              width, height, samples, renderer.c_str());
+  // Each frame advances 1/60 s here, as fast as it can: the real-time factor is what the window
+  // would show (above 1, it waits for the display instead).
+  if (r.frames > 1 && r.steady > 0.0)
+    std::printf("steady     %.1f frames/s, %.3gx real time (after the first frame)\n", (r.frames - 1) / r.steady,
+                (session.primary().sim.state().t - r.first_t) / r.steady);
+  for (const Lane& lane : session.lanes())
+    std::printf("lane       %s at t = %.4g s%s\n", lane_name(lane).c_str(), lane.sim.state().t,
+                lane.sim.diverged() ? (" (diverged: " + lane.sim.divergence()->reason + ")").c_str()
+                : lane.sim.instability() ? " (unstable)" : "");
+  for (const Session::DragRecord& d : session.drags())
+    std::printf("dragged    particle %d from (%.4g, %.4g, %.4g) to (%.4g, %.4g, %.4g): %.4g m\n", d.particle,
+                d.from.x(), d.from.y(), d.from.z(), d.to.x(), d.to.y(), d.to.z(), (d.to - d.from).norm());
+  if (o.screenshot) std::printf("screenshot %s\n", o.screenshot->c_str());
+  std::printf("language   %s\n", current_language().c_str());
+  int result = 0;
+  for (const Lane& lane : session.lanes())
+    if (lane.sim.trouble()) result = 3;
+  return result;
+}
+
 }  // namespace
 
 int run_window(const AppSettings& settings, const WindowOptions& o) {
@@ -69,16 +116,7 @@ int run_window(const AppSettings& settings, const WindowOptions& o) {
   struct Terminate {
     ~Terminate() { glfwTerminate(); }
   } terminate;
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
-  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-  glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
-  const std::string title = "springlab - " + prepared.scene.name;
-  GLFWwindow* window = glfwCreateWindow(o.width, o.height, title.c_str(), nullptr, nullptr);
-  if (!window) throw std::runtime_error("no OpenGL 3.3 window could be made (" + g_glfw_error + ")");
-  glfwMakeContextCurrent(window);
-  glfwSwapInterval(o.frames ? 0 : 1);
+  GLFWwindow* window = open_window(o, "springlab - " + prepared.scene.name);
 
   float content_scale = 1.0f, unused = 1.0f;
   glfwGetWindowContentScale(window, &content_scale, &unused);
@@ -167,28 +205,9 @@ int run_window(const AppSettings& settings, const WindowOptions& o) {
     }
 
     if (o.frames) {
-      // What happened, for whoever scripted the run (the tests read it).
-      const double wall = std::chrono::duration<double>(Clock::now() - start).count();
-      const Session& session = app.session();
-      std::printf("frames     %ld in %.3g s: %.1f frames/s (%dx%d, %d samples, %s)\n", frames, wall, frames / wall,
-                  shown_w, shown_h, samples, gl_renderer.c_str());
-      // Each frame advances 1/60 s here, as fast as it can: the real-time factor is what the
-      // window would show (above 1, it waits for the display instead).
-      const double steady = std::chrono::duration<double>(Clock::now() - first_frame).count();
-      if (frames > 1 && steady > 0.0)
-        std::printf("steady     %.1f frames/s, %.3gx real time (after the first frame)\n", (frames - 1) / steady,
-                    (session.primary().sim.state().t - first_t) / steady);
-      for (const Lane& lane : session.lanes())
-        std::printf("lane       %s at t = %.4g s%s\n", lane_name(lane).c_str(), lane.sim.state().t,
-                    lane.sim.diverged() ? (" (diverged: " + lane.sim.divergence()->reason + ")").c_str()
-                    : lane.sim.instability() ? " (unstable)" : "");
-      for (const Session::DragRecord& d : session.drags())
-        std::printf("dragged    particle %d from (%.4g, %.4g, %.4g) to (%.4g, %.4g, %.4g): %.4g m\n", d.particle,
-                    d.from.x(), d.from.y(), d.from.z(), d.to.x(), d.to.y(), d.to.z(), (d.to - d.from).norm());
-      if (o.screenshot) std::printf("screenshot %s\n", o.screenshot->c_str());
-      std::printf("language   %s\n", current_language().c_str());
-      for (const Lane& lane : session.lanes())
-        if (lane.sim.trouble()) result = 3;
+      const RunTimes times{frames, std::chrono::duration<double>(Clock::now() - start).count(),
+                           std::chrono::duration<double>(Clock::now() - first_frame).count(), first_t};
+      result = report_run(app.session(), o, times, shown_w, shown_h, samples, gl_renderer);
     }
   }
   ImGui_ImplOpenGL3_Shutdown();

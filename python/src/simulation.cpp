@@ -87,7 +87,8 @@ std::string format(double x) {
 
 }  // namespace
 
-void bind_simulation(py::module_& m) {
+// The run's results as Python reads them: its energies, its cost, how it diverged.
+void bind_results(py::module_& m) {
   py::class_<Energy>(m, "Energy", "a state's energies, J")
       .def_readonly("kinetic", &Energy::kinetic)
       .def_readonly("spring", &Energy::spring)
@@ -119,41 +120,12 @@ void bind_simulation(py::module_& m) {
       .def_readonly("unstable", &Divergence::unstable, "caught by the energy audit")
       .def_readonly("reason", &Divergence::reason)
       .def_property_readonly("message", &Divergence::message, "one paragraph, as `springlab run` prints it");
+}
 
-  py::class_<PySimulation>(m, "Simulation", R"(A scene stepped as `springlab run` steps it.
-
-Simulation(scene, **options): scene is a shipped scene's name, a JSON file or a Scene; options are
-the command line's: method="rk4" (or a function of your own, fn(x, v, force, h) -> (x, v): see
-springlab.homework), dt=1e-3, substeps=4 or "auto", steps=N or duration=T (what
-run() takes), ks=, kd=, tol=, iterations=, rho=, set={"rope.nodes": 64} (or "KEY=VALUE" strings),
-threads=. Bad input raises springlab.InputError with the command line's message.
-
-positions and velocities are read-only numpy views of the state now, not copies: a step writes
-the next state into the simulation's other buffer and swaps the two, so read them again after
-stepping (or keep a .copy()).)")
-      .def(py::init(&make), py::arg("scene"))
-      .def(
-          "step", [](PySimulation& s) { return s.sim->step(); },
-          "one step of dt; False (and nothing done) once the run has diverged")
-      .def("advance", &advance, py::arg("steps"), "up to `steps` steps; returns how many were taken")
-      .def(
-          "run",
-          [](PySimulation& s, std::optional<std::int64_t> steps) {
-            // As `run`: the analysis first, from the state it starts from (a divergence's message
-            // then states the limits `run` states; made at the divergence instead, from the state
-            // there, its equilibrium and figures can differ in the last digits).
-            {
-              py::gil_scoped_release unlocked;
-              s.sim->stability();
-            }
-            const std::int64_t taken = advance(s, steps.value_or(s.planned_steps));
-            if (s.sim->diverged()) throw DivergenceError(divergence_line(s));
-            return taken;
-          },
-          py::arg("steps") = py::none(),
-          "the steps `springlab run` takes (planned_steps), or `steps`, after the stability analysis as `run` "
-          "makes it; springlab.DivergenceError, with `run`'s message, if it diverges")
-      .def("reset", [](PySimulation& s) { s.sim->reset(); }, "back to the initial state, keeping the settings")
+// What a Simulation says of itself: its scene and settings, its state as numpy views, its
+// energies, cost and divergence.
+void bind_readouts(py::class_<PySimulation>& simulation) {
+  simulation
       .def_property_readonly("scene", [](const PySimulation& s) { return s.scene; })
       .def_property_readonly("planned_steps", [](const PySimulation& s) { return s.planned_steps; })
       .def_property_readonly("method", [](const PySimulation& s) {
@@ -193,7 +165,13 @@ stepping (or keep a .copy()).)")
           },
           "how it diverged (with the stated limit), or None")
       .def_property_readonly("instability", [](const PySimulation& s) { return s.sim->instability(); },
-                             "the energy audit's finding, or None")
+                             "the energy audit's finding, or None");
+}
+
+// The stability analysis and limit, and the settings changed between steps as the app's panels
+// change them (each checked as the command line checks it).
+void bind_analysis_and_settings(py::class_<PySimulation>& simulation) {
+  simulation
       .def(
           "stability",
           [](PySimulation& s) {
@@ -258,6 +236,46 @@ stepping (or keep a .copy()).)")
                (settings.own_step ? settings.own_step_name : std::string(method_info(settings.method).name)) +
                ", t = " + format(s.sim->state().t) + " s>";
       });
+}
+
+void bind_simulation(py::module_& m) {
+  bind_results(m);
+  py::class_<PySimulation> simulation(m, "Simulation", R"(A scene stepped as `springlab run` steps it.
+
+Simulation(scene, **options): scene is a shipped scene's name, a JSON file or a Scene; options are
+the command line's: method="rk4" (or a function of your own, fn(x, v, force, h) -> (x, v): see
+springlab.homework), dt=1e-3, substeps=4 or "auto", steps=N or duration=T (what
+run() takes), ks=, kd=, tol=, iterations=, rho=, set={"rope.nodes": 64} (or "KEY=VALUE" strings),
+threads=. Bad input raises springlab.InputError with the command line's message.
+
+positions and velocities are read-only numpy views of the state now, not copies: a step writes
+the next state into the simulation's other buffer and swaps the two, so read them again after
+stepping (or keep a .copy()).)");
+  simulation.def(py::init(&make), py::arg("scene"))
+      .def(
+          "step", [](PySimulation& s) { return s.sim->step(); },
+          "one step of dt; False (and nothing done) once the run has diverged")
+      .def("advance", &advance, py::arg("steps"), "up to `steps` steps; returns how many were taken")
+      .def(
+          "run",
+          [](PySimulation& s, std::optional<std::int64_t> steps) {
+            // As `run`: the analysis first, from the state it starts from (a divergence's message
+            // then states the limits `run` states; made at the divergence instead, from the state
+            // there, its equilibrium and figures can differ in the last digits).
+            {
+              py::gil_scoped_release unlocked;
+              s.sim->stability();
+            }
+            const std::int64_t taken = advance(s, steps.value_or(s.planned_steps));
+            if (s.sim->diverged()) throw DivergenceError(divergence_line(s));
+            return taken;
+          },
+          py::arg("steps") = py::none(),
+          "the steps `springlab run` takes (planned_steps), or `steps`, after the stability analysis as `run` "
+          "makes it; springlab.DivergenceError, with `run`'s message, if it diverges")
+      .def("reset", [](PySimulation& s) { s.sim->reset(); }, "back to the initial state, keeping the settings");
+  bind_readouts(simulation);
+  bind_analysis_and_settings(simulation);
 }
 
 }  // namespace springlab::python

@@ -173,6 +173,102 @@ IkScene read_ik_scene(ObjectReader& r, generators::Builder& b) {
   return ik;
 }
 
+
+// The forces (gravity, drag, wind, attractors, Verlet's damping) and the colliders.
+void read_forces(ObjectReader& top, Model& model) {
+  model.gravity = top.vec3("gravity", Vec3::Zero());
+  model.drag = top.number("drag", 0.0, non_negative(1e9));
+  model.wind = top.vec3("wind", Vec3::Zero());
+  if (model.wind.norm() > 0.0 && model.drag == 0.0)
+    top.fail("wind", "needs \"drag\" above 0: the air pushes particles through drag, f = -drag (v - wind)");
+  for (auto& a : top.objects("attractors")) {
+    model.attractors.push_back(read_attractor(a));
+    a.finish();
+  }
+  model.verlet_damping = top.number("verlet_damping", 0.0, {0.0, 1.0, false, true});
+  model.particle_radius = top.number("particle_radius", 0.0, non_negative(1e3));
+  for (auto& c : top.objects("colliders")) {
+    const std::string type = c.choice("type", "", {"plane", "sphere"});
+    const double friction = c.number("friction", 0.0, non_negative(100.0));
+    const double restitution = c.number("restitution", 0.0, between(0.0, 1.0));
+    if (type == "plane") {
+      const Vec3 point = c.vec3("point", Vec3::Zero());
+      const Vec3 normal = c.vec3("normal", Vec3::UnitY());
+      if (!(normal.norm() > 1e-12)) c.fail("normal", "must not be zero: it is the plane's direction");
+      model.planes.push_back({point, normal.normalized(), friction, restitution});
+    } else {
+      const Vec3 center = c.vec3("center");
+      const double radius = c.number("radius", positive(1e6));
+      model.spheres.push_back({center, radius, friction, restitution});
+    }
+    c.finish();
+  }
+}
+
+// "methods": the rows to compare, by name (symplectic Euler when none is given).
+std::vector<Method> read_methods(ObjectReader& top, const std::string& where) {
+  std::vector<Method> out;
+  if (const json* list = top.raw("methods")) {
+    if (!list->is_array() || list->empty())
+      top.fail("methods", "must be a non-empty array of method names (" + method_names() + ")");
+    for (std::size_t k = 0; k < list->size(); ++k) {
+      const json& item = (*list)[k];
+      const std::string pointer = top.path("methods") + "/" + std::to_string(k);
+      const auto m = item.is_string() ? find_method(item.get<std::string>()) : std::nullopt;
+      if (!m) {
+        std::vector<std::string> names;
+        for (const auto& info : methods()) names.emplace_back(info.name);
+        const std::string near = item.is_string()
+                                     ? closest_match(item.get<std::string>(), names.data(), names.size())
+                                     : "";
+        // A value that is not a string is described, not printed: printing a deeply nested
+        // array recurses as deep as it is nested.
+        json_reader::fail_at(where, pointer,
+                             (item.is_string() ? "unknown method " + json_reader::dump(item)
+                                               : "must be a method name, " + json_reader::describe(item)) +
+                                 (near.empty() ? "" : "; did you mean \"" + near + "\"?") +
+                                 " (methods: " + method_names() + ")");
+      }
+      out.push_back(*m);
+    }
+  } else {
+    out = {Method::SymplecticEuler};
+  }
+  return out;
+}
+
+// "substeps": a whole number fixes them, "auto" (the default, 0) chooses them from the limit.
+int read_substeps(ObjectReader& top) {
+  const json* sub = top.raw("substeps");
+  if (!sub) return 0;
+  if (!sub->is_string()) return static_cast<int>(top.integer("substeps", 1, 1, 100000));
+  if (sub->get<std::string>() != "auto")
+    top.fail("substeps", "must be \"auto\" or a whole number in [1, 100000], got " + json_reader::dump(*sub));
+  return 0;
+}
+
+// How to run it: the methods, dt, sub-steps, the safe fraction, the duration, the tolerance.
+void read_run(ObjectReader& top, Scene& scene, const std::string& where) {
+  scene.methods = read_methods(top, where);
+  scene.dt = top.number("dt", 0.01, {0.0, 1.0, true, false});
+  scene.substeps = read_substeps(top);
+  scene.safety = top.number("safety", kSafeFraction, {0.0, 10.0, true, false});
+  scene.duration = top.number("duration", 10.0, positive(1e7));
+  scene.tolerance = top.number("tolerance", 1e-4, {0.0, 1.0, true, false});
+}
+
+// "trails": the particles whose paths are drawn behind them.
+std::vector<int> read_trails(ObjectReader& top, const std::string& where, int total,
+                             const std::map<std::string, std::pair<int, int>>& named) {
+  std::vector<int> out;
+  if (const json* trails = top.raw("trails")) {
+    if (!trails->is_array()) top.fail("trails", "must be an array of particle indices");
+    for (std::size_t k = 0; k < trails->size(); ++k)
+      out.push_back(particle_ref((*trails)[k], top.path("trails") + "/" + std::to_string(k), where, total, named));
+  }
+  return out;
+}
+
 }  // namespace
 
 Scene parse_scene(const std::string& text, const std::string& file,
@@ -276,81 +372,11 @@ Scene parse_scene(const std::string& text, const std::string& file,
   if (model.materials.size() > 65535) top.fail("springs", "use more than 65535 distinct (ks, kd) pairs");
   finalize(model);
 
-  // Forces and colliders.
-  model.gravity = top.vec3("gravity", Vec3::Zero());
-  model.drag = top.number("drag", 0.0, non_negative(1e9));
-  model.wind = top.vec3("wind", Vec3::Zero());
-  if (model.wind.norm() > 0.0 && model.drag == 0.0)
-    top.fail("wind", "needs \"drag\" above 0: the air pushes particles through drag, f = -drag (v - wind)");
-  for (auto& a : top.objects("attractors")) {
-    model.attractors.push_back(read_attractor(a));
-    a.finish();
-  }
-  model.verlet_damping = top.number("verlet_damping", 0.0, {0.0, 1.0, false, true});
-  model.particle_radius = top.number("particle_radius", 0.0, non_negative(1e3));
-  for (auto& c : top.objects("colliders")) {
-    const std::string type = c.choice("type", "", {"plane", "sphere"});
-    const double friction = c.number("friction", 0.0, non_negative(100.0));
-    const double restitution = c.number("restitution", 0.0, between(0.0, 1.0));
-    if (type == "plane") {
-      const Vec3 point = c.vec3("point", Vec3::Zero());
-      const Vec3 normal = c.vec3("normal", Vec3::UnitY());
-      if (!(normal.norm() > 1e-12)) c.fail("normal", "must not be zero: it is the plane's direction");
-      model.planes.push_back({point, normal.normalized(), friction, restitution});
-    } else {
-      const Vec3 center = c.vec3("center");
-      const double radius = c.number("radius", positive(1e6));
-      model.spheres.push_back({center, radius, friction, restitution});
-    }
-    c.finish();
-  }
+  read_forces(top, model);
 
-  // How to run it.
-  if (const json* list = top.raw("methods")) {
-    if (!list->is_array() || list->empty())
-      top.fail("methods", "must be a non-empty array of method names (" + method_names() + ")");
-    for (std::size_t k = 0; k < list->size(); ++k) {
-      const json& item = (*list)[k];
-      const std::string pointer = top.path("methods") + "/" + std::to_string(k);
-      const auto m = item.is_string() ? find_method(item.get<std::string>()) : std::nullopt;
-      if (!m) {
-        std::vector<std::string> names;
-        for (const auto& info : methods()) names.emplace_back(info.name);
-        const std::string near = item.is_string()
-                                     ? closest_match(item.get<std::string>(), names.data(), names.size())
-                                     : "";
-        // A value that is not a string is described, not printed: printing a deeply nested
-        // array recurses as deep as it is nested.
-        json_reader::fail_at(where, pointer,
-                             (item.is_string() ? "unknown method " + json_reader::dump(item)
-                                               : "must be a method name, " + json_reader::describe(item)) +
-                                 (near.empty() ? "" : "; did you mean \"" + near + "\"?") +
-                                 " (methods: " + method_names() + ")");
-      }
-      scene.methods.push_back(*m);
-    }
-  } else {
-    scene.methods = {Method::SymplecticEuler};
-  }
-  scene.dt = top.number("dt", 0.01, {0.0, 1.0, true, false});
-  // "substeps": a whole number fixes them, "auto" (the default) chooses them from the limit.
-  if (const json* sub = top.raw("substeps"); sub && sub->is_string()) {
-    if (sub->get<std::string>() != "auto")
-      top.fail("substeps", "must be \"auto\" or a whole number in [1, 100000], got " + json_reader::dump(*sub));
-    scene.substeps = 0;
-  } else {
-    scene.substeps = sub ? static_cast<int>(top.integer("substeps", 1, 1, 100000)) : 0;
-  }
-  scene.safety = top.number("safety", kSafeFraction, {0.0, 10.0, true, false});
-  scene.duration = top.number("duration", 10.0, positive(1e7));
-  scene.tolerance = top.number("tolerance", 1e-4, {0.0, 1.0, true, false});
+  read_run(top, scene, where);
   scene.camera = read_camera(top, view, x);
-  if (const json* trails = top.raw("trails")) {
-    if (!trails->is_array()) top.fail("trails", "must be an array of particle indices");
-    for (std::size_t k = 0; k < trails->size(); ++k)
-      scene.trails.push_back(particle_ref((*trails)[k], top.path("trails") + "/" + std::to_string(k),
-                                          where, total, named));
-  }
+  scene.trails = read_trails(top, where, total, named);
   top.finish();
 
   const int count = model.particle_count();

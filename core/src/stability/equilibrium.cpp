@@ -344,69 +344,13 @@ bool preconditioned_solve(const Balance& balance, const std::vector<Eigen::Matri
   return false;
 }
 
-}  // namespace
-
-State equilibrium(const Model& model, const State& state) {
-  const struct Release {  // the relaxation's Lanczos runs' memory, however this ends
-    ~Release() { release_lanczos_memory(); }
-  } release;
-  State rest = state;
-  rest.v.setZero();
-  const Balance balance(model);
-  if (balance.free == 0 || model.spring_count() == 0) return rest;
-
-  // The force's yardstick: the largest spring force at 1 % strain, or weight.
-  double strain_force = 0.0, weight = 0.0;
-  for (int s = 0; s < model.spring_count(); ++s)
-    strain_force = std::max(strain_force, 0.01 * model.ks(s) * std::max(model.rest_length[s], 1e-3));
-  for (int i = 0; i < model.particle_count(); ++i)
-    if (balance.weighed[i]) weight = std::max(weight, model.mass[i] * model.gravity.norm());
-  const double force_scale = std::max(strain_force, weight);
-  if (!(force_scale > 0.0)) return rest;
-  // Balanced to a millionth of that: the tension it leaves is the springs' to 1e-8 strain.
-  const double tolerance = 1e-8 * force_scale;
-  double size = 0.0;  // the scene's extent: steps below 1e-13 of it are rounding
-  for (int c = 0; c < 3; ++c) size = std::max(size, rest.x.col(c).maxCoeff() - rest.x.col(c).minCoeff());
-
-  // mu in units of k / m: start small against the stiffest spring on the lightest particle.
-  double k_over_m = 0.0;
-  for (int s = 0; s < model.spring_count(); ++s)
-    k_over_m = std::max(k_over_m, model.ks(s) * std::max(model.inv_mass[model.spring_a[s]], model.inv_mass[model.spring_b[s]]));
-  const double mu_floor = 1e-12 * std::max(k_over_m, 1e-300);
-  double mu = 1e-6 * k_over_m;
-
-  // A relaxation whose positions are no longer finite (a NaN in the scene, or a step its
-  // estimate got wrong) balances nothing: the scene as it was is returned instead.
-  const State unbalanced = rest;
-  RelaxStep step = relax_step(model, rest);
-
-  // Where a factorisation costs more than kNewtonWork (a cloth from 26 x 26 up; 6 ms here),
-  // relaxation alone, until the largest force is kLoadTolerance of the load: the heaviest held
-  // particle's weight (the spring force at 1 % strain, if that is less).
-  // Against the load because the limits' error follows the tension's, and a tension is the
-  // weight it holds up: a fraction of a particle's weight left over at each particle is about
-  // that fraction of the tension. Against the springs' force, a fine rope's weights (1/16 of the
-  // 1e-3 of it that once counted as balanced, on a 7000-node rope) passed before the rope had
-  // moved, and its explicit Euler limit was 18 % above the hanging rope's. Measured on cloths of
-  // 37 x 37 to 80 x 80 and 128 x 128 against Newton's balance: explicit and modified Euler's
-  // limits within 8.3e-4 (they follow the sideways stiffness the tension gives, which no damping
-  // matches; 4.3e-5 on the 128 x 128 cloth), the other methods' within 1.5e-5. At 1e-2 within
-  // 3.4e-4, for 28 % more passes on the 64 x 64 cloth (12,400 against 9,700) and 73 % more on
-  // the 128 x 128 (32,400 against 18,700). Past kRelaxedBudget passes it stops where it is.
-  constexpr double kNewtonWork = 2e7, kLoadTolerance = 4e-2;
-  constexpr int kRelaxation = 20000, kRelaxedBudget = 60000;
-  if (predicted_factorisation_work(model, balance) > kNewtonWork) {
-    // With no weight to hold (nothing pinned, or no gravity) the tensions are whatever pins
-    // stretch the springs to, perhaps none: to a spring's force at 1e-7 strain, a hundred times
-    // tighter than the relaxation before Newton (1e-5).
-    const double load = weight > 0.0 ? kLoadTolerance * std::min(weight, strain_force) : 1e-5 * strain_force;
-    relax(model, balance, rest, step, load, kRelaxedBudget);
-    return rest.x.allFinite() ? rest : unbalanced;
-  }
-  // Else relaxation for the large motions, cheaply, and Newton for the last digits.
-  relax(model, balance, rest, step, 1e-3 * force_scale, kRelaxation);
-  if (!rest.x.allFinite()) return unbalanced;
-
+// Newton's iterations for the last digits, from `rest` (relaxed): each step a Levenberg-
+// Marquardt solve (damping mu, in units of k / m, never below mu_floor) of the held parts'
+// stiffness, accepted when the potential does not rise, until the largest force is `tolerance`
+// (force_scale its yardstick), a step moves less than 1e-13 of the scene's `size`, or the
+// budget is spent.
+void newton(const Balance& balance, State& rest, double mu, double mu_floor, double force_scale, double tolerance,
+            double size) {
   // Newton's budget in floating-point work, known after the first factorisation from its factor
   // L: a factorisation costs about the sum over L's columns of their nonzeros squared, a
   // preconditioned iteration (two triangular solves) four times L's nonzeros. 1.5e10 is 750
@@ -472,6 +416,72 @@ State equilibrium(const Model& model, const State& state) {
     }
     if (!moved) break;  // no step lowers the potential: as balanced as rounding allows
   }
+}
+
+}  // namespace
+
+State equilibrium(const Model& model, const State& state) {
+  const struct Release {  // the relaxation's Lanczos runs' memory, however this ends
+    ~Release() { release_lanczos_memory(); }
+  } release;
+  State rest = state;
+  rest.v.setZero();
+  const Balance balance(model);
+  if (balance.free == 0 || model.spring_count() == 0) return rest;
+
+  // The force's yardstick: the largest spring force at 1 % strain, or weight.
+  double strain_force = 0.0, weight = 0.0;
+  for (int s = 0; s < model.spring_count(); ++s)
+    strain_force = std::max(strain_force, 0.01 * model.ks(s) * std::max(model.rest_length[s], 1e-3));
+  for (int i = 0; i < model.particle_count(); ++i)
+    if (balance.weighed[i]) weight = std::max(weight, model.mass[i] * model.gravity.norm());
+  const double force_scale = std::max(strain_force, weight);
+  if (!(force_scale > 0.0)) return rest;
+  // Balanced to a millionth of that: the tension it leaves is the springs' to 1e-8 strain.
+  const double tolerance = 1e-8 * force_scale;
+  double size = 0.0;  // the scene's extent: steps below 1e-13 of it are rounding
+  for (int c = 0; c < 3; ++c) size = std::max(size, rest.x.col(c).maxCoeff() - rest.x.col(c).minCoeff());
+
+  // mu in units of k / m: start small against the stiffest spring on the lightest particle.
+  double k_over_m = 0.0;
+  for (int s = 0; s < model.spring_count(); ++s)
+    k_over_m = std::max(k_over_m, model.ks(s) * std::max(model.inv_mass[model.spring_a[s]], model.inv_mass[model.spring_b[s]]));
+  const double mu_floor = 1e-12 * std::max(k_over_m, 1e-300);
+  double mu = 1e-6 * k_over_m;
+
+  // A relaxation whose positions are no longer finite (a NaN in the scene, or a step its
+  // estimate got wrong) balances nothing: the scene as it was is returned instead.
+  const State unbalanced = rest;
+  RelaxStep step = relax_step(model, rest);
+
+  // Where a factorisation costs more than kNewtonWork (a cloth from 26 x 26 up; 6 ms here),
+  // relaxation alone, until the largest force is kLoadTolerance of the load: the heaviest held
+  // particle's weight (the spring force at 1 % strain, if that is less).
+  // Against the load because the limits' error follows the tension's, and a tension is the
+  // weight it holds up: a fraction of a particle's weight left over at each particle is about
+  // that fraction of the tension. Against the springs' force, a fine rope's weights (1/16 of the
+  // 1e-3 of it that once counted as balanced, on a 7000-node rope) passed before the rope had
+  // moved, and its explicit Euler limit was 18 % above the hanging rope's. Measured on cloths of
+  // 37 x 37 to 80 x 80 and 128 x 128 against Newton's balance: explicit and modified Euler's
+  // limits within 8.3e-4 (they follow the sideways stiffness the tension gives, which no damping
+  // matches; 4.3e-5 on the 128 x 128 cloth), the other methods' within 1.5e-5. At 1e-2 within
+  // 3.4e-4, for 28 % more passes on the 64 x 64 cloth (12,400 against 9,700) and 73 % more on
+  // the 128 x 128 (32,400 against 18,700). Past kRelaxedBudget passes it stops where it is.
+  constexpr double kNewtonWork = 2e7, kLoadTolerance = 4e-2;
+  constexpr int kRelaxation = 20000, kRelaxedBudget = 60000;
+  if (predicted_factorisation_work(model, balance) > kNewtonWork) {
+    // With no weight to hold (nothing pinned, or no gravity) the tensions are whatever pins
+    // stretch the springs to, perhaps none: to a spring's force at 1e-7 strain, a hundred times
+    // tighter than the relaxation before Newton (1e-5).
+    const double load = weight > 0.0 ? kLoadTolerance * std::min(weight, strain_force) : 1e-5 * strain_force;
+    relax(model, balance, rest, step, load, kRelaxedBudget);
+    return rest.x.allFinite() ? rest : unbalanced;
+  }
+  // Else relaxation for the large motions, cheaply, and Newton for the last digits.
+  relax(model, balance, rest, step, 1e-3 * force_scale, kRelaxation);
+  if (!rest.x.allFinite()) return unbalanced;
+
+  newton(balance, rest, mu, mu_floor, force_scale, tolerance, size);
   return rest;
 }
 
