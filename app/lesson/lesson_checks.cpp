@@ -167,6 +167,8 @@ ClaimResult orders(const LessonClaim& claim, const Session& session) {
   return out;
 }
 
+// (Each judge below takes from the window the names its cases read, so that the cases read as
+// they did in one function; a kind not its own falls through to `default`.)
 // A claim's window over a lane's record: its frames from i0 to i1, and to sane_end while the lane
 // was sane (the frame before it diverged); the lane's energy scale.
 struct Window {
@@ -179,7 +181,8 @@ struct Window {
   double scale;
 };
 
-// Energy and motion: grows, decays, bounded, diverges, holds, follows the exact solution, the stated limit, the adaptive step.
+// Energy and motion: grows, decays, bounded, diverges, holds, follows the exact solution, the
+// stated limit, the adaptive step.
 void judge_energy_and_motion(const Window& w, ClaimResult& out) {
   const LessonClaim& c = w.c;
   const Lane& lane = w.lane;
@@ -311,7 +314,8 @@ void judge_momentum_and_drag(const Window& w, ClaimResult& out) {
   }
 }
 
-// The iterative rows, inverse kinematics and emitters: the stiffness a row acts as, its solver converging, an arm out of reach, the solvers' poses apart, bursts.
+// The iterative rows, inverse kinematics and emitters: the stiffness a row acts as, its solver
+// converging, an arm out of reach, the solvers' poses apart, bursts.
 void judge_solvers_and_scenes(const Window& w, ClaimResult& out) {
   const LessonClaim& c = w.c;
   const Lane& lane = w.lane;
