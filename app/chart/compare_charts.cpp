@@ -204,7 +204,7 @@ Chart solver_convergence(const SweepResult& r, const std::string& scene) {
   for (const SolverErrorCurve& curve : r.solver.curves) {
     Series s;
     s.label = method_info(curve.method).name;
-    if (curve.method == Method::ImplicitEuler) s.label += tr(" (CG; linearised once: levels off)");
+    if (!curve.note.empty()) s.label += tr(curve.note.c_str());
     s.color = draw::method_color(curve.method);
     s.mark = draw::method_mark(curve.method);
     s.markers = true;

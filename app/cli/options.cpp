@@ -45,7 +45,7 @@ void add_sim_options(CLI::App& c, SimOptions& o, bool with_length) {
 // Local-global's Chebyshev acceleration past the plain iteration's own radius (iterative_cost.hpp).
 void warn_if_rho_past_radius(const Simulation& sim, const std::string& scene) {
   const double rho = sim.settings().step.chebyshev_rho;
-  if (sim.settings().method != Method::LocalGlobal || !(rho > 0.0)) return;
+  if (!method_info(sim.settings().method).reads_rho || !(rho > 0.0)) return;
   const double radius = local_global_radius(sim.model(), sim.state(), sim.h());
   if (rho <= radius) return;
   std::fprintf(stderr,

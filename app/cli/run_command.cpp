@@ -187,8 +187,7 @@ int run(const RunOptions& o) {
   std::printf("cost       %lld force evaluations", static_cast<long long>(c.force_evals));
   if (m.family == MethodFamily::Iterative)
     std::printf(", %lld solver iterations (%s)", static_cast<long long>(c.solver_iterations),
-                m.id == Method::XPBD ? "passes over the springs" : m.id == Method::VBD ? "sweeps over the vertices"
-                                                                               : "local steps and global solves");
+                m.iteration_unit ? m.iteration_unit : "iterations");
   else if (c.linear_solves)
     std::printf(", %lld linear solves (%lld CG iterations)", static_cast<long long>(c.linear_solves),
                 static_cast<long long>(c.solver_iterations));

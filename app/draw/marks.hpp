@@ -1,9 +1,7 @@
 // Marks: a shape per method, drawn on a chart's points, along its lines and on its legend's
 // swatches, so that lanes are told apart by more than colour (a colour-blind student, a grey
 // print, a washed-out projector). Filled and hollow circles, squares, diamonds and triangles, a
-// plus and a cross: twelve shapes, one for each built-in row, in the table's order; the five
-// compared most (explicit and symplectic Euler, RK4, Verlet, implicit Euler) the five most
-// unlike (a triangle up for the energy that climbs, a circle, a square, a diamond, a triangle down).
+// plus and a cross: twelve shapes, each method's given by its row (methods/table.cpp).
 #pragma once
 
 #include <array>
@@ -17,12 +15,7 @@
 
 namespace springlab::draw {
 
-enum class Mark {
-  None,
-  Circle, Square, Diamond, TriangleUp, TriangleDown,                       // filled
-  RingCircle, RingSquare, RingDiamond, RingTriangleUp, RingTriangleDown,  // hollow
-  Plus, Cross,                                                            // strokes
-};
+using springlab::Mark;  // (a row's own, MethodInfo::mark)
 
 inline bool hollow(Mark m) { return m >= Mark::RingCircle && m <= Mark::RingTriangleDown; }
 inline bool strokes(Mark m) { return m == Mark::Plus || m == Mark::Cross; }
@@ -49,25 +42,8 @@ inline std::vector<std::array<float, 2>> mark_outline(Mark m) {
   }
 }
 
-// A method's mark, by its row in the table (methods()); rows made from tableaux take them
-// again from the first (their colours are their own).
-inline Mark method_mark(Method m) {
-  static constexpr Mark kByRow[] = {
-      Mark::TriangleUp,      // euler
-      Mark::Circle,          // symplectic-euler
-      Mark::Plus,            // midpoint
-      Mark::Cross,           // modified-euler
-      Mark::Square,          // rk4
-      Mark::RingCircle,      // adaptive-euler
-      Mark::RingSquare,      // rk45
-      Mark::TriangleDown,    // implicit-euler
-      Mark::Diamond,         // verlet
-      Mark::RingTriangleUp,  // xpbd
-      Mark::RingDiamond,     // local-global
-      Mark::RingTriangleDown,  // vbd
-  };
-  return kByRow[static_cast<std::size_t>(m) % std::size(kByRow)];
-}
+// A method's mark: its row's (methods/table.cpp).
+inline Mark method_mark(Method m) { return method_info(m).mark; }
 
 // A lane's: its row's, its IK solver's, or for a lane of one's own (homework) a cross or a plus
 // (the reference lanes beside it are the Euler rows' and Verlet's).

@@ -28,7 +28,11 @@ void perform(Action action, app::Session& session, UiState& ui) {
       }
       auto chosen = compare_methods(ui);
       if (chosen.size() < 2) chosen = session.scene().methods;
-      if (chosen.size() < 2) chosen = {Method::Euler, Method::SymplecticEuler, Method::RK4, Method::ImplicitEuler};
+      if (chosen.size() < 2) {
+        chosen.clear();
+        for (const MethodInfo& m : methods())
+          if (m.compared_first) chosen.push_back(m.id);
+      }
       session.set_compare(chosen);
       break;
     }

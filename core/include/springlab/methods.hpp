@@ -59,7 +59,7 @@ struct StepSettings {
   /// particles (reached only when the system is ill-posed). The solver-error study sets it.
   int max_solver_iterations = 0;
   /// xpbd, local-global, vbd: iterations a step (xpbd: Gauss-Seidel passes over the springs, one
-  /// a sub-step in the small-steps form); 0: the method's own default (xpbd 1, the others 10).
+  /// a sub-step in the small-steps form); 0: the row's own default (MethodInfo::default_iterations).
   int iterations = 0;
   /// local-global: Chebyshev acceleration (Wang 2015) with this estimate of the plain
   /// iteration's spectral radius, in [0, 1); 0: off.
@@ -174,9 +174,21 @@ struct MethodInfo;
 /// "neither".
 std::string kept_summary(const MethodInfo& method);
 
-/// A row of the method table: a method's name, order, cost, family, what its stability needs
-/// (its tableau's R(z), a closed form, a definite form) and its step function. The app, the
-/// command line, the charts, the stability analysis and the tests all read these rows (methods()).
+/// The shape drawn with a method's lanes on charts and legends (the app's draw/marks.hpp), so
+/// that they are told apart by more than colour: filled, hollow, or strokes.
+enum class Mark {
+  None,
+  Circle, Square, Diamond, TriangleUp, TriangleDown,                       // filled
+  RingCircle, RingSquare, RingDiamond, RingTriangleUp, RingTriangleDown,  // hollow
+  Plus, Cross,                                                            // strokes
+};
+
+/// A row of the method table: everything a method says of itself. Its name, order, cost,
+/// family, what its stability needs (its tableau's R(z), a closed form, a definite form), its
+/// step function, its defaults, and how it is shown. The app, the command line, the charts, the
+/// stability analysis, the studies and the tests all read these rows (methods()) and branch on
+/// what a row says, never on which row it is: adding a method is its row and its step
+/// (tests/core/new_row_test.cpp adds one and runs it through every consumer).
 struct MethodInfo {
   Method id;
   const char* name;         ///< as typed on the command line
@@ -213,6 +225,25 @@ struct MethodInfo {
   Kept momentum = Kept::Exactly;
   Kept angular_momentum = Kept::No;
 
+  /// Iterative rows: iterations a step when the settings leave it at 0 (StepSettings::iterations),
+  /// and what one iteration is, as the run's account writes it ("passes over the springs").
+  int default_iterations = 0;
+  const char* iteration_unit = nullptr;
+  /// Reads StepSettings::chebyshev_rho (local-global's acceleration; warned past its radius).
+  bool reads_rho = false;
+  /// Its step carries a history in the workspace besides (x, v): the previous positions and
+  /// a(x) (Verlet's x_prev and a_now). The measured limit steps that three-part state, and its
+  /// transient growth has no energy norm of (x, v) to be measured in.
+  bool history = false;
+  /// One of the rows the app compares when neither the scene nor the user chose any.
+  bool compared_first = false;
+  /// How it is shown: its colour (sRGB, each channel in [0, 1]) in the scene, the charts and
+  /// the legends, and its mark. tests/app/palette_test.cpp holds the colours apart under colour
+  /// blindness and as text on the panels. An added row left black, or without a mark, is given
+  /// one (add_method, add_tableau_method).
+  std::array<float, 3> colour{};
+  Mark mark = Mark::None;
+
   bool adaptive() const { return family == MethodFamily::Adaptive; }
   bool implicit() const { return family == MethodFamily::Implicit; }
   /// Stable at any step: no limit to find, no sub-steps to choose.
@@ -225,6 +256,12 @@ std::span<const MethodInfo> methods();
 const MethodInfo& method_info(Method method);
 std::optional<Method> find_method(std::string_view name);
 
+/// Adds a row with a step function of its own (`step` set, `tableau_step` not), after the
+/// built-in rows and the rows made so far, for the rest of the process: a method written
+/// outside the library (a test's, a student's) is then stepped, analysed, compared and drawn as
+/// a built-in one is. Its id is given here (row.id is ignored) and its strings are copied. The
+/// same name twice, a row without a step, or more than 32 added rows throw InputError.
+Method add_method(const MethodInfo& row);
 /// A row made from a tableau read as data (springlab/butcher.hpp), added to the table for the rest
 /// of the process, after the built-in rows: explicit tableaux step as RK4 does, diagonally
 /// implicit ones solve each stage as an implicit Euler step (tableau_steps.cpp); the stability
@@ -243,7 +280,7 @@ void step(Method method, const Model& model, const State& in, State& out, double
           const StepSettings& settings, Workspace& ws);
 
 /// The iterations an iterative row (xpbd, local-global, vbd) takes a step: the setting, or the
-/// method's own default (xpbd 1 pass, the others 10).
+/// row's own default (default_iterations: xpbd 1 pass, the others 10).
 int iterations_for(Method method, const StepSettings& settings);
 
 /// One evaluation of the accelerations, counted.

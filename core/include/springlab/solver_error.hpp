@@ -11,6 +11,7 @@
 // backward-Euler step linearised once, so their error levels off at the linearisation's.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "springlab/methods.hpp"
@@ -23,6 +24,7 @@ struct SolverErrorCurve {
   Method method = Method::LocalGlobal;
   std::vector<int> iterations;  // XPBD: passes; implicit Euler: conjugate-gradient iterations
   std::vector<double> error;    // relative, as above
+  std::string note;             // what a reader should know of the curve, e.g. why it levels off
 };
 
 struct SolverErrorStudy {

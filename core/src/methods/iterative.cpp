@@ -46,7 +46,7 @@ void finish(const Model& model, const State& in, State& out, double h) {
 
 int iterations_for(Method method, const StepSettings& settings) {
   if (settings.iterations > 0) return settings.iterations;
-  return method == Method::XPBD ? 1 : 10;
+  return std::max(1, method_info(method).default_iterations);
 }
 
 void colour_vertices(const Model& model, VertexBlockDescent& out) {

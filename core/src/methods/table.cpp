@@ -37,6 +37,19 @@ using F = MethodFamily;
 // The one table. Stability limits are on the undamped oscillator (docs/numerics.md, "The
 // undamped oscillator"); with damping the limit is computed by the stability analysis from what
 // each row gives: its tableau's R(z), its closed form, its definite form.
+//
+// Colours: Okabe and Ito's palette for colour-blind viewers, on a dark background and a
+// projector. The five compared most (every shipped scene's lanes are among explicit Euler,
+// symplectic Euler, RK4, Verlet and implicit Euler) take its five most distinct hues, for
+// protanopes and deuteranopes too: vermilion #E66100, sky blue #56B4E9, bluish green #00A87A,
+// yellow #F0E442 and reddish purple #D985C7; the rest take orange #E69F00, light grey, slate
+// #80999A and a violet, and are seldom beside the ones they resemble; the iterative rows (what
+// games use) salmon #FF8080, lime #A6D854 and aquamarine #00FFE6, apart from the lecture's.
+// Measured (tests/app/palette_test.cpp): the five lecture rows stay 7.8 CIEDE2000 apart or more
+// under simulated protanopia, deuteranopia and tritanopia; the lanes a lesson shows together
+// 7.5; any two rows 4; each at least 4.5:1 as text on the panels.
+// Marks: the five compared most take the five most unlike shapes (a triangle up for the energy
+// that climbs, a circle, a square, a diamond, a triangle down); each row has its own.
 // constexpr: constant-initialised, so that the table (below) can copy it during other files'
 // static initialisation (a test's list of methods) whatever the order the linker gives them.
 constexpr MethodInfo kMethods[] = {
@@ -44,43 +57,52 @@ constexpr MethodInfo kMethods[] = {
      .undamped_limit = kNever,
      .stability = N_("explicit Euler gains energy at any step without damping (growth sqrt(1 + (h w)^2) a step)"),
      .family = F::RungeKutta, .step = steps::euler, .tableau = &kEulerTableau, .mode_limit = modes::euler,
-     .corner_bound = true, .audited = true},
+     .corner_bound = true, .audited = true,
+     .compared_first = true, .colour = {0.90f, 0.38f, 0.00f}, .mark = Mark::TriangleUp},
     {.id = Method::SymplecticEuler, .name = "symplectic-euler", .label = N_("Symplectic Euler"), .order = 1,
      .evaluations = "1", .undamped_limit = 2.0,
      .stability = N_("symplectic Euler is stable for h w < 2; its energy oscillates but does not drift"),
      .family = F::Partitioned, .step = steps::symplectic_euler, .mode_limit = modes::symplectic_euler,
-     .definite = symplectic_euler_form, .corner_bound = true, .angular_momentum = Kept::Exactly},
+     .definite = symplectic_euler_form, .corner_bound = true, .angular_momentum = Kept::Exactly,
+     .compared_first = true, .colour = {0.34f, 0.71f, 0.91f}, .mark = Mark::Circle},
     {.id = Method::Midpoint, .name = "midpoint", .label = N_("Midpoint"), .order = 2, .evaluations = "2",
      .undamped_limit = kNever,
      .stability = N_("midpoint gains energy at any step without damping, slowly: sqrt(1 + (h w)^4 / 4) a step"),
-     .family = F::RungeKutta, .step = steps::midpoint, .tableau = &kMidpointTableau, .audited = true},
+     .family = F::RungeKutta, .step = steps::midpoint, .tableau = &kMidpointTableau, .audited = true,
+     .colour = {0.90f, 0.62f, 0.00f}, .mark = Mark::Plus},
     {.id = Method::ModifiedEuler, .name = "modified-euler", .label = N_("Modified Euler"), .order = 1,
      .evaluations = "1", .undamped_limit = kNever,
      .stability = N_("modified Euler gains energy at any step without damping (growth sqrt(1 + (h w)^2 / 2))"),
      .family = F::Partitioned, .step = steps::modified_euler, .mode_limit = modes::modified_euler,
-     .damping_shift = 0.5, .corner_bound = true, .audited = true},
+     .damping_shift = 0.5, .corner_bound = true, .audited = true,
+     .colour = {0.78f, 0.78f, 0.78f}, .mark = Mark::Cross},
     {.id = Method::RK4, .name = "rk4", .label = N_("RK4"), .order = 4, .evaluations = "4",
      .undamped_limit = 2.8284271247461903,  // 2 sqrt(2) (a literal: std::sqrt is not constexpr in clang)
      .stability = N_("RK4 is stable for h w <= 2 sqrt(2) = 2.83, slightly dissipative below it"),
-     .family = F::RungeKutta, .step = steps::rk4, .tableau = &kRK4Tableau, .audited = true},
+     .family = F::RungeKutta, .step = steps::rk4, .tableau = &kRK4Tableau, .audited = true,
+     .compared_first = true, .colour = {0.00f, 0.66f, 0.48f}, .mark = Mark::Square},
     {.id = Method::AdaptiveEuler, .name = "adaptive-euler", .label = N_("Adaptive Euler"), .order = 1,
      .evaluations = "2 per accepted step (a rejected try needs none)", .undamped_limit = kControlled,
      .stability = N_("adaptive Euler controls each step's error, not its energy: undamped, it still gains energy"),
-     .family = F::Adaptive, .step = steps::adaptive_euler},
+     .family = F::Adaptive, .step = steps::adaptive_euler,
+     .colour = {0.50f, 0.60f, 0.60f}, .mark = Mark::RingCircle},
     {.id = Method::RK45, .name = "rk45", .label = N_("RK45 (Dormand-Prince)"), .order = 5,
      .evaluations = "6 per accepted step (first same as last)", .undamped_limit = kControlled,
      .stability = N_("RK45 chooses its own steps to meet the tolerance; stiff scenes make them tiny"),
-     .family = F::Adaptive, .step = steps::rk45},
+     .family = F::Adaptive, .step = steps::rk45,
+     .colour = {0.62f, 0.50f, 0.98f}, .mark = Mark::RingSquare},
     {.id = Method::ImplicitEuler, .name = "implicit-euler", .label = N_("Implicit Euler"), .order = 1,
      .evaluations = "1 + a linear solve", .undamped_limit = kAlways,
      .stability = N_("implicit Euler is stable at any step; it damps: amplification 1 / sqrt(1 + (h w)^2)"),
      .family = F::Implicit, .step = steps::implicit_euler, .tableau = &kImplicitEulerTableau, .audited = true,
-     .momentum = Kept::ToSolverTolerance},
+     .momentum = Kept::ToSolverTolerance,
+     .compared_first = true, .colour = {0.85f, 0.52f, 0.78f}, .mark = Mark::TriangleDown},
     {.id = Method::Verlet, .name = "verlet", .label = N_("Verlet"), .order = 2, .evaluations = "1",
      .undamped_limit = 2.0,
      .stability = N_("Verlet is stable for h w < 2; its energy oscillates but does not drift"),
      .family = F::Partitioned, .step = steps::verlet, .mode_limit = modes::verlet, .definite = verlet_form,
-     .corner_bound = true, .angular_momentum = Kept::Exactly},
+     .corner_bound = true, .angular_momentum = Kept::Exactly,
+     .history = true, .colour = {0.94f, 0.89f, 0.26f}, .mark = Mark::Diamond},
     // The iterative rows solve implicit Euler's step approximately (methods/iterative.hpp): no
     // limit; their cost at a large step is damping and stretch, which the gauge shows instead.
     // Not audited: each step only lowers the step's objective, so they cannot create energy.
@@ -88,28 +110,64 @@ constexpr MethodInfo kMethods[] = {
      .evaluations = "none: 1 pass over the springs as constraints (--iterations)",
      .undamped_limit = kAlways,
      .stability = N_("XPBD is bounded at any step; with few passes its springs act softer than k_s, and their stretch can hold energy the physics never had"),
-     .family = F::Iterative, .step = steps::xpbd},
+     .family = F::Iterative, .step = steps::xpbd,
+     .default_iterations = 1, .iteration_unit = "passes over the springs",
+     .colour = {1.00f, 0.50f, 0.50f}, .mark = Mark::RingTriangleUp},
     {.id = Method::LocalGlobal, .name = "local-global", .label = N_("Local-global (projective)"), .order = 1,
      .evaluations = "none: 10 iterations (--iterations), each a pass over the springs and a prefactored solve",
      .undamped_limit = kAlways,
      .stability = N_("local-global is bounded at any step; each iteration moves it closer to the converged backward-Euler step"),
-     .family = F::Iterative, .step = steps::local_global},
+     .family = F::Iterative, .step = steps::local_global,
+     .default_iterations = 10, .iteration_unit = "local steps and global solves", .reads_rho = true,
+     .colour = {0.65f, 0.85f, 0.33f}, .mark = Mark::RingDiamond},
     {.id = Method::VBD, .name = "vbd", .label = N_("Vertex block descent"), .order = 1,
      .evaluations = "none: 10 iterations (--iterations), each a 3x3 Newton step a vertex",
      .undamped_limit = kAlways,
      .stability = N_("vertex block descent is bounded at any step; converged it damps like implicit Euler, while few iterations leave its springs soft, their stretch holding energy the physics never had"),
-     .family = F::Iterative, .step = steps::vbd, .momentum = Kept::No},
+     .family = F::Iterative, .step = steps::vbd, .momentum = Kept::No,
+     .default_iterations = 10, .iteration_unit = "sweeps over the vertices",
+     .colour = {0.00f, 1.00f, 0.90f}, .mark = Mark::RingTriangleDown},
 };
 
 // Rows in the enum's order: a method's row is found by its id.
-static_assert(std::size(kMethods) == static_cast<std::size_t>(Method::VBD) + 1);
+constexpr bool in_enum_order() {
+  for (std::size_t i = 0; i < std::size(kMethods); ++i)
+    if (static_cast<std::size_t>(kMethods[i].id) != i) return false;
+  return true;
+}
+static_assert(in_enum_order(), "kMethods' rows must be in the order of enum Method");
+
+// Rows added at run time (add_method, add_tableau_method) take these colours in turn, apart from
+// the built-in rows' (peach second: lesson 12 sets the second tableau beside implicit Euler's
+// purple), then hues turned by the golden angle; and the built-in rows' marks again.
+constexpr std::array<float, 3> kAddedColours[] = {
+    {0.00f, 0.85f, 0.95f},  // cyan
+    {1.00f, 0.78f, 0.55f},  // peach
+    {0.80f, 0.60f, 0.35f},  // tan
+    {0.55f, 0.62f, 1.00f},  // periwinkle
+    {0.60f, 1.00f, 0.80f},  // mint
+    {1.00f, 0.60f, 0.80f},  // pink
+};
+void show_added(MethodInfo& row, std::size_t index) {
+  const std::size_t k = index - std::size(kMethods);
+  if (row.colour == std::array<float, 3>{}) {
+    if (k < std::size(kAddedColours)) {
+      row.colour = kAddedColours[k];
+    } else {
+      const float hue = std::fmod(0.61803398875f * static_cast<float>(index), 1.0f);
+      const auto channel = [&](float offset) { return 0.55f + 0.35f * std::cos(6.28318530718f * (hue + offset)); };
+      row.colour = {channel(0.0f), channel(-1.0f / 3.0f), channel(1.0f / 3.0f)};
+    }
+  }
+  if (row.mark == Mark::None) row.mark = kMethods[index % std::size(kMethods)].mark;
+}
 
 // The table: the built-in rows, then the rows made from tableaux (add_tableau_method), in fixed
 // storage so that a row, once counted, never moves while other threads (an analysis, a sweep)
 // read it; `count` is published after the row is written.
 constexpr std::size_t kMaxAdded = 32;
 struct AddedRow {
-  std::string name, label, evaluations, stability;
+  std::string name, label, evaluations, stability, iteration_unit;
   ButcherTableau source;
   Tableau tableau;
 };
@@ -168,11 +226,41 @@ std::string method_names() {
   return names;
 }
 
+Method add_method(const MethodInfo& given) {
+  Table& t = table();
+  const std::lock_guard lock(t.adding);
+  const std::string name = given.name ? given.name : "";
+  if (name.empty() || !given.step || given.tableau_step)
+    throw InputError("method '" + name + "': an added row needs a name and a step function of its own");
+  if (find_method(name)) throw InputError("method '" + name + "': a row of the method table already has this name");
+  const std::size_t index = t.count.load(std::memory_order_relaxed);
+  if (index >= t.rows.size())
+    throw InputError("method '" + name + "': at most " + std::to_string(kMaxAdded) + " added methods in one run");
+  AddedRow& row = t.added.emplace_back();
+  const auto text = [](const char* s) { return std::string(s ? s : ""); };
+  row.name = name;
+  row.label = given.label ? given.label : name;
+  row.evaluations = text(given.evaluations);
+  row.stability = text(given.stability);
+  row.iteration_unit = text(given.iteration_unit);
+  MethodInfo info = given;
+  info.id = static_cast<Method>(index);
+  info.name = row.name.c_str();
+  info.label = row.label.c_str();
+  info.evaluations = row.evaluations.c_str();
+  info.stability = row.stability.c_str();
+  info.iteration_unit = given.iteration_unit ? row.iteration_unit.c_str() : nullptr;
+  show_added(info, index);
+  t.rows[index] = info;
+  t.count.store(index + 1, std::memory_order_release);
+  return info.id;
+}
+
 Method add_tableau_method(const ButcherTableau& tableau, const std::string& name) {
   Table& t = table();
   const std::lock_guard lock(t.adding);
   for (const AddedRow& row : t.added)
-    if (row.name == name) {
+    if (row.name == name && row.source.stages > 0) {
       if (!same_entries(row.source, tableau))
         throw InputError("method '" + name + "': another tableau already has this name; give this one another file name");
       return *find_method(name);
@@ -220,6 +308,7 @@ Method add_tableau_method(const ButcherTableau& tableau, const std::string& name
   // are solved by Newton's method to a tolerance. L only where the tableau is symplectic.
   info.momentum = explicit_stages ? Kept::Exactly : Kept::ToSolverTolerance;
   info.angular_momentum = !a.symplectic ? Kept::No : explicit_stages ? Kept::Exactly : Kept::ToSolverTolerance;
+  show_added(info, index);
   t.rows[index] = info;
   t.count.store(index + 1, std::memory_order_release);
   return info.id;
@@ -250,7 +339,9 @@ const ButcherTableau* tableau_source(Method method) {
   const std::lock_guard lock(t.adding);
   const auto row = static_cast<std::size_t>(method);
   const std::size_t built_in = std::size(kMethods);
-  return row >= built_in && row - built_in < t.added.size() ? &t.added[row - built_in].source : nullptr;
+  if (row < built_in || row - built_in >= t.added.size()) return nullptr;
+  const ButcherTableau& source = t.added[row - built_in].source;
+  return source.stages > 0 ? &source : nullptr;  // (a row added with a step of its own has none)
 }
 
 void accelerations(const Model& model, const Points& x, const Points& v, Points& a, Workspace& ws) {

@@ -63,7 +63,7 @@ OscillatorStep oscillator_step(Method method, double w, double c, double h, doub
   // large enough for (x - 1) / delta to keep its digits (1e-13 relative), and small enough that
   // no stage crosses the anchor near the limits (amplitudes grow like (h w)^4 per step).
   const double delta = 1e-3;
-  const bool verlet = method == Method::Verlet;
+  const bool verlet = method_info(method).history;  // (Verlet's history: x_prev and a_now)
   OscillatorStep out;
   out.size = verlet ? 3 : 2;
   State rest;
@@ -113,7 +113,7 @@ double amplification(Method method, double w, double c, double h, double verlet_
 double transient_growth(Method method, double gamma, double kappa, double h, double verlet_damping) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   if (!(kappa > 0.0)) return 1.0;  // a first-order decay (drag alone): its speed only falls
-  if (method == Method::Verlet) return kInf;  // its state holds a history: no energy norm of its own
+  if (method_info(method).history) return kInf;  // its state holds a history: no energy norm of its own
   const OscillatorStep s = oscillator_step(method, std::sqrt(kappa), std::max(gamma, 0.0), h, verlet_damping);
   const Eigen::Matrix2d D = Eigen::Vector2d(std::sqrt(kappa), 1.0).asDiagonal();
   const Eigen::Matrix2d T = D * s.matrix.topLeftCorner<2, 2>() * D.inverse();

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "springlab/forces.hpp"
+#include "springlab/text.hpp"
 
 namespace springlab {
 
@@ -60,9 +61,15 @@ SolverErrorStudy solver_error(const Model& model, const State& state, double h, 
   }
   study.motion = rms(model, reference.x, state.x);
   const double scale = study.motion > 0.0 ? study.motion : 1.0;
-  for (Method m : {Method::LocalGlobal, Method::VBD, Method::XPBD, Method::ImplicitEuler}) {
+  // Every iterative row, then implicit Euler's conjugate gradients at the same iteration counts.
+  std::vector<Method> rows;
+  for (const MethodInfo& m : methods())
+    if (m.family == MethodFamily::Iterative) rows.push_back(m.id);
+  rows.push_back(Method::ImplicitEuler);
+  for (Method m : rows) {
     SolverErrorCurve curve;
     curve.method = m;
+    if (m == Method::ImplicitEuler) curve.note = N_(" (CG; linearised once: levels off)");
     for (int k = 1; k <= max_iterations; k *= 2) {
       StepSettings s = settings;
       if (m == Method::ImplicitEuler) {
