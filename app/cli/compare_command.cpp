@@ -206,7 +206,7 @@ Command add_compare_command(CLI::App& app) {
   add_sim_options(*c, o->sim);
   c->add_option("--methods", o->sweep.methods, "methods to compare, e.g. euler,rk4 (default: all)");
   c->add_option("--dt-range", o->sweep.dt_range, "LO:HI steps to sweep, log-spaced (default: dt/16 to 2 dt)");
-  c->add_option("--lang", o->lang, "language of the charts' titles, axes and legends: en (default) or zh-CN");
+  c->add_option("--lang", o->lang, "language of the charts' titles, axes and legends: " + language_list() + " (default en)");
   c->add_option("--points", o->sweep.points, "steps (and tolerances) per method (default 8)");
   c->add_option("--tol-range", o->sweep.tol_range, "LO:HI tolerances for the adaptive methods (default 1e-10:1e-4)");
   c->add_option("--repeats", o->sweep.repeats, "time each run this many times and keep the fastest (default 1)");

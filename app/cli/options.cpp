@@ -18,6 +18,20 @@ CLI::Validator whole_number(double lo, double hi) {
   return CLI::Validator([lo, hi](std::string& text) { return parse_whole_number(text, lo, hi); }, bounds.str());
 }
 
+namespace {
+
+// "xpbd: passes over the springs a step (default 1); local-global: ...": from the iterative rows.
+std::string iterations_help() {
+  std::string help;
+  for (const MethodInfo& m : methods())
+    if (m.default_iterations > 0)
+      help += (help.empty() ? "" : "; ") + std::string(m.name) + ": " + (m.iteration_unit ? m.iteration_unit : "iterations") +
+              " a step (default " + std::to_string(m.default_iterations) + ")";
+  return help;
+}
+
+}  // namespace
+
 void add_sim_options(CLI::App& c, SimOptions& o, bool with_length) {
   c.add_option("--method", o.method, "integration method (springlab list shows them)");
   c.add_option("--dt", o.dt, "time step in seconds (default: the scene's)");
@@ -32,8 +46,7 @@ void add_sim_options(CLI::App& c, SimOptions& o, bool with_length) {
   c.add_option("--ks", o.ks, "set every spring's stiffness k_s (N/m)");
   c.add_option("--kd", o.kd, "set every spring's damping k_d (N s/m)");
   c.add_option("--tol", o.tol, "tolerance of the adaptive methods (default: the scene's)");
-  c.add_option("--iterations", o.iterations,
-               "xpbd: passes over the springs a step (default 1); local-global, vbd: iterations a step (default 10)")
+  c.add_option("--iterations", o.iterations, iterations_help())
       ->transform(whole_number(kIterations.lo, kIterations.hi));
   c.add_option("--rho", o.rho, "local-global: Chebyshev acceleration with this spectral radius, in [0, 1) (default 0: off)");
   c.add_option("--set", o.sets, "KEY=VALUE: any other scene field, e.g. cloth.width=64")

@@ -359,7 +359,7 @@ Command add_render_command(CLI::App& app) {
   c->add_option("--size", o->size, "WIDTHxHEIGHT (default 1280x720)");
   c->add_flag("--ui", o->ui, "include the app's panels");
   c->add_option("--ui-scale", o->ui_scale, "size of the panels and text (default: height / 720)");
-  c->add_option("--lang", o->lang, "language of the panels and captions: en (default) or zh-CN");
+  c->add_option("--lang", o->lang, "language of the panels and captions: " + language_list() + " (default en)");
   c->add_option("--script", o->script, "play a scripted demo (JSON)");
   c->add_option("--compare", o->compare, "2 to 4 methods side by side, e.g. euler,verlet (IK scenes: solvers, e.g. ccd,fabrik,dls)");
   c->add_option("--select", o->select, "write only these frames, e.g. 0,60,120");

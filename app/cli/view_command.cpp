@@ -55,7 +55,7 @@ void add_options(CLI::App& c, ViewCli& o) {
   c.add_option("--keys", o.window.keys,
                "press these keys, one every other frame from the third, e.g. F6,Down,Space (the panels by keyboard, scripted)");
   c.add_option("--ui-scale", o.app.ui_scale, "size of the panels and text (times the monitor's scale)");
-  c.add_option("--lang", o.app.language, "language of the panels and lessons: en or zh-CN (default: LANG, LC_MESSAGES)");
+  c.add_option("--lang", o.app.language, "language of the panels and lessons: " + language_list() + " (default: LANG, LC_MESSAGES)");
   c.add_option("--size", o.size, "window size WIDTHxHEIGHT (default 1280x720)");
   c.add_flag("--accuracy", o.app.accuracy, "open the accuracy-against-cost panel and start its sweep");
   c.add_flag("--region", o.app.region, "open the stability region (key G), as a link's region=1");

@@ -633,9 +633,9 @@ void tools(app::Session& session, UiState& ui, const FrameStats& stats, float s,
     const std::string now = current_language();
     const auto& all = app::languages();
     const auto shown = std::find_if(all.begin(), all.end(), [&](const app::Language& l) { return now == l.tag; });
-    if (ImGui::BeginCombo(tr("language"), shown == all.end() ? now.c_str() : shown->name)) {
+    if (ImGui::BeginCombo(tr("language"), shown == all.end() ? now.c_str() : shown->name.c_str())) {
       for (const app::Language& l : all)
-        if (ImGui::Selectable(l.name, now == l.tag) && now != l.tag) requests.language = l.tag;
+        if (ImGui::Selectable(l.name.c_str(), now == l.tag) && now != l.tag) requests.language = l.tag;
       ImGui::EndCombo();
     }
   }

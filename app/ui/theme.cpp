@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -36,6 +37,25 @@ const ImWchar* translation_glyphs() {
   return ranges.data();
 }
 
+// `base` and, with a catalog, every character below U+2E80 in its strings, as ImGui's ranges.
+const ImWchar* translated_letters(const ImWchar* base) {
+  static std::vector<ImWchar> ranges;
+  const Catalog* catalog = current_catalog();
+  if (!catalog) return base;
+  ImFontGlyphRangesBuilder builder;
+  builder.AddRanges(base);
+  for (const auto& [english, translated] : catalog->entries) builder.AddText(translated.c_str());
+  ImVector<ImWchar> all;
+  builder.BuildRanges(&all);
+  ranges.clear();
+  for (int k = 0; k + 1 < all.Size; k += 2) {
+    const ImWchar from = all[k], to = std::min<ImWchar>(all[k + 1], 0x2E7F);
+    if (from <= to) ranges.insert(ranges.end(), {from, to});
+  }
+  ranges.push_back(0);
+  return ranges.data();
+}
+
 }  // namespace
 
 void apply_theme(float scale) {
@@ -47,8 +67,11 @@ void apply_theme(float scale) {
   // captions' (kCaptionScale), each drawn at its own size rather than stretched, so that it stays
   // sharp on a projector. The glyphs: Latin-1, Greek, punctuation, super- and subscripts, arrows
   // and math operators (core/src/loading/lesson.cpp lets a caption use exactly these).
-  static const ImWchar glyphs[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x205E, 0x2070, 0x209F,
-                                   0x2190, 0x21FF, 0x2200, 0x22FF, 0};
+  static const ImWchar base[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x205E, 0x2070, 0x209F,
+                                 0x2190, 0x21FF, 0x2200, 0x22FF, 0};
+  // With a translation, also the characters below U+2E80 its strings use (a Latin, Greek or
+  // Cyrillic language's letters, which DejaVu Sans has).
+  const ImWchar* glyphs = translated_letters(base);
   // In another language, its characters from the CJK font merged into each size (drawn at 1x: a
   // CJK glyph's strokes need no oversampling to stay sharp, and 2x would quadruple the atlas).
   const ImWchar* translated = translation_glyphs();

@@ -1,6 +1,9 @@
 // The language the app speaks (springlab/text.hpp): its catalogs are assets/locale/<tag>.po, read
 // once and kept; chosen by --lang or the environment on the desktop, by the page's language or a
-// link's lang= in the browser, and switched live from the View panel.
+// link's lang= in the browser, and switched live from the View panel. The languages are the
+// folder's files: a new one is its .po file (its header's X-Language-Name names it in the menu),
+// and nothing else; a script beyond DejaVu Sans' (ideographs, from U+2E80 on) is drawn from the
+// CJK font the build cuts to the catalogs' characters.
 #pragma once
 
 #include <string>
@@ -9,11 +12,13 @@
 namespace springlab::app {
 
 struct Language {
-  const char* tag;   // "zh-CN": the link's lang=, --lang, the catalog's file name
-  const char* name;  // in its own language, for the menu: "简体中文"
+  std::string tag;   // "zh-CN": the link's lang=, --lang, the catalog's file name
+  std::string name;  // in its own language, for the menu: "简体中文"
 };
-// English first (no catalog: the code's own strings), then each shipped translation.
+// English first (no catalog: the code's own strings), then each catalog in assets/locale/, by tag.
 const std::vector<Language>& languages();
+// "en, zh-CN": the tags, for help and messages.
+std::string language_list();
 
 // Makes `tag` (any form the environment uses: "zh_CN.UTF-8", "zh-Hans", "en-GB") the language
 // tr() translates to, loading its catalog the first time; returns the tag used ("zh-CN" or "en").

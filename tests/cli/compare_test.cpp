@@ -125,6 +125,39 @@ TEST_P(EveryScene, IsChartedWithoutError) {
 INSTANTIATE_TEST_SUITE_P(Scenes, EveryScene, ::testing::ValuesIn(shipped_scenes()),
                          [](const auto& info) { return scene_test_name(info.param); });
 
+// A new UI language is its .po file and nothing else (CONTRIBUTING.md, "A UI language"): a data
+// folder whose assets/locale/ holds one more catalog, in Czech, whose letters (c with caron)
+// are beyond Latin-1, is offered by --help, accepted by --lang in any of the environment's
+// forms, and speaks on the charts; a language with no catalog is still refused, naming both.
+TEST(Compare, ANewLanguageIsItsCatalogAlone) {
+  TempDir data;
+  fs::create_directories(data / "assets" / "locale");
+  for (const char* folder : {"scenes", "tableaux", "lessons", "scripts"})
+    fs::create_directory_symlink(fs::path(SPRINGLAB_SOURCE_DIR) / "assets" / folder, data / "assets" / folder);
+  fs::create_directory_symlink(fs::path(SPRINGLAB_SOURCE_DIR) / "shaders", data / "shaders");
+  fs::copy_file(fs::path(SPRINGLAB_SOURCE_DIR) / "assets/locale/zh-CN.po", data / "assets/locale/zh-CN.po");
+  write_file(data / "assets/locale/cs.po",
+             "msgid \"\"\nmsgstr \"\"\n\"Language: cs\\n\"\n\"X-Language-Name: \u010ce\u0161tina\\n\"\n"
+             "\"Content-Type: text/plain; charset=UTF-8\\n\"\n\n"
+             "#, c-format\nmsgid \"Convergence on %s: error against step (x = diverged)\"\n"
+             "msgstr \"Konvergence na %s: chyba podle kroku (x = divergence)\"\n\n"
+             "msgid \"step h (s)\"\nmsgstr \"krok h (s)\"\n");
+  const std::string with = "SPRINGLAB_DATA='" + data.path.string() + "' ";
+  const Result help = springlab_with(with, "compare --help");
+  EXPECT_NE(help.out.find("en, cs, zh-CN"), std::string::npos) << help.out;
+  TempDir out;
+  const Result r = springlab_with(with, "compare spring --methods euler,rk4 --points 3 --drift-duration 0 --software "
+                                        "--lang cs_CZ.UTF-8 --out " + out.path.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string svg = read_file(out / "convergence.svg");
+  EXPECT_NE(svg.find("Konvergence na spring: chyba podle kroku"), std::string::npos);
+  EXPECT_NE(svg.find("krok h (s)"), std::string::npos);
+  EXPECT_NE(svg.find("error (m)"), std::string::npos);  // (untranslated: the English)
+  const Result refused = springlab_with(with, "compare spring --lang de --out " + out.path.string());
+  EXPECT_EQ(refused.status, 2);
+  EXPECT_NE(refused.err.find("'de' is not a language springlab speaks (en, cs, zh-CN)"), std::string::npos) << refused.err;
+}
+
 TEST(Compare, BadOptionsExitTwo) {
   TempDir dir;
   const std::string out = " --out " + dir.path.string();

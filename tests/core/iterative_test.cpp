@@ -20,7 +20,9 @@
 namespace springlab {
 namespace {
 
-const Method kIterative[] = {Method::XPBD, Method::LocalGlobal, Method::VBD};
+// The iterative rows, from the table.
+const std::vector<Method> kIterative =
+    test::methods_where([](const MethodInfo& m) { return m.family == MethodFamily::Iterative; });
 
 // A small hanging cloth, damped along its springs and by drag, in motion.
 Scene moving_cloth() {

@@ -164,13 +164,13 @@ double largest_rms(const Model& model, const std::vector<Points>& a, const std::
 
 // On the swinging rope (four nodes, w_max about 40 rad/s), against RK4 at 1/20000 s: the slope of
 // log error against log h over h = 1/40 .. 1/320 s (h w_max 1 to 1/8) is the tableau's order
-// within 0.2: SDIRK3 3, SDIRK2 2, implicit midpoint 2, the trapezoidal rule 2.
+// within 0.2: SDIRK3 3, SDIRK2 2, implicit midpoint 2, the trapezoidal rule 2, Qin and Zhang 2.
 TEST(TableauMethods, DiagonallyImplicitTableauxHaveTheirOrdersOnASwingingRope) {
   const Scene scene = swinging_rope(4, 200.0, 0.2);
   const double duration = 1.0;
   const std::vector<Points> reference = samples(scene, Method::RK4, 20000, duration);
   for (const auto& [name, order] : {std::pair{"sdirk3", 3}, std::pair{"sdirk2", 2}, std::pair{"implicit-midpoint", 2},
-                                    std::pair{"trapezoidal", 2}}) {
+                                    std::pair{"trapezoidal", 2}, std::pair{"qin-zhang", 2}}) {
     SCOPED_TRACE(name);
     const Method m = row(name);
     std::vector<double> log_h, log_e;

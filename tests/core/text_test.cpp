@@ -87,10 +87,25 @@ TEST(Text, TranslatesWhatTheCatalogHasAndLeavesTheRestInEnglish) {
 }
 
 TEST(Text, ChineseInAnyFormIsSimplifiedChineseAndTheRestEnglish) {
+  const std::vector<std::string> shipped{"zh-CN"};
   for (const char* tag : {"zh_CN.UTF-8", "zh-CN", "zh", "zh-Hans-CN", "ZH_cn", "zh_SG", "zh-TW", "zh.GB18030"})
-    EXPECT_EQ(supported_language(tag), "zh-CN") << tag;
+    EXPECT_EQ(supported_language(tag, shipped), "zh-CN") << tag;
   for (const char* tag : {"en_US.UTF-8", "en-GB", "C", "POSIX", "", "fr_FR", "zhx"})
-    EXPECT_EQ(supported_language(tag), "en") << tag;
+    EXPECT_EQ(supported_language(tag, shipped), "en") << tag;
+}
+
+// A second catalog is found by its tag: the exact region first, then any of its language.
+TEST(Text, ALanguageIsMatchedByItsRegionThenByItsLanguage) {
+  const std::vector<std::string> spoken{"pt-BR", "pt-PT", "zh-CN", "fr"};
+  EXPECT_EQ(supported_language("pt_PT.UTF-8", spoken), "pt-PT");
+  EXPECT_EQ(supported_language("pt_BR", spoken), "pt-BR");
+  EXPECT_EQ(supported_language("pt", spoken), "pt-BR");
+  EXPECT_EQ(supported_language("fr_CA.UTF-8@euro", spoken), "fr");
+  EXPECT_EQ(supported_language("de_DE", spoken), "en");
+  EXPECT_EQ(language_tag("zh_CN.UTF-8"), "zh-CN");
+  EXPECT_EQ(language_tag("pt_br@euro"), "pt-BR");
+  EXPECT_EQ(language_tag("zh-hans-cn"), "zh-Hans-CN");
+  EXPECT_EQ(language_tag("fr"), "fr");
 }
 
 }  // namespace

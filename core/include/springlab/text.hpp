@@ -12,6 +12,7 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <vector>
 
 // Marks a string for extraction where tr() cannot run (a constant table); tr() it where shown.
 #define N_(english) english
@@ -26,7 +27,8 @@ struct Catalog {
     using is_transparent = void;
     std::size_t operator()(std::string_view s) const { return std::hash<std::string_view>{}(s); }
   };
-  std::string language;  // "zh-CN"
+  std::string language;  // "zh-CN": the header's Language
+  std::string name;      // "简体中文": the header's X-Language-Name, the language's own name for itself
   std::unordered_map<std::string, std::string, Hash, std::equal_to<>> entries;
 };
 
@@ -48,9 +50,15 @@ std::string tr(const std::string& english);
 // printf into a string: format_text(tr("h = %.4g s"), h).
 std::string format_text(const char* format, ...) __attribute__((format(printf, 1, 2)));
 
+// A language tag as the environment or a PO header gives it ("zh_CN.UTF-8", "pt_BR@euro") in the
+// form springlab names its catalogs: "zh-CN", "pt-BR" (language lower case, region upper case,
+// the encoding and modifier dropped).
+std::string language_tag(const std::string& tag);
+
 // A language tag as the environment gives it ("zh_CN.UTF-8", "zh-Hans-CN", "zh", "en-GB", "C") as
-// one springlab ships ("zh-CN") or "en": Chinese in any region or script is Simplified Chinese
-// (the one translation), everything else English.
-std::string supported_language(const std::string& tag);
+// one of the languages `spoken` (the catalogs' tags: "zh-CN", "fr") or "en": the same tag, else
+// the first spoken one of the same language (Chinese in any region or script is the shipped
+// Simplified Chinese; "fr-CA" is "fr"), else English.
+std::string supported_language(const std::string& tag, const std::vector<std::string>& spoken);
 
 }  // namespace springlab

@@ -77,12 +77,14 @@ Catalog read_po(const std::string& text, const std::string& origin) {
       }
       if (entry.id.empty()) {  // the header: "Language: zh_CN\n" among its fields
         std::istringstream fields(entry.str);
-        for (std::string field; std::getline(fields, field);)
-          if (field.rfind("Language:", 0) == 0) {
-            std::string tag = field.substr(9);
-            tag.erase(0, tag.find_first_not_of(' '));
-            catalog.language = supported_language(tag);
-          }
+        const auto value = [](const std::string& field, std::size_t from) {
+          const std::size_t start = field.find_first_not_of(' ', from);
+          return start == std::string::npos ? std::string() : field.substr(start);
+        };
+        for (std::string field; std::getline(fields, field);) {
+          if (field.rfind("Language:", 0) == 0) catalog.language = language_tag(value(field, 9));
+          if (field.rfind("X-Language-Name:", 0) == 0) catalog.name = value(field, 16);
+        }
       } else if (!entry.fuzzy && !entry.str.empty()) {
         catalog.entries[entry.has_context ? entry.context + '\x04' + entry.id : entry.id] = entry.str;
       }
@@ -171,12 +173,40 @@ std::string format_text(const char* format, ...) {
   return out;
 }
 
-std::string supported_language(const std::string& tag) {
-  std::string lower;
-  for (char ch : tag) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-  const bool chinese = lower == "zh" || lower.rfind("zh_", 0) == 0 || lower.rfind("zh-", 0) == 0 ||
-                       lower.rfind("zh.", 0) == 0;
-  return chinese ? "zh-CN" : "en";
+std::string language_tag(const std::string& tag) {
+  // Subtags by BCP 47's conventions: the language lower case, a script (four letters) title
+  // case, a region (two letters) upper case.
+  std::istringstream parts(tag.substr(0, tag.find_first_of(".@")));
+  std::string out;
+  for (std::string part; std::getline(parts, part, '-');) {
+    for (std::size_t from = 0;;) {  // (an underscore separates as a hyphen does)
+      const std::size_t to = part.find('_', from);
+      std::string sub = part.substr(from, to == std::string::npos ? std::string::npos : to - from);
+      for (std::size_t i = 0; i < sub.size(); ++i) {
+        const auto c = static_cast<unsigned char>(sub[i]);
+        const bool upper = !out.empty() && (sub.size() == 2 || (sub.size() == 4 && i == 0));
+        sub[i] = static_cast<char>(upper ? std::toupper(c) : std::tolower(c));
+      }
+      out += (out.empty() ? "" : "-") + sub;
+      if (to == std::string::npos) break;
+      from = to + 1;
+    }
+  }
+  return out;
+}
+
+std::string supported_language(const std::string& tag, const std::vector<std::string>& spoken) {
+  const std::string wanted = language_tag(tag);
+  const auto lower = [](std::string s) {
+    for (char& ch : s) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    return s;
+  };
+  const auto language = [&](const std::string& t) { return lower(t.substr(0, t.find('-'))); };
+  for (const std::string& s : spoken)
+    if (lower(s) == lower(wanted)) return s;
+  for (const std::string& s : spoken)
+    if (!wanted.empty() && language(s) == language(wanted)) return s;
+  return "en";
 }
 
 }  // namespace springlab
