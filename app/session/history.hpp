@@ -35,8 +35,13 @@ struct History {
   Series ik_error;    // IK scenes: the distance from the chain's end to the target (m)
   Series step;        // adaptive methods: the internal step their controller chose (s)
   Series rejected;    // adaptive methods: tries thrown away so far
+  // A free body (momentum.hpp): |P - P0| and |L - L0| against their scales since it became free
+  // (NaN while it is not).
+  Series linear_change, angular_change;
   void clear() {
-    for (Series* s : {&t, &kinetic, &potential, &total, &dissipated, &net, &x, &v, &exact_x, &ik_error, &step, &rejected}) s->clear();
+    for (Series* s : {&t, &kinetic, &potential, &total, &dissipated, &net, &x, &v, &exact_x, &ik_error, &step, &rejected,
+                      &linear_change, &angular_change})
+      s->clear();
   }
 };
 

@@ -138,6 +138,16 @@ void Session::set_compare_solvers(const std::vector<IkSolver>& solvers) {
 
 void Session::set_ik_iterations_per_frame(int iterations) { ik_iterations_ = std::clamp(iterations, 1, 10000); }
 
+namespace {
+
+bool moving(const Momentum& m, const Model& model) {
+  double mass = 0.0;
+  for (double each : model.mass) mass += each;
+  return m.linear_scale > 1e-9 * mass;
+}
+
+}  // namespace
+
 void Session::sample(Lane& lane) {
   const Simulation& sim = lane.sim;
   const Energy e = sim.energy();
@@ -159,8 +169,19 @@ void Session::sample(Lane& lane) {
   // two million take tens of milliseconds).
   if (!scene_.cells.empty() && (scene_.cells.size() <= 32768 || frame_ % 30 == 0))
     lane.inverted_cells = sim.diverged() ? 0 : springlab::inverted_cells(scene_.cells, sim.state().x);
-  if (!free_body(sim.model())) lane.free_since.reset();
-  else if (!lane.free_since) lane.free_since = momentum(sim.model(), sim.state());
+  // A free body's momentum from when it is free and moving: at rest its scale, sum m |v|, is
+  // rounding's, and a change against it noise over noise. Moving: a mean speed past 1 nm/s.
+  if (!free_body(sim.model())) {
+    lane.free_since.reset();
+  } else if (!lane.free_since || !moving(*lane.free_since, sim.model())) {
+    lane.free_since = momentum(sim.model(), sim.state());
+    if (!moving(*lane.free_since, sim.model())) lane.free_since.reset();
+  }
+  const MomentumChange change = lane.free_since && !sim.diverged()
+                                    ? momentum_change(*lane.free_since, momentum(sim.model(), sim.state()))
+                                    : MomentumChange{std::nan(""), std::nan("")};
+  h.linear_change.push(change.linear);
+  h.angular_change.push(change.angular);
   // Trails follow sane states only (a diverged lane's last good one may be far off).
   const bool sane = !sim.diverged() && lane.sane.t == t;
   for (std::size_t k = 0; k < lane.trails.size() && sane; ++k) {

@@ -50,8 +50,9 @@ struct Lane {
   // The last state that looked sane (positions within a few scene sizes of where they started):
   // what a diverged lane is drawn as, never its blown-up geometry.
   State sane;
-  // A free body's momentum (momentum.hpp) since it last became free (a drag pins what it holds),
-  // against which the gauge measures what the method changes of it; empty while not free.
+  // A free body's momentum (momentum.hpp) since it last became free (a drag pins what it holds)
+  // and moving, against which the gauge and the momentum chart measure what the method changes
+  // of it; empty while not free, or at rest.
   std::optional<Momentum> free_since;
   // How many of the scene's cells are inverted now (cells.hpp), counted as the lane is sampled.
   int inverted_cells = 0;

@@ -1,10 +1,12 @@
 #include "ui/live_charts.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "draw/marks.hpp"
 #include "draw/palette.hpp"
+#include "springlab/momentum.hpp"
 #include "springlab/text.hpp"
 
 namespace springlab::ui {
@@ -139,6 +141,46 @@ chart::Chart steps_chart(const app::Session& session) {
     if (!rejected.x.empty()) steps.series.push_back(std::move(rejected));
   }
   return steps;
+}
+
+// A free body's constants of the motion, lane by lane (momentum.hpp): the change of P (solid) and
+// of L (dashed) since it became free, against their scales, on a log scale from rounding
+// (1e-16, where an exact method's lines lie) to all of it. A lane that keeps them lies at the
+// bottom; kMomentumVisible (1e-3), where a change shows, is a dashed grey line.
+chart::Chart momentum_chart(const app::Session& session) {
+  constexpr double kRounding = 1e-16;
+  chart::Chart chart;
+  chart.title = tr("Momentum: change of P (solid) and L (dashed)");
+  chart.x.label = "t (s)";
+  chart.y.label = tr("|P - P0|, |L - L0| since free, of their scale");
+  chart.y.log = true;
+  chart.end_labels = true;
+  bool any = false;
+  for (const app::Lane& lane : session.lanes()) {
+    const app::History& h = lane.history;
+    for (const bool angular : {false, true}) {
+      chart::Series s = series(angular ? "" : app::lane_name(lane), draw::lane_color(lane), h.t,
+                               angular ? h.angular_change : h.linear_change, angular);
+      for (double& y : s.y) y = std::isnan(y) ? y : std::max(y, kRounding);
+      any = any || std::any_of(s.y.begin(), s.y.end(), [](double y) { return !std::isnan(y); });
+      s.mark = draw::lane_mark(lane);
+      chart.series.push_back(std::move(s));
+    }
+  }
+  if (!any) {
+    chart.series.clear();
+    chart.title = tr("Momentum: not a free body here (pins, gravity, drag or colliders act on it)");
+    return chart;
+  }
+  chart::Series visible;
+  visible.color = draw::Rgba{0.6f, 0.6f, 0.6f, 1};
+  visible.dashed = true;
+  visible.x = {chart.series.front().x.empty() ? 0.0 : chart.series.front().x.front(),
+               chart.series.front().x.empty() ? 1.0 : chart.series.front().x.back()};
+  visible.y = {kMomentumVisible, kMomentumVisible};
+  visible.label = tr("visible (1e-3)");
+  chart.series.push_back(std::move(visible));
+  return chart;
 }
 
 }  // namespace springlab::ui

@@ -1,6 +1,6 @@
 // The live charts of a session, as data (chart::Chart): the energy of each lane, the watched
-// particle's position (with the exact solution where there is one), its phase plot, and an
-// adaptive lane's step. The panels draw them (ui/panels.cpp) and the browser's accessible
+// particle's position (with the exact solution where there is one), its phase plot, an adaptive
+// lane's step, and what a free body's lanes keep of their momentum. The panels draw them (ui/panels.cpp) and the browser's accessible
 // document says them in words and gives their data (web/access.cpp, chart/chart_text.hpp).
 #pragma once
 
@@ -19,5 +19,6 @@ chart::Chart energy_chart(const app::Session& session);
 chart::Chart position_chart(const app::Session& session);
 chart::Chart phase_chart(const app::Session& session);
 chart::Chart steps_chart(const app::Session& session);
+chart::Chart momentum_chart(const app::Session& session);
 
 }  // namespace springlab::ui

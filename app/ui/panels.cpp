@@ -232,6 +232,7 @@ void charts(app::Session& session, float width, float height, bool presentation,
     if (c == LessonChart::Position) add(position_chart(session));
     if (c == LessonChart::Phase) add(phase_chart(session));
     if (c == LessonChart::Steps) add(steps_chart(session));
+    if (c == LessonChart::Momentum) add(momentum_chart(session));
     if (c == LessonChart::Region)
       for (chart::Chart& r : region_charts(session, none)) shown.push_back(std::move(r));
   }

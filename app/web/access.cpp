@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "springlab/energy.hpp"
+#include "springlab/momentum.hpp"
 #include "springlab/text.hpp"
 #include "ui/actions.hpp"
 #include "chart/chart_text.hpp"
@@ -38,6 +39,7 @@ std::vector<chart::Chart> charts(const InteractiveApp& app) {
   const Session& session = app.session();
   if (session.scene().ik) return {};  // (its chart is the solvers' distance: not yet said here)
   std::vector<chart::Chart> out = {ui::energy_chart(session), ui::position_chart(session), ui::phase_chart(session)};
+  if (free_body(session.primary().sim.model())) out.push_back(ui::momentum_chart(session));
   // The accuracy panel's charts, once its sweep has runs: the work-precision charts' slopes.
   if (app.accuracy().open) {
     const SweepResult result = app.accuracy().sweep.snapshot();

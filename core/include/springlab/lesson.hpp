@@ -73,7 +73,7 @@ struct LessonClaim {
 // Charts a step shows (in the app's charts panel, side by side): energy, the watched particle's
 // position (with the exact solution), its phase plot, an adaptive method's steps, the stability
 // region with the scene's modes.
-enum class LessonChart { Energy, Position, Phase, Steps, Region };
+enum class LessonChart { Energy, Position, Phase, Steps, Region, Momentum };
 
 struct LessonStep {
   std::string title;

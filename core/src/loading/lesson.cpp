@@ -252,7 +252,7 @@ LessonStep read_step(ObjectReader& r, const std::string& folder, const LessonSce
   if (const json* c = r.raw("chart")) {  // a name, or one or two in an array
     const std::vector<std::pair<std::string, LessonChart>> charts = {
         {"energy", LessonChart::Energy}, {"position", LessonChart::Position}, {"phase", LessonChart::Phase},
-        {"steps", LessonChart::Steps},   {"region", LessonChart::Region}};
+        {"steps", LessonChart::Steps},   {"region", LessonChart::Region}, {"momentum", LessonChart::Momentum}};
     std::vector<std::string> names;
     if (c->is_string()) names = {c->get<std::string>()};
     else if (c->is_array()) names = strings(r, "chart");
