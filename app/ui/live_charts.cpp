@@ -169,7 +169,9 @@ chart::Chart momentum_chart(const app::Session& session) {
   }
   if (!any) {
     chart.series.clear();
-    chart.title = tr("Momentum: not a free body here (pins, gravity, drag or colliders act on it)");
+    chart.title = free_body(session.primary().sim.model())
+                      ? tr("Momentum: a free body at rest (its P0 is taken once it moves)")
+                      : tr("Momentum: not a free body here (pins, gravity, drag or colliders act on it)");
     return chart;
   }
   chart::Series visible;

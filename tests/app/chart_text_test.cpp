@@ -111,6 +111,8 @@ TEST(ChartText, TheMomentumChartShowsWhatEachLaneKeeps) {
   app::Session session(std::move(scene), settings, 60.0);
   session.set_compare({Method::XPBD, Method::VBD});
   session.set_stiffness(20000.0);
+  session.advance_frame();  // free, at rest: nothing to keep yet, and said so
+  EXPECT_TRUE(has(ui::momentum_chart(session).title, "a free body at rest")) << ui::momentum_chart(session).title;
   session.grab(0);
   const Eigen::Vector3d start = session.primary().sim.state().x.row(0).transpose();
   for (int frame = 1; frame <= 15; ++frame) {
