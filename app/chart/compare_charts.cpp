@@ -135,7 +135,7 @@ Chart stability(const SweepResult& r, const std::string& scene) {
     s.mark = draw::method_mark(m.method);
     s.markers = true;
     s.width = 3.0f;
-    const bool plotted = std::isfinite(m.theoretical_stable_h) && m.theoretical_stable_h > 0 &&
+    const bool plotted = !m.measured_at_least && std::isfinite(m.theoretical_stable_h) && m.theoretical_stable_h > 0 &&
                          std::isfinite(m.measured_stable_h) && m.measured_stable_h > 0;
     char label[160];
     if (plotted) {
@@ -147,7 +147,8 @@ Chart stability(const SweepResult& r, const std::string& scene) {
       hi = std::max({hi, m.theoretical_stable_h, m.measured_stable_h});
     } else {
       std::snprintf(label, sizeof label, tr("%s: %s (theory: %s)"), method_info(m.method).name,
-                    step_text(m.measured_stable_h).c_str(), step_text(m.theoretical_stable_h).c_str());
+                    ((m.measured_at_least ? ">= " : "") + step_text(m.measured_stable_h)).c_str(),
+                    step_text(m.theoretical_stable_h).c_str());
     }
     s.label = label;
     c.series.push_back(std::move(s));

@@ -69,8 +69,9 @@ void write_csvs(const std::filesystem::path& dir, const SweepResult& r) {
   std::fprintf(summary.file(), "method,order_table,order_measured,fitted_points,stable_step_measured,"
                                "measured_resolution,stable_step_theoretical,theory_exact,ratio\n");
   for (const MethodSummary& m : r.methods) {
-    const bool finite = std::isfinite(m.measured_stable_h) && std::isfinite(m.theoretical_stable_h) &&
-                        m.theoretical_stable_h > 0;
+    // (measured_resolution inf: the budget ran out with every probe held, a lower bound)
+    const bool finite = !m.measured_at_least && std::isfinite(m.measured_stable_h) &&
+                        std::isfinite(m.theoretical_stable_h) && m.theoretical_stable_h > 0;
     std::fprintf(summary.file(), "%s,%d,%s,%d,%s,%s,%s,%d,%s\n", method_info(m.method).name, method_info(m.method).order,
                  std::isnan(m.order) ? "" : number(m.order).c_str(), m.fitted_points,
                  number(m.measured_stable_h).c_str(), number(m.measured_resolution).c_str(),
@@ -166,12 +167,13 @@ int compare(const CompareOptions& o) {
     char order[32];
     if (std::isnan(m.order)) std::snprintf(order, sizeof order, "n/a (%d)", method_info(m.method).order);
     else std::snprintf(order, sizeof order, "%.2f (%d)", m.order, method_info(m.method).order);
-    const bool finite = std::isfinite(m.measured_stable_h) && std::isfinite(m.theoretical_stable_h) &&
-                        m.theoretical_stable_h > 0;
+    const bool finite = !m.measured_at_least && std::isfinite(m.measured_stable_h) &&
+                        std::isfinite(m.theoretical_stable_h) && m.theoretical_stable_h > 0;
     char ratio[16] = "";
     if (finite) std::snprintf(ratio, sizeof ratio, "%.3f", m.measured_stable_h / m.theoretical_stable_h);
     std::string measured = step_text(m.measured_stable_h), theory = step_text(m.theoretical_stable_h);
-    if (finite && m.measured_resolution > 0.0) {
+    if (m.measured_at_least) measured = ">= " + measured + " (budget)";
+    else if (finite && m.measured_resolution > 0.0) {
       char within[32];
       std::snprintf(within, sizeof within, " (+%.1f %%)", 100.0 * m.measured_resolution);
       measured += within;

@@ -541,6 +541,28 @@ TEST(Analysis, RunsFindTheAnalysisLimits) {
   EXPECT_TRUE(std::isinf(measured_limit(Method::ImplicitEuler, s.model, s.state, a.limit(Method::ImplicitEuler), a.w_max()).h));
 }
 
+// The budget bounds the probes upwards too. Implicit Euler on a 16 x 16 cloth with a budget of
+// 1e5 particle- and spring-steps, less than one probe's 200 steps: the measurement stops after
+// the first probe that held and says "at least", where it had run 10 probes up to h w = 1000 and
+// said "always". Within its budget it still finds it stable at any step.
+TEST(Analysis, TheBudgetBoundsTheProbesOfAMethodStableAtAnyStep) {
+  const Scene cloth = test::shipped("cloth", {"cloth.width=16", "cloth.height=16"});
+  const StabilityAnalysis a(cloth.model, cloth.state);
+  const MeasuredLimit spent = measured_limit(Method::ImplicitEuler, cloth.model, cloth.state,
+                                             a.limit(Method::ImplicitEuler), a.w_max(), {}, 1e5);
+  EXPECT_TRUE(spent.at_least);
+  EXPECT_TRUE(std::isfinite(spent.h));
+  EXPECT_GE(spent.h * a.w_max(), 1.0 - 1e-12);  // the first probe, at h w = 1, held
+  EXPECT_TRUE(std::isinf(spent.resolution));
+  // Within its budget, the same method on the damped spring: probed to h w = 1000, "always".
+  const Scene spring = test::shipped("damped-spring");
+  const StabilityAnalysis b(spring.model, spring.state);
+  const MeasuredLimit always =
+      measured_limit(Method::ImplicitEuler, spring.model, spring.state, b.limit(Method::ImplicitEuler), b.w_max());
+  EXPECT_FALSE(always.at_least);
+  EXPECT_TRUE(std::isinf(always.h));
+}
+
 // The quick bound a lane starts with while the analysis runs (quick_limit) is safe: never above
 // the exact limit on the shipped scenes with springs, for every fixed-step method; and it tells
 // (is above 0) for the methods stable without damping. How far below: printed.

@@ -232,12 +232,16 @@ SubstepChoice choose_substeps(const StabilityLimit& limit, double dt, double fra
 /// (particle- and spring-steps; 2e8 is about a second here), a probe at most a twentieth of it;
 /// the bracket stops narrowing where runs would have to be longer or the budget is spent, and
 /// `resolution` says how far it got. 0 = unstable from h w = 0.3 (or guess / 1000) down,
-/// infinity = stable past 1000 guess, NaN for the adaptive methods.
+/// infinity = stable past 1000 guess, NaN for the adaptive methods. The budget holds for the
+/// probes upwards too: where it runs out while every step probed held (a method stable at any
+/// step, on a large scene), h is the largest step probed and `at_least` says so.
 struct MeasuredLimit {
   double h = 0.0;
   /// Relative: the bracket's width, or how far past a limit growth is too slow for the runs to
-  /// see, whichever is larger. The true limit is within it of h.
+  /// see, whichever is larger. The true limit is within it of h (infinite with `at_least`).
   double resolution = 0.0;
+  /// Every probe held up to h, and the budget was spent: stable at least to h, not probed past.
+  bool at_least = false;
 };
 /// `w_max` sets the scale when the expected limit has no mode (0 or infinity).
 MeasuredLimit measured_limit(Method method, const Model& model, const State& state, const StabilityLimit& expected,

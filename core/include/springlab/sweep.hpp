@@ -76,6 +76,7 @@ struct MethodSummary {
   /// measured_resolution (relative), and the analysis's (exact, or a lower bound).
   double measured_stable_h = std::numeric_limits<double>::quiet_NaN();
   double measured_resolution = 0.0;
+  bool measured_at_least = false;  ///< the budget ran out with every probe held: stable at least to it
   double theoretical_stable_h = std::numeric_limits<double>::quiet_NaN();
   bool theory_exact = true;
 };

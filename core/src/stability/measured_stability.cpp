@@ -249,7 +249,14 @@ MeasuredLimit measured_limit(Method method, const Model& model, const State& sta
   };
   double lo = guess, hi = guess;
   if (holds(guess, length(guess))) {
-    for (hi = guess * 1.25; holds(hi, length(hi)); hi *= 2.0) {
+    for (hi = guess * 1.25;; hi *= 2.0) {
+      if (spent > budget) {  // every step probed held, and no more runs: stable at least to lo
+        out.h = lo;
+        out.resolution = kInf;
+        out.at_least = true;
+        return out;
+      }
+      if (!holds(hi, length(hi))) break;
       lo = hi;
       if (hi > 1e3 * guess) {
         out.h = kInf;

@@ -274,6 +274,7 @@ struct SweepPlan {
           measured_limit(list[j], model, initial, limit, analysis->w_max(), settings.step, settings.stability_budget);
       s.measured_stable_h = measured.h;
       s.measured_resolution = measured.resolution;
+      s.measured_at_least = measured.at_least;
       return nullptr;
     }
     j -= stability_jobs;
