@@ -66,30 +66,8 @@ FloatFactor single_precision(const LocalGlobalSolver& S) {
 }
 void solve_in_place_float(const LocalGlobalSolver& S, const FloatFactor& f, std::vector<float>& z) {
   const auto& L = S.factor.matrixL().nestedExpression();
-  const int rows = static_cast<int>(L.cols());
-  const int* begin = L.outerIndexPtr();
-  const int* index = L.innerIndexPtr();
-  const float* value = f.value.data();
-  float* Z = z.data();
-  for (int j = 0; j < rows; ++j) {
-    const float y0 = Z[3 * j], y1 = Z[3 * j + 1], y2 = Z[3 * j + 2];
-    for (int p = begin[j]; p < begin[j + 1]; ++p) {
-      float* r = Z + 3 * index[p];
-      r[0] -= value[p] * y0, r[1] -= value[p] * y1, r[2] -= value[p] * y2;
-    }
-  }
-  for (int j = 0; j < rows; ++j) {
-    const float inv = f.inv_d[static_cast<std::size_t>(j)];
-    Z[3 * j] *= inv, Z[3 * j + 1] *= inv, Z[3 * j + 2] *= inv;
-  }
-  for (int j = rows - 1; j >= 0; --j) {
-    float s0 = Z[3 * j], s1 = Z[3 * j + 1], s2 = Z[3 * j + 2];
-    for (int p = begin[j]; p < begin[j + 1]; ++p) {
-      const float* r = Z + 3 * index[p];
-      s0 -= value[p] * r[0], s1 -= value[p] * r[1], s2 -= value[p] * r[2];
-    }
-    Z[3 * j] = s0, Z[3 * j + 1] = s1, Z[3 * j + 2] = s2;
-  }
+  local_global_parts::solve_ldlt3(static_cast<int>(L.cols()), L.outerIndexPtr(), L.innerIndexPtr(), f.value.data(),
+                                  f.inv_d.data(), z.data());
 }
 
 // Local-global's floor on the same cloths: one local pass and one pair of triangular solves (of

@@ -16,44 +16,40 @@ namespace springlab::ui {
 
 namespace {
 
-// The glyphs a translation needs beyond DejaVu's: every character from U+2E80 on (CJK punctuation,
-// ideographs, full-width forms) in the current catalog's strings, as ImGui's ranges (pairs, 0
-// ended). scripts/i18n/cjk_font.py keeps exactly these in the font, by the same rule.
-const ImWchar* translation_glyphs() {
-  static std::vector<ImWchar> ranges;
-  ranges.clear();
-  const Catalog* catalog = current_catalog();
-  if (!catalog) return nullptr;
+// The characters of `base` (ImGui's ranges, 0 ended; may be null) and of the current catalog's
+// strings that lie in [lo, hi], as ranges in `out` (pairs, 0 ended); null if there are none.
+const ImWchar* clipped_ranges(const Catalog& catalog, const ImWchar* base, ImWchar lo, ImWchar hi,
+                              std::vector<ImWchar>& out) {
   ImFontGlyphRangesBuilder builder;
-  for (const auto& [english, translated] : catalog->entries) builder.AddText(translated.c_str());
+  if (base) builder.AddRanges(base);
+  for (const auto& [english, translated] : catalog.entries) builder.AddText(translated.c_str());
   ImVector<ImWchar> all;
   builder.BuildRanges(&all);
+  out.clear();
   for (int k = 0; k + 1 < all.Size; k += 2) {
-    const ImWchar from = std::max<ImWchar>(all[k], 0x2E80), to = all[k + 1];
-    if (from <= to) ranges.insert(ranges.end(), {from, to});
+    const ImWchar from = std::max(all[k], lo), to = std::min(all[k + 1], hi);
+    if (from <= to) out.insert(out.end(), {from, to});
   }
-  if (ranges.empty()) return nullptr;
-  ranges.push_back(0);
-  return ranges.data();
+  if (out.empty()) return nullptr;
+  out.push_back(0);
+  return out.data();
 }
 
-// `base` and, with a catalog, every character below U+2E80 in its strings, as ImGui's ranges.
+// The glyphs a translation needs beyond DejaVu's: every character from U+2E80 on (CJK punctuation,
+// ideographs, full-width forms) in the current catalog's strings. scripts/i18n/cjk_font.py keeps
+// exactly these in the font, by the same rule.
+const ImWchar* translation_glyphs() {
+  static std::vector<ImWchar> ranges;
+  const Catalog* catalog = current_catalog();
+  return catalog ? clipped_ranges(*catalog, nullptr, 0x2E80, 0xFFFF, ranges) : nullptr;
+}
+
+// `base` and, with a catalog, every character below U+2E80 in its strings (a Latin, Greek or
+// Cyrillic language's letters, which DejaVu Sans has).
 const ImWchar* translated_letters(const ImWchar* base) {
   static std::vector<ImWchar> ranges;
   const Catalog* catalog = current_catalog();
-  if (!catalog) return base;
-  ImFontGlyphRangesBuilder builder;
-  builder.AddRanges(base);
-  for (const auto& [english, translated] : catalog->entries) builder.AddText(translated.c_str());
-  ImVector<ImWchar> all;
-  builder.BuildRanges(&all);
-  ranges.clear();
-  for (int k = 0; k + 1 < all.Size; k += 2) {
-    const ImWchar from = all[k], to = std::min<ImWchar>(all[k + 1], 0x2E7F);
-    if (from <= to) ranges.insert(ranges.end(), {from, to});
-  }
-  ranges.push_back(0);
-  return ranges.data();
+  return catalog ? clipped_ranges(*catalog, base, 0x0001, 0x2E7F, ranges) : base;
 }
 
 }  // namespace
@@ -69,8 +65,7 @@ void apply_theme(float scale) {
   // and math operators (core/src/loading/lesson.cpp lets a caption use exactly these).
   static const ImWchar base[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x205E, 0x2070, 0x209F,
                                  0x2190, 0x21FF, 0x2200, 0x22FF, 0};
-  // With a translation, also the characters below U+2E80 its strings use (a Latin, Greek or
-  // Cyrillic language's letters, which DejaVu Sans has).
+  // With a translation, also the letters below U+2E80 its strings use.
   const ImWchar* glyphs = translated_letters(base);
   // In another language, its characters from the CJK font merged into each size (drawn at 1x: a
   // CJK glyph's strokes need no oversampling to stay sharp, and 2x would quadruple the atlas).

@@ -100,35 +100,11 @@ void factorise(const Model& model, double h, const std::vector<double>& mass, Lo
   S.rhs.assign(3 * rows, 0.0);
 }
 
-// (L D L^T) z = b in place, b and z in the factor's order, three columns interleaved (x y z a
-// row): each entry of L read once for all three, where Eigen's solve reads L once a column.
-// L is unit lower triangular, compressed columns without the diagonal (SimplicialLDLT's).
+// (L D L^T) z = b in place, b and z in the factor's order (local_global.hpp, solve_ldlt3).
 void solve_in_place(const LocalGlobalSolver& S, std::vector<double>& z) {
   const auto& L = S.factor.matrixL().nestedExpression();
-  const int rows = static_cast<int>(L.cols());
-  const int* begin = L.outerIndexPtr();
-  const int* index = L.innerIndexPtr();
-  const double* value = L.valuePtr();
-  double* Z = z.data();
-  for (int j = 0; j < rows; ++j) {  // L y = b
-    const double y0 = Z[3 * j], y1 = Z[3 * j + 1], y2 = Z[3 * j + 2];
-    for (int p = begin[j]; p < begin[j + 1]; ++p) {
-      double* r = Z + 3 * index[p];
-      r[0] -= value[p] * y0, r[1] -= value[p] * y1, r[2] -= value[p] * y2;
-    }
-  }
-  for (int j = 0; j < rows; ++j) {  // D w = y
-    const double inv = S.inv_d[j];
-    Z[3 * j] *= inv, Z[3 * j + 1] *= inv, Z[3 * j + 2] *= inv;
-  }
-  for (int j = rows - 1; j >= 0; --j) {  // L^T z = w
-    double s0 = Z[3 * j], s1 = Z[3 * j + 1], s2 = Z[3 * j + 2];
-    for (int p = begin[j]; p < begin[j + 1]; ++p) {
-      const double* r = Z + 3 * index[p];
-      s0 -= value[p] * r[0], s1 -= value[p] * r[1], s2 -= value[p] * r[2];
-    }
-    Z[3 * j] = s0, Z[3 * j + 1] = s1, Z[3 * j + 2] = s2;
-  }
+  solve_ldlt3(static_cast<int>(L.cols()), L.outerIndexPtr(), L.innerIndexPtr(), L.valuePtr(), S.inv_d.data(),
+              z.data());
 }
 
 // The local step for `count` springs of a span (spring k joins a0 + k and b0 + k), from the

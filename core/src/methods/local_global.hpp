@@ -15,4 +15,31 @@ void global_rhs(const Model& model, const State& in, double h, const Points& X, 
 // The global solve: (L D L^T) z = z in place, the factor's order, x y z interleaved.
 void solve_in_place(const LocalGlobalSolver& S, std::vector<double>& z);
 
+// (L D L^T) z = b in place, three right sides interleaved (x y z a row): each entry of L read
+// once for all three, where Eigen's solve reads L once a column. L is unit lower triangular,
+// `rows` compressed columns without the diagonal (SimplicialLDLT's: begin, index, value), D^-1
+// in inv_d. In T: double in the solver; the benchmark also times float.
+template <typename T>
+void solve_ldlt3(int rows, const int* begin, const int* index, const T* value, const T* inv_d, T* Z) {
+  for (int j = 0; j < rows; ++j) {  // L y = b
+    const T y0 = Z[3 * j], y1 = Z[3 * j + 1], y2 = Z[3 * j + 2];
+    for (int p = begin[j]; p < begin[j + 1]; ++p) {
+      T* r = Z + 3 * index[p];
+      r[0] -= value[p] * y0, r[1] -= value[p] * y1, r[2] -= value[p] * y2;
+    }
+  }
+  for (int j = 0; j < rows; ++j) {  // D w = y
+    const T inv = inv_d[j];
+    Z[3 * j] *= inv, Z[3 * j + 1] *= inv, Z[3 * j + 2] *= inv;
+  }
+  for (int j = rows - 1; j >= 0; --j) {  // L^T z = w
+    T s0 = Z[3 * j], s1 = Z[3 * j + 1], s2 = Z[3 * j + 2];
+    for (int p = begin[j]; p < begin[j + 1]; ++p) {
+      const T* r = Z + 3 * index[p];
+      s0 -= value[p] * r[0], s1 -= value[p] * r[1], s2 -= value[p] * r[2];
+    }
+    Z[3 * j] = s0, Z[3 * j + 1] = s1, Z[3 * j + 2] = s2;
+  }
+}
+
 }  // namespace springlab::local_global_parts
