@@ -55,22 +55,6 @@ void parse_size(const std::string& text, int& width, int& height) {
                      text + "'");
 }
 
-// For an inverse-kinematics scene, --compare names solvers.
-std::vector<IkSolver> parse_solvers(const std::string& list) {
-  std::vector<IkSolver> out;
-  std::stringstream s(list);
-  for (std::string name; std::getline(s, name, ',');) {
-    const auto solver = find_ik_solver(name);
-    if (!solver)
-      throw InputError("--compare: unknown solver '" + name + "' (this is an inverse-kinematics scene; solvers: " +
-                       ik_solver_names() + ")");
-    out.push_back(*solver);
-  }
-  if (out.size() < 2 || out.size() > Session::kMaxLanes)
-    throw InputError("--compare: give 2 or more solvers separated by commas, e.g. ccd,fabrik,dls");
-  return out;
-}
-
 // A folder made for the output, removed again if the render fails before putting anything in it.
 struct MadeFolder {
   std::filesystem::path path;
@@ -186,12 +170,9 @@ Plan plan_shots(const RenderOptions& o, float scale) {
     if (o.frames) frames = std::min(frames, *o.frames);
   } else {
     Prepared p = prepare(o.scene, o.sim);
-    std::vector<Method> compare;
-    std::vector<IkSolver> compare_solvers;
-    if (o.compare) {
-      if (p.scene.ik) compare_solvers = parse_solvers(*o.compare);
-      else compare = parse_compare(*o.compare, "--compare");
-    }
+    // --compare names the scene kind's rows: methods, or an IK scene's solvers.
+    std::vector<int> compare;
+    if (o.compare) compare = make_scene_kind(p.scene)->lanes_named(*o.compare, "--compare");
     std::optional<Script> script;
     if (o.script) script = load_script(*o.script, p.scene);
     const double duration = o.duration ? *o.duration : script ? std::max(script->end_time() + 1.0, 1.0) : p.scene.duration;
@@ -199,8 +180,7 @@ Plan plan_shots(const RenderOptions& o, float scale) {
     name = p.scene.name;
     Shot shot;
     shot.session = std::make_unique<Session>(std::move(p.scene), p.settings, o.fps);
-    if (!compare.empty()) shot.session->set_compare(compare);
-    if (!compare_solvers.empty()) shot.session->set_compare_solvers(compare_solvers);
+    if (!compare.empty()) shot.session->set_compare_rows(compare);
     if (script) shot.session->play(*script);
     for (Lane& lane : shot.session->lanes()) warn_if_unstable(lane.sim, name);
     shot.ui = shot_ui(*shot.session, name, scale);

@@ -10,7 +10,6 @@
 #include <vector>
 
 #include "session/session.hpp"
-#include "springlab/ik.hpp"
 #include "springlab/methods.hpp"
 
 namespace springlab::draw {
@@ -45,18 +44,11 @@ inline std::vector<std::array<float, 2>> mark_outline(Mark m) {
 // A method's mark: its row's (methods/table.cpp).
 inline Mark method_mark(Method m) { return method_info(m).mark; }
 
-// A lane's: its row's, its IK solver's, or for a lane of one's own (homework) a cross or a plus
-// (the reference lanes beside it are the Euler rows' and Verlet's).
+// A lane's: its row's (a method's or an IK solver's), or for a lane of one's own (homework) a cross
+// or a plus (the reference lanes beside it are the Euler rows' and Verlet's).
 inline Mark lane_mark(const app::Lane& lane) {
   if (!lane.own.empty()) return lane.own_index % 2 == 0 ? Mark::Cross : Mark::Plus;
-  if (lane.ik) {
-    switch (lane.ik->solver) {
-      case IkSolver::CCD: return Mark::TriangleUp;
-      case IkSolver::FABRIK: return Mark::Circle;
-      case IkSolver::DLS: return Mark::Square;
-    }
-  }
-  return method_mark(lane.sim.settings().method);
+  return app::lane_row(lane).mark;
 }
 
 }  // namespace springlab::draw

@@ -9,7 +9,6 @@
 
 #include "draw/frame.hpp"
 #include "session/session.hpp"
-#include "springlab/ik.hpp"
 #include "springlab/methods.hpp"
 
 namespace springlab::draw {
@@ -21,19 +20,12 @@ inline Rgba method_color(Method m) {
   return {c[0], c[1], c[2], 1};
 }
 
-// A lane's colour: its row's, its IK solver's, or, for a lane of one's own (homework), one of two
-// kept for those, apart from every row's: white and rose.
-inline Rgba lane_color(const app::Lane& lane);
+// A lane row's colour (a method's or an IK solver's: its table's).
+inline Rgba row_color(const app::LaneRow& row) { return {row.colour[0], row.colour[1], row.colour[2], 1}; }
 
-// The IK solvers, distinct from one another in compare mode (the same hues).
-inline Rgba solver_color(IkSolver s) {
-  switch (s) {
-    case IkSolver::CCD: return {0.90f, 0.38f, 0.00f, 1};     // vermilion
-    case IkSolver::FABRIK: return {0.34f, 0.71f, 0.91f, 1};  // sky blue
-    case IkSolver::DLS: return {0.00f, 0.66f, 0.48f, 1};     // bluish green
-  }
-  return {1, 1, 1, 1};
-}
+// A lane's colour: its row's, or, for a lane of one's own (homework), one of two kept for those,
+// apart from every row's: white and rose.
+inline Rgba lane_color(const app::Lane& lane);
 
 // A lane that diverged is faded, its label in this red.
 inline constexpr Rgba kDiverged{1.0f, 0.36f, 0.32f, 1};
@@ -58,8 +50,8 @@ inline Rgba strain_color(double strain, double scale) {
 }
 
 inline constexpr Rgba kGrabbed{1.0f, 0.85f, 0.2f, 1};
-inline constexpr Rgba kTarget{1.0f, 0.30f, 0.35f, 1};     // an IK chain's target
-inline constexpr Rgba kReach{0.60f, 0.64f, 0.70f, 0.45f};  // the circles an IK chain can reach
+inline constexpr Rgba kTarget{1.0f, 0.30f, 0.35f, 1};     // a scene kind's handle (an IK chain's target)
+inline constexpr Rgba kReach{0.60f, 0.64f, 0.70f, 0.45f};  // a scene kind's guides (what an IK chain can reach)
 inline constexpr Rgba kAttractor{0.62f, 0.45f, 0.95f, 1};
 inline constexpr Rgba kParticle{0.92f, 0.93f, 0.95f, 1};
 inline constexpr Rgba kClothFront{0.93f, 0.55f, 0.28f, 1};
@@ -69,7 +61,7 @@ inline constexpr Rgba kCollider{0.55f, 0.58f, 0.64f, 1};
 inline Rgba lane_color(const app::Lane& lane) {
   static constexpr Rgba kOwn[] = {{0.96f, 0.96f, 0.96f, 1}, {1.00f, 0.36f, 0.54f, 1}};  // white, rose #FF5C8A
   if (!lane.own.empty()) return kOwn[static_cast<std::size_t>(lane.own_index) % std::size(kOwn)];
-  return lane.ik ? solver_color(lane.ik->solver) : method_color(lane.sim.settings().method);
+  return row_color(app::lane_row(lane));
 }
 
 }  // namespace springlab::draw

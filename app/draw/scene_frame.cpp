@@ -83,19 +83,16 @@ Frame build_frame(const app::Session& session, const ViewOptions& options, Viewp
   // Attractors: a small ball at the centre, the size of the softening.
   for (const Attractor& a : model.attractors)
     frame.spheres.push_back({a.center.cast<float>(), static_cast<float>(std::min(a.softening, 2.0 * options.spacing)), kAttractor});
-  // An IK chain: the circles bounding what its end can reach (reach, and the inner one, if any).
-  if (scene.ik) {
-    const IkChain& chain = scene.ik->chain;
-    const Vec3f base(static_cast<float>(chain.base.x()), static_cast<float>(chain.base.y()), 0.0f);
-    for (double r : {chain.reach(), chain.inner_reach()}) {
-      if (!(r > 0.0)) continue;
-      constexpr int kSegments = 128;
-      for (int k = 0; k < kSegments; ++k) {
-        const double a0 = 2 * std::numbers::pi * k / kSegments, a1 = 2 * std::numbers::pi * (k + 1) / kSegments;
-        const Vec3f p0 = base + static_cast<float>(r) * Vec3f(std::cos(a0), std::sin(a0), 0.0f);
-        const Vec3f p1 = base + static_cast<float>(r) * Vec3f(std::cos(a1), std::sin(a1), 0.0f);
-        frame.lines.push_back({p0, p1, kReach, kReach, 1.5f});
-      }
+  // The kind's guides (an IK chain: the circles bounding what its end can reach), in the x-y plane.
+  const app::SceneKind& kind = session.kind();
+  for (const app::GuideCircle& guide : kind.guides()) {
+    const Vec3f centre = guide.centre.cast<float>();
+    constexpr int kSegments = 128;
+    for (int k = 0; k < kSegments; ++k) {
+      const double a0 = 2 * std::numbers::pi * k / kSegments, a1 = 2 * std::numbers::pi * (k + 1) / kSegments;
+      const Vec3f p0 = centre + static_cast<float>(guide.radius) * Vec3f(std::cos(a0), std::sin(a0), 0.0f);
+      const Vec3f p1 = centre + static_cast<float>(guide.radius) * Vec3f(std::cos(a1), std::sin(a1), 0.0f);
+      frame.lines.push_back({p0, p1, kReach, kReach, 1.5f});
     }
   }
 
@@ -116,7 +113,7 @@ Frame build_frame(const app::Session& session, const ViewOptions& options, Viewp
         const double l = (state.x.row(b) - state.x.row(a)).norm();
         const double rest = m.rest_length[k];
         const double strain = rest > 0 ? (l - rest) / rest : 0.0;
-        const Rgba c = compare || lane.ik ? tint : strain_color(strain, options.strain_scale);
+        const Rgba c = compare || !kind.strained() ? tint : strain_color(strain, options.strain_scale);
         frame.lines.push_back({f(state.x.row(a)), f(state.x.row(b)), c, c, line_width});  // (sane state when diverged)
       }
     }
@@ -145,7 +142,7 @@ Frame build_frame(const app::Session& session, const ViewOptions& options, Viewp
       }
       const bool pinned = scene.model.pinned(i);
       if (!options.particles && !pinned && !held && !(scene.surfaces.empty())) continue;
-      if (scene.ik && i == scene.ik->target) {
+      if (i == kind.handle()) {
         const float size = std::max(1.4f * radius, 8.0f * wpp);  // big enough to grab
         frame.particles.push_back({f(state.x.row(i)), held ? 1.2f * size : size, held ? kGrabbed : kTarget, false});
         continue;

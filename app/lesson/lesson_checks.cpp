@@ -8,6 +8,7 @@
 #include <Eigen/Dense>
 
 #include "lesson/lesson_library.hpp"
+#include "session/ik_kind.hpp"
 #include "chart/compare_charts.hpp"
 #include "springlab/energy.hpp"
 #include "springlab/iterative_cost.hpp"
@@ -96,8 +97,7 @@ void record(const Lane& lane, int frame, Record& r) {
 // The lane a claim names (a method's or a solver's name), or the first.
 const Lane& lane_of(const Session& session, const std::string& name) {
   for (const Lane& lane : session.lanes()) {
-    const std::string own = lane.ik ? ik_solver_info(lane.ik->solver).name : method_info(lane.sim.settings().method).name;
-    if (own == name) return lane;
+    if (lane_row(lane).name == name) return lane;
   }
   return session.lanes().front();
 }
@@ -354,7 +354,7 @@ void judge_solvers_and_scenes(const Window& w, ClaimResult& out) {
       break;
     }
     case K::OutOfReach: {
-      const IkLane& ik = *lane.ik;
+      const IkLane& ik = ik_lane(lane);
       const Eigen::Vector2d base = ik.chain.base, to = ik.target - base;
       const double reach = ik.chain.reach();
       const Eigen::Vector2d along = base + to.normalized() * reach;
@@ -369,9 +369,9 @@ void judge_solvers_and_scenes(const Window& w, ClaimResult& out) {
       bool converged = true;
       const auto lanes = session.lanes();
       for (std::size_t a = 0; a < lanes.size(); ++a) {
-        converged = converged && lanes[a].ik->status.converged;
+        converged = converged && ik_lane(lanes[a]).status.converged;
         for (std::size_t b = a + 1; b < lanes.size(); ++b) {
-          const auto pa = lanes[a].ik->chain.positions(), pb = lanes[b].ik->chain.positions();
+          const auto pa = ik_lane(lanes[a]).chain.positions(), pb = ik_lane(lanes[b]).chain.positions();
           double apart = 0.0;
           for (std::size_t j = 0; j < pa.size(); ++j) apart = std::max(apart, (pa[j] - pb[j]).norm());
           closest = std::min(closest, apart);

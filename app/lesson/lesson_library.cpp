@@ -60,17 +60,14 @@ StepSetup setup_step(const LessonStep& step) {
   o.kd = step.kd;
   o.iterations = step.iterations;
   o.sets = step.sets;
-  StepSetup setup{prepare(step.scene, o), {}, {}};
-  for (const std::string& lane : step.compare) {
-    if (setup.prepared.scene.ik) setup.solvers.push_back(*find_ik_solver(lane));
-    else setup.compare.push_back(*find_method(lane));
-  }
+  StepSetup setup{prepare(step.scene, o), {}};
+  const std::unique_ptr<SceneKind> kind = make_scene_kind(setup.prepared.scene);
+  for (const std::string& lane : step.compare) setup.compare.push_back(*kind->find(lane));  // (checked as the lesson loaded)
   return setup;
 }
 
 void begin_step(Session& session, const LessonStep& step, const StepSetup& setup) {
-  if (!setup.compare.empty()) session.set_compare(setup.compare);
-  if (!setup.solvers.empty()) session.set_compare_solvers(setup.solvers);
+  if (!setup.compare.empty()) session.set_compare_rows(setup.compare);
   session.set_speed(step.speed);
   if (!step.script.events.empty()) session.play(step.script);
 }

@@ -27,11 +27,10 @@ int course_number(const Lesson& lesson);
 void check_lesson_step(const Lesson& lesson, int step, const std::string& option);
 
 // What a step starts with: the scene prepared with the step's settings, the lanes side by side
-// (methods, or an IK scene's solvers), the script.
+// (its kind's rows: methods, or an IK scene's solvers), the script.
 struct StepSetup {
   Prepared prepared;
-  std::vector<Method> compare;
-  std::vector<IkSolver> solvers;
+  std::vector<int> compare;
 };
 StepSetup setup_step(const LessonStep& step);
 

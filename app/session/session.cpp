@@ -1,6 +1,5 @@
 #include "session/session.hpp"
 
-#include "springlab/ik.hpp"
 #include "springlab/text.hpp"
 
 #include <algorithm>
@@ -18,16 +17,12 @@ std::uint64_t next_serial() {
 }  // namespace
 
 Session::Session(Scene scene, SimulationSettings settings, double fps)
-    : serial_(next_serial()), scene_(std::move(scene)), settings_(settings), fps_(fps) {
+    : serial_(next_serial()), scene_(std::move(scene)), kind_(make_scene_kind(scene_)), settings_(settings), fps_(fps) {
   settings_.track_dissipation = true;
   // An unstable lane goes on, marked (Simulation::trouble()), until it diverges or is reset: the
   // class sees where the instability leads; `run` stops there instead.
   settings_.audit_stops = false;
-  if (scene_.ik) {
-    solver_ = scene_.ik->solvers.front();
-    ik_iterations_ = scene_.ik->iterations_per_frame;
-  }
-  lanes_.push_back(make_lane(settings_.method));
+  lanes_.push_back(make_lane(kind_->initial_row(settings_.method)));
   // Watch the last free particle (a rope's free end, the spring's mass), along the spring of an
   // exact oscillator, else along gravity, else along x.
   for (int i = scene_.model.particle_count() - 1; i >= 0; --i)
@@ -79,64 +74,37 @@ void Session::update_analyses() {
   }
 }
 
-Lane Session::make_lane(Method method, std::optional<IkSolver> solver) const {
+Lane Session::make_lane(int row) const {
   SimulationSettings s = settings_;
-  s.method = method;
-  Lane lane{Simulation(scene_.model, scene_.state, s), {}, ExactOscillator::detect(scene_.model, scene_.state), {}, {}, {}, {},
-            scene_.state, {}, 0, {}, true, 0};
+  kind_->configure(s, row);
+  Lane lane(Simulation(scene_.model, scene_.state, s));
+  lane.exact = ExactOscillator::detect(scene_.model, scene_.state);
   lane.trails.resize(scene_.trails.size());
-  if (scene_.ik) {
-    const Vec3 target = scene_.state.x.row(scene_.ik->target).transpose();
-    lane.ik = IkLane{solver.value_or(solver_), scene_.ik->chain, {}, target.head<2>()};
-    lane.ik->status = ik_status(lane.ik->chain, lane.ik->target, scene_.ik->settings);
-  }
+  lane.kind = kind_.get();
+  lane.sane = scene_.state;
+  kind_->start(lane, row);
   return lane;
 }
 
-void Session::iterate_ik(Lane& lane, int iterations) {
-  IkLane& ik = *lane.ik;
-  const IkSettings& settings = scene_.ik->settings;
-  const Eigen::Vector2d target = lane.sim.state().x.row(scene_.ik->target).head<2>().transpose();
-  // Moved (by more than rounding: a held target creeps by ulps): the count starts again.
-  if ((target - ik.target).norm() > 1e-9 * ik.chain.reach()) {
-    ik.target = target;
-    ik.status = ik_status(ik.chain, target, settings);
-  }
-  for (int k = 0; k < iterations && !ik.status.converged && !ik.status.stalled; ++k) {
-    const std::vector<double> before = ik.chain.angles;
-    ik_iterate(ik.solver, ik.chain, target, settings);
-    const int done = ik.status.iterations + 1;
-    ik.status = ik_status(ik.chain, target, settings);
-    ik.status.iterations = done;
-    ik.status.stalled = !ik.status.converged && ik.chain.angles == before;
-  }
-  const std::vector<Eigen::Vector2d> joints = ik.chain.positions();
-  for (std::size_t j = 0; j < joints.size(); ++j)
-    lane.sim.place(scene_.ik->first_joint + static_cast<int>(j), Vec3(joints[j].x(), joints[j].y(), 0.0));
-}
-
-void Session::set_solver(IkSolver solver) {
-  ++edits_;
-  solver_ = solver;
-  if (comparing() || !scene_.ik) return;
-  Lane& lane = lanes_.front();
-  lane.ik->solver = solver;  // from the pose it has reached: a new solver takes over from there
-  lane.ik->status = ik_status(lane.ik->chain, lane.ik->target, scene_.ik->settings);
-}
-
-void Session::set_compare_solvers(const std::vector<IkSolver>& solvers) {
-  ++edits_;
-  if (!scene_.ik) return;
+void Session::restart_lanes(const std::vector<int>& rows) {
   release();
   lanes_.clear();
-  if (solvers.empty()) lanes_.push_back(make_lane(settings_.method, solver_));
-  for (std::size_t k = 0; k < solvers.size() && k < kMaxLanes; ++k)
-    lanes_.push_back(make_lane(settings_.method, solvers[k]));
+  for (int row : rows)
+    if (lanes_.size() < kMaxLanes) lanes_.push_back(make_lane(row));
   target_ = scene_.state.t;
   for (Lane& lane : lanes_) sample(lane);
 }
 
-void Session::set_ik_iterations_per_frame(int iterations) { ik_iterations_ = std::clamp(iterations, 1, 10000); }
+void Session::choose(int row) {
+  ++edits_;
+  kind_->configure(settings_, row);
+  if (!comparing()) kind_->switch_to(lanes_.front(), row);
+}
+
+void Session::set_compare_rows(const std::vector<int>& rows) {
+  ++edits_;
+  restart_lanes(rows.empty() ? std::vector<int>{kind_->row_of(lanes_.front())} : rows);
+}
 
 namespace {
 
@@ -162,7 +130,7 @@ void Session::sample(Lane& lane) {
   h.x.push(sim.state().x(watched_, watched_axis_));
   h.v.push(sim.state().v(watched_, watched_axis_));
   if (lane.exact) h.exact_x.push(lane.exact->at(t).x(watched_, watched_axis_));
-  if (lane.ik) h.ik_error.push(lane.ik->status.error);
+  kind_->sample(lane);
   h.step.push(sim.adaptive_step());
   h.rejected.push(static_cast<double>(sim.counters().rejected));
   // Inverted cells: every frame, or twice a second for a box past 32768 cells (a 128^3 lattice's
@@ -218,7 +186,7 @@ void Session::advance_frame() {
     const double dt = sim.settings().dt;
     const double due = std::floor((target_ - sim.state().t) / dt + 1e-9);
     if (due > 0) sim.advance(static_cast<std::int64_t>(due));
-    if (lane.ik) iterate_ik(lane, paused_ ? 0 : ik_iterations_);
+    kind_->after_steps(lane, paused_ ? SceneKind::Steps::Paused : SceneKind::Steps::Frame);
   }
   ++frame_;
   if (grabbed_ >= 0) drags_.back().to = primary().sim.state().x.row(grabbed_).transpose();
@@ -246,7 +214,7 @@ void Session::step_once() {
   for (Lane& lane : lanes_) {
     if (lane.sim.diverged() || (background_ && lane.waiting())) continue;
     lane.sim.step();
-    if (lane.ik) iterate_ik(lane, 1);
+    kind_->after_steps(lane, SceneKind::Steps::One);
     latest = std::max(latest, lane.sim.state().t);
     keep_if_sane(lane);
     sample(lane);
@@ -254,14 +222,11 @@ void Session::step_once() {
   target_ = latest;
 }
 
-std::string lane_label(const Lane& lane) {
-  if (!lane.own.empty()) return lane.own;
-  return tr(lane.ik ? ik_solver_info(lane.ik->solver).label : method_info(lane.sim.settings().method).label);
-}
+LaneRow lane_row(const Lane& lane) { return lane.kind->row(lane.kind->row_of(lane)); }
 
-std::string lane_name(const Lane& lane) {
-  return lane.own.empty() ? std::string(method_info(lane.sim.settings().method).name) : lane.own;
-}
+std::string lane_label(const Lane& lane) { return lane.own.empty() ? tr(lane_row(lane).label) : lane.own; }
+
+std::string lane_name(const Lane& lane) { return lane.own.empty() ? std::string(lane_row(lane).name) : lane.own; }
 
 void Session::set_own_lanes(const std::vector<OwnLane>& own, const std::vector<Method>& beside) {
   ++edits_;
@@ -269,7 +234,7 @@ void Session::set_own_lanes(const std::vector<OwnLane>& own, const std::vector<M
   lanes_.clear();
   for (const OwnLane& o : own) {
     if (lanes_.size() == kMaxLanes) break;
-    Lane lane = make_lane(o.like);
+    Lane lane = make_lane(static_cast<int>(o.like));  // (homework's rope: a mass-spring scene)
     lane.sim.set_own_step(o.step, o.label);
     lane.own = o.label;
     lane.own_known = o.known;
@@ -277,22 +242,16 @@ void Session::set_own_lanes(const std::vector<OwnLane>& own, const std::vector<M
     lanes_.push_back(std::move(lane));
   }
   for (Method m : beside)
-    if (lanes_.size() < kMaxLanes) lanes_.push_back(make_lane(m));
-  if (lanes_.empty()) lanes_.push_back(make_lane(settings_.method));
+    if (lanes_.size() < kMaxLanes) lanes_.push_back(make_lane(static_cast<int>(m)));
+  if (lanes_.empty()) lanes_.push_back(make_lane(kind_->initial_row(settings_.method)));
   target_ = scene_.state.t;
   for (Lane& lane : lanes_) sample(lane);
 }
 
 void Session::set_compare(const std::vector<Method>& methods) {
-  ++edits_;
-  std::vector<Method> list = methods;
-  if (list.size() > kMaxLanes) list.resize(kMaxLanes);
-  if (list.empty()) list = {lanes_.front().sim.settings().method};
-  release();
-  lanes_.clear();
-  for (Method m : list) lanes_.push_back(make_lane(m));
-  target_ = scene_.state.t;
-  for (Lane& lane : lanes_) sample(lane);
+  std::vector<int> rows;
+  for (Method m : methods) rows.push_back(static_cast<int>(m));
+  set_compare_rows(rows);
 }
 
 void Session::model_changed(Lane& lane) {
@@ -396,7 +355,7 @@ void Session::reset() {
     for (auto& trail : l.trails) trail.clear();
     l.exact = ExactOscillator::detect(l.sim.model(), l.sim.state());
     l.sane = l.sim.state();
-    if (l.ik) *l.ik = *make_lane(l.sim.settings().method, l.ik->solver).ik;
+    kind_->start(l, kind_->row_of(l));
   }
   target_ = scene_.state.t;
   for (Lane& lane : lanes_) sample(lane);
@@ -428,7 +387,7 @@ int Session::pick(const Eigen::Vector3d& origin, const Eigen::Vector3d& directio
   double best_along = std::numeric_limits<double>::infinity();
   for (int i = 0; i < s.particle_count(); ++i) {
     if (emission.owned(i) && !emission.alive(i)) continue;  // not born yet, or gone
-    if (scene_.ik && i != scene_.ik->target) continue;     // the solvers place the joints
+    if (!kind_->holdable(i)) continue;                      // (an IK chain's joints: its solver places them)
     const Vec3 p = s.x.row(i).transpose() - origin;
     const double along = p.dot(direction);
     if (along < 0.0) continue;

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "session/history.hpp"
+#include "session/scene_kind.hpp"
 #include "session/stability_job.hpp"
 #include "springlab/exact.hpp"
 #include "springlab/scene.hpp"
@@ -27,22 +28,17 @@
 
 namespace springlab::app {
 
-// An inverse-kinematics lane (scenes with scene.ik): a solver working on its own copy of the
-// chain, towards the target particle of the lane's simulation, a few iterations a frame; the
-// joints are placed in the simulation's state for drawing.
-struct IkLane {
-  IkSolver solver;
-  IkChain chain;
-  IkStatus status;  // status.iterations: since the target last moved
-  Eigen::Vector2d target = Eigen::Vector2d::Zero();
-};
-
 struct Lane {
+  explicit Lane(Simulation simulation) : sim(std::move(simulation)) {}
+
   Simulation sim;
   History history;
   std::optional<ExactOscillator> exact;  // from the last change of the model
   std::vector<std::vector<Vec3>> trails;  // one per scene.trails particle, oldest first
-  std::optional<IkLane> ik;
+  // Its scene's kind (the session's: scene_kind.hpp), and what the kind keeps of it besides its
+  // simulation (an IK lane's chain: ik_kind.hpp); none for a mass-spring lane.
+  const SceneKind* kind = nullptr;
+  std::unique_ptr<LanePart> part;
   // The stability analysis shown (the latest made, which may be of the scene as it was a moment
   // ago while a new one is made), and the job making the next, in the app's background mode.
   std::shared_ptr<const StabilityAnalysis> analysis;
@@ -67,9 +63,11 @@ struct Lane {
   bool waiting() const { return !sim.ready(); }
 };
 
-// A lane's label as shown (translated): its row's, its IK solver's, or its own.
+// A lane's row (a method's or an IK solver's: its kind's).
+LaneRow lane_row(const Lane& lane);
+// A lane's label as shown (translated): its row's, or its own.
 std::string lane_label(const Lane& lane);
-// Its short name (charts' series): its row's name ("verlet") or its own label.
+// Its short name (charts' series): its row's name ("verlet", "fabrik") or its own label.
 std::string lane_name(const Lane& lane);
 
 // A step of one's own as a lane (Session::set_own_lanes): the step, its label, the row it was found
@@ -101,6 +99,10 @@ class Session {
   bool analysing() const;
 
   const Scene& scene() const { return scene_; }
+  // Its kind (scene_kind.hpp): what its lanes are and do. Not const: a kind may have settings of
+  // its own (IK's iterations a frame).
+  const SceneKind& kind() const { return *kind_; }
+  SceneKind& kind() { return *kind_; }
   std::span<Lane> lanes() { return lanes_; }
   std::span<const Lane> lanes() const { return lanes_; }
   const Lane& primary() const { return lanes_.front(); }
@@ -121,13 +123,13 @@ class Session {
   // restarts from the initial state.
   void set_own_lanes(const std::vector<OwnLane>& own, const std::vector<Method>& beside);
 
-  // Inverse kinematics (scenes with an "ik" part): the solver of the single lane, or one lane
-  // per solver side by side (2 to 3; empty: back to one lane), and the iterations a frame.
-  void set_solver(IkSolver solver);
-  IkSolver solver() const { return solver_; }
-  void set_compare_solvers(const std::vector<IkSolver>& solvers);
-  void set_ik_iterations_per_frame(int iterations);
-  int ik_iterations_per_frame() const { return ik_iterations_; }
+  // Rows, whatever the kind (a method's, an IK solver's: kind().row(k)). choose(): the single
+  // lane becomes row k from where it is (in a mass-spring scene, as set_method), and the lanes
+  // made next are; in compare mode only the latter. set_compare_rows(): the rows side by side
+  // (empty: back to one lane, the first lane's row); every lane restarts from the initial state.
+  void choose(int row);
+  int chosen() const { return kind_->row_of(lanes_.front()); }
+  void set_compare_rows(const std::vector<int>& rows);
 
   // Parameters, for every lane.
   void set_method(Method method);  // one lane: switches it at once, mid-motion
@@ -196,13 +198,14 @@ class Session {
  private:
   void apply(const ScriptEvent& event);
   void model_changed(Lane& lane);
-  void iterate_ik(Lane& lane, int iterations);
   void sample(Lane& lane);
   void keep_if_sane(Lane& lane);
-  Lane make_lane(Method method, std::optional<IkSolver> solver = std::nullopt) const;
+  Lane make_lane(int row) const;
+  void restart_lanes(const std::vector<int>& rows);
 
   std::uint64_t serial_;
   Scene scene_;
+  std::unique_ptr<SceneKind> kind_;  // made once from scene_
   SimulationSettings settings_;
   std::vector<Lane> lanes_;
   double fps_;
@@ -214,8 +217,6 @@ class Session {
   std::optional<Vec3> drag_target_;
   std::vector<DragRecord> drags_;
   int watched_ = 0, watched_axis_ = 0;
-  IkSolver solver_ = IkSolver::CCD;
-  int ik_iterations_ = 1;
   std::optional<Script> script_;
   std::size_t next_event_ = 0;
   std::optional<std::pair<double, std::vector<std::pair<double, Vec3>>>> path_;  // start, waypoints

@@ -1,5 +1,7 @@
 #include "ui/actions.hpp"
 
+#include "ui/kind_panels.hpp"
+
 namespace springlab::ui {
 
 void perform(Action action, app::Session& session, UiState& ui) {
@@ -17,33 +19,13 @@ void perform(Action action, app::Session& session, UiState& ui) {
     case Action::ToggleTableau: ui.tableau = !ui.tableau; break;
     case Action::ToggleMode: ui.view.mode = !ui.view.mode; break;
     case Action::TogglePresentation: ui.presentation = !ui.presentation; break;
-    case Action::ToggleCompare: {
-      if (session.scene().ik) {  // the solvers side by side, from the same start
-        session.set_compare_solvers(session.comparing() ? std::vector<IkSolver>{} : session.scene().ik->solvers);
-        break;
-      }
-      if (session.comparing()) {
-        session.set_compare({});
-        break;
-      }
-      auto chosen = compare_methods(ui);
-      if (chosen.size() < 2) chosen = session.scene().methods;
-      if (chosen.size() < 2) {
-        chosen.clear();
-        for (const MethodInfo& m : methods())
-          if (m.compared_first) chosen.push_back(m.id);
-      }
-      session.set_compare(chosen);
+    case Action::ToggleCompare:  // the kind's choice side by side, from the same start; or back to one lane
+      session.set_compare_rows(session.comparing() ? std::vector<int>{}
+                                                   : kind_panels(session.kind()).compare_choice(session, ui));
       break;
-    }
-    default: {
+    default: {  // keys 1 to 9: the kind's rows (methods, solvers)
       const int k = static_cast<int>(action) - static_cast<int>(Action::Method1);
-      if (session.comparing()) break;
-      if (session.scene().ik) {  // keys 1 to 3 pick a solver
-        if (k < static_cast<int>(ik_solvers().size())) session.set_solver(ik_solvers()[k].id);
-      } else {
-        if (k < static_cast<int>(methods().size())) session.set_method(methods()[k].id);
-      }
+      if (!session.comparing() && k < session.kind().row_count()) session.choose(k);
       break;
     }
   }

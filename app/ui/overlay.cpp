@@ -1,4 +1,5 @@
 #include "ui/overlay.hpp"
+#include "ui/kind_panels.hpp"
 
 #include <imgui.h>
 
@@ -34,17 +35,7 @@ Legend legend_of(const app::Session& session, const draw::Viewport& viewport, fl
   Legend legend;
   float width = 0.0f;
   for (const app::Lane& lane : session.lanes()) {
-    std::string row = app::lane_label(lane);
-    char s[96];
-    if (lane.ik) {
-      std::snprintf(s, sizeof s, tr("  %d it., error %.2g m%s"), lane.ik->status.iterations, lane.ik->status.error,
-                    lane.ik->status.converged ? "" : lane.ik->status.stalled ? tr(" (stuck)") : "");
-    } else if (const Divergence* trouble = lane.sim.trouble()) {
-      std::snprintf(s, sizeof s, tr("  %s at t = %.3g s"), trouble->unstable ? tr("went unstable") : tr("diverged"), trouble->t);
-    } else {
-      std::snprintf(s, sizeof s, "  t = %.3f s", lane.sim.state().t);
-    }
-    row += s;
+    const std::string row = app::lane_label(lane) + kind_panels(session.kind()).progress(lane);
     width = std::max(width, ImGui::CalcTextSize(row.c_str()).x);
     legend.rows.push_back(row);
   }
@@ -71,6 +62,23 @@ void draw_legend(const app::Session& session, const Legend& legend, float scale)
 }
 }  // namespace
 
+// The mass-spring kind's words (kind_panels.hpp): its method and time, or where it diverged.
+std::string mass_spring_caption(const app::Session& session, const std::string& scene_name, const std::string& slow) {
+  char s[320];
+  std::snprintf(s, sizeof s, "%s  |  %s  |  t = %.3f s%s%s", scene_name.c_str(), app::lane_label(session.primary()).c_str(),
+                session.primary().sim.state().t, slow.empty() ? "" : "  |  ", slow.c_str());
+  return s;
+}
+
+std::string mass_spring_progress(const app::Lane& lane) {
+  char s[96];
+  if (const Divergence* trouble = lane.sim.trouble())
+    std::snprintf(s, sizeof s, tr("  %s at t = %.3g s"), trouble->unstable ? tr("went unstable") : tr("diverged"), trouble->t);
+  else
+    std::snprintf(s, sizeof s, "  t = %.3f s", lane.sim.state().t);
+  return s;
+}
+
 std::string realtime_text(double realtime) {
   if (!(realtime < 0.95)) return "";
   char s[48];
@@ -88,17 +96,12 @@ void draw_overlay(const app::Session& session, const draw::ViewCamera& camera, c
 
   if (options.caption) {
     char s[320];
-    const auto& lanes = session.lanes();
     const std::string slow = realtime_text(options.realtime);
-    if (const auto& ik = lanes.front().ik; ik && !session.comparing())
-      std::snprintf(s, sizeof s, tr("%s  |  %s  |  iteration %d, error %.3g m%s"), scene_name.c_str(),
-                    tr(ik_solver_info(ik->solver).label), ik->status.iterations, ik->status.error,
-                    ik->status.reachable ? "" : tr("  |  target out of reach"));
+    if (session.comparing())
+      std::snprintf(s, sizeof s, "%s  |  %s  |  t = %.3f s%s%s", scene_name.c_str(), tr("compare"),
+                    session.simulated_target(), slow.empty() ? "" : "  |  ", slow.c_str());
     else
-      std::snprintf(s, sizeof s, "%s  |  %s  |  t = %.3f s%s%s", scene_name.c_str(),
-                    session.comparing() ? tr("compare") : tr(method_info(session.method()).label),
-                    session.comparing() ? session.simulated_target() : lanes.front().sim.state().t,
-                    slow.empty() ? "" : "  |  ", slow.c_str());
+      std::snprintf(s, sizeof s, "%s", kind_panels(session.kind()).caption(session, scene_name, slow).c_str());
     const ImVec2 size = ImGui::CalcTextSize(s);
     const ImVec2 p(viewport.x + pad, viewport.y + viewport.height - pad - size.y);
     dl->AddRectFilled(ImVec2(p.x - 6, p.y - 3), ImVec2(p.x + size.x + 6, p.y + size.y + 3), back, 4.0f);

@@ -24,4 +24,8 @@ void draw_overlay(const app::Session& session, const draw::ViewCamera& camera, c
 // "0.42x real time", or "" at (or near) real time.
 std::string realtime_text(double realtime);
 
+// The mass-spring kind's caption and legend words (kind_panels.hpp).
+std::string mass_spring_caption(const app::Session& session, const std::string& scene_name, const std::string& slow);
+std::string mass_spring_progress(const app::Lane& lane);
+
 }  // namespace springlab::ui

@@ -2,10 +2,12 @@
 // function a window (draw_panels calls them in this order), as imgui_demo.cpp is laid out:
 //
 //   strip               the strip of buttons along the foot (a phone held upright)
-//   controls_window     "springlab": pickers, the platform's controls, about, simulation_controls
-//                       (method or solver, transport, clocks, gauge per lane, parameters), tools
-//                       (cost, panels' buttons, compare choices, a particle by keys, view and files)
-//   charts_window       "Charts": energy, position, phase, the adaptive step, a lesson's own
+//   controls_window     "springlab": pickers, the platform's controls, about, the scene kind's
+//                       controls (kind_panels.hpp; here mass_spring_controls: method, transport,
+//                       clocks, gauge per lane, parameters), tools (cost, the kind's tools: here
+//                       panels' buttons and compare choices; a particle by keys, view and files)
+//   charts_window       "Charts": the kind's (here energy, position, phase, the adaptive step),
+//                       or a lesson's own
 //   region              the stability region (region_window)
 //   divergence_window   "Diverged": the single view's banner and the way out
 //   message_window      "Message": a file that failed to load
@@ -14,6 +16,7 @@
 // The charts' contents (energy_chart, position_chart, ...) and the controls' parts (gauge,
 // clocks, parameters, ...) are the functions above them.
 #include "ui/panels.hpp"
+#include "ui/kind_panels.hpp"
 #include "ui/live_charts.hpp"
 #include "ui/physics_controls.hpp"
 
@@ -152,25 +155,6 @@ void gauge(app::Session& session, app::Lane& lane, float width, bool explain) {
   }
 }
 
-// IK scenes: how far each solver's end is from the target, frame by frame (log scale: the
-// solvers converge at very different rates, and a stuck one levels off).
-void ik_chart(app::Session& session, float width, float height) {
-  chart::Chart error;
-  error.title = tr("Distance from the end to the target, against time (drag the target to start again)");
-  error.x.label = "t (s)";
-  error.y.label = "m";
-  error.y.log = true;
-  for (const app::Lane& lane : session.lanes()) {
-    chart::Series s = series(ik_solver_info(lane.ik->solver).name, draw::solver_color(lane.ik->solver),
-                             lane.history.t, lane.history.ik_error);
-    for (double& y : s.y) y = std::max(y, 1e-9);  // a log axis needs > 0: an exact hit shows at 1e-9
-    error.series.push_back(std::move(s));
-  }
-  chart::chart_widget("##ik", error, ImVec2(width, height));
-}
-
-// The stability region of the lanes' methods with the scene's modes at their steps: one chart a
-// plane (the complex plane's methods, then the oscillator plane's), or why there is none.
 std::vector<chart::Chart> region_charts(app::Session& session, std::string& none) {
   std::vector<chart::Chart> out;
   const StabilityAnalysis* analysis = shown_analysis(session, session.lanes()[0]);
@@ -217,8 +201,7 @@ void region_window(app::Session& session, UiState& ui, float x, float y, float w
 // The charts: energy, the watched particle's position (with the exact solution) and its phase
 // plot side by side; one (energy) in presentation mode; in a lesson, the ones its step shows.
 // For a class (presentation, lessons) the lines are thicker; the stability regions keep theirs.
-void charts(app::Session& session, float width, float height, bool presentation, const std::vector<LessonChart>& only) {
-  if (session.scene().ik) return ik_chart(session, width, height);
+void mass_spring_charts(app::Session& session, float width, float height, bool presentation, const std::vector<LessonChart>& only) {
   std::vector<chart::Chart> shown;
   std::string none;
   const float line = presentation || !only.empty() ? 3.0f : 0.0f;
@@ -283,48 +266,22 @@ Rect lesson_chart_rect(const UiState& ui, const draw::Viewport& scene, int width
   return {x + pad, y + pad, static_cast<float>(width) - x - 2.0f * pad, foot - y - 2.0f * pad};
 }
 
-// An IK scene's controls: the solver, side by side or not, iterations a frame, and each lane's
-// progress, with the two difficulties spelt out: no solution, or many.
-void ik_controls(app::Session& session) {
-  const IkScene& ik = *session.scene().ik;
-  if (!session.comparing() && ImGui::BeginCombo(tr("solver"), tr(ik_solver_info(session.solver()).label))) {
-    int key = 1;
-    for (const IkSolverInfo& info : ik_solvers()) {
-      const std::string label = std::to_string(key++) + "  " + tr(info.label);
-      ImGui::PushStyleColor(ImGuiCol_Text, v4(draw::solver_color(info.id)));
-      if (ImGui::Selectable(label.c_str(), info.id == session.solver())) session.set_solver(info.id);
-      ImGui::PopStyleColor();
-    }
-    ImGui::EndCombo();
-  }
-  if (ImGui::Button(session.comparing() ? tr("One solver (C)") : tr("Solvers side by side (C)")))
-    session.set_compare_solvers(session.comparing() ? std::vector<IkSolver>{} : ik.solvers);
-  int per_frame = session.ik_iterations_per_frame();
-  if (ImGui::SliderInt(tr("iterations/frame"), &per_frame, 1, 100, "%d", ImGuiSliderFlags_Logarithmic))
-    session.set_ik_iterations_per_frame(per_frame);
-  ImGui::TextDisabled(tr("reach %.3g m, %d links; tolerance %.2g m"), ik.chain.reach(), ik.chain.size(),
-                      ik.settings.tolerance);
-  for (const app::Lane& lane : session.lanes()) {
-    const app::IkLane& l = *lane.ik;
-    ImGui::PushStyleColor(ImGuiCol_Text, v4(draw::solver_color(l.solver)));
-    ImGui::Text("%s", ik_solver_info(l.solver).name);
-    ImGui::PopStyleColor();
-    ImGui::SameLine();
-    const char* state = l.status.converged ? tr("reached") : l.status.stalled ? tr("stuck") : tr("iterating");
-    ImGui::Text(tr("%s in %d, error %.2g m"), state, l.status.iterations, l.status.error);
-  }
-  const IkStatus& first = session.primary().ik->status;
-  if (!first.reachable)
-    text_wrapped(tr("The target is out of reach: no pose puts the end on it. The chain stretches "
-                 "straight towards it, as close as it can get."), kNear);
-  else if (session.comparing())
-    text_wrapped_disabled(tr("One target, several poses: each solver, from the same start, settles on its own "
-                          "answer. Inverse kinematics has many solutions, or none."));
-  else
-    text_wrapped_disabled(tr("Drag the red target. Press C to see the solvers side by side."));
-}
+// Parts every kind's controls share (kind_panels.hpp).
 
-namespace {
+void row_picker(app::Session& session, const char* label, bool coloured) {
+  if (session.comparing()) return;
+  const app::SceneKind& kind = session.kind();
+  if (!ImGui::BeginCombo(label, app::lane_label(session.primary()).c_str())) return;
+  const int chosen = session.chosen();
+  for (int k = 0; k < kind.row_count(); ++k) {
+    const app::LaneRow row = kind.row(k);
+    const std::string text = std::to_string(k + 1) + "  " + tr(row.label);
+    if (coloured) ImGui::PushStyleColor(ImGuiCol_Text, v4(draw::row_color(row)));
+    if (ImGui::Selectable(text.c_str(), k == chosen)) session.choose(k);
+    if (coloured) ImGui::PopStyleColor();
+  }
+  ImGui::EndCombo();
+}
 
 // Pause, step, reset: the buttons a class sees pressed most.
 void transport(app::Session& session) {
@@ -373,6 +330,8 @@ void clocks(app::Session& session, const FrameStats& stats) {
     ImGui::TextColored(kNear, "%s", slow.c_str());
   }
 }
+
+namespace {
 
 // The sliders of the physics; `few`: only dt, k_s and k_d (presentation mode).
 void parameters(app::Session& session, UiState& ui, bool few) {
@@ -466,29 +425,25 @@ void strip(app::Session& session, UiState& ui, const PanelLayout& layout, float 
     session.set_paused(true);
     session.step_once();
   }
-  if (row && !session.scene().ik) {
-    next();
-    // The method's combo takes what the dt slider leaves: at least its two buttons and a
-    // button's width of slider (a phone's row: they ran off its right edge).
-    const float left = ImGui::GetContentRegionAvail().x;
-    const float dt_least = 3.0f * button + 2.0f * ImGui::GetStyle().ItemInnerSpacing.x + ImGui::GetStyle().ItemSpacing.x;
-    ImGui::SetNextItemWidth(std::max(button, std::min(0.45f * left, left - dt_least)));
-    if (!session.comparing() && ImGui::BeginCombo("##method", tr(method_info(session.method()).label))) {
-      int key = 1;
-      for (const MethodInfo& m : methods()) {
-        const std::string label = std::to_string(key++) + "  " + tr(m.label);
-        if (ImGui::Selectable(label.c_str(), m.id == session.method())) session.set_method(m.id);
-      }
-      ImGui::EndCombo();
-    }
-    next();
-    double dt = session.primary().sim.settings().dt;
-    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x);
-    if (slider("##dt", dt, ui.ranges.dt / 100, std::min(1.0, std::max(0.1, ui.ranges.dt * 100)), true, "dt %.3g"))  // symbols
-      session.set_dt(dt);
-  }
+  if (row) kind_panels(session.kind()).strip(session, ui, button);  // the kind's tail: its row, ...
   (void)s;
   ImGui::End();
+}
+
+// The mass-spring kind's strip tail: the method and dt.
+void mass_spring_strip(app::Session& session, UiState& ui, float button) {
+  ImGui::SameLine();
+  // The method's combo takes what the dt slider leaves: at least its two buttons and a
+  // button's width of slider (a phone's row: they ran off its right edge).
+  const float left = ImGui::GetContentRegionAvail().x;
+  const float dt_least = 3.0f * button + 2.0f * ImGui::GetStyle().ItemInnerSpacing.x + ImGui::GetStyle().ItemSpacing.x;
+  ImGui::SetNextItemWidth(std::max(button, std::min(0.45f * left, left - dt_least)));
+  row_picker(session, "##method", false);
+  ImGui::SameLine();
+  double dt = session.primary().sim.settings().dt;
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x);
+  if (slider("##dt", dt, ui.ranges.dt / 100, std::min(1.0, std::max(0.1, ui.ranges.dt * 100)), true, "dt %.3g"))  // symbols
+    session.set_dt(dt);
 }
 
 // Each window of the panels, a function (the index is at the top of this file).
@@ -528,35 +483,17 @@ void about(const app::Session& session, float s) {
   }
 }
 
-// The simulation's own controls: the method (or the IK solver), play and step, the clocks, each
-// lane's stability gauge and the parameters.
-void simulation_controls(app::Session& session, UiState& ui, const FrameStats& stats, const PanelLayout& layout, bool few) {
-  if (session.scene().ik) {
-    ik_controls(session);
-    transport(session);
-    clocks(session, stats);
-  } else {
-    if (!session.comparing()) {
-      const MethodInfo& current = method_info(session.method());
-      if (ImGui::BeginCombo(tr("method"), tr(current.label))) {
-        int key = 1;
-        for (const MethodInfo& m : methods()) {
-          const std::string label = std::to_string(key++) + "  " + tr(m.label);
-          ImGui::PushStyleColor(ImGuiCol_Text, v4(draw::method_color(m.id)));
-          if (ImGui::Selectable(label.c_str(), m.id == current.id)) session.set_method(m.id);
-          ImGui::PopStyleColor();
-        }
-        ImGui::EndCombo();
-      }
-    }
-    transport(session);
-    clocks(session, stats);
-    // Stability: the gauge of each lane, under the method it judges.
-    const float inner_w = layout.controls.w - 2 * ImGui::GetStyle().WindowPadding.x - ImGui::GetStyle().ScrollbarSize;
-    for (app::Lane& lane : session.lanes()) gauge(session, lane, inner_w, !session.comparing());
-    ImGui::Separator();
-    parameters(session, ui, few);
-  }
+// The mass-spring kind's controls: the method, play and step, the clocks, each lane's stability
+// gauge and the parameters.
+void mass_spring_controls(app::Session& session, UiState& ui, const FrameStats& stats, const PanelLayout& layout, bool few) {
+  row_picker(session, tr("method"), true);
+  transport(session);
+  clocks(session, stats);
+  // Stability: the gauge of each lane, under the method it judges.
+  const float inner_w = layout.controls.w - 2 * ImGui::GetStyle().WindowPadding.x - ImGui::GetStyle().ScrollbarSize;
+  for (app::Lane& lane : session.lanes()) gauge(session, lane, inner_w, !session.comparing());
+  ImGui::Separator();
+  parameters(session, ui, few);
 }
 
 // A particle held and moved without a pointer (ui/interaction.hpp: hold, nudge), for the
@@ -583,20 +520,14 @@ void particle_by_keys(app::Session& session, UiState& ui) {
   ImGui::PopButtonRepeat();
 }
 
-// Below the controls: what a frame costs, the accuracy, region and tableau panels' buttons, the
-// compare choices and the view and files.
-void tools(app::Session& session, UiState& ui, const FrameStats& stats, float s, Requests& requests) {
-  if (stats.timed)
-    ImGui::TextDisabled(tr("a frame: %.1f ms simulating, %.1f drawing"), stats.sim_ms, stats.draw_ms);
-  else
-    ImGui::TextDisabled(tr("a frame: %lld force evaluations"), static_cast<long long>(stats.force_evals));
-  if (!session.scene().ik) {
-    if (ImGui::Button(ui.accuracy ? tr("Hide accuracy (A)") : tr("Accuracy vs cost (A)"))) ui.accuracy = !ui.accuracy;
-    ImGui::SameLine();
-    if (ImGui::Button(ui.region ? tr("Hide region (G)") : tr("Stability region (G)"))) ui.region = !ui.region;
-    if (ImGui::Button(ui.tableau ? tr("Hide your method (Y)") : tr("Your method (Y)"))) ui.tableau = !ui.tableau;
-  }
-  if (!session.scene().ik && ImGui::CollapsingHeader(tr("Compare methods"))) {
+// The mass-spring kind's tools: the accuracy, region and tableau panels' buttons and the compare
+// choices.
+void mass_spring_tools(app::Session& session, UiState& ui, float s) {
+  if (ImGui::Button(ui.accuracy ? tr("Hide accuracy (A)") : tr("Accuracy vs cost (A)"))) ui.accuracy = !ui.accuracy;
+  ImGui::SameLine();
+  if (ImGui::Button(ui.region ? tr("Hide region (G)") : tr("Stability region (G)"))) ui.region = !ui.region;
+  if (ImGui::Button(ui.tableau ? tr("Hide your method (Y)") : tr("Your method (Y)"))) ui.tableau = !ui.tableau;
+  if (ImGui::CollapsingHeader(tr("Compare methods"))) {
     if (ImGui::Button(session.comparing() ? tr("Single view (C)") : tr("Compare (C)"))) {
       if (session.comparing()) session.set_compare({});
       else if (compare_methods(ui).size() >= 2) session.set_compare(compare_methods(ui));
@@ -616,6 +547,16 @@ void tools(app::Session& session, UiState& ui, const FrameStats& stats, float s,
       ImGui::EndTable();
     }
   }
+}
+
+// Below the controls: what a frame costs, the kind's tools (its studies and compare choices), a
+// particle by keys and the view and files.
+void tools(app::Session& session, UiState& ui, const FrameStats& stats, float s, Requests& requests) {
+  if (stats.timed)
+    ImGui::TextDisabled(tr("a frame: %.1f ms simulating, %.1f drawing"), stats.sim_ms, stats.draw_ms);
+  else
+    ImGui::TextDisabled(tr("a frame: %lld force evaluations"), static_cast<long long>(stats.force_evals));
+  kind_panels(session.kind()).tools(session, ui, s);
   if (ImGui::CollapsingHeader(tr("A particle by keys"))) particle_by_keys(session, ui);
   if (ImGui::CollapsingHeader(tr("View and files"))) {
     ImGui::InputTextWithHint("##open", tr("a scene file (or drop one)"), ui.open_path, sizeof ui.open_path);
@@ -661,7 +602,7 @@ void controls_window(app::Session& session, UiState& ui, const FrameStats& stats
   if (ui.platform_controls) ui.platform_controls();
   about(session, s);
   ImGui::Separator();
-  simulation_controls(session, ui, stats, layout, few);
+  kind_panels(session.kind()).controls(session, ui, stats, layout, few);
   if (!few) tools(session, ui, stats, s, requests);
   ImGui::PopItemWidth();
   ImGui::End();
@@ -677,7 +618,8 @@ void charts_window(app::Session& session, const UiState& ui, const PanelLayout& 
   std::vector<LessonChart> only = ui.lesson_charts;
   const bool one = layout.kind == LayoutKind::Upright || layout.kind == LayoutKind::Compact;
   if (one && only.size() > 1) only.erase(only.begin() + 1, only.end());
-  charts(session, ImGui::GetContentRegionAvail().x, ImGui::GetContentRegionAvail().y, ui.presentation || one, only);
+  kind_panels(session.kind()).charts(session, ImGui::GetContentRegionAvail().x, ImGui::GetContentRegionAvail().y,
+                                     ui.presentation || one, only);
   ImGui::End();
 }
 
@@ -804,6 +746,33 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
   if (layout.touch) ImGui::PopStyleVar(2);
   if (large) ImGui::PopFont();
   return requests;
+}
+
+namespace {
+
+// The charts the browser's words describe: energy, position and phase, and a free body's momentum.
+std::vector<chart::Chart> mass_spring_charts_said(const app::Session& session) {
+  std::vector<chart::Chart> out = {energy_chart(session), position_chart(session), phase_chart(session)};
+  if (free_body(session.primary().sim.model())) out.push_back(momentum_chart(session));
+  return out;
+}
+
+// C: the methods ticked (2 to 4), else the scene's own list, else the rows compared first.
+std::vector<int> mass_spring_compare_choice(const app::Session& session, const UiState& ui) {
+  const std::vector<Method> ticked = compare_methods(ui);
+  if (ticked.size() < 2) return session.kind().compared_first();
+  std::vector<int> rows;
+  for (Method m : ticked) rows.push_back(static_cast<int>(m));
+  return rows;
+}
+
+}  // namespace
+
+const KindPanels& mass_spring_panels() {
+  static const KindPanels panels{mass_spring_controls,     mass_spring_tools,          mass_spring_strip,
+                                 mass_spring_charts,       mass_spring_charts_said,    mass_spring_compare_choice,
+                                 mass_spring_caption,      mass_spring_progress};
+  return panels;
 }
 
 }  // namespace springlab::ui

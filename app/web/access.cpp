@@ -13,6 +13,7 @@
 #include "chart/compare_charts.hpp"
 #include "ui/gauge_verdict.hpp"
 #include "ui/interaction.hpp"
+#include "ui/kind_panels.hpp"
 #include "ui/lesson_band.hpp"
 #include "ui/live_charts.hpp"
 #include "ui/physics_controls.hpp"
@@ -37,9 +38,7 @@ const char* tone_name(ui::Tone tone) {
 
 std::vector<chart::Chart> charts(const InteractiveApp& app) {
   const Session& session = app.session();
-  if (session.scene().ik) return {};  // (its chart is the solvers' distance: not yet said here)
-  std::vector<chart::Chart> out = {ui::energy_chart(session), ui::position_chart(session), ui::phase_chart(session)};
-  if (free_body(session.primary().sim.model())) out.push_back(ui::momentum_chart(session));
+  std::vector<chart::Chart> out = ui::kind_panels(session.kind()).charts_said(session);  // the kind's own
   // The accuracy panel's charts, once its sweep has runs: the work-precision charts' slopes.
   if (app.accuracy().open) {
     const SweepResult result = app.accuracy().sweep.snapshot();
@@ -56,13 +55,17 @@ std::string describe(const InteractiveApp& app) {
   json d = {{"scene", app.scene_name()},
             {"description", tr(session.scene().description)},
             {"scenes", ui.scenes},
-            {"method", method_info(session.method()).name},
+            {"method", lane_row(session.primary()).name},
             {"paused", session.paused()},
             {"t", session.primary().sim.state().t},
             {"message", ui.message}};
   d["methods"] = json::array();
   d["lanes"] = json::array();
-  for (const MethodInfo& m : methods()) d["methods"].push_back({{"name", m.name}, {"label", tr(m.label)}});
+  // The rows the select offers: the kind's (methods, or an IK scene's solvers).
+  for (int k = 0; k < session.kind().row_count(); ++k) {
+    const LaneRow row = session.kind().row(k);
+    d["methods"].push_back({{"name", row.name}, {"label", tr(row.label)}});
+  }
   d["controls"] = json::array();
   for (const ui::PhysicsControl& c : ui::physics_controls(session, ui))
     d["controls"].push_back({{"id", c.id}, {"label", c.label}, {"value", c.value}, {"lo", c.lo}, {"hi", c.hi}, {"log", c.log}});
@@ -99,7 +102,7 @@ std::string describe(const InteractiveApp& app) {
   for (const chart::Chart& c : charts(app)) d["charts"].push_back({{"title", c.title}, {"summary", chart::describe_chart(c)}});
   // The words of the document's own controls and headings, in the app's language.
   d["labels"] = {{"pause", tr("Pause (space)")}, {"resume", tr("Resume (space)")}, {"step", tr("Step (S)")},
-                 {"reset", tr("Reset (R)")}, {"scene", tr("scene")}, {"method", tr("method")},
+                 {"reset", tr("Reset (R)")}, {"scene", tr("scene")}, {"method", tr(session.kind().row_noun())},
                  {"back", tr("\u2190 Back")}, {"next", tr("Next \u2192")}, {"energy", tr("Energy")},
                  {"sound", tr("Hear the energy of")}, {"csv", tr("Download its data (CSV)")}, {"particle", tr("particle")},
                  {"hold", tr("Hold it")}, {"release", tr("Let go")}, {"left", tr("left")}, {"right", tr("right")},
@@ -160,9 +163,9 @@ bool control(InteractiveApp& app, const std::string& name, double value) {
 
 bool choose(InteractiveApp& app, const std::string& what, const std::string& name) {
   if (what == "method") {
-    const std::optional<Method> m = find_method(name);
-    if (!m) return false;
-    app.control([m](Session& s, ui::UiState&) { s.set_method(*m); });
+    const std::optional<int> row = app.session().kind().find(name);  // a method, or an IK scene's solver
+    if (!row) return false;
+    app.control([row](Session& s, ui::UiState&) { s.choose(*row); });
     return true;
   }
   if (what == "scene") {

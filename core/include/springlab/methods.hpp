@@ -18,6 +18,7 @@
 #include <string_view>
 
 #include "springlab/energy.hpp"
+#include "springlab/mark.hpp"
 #include "springlab/forces.hpp"
 #include "springlab/model.hpp"
 #include "springlab/state.hpp"
@@ -173,15 +174,6 @@ struct MethodInfo;
 /// What a row keeps, as the README's table writes it: "P", "P, L", "P to the solver's tolerance",
 /// "neither".
 std::string kept_summary(const MethodInfo& method);
-
-/// The shape drawn with a method's lanes on charts and legends (the app's draw/marks.hpp), so
-/// that they are told apart by more than colour: filled, hollow, or strokes.
-enum class Mark {
-  None,
-  Circle, Square, Diamond, TriangleUp, TriangleDown,                       // filled
-  RingCircle, RingSquare, RingDiamond, RingTriangleUp, RingTriangleDown,  // hollow
-  Plus, Cross,                                                            // strokes
-};
 
 /// A row of the method table: everything a method says of itself. Its name, order, cost,
 /// family, what its stability needs (its tableau's R(z), a closed form, a definite form), its

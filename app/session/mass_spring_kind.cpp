@@ -1,0 +1,87 @@
+// The mass-spring kind (scene_kind.hpp): a lane is a method's row, its simulation all it has.
+#include "session/scene_kind.hpp"
+
+#include "session/ik_kind.hpp"
+#include "session/session.hpp"
+#include "springlab/error.hpp"
+#include "springlab/text.hpp"
+#include "util/data_dir.hpp"
+
+#include <sstream>
+
+namespace springlab::app {
+
+namespace {
+
+class MassSpringKind final : public SceneKind {
+ public:
+  explicit MassSpringKind(std::vector<Method> scene_methods) : scene_methods_(std::move(scene_methods)) {}
+
+  Id id() const override { return Id::MassSpring; }
+
+  // The rows are the method table's, in its order: row k is Method k (methods/table.cpp checks
+  // the order).
+  int row_count() const override { return static_cast<int>(methods().size()); }
+  LaneRow row(int k) const override {
+    const MethodInfo& m = methods()[static_cast<std::size_t>(k)];
+    return {m.name, m.label, m.colour, m.mark};
+  }
+  int row_of(const Lane& lane) const override { return static_cast<int>(lane.sim.settings().method); }
+  std::optional<int> find(const std::string& name) const override {
+    if (const std::optional<Method> m = lookup_method(name)) return static_cast<int>(*m);
+    return std::nullopt;
+  }
+  const char* row_noun() const override { return N_("method"); }
+  std::string choices() const override { return method_choices(); }
+  int initial_row(Method method) const override { return static_cast<int>(method); }
+  std::vector<int> compared_first() const override {
+    std::vector<int> rows;
+    if (scene_methods_.size() >= 2)
+      for (Method m : scene_methods_) rows.push_back(static_cast<int>(m));
+    else
+      for (const MethodInfo& m : methods())
+        if (m.compared_first) rows.push_back(static_cast<int>(m.id));
+    return rows;
+  }
+
+  void configure(SimulationSettings& settings, int row) const override { settings.method = static_cast<Method>(row); }
+  void start(Lane&, int) const override {}
+  void switch_to(Lane& lane, int row) const override { lane.sim.set_method(static_cast<Method>(row)); }
+  void after_steps(Lane&, Steps) const override {}
+  void sample(Lane&) const override {}
+
+ private:
+  std::vector<Method> scene_methods_;  // the scene's own list to compare
+};
+
+}  // namespace
+
+std::optional<int> SceneKind::find(const std::string& name) const {
+  for (int k = 0; k < row_count(); ++k)
+    if (row(k).name == name) return k;
+  return std::nullopt;
+}
+
+std::vector<int> SceneKind::lanes_named(const std::string& list, const char* option) const {
+  std::vector<int> rows;
+  std::stringstream s(list);
+  for (std::string name; std::getline(s, name, ',');) {
+    const std::optional<int> row = find(name);
+    if (!row) throw InputError(std::string(option) + ": unknown " + row_noun() + " '" + name + "' (" + choices() + ")");
+    rows.push_back(*row);
+  }
+  if (rows.size() < 2 || rows.size() > Session::kMaxLanes) {
+    std::string example;
+    for (int k : compared_first()) example += (example.empty() ? "" : ",") + std::string(row(k).name);
+    throw InputError(std::string(option) + ": give 2 to " + std::to_string(Session::kMaxLanes) + " " + row_noun() +
+                     "s separated by commas, e.g. " + example);
+  }
+  return rows;
+}
+
+std::unique_ptr<SceneKind> make_scene_kind(const Scene& scene) {
+  if (scene.ik) return std::make_unique<IkKind>(*scene.ik);
+  return std::make_unique<MassSpringKind>(scene.methods);
+}
+
+}  // namespace springlab::app
