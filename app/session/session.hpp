@@ -85,6 +85,8 @@ class Session {
   static constexpr std::size_t kTrailLength = 240;  // frames
 
   Session(Scene scene, SimulationSettings settings, double fps = 60.0);
+  // With a kind given (a test's own; none: the scene's, make_scene_kind).
+  Session(Scene scene, SimulationSettings settings, double fps, std::unique_ptr<SceneKind> kind);
 
   // Background mode (the interactive window): each lane's stability analysis is made on a worker
   // thread when the scene changes, the lane stepping on with the sub-steps it had meanwhile (a

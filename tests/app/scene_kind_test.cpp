@@ -1,0 +1,212 @@
+// Scene kinds as types (app/session/scene_kind.hpp): the inverse-kinematics kind through the
+// session's calls for any kind, the keys and the command line; and a kind of the test's own, which
+// the session, picking, the keys and the drawing take without a line changed elsewhere (the
+// CONTRIBUTING checklist "A scene kind", followed).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+
+#include "draw/marks.hpp"
+#include "draw/palette.hpp"
+#include "draw/scene_frame.hpp"
+#include "session/ik_kind.hpp"
+#include "springlab/error.hpp"
+#include "springlab/text.hpp"
+#include "support.hpp"
+#include "ui/actions.hpp"
+#include "ui/kind_panels.hpp"
+
+namespace springlab::app {
+namespace {
+
+Session session_of(const std::string& name, std::unique_ptr<SceneKind> kind = nullptr) {
+  Scene scene = test::shipped(name);
+  const SimulationSettings s = settings_for(scene);
+  return Session(std::move(scene), s, 60.0, std::move(kind));
+}
+
+double distance(const std::array<float, 3>& a, const std::array<float, 3>& b) {
+  return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+}
+
+TEST(SceneKind, EachSceneHasItsKindAndItsRows) {
+  const auto spring = make_scene_kind(test::shipped("spring"));
+  EXPECT_EQ(spring->id(), SceneKind::Id::MassSpring);
+  ASSERT_EQ(spring->row_count(), static_cast<int>(methods().size()));
+  for (const MethodInfo& m : methods()) {  // row k is method k, as its table says
+    const LaneRow row = spring->row(static_cast<int>(m.id));
+    EXPECT_EQ(row.name, m.name);
+    EXPECT_EQ(row.colour, m.colour);
+    EXPECT_EQ(row.mark, m.mark);
+  }
+  EXPECT_EQ(spring->find("rk4"), static_cast<int>(Method::RK4));
+  EXPECT_EQ(spring->find("ccd"), std::nullopt);
+  EXPECT_EQ(spring->lanes_named("euler,verlet", "--compare"),
+            (std::vector<int>{static_cast<int>(Method::Euler), static_cast<int>(Method::Verlet)}));
+
+  const auto arm = make_scene_kind(test::shipped("ik-arm"));
+  EXPECT_EQ(arm->id(), SceneKind::Id::InverseKinematics);
+  ASSERT_EQ(arm->row_count(), 3);
+  std::set<Mark> marks;
+  for (int k = 0; k < 3; ++k) {
+    const IkSolverInfo& s = ik_solvers()[static_cast<std::size_t>(k)];
+    EXPECT_EQ(arm->row(k).name, s.name);
+    EXPECT_EQ(arm->row(k).colour, s.colour);
+    marks.insert(s.mark);
+    for (int j = 0; j < k; ++j) EXPECT_GT(distance(arm->row(j).colour, arm->row(k).colour), 0.3) << j << " " << k;
+  }
+  EXPECT_EQ(marks.size(), 3u);
+  EXPECT_EQ(arm->find("fabrik"), 1);
+  EXPECT_EQ(arm->find("rk4"), std::nullopt);
+  const auto refused = [&](const std::string& list) {
+    try {
+      arm->lanes_named(list, "--compare");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(accepted)");
+  };
+  EXPECT_EQ(refused("ccd,rk4"),
+            "--compare: unknown solver 'rk4' (this is an inverse-kinematics scene; solvers: ccd, fabrik, dls)");
+  EXPECT_EQ(refused("ccd").rfind("--compare: give 2 to 4 solvers separated by commas, e.g. ", 0), 0u) << refused("ccd");
+}
+
+// The three solvers side by side from one start, by the session's calls for any kind: each
+// reaches the target to its tolerance (the end within it of the target, measured on the chain),
+// each in its row's colour and mark; paused, none iterates; reset, each starts again.
+TEST(SceneKind, TheSolversReachTheTargetThroughTheSessionsCalls) {
+  Session session = session_of("ik-arm");
+  const IkScene ik = *test::shipped("ik-arm").ik;
+  EXPECT_EQ(session.chosen(), static_cast<int>(ik.solvers.front()));
+  session.set_compare_rows(session.kind().compared_first());
+  ASSERT_EQ(session.lanes().size(), 3u);
+  for (int frame = 0; frame < 600; ++frame) session.advance_frame();
+  const Eigen::Vector2d target = session.scene().state.x.row(ik.target).head<2>().transpose();
+  std::set<Mark> marks;
+  for (const Lane& lane : session.lanes()) {
+    const IkLane& part = ik_lane(lane);
+    EXPECT_TRUE(part.status.converged) << lane_name(lane);
+    EXPECT_LE((part.chain.effector() - target).norm(), ik.settings.tolerance) << lane_name(lane);
+    EXPECT_EQ(lane.history.ik_error.back(), part.status.error);
+    EXPECT_GT(lane.history.ik_error[0], 100 * ik.settings.tolerance);  // it started away from it
+    const LaneRow row = lane_row(lane);
+    EXPECT_EQ(lane_name(lane), row.name);
+    EXPECT_EQ(draw::lane_color(lane).r, row.colour[0]);
+    marks.insert(draw::lane_mark(lane));
+  }
+  EXPECT_EQ(marks.size(), 3u);
+
+  session.reset();
+  session.set_paused(true);
+  for (int frame = 0; frame < 10; ++frame) session.advance_frame();
+  for (const Lane& lane : session.lanes()) {
+    EXPECT_EQ(ik_lane(lane).status.iterations, 0) << lane_name(lane);
+    EXPECT_EQ(ik_lane(lane).chain.angles, ik.chain.angles);
+  }
+  session.step_once();  // one step: one iteration each
+  for (const Lane& lane : session.lanes()) EXPECT_EQ(ik_lane(lane).status.iterations, 1) << lane_name(lane);
+}
+
+// The keys ask the kind: 1 to 3 choose a solver (from the pose reached), C sets the scene's
+// solvers side by side and back; only the target may be held.
+TEST(SceneKind, KeysAndHoldingAskTheKind) {
+  Session session = session_of("ik-arm");
+  ui::UiState ui;
+  for (int frame = 0; frame < 5; ++frame) session.advance_frame();
+  const std::vector<double> reached = ik_lane(session.primary()).chain.angles;
+  ui::perform(static_cast<ui::Action>(static_cast<int>(ui::Action::Method1) + 2), session, ui);
+  EXPECT_EQ(lane_name(session.primary()), "dls");
+  EXPECT_EQ(ik_lane(session.primary()).chain.angles, reached);  // switched, not restarted
+  ui::perform(static_cast<ui::Action>(static_cast<int>(ui::Action::Method1) + 5), session, ui);  // no sixth solver
+  EXPECT_EQ(lane_name(session.primary()), "dls");
+  ui::perform(ui::Action::ToggleCompare, session, ui);
+  ASSERT_EQ(session.lanes().size(), session.kind().compared_first().size());
+  ui::perform(ui::Action::ToggleCompare, session, ui);
+  EXPECT_EQ(session.lanes().size(), 1u);
+
+  const int target = session.kind().handle();
+  EXPECT_EQ(target, session.scene().ik->target);
+  const State& s = session.primary().sim.state();
+  for (int i = 0; i < s.particle_count(); ++i) {
+    const Vec3 p = s.x.row(i).transpose();
+    const int picked = session.pick(p + Vec3(0, 0, 5), Vec3(0, 0, -1), 1e-3);
+    EXPECT_EQ(picked, i == target ? target : -1) << "particle " << i;
+  }
+}
+
+// A kind no one else names: its lanes are two methods (explicit Euler and Verlet), the rope's
+// free end is its handle, and a guide circle of 0.5 m is drawn round the anchor, its springs
+// in the lane's colour. The session, picking, the keys and the drawing take it as it is.
+class TetheredKind final : public SceneKind {
+ public:
+  explicit TetheredKind(int handle) : handle_(handle) {}
+  Id id() const override { return Id::MassSpring; }  // (its UI half: the mass-spring panels)
+  int row_count() const override { return 2; }
+  LaneRow row(int k) const override {
+    const MethodInfo& m = method_info(k == 0 ? Method::Euler : Method::Verlet);
+    return {m.name, m.label, m.colour, m.mark};
+  }
+  int row_of(const Lane& lane) const override { return lane.sim.settings().method == Method::Verlet ? 1 : 0; }
+  const char* row_noun() const override { return "method"; }
+  std::string choices() const override { return "euler, verlet"; }
+  int initial_row(Method) const override { return 1; }
+  std::vector<int> compared_first() const override { return {0, 1}; }
+  void configure(SimulationSettings& s, int row) const override { s.method = row == 0 ? Method::Euler : Method::Verlet; }
+  void start(Lane& lane, int) const override { ++lane.inverted_cells; }  // (a mark that each lane was started)
+  void switch_to(Lane& lane, int row) const override { lane.sim.set_method(row == 0 ? Method::Euler : Method::Verlet); }
+  void after_steps(Lane&, Steps) const override {}
+  void sample(Lane&) const override {}
+  int handle() const override { return handle_; }
+  std::vector<GuideCircle> guides() const override { return {{Vec3::Zero(), 0.5}}; }
+  bool strained() const override { return false; }
+
+ private:
+  int handle_;
+};
+
+TEST(SceneKind, AKindOfOnesOwnNeedsNoOtherEdit) {
+  const int end = test::shipped("rope").model.particle_count() - 1;
+  Session session = session_of("rope", std::make_unique<TetheredKind>(end));
+  EXPECT_EQ(session.primary().sim.settings().method, Method::Verlet);  // its initial row
+  EXPECT_EQ(session.primary().inverted_cells, 1);                      // started by it
+  ui::UiState ui;
+  ui::perform(ui::Action::Method1, session, ui);
+  EXPECT_EQ(session.primary().sim.settings().method, Method::Euler);
+  ui::perform(static_cast<ui::Action>(static_cast<int>(ui::Action::Method1) + 2), session, ui);  // no third row
+  EXPECT_EQ(session.chosen(), 0);
+  ui::perform(ui::Action::ToggleCompare, session, ui);
+  ASSERT_EQ(session.lanes().size(), 2u);
+  EXPECT_EQ(lane_label(session.lanes()[1]), tr(method_info(Method::Verlet).label));
+
+  // Only its handle may be held.
+  const State& s = session.primary().sim.state();
+  for (int i : {1, end / 2, end}) {
+    const Vec3 p = s.x.row(i).transpose();
+    EXPECT_EQ(session.pick(p + Vec3(0, 0, 5), Vec3(0, 0, -1), 1e-3), i == end ? end : -1) << "particle " << i;
+  }
+
+  // Drawn: its guide, a circle of 128 segments at 0.5 m, and its springs in each lane's colour.
+  session.set_compare_rows({1});
+  draw::ViewOptions view = draw::ViewOptions::for_scene(session.scene());
+  view.trails = false;
+  const draw::Frame frame = draw::build_frame(session, view, draw::Viewport{0, 0, 640, 360});
+  int guide = 0;
+  std::set<std::array<float, 4>> spring_colours;
+  for (const draw::Line& line : frame.lines) {
+    if (line.color_a.r == draw::kReach.r && line.color_a.a == draw::kReach.a) {
+      ++guide;
+      EXPECT_NEAR(line.a.norm(), 0.5f, 1e-5f);
+    } else {
+      spring_colours.insert({line.color_a.r, line.color_a.g, line.color_a.b, line.color_a.a});
+    }
+  }
+  EXPECT_EQ(guide, 128);
+  EXPECT_EQ(spring_colours.size(), 1u);  // not by strain: the lane's colour
+  EXPECT_EQ(*spring_colours.begin(), (std::array<float, 4>{method_info(Method::Verlet).colour[0],
+                                                            method_info(Method::Verlet).colour[1],
+                                                            method_info(Method::Verlet).colour[2], 1.0f}));
+}
+
+}  // namespace
+}  // namespace springlab::app
