@@ -37,7 +37,7 @@ int view(ViewCli& o) {
         o.window.height < 240 || o.window.width > 7680 || o.window.height > 4320)
       throw InputError("--size: must be WIDTHxHEIGHT, from 320x240 to 7680x4320, got '" + *o.size + "'");
   }
-  if (o.compare) o.app.compare = parse_compare(*o.compare, "--compare");
+  o.app.compare = o.compare;  // (its names are the scene kind's rows: checked once the scene is read)
   // A lesson is checked before any window opens: a bad one is bad input, display or not.
   if (o.app.lesson) check_lesson_step(open_lesson(*o.app.lesson), o.app.lesson_step, "--step");
   o.window.threads_given = o.app.sim.threads.has_value();

@@ -37,13 +37,6 @@ std::vector<Method> parse_method_list(const std::string& text, const char* optio
   return list;
 }
 
-std::vector<Method> parse_compare(const std::string& text, const char* option) {
-  const std::vector<Method> lanes = parse_method_list(text, option);
-  if (lanes.size() < 2 || lanes.size() > 4)
-    throw InputError(std::string(option) + ": give 2 to 4 methods separated by commas, e.g. euler,verlet");
-  return lanes;
-}
-
 void check_option(const char* name, double value, double lo, double hi, bool lo_open,
                   const char* unit) {
   if (std::isfinite(value) && (lo_open ? value > lo : value >= lo) && value <= hi) return;

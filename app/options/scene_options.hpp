@@ -56,7 +56,5 @@ std::string parse_whole_number(std::string& text, double lo, double hi);
 // Methods from "euler,heun,mine.json": built-in methods, shipped tableaux or tableau files
 // (lookup_method, util/data_dir.hpp). Throws InputError naming `option`.
 std::vector<Method> parse_method_list(const std::string& text, const char* option);
-// Compare lanes: 2 to 4 of them.
-std::vector<Method> parse_compare(const std::string& text, const char* option);
 
 }  // namespace springlab::app

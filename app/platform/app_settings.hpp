@@ -14,7 +14,9 @@ namespace springlab::app {
 struct AppSettings {
   std::string scene = "rope";  // a shipped scene's name or a path
   SimOptions sim;
-  std::vector<Method> compare;  // empty, or 2 to 4 lanes
+  // The lanes side by side, as named ("euler,verlet", or an IK scene's "ccd,fabrik"): the scene
+  // kind's rows, checked against the scene where it is prepared (compare_rows).
+  std::optional<std::string> compare;
   std::optional<std::string> script;
   double ui_scale = 1.0;  // times the display's own scale
   std::string language;   // "zh-CN", "en"; empty: the environment's (desktop) or the browser's

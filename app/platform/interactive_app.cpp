@@ -62,7 +62,7 @@ InteractiveApp::InteractiveApp(Prepared first, const AppSettings& settings, std:
   }
   const std::string name = first.scene.name;
   show(std::move(first), name);
-  if (!settings.compare.empty()) session_->set_compare(settings.compare);
+  if (settings.compare) session_->set_compare_rows(session_->kind().lanes_named(*settings.compare, "--compare"));
   if (script) session_->play(std::move(*script));
   if (settings.accuracy) {
     ui_.accuracy = true;

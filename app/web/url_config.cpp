@@ -121,7 +121,7 @@ AppSettings settings_from_link(const std::string& fragment) {
       s.sim.iterations = static_cast<int>(k);
     }
     else if (key == "rho") s.sim.rho = number(key, value);
-    else if (key == "compare") s.compare = parse_compare(value, "link: compare");
+    else if (key == "compare") s.compare = value;  // (the scene kind's rows: checked once the scene is read)
     else if (key == "script") s.script = value;
     else if (key == "set") s.sim.sets.push_back(value);  // set=cloth.width%3D64, as --set
     else if (key == "lesson") s.lesson = value;
@@ -236,7 +236,7 @@ std::string link_of(const InteractiveApp& app, const std::vector<std::string>& s
     // (no compare= nor method=: the homework's code makes its lanes and the rows beside them)
   } else if (session.comparing()) {
     std::string lanes;
-    for (const Lane& l : session.lanes()) lanes += (lanes.empty() ? "" : ",") + std::string(method_info(l.sim.settings().method).name);
+    for (const Lane& l : session.lanes()) lanes += (lanes.empty() ? "" : ",") + std::string(lane_row(l).name);
     link += "&compare=" + lanes;
   } else if (!file || session.method() != file->settings.method) {
     link += "&method=" + std::string(method_info(session.method()).name);

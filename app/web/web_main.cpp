@@ -172,6 +172,7 @@ std::unique_ptr<InteractiveApp> app_for_link(Page& page) {
   try {
     settings = settings_from_link(location_fragment());
     opened = open_settings(settings);
+    if (settings.compare) make_scene_kind(opened->prepared.scene)->lanes_named(*settings.compare, "link: compare");
   } catch (const std::exception& e) {
     problem = e.what();
     settings = AppSettings();
@@ -282,7 +283,8 @@ EMSCRIPTEN_KEEPALIVE void springlab_set_ui_scale(double scale) {
   if (g_page && std::isfinite(scale)) g_page->next_ui_scale = scale;
 }
 
-// What is shown, as JSON, for the page's tests: scene, method, dt, lanes and their times, the
+// What is shown, as JSON, for the page's tests: scene, method (the row: an IK scene's solver), dt,
+// lanes (their rows) and their times, the
 // banner's message, the frame count.
 EMSCRIPTEN_KEEPALIVE const char* springlab_status() {
   using namespace springlab;
@@ -300,7 +302,7 @@ EMSCRIPTEN_KEEPALIVE const char* springlab_status() {
   };
   char number[256];
   json = "{\"scene\":" + quoted(g_page->app->scene_name());
-  json += ",\"method\":" + quoted(method_info(session.method()).name);
+  json += ",\"method\":" + quoted(std::string(app::lane_row(session.primary()).name));  // (an IK scene's: its solver)
   std::snprintf(number, sizeof number, ",\"dt\":%.17g", session.primary().sim.settings().dt);
   json += number;
   std::snprintf(number, sizeof number, ",\"ks\":%.17g,\"kd\":%.17g", session.stiffness(), session.damping());
@@ -334,7 +336,7 @@ EMSCRIPTEN_KEEPALIVE const char* springlab_status() {
   for (std::size_t i = 0; i < session.lanes().size(); ++i) {
     const app::Lane& lane = session.lanes()[i];
     std::snprintf(number, sizeof number, "%s{\"method\":\"%s\",\"t\":%.17g,\"diverged\":%s,\"unstable\":%s",
-                  i ? "," : "", method_info(lane.sim.settings().method).name, lane.sim.state().t,
+                  i ? "," : "", std::string(app::lane_row(lane).name).c_str(), lane.sim.state().t,
                   lane.sim.diverged() ? "true" : "false", lane.sim.instability() ? "true" : "false");
     json += number;
     // A lane of one's own (homework): its label, and why it stopped where it did.

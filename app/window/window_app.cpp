@@ -100,6 +100,7 @@ int report_run(const Session& session, const WindowOptions& o, const RunTimes& r
 
 int run_window(const AppSettings& settings, const WindowOptions& o) {
   Prepared prepared = prepare(settings.scene, settings.sim);
+  if (settings.compare) make_scene_kind(prepared.scene)->lanes_named(*settings.compare, "--compare");  // before any window
   std::optional<Script> script;
   if (settings.script) script = load_script(*settings.script, prepared.scene);
   // The student's rope, built and checked before any window opens: a file that does not compile

@@ -25,9 +25,11 @@
 #include "draw/marks.hpp"
 #include "draw/palette.hpp"
 #include "session/session.hpp"
+#include "springlab/butcher.hpp"
 #include "springlab/error.hpp"
 #include "springlab/stability.hpp"
 #include "support.hpp"
+#include "util/data_dir.hpp"
 
 namespace springlab {
 namespace {
@@ -110,6 +112,18 @@ TEST(NewRow, IsFoundShownAndDescribedFromItsRowAlone) {
   MethodInfo stepless{};
   stepless.name = "stepless";
   EXPECT_THROW(add_method(stepless), InputError);
+  // A tableau file of a taken name is refused, saying whose the name is.
+  const ButcherTableau heun_tableau = load_tableau_file(app::resolve_tableau("heun"));
+  const auto refusal = [&](const std::string& name) {
+    try {
+      add_tableau_method(heun_tableau, name);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(accepted)");
+  };
+  EXPECT_EQ(refusal("own-heun"), "method 'own-heun': a row added by the program has this name; give the tableau's file another name");
+  EXPECT_EQ(refusal("rk4"), "method 'rk4': a built-in method has this name; give the tableau's file another name");
 }
 
 TEST(NewRow, StepsAtItsOrderAndHoldsExactlyToTheLimitItsTableauGives) {

@@ -90,6 +90,14 @@ TEST(View, CompareModeStartsFromTheCommandLine) {
     EXPECT_NE(r.out.find(lane), std::string::npos) << r.out;
 }
 
+// An IK scene's lanes are its solvers (its kind's rows), by the command line and by a link's
+// names alike.
+TEST(View, CompareModeOfAnIkSceneNamesItsSolvers) {
+  const Result r = view("ik-arm --frames 30 --compare ccd,dls");
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* lane : {"lane       ccd", "lane       dls"}) EXPECT_NE(r.out.find(lane), std::string::npos) << r.out;
+}
+
 TEST(View, WithoutADisplaySaysWhatToDo) {
   const Result r = springlab_with("env -u DISPLAY -u WAYLAND_DISPLAY ", "view spring --frames 1");
   EXPECT_EQ(r.status, 1);
@@ -104,6 +112,7 @@ TEST(View, BadOptionsExitTwo) {
            {"view spring --frames 0", "--frames"},
            {"view spring --size 10x10 --frames 1", "--size"},
            {"view spring --compare euler --frames 1", "--compare: give 2 to 4 methods"},
+           {"view ik-arm --compare ccd,rk4 --frames 1", "--compare: unknown solver 'rk4' (this is an inverse-kinematics scene"},
            {"view nope --frames 1", "scene 'nope'"},
            {"view spring --ui-scale 9 --frames 1", "--ui-scale"},
            {"view spring --lang fr --frames 1", "--lang: 'fr' is not a language springlab speaks (en, zh-CN)"},

@@ -215,6 +215,11 @@ check("a compare link shows the lanes", async ({ browser, base }) => {
   await pauseAtStart(page);
   await matchesGolden(browser, page, "rope-compare");
   await page.close();
+  // An IK scene's lanes are its solvers (its scene kind's rows).
+  const ik = await openApp(browser, base, "scene=ik-arm&compare=ccd,dls");
+  const si = await status(ik);
+  expect(si.message === "" && si.lanes.map((l) => l.method).join(",") === "ccd,dls", `ik lanes ${JSON.stringify(si)}`);
+  await ik.close();
 });
 
 check("a link with a tableau runs it beside RK4 and draws its region; copy link keeps it", async ({ browser, base }) => {
@@ -270,6 +275,7 @@ check("a bad link says which parameter and opens the default scene", async ({ br
   for (const [link, words] of [["scene=ropee", ["scene 'ropee'", "rope"]], ["scene=rope&dt=-1", ["dt", "(0, 1]"]],
                                ["method=eulr", ["method", "euler"]], ["speed=2", ["unknown parameter 'speed'"]],
                                ["compare=euler", ["compare", "2 to 4"]], ["ks=abc", ["ks", "number"]],
+                               ["scene=ik-arm&compare=ccd,rk4", ["compare", "unknown solver 'rk4'"]],
                                ["lesson=hooke&step=3", ["step", "steps 1 to 2"]]]) {
     const page = await openApp(browser, base, link);
     const s = await status(page);

@@ -265,8 +265,10 @@ Method add_tableau_method(const ButcherTableau& tableau, const std::string& name
         throw InputError("method '" + name + "': another tableau already has this name; give this one another file name");
       return *find_method(name);
     }
-  if (find_method(name))
-    throw InputError("method '" + name + "': a built-in method has this name; give the tableau's file another name");
+  if (const std::optional<Method> taken = find_method(name))
+    throw InputError("method '" + name + "': " +
+                     (static_cast<std::size_t>(*taken) < std::size(kMethods) ? "a built-in method" : "a row added by the program") +
+                     " has this name; give the tableau's file another name");
   const std::size_t index = t.count.load(std::memory_order_relaxed);
   if (index >= t.rows.size())
     throw InputError("method '" + name + "': at most " + std::to_string(kMaxAdded) + " methods from tableaux in one run");

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "springlab/energy.hpp"
@@ -144,6 +145,89 @@ double transient_growth(Method method, double gamma, double kappa, double h, dou
   return std::isfinite(condition) ? std::max(largest, condition * condition) : kInf;
 }
 
+namespace {
+
+// The runs a measured limit makes of a scene: without colliders and fields (and without gravity
+// unless every part is held, so that a free body stays put), from its balance given a tiny random
+// push, the same every run. holds(h, steps): whether `steps` steps of h stay bounded.
+struct Probe {
+  Method method;
+  StepSettings settings;
+  Model runs;
+  State pushed;
+  double e_rest = 0.0;   // the balance's energy
+  double start = 0.0;    // the push's energy above it
+  double size = 0.0;     // particles and springs: what a step costs, in the budget's units
+  double ceiling = 0.0;  // the iterative rows' divergence: kDivergenceFactor times the energy scale
+  bool own_balance = false;
+  double spent = 0.0;  // particle- and spring-steps run so far
+
+  bool holds(double h, long steps);
+};
+
+// The probe of `model` from `state`; none where nothing can move (no push gives kinetic energy).
+std::optional<Probe> make_probe(Method method, const Model& model, const State& state, const StepSettings& settings) {
+  Probe p;
+  p.method = method;
+  p.settings = settings;
+  p.runs = model;
+  Model& runs = p.runs;
+  runs.planes.clear();
+  runs.spheres.clear();
+  runs.attractors.clear();
+  if (!every_part_held(runs)) runs.gravity.setZero();
+  const State rest = equilibrium(runs, state);
+  p.e_rest = energy(runs, rest).total();
+  const double scale = energy_scale(runs, rest);
+
+  // A tiny random push, the same every run.
+  p.pushed = rest;
+  std::uint64_t seed = 0x2545F4914F6CDD1Dull;
+  for (int i = 0; i < runs.particle_count(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+      p.pushed.v(i, c) = runs.pinned(i) ? 0.0 : static_cast<double>(seed >> 11) / 9007199254740992.0 - 0.5;
+    }
+  const double kinetic = kinetic_energy(runs, p.pushed);
+  if (!(kinetic > 0.0)) return std::nullopt;
+  p.pushed.v *= std::sqrt(1e-12 * scale / kinetic);
+  p.start = energy(runs, p.pushed).total() - p.e_rest;
+  p.size = runs.particle_count() + runs.spring_count();
+  // The iterative rows stop short of the implicit solve, so the scene's balance is not their
+  // own: from it they sag to another (XPBD's soft springs, by far more than the push), so their
+  // energy above the balance grows, and two runs pushed differently can part (a cloth buckles
+  // one way or the other), without any instability. For them a probe asks what the app asks of
+  // a run: does it diverge, its kinetic or total energy leaving kDivergenceFactor (1e6) times the
+  // scene's energy scale? Their push is 1e-3 of the scale, so that an unstable mode still has to
+  // grow 1e9-fold to be caught, as for the others.
+  p.own_balance = method_info(method).family == MethodFamily::Iterative;
+  if (p.own_balance) p.pushed.v *= std::sqrt(1e9);
+  p.ceiling = kDivergenceFactor * scale;
+  return p;
+}
+
+bool Probe::holds(double h, long steps) {
+  State a = pushed, b = pushed;
+  Workspace ws;
+  spent += static_cast<double>(steps) * size;
+  for (long k = 0; k < steps; ++k) {
+    if ((k & 255) == 0) check_cancel();
+    try {
+      step(method, runs, a, b, h, settings, ws);
+    } catch (const StepFailure&) {
+      return false;  // a step that could not be completed (a stage's Newton iteration): not held
+    }
+    std::swap(a, b);
+    if ((k & 15) != 15 && k + 1 < steps) continue;
+    const double e = energy(runs, a).total() - e_rest;
+    if (!std::isfinite(e)) return false;
+    if (own_balance ? std::max(kinetic_energy(runs, a), std::abs(e)) > ceiling : e > 1e3 * start) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 MeasuredLimit measured_limit(Method method, const Model& model, const State& state, const StabilityLimit& expected,
                              double w_max, const StepSettings& settings, double budget) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -152,35 +236,15 @@ MeasuredLimit measured_limit(Method method, const Model& model, const State& sta
     out.h = std::numeric_limits<double>::quiet_NaN();
     return out;
   }
-  Model runs = model;
-  runs.planes.clear();
-  runs.spheres.clear();
-  runs.attractors.clear();
-  if (!every_part_held(runs)) runs.gravity.setZero();
-  const State rest = equilibrium(runs, state);
-  const double e_rest = energy(runs, rest).total();
-  const double scale = energy_scale(runs, rest);
-
-  // A tiny random push, the same every run.
-  State pushed = rest;
-  std::uint64_t seed = 0x2545F4914F6CDD1Dull;
-  for (int i = 0; i < runs.particle_count(); ++i)
-    for (int c = 0; c < 3; ++c) {
-      seed = seed * 6364136223846793005ull + 1442695040888963407ull;
-      pushed.v(i, c) = runs.pinned(i) ? 0.0 : static_cast<double>(seed >> 11) / 9007199254740992.0 - 0.5;
-    }
-  const double kinetic = kinetic_energy(runs, pushed);
-  if (!(kinetic > 0.0)) {
+  std::optional<Probe> probe = make_probe(method, model, state, settings);
+  if (!probe) {
     out.h = kInf;
     return out;
   }
-  pushed.v *= std::sqrt(1e-12 * scale / kinetic);
-  const double start = energy(runs, pushed).total() - e_rest;
   // The work allowed, in particle- and spring-steps: a probe is at most 200,000 steps and a
   // twentieth of it; the bisection stops when it is spent.
-  const double size = runs.particle_count() + runs.spring_count();
-  const long max_steps = std::clamp(static_cast<long>(budget / (20.0 * size)), 200L, 200000L);
-  double spent = 0.0;
+  const long max_steps = std::clamp(static_cast<long>(budget / (20.0 * probe->size)), 200L, 200000L);
+  const double& spent = probe->spent;
 
   // The mode the analysis expects to fail first sets how long a run must be: long enough for
   // that mode's energy to grow 1e9-fold, ln(1e9) / (2 ln rho), so that the whole energy grows a
@@ -194,35 +258,7 @@ MeasuredLimit measured_limit(Method method, const Model& model, const State& sta
     const double steps = std::ceil(std::log(1e9) / (2.0 * std::log(rho)));
     return std::clamp(static_cast<long>(std::min(steps, 1e12)), 200L, max_steps);
   };
-  // The iterative rows stop short of the implicit solve, so the scene's balance is not their
-  // own: from it they sag to another (XPBD's soft springs, by far more than the push), so their
-  // energy above the balance grows, and two runs pushed differently can part (a cloth buckles
-  // one way or the other), without any instability. For them a probe asks what the app asks of
-  // a run: does it diverge, its kinetic or total energy leaving kDivergenceFactor (1e6) times the
-  // scene's energy scale? Their push is 1e-3 of the scale, so that an unstable mode still has to
-  // grow 1e9-fold to be caught, as for the others.
-  const bool own_balance = method_info(method).family == MethodFamily::Iterative;
-  if (own_balance) pushed.v *= std::sqrt(1e9);
-  const double ceiling = kDivergenceFactor * scale;
-  const auto holds = [&](double h, long steps) -> bool {
-    State a = pushed, b = pushed;
-    Workspace ws;
-    spent += static_cast<double>(steps) * size;
-    for (long k = 0; k < steps; ++k) {
-      if ((k & 255) == 0) check_cancel();
-      try {
-        step(method, runs, a, b, h, settings, ws);
-      } catch (const StepFailure&) {
-        return false;  // a step that could not be completed (a stage's Newton iteration): not held
-      }
-      std::swap(a, b);
-      if ((k & 15) != 15 && k + 1 < steps) continue;
-      const double e = energy(runs, a).total() - e_rest;
-      if (!std::isfinite(e)) return false;
-      if (own_balance ? std::max(kinetic_energy(runs, a), std::abs(e)) > ceiling : e > 1e3 * start) return false;
-    }
-    return true;
-  };
+  const auto holds = [&](double h, long steps) { return probe->holds(h, steps); };
   const auto holds_for = [&](double h) { return holds(h, steps_to_see(h)); };
 
   // Unstable at any step, says the analysis: then runs from h w = 0.3 up grow, fast enough to
