@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <chrono>
 #include <exception>
-#include <condition_variable>
 #include <memory>
 #include <mutex>
 #include <system_error>
@@ -24,61 +23,73 @@ inline void pause() {
 #endif
 }
 
-// Jobs are numbered (generation); the caller publishes one (job, threads) and wakes the helpers,
-// runs its own share, then closes it (closed = its number) and waits until no helper is inside.
-// A helper enters by counting itself inside and then checking that the job is still open: either
-// it counted itself before the caller looked (the caller waits for it) or it sees the job closed
-// and leaves (sequentially consistent order on `inside` and `closed`).
+// Jobs are numbered (generation); the caller publishes one (job, threads), hands its number to
+// the helpers of this job's team alone, each in its own slot, and wakes those that sleep; runs its
+// own share, then closes it (closed = its number) and waits until no helper is inside. A helper
+// enters by counting itself inside and then checking that the job is still open: either it
+// counted itself before the caller looked (the caller waits for it) or it sees the job closed and
+// leaves (sequentially consistent order on `inside` and `closed`).
+// A helper outside a job's team is not told of it: the pool keeps the helpers the largest team
+// needed (16 for a pass at 16 threads), and a pass with a smaller team (local-global's local
+// step, a small VBD colour, a later run at fewer threads) must not wake the others to spin for
+// nothing on cores the team wants (on 2 cores, after a pass at 16 threads, the default's steps
+// ran at a quarter of their speed while 14 idle helpers woke and spun at every pass).
 // The words the caller writes and the helpers poll each on a cache line of its own: a helper's
-// spin on `generation` does not slow the caller's writes to `inside`'s line, nor the reverse.
+// spin on its slot does not slow the caller's writes to `inside`'s line, nor the reverse.
 struct Pool {
+  // A helper's slot: the number of the last job handed to it (its low 32 bits: consecutive jobs
+  // differ), and whether it sleeps (waits on `job`), so that the caller wakes only a sleeper.
+  struct alignas(64) Slot {
+    std::atomic<std::uint32_t> job{0};
+    std::atomic<bool> asleep{false};
+  };
+  static constexpr int kMostHelpers = 255;  // (a team of 256 threads)
+
   std::mutex growing;  // helpers are started under it
   std::vector<std::thread> helpers;
   std::atomic<int> started{0};  // helpers.size(), read without the lock
   alignas(64) std::atomic<bool> busy{false};
   alignas(64) std::atomic<std::uint64_t> generation{0};
   alignas(64) std::atomic<std::uint64_t> closed{0};
-  // Helpers asleep wait on `wake` (under `sleep`); `sleepers` counts those about to, so that the
-  // caller takes the lock and notifies only when one might be waiting (the same order argument:
-  // a helper counts itself before it looks at the generation under the lock).
-  std::mutex sleep;
-  std::condition_variable wake;
-  alignas(64) std::atomic<int> sleepers{0};
   alignas(64) std::atomic<int> inside{0};
   alignas(64) const Team::Job* job = nullptr;
   int threads = 1;
+  Slot slots[kMostHelpers + 1];  // slots[i]: helper i (1 to kMostHelpers)
 
-
-  // After a new generation: wakes the helpers that sleep.
-  void ring() {
-    if (sleepers.load() == 0) return;
-    { std::lock_guard lock(sleep); }
-    wake.notify_all();
+  // Hands job `g` to helpers 1 to threads - 1, waking those that sleep. Sequentially consistent
+  // with the helper's side (serve): either the caller sees a helper asleep and notifies it after
+  // the store, or the helper, which marks itself asleep before it waits, sees the new number.
+  void hand_out(std::uint64_t g, int team) {
+    for (int i = 1; i < team; ++i) {
+      Slot& slot = slots[i];
+      slot.job.store(static_cast<std::uint32_t>(g));
+      if (slot.asleep.load()) slot.job.notify_one();
+    }
   }
 
-  // `seen`: the last generation before the helper was started (it may start running only after
-  // the job that started it was published, or after the pool began to close).
-  void serve(int index, std::uint64_t seen) {
+  // `seen`: the job number the helper's slot held when it was started.
+  void serve(int index, std::uint32_t seen) {
     using Clock = std::chrono::steady_clock;
+    Slot& slot = slots[index];
     for (;;) {
       // A new job soon (a step's next pass): spin; none for a while: sleep until one.
       const auto since = Clock::now();
-      std::uint64_t g;
-      for (int spins = 0; (g = generation.load(std::memory_order_acquire)) == seen; ++spins) {
+      std::uint32_t g;
+      for (int spins = 0; (g = slot.job.load(std::memory_order_acquire)) == seen; ++spins) {
         if (spins < 64 || (spins & 63) || Clock::now() - since < std::chrono::microseconds(50)) {
           pause();
           continue;
         }
-        sleepers.fetch_add(1);
-        {
-          std::unique_lock lock(sleep);
-          wake.wait(lock, [&] { return generation.load() != seen; });
-        }
-        sleepers.fetch_sub(1);
+        slot.asleep.store(true);
+        slot.job.wait(seen);  // (returns at once if the number has changed since)
+        slot.asleep.store(false);
       }
       seen = g;
+      // The job is the generation whose low bits the slot holds: the latest, unless this helper
+      // comes so late that another has been published since (then it is closed, and skipped).
+      const std::uint64_t current = generation.load();
       inside.fetch_add(1);
-      if (closed.load() < g && index < threads) (*job)(threads, index);
+      if (static_cast<std::uint32_t>(current) == g && closed.load() < current && index < threads) (*job)(threads, index);
       inside.fetch_sub(1);
     }
   }
@@ -120,11 +131,12 @@ void Team::run(int threads, const Job& job) {
   }
   ++g_counts.team;
   g_yields = 0;
+  threads = std::min(threads, Pool::kMostHelpers + 1);
   if (p.started.load(std::memory_order_acquire) < threads - 1) {  // (the lock only to grow)
     std::lock_guard lock(p.growing);
     while (static_cast<int>(p.helpers.size()) < threads - 1) {
       const int index = static_cast<int>(p.helpers.size()) + 1;
-      const std::uint64_t seen = p.generation.load();
+      const std::uint32_t seen = p.slots[index].job.load();
       p.helpers.emplace_back([&p, index, seen] { p.serve(index, seen); });
     }
     p.started.store(static_cast<int>(p.helpers.size()), std::memory_order_release);
@@ -132,7 +144,7 @@ void Team::run(int threads, const Job& job) {
   p.job = &job;
   p.threads = threads;
   const std::uint64_t g = p.generation.fetch_add(1) + 1;
-  p.ring();
+  p.hand_out(g, threads);
   const auto started = std::chrono::steady_clock::now();
   job(threads, 0);
   p.closed.store(g);

@@ -103,7 +103,8 @@ inline int hardware_workers() { return 1; }
 // whoever is running (the job's own claims), and the caller takes every piece a helper has not
 // claimed. The caller waits only for a helper that joined and holds a piece (a window of a few
 // microseconds). Between jobs a helper spins for about 50 us (a step's next pass comes sooner),
-// then sleeps until the next one.
+// then sleeps until the next one. A job is handed only to the helpers of its own team (a pass
+// that asks for fewer threads than the pool has leaves the others asleep).
 class Team {
  public:
   // Waits until `done()`: spins briefly (the wait is usually a few microseconds), then yields the
