@@ -126,9 +126,10 @@ class Session {
   void set_own_lanes(const std::vector<OwnLane>& own, const std::vector<Method>& beside);
 
   // Rows, whatever the kind (a method's, an IK solver's: kind().row(k)). choose(): the single
-  // lane becomes row k from where it is (in a mass-spring scene, as set_method), and the lanes
-  // made next are; in compare mode only the latter. set_compare_rows(): the rows side by side
-  // (empty: back to one lane, the first lane's row); every lane restarts from the initial state.
+  // lane becomes row k from where it is (in a mass-spring scene as set_method, whose method the
+  // session's next lanes take too); in compare mode the lanes keep theirs. chosen(): the first
+  // lane's row. set_compare_rows(): the rows side by side (empty: back to one lane, of the first
+  // lane's row); every lane restarts from the initial state.
   void choose(int row);
   int chosen() const { return kind_->row_of(lanes_.front()); }
   void set_compare_rows(const std::vector<int>& rows);
