@@ -52,6 +52,7 @@ struct Pool {
   alignas(64) std::atomic<std::uint64_t> generation{0};
   alignas(64) std::atomic<std::uint64_t> closed{0};
   alignas(64) std::atomic<int> inside{0};
+  std::atomic<long> strays{0};  // Team::strays()
   alignas(64) const Team::Job* job = nullptr;
   int threads = 1;
   Slot slots[kMostHelpers + 1];  // slots[i]: helper i (1 to kMostHelpers)
@@ -89,7 +90,10 @@ struct Pool {
       // comes so late that another has been published since (then it is closed, and skipped).
       const std::uint64_t current = generation.load();
       inside.fetch_add(1);
-      if (static_cast<std::uint32_t>(current) == g && closed.load() < current && index < threads) (*job)(threads, index);
+      if (static_cast<std::uint32_t>(current) == g && closed.load() < current) {
+        if (index < threads) (*job)(threads, index);
+        else strays.fetch_add(1, std::memory_order_relaxed);
+      }
       inside.fetch_sub(1);
     }
   }
@@ -117,6 +121,7 @@ void Team::yielded() {
   ++g_counts.yields;
 }
 Team::Counts Team::counts() { return g_counts; }
+long Team::strays() { return pool().strays.load(); }
 
 void Team::run(int threads, const Job& job) {
   Pool& p = pool();
@@ -167,6 +172,7 @@ void Team::run(int threads, const Job& job) {
 void Team::run(int, const Job& job) { job(1, 0); }
 void Team::yielded() {}
 Team::Counts Team::counts() { return {}; }
+long Team::strays() { return 0; }
 
 #endif
 

@@ -160,6 +160,10 @@ class Team {
     long team = 0, alone = 0, yields = 0;
   };
   static Counts counts();
+  // Jobs a helper came to that its team did not include, in this process: none, as each job is
+  // handed only to its own team's helpers (a regression would have idle helpers spin on the
+  // team's cores).
+  static long strays();
 
  private:
   static void yielded();
