@@ -20,8 +20,6 @@ namespace springlab::ui {
 
 namespace {
 
-ImVec4 v4(const draw::Rgba& c) { return ImVec4(c.r, c.g, c.b, c.a); }
-
 const app::IkKind& ik_kind(const app::Session& session) { return dynamic_cast<const app::IkKind&>(session.kind()); }
 
 // How far each solver's end is from the target, frame by frame (log scale: the solvers converge

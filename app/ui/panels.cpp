@@ -50,8 +50,6 @@ constexpr ImGuiWindowFlags kPanel = ImGuiWindowFlags_NoSavedSettings | ImGuiWind
 // background: filling them again would only cost time (on a software rasteriser, most of a frame).
 constexpr ImGuiWindowFlags kDocked = kPanel | ImGuiWindowFlags_NoBackground;
 
-ImVec4 v4(const draw::Rgba& c) { return ImVec4(c.r, c.g, c.b, c.a); }
-
 const ImVec4 kSafe = v4(kSafeText), kNear = v4(kNearText), kBeyond = v4(kBeyondText), kNeutral = v4(kNeutralText);
 
 // This frame's panels are laid out for touch (ui/layout.hpp): no hover, thumbs.
