@@ -5,7 +5,7 @@
 //   springlab_threads SCENE_FILE METHOD DT STEPS THREADS... [--set KEY=VALUE]... [--analysis]
 //
 // For each thread count: a warm-up of STEPS / 10 steps, then STEPS timed steps; one line
-// "threads=T steps_per_s=S team=J alone=A yields=Y". With --analysis, the scene's stability
+// "threads=T steps_per_s=S team=J alone=A yields=Y stalls=R". With --analysis, the scene's stability
 // analysis is timed instead: "threads=T analysis_s=S".
 #include <chrono>
 #include <cstdio>
@@ -72,8 +72,9 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "diverged: %s\n", sim.explain_divergence()->message().c_str());
         return 3;
       }
-      std::printf("threads=%d steps_per_s=%.5g team=%ld alone=%ld yields=%ld\n", threads, taken / s,
-                  after.team - before.team, after.alone - before.alone, after.yields - before.yields);
+      std::printf("threads=%d steps_per_s=%.5g team=%ld alone=%ld yields=%ld stalls=%ld\n", threads, taken / s,
+                  after.team - before.team, after.alone - before.alone, after.yields - before.yields,
+                  after.stalls - before.stalls);
       std::fflush(stdout);
     }
   } catch (const std::exception& e) {

@@ -65,7 +65,8 @@ int bench(const BenchOptions& o) {
               s.model().spring_count(), static_cast<long long>(taken), seconds, taken / seconds,
               ns_per_spring_step(seconds), static_cast<double>(usage.ru_maxrss) / 1024.0);
   const TeamCounts team = team_counts();  // the warm-up's too
-  std::printf("team_passes=%ld\nalone_passes=%ld\nyielding_waits=%ld\n", team.team, team.alone, team.yields);
+  std::printf("team_passes=%ld\nalone_passes=%ld\nyielding_waits=%ld\nstalled_runs=%ld\n", team.team, team.alone, team.yields,
+              team.stalls);
   if (o.repeat > 1)  // the middle run (the mean of the two middle ones for an even count)
     std::printf("repeats=%d\nns_per_spring_step_median=%.4g\n", o.repeat,
                 ns_per_spring_step(0.5 * (runs[(runs.size() - 1) / 2] + runs[runs.size() / 2])));

@@ -4,8 +4,10 @@
 #include <omp.h>
 
 #include <atomic>
+#include <chrono>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "dynamics/threads.hpp"
@@ -132,6 +134,81 @@ TEST(Threads, EachRunsEveryJobOnceAndPassesOnTheFirstError) {
       EXPECT_TRUE(message == "job 3" || message == "job 5") << message;
     }
   }
+}
+
+// for_each_piece's runs, on two threads (the caller's run, pieces 0 to 3, and the helper's, 4 to
+// 7): the thread that ran each piece, whether the helper came (ran a piece of its own run), and
+// the caller's stalls counted meanwhile. `piece(p)` is the work.
+struct Runs {
+  bool caller[8] = {};
+  bool helper_came = false;
+  long stalls = 0;
+};
+template <typename Piece>
+Runs run_pieces(const Piece& piece) {
+  set_thread_count(2);
+  const std::thread::id caller = std::this_thread::get_id();
+  const long stalls = threads::Team::counts().stalls;
+  Runs runs;
+  std::atomic<bool> came{false};
+  threads::for_each_piece(8, 1e9, [&](int p) {
+    runs.caller[p] = std::this_thread::get_id() == caller;
+    if (p >= 4 && !runs.caller[p]) came = true;
+    piece(p);
+  });
+  set_thread_count(0);
+  runs.helper_came = came;
+  runs.stalls = threads::Team::counts().stalls - stalls;
+  return runs;
+}
+
+void busy_for(std::chrono::microseconds d) {
+  const auto until = std::chrono::steady_clock::now() + d;
+  while (std::chrono::steady_clock::now() < until) {
+  }
+}
+
+// A run its owner stops in (here, the helper's first piece waits for every other piece: a thread
+// another program has parked) is finished by the others: the caller, done with its own run (1 ms
+// a piece, time for the helper to come), takes the rest from its back and counts a stall. Were it
+// to wait for the owner, each would wait for the other: the 10 s limit below.
+TEST(Threads, ARunWhoseOwnerStopsIsFinishedByTheOthers) {
+  bool checked = false;
+  for (int attempt = 0; attempt < 20 && !checked; ++attempt) {
+    std::atomic<int> done{0};
+    std::atomic<bool> timed_out{false};
+    const std::thread::id caller = std::this_thread::get_id();
+    const Runs runs = run_pieces([&](int p) {
+      if (p < 4) busy_for(std::chrono::microseconds(1000));
+      if (p == 4 && std::this_thread::get_id() != caller) {
+        const auto limit = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+        while (done.load() < 7 && !timed_out)
+          if (std::chrono::steady_clock::now() > limit) timed_out = true;
+      }
+      ++done;
+    });
+    ASSERT_FALSE(timed_out) << "the caller waited for a run whose owner had stopped";
+    EXPECT_LE(runs.stalls, 1);
+    // (the helper came late and the caller found its run not begun: again)
+    checked = runs.helper_came && !runs.caller[4] && runs.stalls == 1;
+  }
+  EXPECT_TRUE(checked) << "in 20 tries, the helper never began its run before the caller took it";
+}
+
+// A run whose owner is working on it is left to it, though the owner is slower (3 ms a piece
+// against the caller's 2: the caller, done at 8 ms, sees the helper's last piece claimed at
+// 9 ms, within its patience of two of its own pieces). Taken at once, that piece and its data
+// would move to the caller's core, and back for the next pass. A try in which another program
+// delays a thread may see otherwise; one clean try of 20 is asked for.
+TEST(Threads, ARunWhoseOwnerWorksIsLeftToIt) {
+  int clean = 0;
+  for (int attempt = 0; attempt < 20 && clean == 0; ++attempt) {
+    const Runs runs = run_pieces([](int p) { busy_for(std::chrono::microseconds(p < 4 ? 2000 : 3000)); });
+    bool all_its_own = runs.helper_came;
+    for (int p = 0; p < 8; ++p) all_its_own = all_its_own && runs.caller[p] == (p < 4);
+    if (all_its_own && runs.stalls == 0) ++clean;
+  }
+  EXPECT_EQ(clean, 1) << "in 20 tries the caller always took a piece of the working helper's run";
 }
 
 // Called from the threads of an enclosing parallel region (each with its own buffers, as

@@ -69,9 +69,10 @@ void set_thread_count(int threads);
 int thread_count();
 // The calling thread's parallel passes so far: run by the team of threads, run on it alone (after
 // a wait for a helper that another program kept off its core, the team goes without helpers for a
-// while: dynamics/threads.hpp), and those waits.
+// while: dynamics/threads.hpp), those waits, and the helpers' runs of work taken from them once
+// they had stopped claiming it (stalls).
 struct TeamCounts {
-  long team = 0, alone = 0, yields = 0;
+  long team = 0, alone = 0, yields = 0, stalls = 0;
 };
 TeamCounts team_counts();
 

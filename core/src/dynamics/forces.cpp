@@ -29,7 +29,7 @@ int thread_count() { return threads::max_team(); }
 
 TeamCounts team_counts() {
   const threads::Team::Counts c = threads::Team::counts();
-  return {c.team, c.alone, c.yields};
+  return {c.team, c.alone, c.yields, c.stalls};
 }
 
 }  // namespace springlab

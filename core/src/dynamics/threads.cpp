@@ -120,6 +120,27 @@ void Team::yielded() {
   ++g_yields;
   ++g_counts.yields;
 }
+
+bool Team::stalled(const std::atomic<std::uint64_t>& run, std::chrono::nanoseconds patience) {
+  using Clock = std::chrono::steady_clock;
+  std::uint64_t seen = run.load(std::memory_order_relaxed);
+  auto since = Clock::now();
+  for (int spins = 1;; ++spins) {
+    const std::uint64_t word = run.load(std::memory_order_relaxed);
+    if ((word >> 32) >= (word & 0xFFFFFFFFu)) return false;  // every piece claimed
+    if (spins % 16 == 0) {  // (a clock read costs as much as 20 pauses)
+      const auto now = Clock::now();
+      if (word != seen) {
+        seen = word;
+        since = now;
+      } else if (now - since >= patience) {
+        ++g_counts.stalls;
+        return true;
+      }
+    }
+    pause();
+  }
+}
 Team::Counts Team::counts() { return g_counts; }
 long Team::strays() { return pool().strays.load(); }
 
@@ -171,6 +192,7 @@ void Team::run(int threads, const Job& job) {
 
 void Team::run(int, const Job& job) { job(1, 0); }
 void Team::yielded() {}
+bool Team::stalled(const std::atomic<std::uint64_t>&, std::chrono::nanoseconds) { return true; }
 Team::Counts Team::counts() { return {}; }
 long Team::strays() { return 0; }
 

@@ -156,14 +156,22 @@ class Team {
   static void run(int threads, const Job& job);
   // The calling thread's jobs so far: run as a team, run alone (its own choice, after a wait that
   // had to yield, or the team busy with another thread's), and the waits that yielded.
+  // `stalls`: runs of pieces taken from a thread that had stopped claiming (for_each_piece).
   struct Counts {
-    long team = 0, alone = 0, yields = 0;
+    long team = 0, alone = 0, yields = 0, stalls = 0;
   };
   static Counts counts();
   // Jobs a helper came to that its team did not include, in this process: none, as each job is
   // handed only to its own team's helpers (a regression would have idle helpers spin on the
   // team's cores).
   static long strays();
+
+  // Waits while a run of pieces (front << 32 | back, as for_each_piece keeps them) has pieces
+  // left and its owner claims one at least every `patience`. Returns whether it stopped claiming
+  // with pieces left (its owner is not running: counted in `stalls`). Not a sign for the team to
+  // go alone: the owner, still parked at the next job, does not begin its run there, which is
+  // then taken at once.
+  static bool stalled(const std::atomic<std::uint64_t>& run, std::chrono::nanoseconds patience);
 
  private:
   static void yielded();
@@ -183,12 +191,16 @@ inline bool worth_threads(double work) { return work >= kParallelWork && max_tea
 // Runs piece(p) for each p in [0, pieces), on the team when `work` (worth_threads) says so, and
 // returns once every piece is done. Each thread of the team has a run of consecutive pieces, the
 // same run every call (its caches keep that run's data from one pass to the next: a CG on a
-// 64 x 64 cloth reads 1.5 MB a pass, more than one core's L2), taken from the front; a thread
-// that has finished its own takes pieces from the back of another's run, so that no thread is
-// waited for unless it holds a piece (one another program has parked does nothing, and its run
-// is done by the others), and the caller takes whatever the helpers leave. What a piece computes
-// must not depend on which thread runs it (each writes its own results), so that results are the
-// same bits for any number of threads.
+// 64 x 64 cloth reads 1.5 MB a pass, more than one core's L2), taken from the front. A thread
+// that has finished its own leaves another's run to its owner while the owner keeps claiming
+// pieces (at least one every two of the thread's own pieces' time), and takes the rest from its
+// back once it stops, or at once if its owner has not begun it: one another program has parked
+// does nothing, and its run is done by the others. Taken sooner, a piece moves its data to the taker's caches and back to its owner's for
+// the next pass: with the two cores' caches 380 ns apart rather than 80 (a virtual machine's
+// cores placed apart), a CG iteration took 80 us taking at once, 70 leaving working owners be.
+// The caller takes whatever the helpers leave. What a piece computes must not depend on which
+// thread runs it (each writes its own results), so that results are the same bits for any number
+// of threads.
 // `per_thread`, if given: the least work a thread is given (a pass that does not scale past a few
 // threads, as local-global's local step beside its serial solves, asks for fewer).
 template <typename Piece>
@@ -219,10 +231,20 @@ void for_each_piece(int pieces, double work, const Piece& piece, double per_thre
       if (word.compare_exchange_weak(old, taken, std::memory_order_relaxed)) return static_cast<int>(front ? f : b - 1);
     }
   };
-  Team::run(team, [&](int, int thread) {
-    for (int p; (p = claim(thread, true)) >= 0;) piece(p);
-    for (int other = 1; other < team; ++other)
-      for (int p; (p = claim((thread + other) % team, false)) >= 0;) piece(p);
+  Team::run(team, [&](int threads, int thread) {  // (threads 1: the caller alone, taking every run at once)
+    const auto start = std::chrono::steady_clock::now();
+    int own = 0;
+    for (int p; (p = claim(thread, true)) >= 0; ++own) piece(p);
+    const std::chrono::nanoseconds patience =
+        std::max<std::chrono::nanoseconds>(2 * (std::chrono::steady_clock::now() - start) / std::max(own, 1), std::chrono::microseconds(2));
+    for (int other = 1; other < team; ++other) {
+      const int run = (thread + other) % team;
+      // A run its owner has not begun is taken at once (the owner asleep, or not come), one it
+      // has begun once it stops claiming.
+      const bool begun = runs[run].word.load(std::memory_order_relaxed) >> 32 != first_of(run);
+      if (threads > 1 && begun && !Team::stalled(runs[run].word, patience)) continue;
+      for (int p; (p = claim(run, false)) >= 0;) piece(p);
+    }
   });
 }
 
