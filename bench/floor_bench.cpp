@@ -9,6 +9,7 @@
 // reports are what the rope target (2 ns) is to be held against (README, Performance).
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdint>
@@ -126,6 +127,43 @@ void BM_RopeFloor(benchmark::State& state) {
   state.counters["ns_per_spring"] = ns / (static_cast<double>(state.iterations()) * (Rope::kNodes - 1));
 }
 BENCHMARK(BM_RopeFloor)->Arg(1)->Arg(2)->UseRealTime();
+
+// The floor of a hand-over between two threads: a cache line sent to the other thread and back
+// (each spins until the line holds its turn). The team's jobs (core/src/dynamics/threads.*) wait
+// for such a line a few times each; on this project's virtual machines the two cores are now 83 ns
+// apart and now 380 (placed apart by the host, minutes at a time), and a CG iteration's three jobs
+// cost accordingly (README, Performance). Counter: ns a round trip.
+void BM_CoreToCore(benchmark::State& state) {
+  alignas(64) static std::atomic<std::int64_t> turn{0};
+  constexpr std::int64_t kTrips = 100000;
+  const std::int64_t first = turn.load();
+  std::thread other([first] {
+    for (std::int64_t k = 0; k < kTrips; ++k) {
+      while (turn.load(std::memory_order_acquire) != first + 2 * k + 1) {
+      }
+      turn.store(first + 2 * k + 2, std::memory_order_release);
+    }
+  });
+  std::int64_t trips = 0;
+  const auto start = std::chrono::steady_clock::now();
+  for (auto _ : state) {
+    if (trips == kTrips) break;  // (the other thread has stopped)
+    turn.store(first + 2 * trips + 1, std::memory_order_release);
+    while (turn.load(std::memory_order_acquire) != first + 2 * trips + 2) {
+    }
+    ++trips;
+  }
+  const double ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
+  // Hand the other thread the rest of its trips, then let it end.
+  for (; trips < kTrips; ++trips) {
+    turn.store(first + 2 * trips + 1, std::memory_order_release);
+    while (turn.load(std::memory_order_acquire) != first + 2 * trips + 2) {
+    }
+  }
+  other.join();
+  state.counters["ns_round_trip"] = ns / static_cast<double>(std::max<std::int64_t>(state.iterations(), 1));
+}
+BENCHMARK(BM_CoreToCore)->Iterations(20000)->UseRealTime();
 
 }  // namespace
 }  // namespace springlab
