@@ -133,37 +133,35 @@ BENCHMARK(BM_RopeFloor)->Arg(1)->Arg(2)->UseRealTime();
 // for such a line a few times each; on this project's virtual machines the two cores are now 83 ns
 // apart and now 380 (placed apart by the host, minutes at a time), and a CG iteration's three jobs
 // cost accordingly (README, Performance). Counter: ns a round trip.
+constexpr std::int64_t kCoreToCoreTrips = 20000;
 void BM_CoreToCore(benchmark::State& state) {
   alignas(64) static std::atomic<std::int64_t> turn{0};
-  constexpr std::int64_t kTrips = 100000;
   const std::int64_t first = turn.load();
-  std::thread other([first] {
-    for (std::int64_t k = 0; k < kTrips; ++k) {
-      while (turn.load(std::memory_order_acquire) != first + 2 * k + 1) {
-      }
+  // Trip k: this thread writes its turn (odd), the other answers (even).
+  const auto wait_for = [&](std::int64_t value) {
+    while (turn.load(std::memory_order_acquire) != value) {
+    }
+  };
+  std::thread other([&] {
+    for (std::int64_t k = 0; k < kCoreToCoreTrips; ++k) {
+      wait_for(first + 2 * k + 1);
       turn.store(first + 2 * k + 2, std::memory_order_release);
     }
   });
   std::int64_t trips = 0;
-  const auto start = std::chrono::steady_clock::now();
-  for (auto _ : state) {
-    if (trips == kTrips) break;  // (the other thread has stopped)
+  const auto trip = [&] {
     turn.store(first + 2 * trips + 1, std::memory_order_release);
-    while (turn.load(std::memory_order_acquire) != first + 2 * trips + 2) {
-    }
+    wait_for(first + 2 * trips + 2);
     ++trips;
-  }
+  };
+  const auto start = std::chrono::steady_clock::now();
+  for (auto _ : state) trip();  // (exactly kCoreToCoreTrips: Iterations below)
   const double ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
-  // Hand the other thread the rest of its trips, then let it end.
-  for (; trips < kTrips; ++trips) {
-    turn.store(first + 2 * trips + 1, std::memory_order_release);
-    while (turn.load(std::memory_order_acquire) != first + 2 * trips + 2) {
-    }
-  }
+  while (trips < kCoreToCoreTrips) trip();  // (never, unless run with other iterations: the other thread ends)
   other.join();
   state.counters["ns_round_trip"] = ns / static_cast<double>(std::max<std::int64_t>(state.iterations(), 1));
 }
-BENCHMARK(BM_CoreToCore)->Iterations(20000)->UseRealTime();
+BENCHMARK(BM_CoreToCore)->Iterations(kCoreToCoreTrips)->UseRealTime();
 
 }  // namespace
 }  // namespace springlab

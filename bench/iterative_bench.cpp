@@ -23,10 +23,11 @@ Scene cloth(int n) {
 }
 
 // The step on an n x n cloth at h = 1 / hz, 10 iterations (XPBD: 1 pass). Args: side, hz, method,
-// threads. Counters: steps a second, and for implicit Euler its CG iterations a step and a second. Always the same 100 steps, 21 to 120: a step's cost follows the cloth's motion
-// (implicit Euler's CG takes 140 to 190 iterations a step in the first fall, 60 to 90 by step
-// 100), so a count of steps left to the library (it ran 57 or 80 by its first timing) would time
-// different steps from one run to the next: 88 against 160 steps/s from the same build.
+// threads. Counters: steps a second, and for implicit Euler its CG iterations a step and a
+// second. Always the same 100 steps, 21 to 120: a step's cost follows the cloth's motion (implicit
+// Euler's CG takes 140 to 190 iterations a step in the first fall, 60 to 90 by step 100), so a
+// count of steps left to the library (it ran 57 or 80 by its first timing) would time different
+// steps from one run to the next: 88 against 160 steps/s from the same build.
 void BM_IterativeCloth(benchmark::State& state) {
   Scene s = cloth(static_cast<int>(state.range(0)));
   set_thread_count(static_cast<int>(state.range(3)));

@@ -195,10 +195,10 @@ inline bool worth_threads(double work) { return work >= kParallelWork && max_tea
 // that has finished its own leaves another's run to its owner while the owner keeps claiming
 // pieces (at least one every two of the thread's own pieces' time), and takes the rest from its
 // back once it stops, or at once if its owner has not begun it: one another program has parked
-// does nothing, and its run is done by the others. Taken sooner, a piece moves its data to the taker's caches and back to its owner's for
-// the next pass: with the two cores' caches 380 ns apart rather than 80 (a virtual machine's
-// cores placed apart), a CG iteration took 80 us taking at once, 70 leaving working owners be.
-// The caller takes whatever the helpers leave. What a piece computes must not depend on which
+// does nothing, and its run is done by the others. Taken sooner, a piece moves its data to the
+// taker's caches and back to its owner's for the next pass: with the two cores' caches 380 ns
+// apart rather than 83 (a virtual machine's cores placed apart), a CG iteration took 79 us taking
+// at once, 71 leaving working owners be. The caller takes whatever the helpers leave. What a piece computes must not depend on which
 // thread runs it (each writes its own results), so that results are the same bits for any number
 // of threads.
 // `per_thread`, if given: the least work a thread is given (a pass that does not scale past a few
