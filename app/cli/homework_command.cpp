@@ -1,6 +1,8 @@
-// springlab homework check FILE: the rope exercise (Homework 8) checked. The student's rope.cpp is
-// compiled with the exercise's headers and run in a child process (app/homework/), and the
-// checker (springlab/homework.hpp) says, measured, what each part of it does.
+// springlab homework check FILE|DIR: the rope exercise (Homework 8) checked. The student's rope.cpp
+// is compiled with their own headers where they are beside it (the exercise's otherwise) and run
+// in a child process (app/homework/), and the checker (springlab/homework.hpp) says, measured,
+// what each part of it does, in the student's language (--lang, else the environment's, as the
+// window's), or as JSON for a course's grader (--json).
 // springlab homework kit FOLDER: the starter kit (assets/homework/rope) copied out to work in.
 // Exit status: 0 every check passed, 1 some failed, 2 bad input (a file that does not compile).
 #include <chrono>
@@ -12,7 +14,9 @@
 #include "homework/rope_process.hpp"
 #include "springlab/error.hpp"
 #include "springlab/homework.hpp"
+#include "springlab/text.hpp"
 #include "util/data_dir.hpp"
+#include "util/language.hpp"
 
 namespace springlab::app {
 
@@ -20,15 +24,43 @@ namespace fs = std::filesystem;
 
 namespace {
 
-int check(const std::string& file, double limit) {
+struct CheckOptions {
+  std::string file, lang;
+  double limit = 3.0;
+  bool json = false;
+};
+
+// "with your rope.h and mass.h": the headers the build took from beside rope.cpp.
+std::string headers_text(const RopeBuild& build) {
+  if (build.own_headers().empty()) return tr("with the exercise's headers");
+  std::string names;
+  for (size_t i = 0; i < build.own_headers().size(); ++i)
+    names += (i == 0 ? "" : i + 1 == build.own_headers().size() ? tr(" and ") : ", ") + build.own_headers()[i];
+  return format_text(tr("with your %s (the exercise's for the rest)"), names.c_str());
+}
+
+int check(const CheckOptions& o) {
+  if (!o.lang.empty()) use_language(check_language(o.lang, "--lang"));
+  else {
+    try {
+      use_language(environment_language());
+    } catch (const InputError&) {
+      use_language("en");  // a language springlab does not speak: English, as the window does
+    }
+  }
   const auto start = std::chrono::steady_clock::now();
-  RopeBuild build(file);
+  RopeBuild build(o.file);
   const double compiled = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  RopeProcess code(build.runner(), build.folder(), std::chrono::milliseconds(static_cast<long long>(limit * 1000)));
+  RopeProcess code(build.runner(), build.folder(), std::chrono::milliseconds(static_cast<long long>(o.limit * 1000)));
   const homework::Report report = homework::check_rope(code);
   const double checked = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() - compiled;
-  std::printf("springlab homework check %s (compiled in %.1f s, checked in %.1f s)\n\n%s", file.c_str(), compiled,
-              checked, homework::format_report(report).c_str());
+  if (o.json) std::fputs(homework::report_json(report).c_str(), stdout);
+  else
+    std::printf("%s\n\n%s",
+                format_text(tr("springlab homework check %s, %s (compiled in %.1f s, checked in %.1f s)"),
+                            build.source().c_str(), headers_text(build).c_str(), compiled, checked)
+                    .c_str(),
+                homework::format_report(report).c_str());
   return report.failed() == 0 && report.passed() > 0 ? kOk : kFailure;
 }
 
@@ -53,21 +85,23 @@ int kit(const std::string& folder) {
 Command add_homework_command(CLI::App& app) {
   CLI::App* homework = app.add_subcommand("homework", "Homework 8, the rope exercise: your own code, checked");
   homework->require_subcommand(1);
-  struct Options {
-    std::string file, folder;
-    double limit = 3.0;
-  };
-  auto options = std::make_shared<Options>();
+  auto options = std::make_shared<CheckOptions>();
+  auto folder = std::make_shared<std::string>();
   CLI::App* check_command = homework->add_subcommand(
-      "check", "Compile your rope.cpp with the exercise's headers, run it apart, and say what each part does");
-  check_command->add_option("file", options->file, "your rope.cpp")->required();
+      "check",
+      "Compile your rope.cpp (with your own rope.h, mass.h, spring.h where they are beside it), run it apart, and say "
+      "what each part does");
+  check_command->add_option("file", options->file, "your rope.cpp, or the folder that holds it (or its src/)")->required();
   check_command->add_option("--time-limit", options->limit, "seconds one call of your code may take (default 3)")
       ->check(CLI::Range(0.1, 600.0));
+  check_command->add_option("--lang", options->lang,
+                            "language of the report: " + language_list() + " (default: LANG, LC_MESSAGES)");
+  check_command->add_flag("--json", options->json, "the report as JSON (each line's kind, key and text), for a grader");
   CLI::App* kit_command = homework->add_subcommand("kit", "Copy the exercise's starter rope.cpp and its README into FOLDER");
-  kit_command->add_option("folder", options->folder, "a new folder for your work")->required();
+  kit_command->add_option("folder", *folder, "a new folder for your work")->required();
   return [=] {
-    if (check_command->parsed()) return check(options->file, options->limit);
-    return kit(options->folder);
+    if (check_command->parsed()) return check(*options);
+    return kit(*folder);
   };
 }
 

@@ -12,11 +12,28 @@ using namespace homework;
 namespace {
 
 std::string identified(const char* step, const Identified& found) {
+  if (found.constraints) return format_text(tr("%s: position Verlet with its springs held as constraints"), step);
   if (found.method.empty()) return format_text(tr("%s: none of the textbook methods (the checker's report says why)"), step);
-  std::string damping;
-  if (found.drag != 0.0) damping = format_text(tr(", drag %.3g N s/m"), found.drag);
-  if (found.verlet_damping != 0.0) damping = format_text(tr(", d = %.3g"), found.verlet_damping);
-  return format_text("%s: %s%s", step, tr(method_info(*find_method(found.method)).label), damping.c_str());
+  return format_text("%s: %s, %s", step, tr(method_info(*find_method(found.method)).label),
+                     damping_text(found.damping, step == std::string("simulateEuler") ? Step::Euler : Step::Verlet).c_str());
+}
+
+// The row beside a lane of one's own, with the student's damping: an Euler row takes the drag and
+// the spring damping (along the spring, springlab's only form), a Verlet row the factor d.
+BesideRow beside_row(Method like, Step step, const Identified& found) {
+  BesideRow row;
+  row.method = like;
+  const Damping& d = found.damping;
+  row.drag = step == Step::Euler ? d.drag : 0.0;
+  row.kd = step == Step::Euler ? d.along + d.relative : 0.0;
+  row.verlet_damping = step == Step::Verlet ? d.verlet : 0.0;
+  return row;
+}
+
+std::string row_words(const BesideRow& row) {
+  return format_text(tr("beside it springlab's %s with drag %s N s/m, k_d %s N s/m, d = %s"), method_info(row.method).name,
+                     format_text("%.3g", *row.drag).c_str(), format_text("%.3g", *row.kd).c_str(),
+                     format_text("%.3g", *row.verlet_damping).c_str());
 }
 
 }  // namespace
@@ -37,25 +54,32 @@ void HomeworkLanes::poll(Session& session, ui::HomeworkStatus& status) {
 
 void HomeworkLanes::install(Session& session, ui::HomeworkStatus& status) {
   std::vector<OwnLane> own;
-  std::vector<Method> beside;
+  std::vector<BesideRow> beside;
   const Report& r = report_;
+  status.lines.clear();
+  status.lines.push_back(format_text(tr("built and checked in %.1f s: %d checks passed, %d failed"), seconds_,
+                                     r.passed(), r.failed()));
   for (const auto& [step, found, label] : {std::tuple{Step::Euler, r.euler, tr("Your simulateEuler")},
                                            std::tuple{Step::Verlet, r.verlet, tr("Your simulateVerlet")}}) {
     // The row it was found to be (its theory is the lane's), or, found none, the exercise's own.
     Method like = step == Step::Euler ? Method::SymplecticEuler : Method::Verlet;
     const bool known = !found.method.empty();
     if (known) like = method_info(*find_method(found.method)).id;
-    own.push_back({rope_lane_step(make_(), step), label, like, known});
-    beside.push_back(like);
+    own.push_back({rope_lane_step(make_(), step, r.springlab_rope), label, like, known});
+    beside.push_back(beside_row(like, step, found));
+    status.lines.push_back(identified(step_name(step), found));
+    status.lines.push_back("  " + row_words(beside.back()));
+    if (step == Step::Euler && found.damping.relative != 0.0)
+      status.lines.push_back(tr("  (its k_d is your damping along the relative velocity, run along the spring: yours "
+                                "also damps the rope's bending, the row's does not)"));
+    if (step == Step::Verlet && found.damping.verlet_whole)
+      status.lines.push_back(tr("  (the row takes d on (x - x_last); yours takes it on the whole displacement, a "
+                                "difference of d a h^2 a step)"));
   }
   session.set_own_lanes(own, beside);
-
-  status.lines.clear();
-  status.lines.push_back(format_text(tr("built and checked in %.1f s: %d checks passed, %d failed"), seconds_,
-                                     r.passed(), r.failed()));
-  status.lines.push_back(identified("simulateEuler", r.euler));
-  status.lines.push_back(identified("simulateVerlet", r.verlet));
-  if (r.passed() == 0 && r.failed() > 0) status.lines.push_back(tr("the rope is not built right: the checker's report says how"));
+  if (r.constructor_wrong)
+    status.lines.push_back(tr("your constructor is not right yet (the checker's report says how): your steps run on "
+                              "springlab's rope"));
 }
 
 }  // namespace springlab::app

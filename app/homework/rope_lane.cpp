@@ -22,6 +22,7 @@ constexpr int kAhead = 32;
 struct Lane {
   std::shared_ptr<RopeCode> code;
   Step step;
+  bool springlab_rope = false;  // built through build_exercise (the code's constructor is not right)
   std::optional<RopeRequest> built;  // the rope the runner holds
   State made;                        // the state the lane was last given (the runner's, when synced)
   bool synced = false;
@@ -102,7 +103,8 @@ void step_lane(Lane& lane, const Model& model, const State& in, State& out, doub
   for (bool retried = false;; retried = true) {
     try {
       if (!lane.built || !same(*lane.built, request)) {
-        lane.code->build(request);
+        if (lane.springlab_rope) lane.code->build_exercise(request);
+        else lane.code->build(request);
         lane.built = request;
         lane.synced = false;
         lane.ahead.clear();
@@ -154,10 +156,11 @@ bool is_one_rope(const Model& model) {
   }
 }
 
-OwnStep rope_lane_step(std::shared_ptr<RopeCode> code, Step step) {
+OwnStep rope_lane_step(std::shared_ptr<RopeCode> code, Step step, bool springlab_rope) {
   auto lane = std::make_shared<Lane>();
   lane->code = std::move(code);
   lane->step = step;
+  lane->springlab_rope = springlab_rope;
   return [lane](const Model& model, const State& in, State& out, double h, Workspace&) {
     step_lane(*lane, model, in, out, h);
   };

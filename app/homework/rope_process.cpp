@@ -54,9 +54,10 @@ ChildProcess& RopeProcess::child() {
   return *child_;
 }
 
-void RopeProcess::failed(const std::string& doing, const std::string& error) {
+void RopeProcess::failed(const std::string& doing, const std::string& error, const std::string& fault) {
   std::string what;
-  if (!error.empty()) what = doing + " threw an exception: " + error;
+  if (!fault.empty()) what = doing + " " + fault;
+  else if (!error.empty()) what = doing + " threw an exception: " + error;
   else if (child_ && child_->timed_out())
     what = doing + " did not return within " + step_text_seconds(limit_) + " and was stopped (an endless loop?)";
   else {
@@ -73,15 +74,23 @@ std::string RopeProcess::next(const std::string& doing, std::chrono::steady_cloc
   std::optional<std::string> line = child_->read_line(deadline);
   if (!line) failed(doing);
   if (line->rfind("error ", 0) == 0) failed(doing, line->substr(6));
+  if (line->rfind("fault ", 0) == 0) failed(doing, {}, line->substr(6));
   return *line;
 }
 
 BuiltRope RopeProcess::build(const RopeRequest& r) {
-  std::string command = "build " + hex(r.start.x()) + " " + hex(r.start.y()) + " " + hex(r.end.x()) + " " + hex(r.end.y()) +
+  return construct("build", "the constructor, Rope(..., " + std::to_string(r.nodes) + " nodes, ...),", r);
+}
+
+BuiltRope RopeProcess::build_exercise(const RopeRequest& r) {
+  return construct("make", "building springlab's rope through Rope(masses, springs)", r);
+}
+
+BuiltRope RopeProcess::construct(const std::string& verb, const std::string& doing, const RopeRequest& r) {
+  std::string command = verb + " " + hex(r.start.x()) + " " + hex(r.start.y()) + " " + hex(r.end.x()) + " " + hex(r.end.y()) +
                         " " + std::to_string(r.nodes) + " " + hex(r.node_mass) + " " + hex(r.k) + " " +
                         std::to_string(r.pinned.size());
   for (int p : r.pinned) command += " " + std::to_string(p);
-  const std::string doing = "the constructor, Rope(..., " + std::to_string(r.nodes) + " nodes, ...),";
   if (!child().write_line(command)) failed(doing);
   const auto deadline = std::chrono::steady_clock::now() + limit_;
   std::istringstream head(next(doing, deadline));

@@ -235,7 +235,7 @@ std::string lane_label(const Lane& lane) { return lane.own.empty() ? tr(lane_row
 
 std::string lane_name(const Lane& lane) { return lane.own.empty() ? std::string(lane_row(lane).name) : lane.own; }
 
-void Session::set_own_lanes(const std::vector<OwnLane>& own, const std::vector<Method>& beside) {
+void Session::set_own_lanes(const std::vector<OwnLane>& own, const std::vector<BesideRow>& beside) {
   ++edits_;
   release();
   lanes_.clear();
@@ -248,8 +248,15 @@ void Session::set_own_lanes(const std::vector<OwnLane>& own, const std::vector<M
     lane.own_index = static_cast<int>(lanes_.size());
     lanes_.push_back(std::move(lane));
   }
-  for (Method m : beside)
-    if (lanes_.size() < kMaxLanes) lanes_.push_back(make_lane(static_cast<int>(m)));
+  for (const BesideRow& row : beside) {
+    if (lanes_.size() == kMaxLanes) break;
+    Lane lane = make_lane(static_cast<int>(row.method));
+    if (row.drag) lane.sim.set_drag(*row.drag);
+    if (row.kd) lane.sim.set_damping(*row.kd);
+    if (row.verlet_damping) lane.sim.set_verlet_damping(*row.verlet_damping);
+    model_changed(lane);
+    lanes_.push_back(std::move(lane));
+  }
   if (lanes_.empty()) lanes_.push_back(make_lane(kind_->initial_row(settings_.method)));
   target_ = scene_.state.t;
   for (Lane& lane : lanes_) sample(lane);

@@ -79,6 +79,13 @@ struct OwnLane {
   bool known = true;
 };
 
+// A row beside lanes of one's own, run with what the homework checker fitted to the student's
+// step: where given, the lane's model takes the drag, the springs' damping and Verlet's factor.
+struct BesideRow {
+  Method method = Method::SymplecticEuler;
+  std::optional<double> drag, kd, verlet_damping;
+};
+
 class Session {
  public:
   static constexpr std::size_t kMaxLanes = 4;
@@ -121,9 +128,9 @@ class Session {
   // with the first method. Every lane restarts from the initial state.
   void set_compare(const std::vector<Method>& methods);
   bool comparing() const { return lanes_.size() > 1; }
-  // Lanes of one's own (homework) first, then the rows `beside` (4 lanes at most). Every lane
-  // restarts from the initial state.
-  void set_own_lanes(const std::vector<OwnLane>& own, const std::vector<Method>& beside);
+  // Lanes of one's own (homework) first, then the rows `beside` (4 lanes at most), each with its
+  // own parameters. Every lane restarts from the initial state.
+  void set_own_lanes(const std::vector<OwnLane>& own, const std::vector<BesideRow>& beside);
 
   // Rows, whatever the kind (a method's, an IK solver's: kind().row(k)). choose(): the single
   // lane becomes row k from where it is (in a mass-spring scene as set_method, whose method the

@@ -41,9 +41,11 @@ struct BuiltMass {
   double mass = 0.0;
   MassState state;
 };
-/// A spring as built: the indices of its masses in the rope's list (-1: a mass not in the list).
+/// A spring as built: the indices of its masses in the rope's list (kNotInRope: a mass the rope
+/// does not hold; kNoMass: a null pointer).
 struct BuiltSpring {
-  int m1 = -1, m2 = -1;
+  static constexpr int kNotInRope = -1, kNoMass = -2;
+  int m1 = kNotInRope, m2 = kNotInRope;
   double k = 0.0, rest = 0.0;
 };
 struct BuiltRope {
@@ -76,6 +78,11 @@ class RopeCode {
   virtual ~RopeCode() = default;
   /// Builds a new rope with the code's constructor (the one later calls act on).
   virtual BuiltRope build(const RopeRequest& request) = 0;
+  /// Builds springlab's rope as the exercise states it (exercise_rope) for the code's steps to act
+  /// on: the C++ runner makes it through the exercise's other constructor, Rope(masses, springs).
+  /// The checker uses it once the code's own constructor has been found wrong, so that the steps
+  /// are still checked. Where `build` is springlab's already (own_constructor() false), the same.
+  virtual BuiltRope build_exercise(const RopeRequest& request) { return build(request); }
   /// Sets every mass's position, last_position, velocity and forces.
   virtual void set_state(const RopeState& state) = 0;
   /// Calls the step `steps` times with (float) dt and gravity: the state after each call.
@@ -93,27 +100,58 @@ BuiltRope exercise_rope(const RopeRequest& request);
 struct CheckLine {
   enum Kind { Pass, Fail, Note } kind = Note;
   std::string text;
+  /// What the line is about, the same in every language: a failed line's mistake ("forces-kept",
+  /// "one-end", ...; docs/homework.md lists them), a passed line's check ("springs", "order"), so
+  /// that a course's grader or a test can read the report without reading its words.
+  std::string key;
 };
 struct CheckSection {
   std::string title;
   std::vector<CheckLine> lines;
 };
 
-/// What a step was found to be: a row of springlab's table ("euler", "symplectic-euler",
-/// "verlet"; empty: none of them) and the damping fitted to it.
+/// How a step damps, as fitted to what it does (each a term of its force, or Verlet's factor):
+///   drag:      a global drag on each mass, f = -c v (N s/m);
+///   along:     the lecture's spring damping, along the spring, f_b = -k_d ((v_b - v_a) . u) u,
+///              f_a = -f_b (N s/m): it damps only the springs' stretching;
+///   relative:  damping along the relative velocity, f_b = -k_d (v_b - v_a), f_a = -f_b (N s/m):
+///              it damps the rope's bending and spinning too;
+///   verlet:    Verlet's factor d, on (x - x_last) (x1 = x + (1 - d)(x - x_last) + a h^2) or, with
+///              `verlet_whole`, on the whole displacement (x1 = x + (1 - d)((x - x_last) + a h^2)).
+struct Damping {
+  double drag = 0.0, along = 0.0, relative = 0.0, verlet = 0.0;
+  bool verlet_whole = false;
+  bool any() const { return drag != 0.0 || along != 0.0 || relative != 0.0 || verlet != 0.0; }
+};
+
+/// The damping in words, in the current language: "a global drag f = -c v, c = 0.01 N s/m; ...",
+/// "damping factor d = 5e-05 on (x - x_last), ...", "no damping".
+std::string damping_text(const Damping& damping, Step step);
+
+/// What a step was found to be: a row of springlab's table (empty: none of them) and its damping.
 struct Identified {
   std::string method;
   bool velocity_verlet = false;  ///< Verlet as a step of (x, v): x + h v + h^2/2 a, v + h/2 (a + a1)
-  double drag = 0.0;            ///< Euler: the global drag c of f = -c v (N s/m)
-  double verlet_damping = 0.0;  ///< Verlet: d of x1 = x + (1 - d)(x - x_last) + h^2 a
-  double deviation = 0.0;       ///< the largest difference from that row, in units of a step's motion
+  bool constraints = false;      ///< position Verlet with its springs held as constraints (no row)
+  Damping damping;
+  double deviation = 0.0;        ///< the largest difference from that row, in units of a step's motion
+  /// Matched only to float's rounding (the code computes in float): `deviation` was within the
+  /// floor float's rounding of the forces gives, `float_floor`, and above double's.
+  bool in_float = false;
+  double float_floor = 0.0;
 };
 
 struct Report {
   std::vector<CheckSection> sections;
   Identified euler, verlet;
+  /// The steps were checked on springlab's rope (the constructor was not right, or is not the code's).
+  bool springlab_rope = false;
+  /// The code's own constructor was checked and found wrong.
+  bool constructor_wrong = false;
   int passed() const;
   int failed() const;
+  /// The keys of the failed lines, in order (CheckLine::key).
+  std::vector<std::string> failed_keys() const;
 };
 
 /// Runs every check. A CodeFailure ends the report where it happened, with its message.
@@ -127,10 +165,17 @@ using OwnStep = std::function<void(const Model& model, const State& in, State& o
 /// The same checks for such a step: which of springlab's fixed-step rows it is (on the rope
 /// falling from rest, step by step from its own states), whether it holds a pin, then its order,
 /// stability and energy on the spring against that row's. `name` names it in the report.
-Report check_step(const OwnStep& step, const std::string& name);
+/// `single_precision`, where given, says after the step's first call whether it returned its
+/// arrays in single precision (NumPy's float32): its positions are then judged to float's rounding.
+Report check_step(const OwnStep& step, const std::string& name, const bool* single_precision = nullptr);
 
 /// The report as `springlab homework check` prints it: a section a title, a line a check
-/// ("  ok    ...", "  FAIL  ...", "        ..."), and a last line counting them.
+/// ("  ok    ...", "  FAIL  ...", "        ..."), and a last line counting them. Its words are in
+/// the current language (springlab/text.hpp's tr()), as the report's lines were made.
 std::string format_report(const Report& report);
+/// The same as JSON, for a course's grader: {"passed", "failed", "springlab_rope", "steps":
+/// {"simulateEuler": {"method", "damping": {...}, ...}}, "sections": [{"title", "lines": [{"kind",
+/// "key", "text"}]}]}.
+std::string report_json(const Report& report);
 
 }  // namespace springlab::homework

@@ -195,6 +195,7 @@ class Simulation {
   void set_damping(double kd);
   void set_gravity(const Vec3& g);
   void set_drag(double drag);
+  void set_verlet_damping(double d);  ///< position Verlet's factor d (Model::verlet_damping)
   void set_friction(double mu);  ///< every collider
   void set_mass(double mass);    ///< every particle, and the emitters' new ones
 

@@ -482,6 +482,11 @@ void Simulation::set_drag(double drag) {
   model_changed();
 }
 
+void Simulation::set_verlet_damping(double d) {
+  model_.verlet_damping = d;
+  model_changed();
+}
+
 void Simulation::set_friction(double mu) {
   for (auto& p : model_.planes) p.friction = mu;
   for (auto& s : model_.spheres) s.friction = mu;

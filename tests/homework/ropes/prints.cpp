@@ -1,3 +1,4 @@
 // A correct rope.cpp that prints as it steps (rope_with.hpp: PRINTS).
+// expect: pass
 #define PRINTS
 #include "rope_with.hpp"

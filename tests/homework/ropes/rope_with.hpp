@@ -1,9 +1,22 @@
 // A rope solution with hooks for the usual mistakes: each file beside it defines one of the
 // macros below and includes this, so each file is a rope.cpp with exactly one mistake planted
-// (tests/cli/homework_test.cpp checks the checker names it). With none defined it is correct.
+// (tests/cli/homework_test.cpp checks the checker names it, and nothing else: each file's
+// "expect" lines say what a careful reader finds). With none defined it is correct.
 //   EXPLICIT              simulateEuler is explicit Euler (correct too: the exercise asks for both)
 //   NO_DAMPING            neither step damps (correct)
+//   PRINTS                both steps print to standard output (correct: the checker's replies are elsewhere)
+//   CONSTRAINTS           simulateVerlet holds the springs as constraints, CS 184's way (correct too)
+// The constructor:
 //   UNEVEN                masses spaced by i / num_nodes instead of i / (num_nodes - 1)
+//   REVERSED              the rope laid from end to start
+//   INTEGER_DIVISION      i / (num_nodes - 1) divided as integers
+//   SPRING_NOT_IN_ROPE    each spring made to a Mass of its own, not the rope's
+//   PINS_BEFORE_MASSES    the skeleton's pin loop left before the masses are made
+//   PINS_NONE             the skeleton's pin loop left commented out
+//   DUPLICATE_SPRINGS     every spring made twice
+//   END_MASS_MISSING      the last mass made for its spring but never put in masses
+//   NULL_MASS             masses sized first, the first slot never filled (a null pointer)
+// The steps:
 //   FORCES_KEPT           forces never cleared
 //   ONE_END               the spring force on m1 only
 //   WRONG_SIGN            f = -k (|b - a| - l) (b - a)/|b - a| on m1
@@ -11,11 +24,18 @@
 //   PIN_FALLS             gravity and motion for pinned masses too
 //   LAST_STALE            Verlet never advances last_position
 //   DAMPING_PER_SPRING    the damping applied in the springs' loop, once per spring
+//   ACCEL_TWICE           v += a h, then x += (v + a h) h
+//   GRAVITY_NO_MASS       gravity added to the forces without its mass
+//   GRAVITY_TIMES_STEP    gravity's force multiplied by the step
+//   DRAG_WRONG_SIGN       forces += c v
+//   VERLET_A_H            Verlet's acceleration times delta_t, not delta_t^2
+//   VERLET_D_SWAPPED      Verlet's (x - x_last) times d instead of (1 - d)
+//   CONSTRAINT_NO_GRAVITY the constraint Verlet forgets gravity
+//   EULER_NO_DT           v += a, the step left out
+// Failures of the code itself:
 //   CRASH                 simulateVerlet reads past the end of the masses
 //   ENDLESS               simulateVerlet loops forever
 //   THROWS                simulateEuler throws
-//   PRINTS                both steps print to standard output (correct: the checker's replies are elsewhere)
-//   CONSTRAINTS           simulateVerlet holds the springs as constraints, CS 184's way (correct too)
 #include <iostream>
 #include <stdexcept>
 #include <vector>
@@ -29,22 +49,55 @@
 namespace CGL {
 
 Rope::Rope(Vector2D start, Vector2D end, int num_nodes, float node_mass, float k, vector<int> pinned_nodes) {
+#ifdef PINS_BEFORE_MASSES
+  for (auto& i : pinned_nodes) masses[i]->pinned = true;
+#endif
+#ifdef NULL_MASS
+  masses.resize(num_nodes);
+#endif
   for (int i = 0; i < num_nodes; ++i) {
-#ifdef UNEVEN
+#if defined(UNEVEN)
     Vector2D position = start + (end - start) * (double(i) / num_nodes);
+#elif defined(REVERSED)
+    Vector2D position = end + (start - end) * (double(i) / (num_nodes - 1));
+#elif defined(INTEGER_DIVISION)
+    Vector2D position = start + (end - start) * (i / (num_nodes - 1));
 #else
     Vector2D position = start + (end - start) * (double(i) / (num_nodes - 1));
 #endif
+#if defined(END_MASS_MISSING)
+    if (i + 1 < num_nodes) masses.push_back(new Mass(position, node_mass, false));
+    else springs.push_back(new Spring(masses.back(), new Mass(position, node_mass, false), k));
+#elif defined(NULL_MASS)
+    if (i > 0) masses[i] = new Mass(position, node_mass, false);
+#else
     masses.push_back(new Mass(position, node_mass, false));
+#endif
   }
+#if defined(END_MASS_MISSING)
+  for (int i = 0; i + 1 < int(masses.size()); ++i) springs.insert(springs.end() - 1, new Spring(masses[i], masses[i + 1], k));
+#elif defined(SPRING_NOT_IN_ROPE)
+  for (int i = 0; i + 1 < num_nodes; ++i)
+    springs.push_back(new Spring(masses[i], new Mass(masses[i + 1]->position, node_mass, false), k));
+#elif !defined(NULL_MASS)
   for (int i = 0; i + 1 < num_nodes; ++i) springs.push_back(new Spring(masses[i], masses[i + 1], k));
+#endif
+#ifdef DUPLICATE_SPRINGS
+  for (int i = 0; i + 1 < num_nodes; ++i) springs.push_back(new Spring(masses[i], masses[i + 1], k));
+#endif
+#if !defined(PINS_BEFORE_MASSES) && !defined(PINS_NONE) && !defined(NULL_MASS)
   for (auto& i : pinned_nodes) masses[i]->pinned = true;
+#endif
 }
 
 namespace {
 
 #ifdef NO_DAMPING
 const double kd = 0.0, damping_factor = 0.0;
+#elif defined(DRAG_WRONG_SIGN)
+const double kd = -0.01, damping_factor = 0.00005;
+#elif defined(VERLET_D_SWAPPED)
+const double kd = 0.01, damping_factor = 1.0 - 0.00005;  // (1 - d) written as d: 1 - this is 0.00005
 #else
 const double kd = 0.01, damping_factor = 0.00005;
 #endif
@@ -76,6 +129,18 @@ bool moves(const Mass* m) {
 #endif
 }
 
+Vector2D weight(const Mass* m, Vector2D gravity, float delta_t) {
+  (void)delta_t;
+#if defined(GRAVITY_NO_MASS)
+  (void)m;
+  return gravity;
+#elif defined(GRAVITY_TIMES_STEP)
+  return gravity * m->mass * delta_t;
+#else
+  return gravity * m->mass;
+#endif
+}
+
 }  // namespace
 
 void Rope::simulateEuler(float delta_t, Vector2D gravity) {
@@ -88,12 +153,18 @@ void Rope::simulateEuler(float delta_t, Vector2D gravity) {
   spring_forces(springs);
   for (auto& m : masses) {
     if (moves(m)) {
-      m->forces += gravity * m->mass;
+      m->forces += weight(m, gravity, delta_t);
       m->forces += -kd * m->velocity;
       Vector2D a = m->forces / m->mass;
-#ifdef EXPLICIT
+#if defined(EXPLICIT)
       m->position += m->velocity * delta_t;
       m->velocity += a * delta_t;
+#elif defined(ACCEL_TWICE)
+      m->velocity += a * delta_t;
+      m->position += (m->velocity + a * delta_t) * delta_t;
+#elif defined(EULER_NO_DT)
+      m->velocity += a;
+      m->position += m->velocity * delta_t;
 #else
       m->velocity += a * delta_t;
       m->position += m->velocity * delta_t;
@@ -117,7 +188,7 @@ void Rope::simulateVerlet(float delta_t, Vector2D gravity) {
 #ifdef PRINTS
   std::cout << "simulateVerlet: 1.0 2.0 ok\nstate 3" << std::endl;
 #endif
-#ifndef CONSTRAINTS
+#if !defined(CONSTRAINTS) && !defined(CONSTRAINT_NO_GRAVITY)
   spring_forces(springs);
 #endif
 #ifdef DAMPING_PER_SPRING
@@ -131,12 +202,20 @@ void Rope::simulateVerlet(float delta_t, Vector2D gravity) {
     Mass* m = masses[i];
     if (moves(m)) {
       Vector2D temp_position = m->position;
-      Vector2D a = m->forces / m->mass + gravity;
+#ifdef CONSTRAINT_NO_GRAVITY
+      Vector2D a = m->forces / m->mass;
+#else
+      Vector2D a = m->forces / m->mass + weight(m, gravity, delta_t) / m->mass;
+#endif
       double d = damping_factor;
 #ifdef DAMPING_PER_SPRING
       d = damping_factor * count[i];
 #endif
+#ifdef VERLET_A_H
+      m->position = m->position + (1 - d) * (m->position - m->last_position) + a * delta_t;
+#else
       m->position = m->position + (1 - d) * (m->position - m->last_position) + a * delta_t * delta_t;
+#endif
 #ifndef LAST_STALE
       m->last_position = temp_position;
 #endif
@@ -145,7 +224,7 @@ void Rope::simulateVerlet(float delta_t, Vector2D gravity) {
     m->forces = Vector2D(0, 0);
 #endif
   }
-#ifdef CONSTRAINTS
+#if defined(CONSTRAINTS) || defined(CONSTRAINT_NO_GRAVITY)
   // One pass over the springs, each put back at its rest length: half each way, or all on the
   // free end of a pinned one.
   for (auto& s : springs) {

@@ -1,10 +1,14 @@
-// CGL::Vector2D as the rope exercise (GAMES101 homework 8, after CS 184's CGL) uses it: the
-// names and signatures only, written for springlab so that a student's rope.cpp compiles unchanged.
+// CGL::Vector2D as the rope exercise (GAMES101 homework 8, after CS 184's CGL) has it: the same
+// members, operators and free functions, written for springlab so that a student's rope.cpp
+// compiles unchanged. (The exercise's compound assignments return void; these return the
+// vector, which accepts every use of theirs.)
 #ifndef CGL_VECTOR2D_H
 #define CGL_VECTOR2D_H
 
 #include <cmath>
 #include <ostream>
+
+#include "CGL.h"
 
 namespace CGL {
 
@@ -14,7 +18,7 @@ class Vector2D {
 
   Vector2D() : x(0.0), y(0.0) {}
   Vector2D(double x, double y) : x(x), y(y) {}
-  Vector2D(const Vector2D& v) = default;
+  Vector2D(const Vector2D& v) : x(v.x), y(v.y) {}
   Vector2D& operator=(const Vector2D& v) = default;
 
   double& operator[](const int& index) { return (&x)[index]; }
@@ -23,12 +27,32 @@ class Vector2D {
   Vector2D operator-() const { return Vector2D(-x, -y); }
   Vector2D operator+(const Vector2D& v) const { return Vector2D(x + v.x, y + v.y); }
   Vector2D operator-(const Vector2D& v) const { return Vector2D(x - v.x, y - v.y); }
-  Vector2D operator*(double c) const { return Vector2D(x * c, y * c); }
-  Vector2D operator/(double c) const { return Vector2D(x / c, y / c); }
-  Vector2D& operator+=(const Vector2D& v) { x += v.x; y += v.y; return *this; }
-  Vector2D& operator-=(const Vector2D& v) { x -= v.x; y -= v.y; return *this; }
-  Vector2D& operator*=(double c) { x *= c; y *= c; return *this; }
-  Vector2D& operator/=(double c) { x /= c; y /= c; return *this; }
+  Vector2D operator*(double r) const { return Vector2D(x * r, y * r); }
+  Vector2D operator/(double r) const {
+    Vector2D u = *this;
+    u /= r;
+    return u;
+  }
+  Vector2D& operator+=(const Vector2D& v) {
+    x += v.x;
+    y += v.y;
+    return *this;
+  }
+  Vector2D& operator-=(const Vector2D& v) {
+    x -= v.x;
+    y -= v.y;
+    return *this;
+  }
+  Vector2D& operator*=(double r) {
+    x *= r;
+    y *= r;
+    return *this;
+  }
+  Vector2D& operator/=(double r) {
+    x /= r;
+    y /= r;
+    return *this;
+  }
 
   double norm() const { return std::sqrt(x * x + y * y); }
   double norm2() const { return x * x + y * y; }
@@ -36,7 +60,7 @@ class Vector2D {
   void normalize() { *this /= norm(); }
 };
 
-inline Vector2D operator*(double c, const Vector2D& v) { return Vector2D(c * v.x, c * v.y); }
+inline Vector2D operator*(double r, const Vector2D& v) { return v * r; }
 inline double dot(const Vector2D& u, const Vector2D& v) { return u.x * v.x + u.y * v.y; }
 inline double cross(const Vector2D& u, const Vector2D& v) { return u.x * v.y - u.y * v.x; }
 inline std::ostream& operator<<(std::ostream& os, const Vector2D& v) {

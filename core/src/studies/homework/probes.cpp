@@ -1,15 +1,19 @@
 // The usual mistakes of the rope exercise, each shown by a probe built for it: one step from a
 // state chosen so that the mistake, and only it, moves the masses where they should not go.
-//   springs:  3 free masses, one spring stretched and one squeezed, no gravity: the forces a
-//             step implies against Hooke's law and the patterns of its usual misreadings (one
-//             end only, the sign, no rest length, added twice);
-//             a second step shows whether the first step's forces were cleared;
-//   gravity:  a rope at rest, pinned at one end: free masses fall at g, the pin stays;
-//   motion:   (first) 3 free masses moving together, springs at rest: the damping each mass gets (alike,
-//             or once per spring), and where Verlet's last_position goes.
+//   moves:    the identification's rope, one step under gravity from rest: a step that moves
+//             nothing is not written yet (the skeleton's);
+//   kind:     (Verlet) one free spring stretched by 25 %, a step of h and one of h/2: a force pulls
+//             it back by h^2 k s / m (four times less at h/2), a constraint by the same fraction at
+//             any step, a force times h instead of h^2 twice less;
+//   springs:  3 free masses, one spring stretched and one squeezed, no gravity: the forces a step
+//             implies against Hooke's law and its usual misreadings (one end only, the sign, no
+//             rest length, added twice, times the step); a second step shows whether the first
+//             step's forces were cleared;
+//   gravity:  a rope at rest, pinned at one end: free masses fall at g (or at g / m, 2 g, 0, -g,
+//             g h: each named), the pin stays.
+// The damping's probes are in damping.cpp.
 #include <algorithm>
 #include <cmath>
-#include <optional>
 
 #include "parts.hpp"
 
@@ -18,18 +22,7 @@ namespace springlab::homework {
 namespace {
 
 constexpr double kH = 1.0 / 1024;
-
-RopeRequest three_masses(std::vector<int> pinned) { return {Vec2(0, 0), Vec2(1, 0), 3, 0.25, 64.0, std::move(pinned)}; }
-
-RopeState at_rest(const BuiltRope& rope) {
-  RopeState s;
-  for (const BuiltMass& m : rope.masses) {
-    MassState state;
-    state.x = state.x_last = m.state.x;
-    s.push_back(state);
-  }
-  return s;
-}
+constexpr double kMass = 0.25;
 
 double largest(const std::vector<Vec2>& f) {
   double m = 0.0;
@@ -42,7 +35,7 @@ double relative_gap(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
   double gap = 0.0;
   for (size_t i = 0; i < a.size(); ++i) gap = std::max(gap, (a[i] - b[i]).norm());
   const double scale = largest(b);
-  if (!std::isfinite(gap)) return INFINITY;
+  if (!std::isfinite(gap) || !(gap == gap)) return INFINITY;
   return scale == 0.0 ? (gap == 0.0 ? 0.0 : INFINITY) : gap / scale;
 }
 
@@ -53,190 +46,239 @@ std::string forces_text(const std::vector<Vec2>& f) {
 }
 
 // Spring forces by a rule: Hooke's law on both ends, or one of its usual misreadings.
-enum class Rule { Hooke, Reversed, FirstEndOnly, SecondEndOnly, NoRestLength, Twice };
+enum class Rule { Hooke, Reversed, FirstEndOnly, SecondEndOnly, NoRestLength, Twice, TimesStep, OverStep };
 
-std::vector<Vec2> spring_forces(const BuiltRope& rope, const RopeState& s, double rest, Rule rule) {
+std::vector<Vec2> spring_forces(const BuiltRope& rope, const RopeState& s, Rule rule) {
   std::vector<Vec2> f(s.size(), Vec2::Zero());
+  const int n = static_cast<int>(s.size());
   for (const BuiltSpring& spring : rope.springs) {
-    if (spring.m1 < 0 || spring.m2 < 0) continue;
+    if (spring.m1 < 0 || spring.m2 < 0 || spring.m1 >= n || spring.m2 >= n) continue;
     const Vec2 ab = s[spring.m2].x - s[spring.m1].x;
     const double len = ab.norm();
-    Vec2 on_a = rule == Rule::NoRestLength ? Vec2(spring.k * ab) : Vec2(spring.k * (len - rest) * ab / len);
+    if (len == 0.0) continue;
+    Vec2 on_a = rule == Rule::NoRestLength ? Vec2(spring.k * ab) : Vec2(spring.k * (len - spring.rest) * ab / len);
     if (rule == Rule::Reversed) on_a = -on_a;
     if (rule == Rule::Twice) on_a *= 2.0;
+    if (rule == Rule::TimesStep) on_a *= kH;
+    if (rule == Rule::OverStep) on_a /= kH;
     if (rule != Rule::SecondEndOnly) f[spring.m1] += on_a;
     if (rule != Rule::FirstEndOnly) f[spring.m2] -= on_a;
   }
   return f;
 }
 
+struct Reading {
+  Rule rule;
+  const char* key;
+  const char* says;
+};
+
+const Reading kReadings[] = {
+    {Rule::Hooke, "springs", ""},
+    {Rule::Reversed, "wrong-sign", N_("the spring force has the wrong sign: a stretched spring pushes its masses apart")},
+    {Rule::FirstEndOnly, "one-end", N_("the spring force acts on one end only (m1): m2 must get the opposite force")},
+    {Rule::SecondEndOnly, "one-end", N_("the spring force acts on one end only (m2): m1 must get the opposite force")},
+    {Rule::NoRestLength, "no-rest-length",
+     N_("the rest length is not used: f = k (b - a) pulls as if every spring's rest length were 0")},
+    {Rule::Twice, "spring-twice", N_("the spring force is added twice")},
+    {Rule::TimesStep, "euler-a-h2",
+     N_("the velocity changes by a h^2, not a h: the acceleration is multiplied by delta_t twice (v += a delta_t)")},
+    {Rule::OverStep, "euler-no-dt",
+     N_("the velocity changes by a, not a h: the acceleration is not multiplied by delta_t (v += a delta_t)")},
+};
+
 // Returns the rule the code's springs follow (Hooke's law when none of the readings fits).
-Rule probe_springs(RopeCode& code, Step step, double damping, CheckSection& section) {
-  const RopeRequest request = three_masses({});
-  const BuiltRope rope = code.build(request);
+Rule probe_springs(const Bench& bench, Step step, const Damping& damping, CheckSection& section) {
+  const BuiltRope rope = bench.build(three_masses({}));
   RopeState s = at_rest(rope);
   s[0].x = Vec2(0.0, 0.0);
   s[1].x = Vec2(0.625, 0.125);
   s[2].x = Vec2(1.0, 0.0);
   for (MassState& m : s) m.x_last = m.x;
-  code.set_state(s);
-  const std::vector<RopeState> run = code.simulate(step, kH, Vec2::Zero(), 2);
-  const std::vector<double> masses(3, 0.25);
-  const double d = step == Step::Verlet ? damping : 0.0;
-  const std::vector<Vec2> got = implied_forces(step, masses, s, run[0], kH, d);
-  const double rest = 0.5;
-  struct Reading {
-    Rule rule;
-    const char* says;
-  };
-  const Reading readings[] = {
-      {Rule::Hooke, ""},
-      {Rule::Reversed, "the spring force has the wrong sign: a stretched spring pushes its masses apart"},
-      {Rule::FirstEndOnly, "the spring force acts on one end only (m1): m2 must get the opposite force"},
-      {Rule::SecondEndOnly, "the spring force acts on one end only (m2): m1 must get the opposite force"},
-      {Rule::NoRestLength, "the rest length is not used: f = k (b - a) pulls as if every spring's rest length were 0"},
-      {Rule::Twice, "the spring force is added twice"},
-  };
-  const Reading* best = &readings[0];
+  const std::vector<RopeState> run = bench.run(s, step, kH, Vec2::Zero(), 2);
+  const std::vector<double> masses(3, kMass);
+  const double d = step == Step::Verlet ? damping.verlet : 0.0;
+  const std::vector<Vec2> got = implied_forces(step, masses, s, run[0], kH, d, bench.h_power);
+  const Reading* best = &kReadings[0];
   double best_gap = INFINITY;
-  for (const Reading& r : readings) {
-    const double gap = relative_gap(got, spring_forces(rope, s, rest, r.rule));
+  for (const Reading& r : kReadings) {
+    if ((r.rule == Rule::TimesStep || r.rule == Rule::OverStep) && step != Step::Euler) continue;
+    const double gap = relative_gap(got, spring_forces(rope, s, r.rule));
     if (gap < best_gap) best_gap = gap, best = &r;
   }
-  const std::vector<Vec2> hooke = spring_forces(rope, s, rest, Rule::Hooke);
-  const std::string measured = "one step from springs stretched and squeezed implies forces " + forces_text(got) +
-                               " N; Hooke's law gives " + forces_text(hooke);
+  const std::vector<Vec2> hooke = spring_forces(rope, s, Rule::Hooke);
+  const std::string measured = format_text(tr("one step from springs stretched and squeezed implies forces %s N; Hooke's law gives %s"),
+                                           forces_text(got).c_str(), forces_text(hooke).c_str());
   const Rule rule = best_gap <= 1e-3 ? best->rule : Rule::Hooke;
   if (best_gap <= 1e-3 && best->rule == Rule::Hooke)
-    pass(section, "springs: Hooke's law on both ends, with the rest length (the forces a step implies match it to " +
-                      num(best_gap) + ")");
+    pass(section, "springs",
+         format_text(tr("springs: Hooke's law on both ends, with the rest length (the forces a step implies match it to %s)"),
+                     num(best_gap).c_str()));
   else if (best_gap <= 1e-3)
-    fail(section, std::string(best->says) + " (" + measured + ")");
+    fail(section, best->key, std::string(tr(best->says)) + " (" + measured + ")");
   else
-    fail(section, "springs: the forces are not Hooke's law nor one of its usual misreadings: " + measured);
+    fail(section, "springs-off", format_text(tr("springs: the forces are not Hooke's law nor one of its usual misreadings: %s"),
+                                             measured.c_str()));
 
   // The second step: the forces it implies are those of the first step's end state, by the
-  // code's own rule (and the drag at its velocity), or, left over, the first step's added to them.
+  // code's own rule and damping, or, left over, the first step's added to them.
   const RopeState& s1 = run[0];
-  std::vector<Vec2> due = spring_forces(rope, s1, rest, rule), kept = due;
-  for (int i = 0; i < 3; ++i) {
-    if (step == Step::Euler) due[i] -= damping * s1[i].v, kept[i] -= damping * s1[i].v;
-    kept[i] += got[i];
+  const Model model = built_model(rope, Vec2::Zero());
+  std::vector<Vec2> due = spring_forces(rope, s1, rule), kept = due;
+  if (step == Step::Euler) {
+    const std::vector<Vec2> damped = damping_forces(model, s1, damping);
+    for (int i = 0; i < 3; ++i) due[i] += damped[i], kept[i] += damped[i];
   }
-  const std::vector<Vec2> second = implied_forces(step, masses, s1, run[1], kH, d);
-  if (relative_gap(second, due) <= 1e-3) pass(section, "forces are cleared between steps");
+  for (int i = 0; i < 3; ++i) kept[i] += got[i];
+  const std::vector<Vec2> second = implied_forces(step, masses, s1, run[1], kH, d, bench.h_power);
+  if (relative_gap(second, due) <= 1e-3) pass(section, "cleared", tr("forces are cleared between steps"));
   else if (relative_gap(second, kept) <= 1e-3)
-    fail(section, "forces are not cleared between steps: the second step pushed with the first step's forces too (" +
-                      vec(second[0]) + " N on mass 0 where " + vec(due[0]) + " N is due): set forces to 0 after each step");
-  else
-    fail(section, "the second step's forces are off: " + vec(second[0]) + " N on mass 0 where " + vec(due[0]) + " N is due");
+    fail(section, "forces-kept",
+         format_text(tr("forces are not cleared between steps: the second step pushed with the first step's forces too (%s N "
+                        "on mass 0 where %s N is due): set forces to 0 after each step"),
+                     vec(second[0]).c_str(), vec(due[0]).c_str()));
+  else if (rule == Rule::Hooke && best_gap <= 1e-3)
+    fail(section, "second-step-off",
+         format_text(tr("the second step's forces are off: %s N on mass 0 where %s N is due (the first step's were right)"),
+                     vec(second[0]).c_str(), vec(due[0]).c_str()));
   return rule;
 }
 
-void probe_gravity(RopeCode& code, Step step, double damping, Rule rule, CheckSection& section, bool pin_only = false) {
-  const RopeRequest request = three_masses({0});
-  const BuiltRope rope = code.build(request);
+struct GravityReading {
+  double factor;  // of g (Verlet with h_power: as implied)
+  const char* key;
+  const char* says;
+};
+
+void probe_gravity(const Bench& bench, Step step, const Damping& damping, Rule rule, bool constraints, CheckSection& section) {
+  const BuiltRope rope = bench.build(three_masses({0}));
   const RopeState s = at_rest(rope);
-  code.set_state(s);
   const Vec2 g(0.0, -8.0);
-  const RopeState after = code.simulate(step, kH, g, 1).back();
-  const std::vector<double> masses(3, 0.25);
+  const RopeState after = bench.run(s, step, kH, g, 1).back();
+  const std::vector<double> masses(3, kMass);
 
   const double pin_moved = (after[0].x - s[0].x).norm() + (step == Step::Euler ? after[0].v.norm() : 0.0);
-  if (pin_moved != 0.0 || !std::isfinite(pin_moved))
-    fail(section, "a pinned mass moves: mass 0 went from " + vec(s[0].x) + " to " + vec(after[0].x) +
-                      " in one step (pinned masses get no force, no gravity and no motion)");
-  else pass(section, "pins: the pinned mass stays where it is");
-  if (pin_only) return;
+  if (!(pin_moved == 0.0))
+    fail(section, "pin-moves",
+         format_text(tr("a pinned mass moves: mass 0 went from %s to %s in one step (pinned masses get no force, no gravity "
+                        "and no motion)"),
+                     vec(s[0].x).c_str(), vec(after[0].x).c_str()));
+  else pass(section, "pins", tr("pins: the pinned mass stays where it is"));
 
   // Gravity alone: what the step implies less what the code's springs give (nothing, by Hooke's
-  // law, at rest length).
-  std::vector<Vec2> got = implied_forces(step, masses, s, after, kH, step == Step::Verlet ? damping : 0.0);
-  const std::vector<Vec2> springs = spring_forces(rope, s, 0.5, rule);
-  const std::vector<Vec2> weight = {Vec2::Zero(), 0.25 * g, 0.25 * g};
-  for (int i = 0; i < 3; ++i) got[i] = i == 0 ? Vec2::Zero() : Vec2(got[i] - springs[i]);
-  const double gap = relative_gap(got, weight);
-  if (gap <= 1e-3) pass(section, "gravity: each free mass falls at g = " + vec(g) + " m/s^2 (to " + num(gap) + ")");
-  else {
-    const Vec2 a = got[1] / 0.25;
-    const bool no_mass = (a - g / 0.25).norm() <= 1e-3 * g.norm() / 0.25;
-    fail(section, "gravity: a free mass falls at " + vec(a) + " m/s^2 where g = " + vec(g) +
-                      (no_mass ? ": gravity was added as a force without its mass (the force is m g)" : ""));
+  // law, at rest length; a constraint holds a horizontal rope to within (g h^2)^2 / L).
+  std::vector<Vec2> got = implied_forces(step, masses, s, after, kH, step == Step::Verlet ? damping.verlet : 0.0, bench.h_power);
+  if (!constraints) {
+    const std::vector<Vec2> springs = spring_forces(rope, s, rule);
+    for (int i = 1; i < 3; ++i) got[i] -= springs[i];
   }
-}
-
-double probe_motion(RopeCode& code, Step step, CheckSection& section) {
-  const BuiltRope rope = code.build(three_masses({}));
-  RopeState s = at_rest(rope);
-  const Vec2 u(1.0, 0.5);
-  for (MassState& m : s) {
-    if (step == Step::Euler) m.v = u;
-    else m.x_last = m.x - kH * u;
+  const Vec2 a = got[1] / kMass;
+  const double along = a.dot(g) / g.squaredNorm(), across = (a - along * g).norm() / g.norm();
+  const GravityReading readings[] = {
+      {1.0, "gravity", ""},
+      {1.0 / kMass, "gravity-no-mass", N_("gravity was added as a force without its mass (the force is m g)")},
+      {2.0, "gravity-twice", N_("gravity is applied twice (added as m g to the forces and as g to the acceleration?)")},
+      {0.0, "no-gravity", N_("gravity is left out")},
+      {-1.0, "gravity-sign", N_("gravity has the wrong sign")},
+      {kMass, "gravity-times-mass", N_("gravity was multiplied by the mass where it is an acceleration (a = g, not m g)")},
+      {kH, "gravity-times-step", N_("gravity was multiplied by the step (its force is m g, not m g h)")},
+      {1.0 / kH, "verlet-a-h", N_("gravity moves a mass by g h in a step, not g h^2: the acceleration is multiplied by delta_t "
+                                  "once (x_next = x + (1 - d)(x - x_last) + a delta_t^2)")},
+  };
+  // The nearest reading within 1e-3 of its own size (of h's, for none: 0 and h are 1e-3 apart).
+  const GravityReading* found = nullptr;
+  double nearest = INFINITY;
+  for (const GravityReading& r : readings) {
+    const double size = std::max(std::abs(r.factor), kH), off = std::abs(along - r.factor) / size;
+    if (off <= 1e-3 && across <= 1e-3 * std::max(1.0, std::abs(r.factor)) && off < nearest) nearest = off, found = &r;
   }
-  code.set_state(s);
-  const RopeState after = code.simulate(step, kH, Vec2::Zero(), 1).back();
-  // Each mass's damping: Euler's drag c from v1 = v - h c/m v; Verlet's d from x1 - x = (1 - d)(x - x_last).
-  double damping[3];
-  for (int i = 0; i < 3; ++i) {
-    damping[i] = step == Step::Euler ? 0.25 * (u - after[i].v).dot(u) / (kH * u.squaredNorm())
-                                     : 1.0 - (after[i].x - s[i].x).dot(u * kH) / (kH * kH * u.squaredNorm());
-  }
-  const char* what = step == Step::Euler ? "drag c" : "damping factor d";
-  const double ends = 0.5 * (damping[0] + damping[2]), middle = damping[1];
-  const double scale = std::max(std::abs(ends), std::abs(middle));
-  if (!std::isfinite(scale)) fail(section, "masses moving together get non-finite positions or velocities in one step");
-  else if (scale < 1e-9 || std::abs(middle - ends) <= 1e-6 * scale)
-    pass(section, std::string("damping: every mass gets the same ") + what + " (" + num(middle) + ")");
-  else if (std::abs(middle - 2.0 * ends) <= 1e-3 * scale)
-    fail(section, std::string("damping is applied twice on the middle masses: once per spring, so a mass with two springs "
-                              "gets ") + what + " " + num(middle) + " and the ends " + num(ends) +
-                      " (apply it once a mass, in the masses' loop)");
+  if (found && found->factor == 1.0)
+    pass(section, "gravity", format_text(tr("gravity: each free mass falls at g = %s m/s^2 (to %s)"), vec(g).c_str(),
+                                         num(std::abs(along - 1.0) + across).c_str()));
+  else if (found && ((found->factor == kH && rule == Rule::TimesStep) || (found->factor == 1.0 / kH && rule == Rule::OverStep)))
+    note(section, "gravity", tr("gravity: scaled with the springs' forces (above)"));
+  else if (found && !(found->factor == 1.0 / kH && step == Step::Euler))
+    fail(section, found->key, format_text(tr("%s: a free mass falls at %s m/s^2 where g = %s"), tr(found->says), vec(a).c_str(),
+                                          vec(g).c_str()));
   else
-    fail(section, std::string("damping differs from mass to mass: ") + what + " " + num(middle) + " in the middle, " +
-                      num(ends) + " at the ends");
-
-  if (step == Step::Verlet) {
-    const double advanced = (after[1].x_last - s[1].x).norm(), stale = (after[1].x_last - s[1].x_last).norm(),
-                 to_new = (after[1].x_last - after[1].x).norm();
-    if (advanced <= 1e-12) pass(section, "last_position: advanced to the position the step started from");
-    else if (stale <= 1e-12)
-      fail(section, "last_position is never advanced: after a step it still holds the position before the last one, "
-                    "so every step repeats the first step's velocity");
-    else if (to_new <= 1e-12)
-      fail(section, "last_position is set to the new position (keep the old one in temp_position and store that)");
-    else fail(section, "last_position after a step is " + vec(after[1].x_last) + ", not the position " + vec(s[1].x) + " the step started from");
-  }
-  return std::isfinite(ends) ? ends : 0.0;
+    fail(section, "gravity-off", format_text(tr("gravity: a free mass falls at %s m/s^2 where g = %s"), vec(a).c_str(), vec(g).c_str()));
 }
 
 }  // namespace
 
-std::optional<std::string> constraint_probe(RopeCode& code) {
+bool probe_moves(const Bench& bench, Step step, CheckSection& section) {
+  // Under gravity from rest, then (should that move nothing: a step that loses gravity) moving
+  // together with no gravity.
+  const BuiltRope rope = bench.build(checked_rope());
+  const RopeState s = at_rest(rope);
+  RopeState moving = s;
+  for (MassState& m : moving) {
+    m.v = Vec2(1.0, 0.5);
+    m.x_last = m.x - kCheckStep * m.v;
+  }
+  auto moved = [&](const RopeState& from, const Vec2& g) {
+    const RopeState after = bench.run(from, step, kCheckStep, g, 1).back();
+    for (size_t i = 0; i < from.size(); ++i)
+      if (!(after[i].x == from[i].x) || !(after[i].v == from[i].v)) return true;
+    return false;
+  };
+  if (moved(s, kCheckGravity) || moved(moving, Vec2::Zero())) return true;
+  fail(section, "not-written",
+       step == Step::Euler
+           ? tr("simulateEuler moves nothing yet: after a step every mass is where it was, under gravity or moving. "
+                "Part 2: each spring's force by Hooke's law, gravity on each free mass, then its new velocity and position")
+           : tr("simulateVerlet moves nothing yet: after a step every mass is where it was, under gravity or moving. Part "
+                "3: the springs' forces and gravity, then x_next = x + (x - x_last) + a h^2, and last_position = x"));
+  return false;
+}
+
+bool probe_verlet_kind(Bench& bench, CheckSection& section) {
   // One spring, both ends free, stretched by 25 %, no gravity, at rest: a force pulls its masses
-  // back by h^2 k s / m a step (2e-4 of the stretch here); a constraint puts the length back.
-  const BuiltRope rope = code.build({Vec2(0, 0), Vec2(1, 0), 2, 0.25, 64.0, {}});
+  // back by h^2 k s / m a step (2e-4 of the stretch here, four times less at h/2); a constraint
+  // puts back the same fraction of the stretch at any step.
+  const BuiltRope rope = bench.build(pair_rope());
   RopeState s = at_rest(rope);
   s[1].x = s[1].x_last = Vec2(1.25, 0.0);
-  code.set_state(s);
-  const RopeState after = code.simulate(Step::Verlet, kH, Vec2::Zero(), 1).back();
-  const double length = (after[1].x - after[0].x).norm(), taken = (1.25 - length) / 0.25;
-  if (!(taken > 0.1)) return std::nullopt;  // a force's pull (or nothing sane): the force probes say
-  if (std::abs(length - 1.0) <= 1e-9)
-    return "a spring stretched by 25 % is back at its rest length after one step (to " + num(std::abs(length - 1.0)) + " m)";
-  return "a spring stretched by 25 % is pulled " + num(100.0 * taken) + " % of the way back in one step";
+  auto taken = [&](double h) {
+    const RopeState after = bench.run(s, Step::Verlet, h, Vec2::Zero(), 1).back();
+    return (1.25 - (after[1].x - after[0].x).norm()) / 0.25;
+  };
+  const double at_h = taken(kH), at_half = taken(0.5 * kH);
+  const double ratio = at_half == 0.0 ? INFINITY : at_h / at_half;
+  if (at_h > 0.1 && std::abs(std::log2(ratio)) <= 0.3) {
+    const double length = 1.25 - 0.25 * at_h;
+    if (std::abs(length - 1.0) <= 1e-6)
+      pass(section, "constraints",
+           format_text(tr("simulateVerlet holds its springs as constraints (position-based, as CS 184's rope and the "
+                          "exercise's \"solving constraints\" have it): a spring stretched by 25 %% is back at its rest "
+                          "length after one step (to %s m), at h and at h/2 alike"),
+                       num(std::abs(length - 1.0)).c_str()));
+    else
+      pass(section, "constraints",
+           format_text(tr("simulateVerlet holds its springs as constraints (position-based, as CS 184's rope and the "
+                          "exercise's \"solving constraints\" have it): a spring stretched by 25 %% is pulled %s %% of the "
+                          "way back in one step, at h and at h/2 alike"),
+                       num(100.0 * at_h).c_str()));
+    return true;
+  }
+  if (at_h > 0.0 && std::isfinite(ratio) && std::abs(std::log2(ratio) - 1.0) <= 0.3) {
+    bench.h_power = 1;
+    fail(section, "verlet-a-h",
+         format_text(tr("the acceleration is multiplied by delta_t once, not by delta_t^2: a spring stretched by 25 %% is "
+                        "pulled %s %% of the way back in a step of h and %s %% at h/2, where a force's pull goes as h^2 "
+                        "(x_next = x + (1 - d)(x - x_last) + a delta_t^2)"),
+                     num(100.0 * at_h).c_str(), num(100.0 * at_half).c_str()));
+  }
+  return false;
 }
 
-void probe_constraint_mistakes(RopeCode& code, CheckSection& section) {
-  probe_motion(code, Step::Verlet, section);
-  probe_gravity(code, Step::Verlet, 0.0, Rule::Hooke, section, true);
+void probe_forces(const Bench& bench, Step step, const Damping& damping, CheckSection& section) {
+  const Rule rule = probe_springs(bench, step, damping, section);
+  probe_gravity(bench, step, damping, rule, false, section);
 }
 
-void probe_mistakes(RopeCode& code, Step step, const Identified&, CheckSection& section) {
-  // The damping first, from masses moving together (no spring, no gravity at work): the other
-  // probes take it out of what they measure.
-  const double damping = probe_motion(code, step, section);
-  const Rule rule = probe_springs(code, step, damping, section);
-  probe_gravity(code, step, damping, rule, section);
+void probe_constraint_step(const Bench& bench, const Damping& damping, CheckSection& section) {
+  probe_gravity(bench, Step::Verlet, damping, Rule::Hooke, true, section);
 }
 
 }  // namespace springlab::homework

@@ -1,39 +1,52 @@
-// The references the homework is measured against: the rope as asked, built as a springlab Model,
-// and one step of springlab's own rows from any state the code made; then which row a step is.
+// The references the homework is measured against: the rope as a springlab Model (as asked, or
+// as the code built it), one step of springlab's own rows from any state the code made, with
+// every damping form students write; the forces a step implies; and what float's rounding
+// allows.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
-#include <optional>
+#include <map>
 
 #include "parts.hpp"
-#include "springlab/text.hpp"
 
 namespace springlab::homework {
 
-std::string num(double value) { return format_text("%.4g", value); }
+namespace {
 
-std::string vec(const Vec2& v) { return "(" + num(v.x()) + ", " + num(v.y()) + ")"; }
+bool listed(const std::vector<int>& list, int i) { return std::find(list.begin(), list.end(), i) != list.end(); }
 
-std::string step_text(double h) {
-  const double inverse = 1.0 / h;
-  if (inverse >= 2.0 && inverse == std::round(inverse) && inverse < 1e9)
-    return "1/" + std::to_string(static_cast<long long>(inverse)) + " s";
-  return num(h) + " s";
+void set_forces(Model& model, const Vec2& gravity, const Damping& damping) {
+  model.gravity = Vec3(gravity.x(), gravity.y(), 0.0);
+  model.drag = damping.drag;
+  model.verlet_damping = damping.verlet;
 }
 
-Model rope_model(const RopeRequest& request, const Vec2& gravity, double drag, double verlet_damping) {
+}  // namespace
+
+Model rope_model(const RopeRequest& request, const Vec2& gravity, const Damping& damping) {
   Model model;
-  const int material = add_material(model, {request.k, 0.0});
-  for (int i = 0; i < request.nodes; ++i)
-    add_particle(model, request.node_mass,
-                 std::find(request.pinned.begin(), request.pinned.end(), i) != request.pinned.end());
-  const double spacing = (request.end - request.start).norm() / (request.nodes - 1);
+  const int material = add_material(model, {request.k, damping.along});
+  for (int i = 0; i < request.nodes; ++i) add_particle(model, request.node_mass, listed(request.pinned, i));
+  const double spacing = request.nodes > 1 ? (request.end - request.start).norm() / (request.nodes - 1) : 0.0;
   for (int i = 0; i + 1 < request.nodes; ++i) add_spring(model, i, i + 1, spacing, material);
   finalize(model);
-  model.gravity = Vec3(gravity.x(), gravity.y(), 0.0);
-  model.drag = drag;
-  model.verlet_damping = verlet_damping;
+  set_forces(model, gravity, damping);
+  return model;
+}
+
+Model built_model(const BuiltRope& rope, const Vec2& gravity, const Damping& damping) {
+  Model model;
+  for (const BuiltMass& m : rope.masses) add_particle(model, m.mass, m.pinned);
+  std::map<double, int> materials;  // a material for each k the springs have
+  const int n = static_cast<int>(rope.masses.size());
+  for (const BuiltSpring& s : rope.springs) {
+    if (s.m1 < 0 || s.m2 < 0 || s.m1 >= n || s.m2 >= n || s.m1 == s.m2) continue;
+    auto [it, added] = materials.try_emplace(s.k, 0);
+    if (added) it->second = add_material(model, {s.k, damping.along});
+    add_spring(model, std::min(s.m1, s.m2), std::max(s.m1, s.m2), s.rest, it->second);
+  }
+  finalize(model);
+  set_forces(model, gravity, damping);
   return model;
 }
 
@@ -45,7 +58,7 @@ BuiltRope exercise_rope(const RopeRequest& request) {
     m.start = request.start + (request.end - request.start) * (n > 1 ? static_cast<double>(i) / (n - 1) : 0.0);
     m.state.x = m.state.x_last = m.start;
     m.mass = request.node_mass;
-    m.pinned = std::find(request.pinned.begin(), request.pinned.end(), i) != request.pinned.end();
+    m.pinned = listed(request.pinned, i);
     rope.masses.push_back(m);
   }
   for (int i = 0; i + 1 < n; ++i)
@@ -53,33 +66,116 @@ BuiltRope exercise_rope(const RopeRequest& request) {
   return rope;
 }
 
-RopeState reference_step(Method method, const Model& model, const RopeState& state, double h) {
+std::vector<Vec2> undamped_accelerations(const Model& model, const RopeState& s) {
+  const int n = static_cast<int>(s.size());
+  Points x(n, 3), v(n, 3), a(n, 3);
+  x.setZero();
+  v.setZero();
+  for (int i = 0; i < n; ++i) x.row(i).head<2>() = s[i].x.transpose();
+  Model undamped = model;
+  undamped.drag = 0.0;
+  set_damping(undamped, 0.0);
+  SpringForces buffer;
+  evaluate_forces(undamped, x, v, a, buffer);
+  std::vector<Vec2> out(n);
+  for (int i = 0; i < n; ++i) out[i] = a.row(i).head<2>().transpose();
+  return out;
+}
+
+std::vector<Vec2> relative_damping_forces(const Model& model, const RopeState& s, double relative) {
+  // f_b = -k_d (v_b - v_a), f_a = -f_b: each spring's ends pulled towards a common velocity.
+  std::vector<Vec2> f(s.size(), Vec2::Zero());
+  if (relative == 0.0) return f;
+  for (int k = 0; k < model.spring_count(); ++k) {
+    const int a = model.spring_a[k], b = model.spring_b[k];
+    const Vec2 on_b = -relative * (s[b].v - s[a].v);
+    f[b] += on_b;
+    f[a] -= on_b;
+  }
+  return f;
+}
+
+std::vector<Vec2> damping_forces(const Model& model, const RopeState& s, const Damping& damping) {
+  std::vector<Vec2> f = relative_damping_forces(model, s, damping.relative);
+  for (size_t i = 0; i < s.size(); ++i) f[i] -= damping.drag * s[i].v;
+  if (damping.along != 0.0)
+    for (int k = 0; k < model.spring_count(); ++k) {
+      // f_b = -k_d ((v_b - v_a) . u) u, f_a = -f_b: the lecture's, along the spring.
+      const int a = model.spring_a[k], b = model.spring_b[k];
+      const Vec2 d = s[b].x - s[a].x;
+      if (d.norm() == 0.0) continue;
+      const Vec2 u = d.normalized();
+      const Vec2 on_b = -damping.along * (s[b].v - s[a].v).dot(u) * u;
+      f[b] += on_b;
+      f[a] -= on_b;
+    }
+  return f;
+}
+
+namespace {
+
+// How a row moves a free particle under a constant acceleration of 1 in a step of h: x by cx,
+// v by cv (Euler 0 and h, symplectic Euler h^2 and h, the midpoint, modified Euler and RK4 h^2/2
+// and h). A force held over the step moves each mass by these times its acceleration.
+std::pair<double, double> response(Method method, double h) {
+  Model free;
+  add_particle(free, 1.0, false);
+  finalize(free);
+  free.gravity = Vec3(1.0, 0.0, 0.0);
+  State s;
+  s.resize(1);
+  s.x.setZero();
+  s.v.setZero();
+  const State next = reference_step(method, free, s, h);
+  return {next.x(0, 0), next.v(0, 0)};
+}
+
+}  // namespace
+
+RopeState reference_step(Method method, const Model& model, const Damping& damping, const RopeState& state, double h) {
   const int n = static_cast<int>(state.size());
   State in, out;
   in.resize(n);
   in.x.setZero();
   in.v.setZero();
   Workspace ws;
-  const bool verlet = method == Method::Verlet;
-  if (verlet) ws.x_prev.setZero(n, 3);
+  const bool history = method_info(method).history;
+  if (history) ws.x_prev.setZero(n, 3);
   for (int i = 0; i < n; ++i) {
     in.x.row(i).head<2>() = state[i].x.transpose();
     if (model.pinned(i)) continue;  // a pin holds still: its prescribed velocity is 0
-    const Vec2 v = verlet ? Vec2((state[i].x - state[i].x_last) / h) : state[i].v;
+    const Vec2 v = history ? Vec2((state[i].x - state[i].x_last) / h) : state[i].v;
     in.v.row(i).head<2>() = v.transpose();
   }
-  if (verlet) {
+  if (history) {
     for (int i = 0; i < n; ++i) ws.x_prev.row(i).head<2>() = (model.pinned(i) ? state[i].x : state[i].x_last).transpose();
     accelerations(model, in.x, in.v, ws.a_now, ws);
     ws.verlet_ready = true;
     ws.verlet_h = h;
   }
+  const Points a_start = history ? ws.a_now : Points();
   step(method, model, in, out, h, StepSettings{}, ws);
   RopeState next = state;
   for (int i = 0; i < n; ++i) {
     next[i].x = out.x.row(i).head<2>().transpose();
     next[i].v = out.v.row(i).head<2>().transpose();
     next[i].x_last = state[i].x;
+  }
+  // Verlet's factor on the whole displacement: x + (1 - d)((x - x_last) + h^2 a) is the row's
+  // x + (1 - d)(x - x_last) + h^2 a less d h^2 a.
+  if (history && damping.verlet_whole && damping.verlet != 0.0)
+    for (int i = 0; i < n; ++i)
+      if (!model.pinned(i)) next[i].x -= damping.verlet * h * h * a_start.row(i).head<2>().transpose();
+  // Damping along the relative velocity, a force at the step's start state.
+  if (!history && damping.relative != 0.0) {
+    const std::vector<Vec2> f = relative_damping_forces(model, state, damping.relative);
+    const auto [cx, cv] = response(method, h);
+    for (int i = 0; i < n; ++i) {
+      if (model.pinned(i)) continue;
+      const Vec2 a = f[i] * model.inv_mass[i];
+      next[i].x += cx * a;
+      next[i].v += cv * a;
+    }
   }
   return next;
 }
@@ -91,6 +187,24 @@ State reference_step(Method method, const Model& model, const State& state, doub
   return out;
 }
 
+std::vector<Method> candidate_rows(bool history) {
+  std::vector<Method> rows;
+  for (const MethodInfo& row : methods()) {
+    const bool fixed_explicit = (row.family == MethodFamily::RungeKutta || row.family == MethodFamily::Partitioned);
+    if (fixed_explicit && row.history == history) rows.push_back(row.id);
+  }
+  return rows;
+}
+
+namespace {
+
+double ratio(double a, double b) {
+  if (!std::isfinite(a) || !std::isfinite(b)) return std::numeric_limits<double>::infinity();
+  return a == 0.0 ? 0.0 : (b == 0.0 ? std::numeric_limits<double>::infinity() : a / b);
+}
+
+}  // namespace
+
 double step_deviation(const RopeState& before, const RopeState& after, const RopeState& reference, bool velocities) {
   double moved = 0.0, off = 0.0, dv = 0.0, off_v = 0.0;
   for (size_t i = 0; i < after.size(); ++i) {
@@ -100,112 +214,51 @@ double step_deviation(const RopeState& before, const RopeState& after, const Rop
     dv = std::max(dv, (after[i].v - before[i].v).norm());
     off_v = std::max(off_v, (after[i].v - reference[i].v).norm());
   }
-  auto ratio = [](double a, double b) {
-    if (!std::isfinite(a) || !std::isfinite(b)) return std::numeric_limits<double>::infinity();
-    return a == 0.0 ? 0.0 : (b == 0.0 ? std::numeric_limits<double>::infinity() : a / b);
-  };
+  if (!(off == off) || !(off_v == off_v)) return std::numeric_limits<double>::infinity();  // NaN
   const double d = ratio(off, moved);
   return velocities ? std::max(d, ratio(off_v, dv)) : d;
 }
 
+double float_floor(const Model& model, const Damping& damping, const RopeState& before, const RopeState& after,
+                   double h, bool velocities, bool stored_in_float) {
+  const int n = static_cast<int>(before.size());
+  // Each mass's force scale: what float's rounding of the terms it sums can be off by.
+  std::vector<double> scale(n, 0.0);
+  for (int k = 0; k < model.spring_count(); ++k) {
+    const int a = model.spring_a[k], b = model.spring_b[k];
+    const double length = (before[b].x - before[a].x).norm();
+    const double damping_force = (damping.along + std::abs(damping.relative)) * (before[b].v - before[a].v).norm();
+    scale[a] += model.ks(k) * length + damping_force;
+    scale[b] += model.ks(k) * length + damping_force;
+  }
+  const double g = Vec2(model.gravity.x(), model.gravity.y()).norm();
+  constexpr double kRoundings = 8.0 * kFloatRounding;
+  double moved = 0.0, dv = 0.0, off_x = 0.0, off_v = 0.0;
+  for (int i = 0; i < n; ++i) {
+    moved = std::max(moved, (after[i].x - before[i].x).norm());
+    dv = std::max(dv, (after[i].v - before[i].v).norm());
+    if (model.pinned(i)) continue;
+    const double force = scale[i] + model.mass[i] * g + std::abs(damping.drag) * before[i].v.norm();
+    const double da = kRoundings * force * model.inv_mass[i];
+    // Verlet's (1 - d)(x - x_last) is rounded too, where the factor is a float.
+    // Positions and velocities kept in float (NumPy's float32) are rounded once more each step.
+    const double kept_x = stored_in_float ? 2.0 * kFloatRounding * after[i].x.norm() : 0.0;
+    const double kept_v = stored_in_float ? 2.0 * kFloatRounding * after[i].v.norm() : 0.0;
+    off_x = std::max(off_x, h * h * da + kept_x + (velocities ? 0.0 : kRoundings * (before[i].x - before[i].x_last).norm()));
+    off_v = std::max(off_v, h * da + kept_v);
+  }
+  return velocities ? std::max(ratio(off_x, moved), ratio(off_v, dv)) : ratio(off_x, moved);
+}
+
 std::vector<Vec2> implied_forces(Step step, const std::vector<double>& masses, const RopeState& before,
-                                 const RopeState& after, double h, double verlet_damping) {
+                                 const RopeState& after, double h, double verlet_damping, int h_power) {
   std::vector<Vec2> f(before.size());
+  const double scale = std::pow(h, h_power);
   for (size_t i = 0; i < f.size(); ++i) {
     if (step == Step::Euler) f[i] = masses[i] * (after[i].v - before[i].v) / h;
-    else f[i] = masses[i] * (after[i].x - before[i].x - (1.0 - verlet_damping) * (before[i].x - before[i].x_last)) / (h * h);
+    else f[i] = masses[i] * (after[i].x - before[i].x - (1.0 - verlet_damping) * (before[i].x - before[i].x_last)) / scale;
   }
   return f;
-}
-
-namespace {
-
-// The accelerations of the springs and gravity alone (no drag) at a state's positions.
-Points undamped_accelerations(const Model& model, const RopeState& s) {
-  const int n = static_cast<int>(s.size());
-  Points x(n, 3), v(n, 3), a(n, 3);
-  x.setZero();
-  v.setZero();
-  for (int i = 0; i < n; ++i) x.row(i).head<2>() = s[i].x.transpose();
-  SpringForces buffer;
-  evaluate_forces(model, x, v, a, buffer);
-  return a;
-}
-
-// The least-squares fit of the damping from the code's own steps (free masses only):
-//   Euler:  v1 - v - h a0(x) = -h c/m v       (a drag f = -c v, c in N s/m)
-//   Verlet: x1 - x - h^2 a0(x) = (1 - d)(x - x_last)
-double fit_damping(Step step, const Model& undamped, const std::vector<RopeState>& run, double h) {
-  double num = 0.0, den = 0.0;
-  for (size_t n = 0; n + 1 < run.size(); ++n) {
-    const Points a = undamped_accelerations(undamped, run[n]);
-    for (size_t i = 0; i < run[n].size(); ++i) {
-      if (undamped.pinned(static_cast<int>(i))) continue;
-      const Vec2 a0 = a.row(static_cast<Eigen::Index>(i)).head<2>().transpose();
-      const MassState &s = run[n][i], &t = run[n + 1][i];
-      const Vec2 r = step == Step::Euler ? Vec2(t.v - s.v - h * a0) : Vec2(t.x - s.x - h * h * a0);
-      const Vec2 b = step == Step::Euler ? Vec2(-h * s.v / undamped.mass[i]) : Vec2(s.x - s.x_last);
-      num += r.dot(b);
-      den += b.dot(b);
-    }
-  }
-  if (den == 0.0 || !std::isfinite(num)) return 0.0;
-  return step == Step::Euler ? num / den : 1.0 - num / den;
-}
-
-constexpr int kSteps = kCheckSteps;
-
-}  // namespace
-
-Identified identify(RopeCode& code, Step step, const RopeRequest& request, CheckSection& section) {
-  const double h = kCheckStep;
-  const Vec2 g = kCheckGravity;
-  const BuiltRope rope = code.build(request);
-  RopeState start;
-  for (const BuiltMass& m : rope.masses) start.push_back(m.state);
-  std::vector<RopeState> run = code.simulate(step, h, g, kSteps);
-  run.insert(run.begin(), start);
-
-  const double fitted = fit_damping(step, rope_model(request, g), run, h);
-  std::vector<Method> rows = step == Step::Euler ? std::vector{Method::Euler, Method::SymplecticEuler}
-                                                 : std::vector{Method::Verlet};
-  Identified best;
-  best.deviation = std::numeric_limits<double>::infinity();
-  for (Method row : rows) {
-    for (double damping : {0.0, fitted}) {
-      const Model model = step == Step::Euler ? rope_model(request, g, damping) : rope_model(request, g, 0.0, damping);
-      double worst = 0.0;
-      for (size_t n = 0; n + 1 < run.size(); ++n)
-        worst = std::max(worst, step_deviation(run[n], run[n + 1], reference_step(row, model, run[n], h), step == Step::Euler));
-      if (worst < best.deviation) {
-        best = {};
-        best.method = method_info(row).name;
-        best.drag = step == Step::Euler ? damping : 0.0;
-        best.verlet_damping = step == Step::Verlet ? damping : 0.0;
-        best.deviation = worst;
-      }
-    }
-  }
-  const std::optional<Method> found = find_method(best.method);
-  const MethodInfo& row = method_info(found ? *found : rows[0]);
-  const std::string damping =
-      step == Step::Euler ? (best.drag == 0.0 ? "no damping" : "a global drag f = -c v, c = " + num(best.drag) + " N s/m (fitted)")
-                          : (best.verlet_damping == 0.0 ? "no damping"
-                                                        : "damping factor d = " + num(best.verlet_damping) + " (fitted)");
-  const std::string where = std::to_string(kSteps) + " steps of a " + std::to_string(request.nodes) +
-                            "-mass rope falling from rest at h = 1/1024 s";
-  if (best.deviation <= kMatch) {
-    pass(section, std::string(step_name(step)) + " is " + row.label + " (springlab's " + row.name + "), with " + damping +
-                      ": each of " + where + " matches it to " + num(best.deviation) + " of the step's motion");
-    return best;
-  }
-  std::string names;
-  for (Method r : rows) names += std::string(names.empty() ? "" : " or ") + method_info(r).label;
-  fail(section, std::string(step_name(step)) + " is not " + names + ", with or without damping: over " + where +
-                    ", the nearest, " + row.label + ", is off by " + num(best.deviation) +
-                    " of a step's motion (rounding: 1e-10); the probes below say where");
-  best.method.clear();
-  return best;
 }
 
 }  // namespace springlab::homework

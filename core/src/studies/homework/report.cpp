@@ -1,0 +1,107 @@
+// The report's words: numbers and vectors as it writes them, and the report as text (what
+// `springlab homework check` prints, in the current language) and as JSON (for a course's grader).
+#include <algorithm>
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "parts.hpp"
+
+namespace springlab::homework {
+
+const char* step_name(Step step) { return step == Step::Euler ? "simulateEuler" : "simulateVerlet"; }
+
+std::string num(double value) { return format_text("%.4g", value); }
+
+std::string vec(const Vec2& v) { return "(" + num(v.x()) + ", " + num(v.y()) + ")"; }
+
+std::pair<std::string, std::string> apart(const Vec2& a, const Vec2& b) {
+  // 4 significant digits, or as many more as it takes for the two to read differently.
+  for (int digits = 4; digits <= 17; ++digits) {
+    auto text = [digits](const Vec2& v) {
+      return "(" + format_text("%.*g", digits, v.x()) + ", " + format_text("%.*g", digits, v.y()) + ")";
+    };
+    if (text(a) != text(b) || digits == 17) return {text(a), text(b)};
+  }
+  return {vec(a), vec(b)};
+}
+
+std::string step_text(double h) {
+  const double inverse = 1.0 / h;
+  if (inverse >= 2.0 && inverse == std::round(inverse) && inverse < 1e9)
+    return "1/" + std::to_string(static_cast<long long>(inverse)) + " s";
+  return num(h) + " s";
+}
+
+bool any_failed(const CheckSection& s) {
+  return std::any_of(s.lines.begin(), s.lines.end(), [](const CheckLine& l) { return l.kind == CheckLine::Fail; });
+}
+
+namespace {
+
+int count(const Report& report, CheckLine::Kind kind) {
+  int n = 0;
+  for (const CheckSection& s : report.sections)
+    n += static_cast<int>(std::count_if(s.lines.begin(), s.lines.end(), [kind](const CheckLine& l) { return l.kind == kind; }));
+  return n;
+}
+
+const char* kind_word(CheckLine::Kind kind) {
+  return kind == CheckLine::Pass ? "ok" : kind == CheckLine::Fail ? "fail" : "note";
+}
+
+nlohmann::json step_json(const Identified& found) {
+  nlohmann::json j;
+  j["method"] = found.method.empty() ? nlohmann::json(nullptr) : nlohmann::json(found.method);
+  j["velocity_verlet"] = found.velocity_verlet;
+  j["constraints"] = found.constraints;
+  j["damping"] = {{"drag", found.damping.drag},
+                  {"along_spring", found.damping.along},
+                  {"relative_velocity", found.damping.relative},
+                  {"verlet", found.damping.verlet},
+                  {"verlet_whole_displacement", found.damping.verlet_whole}};
+  j["deviation"] = found.deviation;
+  j["in_float"] = found.in_float;
+  return j;
+}
+
+}  // namespace
+
+int Report::passed() const { return count(*this, CheckLine::Pass); }
+int Report::failed() const { return count(*this, CheckLine::Fail); }
+
+std::vector<std::string> Report::failed_keys() const {
+  std::vector<std::string> keys;
+  for (const CheckSection& s : sections)
+    for (const CheckLine& l : s.lines)
+      if (l.kind == CheckLine::Fail) keys.push_back(l.key);
+  return keys;
+}
+
+std::string format_report(const Report& report) {
+  std::string out;
+  for (const CheckSection& s : report.sections) {
+    out += s.title + "\n";
+    for (const CheckLine& l : s.lines)
+      out += (l.kind == CheckLine::Pass ? "  ok    " : l.kind == CheckLine::Fail ? "  FAIL  " : "        ") + l.text + "\n";
+  }
+  return out + format_text(tr("%d checks passed, %d failed.\n"), report.passed(), report.failed());
+}
+
+std::string report_json(const Report& report) {
+  nlohmann::json j;
+  j["passed"] = report.passed();
+  j["failed"] = report.failed();
+  j["springlab_rope"] = report.springlab_rope;
+  j["constructor_wrong"] = report.constructor_wrong;
+  j["steps"] = {{step_name(Step::Euler), step_json(report.euler)}, {step_name(Step::Verlet), step_json(report.verlet)}};
+  j["sections"] = nlohmann::json::array();
+  for (const CheckSection& s : report.sections) {
+    nlohmann::json lines = nlohmann::json::array();
+    for (const CheckLine& l : s.lines) lines.push_back({{"kind", kind_word(l.kind)}, {"key", l.key}, {"text", l.text}});
+    j["sections"].push_back({{"title", s.title}, {"lines", lines}});
+  }
+  // Invalid UTF-8 in a student's printed output (a crash's last lines) is replaced, never thrown.
+  return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
+}  // namespace springlab::homework
