@@ -1,7 +1,7 @@
 // A rope.cpp that does not compile: simulateVerlet uses a name it never declared.
 // expect: exit 2
 // expect-err: does_not_compile.cpp does not compile: 
-// expect-err: does_not_compile.cpp:12:
+// expect-err: does_not_compile.cpp:14:
 // expect-err: damping
 #include "CGL/vector2D.h"
 #include "mass.h"

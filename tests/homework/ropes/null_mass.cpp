@@ -1,5 +1,5 @@
 // A rope.cpp with one planted mistake (rope_with.hpp: NULL_MASS).
 // expect: fail constructor-failed
-// expect-says: masses[0] is a null pointer
+// expect-says: left masses[0] a null pointer
 #define NULL_MASS
 #include "rope_with.hpp"

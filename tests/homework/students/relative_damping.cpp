@@ -1,5 +1,5 @@
 // expect: pass
-// expect-euler: explicit
+// expect-euler: euler
 // expect-verlet: verlet
 // expect-says: damping along the relative velocity, f_b = -k_d (v_b - v_a), k_d = 0.5 N s/m
 // Damping along the relative velocity, not projected on the spring: half the velocity difference

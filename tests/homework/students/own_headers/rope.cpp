@@ -1,7 +1,6 @@
 // expect: pass
 // expect-euler: symplectic-euler
 // expect-verlet: verlet
-// expect-says: with your rope.h, mass.h and spring.h
 // A solution with its own headers beside it (rope.h with its damping as members, a destructor and
 // a private helper; mass.h with its members reordered and initialised; spring.h with a double k):
 // the checker's runner is built against the same headers.
