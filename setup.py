@@ -50,16 +50,16 @@ class CMakeBuild(build_ext):
 
 
 class WithData(build_py):
-    """The package with the shipped scenes and tableaux in springlab/data/assets, where
+    """The package with the shipped scenes, tableaux and translations in springlab/data/assets, where
     springlab/__init__.py looks for them."""
 
     def run(self):
         super().run()
-        for kind in ("scenes", "tableaux"):
+        for kind, pattern in (("scenes", "*.json"), ("tableaux", "*.json"), ("locale", "*.po")):
             into = Path(self.build_lib) / "springlab" / "data" / "assets" / kind
             into.mkdir(parents=True, exist_ok=True)
-            for json in (ROOT / "assets" / kind).glob("*.json"):
-                shutil.copy2(json, into / json.name)
+            for data in (ROOT / "assets" / kind).glob(pattern):
+                shutil.copy2(data, into / data.name)
 
 
 # setuptools' own build folder and its metadata, apart from CMake's build/ (scripts/build.sh's)

@@ -40,12 +40,13 @@ std::string headers_text(const RopeBuild& build) {
 }
 
 int check(const CheckOptions& o) {
-  if (!o.lang.empty()) use_language(check_language(o.lang, "--lang"));
+  // The report is text, shown in the terminal's own font (no CJK font needed).
+  if (!o.lang.empty()) use_language(check_language(o.lang, "--lang"), false);
   else {
     try {
-      use_language(environment_language());
+      use_language(environment_language(), false);
     } catch (const InputError&) {
-      use_language("en");  // a language springlab does not speak: English, as the window does
+      use_language("en");  // a catalog that cannot be read: English, as the window does
     }
   }
   const auto start = std::chrono::steady_clock::now();

@@ -20,11 +20,11 @@ std::string identified(const char* step, const Identified& found) {
 
 // The row beside a lane of one's own, with the student's damping: an Euler row takes the drag and
 // the spring damping (along the spring, springlab's only form), a Verlet row the factor d.
-BesideRow beside_row(Method like, Step step, const Identified& found) {
+BesideRow beside_row(Method like, Step step, const Identified& found, double node_mass) {
   BesideRow row;
   row.method = like;
   const Damping& d = found.damping;
-  row.drag = step == Step::Euler ? d.drag : 0.0;
+  row.drag = step == Step::Euler ? d.drag_on(node_mass) : 0.0;
   row.kd = step == Step::Euler ? d.along + d.relative : 0.0;
   row.verlet_damping = step == Step::Verlet ? d.verlet : 0.0;
   return row;
@@ -66,7 +66,8 @@ void HomeworkLanes::install(Session& session, ui::HomeworkStatus& status) {
     const bool known = !found.method.empty();
     if (known) like = method_info(*find_method(found.method)).id;
     own.push_back({rope_lane_step(make_(), step, r.springlab_rope), label, like, known});
-    beside.push_back(beside_row(like, step, found));
+    const Model& model = session.scene().model;
+    beside.push_back(beside_row(like, step, found, model.mass.empty() ? 0.0 : model.mass[0]));
     status.lines.push_back(identified(step_name(step), found));
     status.lines.push_back("  " + row_words(beside.back()));
     if (step == Step::Euler && found.damping.relative != 0.0)

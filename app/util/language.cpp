@@ -74,7 +74,7 @@ bool needs_cjk_font(const Catalog& catalog) {
 
 }  // namespace
 
-std::string use_language(const std::string& tag) {
+std::string use_language(const std::string& tag, bool draws) {
   const std::string lang = supported_language(tag, spoken());
   if (lang == "en") {
     set_catalog(nullptr);
@@ -96,7 +96,7 @@ std::string use_language(const std::string& tag) {
   text << in.rdbuf();
   Catalog catalog = read_po(text.str(), path.string());
   catalog.language = lang;
-  if (needs_cjk_font(catalog) && cjk_font_path().empty())
+  if (draws && needs_cjk_font(catalog) && cjk_font_path().empty())
     throw InputError("language '" + lang + "': its font is missing (the build makes it from Debian's fonts-noto-cjk "
                      "with python3-fonttools: scripts/setup.sh installs both)");
   loaded.push_back(std::move(catalog));

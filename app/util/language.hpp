@@ -22,8 +22,10 @@ std::string language_list();
 
 // Makes `tag` (any form the environment uses: "zh_CN.UTF-8", "zh-Hans", "en-GB") the language
 // tr() translates to, loading its catalog the first time; returns the tag used ("zh-CN" or "en").
-// A catalog that cannot be read or parsed throws InputError naming the file and line.
-std::string use_language(const std::string& tag);
+// A catalog that cannot be read or parsed throws InputError naming the file and line; so does
+// one whose script needs the CJK font where it is missing, unless nothing is to be drawn
+// (`draws` false: text on a terminal or in Python, which the terminal's own font shows).
+std::string use_language(const std::string& tag, bool draws = true);
 
 // A language named on the command line or in a link (`what`: "--lang"), as used: "en" or "zh-CN".
 // Throws InputError for a language springlab has no translation for.

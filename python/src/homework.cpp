@@ -6,6 +6,9 @@
 #include <stdexcept>
 
 #include "own_step.hpp"
+#include "springlab/text.hpp"
+#include "util/language.hpp"
+#include "springlab/error.hpp"
 
 namespace springlab::python {
 
@@ -35,14 +38,25 @@ std::string step_name(const py::object& fn) {
   return py::hasattr(fn, "__name__") ? fn.attr("__name__").cast<std::string>() : std::string("fn");
 }
 
-homework::OwnStep python_step(const py::object& fn, const std::string& name) {
+namespace {
+
+// Whether a result is a NumPy array of float32 (or narrower), whose numbers are float's.
+bool single(const py::handle& value) {
+  if (!py::isinstance<py::array>(value)) return false;
+  const py::dtype type = py::reinterpret_borrow<py::array>(value).dtype();
+  return type.kind() == 'f' && type.itemsize() <= 4;
+}
+
+}  // namespace
+
+homework::OwnStep python_step(const py::object& fn, const std::string& name, std::shared_ptr<bool> single_precision) {
   // The function lives as long as any copy of the step; it is let go of with the interpreter's
   // lock held, whichever thread drops the last copy.
   std::shared_ptr<py::object> held(new py::object(fn), [](py::object* o) {
     py::gil_scoped_acquire gil;
     delete o;
   });
-  return [held, name](const Model& model, const State& in, State& out, double h, Workspace& ws) {
+  return [held, name, single_precision](const Model& model, const State& in, State& out, double h, Workspace& ws) {
     py::gil_scoped_acquire gil;
     const int n = in.particle_count();
     // force() reads this step's model and workspace: called after the step, it says so.
@@ -68,11 +82,31 @@ homework::OwnStep python_step(const py::object& fn, const std::string& name) {
     if (pair.size() != 2) throw py::value_error(name + " must return (x, v): it returned " + std::to_string(pair.size()) + " values");
     out.x = result_array(pair[0], "x", n, name);
     out.v = result_array(pair[1], "v", n, name);
+    if (single_precision) *single_precision = single(pair[0]) || single(pair[1]);
     out.t = in.t + h;
   };
 }
 
 void bind_homework(py::module_& m) {
+  m.def(
+      "set_language",
+      [](const std::string& tag) { return app::use_language(app::check_language(tag, "set_language"), false); },
+      py::arg("tag"),
+      "the language of what springlab writes in words (the homework report): \"en\", \"zh-CN\", or any form the "
+      "environment uses (\"zh_CN.UTF-8\"); returns the one used. At import it is the environment's (LANGUAGE, LC_ALL, "
+      "LC_MESSAGES, LANG), as the app's.");
+  m.def("language", &current_language, "the language springlab writes in: \"en\", \"zh-CN\"");
+  m.def("languages", [] {
+    std::vector<std::string> tags;
+    for (const app::Language& l : app::languages()) tags.push_back(l.tag);
+    return tags;
+  }, "the languages springlab speaks");
+  // The environment's, as the app takes it; a catalog that cannot be read leaves English.
+  try {
+    app::use_language(app::environment_language(), false);
+  } catch (const InputError&) {
+  }
+
   py::class_<homework::Report>(m, "HomeworkReport", "what springlab.homework.check found, line by line")
       .def_property_readonly("text", [](const homework::Report& r) { return homework::format_report(r); },
                              "the report as `springlab homework check` prints one")
@@ -85,6 +119,8 @@ void bind_homework(py::module_& m) {
             return py::str(r.euler.method);
           },
           "the row of springlab's table the step is (\"euler\", \"rk4\", ...), or None")
+      .def_property_readonly("failed_keys", &homework::Report::failed_keys,
+                             "what each failed line is about, the same in every language (\"forces-kept\", ...)")
       .def_property_readonly(
           "lines",
           [](const homework::Report& r) {
@@ -105,7 +141,8 @@ void bind_homework(py::module_& m) {
       "_homework_check",
       [](const py::object& fn, const std::string& name) {
         if (!PyCallable_Check(fn.ptr())) throw py::type_error("check(fn): fn must be a function fn(x, v, force, h) -> (x, v)");
-        const homework::OwnStep step = python_step(fn, name);
+        auto in_float = std::make_shared<bool>(false);
+        const homework::OwnStep step = python_step(fn, name, in_float);
         int calls = 0;
         // An exception in fn ends the check's lines where it happened, said as the checker says
         // a crash in C++ code; Ctrl-C still stops it.
@@ -123,7 +160,7 @@ void bind_homework(py::module_& m) {
             throw homework::CodeFailure(std::string(e.what()) + " (its call " + std::to_string(calls) + ")");
           }
         };
-        return homework::check_step(checked, name);
+        return homework::check_step(checked, name, in_float.get());
       },
       py::arg("fn"), py::arg("name"));
 }

@@ -4,6 +4,7 @@
 // Simulation(method=fn) and springlab.homework.check(fn) (homework.cpp).
 #pragma once
 
+#include <memory>
 #include <string>
 
 #include "bindings.hpp"
@@ -12,8 +13,10 @@
 namespace springlab::python {
 
 /// The step. A Python exception in fn propagates as itself; a result of the wrong shape raises
-/// ValueError saying what was expected.
-homework::OwnStep python_step(const py::object& fn, const std::string& name);
+/// ValueError saying what was expected. `single_precision`, where given, is set after each call to
+/// whether fn returned its arrays in single precision (NumPy's float32).
+homework::OwnStep python_step(const py::object& fn, const std::string& name,
+                              std::shared_ptr<bool> single_precision = nullptr);
 
 /// fn's name for messages: its __name__, else "fn".
 std::string step_name(const py::object& fn);

@@ -121,3 +121,44 @@ def test_force_works_only_within_its_step():
     sim.run()
     with pytest.raises(RuntimeError, match="only within the step it was given to"):
         kept[0](sim.positions, sim.velocities)
+
+
+def test_a_step_in_float32_is_judged_to_floats_rounding():
+    def in_float(x, v, force, h):
+        x, v = x.astype(np.float32), v.astype(np.float32)
+        with np.errstate(over="ignore", invalid="ignore"):  # (past the stability limit, float overflows)
+            v = v + np.float32(h) * force(x, v).astype(np.float32)
+            return x + np.float32(h) * v, v
+
+    report = springlab.homework.check(in_float)
+    assert report.method == "symplectic-euler", report.text
+    assert "float's rounding (the step returns float32 arrays" in report.text, report.text
+    assert report.failed == 0, report.text
+
+
+def test_a_drag_is_fitted_and_its_sign_held_to():
+    def damped(x, v, force, h):  # a = f / m - 0.1 v: a drag rate of 0.1 /s
+        v = v + h * (force(x, v) - 0.1 * v)
+        return x + h * v, v
+
+    def pushed(x, v, force, h):
+        v = v + h * (force(x, v) + 0.1 * v)
+        return x + h * v, v
+
+    report = springlab.homework.check(damped)
+    assert report.method == "symplectic-euler" and report.failed == 0, report.text
+    assert "a global drag on the velocity, a = f / m - c v, c = 0.1 1/s" in report.text, report.text
+    wrong = springlab.homework.check(pushed)
+    assert wrong.failed_keys == ["damping-sign"], wrong.text
+
+
+def test_the_report_speaks_the_language_chosen():
+    assert "zh-CN" in springlab.languages()
+    before = springlab.language()
+    try:
+        assert springlab.set_language("zh_CN.UTF-8") == "zh-CN"
+        text = springlab.homework.check(semi_implicit).text
+        assert "半隐式欧拉" in text and "项检查通过" in text, text
+    finally:
+        springlab.set_language(before)
+    assert "checks passed" in springlab.homework.check(semi_implicit).text

@@ -34,32 +34,56 @@ std::unique_ptr<Session> rope_session(const std::vector<std::string>& sets) {
   return std::make_unique<Session>(std::move(p.scene), p.settings, 60.0);
 }
 
-// The student's semi-implicit Euler with its drag of 0.01 N s/m is springlab's symplectic Euler
-// on the scene with that drag: the two lanes stay together to rounding, where the scene's own
-// drag (0.03) would have them a centimetre apart.
-TEST(HomeworkView, ALaneOfOnesOwnIsTheRowItWasFoundToBe) {
+// The student's semi-implicit Euler with its drag of 0.01 N s/m beside springlab's symplectic Euler,
+// which runs with what the checker fitted (that drag, no spring damping) instead of the scene's own
+// drag of 0.03: the two lanes stay together to rounding, and the student's code ran for it (the
+// rope fell and swung a metre). The Verlet row takes the student's d.
+TEST(HomeworkView, ALaneOfOnesOwnFollowsItsRowRunWithTheFittedDamping) {
   HomeworkWatch watch(kRopes / "correct.cpp");
-  auto session = rope_session({"drag=0.01"});
+  auto session = rope_session({});
+  ASSERT_EQ(session->scene().model.drag, 0.03);  // the scene's, which the rows do not take
   watch.poll(*session);
   ASSERT_EQ(session->lanes().size(), 4u);
   const app::Lane& own = session->lanes()[0];
   const app::Lane& row = session->lanes()[2];
+  const app::Lane& verlet_row = session->lanes()[3];
   EXPECT_EQ(app::lane_label(own), "Your simulateEuler");
   EXPECT_EQ(app::lane_label(session->lanes()[1]), "Your simulateVerlet");
   EXPECT_EQ(own.sim.settings().method, Method::SymplecticEuler);  // the row it was found to be
   EXPECT_EQ(row.sim.settings().method, Method::SymplecticEuler);
+  EXPECT_NEAR(row.sim.model().drag, 0.01, 1e-9);
+  EXPECT_EQ(row.sim.model().kd(0), 0.0);
+  EXPECT_NEAR(verlet_row.sim.model().verlet_damping, 5e-5, 1e-9);
+  EXPECT_EQ(verlet_row.sim.model().drag, 0.0);
   for (int frame = 0; frame < 60; ++frame) session->advance_frame();  // 1 s: 8192 steps
   ASSERT_FALSE(own.sim.trouble()) << own.sim.trouble()->message();
   EXPECT_NEAR(own.sim.state().t, 1.0, 1e-9);
   const double apart = (own.sim.state().x - row.sim.state().x).rowwise().norm().maxCoeff();
   EXPECT_LT(apart, 1e-9);
-  const double moved = (row.sim.state().x - session->scene().state.x).rowwise().norm().maxCoeff();
-  EXPECT_GT(moved, 1.0);  // the rope fell and swung: the lanes agree about something
-  // The panel's account: both steps named.
+  const double moved = (own.sim.state().x - session->scene().state.x).rowwise().norm().maxCoeff();
+  EXPECT_GT(moved, 1.0);  // the student's code stepped the rope: it fell and swung
+  // The panel's account: both steps named with their damping, and the parameters the rows took.
   const std::vector<std::string>& lines = watch.status().lines;
-  ASSERT_GE(lines.size(), 3u);
-  EXPECT_NE(lines[1].find("simulateEuler: Symplectic Euler, drag 0.01 N s/m"), std::string::npos) << lines[1];
-  EXPECT_NE(lines[2].find("simulateVerlet: Verlet, d = 5e-05"), std::string::npos) << lines[2];
+  ASSERT_GE(lines.size(), 5u);
+  EXPECT_NE(lines[1].find("simulateEuler: Symplectic Euler, a global drag f = -c v, c = 0.01 N s/m"), std::string::npos)
+      << lines[1];
+  EXPECT_NE(lines[2].find("beside it springlab's symplectic-euler with drag 0.01 N s/m, k_d 0 N s/m"), std::string::npos)
+      << lines[2];
+  EXPECT_NE(lines[3].find("simulateVerlet: Verlet, damping factor d = 5e-05"), std::string::npos) << lines[3];
+  EXPECT_NE(lines[4].find("beside it springlab's verlet with drag 0 N s/m, k_d 0 N s/m, d = 5e-05"), std::string::npos)
+      << lines[4];
+}
+
+// A step that is wrong visibly leaves the row it stands beside: forces never cleared.
+TEST(HomeworkView, AWrongLaneLeavesItsRow) {
+  HomeworkWatch watch(kRopes / "forces_kept.cpp");
+  auto session = rope_session({});
+  watch.poll(*session);
+  ASSERT_EQ(session->lanes().size(), 4u);
+  for (int frame = 0; frame < 6; ++frame) session->advance_frame();  // 0.1 s
+  const app::Lane &own = session->lanes()[0], &row = session->lanes()[2];
+  const double apart = own.sim.trouble() ? INFINITY : (own.sim.state().x - row.sim.state().x).rowwise().norm().maxCoeff();
+  EXPECT_GT(apart, 1e-2);
 }
 
 // A crash in simulateVerlet stops that lane, with what happened and at which step; the others go

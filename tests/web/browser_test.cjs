@@ -927,29 +927,42 @@ check("homework 8: JavaScript typed into the panel is checked and runs beside sp
   await again.close();
 
   // The usual mistakes, each planted alone in the correct code, each named by the checker (as
-  // tests/homework/ropes/ plants them in C++: tests/cli/homework_test.cpp).
+  // tests/homework/ropes/ plants them in C++: tests/cli/homework_test.cpp), and nothing else: every
+  // FAIL line names it, once a step it is in (springForces is both steps'). Correct variants (explicit
+  // Euler, the damping forms students write) pass with their names.
   const planted = [
     ["explicit Euler (correct too)", (c) => c.replace(/(      m\.velocity = .*\n)(      m\.position = .*\n)/, "$2$1"),
-     "simulateEuler is Explicit Euler (springlab's euler)"],
-    ["forces kept", (c) => c.replaceAll("    m.forces = new Vector2D(0, 0);\n", ""), "forces are not cleared between steps"],
-    ["one end", (c) => c.replace("    s.m2.forces = s.m2.forces.minus(f);\n", ""), "the spring force acts on one end only (m1)"],
-    ["wrong sign", (c) => c.replace("times(s.k * (", "times(-s.k * ("), "the spring force has the wrong sign"],
+     "simulateEuler is Explicit Euler (springlab's euler)", 0],
+    ["the lecture's spring damping (correct too)", (c) => c.replace(".minus(m.velocity.times(0.02))", "").replace(
+       "    s.m2.forces = s.m2.forces.minus(f);",
+       "    s.m2.forces = s.m2.forces.minus(f);\n    const u = d.unit(), damp = u.times(-0.5 * u.dot(s.m2.velocity.minus(s.m1.velocity)));\n" +
+       "    s.m2.forces = s.m2.forces.plus(damp);\n    s.m1.forces = s.m1.forces.minus(damp);"),
+     "the lecture's spring damping, along the spring, f_b = -k_d ((v_b - v_a) . u) u, k_d = 0.5 N s/m", 0],
+    ["forces kept", (c) => c.replaceAll("    m.forces = new Vector2D(0, 0);\n", ""), "forces are not cleared between steps", 2],
+    ["one end", (c) => c.replace("    s.m2.forces = s.m2.forces.minus(f);\n", ""), "the spring force acts on one end only (m1)", 2],
+    ["wrong sign", (c) => c.replace("times(s.k * (", "times(-s.k * ("), "the spring force has the wrong sign", 2],
     ["no rest length", (c) => c.replace("d.unit().times(s.k * (d.norm() - s.rest_length))", "d.times(s.k)"),
-     "the rest length is not used"],
-    ["pin falls", (c) => c.replaceAll("if (!m.pinned)", "if (true)"), "a pinned mass moves"],
-    ["last_position stale", (c) => c.replace(line, ""), "last_position is never advanced"],
+     "the rest length is not used", 2],
+    ["pin falls", (c) => c.replaceAll("if (!m.pinned)", "if (true)"), "a pinned mass moves", 2],
+    ["last_position stale", (c) => c.replace(line, ""), "last_position is never advanced", 1],
     ["damping per spring", (c) => c.replace(".minus(m.velocity.times(0.02))", "").replace("    s.m2.forces = s.m2.forces.minus(f);",
        "    s.m2.forces = s.m2.forces.minus(f);\n    for (const m of [s.m1, s.m2]) m.forces = m.forces.minus(m.velocity.times(0.02));"),
-     "damping is applied twice on the middle masses"],
+     "damping is applied twice on the middle masses", 1],
+    ["drag of the wrong sign", (c) => c.replace(".minus(m.velocity.times(0.02))", ".plus(m.velocity.times(0.02))"),
+     "the damping has the wrong sign", 1],
+    ["a h for a h^2", (c) => c.replace("a.times(delta_t * delta_t)", "a.times(delta_t)"),
+     "the acceleration is multiplied by delta_t once, not by delta_t^2", 1],
   ];
   // (paused meanwhile: the lanes are not what is checked, and SwiftShader's frames are slow)
   await key(page, "Space");
   expect((await status(page)).paused, "Space did not pause");
-  for (const [name, plant, named] of planted) {
+  for (const [name, plant, named, fails] of planted) {
     const code = plant(typed);
     expect(code !== typed, `${name}: nothing planted`);
     const r = await runHomework(page, code);
-    expect(r.includes(named) && (name.includes("correct") ? / 0 failed\./ : / [1-9]\d* failed\./).test(r), `${name}:\n${r}`);
+    const failed = r.split("\n").filter((l) => l.startsWith("  FAIL  "));
+    expect(r.includes(named) && failed.length === fails && failed.every((l) => l.includes(named)) &&
+           new RegExp(` ${fails} failed\\.`).test(r), `${name}:\n${r}`);
   }
 
   await key(page, "Space");

@@ -111,7 +111,8 @@ struct CheckSection {
 };
 
 /// How a step damps, as fitted to what it does (each a term of its force, or Verlet's factor):
-///   drag:      a global drag on each mass, f = -c v (N s/m);
+///   drag:      a global drag on each mass, f = -c v (N s/m), or, with `drag_rate`, as an
+///              acceleration, a = f / m - c v (c in 1/s: the same rate for any mass, f = -c m v);
 ///   along:     the lecture's spring damping, along the spring, f_b = -k_d ((v_b - v_a) . u) u,
 ///              f_a = -f_b (N s/m): it damps only the springs' stretching;
 ///   relative:  damping along the relative velocity, f_b = -k_d (v_b - v_a), f_a = -f_b (N s/m):
@@ -120,7 +121,10 @@ struct CheckSection {
 ///              `verlet_whole`, on the whole displacement (x1 = x + (1 - d)((x - x_last) + a h^2)).
 struct Damping {
   double drag = 0.0, along = 0.0, relative = 0.0, verlet = 0.0;
+  bool drag_rate = false;
   bool verlet_whole = false;
+  /// The drag's force coefficient on a mass of `mass` kg: c, or c m for a rate.
+  double drag_on(double mass) const { return drag_rate ? drag * mass : drag; }
   bool any() const { return drag != 0.0 || along != 0.0 || relative != 0.0 || verlet != 0.0; }
 };
 

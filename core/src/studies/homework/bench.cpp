@@ -8,7 +8,8 @@
 namespace springlab::homework {
 
 std::vector<RopeRequest> every_rope() {
-  return {checked_rope(), slanted_rope(), three_masses({}), three_masses({0}), pair_rope(), hanging_spring()};
+  return {checked_rope(), slanted_rope(), three_masses({}), three_masses({0}), three_heavy_masses(), pair_rope(),
+          hanging_spring()};
 }
 
 namespace {

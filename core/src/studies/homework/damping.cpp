@@ -25,10 +25,12 @@ constexpr double kMass = 0.25;
 // (x1 - x) . (x - x_last) / |x - x_last|^2.
 struct Motion {
   RopeState before, after;
+  double mass = kMass;  // each mass's, kg
 };
 
 Motion move(const Bench& bench, const BuiltRope& rope, Step step, const Vec2 velocity[3]) {
   Motion m;
+  m.mass = rope.masses[0].mass;
   m.before = at_rest(rope);
   for (int i = 0; i < 3; ++i) {
     if (step == Step::Euler) m.before[i].v = velocity[i];
@@ -41,7 +43,7 @@ Motion move(const Bench& bench, const BuiltRope& rope, Step step, const Vec2 vel
 // The force a motion's step implies on mass i, less what the same step gives masses at rest there
 // (`still`: the springs' own forces, whatever rule the code has for them), so damping alone.
 Vec2 force(const Motion& m, const Motion& still, int i) {
-  return kMass * ((m.after[i].v - m.before[i].v) - (still.after[i].v - still.before[i].v)) / kH;
+  return m.mass * ((m.after[i].v - m.before[i].v) - (still.after[i].v - still.before[i].v)) / kH;
 }
 
 // A coefficient worth naming: beyond rounding of the probe's own scale (m / h = 256 N s/m).
@@ -130,7 +132,12 @@ std::string damping_text(const Damping& d, Step step) {
   if (!d.any()) return tr("no damping");
   std::string t;
   auto add = [&t](const std::string& part) { t += (t.empty() ? "" : tr("; ")) + part; };
-  if (d.drag != 0.0) add(format_text(tr("a global drag f = -c v, c = %s N s/m"), num(d.drag).c_str()));
+  if (d.drag != 0.0 && d.drag_rate)
+    add(format_text(tr("a global drag on the velocity, a = f / m - c v, c = %s 1/s (the same rate for any mass: a force "
+                       "of c m v)"),
+                    num(d.drag).c_str()));
+  else if (d.drag != 0.0)
+    add(format_text(tr("a global drag f = -c v, c = %s N s/m"), num(d.drag).c_str()));
   if (d.along != 0.0)
     add(format_text(tr("the lecture's spring damping, along the spring, f_b = -k_d ((v_b - v_a) . u) u, k_d = %s N s/m"),
                     num(d.along).c_str()));
@@ -197,6 +204,17 @@ Damping euler_damping(const Bench& bench, const BuiltRope& rope, CheckSection& s
   }
   out.relative = present(relative) ? relative : 0.0;
   out.along = present(both - relative) ? both - relative : 0.0;
+  // The same on masses four times heavier (last: the code holds the rope built last): a drag
+  // written as an acceleration (a -= c v) is four times the force there; as a force, the same.
+  if (out.drag != 0.0 && !uneven) {
+    const BuiltRope heavy = bench.build(three_heavy_masses());
+    const Motion th = move(bench, heavy, Step::Euler, together), sh = move(bench, heavy, Step::Euler, none);
+    const double c_heavy = -force(th, sh, 1).dot(u) / u.squaredNorm();
+    if (std::abs(c_heavy - 4.0 * out.drag) <= 1e-3 * std::abs(4.0 * out.drag)) {
+      out.drag /= kMass;
+      out.drag_rate = true;
+    }
+  }
 
   if (uneven) return out;
   const std::string forms = damping_text(out, Step::Euler);

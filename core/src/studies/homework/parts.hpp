@@ -94,6 +94,9 @@ inline RopeRequest checked_rope() { return {Vec2(0, 0), Vec2(7.5, 0), 16, 0.25, 
 inline RopeRequest slanted_rope() { return {Vec2(1, 2), Vec2(-3, -1), 5, 0.5, 100.0, {0, 4}}; }
 /// Three masses 0.5 m apart, free or pinned at one end (the probes of the usual mistakes).
 inline RopeRequest three_masses(std::vector<int> pinned) { return {Vec2(0, 0), Vec2(1, 0), 3, 0.25, 64.0, std::move(pinned)}; }
+/// The same three masses, free, four times heavier (a drag written as an acceleration, -c v, is
+/// four times the force on them; a drag written as a force, -c v, the same).
+inline RopeRequest three_heavy_masses() { return {Vec2(0, 0), Vec2(1, 0), 3, 1.0, 64.0, {}}; }
 /// One free spring of 1 m (the constraint probe).
 inline RopeRequest pair_rope() { return {Vec2(0, 0), Vec2(1, 0), 2, 0.25, 64.0, {}}; }
 /// The spring the steps are measured on (spring_checks.cpp): a mass of 1 kg hanging from a pin by a

@@ -15,9 +15,11 @@ namespace {
 
 bool listed(const std::vector<int>& list, int i) { return std::find(list.begin(), list.end(), i) != list.end(); }
 
+// springlab's drag is one force coefficient for every particle: a drag rate takes the mass of the
+// rope's first particle (the exercise's ropes have one node mass).
 void set_forces(Model& model, const Vec2& gravity, const Damping& damping) {
   model.gravity = Vec3(gravity.x(), gravity.y(), 0.0);
-  model.drag = damping.drag;
+  model.drag = damping.drag_on(model.mass.empty() ? 0.0 : model.mass[0]);
   model.verlet_damping = damping.verlet;
 }
 
@@ -97,7 +99,7 @@ std::vector<Vec2> relative_damping_forces(const Model& model, const RopeState& s
 
 std::vector<Vec2> damping_forces(const Model& model, const RopeState& s, const Damping& damping) {
   std::vector<Vec2> f = relative_damping_forces(model, s, damping.relative);
-  for (size_t i = 0; i < s.size(); ++i) f[i] -= damping.drag * s[i].v;
+  for (size_t i = 0; i < s.size(); ++i) f[i] -= damping.drag_on(model.mass[i]) * s[i].v;
   if (damping.along != 0.0)
     for (int k = 0; k < model.spring_count(); ++k) {
       // f_b = -k_d ((v_b - v_a) . u) u, f_a = -f_b: the lecture's, along the spring.
@@ -238,7 +240,7 @@ double float_floor(const Model& model, const Damping& damping, const RopeState& 
     moved = std::max(moved, (after[i].x - before[i].x).norm());
     dv = std::max(dv, (after[i].v - before[i].v).norm());
     if (model.pinned(i)) continue;
-    const double force = scale[i] + model.mass[i] * g + std::abs(damping.drag) * before[i].v.norm();
+    const double force = scale[i] + model.mass[i] * g + std::abs(damping.drag_on(model.mass[i])) * before[i].v.norm();
     const double da = kRoundings * force * model.inv_mass[i];
     // Verlet's (1 - d)(x - x_last) is rounded too, where the factor is a float.
     // Positions and velocities kept in float (NumPy's float32) are rounded once more each step.

@@ -55,6 +55,7 @@ nlohmann::json step_json(const Identified& found) {
   j["velocity_verlet"] = found.velocity_verlet;
   j["constraints"] = found.constraints;
   j["damping"] = {{"drag", found.damping.drag},
+                  {"drag_is_rate", found.damping.drag_rate},
                   {"along_spring", found.damping.along},
                   {"relative_velocity", found.damping.relative},
                   {"verlet", found.damping.verlet},

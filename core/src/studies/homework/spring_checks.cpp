@@ -230,7 +230,7 @@ void check_on_a_spring(const SwingRunner& run, const Identified& found, CheckSec
   Mode mode;
   mode.row = *find_method(found.method);
   // On the hanging spring every damping form acts along the spring: one rate gamma = (c + k_d) / m.
-  mode.gamma = (found.damping.drag + found.damping.along + found.damping.relative) / kMass;
+  mode.gamma = (found.damping.drag_on(kMass) + found.damping.along + found.damping.relative) / kMass;
   mode.d = found.damping.verlet;
   mode.verlet_whole = found.damping.verlet_whole;
   mode.velocity_verlet = found.velocity_verlet;

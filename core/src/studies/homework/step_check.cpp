@@ -43,8 +43,9 @@ State own_step(const OwnStep& step, const Model& model, const State& in, double 
   return out;
 }
 
-// The drag a step adds, by least squares over the free particles and steps, as an Euler-like step
-// has it: v1 - v - h a0(x) = -h c/m v.
+// The drag a step adds, as a rate (Python's step takes accelerations from force(x, v) and damps
+// them, a = force(x, v) - c v), by least squares over the free particles and steps, as an
+// Euler-like step has it: v1 - v - h a0(x) = -h c v.
 double fit_drag(const Model& undamped, const std::vector<State>& run, double h) {
   double num_sum = 0.0, den = 0.0;
   for (size_t n = 0; n + 1 < run.size(); ++n) {
@@ -53,7 +54,7 @@ double fit_drag(const Model& undamped, const std::vector<State>& run, double h) 
     for (size_t i = 0; i < s.size(); ++i) {
       if (undamped.pinned(static_cast<int>(i))) continue;
       const Vec2 r = t[i].v - s[i].v - h * a[i];
-      const Vec2 b = -h * s[i].v / undamped.mass[i];
+      const Vec2 b = -h * s[i].v;
       num_sum += r.dot(b);
       den += b.dot(b);
     }
@@ -83,7 +84,12 @@ Identified identify_step(const OwnStep& step, const std::string& name, const boo
   std::vector<Method> rows = candidate_rows(false);
   for (Method verlet : candidate_rows(true)) rows.push_back(verlet);  // from (x, v): velocity Verlet
   std::vector<Damping> variants{Damping{}};
-  if (const double c = fit_drag(model, run, h); c != 0.0) variants.push_back(Damping{c});
+  if (const double c = fit_drag(model, run, h); c != 0.0) {
+    Damping rate;
+    rate.drag = c;
+    rate.drag_rate = true;
+    variants.push_back(rate);
+  }
 
   Identified best;
   best.deviation = std::numeric_limits<double>::infinity();
@@ -130,8 +136,8 @@ Identified identify_step(const OwnStep& step, const std::string& name, const boo
                      row.name, form.c_str(), damped.c_str(), where.c_str(), how.c_str()));
     if (best.damping.drag < 0.0)
       fail(section, "damping-sign",
-           format_text(tr("the drag has the wrong sign: c = %s N s/m pushes each particle along its velocity (f = -c v "
-                          "with c > 0 opposes it)"),
+           format_text(tr("the drag has the wrong sign: c = %s 1/s pushes each particle along its velocity (a = force(x, v) "
+                          "- c v with c > 0 opposes it)"),
                        num(best.damping.drag).c_str()));
     return best;
   }
