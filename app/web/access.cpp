@@ -175,4 +175,20 @@ bool choose(InteractiveApp& app, const std::string& what, const std::string& nam
   return false;
 }
 
+std::string homework_words() {
+  return nlohmann::json{{"title", tr("Homework 8: the rope in JavaScript")},
+                        {"code", tr("Your simulateEuler and simulateVerlet (the rope: rope.masses, rope.springs)")},
+                        {"run", tr("Check and run")},
+                        {"starter", tr("Starter code")},
+                        {"close", tr("Close")},
+                        {"checking", tr("checking...")}}
+      .dump();
+}
+
+std::string homework_result(const homework::Report& report) {
+  // (A crash's last printed lines may hold any bytes: replaced, never thrown.)
+  return nlohmann::json{{"text", homework::format_report(report)}, {"failed", report.failed()}}.dump(
+      -1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
 }  // namespace springlab::app::web

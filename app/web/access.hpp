@@ -9,6 +9,7 @@
 
 #include "chart/chart.hpp"
 #include "platform/interactive_app.hpp"
+#include "springlab/homework.hpp"
 
 namespace springlab::app::web {
 
@@ -32,5 +33,10 @@ bool control(InteractiveApp& app, const std::string& name, double value);
 
 // what = "method" or "scene": chosen by its name. False for an unknown one.
 bool choose(InteractiveApp& app, const std::string& what, const std::string& name);
+
+// The Homework 8 panel (homework.js): its words in the app's language, {"title", "code", "run",
+// "starter", "close", "checking"}; and a check's result, {"text": the report, "failed": its count}.
+std::string homework_words();
+std::string homework_result(const homework::Report& report);
 
 }  // namespace springlab::app::web

@@ -257,7 +257,32 @@ function simulateVerlet(rope, delta_t, gravity) {
     r.classList.toggle("failed", !!failed);
   }
 
+  // The panel's words in the app's language (the report comes in it too).
+  function translate() {
+    let w = {};
+    try {
+      w = JSON.parse(root.Module.ccall("springlab_homework_words", "string", [], []));
+    } catch (e) {
+      return;  // (the app not started yet: the page's English stays)
+    }
+    const set = (id, text, attribute) => {
+      const e = document.getElementById(id);
+      if (!e || !text) return;
+      if (attribute) e.setAttribute(attribute, text);
+      else e.textContent = text;
+    };
+    set("homework", w.title, "aria-label");
+    set("homework-title", w.title);
+    set("homework-code-label", w.code);
+    set("homework-run", w.run);
+    set("homework-starter", w.starter);
+    set("homework-close", w.close);
+    words.checking = w.checking || words.checking;
+  }
+  const words = { checking: "checking\u2026" };
+
   function open(code) {
+    translate();
     const p = panel();
     if (code !== undefined) field().value = code;
     else if (!field().value) field().value = kStarter;
@@ -284,11 +309,11 @@ function simulateVerlet(rope, delta_t, gravity) {
       root.Module.ccall("springlab_homework_failed", null, ["string"], [e.message]);
       return;
     }
-    say("checking\u2026");
+    say(words.checking);
     // (a frame first, so that the page shows it is checking)
     requestAnimationFrame(() => setTimeout(() => {
-      const text = root.Module.ccall("springlab_homework_check", "string", ["string"], [code]);
-      say(text, !/ 0 failed\.\s*$/.test(text));
+      const r = JSON.parse(root.Module.ccall("springlab_homework_check", "string", ["string"], [code]));
+      say(r.text || "", r.failed !== 0);
     }, 0));
   }
 

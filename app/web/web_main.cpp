@@ -225,23 +225,31 @@ EMSCRIPTEN_KEEPALIVE void springlab_open_scene_text(const char* file_name, const
 
 // Homework 8: the student's JavaScript, compiled by the page (homework.js), checked here by the
 // checker of `springlab homework check` and run as lanes beside springlab's rows: the report, as
-// the command line prints it. The checker's calls have 1 s each (and 0.05 ms a step); a lane's
-// 0.25 s, so that an endless loop stops its lane, not the page, for long.
+// the command line prints it (in the app's language), and its count of failed checks, as JSON
+// {"text", "failed"}. The checker's calls have 1 s each (and 0.05 ms a step); a lane's 0.25 s,
+// so that an endless loop stops its lane, not the page, for long.
 EMSCRIPTEN_KEEPALIVE const char* springlab_homework_check(const char* code) {
   using namespace springlab;
   using namespace springlab::app::web;
   static std::string text;
-  if (!g_page || !js_code_ready()) return "";
+  if (!g_page || !js_code_ready()) return "{}";
   const double start = emscripten_get_now();
   JsRope checking(1000.0, 0.05);
   homework::Report report = homework::check_rope(checking);
   const double seconds = (emscripten_get_now() - start) / 1000.0;
-  text = homework::format_report(report);
+  text = homework_result(report);
   g_page->homework_code = code ? code : "";
   g_page->homework_status.file = tr("your JavaScript");
   g_page->homework_status.error.clear();
   g_page->homework.set(std::move(report), seconds, [] { return std::make_shared<JsRope>(250.0, 0.05); });
   return text.c_str();
+}
+
+// The panel's own words (homework.js), in the app's language, as JSON.
+EMSCRIPTEN_KEEPALIVE const char* springlab_homework_words() {
+  static std::string json;
+  json = springlab::app::web::homework_words();
+  return json.c_str();
 }
 
 // The student's code did not compile (the page says why): said in the app's panel too, while the
