@@ -925,6 +925,13 @@ check("homework 8: JavaScript typed into the panel is checked and runs beside sp
   expect(/ 0 failed\.\s*$/.test(reopened) && (await again.$eval("#homework-code", (e) => e.value)) === typed,
          `the link's code:\n${reopened}`);
   await again.close();
+  // In the student's language: the same link in Chinese gives the panel's words and the report in it.
+  const chinese = await openApp(browser, base, link.split("#")[1] + "&lang=zh-CN");
+  const report_zh = await homeworkReport(chinese, "");
+  const words = await chinese.$eval("#homework-run", (e) => e.textContent);
+  expect(words === "检查并运行" && report_zh.includes("项检查通过，0 项未通过") && report_zh.includes("半隐式欧拉") &&
+         !report_zh.includes("checks passed"), `the panel in Chinese: "${words}"\n${report_zh}`);
+  await chinese.close();
 
   // The usual mistakes, each planted alone in the correct code, each named by the checker (as
   // tests/homework/ropes/ plants them in C++: tests/cli/homework_test.cpp), and nothing else: every
