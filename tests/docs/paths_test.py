@@ -12,8 +12,9 @@ Read: README.md, CONTRIBUTING.md, docs/*.md and assets/*/README.md. Checked:
 - a test named `Suite.Name` (a CTest name or a GoogleTest one, `Suite.*` for a suite,
   `Prefix/Suite.Name` for a parameterised one): a `TEST`, `TEST_F` or `TEST_P` in tests/ or
   an `add_test(NAME ...)` in a CMakeLists.txt.
-Left alone: build outputs (build*/, docs/api/), system and home paths (/usr, /tmp, ~), URLs,
-and the few files a user makes, named in USERS_FILES below. Python's standard library only."""
+Left alone: build outputs (build*/, docs/api/), system and home paths (/usr, /tmp, ~), system
+headers (`<backends/imgui_impl_glfw.h>`), URLs, placeholders (`assets/scenes/NAME.json`) and the
+few files a user makes, named in USERS_FILES below. Python's standard library only."""
 import fnmatch
 import os
 import re
@@ -155,6 +156,7 @@ for doc in documents:
                 if anchor not in anchors(os.path.join(root, full)):
                     failures.append(f"{where}: the link to {target}: {full} has no heading #{anchor}")
         text = URL.sub(" ", LINK.sub("] ", line))
+        text = re.sub(r"<[\w./+-]+>", " ", text)  # a system header, `<backends/imgui_impl_glfw.h>`
         # Paths and file names with a folder.
         for word in WORD.findall(text):
             word = re.sub(r"^\./", "", word.rstrip(".,;:") if not word.endswith(".*") else word)
