@@ -4,7 +4,7 @@ docs/numerics.md), checked against what the program prints now, so that they can
 figure is found in its sentence in the document and in the output of the command that gives it;
 the program's value, rounded to the digits the document shows, must be the document's (or, for a
 bound, within it). docs/methods.md's method table is checked against `springlab list`: its rows,
-orders and what each keeps, and the count of built-in methods it states. Usage:
+orders and what each keeps, and the count of built-in methods it and the README state. Usage:
 figures_test.py SPRINGLAB ROOT. Deterministic figures only (no timings); about ten seconds."""
 import re
 import subprocess
@@ -143,8 +143,10 @@ if [(n, o, k.strip()) for n, o, k in table] != listed:
     failures.append("docs/methods.md's method table is not `springlab list`'s rows:\n  docs: " + str(table) +
                     "\n  list: " + str(listed))
 count = {9: "nine", 10: "ten", 11: "eleven", 12: "twelve", 13: "thirteen", 14: "fourteen"}.get(len(listed))
-if f"The {count} built-in methods" not in re.sub(r"\s+", " ", page):
-    failures.append(f"docs/methods.md does not say 'The {count} built-in methods' ({len(listed)} rows)")
+for doc in ("docs/methods.md", "README.md"):  # (each states the count: both must follow the table)
+    words = re.sub(r"\s+", " ", open(f"{root}/{doc}", encoding="utf-8").read()).lower()
+    if f"the {count} built-in methods" not in words:
+        failures.append(f"{doc} does not say 'the {count} built-in methods' ({len(listed)} rows)")
 
 print(f"figures_test: {len(FIGURES)} figures and the method table checked")
 if failures:

@@ -4,7 +4,7 @@ cannot leave a document pointing at nothing. Usage: paths_test.py ROOT.
 
 Read: README.md, CONTRIBUTING.md, docs/*.md and assets/*/README.md. Checked:
 - a repository path: a word that begins with one of the tree's top-level folders (`core/src/...`,
-  `app/ui/panels.cpp`, `tests/...`, `scripts/x.sh`, `assets/...`), from the root; `*` is a glob;
+  `app/ui/panels.cpp`, `tests/...`, `scripts/test.sh`, `assets/...`), from the root; `*` is a glob;
 - a file name given with a folder (`ui/panels.cpp`, `springlab/text.hpp`): the end of some file's
   path in the tree;
 - a Markdown link's target (relative to the document, as GitHub reads it) and its `#anchor` (a
