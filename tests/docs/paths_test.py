@@ -13,7 +13,7 @@ Read: README.md, CONTRIBUTING.md, docs/*.md and assets/*/README.md. Checked:
   `Prefix/Suite.Name` for a parameterised one): a `TEST`, `TEST_F` or `TEST_P` in tests/ or
   an `add_test(NAME ...)` in a CMakeLists.txt.
 Left alone: build outputs (build*/, docs/api/), system and home paths (/usr, /tmp, ~), system
-headers (`<backends/imgui_impl_glfw.h>`), URLs, placeholders (`assets/scenes/NAME.json`) and the
+headers (`<backends/imgui_impl_glfw.h>`), URLs, names to choose (`assets/scenes/NAME.json`) and the
 few files a user makes, named in USERS_FILES below. Python's standard library only."""
 import fnmatch
 import os
@@ -27,9 +27,9 @@ USERS_FILES = {
     "hw8/rope.cpp",          # `springlab homework kit hw8` writes it
     "hw8/README.md",
 }
-# A path with a placeholder in capitals (`assets/scenes/NAME.json`, `PREFIX/lib/...`) names a file to
-# make, and `"room/file.hpp"` is the form of an include.
-PLACEHOLDER = re.compile(r"(?:^|[/_.-])(?:NAME|TAG|NN|FILE|DIR|PREFIX|SCENE|ROOM|KIND)(?:$|[/_.-])")
+# A path with a word in capitals standing for a name (`assets/scenes/NAME.json`, `PREFIX/lib/...`)
+# names a file to make, and `"room/file.hpp"` is the form of an include.
+STAND_IN = re.compile(r"(?:^|[/_.-])(?:NAME|TAG|NN|FILE|DIR|PREFIX|SCENE|ROOM|KIND)(?:$|[/_.-])")
 TEMPLATES = {"room/file.hpp"}
 # Words of the form Suite.Name that are not tests.
 NOT_TESTS = {"Boost.Multiprecision"}
@@ -161,7 +161,7 @@ for doc in documents:
         for word in WORD.findall(text):
             word = re.sub(r"^\./", "", word.rstrip(".,;:") if not word.endswith(".*") else word)
             if "/" not in word or word.startswith(("/", "~", "$")) or word in USERS_FILES | TEMPLATES \
-                    or PLACEHOLDER.search(word) or TEST.fullmatch(word):
+                    or STAND_IN.search(word) or TEST.fullmatch(word):
                 continue
             if word.startswith(GENERATED) and (word.split("/")[0] in GENERATED or word.startswith("docs/api")):
                 continue
