@@ -191,6 +191,11 @@ int run(const RunOptions& o) {
   else if (c.linear_solves)
     std::printf(", %lld linear solves (%lld CG iterations)", static_cast<long long>(c.linear_solves),
                 static_cast<long long>(c.solver_iterations));
+  if (c.newton_corrections)
+    std::printf(", %lld Newton corrections (%.3g a step)", static_cast<long long>(c.newton_corrections),
+                static_cast<double>(c.newton_corrections) / static_cast<double>(std::max<std::int64_t>(1, c.accepted)));
+  if (c.halved_steps)
+    std::printf(", %lld steps halved (their stages not solved at the whole step)", static_cast<long long>(c.halved_steps));
   if (m.adaptive())
     std::printf(", %lld accepted and %lld rejected internal steps",
                 static_cast<long long>(c.accepted), static_cast<long long>(c.rejected));

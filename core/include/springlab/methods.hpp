@@ -73,6 +73,8 @@ struct Counters {
   std::int64_t linear_solves = 0;      ///< implicit-euler: one per step
   std::int64_t solver_iterations = 0;  ///< conjugate-gradient iterations
   std::int64_t unconverged_solves = 0; ///< solves stopped by the iteration cap
+  std::int64_t newton_corrections = 0; ///< a diagonally implicit tableau's stages: Newton's corrections
+  std::int64_t halved_steps = 0;       ///< its steps taken as two halves, their stages not solved whole
   std::int64_t accepted = 0;           ///< internal steps kept (h-steps for fixed-step methods)
   std::int64_t rejected = 0;           ///< adaptive tries thrown away
 };
@@ -139,6 +141,12 @@ using TableauStepFunction = void (*)(const Tableau& tableau, const Model& model,
 /// as a divergence.
 struct StepFailure : std::runtime_error {
   using std::runtime_error::runtime_error;
+};
+/// A step whose method's own equations were not solved (a diagonally implicit tableau's stage
+/// that Newton's iteration did not bring to its tolerance): the method is not unstable, and the
+/// run says so ("its equations were not solved"), never "diverged".
+struct SolveFailure : StepFailure {
+  using StepFailure::StepFailure;
 };
 
 /// How a method steps, which decides how its stability is found, drawn and watched.

@@ -96,6 +96,9 @@ struct Divergence {
   StabilityLimit limit;
   /// Caught by the energy audit (energy_audit.hpp): what it found.
   bool unstable = false;
+  /// Not a blow-up: the method's own equations were not solved at this step (SolveFailure), a
+  /// stage of an implicit tableau whose Newton iteration did not converge.
+  bool unsolved = false;
   EnergyAudit::Finding audit;
   std::string reason;
   std::string own_step;  ///< the name of a step from outside the table, if it was one

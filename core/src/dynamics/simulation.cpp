@@ -50,12 +50,18 @@ SimulationSettings settings_for(const Scene& scene) {
 
 std::string Divergence::message() const {
   // (Each piece through tr(): the app shows this in its language; the command line in English.)
+  const char* name = own_step.empty() ? method_info(method).name : own_step.c_str();
+  if (unsolved)
+    // The solver's failure, not the method's instability: no limit to state, nothing diverged.
+    return format_text(tr("stopped during step %lld (last good state at t = %.4g s): %s. Method %s, h = %.4g s: the "
+                          "method's own equations were not solved at this step (the state did not blow up). Try a "
+                          "smaller --dt or more --substeps."),
+                       static_cast<long long>(step), t, reason.c_str(), name, h);
   std::string s = format_text(unstable ? tr("went numerically unstable during step %lld (last good state at t = %.4g s): "
                                             "%s. Method %s, h = %.4g s")
                                        : tr("diverged during step %lld (last good state at t = %.4g s): %s. Method %s, "
                                             "h = %.4g s"),
-                              static_cast<long long>(step), t, reason.c_str(),
-                              own_step.empty() ? method_info(method).name : own_step.c_str(), h);
+                              static_cast<long long>(step), t, reason.c_str(), name, h);
   if (analysed)
     s += format_text(tr(", h w_max = %.4g (w_max = %.4g rad/s); limit: %s"), h * w_max, w_max, describe(limit).c_str());
   if (analysed && limit.mode && std::isfinite(limit.h) && limit.h > 0.0)
@@ -224,6 +230,11 @@ bool Simulation::integrate(double h) {
   try {
     if (settings_.own_step) settings_.own_step(model_, current_, next_, h, ws_);
     else springlab::step(settings_.method, model_, current_, next_, h, settings_.step, ws_);
+  } catch (const SolveFailure& failure) {
+    ++steps_;
+    divergence_ = report(failure.what());
+    divergence_->unsolved = true;
+    return false;
   } catch (const StepFailure& failure) {
     ++steps_;
     diverge(failure.what());

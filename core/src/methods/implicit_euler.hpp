@@ -6,18 +6,6 @@
 #include "springlab/model.hpp"
 #include "springlab/state.hpp"
 
-namespace springlab::steps {
-
-// Backward Euler solved to convergence: the linearised step, then Newton's corrections until
-// M (v1 - v) = h f(x1, v1) to 1e-10 of h times the scene's force scale (implicit_euler.cpp).
-// `corrector` holds the corrections' solver (its own, so that `ws`'s first guesses stay the
-// steps'); `corrections`, if given, is increased by the corrections made. Throws StepFailure
-// naming the residual when 32 corrections do not converge.
-void backward_euler_converged(const Model& model, const State& in, State& out, double h, const StepSettings& settings,
-                              Workspace& ws, Workspace& corrector, int* corrections = nullptr);
-
-}  // namespace springlab::steps
-
 namespace springlab::implicit_euler_system {
 
 // For the step of h from `in`: Ap = A p and b, with A = M - h df/dv - h^2 df/dx (the definite

@@ -12,15 +12,16 @@
 // (X, V) = Y_i solves
 //   X = x~ + g V,   V = v~ + g a(X, V),
 // which is exactly one backward-Euler step of size g from (x~, v~), solved to convergence
-// (implicit_euler.hpp: Baraff and Witkin's linearised step, conjugate gradients to 1e-10, then
-// Newton's corrections until M (V - v~) = g f(X, V) to 1e-10 of g times the forces). Then
+// (stage_newton.hpp: Baraff and Witkin's linearised step, conjugate gradients to 1e-10, as the
+// first guess, then Newton's corrections with the true Jacobian, factorised, until M (V - v~) =
+// g f(X, V) to 1e-12 of g times the forces). Then
 // K_i = (V, (V - v~) / g), the acceleration the solve satisfied, with no further force
 // evaluation. On a linear system (a spring along its own axis, or rest length zero) the
 // linearised step is already converged; on a nonlinear one (a swinging rope) a stage linearised
 // once would be a Rosenbrock-type method, not the tableau's (the trapezoidal rule put 0.3 J into
 // the damped spring over 80 s at h w = 100): the corrections make it the tableau's. A stage
-// whose Newton iteration does not converge fails the step (StepFailure), naming the stage. A stage
-// with a_ii = 0 is explicit.
+// whose Newton iteration does not converge fails the step as unsolved (SolveFailure), naming the
+// stage. A stage with a_ii = 0 is explicit.
 // Pinned particles move with their velocity in every stage, so x1 = x + h v for them.
 #include "tableau_steps.hpp"
 
@@ -28,7 +29,7 @@
 #include <string>
 
 #include "adaptive.hpp"
-#include "implicit_euler.hpp"
+#include "stage_newton.hpp"
 #include "runge_kutta.hpp"
 #include "steps.hpp"
 
@@ -47,8 +48,12 @@ void embedded_pair(const Tableau& tableau, const Model& model, const State& in, 
                                model, in, out, h, settings, ws);
 }
 
-void diagonally_implicit(const Tableau& tableau, const Model& model, const State& in, State& out, double h,
-                         const StepSettings& settings, Workspace& ws) {
+namespace {
+
+// One step of the tableau, its stages each solved to convergence; throws SolveFailure naming the
+// stage whose Newton iteration did not converge.
+void dirk_stages(const Tableau& tableau, const Model& model, const State& in, State& out, double h,
+                 const StepSettings& settings, Workspace& ws) {
   // The stages' solves to kStageTolerance at most: at implicit Euler's 1e-5 their error put a
   // floor of about 1e-5 under the spring's error, which a third-order method reaches within
   // `compare`'s steps (dt / 16 to 2 dt): SDIRK3's error stopped falling there (it rose from 8e-6
@@ -82,9 +87,9 @@ void diagonally_implicit(const Tableau& tableau, const Model& model, const State
     }
     Workspace& solver = S.solvers[static_cast<std::size_t>(i)];
     try {
-      backward_euler_converged(model, S.in, S.out, g, stage_settings, solver, S.corrector);
+      backward_euler_converged(model, S.in, S.out, g, stage_settings, solver, S.newton);
     } catch (const StepFailure& e) {
-      throw StepFailure("stage " + std::to_string(i + 1) + " of the tableau: " + e.what());
+      throw SolveFailure("stage " + std::to_string(i + 1) + " of the tableau: " + e.what());
     }
     ws.kx[static_cast<std::size_t>(i)] = S.out.v;
     ws.kv[static_cast<std::size_t>(i)] = (S.out.v - S.in.v) / g;
@@ -94,10 +99,37 @@ void diagonally_implicit(const Tableau& tableau, const Model& model, const State
     ws.counters.linear_solves += c.linear_solves;
     ws.counters.solver_iterations += c.solver_iterations;
     ws.counters.unconverged_solves += c.unconverged_solves;
+    ws.counters.newton_corrections += c.newton_corrections;
     c = Counters{};
   }
   rk::combine(in.x, in.v, h, tableau.b, ws, out.x, out.v);
   out.t = in.t + h;
+}
+
+// A step whose stages were not solved at h is taken as two of h / 2, and so on down to h / 16:
+// the same method over the same interval, as implicit integrators reject a step whose Newton
+// iteration fails (counted: Counters::halved_steps). Where even h / 16 is not solved, it fails.
+constexpr int kMaxHalvings = 4;
+
+void dirk_halving(const Tableau& tableau, const Model& model, const State& in, State& out, double h,
+                  const StepSettings& settings, Workspace& ws, int depth) {
+  try {
+    dirk_stages(tableau, model, in, out, h, settings, ws);
+  } catch (const SolveFailure&) {
+    if (depth == kMaxHalvings) throw;
+    ++ws.counters.halved_steps;
+    State mid;
+    dirk_halving(tableau, model, in, mid, 0.5 * h, settings, ws, depth + 1);
+    dirk_halving(tableau, model, mid, out, 0.5 * h, settings, ws, depth + 1);
+    out.t = in.t + h;
+  }
+}
+
+}  // namespace
+
+void diagonally_implicit(const Tableau& tableau, const Model& model, const State& in, State& out, double h,
+                         const StepSettings& settings, Workspace& ws) {
+  dirk_halving(tableau, model, in, out, h, settings, ws, 0);
 }
 
 }  // namespace springlab::steps
