@@ -2,14 +2,55 @@
 """No function over 120 lines in app/, core/ or python/src/ without a reason (issue 43): a function
 that long reads as several, and its parts want names. A function may be longer where the comment
 just above its first line says why, in a line that begins "Long:" ("// Long: the table of ..." ).
-Fails naming each function over the limit, its file, first line and length. Usage:
-function_length_test.py ROOT [LIMIT]."""
+Fails naming each function over the limit, its file, first line and length; fails too when it
+reads fewer than MIN functions (default 1000; the tree has about 1,550), so that a scan that finds
+nothing cannot pass. Usage:
+  function_length_test.py ROOT [LIMIT] [--min-functions MIN]
+  function_length_test.py --self-test   (runs itself on tests/house/fixtures/function_length/, a
+      planted 130-line function with no reason, and expects it to fail naming it; and on the same
+      fixture with the default floor, and expects it to fail for reading too few)"""
 import pathlib
 import re
+import subprocess
 import sys
 
-root = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else ".")
-limit = int(sys.argv[2]) if len(sys.argv) > 2 else 120
+FIXTURE = pathlib.Path(__file__).resolve().parent / "fixtures" / "function_length"
+
+
+def self_test():
+    """Runs this check on the fixture; exit 0 when it failed as it should."""
+    def run(*args):
+        p = subprocess.run([sys.executable, __file__, str(FIXTURE), *args], capture_output=True, text=True)
+        print(f"$ function_length_test.py {FIXTURE.relative_to(FIXTURE.parents[3])} {' '.join(args)}  -> exit {p.returncode}")
+        print(p.stdout + p.stderr, end="")
+        return p.returncode, p.stdout + p.stderr
+    problems = []
+    rc, out = run("120", "--min-functions", "3")
+    if rc == 0:
+        problems.append("the planted long function passed")
+    if "core/long_function.cpp:6: planted_long_function is 130 lines" not in out:
+        problems.append("planted_long_function (core/long_function.cpp:6, 130 lines) was not named")
+    if "long_with_a_reason" in out or "short_function" in out:
+        problems.append("a function with a reason, or a short one, was named")
+    rc, out = run()  # the default floor: the fixture's few functions are too few
+    if rc == 0 or "too few" not in out:
+        problems.append("reading the fixture's 3 functions passed the default floor")
+    for p in problems:
+        print(f"self-test: {p}", file=sys.stderr)
+    print("self-test: " + ("FAILED" if problems else "the check fails on the planted function and on too few read"))
+    sys.exit(1 if problems else 0)
+
+
+args = sys.argv[1:]
+if args == ["--self-test"]:
+    self_test()
+min_functions = 1000
+if "--min-functions" in args:
+    k = args.index("--min-functions")
+    min_functions = int(args[k + 1])
+    del args[k:k + 2]
+root = pathlib.Path(args[0] if args else ".")
+limit = int(args[1]) if len(args) > 1 else 120
 SCOPES = re.compile(r"\b(namespace|class|struct|union|enum)\b|extern\s*\"C\"")
 
 
@@ -120,7 +161,11 @@ for folder in ("app", "core", "python/src"):
             if length > limit and not has_reason(lines, first):
                 failures.append(f"{path.relative_to(root)}:{first}: {name} is {length} lines (more than {limit}); "
                                 f"split it into named parts, or say why above it in a line beginning '// Long:'")
-print(f"function_length_test: {seen} functions read in app/, core/ and python/src/")
+print(f"function_length_test: {seen} functions read in app/, core/ and python/src/ "
+      f"(at least {min_functions} expected), {len(failures)} over {limit} lines without a reason")
+if seen < min_functions:
+    failures.append(f"too few functions read ({seen}, fewer than {min_functions}): is {root} the project's root, "
+                    f"or has the scan stopped finding functions?")
 for f in failures:
     print(f, file=sys.stderr)
 sys.exit(1 if failures else 0)
