@@ -19,6 +19,12 @@ std::string order_text(double order) {
   return s;
 }
 
+// The order, and where the errors level off (fitted above that floor).
+std::string order_text(const MethodSummary& m) {
+  if (std::isnan(m.order) || std::isnan(m.floor_error)) return order_text(m.order);
+  return format_text(tr(" (order %.2f above a floor of %.2g m)"), m.order, m.floor_error);
+}
+
 std::string step_text(double h) {
   if (std::isnan(h)) return tr("adaptive");
   if (std::isinf(h)) return tr("always stable");
@@ -78,7 +84,7 @@ Chart convergence(const SweepResult& r, const std::string& scene) {
   double hmin = 1e300, hmax = 0, emin = 1e300, emax = 0;
   for (const MethodSummary& m : r.methods) {
     Series s;
-    s.label = std::string(method_info(m.method).name) + order_text(m.order);
+    s.label = std::string(method_info(m.method).name) + order_text(m);
     s.color = draw::method_color(m.method);
     s.mark = draw::method_mark(m.method);
     s.markers = true;

@@ -67,16 +67,18 @@ void write_csvs(const std::filesystem::path& dir, const SweepResult& r) {
   results.commit();
   AtomicFile summary(dir / "summary.csv", "summary");
   std::fprintf(summary.file(), "method,order_table,order_measured,fitted_points,stable_step_measured,"
-                               "measured_resolution,stable_step_theoretical,theory_exact,ratio\n");
+                               "measured_resolution,stable_step_theoretical,theory_exact,ratio,error_floor,floor_from_step\n");
   for (const MethodSummary& m : r.methods) {
     // (measured_resolution inf: the budget ran out with every probe held, a lower bound)
     const bool finite = !m.measured_at_least && std::isfinite(m.measured_stable_h) &&
                         std::isfinite(m.theoretical_stable_h) && m.theoretical_stable_h > 0;
-    std::fprintf(summary.file(), "%s,%d,%s,%d,%s,%s,%s,%d,%s\n", method_info(m.method).name, method_info(m.method).order,
-                 std::isnan(m.order) ? "" : number(m.order).c_str(), m.fitted_points,
+    std::fprintf(summary.file(), "%s,%d,%s,%d,%s,%s,%s,%d,%s,%s,%s\n", method_info(m.method).name,
+                 method_info(m.method).order, std::isnan(m.order) ? "" : number(m.order).c_str(), m.fitted_points,
                  number(m.measured_stable_h).c_str(), number(m.measured_resolution).c_str(),
                  number(m.theoretical_stable_h).c_str(), m.theory_exact ? 1 : 0,
-                 finite ? number(m.measured_stable_h / m.theoretical_stable_h).c_str() : "");
+                 finite ? number(m.measured_stable_h / m.theoretical_stable_h).c_str() : "",
+                 std::isnan(m.floor_error) ? "" : number(m.floor_error).c_str(),
+                 std::isnan(m.floor_h) ? "" : number(m.floor_h).c_str());
   }
   summary.commit();
 }
@@ -181,6 +183,25 @@ int compare(const CompareOptions& o) {
     if (!m.theory_exact && finite) theory = ">= " + theory;
     std::printf("%-18s %-16s %-22s %-16s %s\n", method_info(m.method).name, order, measured.c_str(), theory.c_str(),
                 ratio);
+    // Too few runs to fit: why, with their errors.
+    if (std::isnan(m.order)) {
+      double least = INFINITY, most = 0.0;
+      int stable = 0;
+      for (const SweepRun& run : r.runs)
+        if (run.method == m.method && std::isnan(run.tolerance) == !method_info(m.method).adaptive() && !run.diverged) {
+          ++stable;
+          least = std::min(least, run.error);
+          most = std::max(most, run.error);
+        }
+      std::printf("%-18s no order: %d of its %d stable runs fall between the reference's floor (%.2g m) and a tenth of "
+                  "the motion (%.2g m), and 3 are needed; its errors go from %.2g to %.2g m\n",
+                  "", m.fitted_points, stable, r.fit_floor, r.fit_ceiling, most, least);
+    }
+    // Below the floor the error is the solvers' tolerance and rounding: the order is fitted above it.
+    if (std::isfinite(m.floor_h))
+      std::printf("%-18s order fitted above the floor its errors reach: %.2g m from h = %s down (rounding and the "
+                  "solvers' tolerances, which a smaller step does not reduce)\n",
+                  "", m.floor_error, step_text(m.floor_h).c_str());
   }
   // The sweep's runs take each step as given (the step is what it varies); the drift runs, at
   // the scene's step, take the sub-steps `run` would.

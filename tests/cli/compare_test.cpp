@@ -49,8 +49,9 @@ TEST(Compare, OnTheSpringWritesResultsSummaryAndCharts) {
   const auto results = csv(dir / "results.csv");
   EXPECT_EQ(results[0].size(), 15u);
   EXPECT_EQ(results[0][14], "unstable");
-  EXPECT_EQ(summary[0].size(), 9u);
+  EXPECT_EQ(summary[0].size(), 11u);
   EXPECT_EQ(summary[0][5], "measured_resolution");
+  EXPECT_EQ(summary[0][9], "error_floor");
   EXPECT_GT(results.size(), 40u);
   for (const char* part : {"reference: exact solution", "symplectic-euler", "0.2 s", "0.2828 s", "never", "always"})
     EXPECT_NE(r.out.find(part), std::string::npos) << part << "\n" << r.out;

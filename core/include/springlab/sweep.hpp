@@ -72,6 +72,12 @@ struct MethodSummary {
   Method method = Method::Euler;
   double order = std::numeric_limits<double>::quiet_NaN();  ///< fitted; NaN: too few points
   int fitted_points = 0;
+  /// Where the errors stop falling as the step shrinks (the last runs' errors no lower than the
+  /// fitted runs' least): their level and the largest step at which it starts, both NaN where
+  /// there is none. The order is fitted above it: below it the error is the solvers' tolerance
+  /// and rounding, which a smaller step does not reduce.
+  double floor_error = std::numeric_limits<double>::quiet_NaN();
+  double floor_h = std::numeric_limits<double>::quiet_NaN();
   /// The largest stable step measured by runs (stability.hpp, measured_limit), to within
   /// measured_resolution (relative), and the analysis's (exact, or a lower bound).
   double measured_stable_h = std::numeric_limits<double>::quiet_NaN();
@@ -96,6 +102,9 @@ struct SweepResult {
   std::vector<DriftTrace> drift;
   std::string reference;         ///< "exact solution" or "rk4 at h = ... s"
   double reference_error = 0.0;  ///< m, estimated
+  /// The errors an order is fitted between: above the reference's error (100 times it) and
+  /// round-off, below a tenth of the motion.
+  double fit_floor = 0.0, fit_ceiling = 0.0;
   double sample_interval = 0.0;  ///< H
   int samples = 0;
   double motion = 0.0;  ///< m: the largest RMS displacement of the reference from the start
@@ -144,6 +153,12 @@ class SweepInSteps {
 /// its controller spreads the steps unevenly over a period.)
 double fitted_order(const std::vector<SweepRun>& runs, Method method, double floor, double ceiling,
                     int* points = nullptr);
+/// The same, above the floor its own errors show: the runs from the finest back while each error
+/// is no lower than half the least error of the coarser runs are the floor (at least two of them,
+/// and never so many that fewer than three are left to fit); `summary` gets the order, the points
+/// fitted and the floor's level and step.
+void fit_order_above_floor(const std::vector<SweepRun>& runs, Method method, double floor, double ceiling,
+                           MethodSummary& summary);
 
 /// The n of the steps H / n: `count` whole numbers from 1 to about H / h_min, log-spaced,
 /// distinct.

@@ -117,23 +117,31 @@ Eigen::SparseMatrix<double> stage_jacobian(const Model& model, const Points& X, 
   return J;
 }
 
-void backward_euler_converged(const Model& model, const State& in, State& out, double h, const StepSettings& settings,
-                              Workspace& ws, NewtonSolver& N, int* corrections) {
-  // The first guess: the linearised step (Baraff and Witkin's, the implicit-euler row's), its
-  // conjugate gradients to 1e-4 only: the corrections take it from there.
-  StepSettings guess = settings;
-  guess.solver_tolerance = std::max(settings.solver_tolerance, 1e-4);
-  implicit_euler(model, in, out, h, guess, ws);
-  const int n = model.particle_count();
+namespace {
+
+// One stage's iteration: the iterate `out`, G and the merits at it, and the ways down.
+struct Iteration {
+  Iteration(const Model& m, const State& start_state, State& iterate, double step, Workspace& w, NewtonSolver& solver)
+      : model(m), in(start_state), out(iterate), h(step), ws(w), N(solver) {}
+  const Model& model;
+  const State& in;
+  State& out;
+  double h;
+  Workspace& ws;
+  NewtonSolver& N;
+  int n = model.particle_count();
+  bool converged = false;
+  double residual = 0.0;   // the largest |G_i|
+  double tolerance = 0.0;  // the largest particle's, for the message
+  double merit = 0.0;      // |G|
+  Points start;            // where a correction starts from
+
   // G at `out`, its forces in N.f; the largest |G_i| against its own tolerance: 1e-12 max(h F,
   // m_i |V_i - v_i|) above its rounding floor, 64 eps times its terms' sizes (a particle's force
   // sums a dozen springs' and more), m_i (|V_i| + |v_i|), h R and h k_max (|X_i| + h |V_i|). F is
   // the force scale (the largest spring tension k_s |l - L|, weight m |g| or net force), R =
   // max k_s l the size spring forces are rounded at.
-  bool converged = false;
-  double tolerance = 0.0;  // the largest particle's, for the message
-  double merit = 0.0;      // |G|
-  const auto measure = [&]() {
+  void measure() {
     evaluate_forces(model, out.x, out.v, N.f, N.spring_forces, ForceOutput::Force);
     ++ws.counters.force_evals;
     double scale = 0.0, rounding = 0.0, largest = 0.0, stiffest = 0.0;
@@ -156,9 +164,7 @@ void backward_euler_converged(const Model& model, const State& in, State& out, d
       const Eigen::Vector3d gi = model.mass[i] * (row(out.v, i) - row(in.v, i)) - h * row(N.f, i);
       N.g.segment<3>(3 * i) = gi;
       const double change = model.mass[i] * (out.v.row(i) - in.v.row(i)).norm();
-      // (X = x + h V rounds at eps h |V| too, which the springs turn into forces: h k_s eps h |V|.)
       const double speed = out.v.row(i).norm();
-      // (And X itself rounds at eps |X|, which the springs turn into forces: h k_s eps |X|.)
       const double floor = 64.0 * kEps *
                            (model.mass[i] * (speed + in.v.row(i).norm()) + h * rounding +
                             h * stiffest * (out.x.row(i).norm() + h * speed));
@@ -167,31 +173,33 @@ void backward_euler_converged(const Model& model, const State& in, State& out, d
       if (!(gi.norm() <= allowed)) converged = false;
       tolerance = std::max(tolerance, allowed);
     }
-    merit = std::isfinite(largest) ? N.g.norm() : std::numeric_limits<double>::infinity();
-    return std::isfinite(largest) ? largest : std::numeric_limits<double>::infinity();
-  };
-  double residual = measure();
-  const auto fail = [&](const char* why) {
+    const bool finite = std::isfinite(largest);
+    merit = finite ? N.g.norm() : std::numeric_limits<double>::infinity();
+    residual = finite ? largest : std::numeric_limits<double>::infinity();
+  }
+
+  [[noreturn]] void fail(const char* why) const {
     char what[320];
     std::snprintf(what, sizeof what,
                   "the equations were not solved: Newton's iteration %s (largest residual %.3g N s against a tolerance of "
                   "%.3g, h = %.3g s)",
                   why, residual, tolerance, h);
     throw SolveFailure(what);
-  };
+  }
+
   // The iterate moved by t d from `start`.
-  Points start;
-  const auto move = [&](const Eigen::VectorXd& d, double t) {
+  void move(const Eigen::VectorXd& d, double t) {
     for (int i = 0; i < n; ++i)
       if (!model.pinned(i)) out.v.row(i) = start.row(i) + t * d.segment<3>(3 * i).transpose();
     out.x = in.x + h * out.v;
-  };
-  // Takes the longest of d, d/2, d/4, ... from `start` that lowers the merit by Armijo's rule:
-  // |G| (along Newton's direction |G| falls at the rate |G| itself, wherever J is not singular)
-  // or Phi (along the definite Jacobian's direction Phi falls at the rate G . d < 0, to a minimum
-  // where G = 0). Returns whether it moved (the iterate restored if not).
+  }
+
+  // Takes the longest of d, d/2, d/4, ... (up to 2^-halvings) from `start` that lowers the merit
+  // by Armijo's rule: |G| (along Newton's direction |G| falls at the rate |G| itself, wherever J
+  // is not singular) or Phi (along the definite Jacobian's direction Phi falls at the rate
+  // G . d < 0, to a minimum where G = 0). Returns whether it moved (the iterate restored if not).
   enum class Merit { Residual, Potential };
-  const auto search = [&](const Eigen::VectorXd& d, Merit by, int halvings) {
+  bool search(const Eigen::VectorXd& d, Merit by, int halvings) {
     const double slope = N.g.dot(d);  // dPhi/dt at t = 0: G is Phi's gradient
     if (by == Merit::Potential && !(slope < 0.0)) return false;
     const double merit_start = merit;
@@ -199,77 +207,101 @@ void backward_euler_converged(const Model& model, const State& in, State& out, d
     double t = 1.0;
     for (int halving = 0; halving <= halvings; ++halving, t *= 0.5) {
       move(d, t);
-      residual = measure();
+      measure();
       if (converged) return true;
       if (by == Merit::Residual ? merit <= (1.0 - 1e-4 * t) * merit_start
                                 : incremental_potential(model, in, out, h) <= phi_start + 1e-4 * t * slope)
         return true;
     }
     move(d, 0.0);
-    residual = measure();
+    measure();
     return false;
-  };
-  // A factorisation of another model or step is of no use.
-  if (N.analysed_particles != n || N.analysed_springs != model.spring_count() || N.factored_h != h) N.factored = false;
-  for (int k = 0; !converged; ++k) {
-    if (!std::isfinite(residual)) fail("met a non-finite force");
-    if (k == kMaxCorrections) {
-      char why[64];
-      std::snprintf(why, sizeof why, "did not converge in %d corrections", kMaxCorrections);
-      fail(why);
+  }
+
+  // J factorised at the iterate (its pattern analysed once for the model's springs).
+  void factorise() {
+    assemble(model, out.x, out.v, h, false, N.entries, N.J);
+    if (N.analysed_particles != n || N.analysed_springs != model.spring_count()) {
+      N.lu.analyzePattern(N.J);
+      N.definite.analyzePattern(N.J);
+      N.analysed_particles = n;
+      N.analysed_springs = model.spring_count();
     }
+    N.lu.factorize(N.J);
+    N.factored = N.lu.info() == Eigen::Success;
+    N.factored_h = h;
+    ++N.factorisations;
+  }
+
+  // The definite Jacobian's direction down Phi as far as Armijo's rule allows; else, as little
+  // as it takes to lower |G|, Newton's (`newton`, when the LU held is fresh) or the definite one.
+  bool descend(const Eigen::VectorXd& newton, bool fresh) {
+    assemble(model, out.x, out.v, h, true, N.entries, N.J);
+    N.definite.factorize(N.J);
+    if (N.definite.info() != Eigen::Success) fail("met a singular Jacobian");
+    N.dv = N.definite.solve(-N.g);
+    const bool moved = search(N.dv, Merit::Potential, kMaxHalvings) ||
+                       (fresh && search(newton, Merit::Residual, kMaxHalvings)) ||
+                       search(N.dv, Merit::Residual, kMaxHalvings);
+    N.factored = false;  // (the LU held is of the point Newton's direction failed at)
+    return moved;
+  }
+
+  // One correction; false where it made none (a kept factorisation to be made afresh).
+  bool correct() {
     const double before = merit;
     start = out.v;
-    bool exact = false;
-    if (!N.factored) {
-      assemble(model, out.x, out.v, h, false, N.entries, N.J);
-      if (N.analysed_particles != n || N.analysed_springs != model.spring_count()) {
-        N.lu.analyzePattern(N.J);
-        N.definite.analyzePattern(N.J);
-        N.analysed_particles = n;
-        N.analysed_springs = model.spring_count();
-      }
-      N.lu.factorize(N.J);
-      N.factored = N.lu.info() == Eigen::Success;
-      N.factored_h = h;
-      ++N.factorisations;
-      exact = true;
-    }
-    ++ws.counters.newton_corrections;
-    if (corrections) ++*corrections;
+    const bool exact = !N.factored;
+    if (exact) factorise();
     // Newton's direction, taken at least a sixteenth of the way; else (J indefinite or near
-    // singular: a buckled or crushed stage) the definite Jacobian's down Phi, as far as Armijo's
-    // rule allows; else either, as little as it takes to lower |G|.
+    // singular: a buckled or crushed stage) the definite Jacobian's, down Phi (descend).
     bool moved = false;
     if (N.factored) {
       N.dv = N.lu.solve(-N.g);
       moved = search(N.dv, Merit::Residual, 4);
     }
     if (!moved && !exact) {
-      // A kept factorisation that gives no good way down: made afresh at this iterate.
-      N.factored = false;
-      continue;
+      N.factored = false;  // a kept factorisation that gives no good way down
+      return false;
     }
+    if (!moved) moved = descend(Eigen::VectorXd(N.dv), N.factored);
     if (!moved) {
-      const Eigen::VectorXd newton = N.dv;
-      assemble(model, out.x, out.v, h, true, N.entries, N.J);
-      N.definite.factorize(N.J);
-      if (N.definite.info() != Eigen::Success) fail("met a singular Jacobian");
-      N.dv = N.definite.solve(-N.g);
-      moved = search(N.dv, Merit::Potential, kMaxHalvings) || (N.factored && search(newton, Merit::Residual, kMaxHalvings)) ||
-              search(N.dv, Merit::Residual, kMaxHalvings);
-      N.factored = false;  // (the LU held is of the point Newton's direction failed at)
-    }
-    if (!moved) {
-      // No direction lowers Phi: the iterate is as good as doubles make it, or stuck at a kink.
-      if (residual <= 1e3 * tolerance) break;
-      fail("found no correction that lowers the residual (a spring through zero length?)");
+      // No direction lowers either merit: as good as doubles make it, or stuck at a kink.
+      if (residual <= 1e3 * tolerance) converged = true;
+      else fail("found no correction that lowers the residual (a spring through zero length?)");
     }
     // A kept factorisation that no longer cuts |G| threefold is made afresh next time.
     if (!exact && !(merit <= before / 3.0)) N.factored = false;
     // An exact correction that no longer halves |G| has reached rounding (Newton's would square
     // it): where that is within a thousand times the tolerance, solved as well as doubles solve it.
     if (exact && !converged && !(merit <= 0.5 * before) && residual <= 1e3 * tolerance) converged = true;
+    return true;
+  }
+};
+
+}  // namespace
+
+void backward_euler_converged(const Model& model, const State& in, State& out, double h, const StepSettings& settings,
+                              Workspace& ws, NewtonSolver& N, int* corrections) {
+  // The first guess: the linearised step (Baraff and Witkin's, the implicit-euler row's), its
+  // conjugate gradients to 1e-4 only: the corrections take it from there.
+  StepSettings guess = settings;
+  guess.solver_tolerance = std::max(settings.solver_tolerance, 1e-4);
+  implicit_euler(model, in, out, h, guess, ws);
+  Iteration it(model, in, out, h, ws, N);
+  it.measure();
+  // A factorisation of another model or step is of no use.
+  if (N.analysed_particles != it.n || N.analysed_springs != model.spring_count() || N.factored_h != h) N.factored = false;
+  for (int k = 0; !it.converged; ++k) {
+    if (!std::isfinite(it.residual)) it.fail("met a non-finite force");
+    if (k == kMaxCorrections) {
+      char why[64];
+      std::snprintf(why, sizeof why, "did not converge in %d corrections", kMaxCorrections);
+      it.fail(why);
+    }
+    ++ws.counters.newton_corrections;
+    if (corrections) ++*corrections;
+    it.correct();
   }
 }
 

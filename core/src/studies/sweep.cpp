@@ -163,6 +163,37 @@ double fitted_order(const std::vector<SweepRun>& runs, Method method, double flo
   return denom > 0 ? (n * sxy - sx * sy) / denom : std::numeric_limits<double>::quiet_NaN();
 }
 
+void fit_order_above_floor(const std::vector<SweepRun>& runs, Method method, double floor, double ceiling,
+                           MethodSummary& summary) {
+  // The fixed-step runs that count, coarse to fine.
+  std::vector<const SweepRun*> kept;
+  for (const SweepRun& r : runs)
+    if (r.method == method && std::isnan(r.tolerance) && !r.diverged && r.error > floor && r.error < ceiling) kept.push_back(&r);
+  std::sort(kept.begin(), kept.end(), [](const SweepRun* a, const SweepRun* b) { return a->h > b->h; });
+  // The floor: the longest tail (two runs at least, three left before it) whose every error is
+  // at least half the least error before it.
+  std::size_t fit = kept.size();
+  for (std::size_t start = 3; start + 2 <= kept.size(); ++start) {
+    double least = INFINITY;
+    for (std::size_t i = 0; i < start; ++i) least = std::min(least, kept[i]->error);
+    bool flat = true;
+    for (std::size_t i = start; i < kept.size(); ++i) flat = flat && kept[i]->error >= 0.5 * least;
+    if (flat) {
+      fit = start;
+      break;
+    }
+  }
+  std::vector<SweepRun> above;
+  for (std::size_t i = 0; i < fit; ++i) above.push_back(*kept[i]);
+  summary.order = fitted_order(above, method, floor, ceiling, &summary.fitted_points);
+  summary.floor_error = summary.floor_h = std::numeric_limits<double>::quiet_NaN();
+  if (fit < kept.size()) {
+    summary.floor_h = kept[fit]->h;
+    summary.floor_error = 0.0;
+    for (std::size_t i = fit; i < kept.size(); ++i) summary.floor_error = std::max(summary.floor_error, kept[i]->error);
+  }
+}
+
 // --- The sweep's jobs: planned once, then run by run_sweep on worker threads or by SweepInSteps
 // one at a time.
 
@@ -330,8 +361,9 @@ struct SweepPlan {
     for (std::size_t k = 0; k < list.size(); ++k) {
       result.methods[k].method = list[k];
       const double floor = std::max(100.0 * result.reference_error, 1e-12 * std::max(1.0, result.motion));
-      result.methods[k].order =
-          fitted_order(result.runs, list[k], floor, 0.1 * result.motion, &result.methods[k].fitted_points);
+      result.fit_floor = floor;
+      result.fit_ceiling = 0.1 * result.motion;
+      fit_order_above_floor(result.runs, list[k], floor, 0.1 * result.motion, result.methods[k]);
     }
   }
 };
