@@ -1,4 +1,4 @@
-// springlab: the command line (DESIGN.md, "The command line"). Parses, dispatches to a
+// springlab: the command line (docs/command-line.md). Parses, dispatches to a
 // subcommand, and turns what goes wrong into one clear message and the exit status:
 // 0 done, 2 bad input, 3 diverged, 1 anything else.
 #include <csignal>

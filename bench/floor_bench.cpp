@@ -6,7 +6,7 @@
 // pipelining: the force's square root and division are a long chain). With 2 threads, the
 // second one runs the other half of the rope and the two hand over through spin flags, the
 // cheapest hand-over there is (no OpenMP region, no sleeping). The ns per spring per step it
-// reports are what the rope target (2 ns) is to be held against (README, Performance).
+// reports are what the rope target (2 ns) is to be held against (docs/performance.md).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -132,7 +132,7 @@ BENCHMARK(BM_RopeFloor)->Arg(1)->Arg(2)->UseRealTime();
 // (each spins until the line holds its turn). The team's jobs (core/src/dynamics/threads.*) wait
 // for such a line a few times each; on this project's virtual machines the two cores are now 83 ns
 // apart and now 380 (placed apart by the host, minutes at a time), and a CG iteration's three jobs
-// cost accordingly (README, Performance). Counter: ns a round trip.
+// cost accordingly (docs/performance.md). Counter: ns a round trip.
 constexpr std::int64_t kCoreToCoreTrips = 20000;
 void BM_CoreToCore(benchmark::State& state) {
   alignas(64) static std::atomic<std::int64_t> turn{0};

@@ -1,7 +1,7 @@
 // The methods games and films use (XPBD, local-global, vertex block descent) on cloth, each in
 // one run beside implicit Euler with conjugate gradients on the same cloth, and local-global's
 // floor: one local pass plus one pair of triangular solves, what an iteration cannot go below.
-// Run: build/bench/springlab_bench --benchmark_filter=Iterative (figures in the README).
+// Run: build/bench/springlab_bench --benchmark_filter=Iterative (figures in docs/performance.md).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>

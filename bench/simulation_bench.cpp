@@ -1,6 +1,6 @@
 // Benchmarks of the simulation core (Google Benchmark): the spring kernel and the force pass,
 // each method's step on rope and cloth at several sizes and thread counts, the implicit solve,
-// building scenes, and the stability estimate. Run: build/bench/springlab_bench (see the README for the figures).
+// building scenes, and the stability estimate. Run: build/bench/springlab_bench (docs/performance.md has the figures).
 #include <benchmark/benchmark.h>
 
 #include <Eigen/SparseCholesky>
@@ -189,7 +189,7 @@ void BM_StabilityAtRest(benchmark::State& state) {
 }
 BENCHMARK(BM_StabilityAtRest)->Apply(analysis_arguments);
 
-// The floor under the analysis's Newton steps (README, Performance): one sparse LDL^T
+// The floor under the analysis's Newton steps (docs/performance.md, "The stability analysis"): one sparse LDL^T
 // factorisation of a cloth's stiffness at its balance plus a small mu M, as equilibrium.cpp
 // makes it (Eigen's SimplicialLDLT, the ordering found once, outside the timing).
 void BM_BalanceFactorisation(benchmark::State& state) {

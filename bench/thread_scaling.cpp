@@ -1,6 +1,6 @@
 // Steps a second of one solver at each of several thread counts, with the core alone (no window,
 // no GL: it links statically and runs on any x86-64 Linux, the lent 16-core machine included).
-// The README's scaling and load tables come from it (scripts/load-bench.sh, scripts/scaling.sh).
+// docs/performance.md's scaling and load tables come from it (scripts/load-bench.sh, scripts/scaling.sh).
 //
 //   springlab_threads SCENE_FILE METHOD DT STEPS THREADS... [--set KEY=VALUE]... [--analysis]
 //

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Measures the performance targets (README, Performance) on this machine and prints each beside its
-# target: the commands of the README's table (not its video and window rows), each timed with
+# Measures the performance targets (docs/performance.md) on this machine and prints each beside its
+# target: the commands of docs/performance.md's first table (not its video and window rows), each timed with
 # `springlab bench --repeat N` (fastest run and median), so that the figures can be taken again in
 # one go. Builds first. Takes about a minute with N = 11. A command that fails stops the script.
 # Usage: scripts/perf-targets.sh [N, repeats of each command, default 11]

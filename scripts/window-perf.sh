@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The app's speed in a window under Xvfb (llvmpipe), as the README reports it: frames per second
+# The app's speed in a window under Xvfb (llvmpipe), as docs/performance.md reports it: frames per second
 # and the real-time factor (simulated seconds per wall second) of the cloth at 64x64 and 128x128
 # with automatic sub-steps, per method, after the first frame (which waits for the scene's
 # stability analysis). In --frames mode every frame advances 1/60 s as fast as it can: a

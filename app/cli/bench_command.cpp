@@ -1,7 +1,7 @@
 // springlab bench SCENE: the scene's step throughput with a method, without graphics, after a
 // warm-up; one key=value a line (substeps and whether chosen, particles, springs, steps, seconds, steps_per_s,
 // ns_per_spring_step, peak_rss_mb, and for implicit methods solver_iterations_per_step and
-// unconverged_solves), for scripts and the README's figures. With --repeat N the steps are timed
+// unconverged_solves), for scripts and docs/performance.md's figures. With --repeat N the steps are timed
 // N times over (the simulation going on: the same work each time for the explicit methods; an
 // implicit method's solves get cheaper as a scene settles): the figures are the fastest run's, and
 // ns_per_spring_step_median is the middle one, since on a machine whose speed wanders (a shared

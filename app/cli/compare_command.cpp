@@ -1,5 +1,5 @@
 // springlab compare SCENE --out DIR: every method's error against its cost, its order and its
-// largest stable step (core/sweep.hpp), written as DIR/results.csv and DIR/summary.csv, printed
+// largest stable step (springlab/sweep.hpp), written as DIR/results.csv and DIR/summary.csv, printed
 // as a table, and charted as PNG (rendered headlessly by springlab) and SVG.
 #include <imgui.h>
 

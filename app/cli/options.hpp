@@ -1,4 +1,4 @@
-// The simulation options every command shares (DESIGN.md, "The command line") as command-line
+// The simulation options every command shares (docs/command-line.md, "Options") as command-line
 // flags; what they mean and how they are checked is options/scene_options.hpp.
 #pragma once
 

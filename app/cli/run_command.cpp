@@ -1,5 +1,5 @@
 // springlab run SCENE: simulates without graphics, prints a summary, optionally writes a CSV
-// trace (DESIGN.md): a header, then one row per step (every K-th with --every), columns
+// trace (docs/command-line.md): a header, then one row per step (every K-th with --every), columns
 // t,kinetic,potential,total, then x0,y0,z0,vx0,vy0,vz0 for particle 0, and so on.
 #include <charconv>
 #include <chrono>

@@ -1,4 +1,4 @@
-// A sweep (core/sweep.hpp) run on a worker thread while the app goes on drawing: started on a
+// A sweep (springlab/sweep.hpp) run on a worker thread while the app goes on drawing: started on a
 // copy of the scene as it is now, it reports progress and its runs as they finish (so the charts
 // fill in while a class watches), and can be cancelled at any moment. Without threads
 // (util/worker.hpp: the browser) the frame loop runs it instead, a few pieces a frame through

@@ -1,6 +1,6 @@
 // The one place the app starts threads (the core's own go through core/src/dynamics/threads.*):
 // work done beside the frame loop (stability analyses, the accuracy sweep), the frame writer's
-// queue and the interrupt's signal waiter (native builds only). tests/threads_seam_test.sh fails
+// queue and the interrupt's signal waiter (native builds only). tests/house/threads_seam_test.sh fails
 // on a thread started anywhere else. Where the platform has no threads (the browser build, SPRINGLAB_APP_THREADS=0:
 // WebAssembly threads need cross-origin isolation that a static host cannot promise) the work
 // runs to completion at once, in the caller: the app does the same, only without a worker.

@@ -1,5 +1,5 @@
 // The module springlab._springlab: springlab's core for Python. python/springlab/__init__.py
-// re-exports it; README.md ("Python") tells how to build, install and use it.
+// re-exports it; docs/python.md tells how to build, install and use it.
 #include "bindings.hpp"
 #include "springlab/version.hpp"
 

@@ -42,7 +42,7 @@ def test_the_installed_package_runs_from_its_prefix(tmp_path):
 
 
 def test_pip_installs_the_package_offline(tmp_path):
-    # `python3 -m pip install --no-build-isolation .` as the README gives it, into a scratch
+    # `python3 -m pip install --no-build-isolation .` as docs/python.md gives it, into a scratch
     # folder, from Debian's pip, setuptools and wheel with no index: this build's CMake folder is
     # built (up to date: a no-op) and packaged, rather than a fresh one (minutes; the README gives
     # the time of that). Nothing is written into the source tree's tracked files.

@@ -44,7 +44,7 @@ TEST(Defaults, EveryExplicitMethodHoldsOnTheRope) {
 }
 
 // The sizes the scenes' descriptions suggest. The 64-node rope for its whole duration; the
-// 1000-node rope and the 64x64 cloth for 2 s (scripts/limits.sh and the README's table run them
+// 1000-node rope and the 64x64 cloth for 2 s (scripts/limits.sh runs them
 // all the way); 128x128 for a quarter of a second (its analysis and first steps: a run of its
 // whole 10 s takes minutes).
 TEST(Defaults, TheFinerRopesAndClothsHold) {

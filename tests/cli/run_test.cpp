@@ -1,4 +1,4 @@
-// springlab run and list, as DESIGN.md specifies them: the CSV trace, the summary, the exit
+// springlab run and list, as docs/command-line.md specifies them: the CSV trace, the summary, the exit
 // statuses, one clear message for each bad input, nothing half-written.
 #include <gtest/gtest.h>
 

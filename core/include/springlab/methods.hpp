@@ -179,7 +179,7 @@ enum class Kept { Exactly, ToSolverTolerance, No };
 /// "kept", "kept to the solver's tolerance", "not kept".
 const char* kept_text(Kept kept);
 struct MethodInfo;
-/// What a row keeps, as the README's table writes it: "P", "P, L", "P to the solver's tolerance",
+/// What a row keeps, as docs/methods.md's table writes it: "P", "P, L", "P to the solver's tolerance",
 /// "neither".
 std::string kept_summary(const MethodInfo& method);
 
@@ -188,7 +188,7 @@ std::string kept_summary(const MethodInfo& method);
 /// step function, its defaults, and how it is shown. The app, the command line, the charts, the
 /// stability analysis, the studies and the tests all read these rows (methods()) and branch on
 /// what a row says, never on which row it is: adding a method is its row and its step
-/// (tests/core/new_row_test.cpp adds one and runs it through every consumer).
+/// (tests/app/new_row_test.cpp adds one and runs it through every consumer).
 struct MethodInfo {
   Method id;
   const char* name;         ///< as typed on the command line

@@ -307,7 +307,7 @@ inline ForcePlan& plan_for(const Model& model, SpringForces& buffer) {
 // blocks.
 // Long: its parts are the named lambdas in it (external, start, try_start, ensure_started, sweep,
 // claim, pass), which share the pass's locals (the plan, the columns, the pass's number); as one
-// function the compiler inlines them into the loops the benchmarks measure (README, Performance).
+// function the compiler inlines them into the loops the benchmarks measure (docs/performance.md).
 template <typename Finish>
 void force_pass(const Model& model, const Points& x, const Points& v, double* const F[3],
                 SpringForces& buffer, const Finish& finish, double* block_power = nullptr) {

@@ -156,8 +156,8 @@ struct Balance {
 // (every 2,000 passes), where w_max moves by a tenth of a per cent from flat to hanging (w_L is
 // 1.44 times w_max, h w_L 1.37). Where h w_L >= 2 the step is estimated again every kRestep
 // passes. What the step no longer follows is tension raising w_max as a scene stretches: the
-// kinetic damping is then at h w_max above 0.95, and it stalls above about 1.4 (README,
-// Performance: a mode's speed falls on the second pass after the damping zeroes it when h w > 1,
+// kinetic damping is then at h w_max above 0.95, and it stalls above about 1.4 (docs/decisions.md,
+// "A larger relaxation step": a mode's speed falls on the second pass after the damping zeroes it when h w > 1,
 // h f (2 - h^2 w^2) after h f). Measured: a 64 x 64 cloth of springs 200 times softer (k_s 2)
 // stretches until w_max is a fifth higher, h w_max 1.16 at the end, and balances in 4,500
 // passes, against 4,950 estimating again every 2,000; a 48 x 48 cloth started at h w_max 1.38
