@@ -49,13 +49,18 @@ TEST(Determinism, ThreadCountDoesNotChangeABit) {
 // The team hands a job only to its own helpers: after passes at 12 threads (the pool then holds 11
 // helpers), passes at 2 threads are handed to one of them and wake none of the others (which, on 2
 // cores, spun on the team's cores: the default ran at a quarter of its speed). And the state is
-// the same bits.
+// the same bits. The two-thread passes must have run as a team (else no helper was handed a job
+// to begin with), on a cloth large enough (64 x 64, implicit Euler's CG: a pass of some hundred
+// microseconds) for a helper woken by mistake to arrive while the job is still on.
 TEST(Determinism, AJobWakesOnlyItsOwnTeam) {
   const Scene scene = test::shipped("cloth", {"cloth.width=48", "cloth.height=48"});
+  const Scene large = test::shipped("cloth", {"cloth.width=64", "cloth.height=64"});
   const long before = threads::Team::strays();
   const auto twelve = run_hash(scene, Method::SymplecticEuler, 12, 40);
+  const long team_before = threads::Team::counts().team;
   const auto two = run_hash(scene, Method::SymplecticEuler, 2, 40);
-  for (int k = 0; k < 4; ++k) run_hash(scene, Method::ImplicitEuler, 2, 10);
+  for (int k = 0; k < 4; ++k) run_hash(large, Method::ImplicitEuler, 2, 10);
+  EXPECT_GT(threads::Team::counts().team - team_before, 100) << "the two-thread passes did not run as a team";
   EXPECT_EQ(threads::Team::strays(), before);
   EXPECT_EQ(twelve, two);
 }
@@ -199,16 +204,17 @@ TEST(Threads, ARunWhoseOwnerStopsIsFinishedByTheOthers) {
 // against the caller's 2: the caller, done at 8 ms, sees the helper's last piece claimed at
 // 9 ms, within its patience of two of its own pieces). Taken at once, that piece and its data
 // would move to the caller's core, and back for the next pass. A try in which another program
-// delays a thread may see otherwise; one clean try of 20 is asked for.
+// delays a thread may see otherwise (the caller then rightly takes the stalled run); a quarter of
+// 20 tries clean is asked for, where taking the working owner's piece at once leaves none clean.
 TEST(Threads, ARunWhoseOwnerWorksIsLeftToIt) {
   int clean = 0;
-  for (int attempt = 0; attempt < 20 && clean == 0; ++attempt) {
+  for (int attempt = 0; attempt < 20; ++attempt) {
     const Runs runs = run_pieces([](int p) { busy_for(std::chrono::microseconds(p < 4 ? 2000 : 3000)); });
     bool all_its_own = runs.helper_came;
     for (int p = 0; p < 8; ++p) all_its_own = all_its_own && runs.caller[p] == (p < 4);
     if (all_its_own && runs.stalls == 0) ++clean;
   }
-  EXPECT_EQ(clean, 1) << "in 20 tries the caller always took a piece of the working helper's run";
+  EXPECT_GE(clean, 5) << "in 20 tries the caller took a piece of the working helper's run in " << 20 - clean;
 }
 
 // Called from the threads of an enclosing parallel region (each with its own buffers, as
