@@ -46,8 +46,17 @@ TEST(ChartText, ExplicitEulersEnergyRisesAndSymplecticEulersHolds) {
   // Past its limit (h w = 2.5 > 2), symplectic Euler too leaves the chart; explicit Euler first.
   auto past = compared(0.25, 20.0);
   const std::string beyond = chart::describe_chart(ui::energy_chart(*past));
-  EXPECT_TRUE(has(beyond, "euler ")) << beyond;
-  EXPECT_TRUE(has(beyond, "leaves the chart (diverged)")) << beyond;
+  // Each line's own sentence, between its "; " (or ": ") and the next.
+  const auto sentence = [&](const std::string& text, const std::string& name) {
+    for (const std::string& before : {std::string(": "), std::string("; ")}) {
+      const std::size_t at = text.find(before + name + " ");
+      if (at != std::string::npos) return text.substr(at + 2, text.find(';', at + 2) - (at + 2));
+    }
+    return std::string();
+  };
+  EXPECT_TRUE(has(sentence(beyond, "euler"), "leaves the chart (diverged)")) << beyond;
+  EXPECT_TRUE(has(sentence(beyond, "symplectic-euler"), "leaves the chart (diverged)")) << beyond;
+  EXPECT_FALSE(has(sentence(said, "euler"), "leaves the chart")) << said;
   EXPECT_FALSE(has(said, "leaves the chart")) << said;
 }
 
@@ -59,13 +68,25 @@ TEST(ChartText, TheCsvHoldsEveryPointOfEveryLine) {
   std::getline(csv, header);
   EXPECT_EQ(std::count(header.begin(), header.end(), ','), 2 * static_cast<long>(energy.series.size()) - 1) << header;
   EXPECT_TRUE(has(header, "euler t (s),euler J")) << header;
-  std::size_t rows = 0;
-  std::string last;
-  while (std::getline(csv, row)) ++rows, last = row;
-  EXPECT_EQ(rows, energy.series.front().x.size());
-  // The last row is the last point of the first line, to 9 digits.
-  EXPECT_NEAR(std::stod(last.substr(last.find(',') + 1)), energy.series.front().y.back(),
-              1e-8 * std::abs(energy.series.front().y.back()));
+  // Every row holds every line's point of its index (to the CSV's 9 digits), or nothing past its end.
+  std::size_t rows = 0, longest = 0;
+  for (const chart::Series& s : energy.series) longest = std::max(longest, s.x.size());
+  for (; std::getline(csv, row); ++rows) {
+    std::vector<std::string> cells;
+    std::istringstream fields(row);
+    for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(cell);
+    cells.resize(2 * energy.series.size());
+    for (std::size_t k = 0; k < energy.series.size(); ++k) {
+      const chart::Series& s = energy.series[k];
+      if (rows >= s.x.size()) {
+        EXPECT_TRUE(cells[2 * k].empty()) << "row " << rows << ", line " << k;
+        continue;
+      }
+      EXPECT_NEAR(std::stod(cells[2 * k]), s.x[rows], 1e-8 * std::max(1.0, std::abs(s.x[rows]))) << "row " << rows << ", line " << k;
+      EXPECT_NEAR(std::stod(cells[2 * k + 1]), s.y[rows], 1e-8 * std::max(1.0, std::abs(s.y[rows]))) << "row " << rows << ", line " << k;
+    }
+  }
+  EXPECT_EQ(rows, longest);
 }
 
 // The accuracy panel's work-precision chart in words: on the spring, error against work falls

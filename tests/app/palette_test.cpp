@@ -284,6 +284,9 @@ TEST(Contrast, TextIsAtLeastFourAndAHalfToOneOnEveryGoldenFrame) {
     }
   EXPECT_GE(frames, 60);
   for (const auto& [name, w] : worst) EXPECT_GE(w.ratio, 4.5) << name << ": " << w.where;
+  // Every colour text is written in was found on a surface in some golden frame, so checked: a
+  // colour never found would pass unchecked.
+  for (const auto& [name, colour] : text) EXPECT_TRUE(worst.count(name)) << name << " was never found as text on a surface";
 }
 
 }  // namespace
