@@ -43,71 +43,85 @@ def self_test():
     sys.exit(1 if problems else 0)
 
 
-args = sys.argv[1:]
-if args == ["--self-test"]:
-    self_test()
-min_includes = 80
-if "--min-includes" in args:
-    k = args.index("--min-includes")
-    min_includes = int(args[k + 1])
-    del args[k:k + 2]
-root = pathlib.Path(args[0] if args else ".") / "app"
-rooms = {p.name for p in root.iterdir() if p.is_dir()} if root.is_dir() else set()
-edges = {}  # (a, b) -> first "file includes b/x.hpp" seen
-files_read = includes_read = 0  # includes_read: #include lines from one room into another
-for f in sorted(root.rglob("*")):
-    if f.suffix not in (".cpp", ".hpp", ".h") or f.parent == root:
-        continue
-    files_read += 1
-    a = f.relative_to(root).parts[0]
-    for m in re.finditer(r'^#include "([a-z_]+)/[^"]+"', f.read_text(encoding="utf-8"), re.M):
-        b = m.group(1)
-        if b in rooms and b != a:
-            includes_read += 1
-            edges.setdefault((a, b), f"{f.relative_to(root.parent)} includes \"{m.group(0)[10:-1]}\"")
-
-graph = {r: sorted(b for (a, b) in edges if a == r) for r in rooms}
-
-# Tarjan's strongly connected components: a component of more than one room is a cycle.
-index, low, stack, on, cycles, counter = {}, {}, [], set(), [], [0]
+def read_rooms(project):
+    """The app's rooms and the dependencies between them: (rooms, edges, files_read, includes_read),
+    edges mapping (a, b) to the first 'file includes "b/x.hpp"' seen. Shared with rooms_table_test.py."""
+    root = pathlib.Path(project) / "app"
+    rooms = {p.name for p in root.iterdir() if p.is_dir()} if root.is_dir() else set()
+    edges = {}  # (a, b) -> first "file includes b/x.hpp" seen
+    files_read = includes_read = 0  # includes_read: #include lines from one room into another
+    for f in sorted(root.rglob("*")):
+        if f.suffix not in (".cpp", ".hpp", ".h") or f.parent == root:
+            continue
+        files_read += 1
+        a = f.relative_to(root).parts[0]
+        for m in re.finditer(r'^#include "([a-z_]+)/[^"]+"', f.read_text(encoding="utf-8"), re.M):
+            b = m.group(1)
+            if b in rooms and b != a:
+                includes_read += 1
+                edges.setdefault((a, b), f"{f.relative_to(root.parent)} includes \"{m.group(0)[10:-1]}\"")
+    return rooms, edges, files_read, includes_read
 
 
-def visit(v):
-    index[v] = low[v] = counter[0]
-    counter[0] += 1
-    stack.append(v)
-    on.add(v)
-    for w in graph[v]:
-        if w not in index:
-            visit(w)
-            low[v] = min(low[v], low[w])
-        elif w in on:
-            low[v] = min(low[v], index[w])
-    if low[v] == index[v]:
-        component = []
-        while True:
-            w = stack.pop()
-            on.discard(w)
-            component.append(w)
-            if w == v:
-                break
-        if len(component) > 1:
-            cycles.append(sorted(component))
+def find_cycles(rooms, edges):
+    """Tarjan's strongly connected components: a component of more than one room is a cycle."""
+    graph = {r: sorted(b for (a, b) in edges if a == r) for r in rooms}
+    index, low, stack, on, cycles, counter = {}, {}, [], set(), [], [0]
+
+    def visit(v):
+        index[v] = low[v] = counter[0]
+        counter[0] += 1
+        stack.append(v)
+        on.add(v)
+        for w in graph[v]:
+            if w not in index:
+                visit(w)
+                low[v] = min(low[v], low[w])
+            elif w in on:
+                low[v] = min(low[v], index[w])
+        if low[v] == index[v]:
+            component = []
+            while True:
+                w = stack.pop()
+                on.discard(w)
+                component.append(w)
+                if w == v:
+                    break
+            if len(component) > 1:
+                cycles.append(sorted(component))
+
+    for r in sorted(rooms):
+        if r not in index:
+            visit(r)
+    return cycles
 
 
-for r in sorted(rooms):
-    if r not in index:
-        visit(r)
+def main():
+    args = sys.argv[1:]
+    if args == ["--self-test"]:
+        self_test()
+    min_includes = 80
+    if "--min-includes" in args:
+        k = args.index("--min-includes")
+        min_includes = int(args[k + 1])
+        del args[k:k + 2]
+    project = pathlib.Path(args[0] if args else ".")
+    rooms, edges, files_read, includes_read = read_rooms(project)
+    cycles = find_cycles(rooms, edges)
 
-print(f"include_cycles_test: {files_read} files in {len(rooms)} rooms read, {includes_read} #include lines from "
-      f"one room into another (at least {min_includes} expected), {len(edges)} dependencies between rooms")
-for component in cycles:
-    print("include cycle between " + ", ".join(component) + ":")
-    for (a, b), why in sorted(edges.items()):
-        if a in component and b in component:
-            print(f"  {a} -> {b}: {why}")
-too_few = includes_read < min_includes
-if too_few:
-    print(f"too few #include lines between rooms read ({includes_read}, fewer than {min_includes}): is "
-          f"{root.parent} the project's root, or has the reader stopped finding includes?")
-sys.exit(1 if cycles or too_few else 0)
+    print(f"include_cycles_test: {files_read} files in {len(rooms)} rooms read, {includes_read} #include lines from "
+          f"one room into another (at least {min_includes} expected), {len(edges)} dependencies between rooms")
+    for component in cycles:
+        print("include cycle between " + ", ".join(component) + ":")
+        for (a, b), why in sorted(edges.items()):
+            if a in component and b in component:
+                print(f"  {a} -> {b}: {why}")
+    too_few = includes_read < min_includes
+    if too_few:
+        print(f"too few #include lines between rooms read ({includes_read}, fewer than {min_includes}): is "
+              f"{project} the project's root, or has the reader stopped finding includes?")
+    sys.exit(1 if cycles or too_few else 0)
+
+
+if __name__ == "__main__":
+    main()
