@@ -1,11 +1,11 @@
 // The method table's contract, row by row: what each row says of itself holds, so that a new row
 // (a method, a student's tableau) is checked where it is written. Each row is found by its name and
 // its id; a Runge-Kutta row's tableau is explicit and its stability polynomial matches e^z to its
-// order (gamma_j = 1 / j!, docs/numerics.md, "Stability functions"); an implicit row's R(z) is
-// that close to e^z and A-stable; the undamped limit it states is where R first leaves the unit
-// disc on the imaginary axis, and a closed form it gives agrees with R(z) on damped modes. (Order
-// measured in runs: accuracy_test.cpp over the same rows; each limit against the method's own
-// step: stability_test.cpp; bits for any thread count: determinism_test.cpp.)
+// order (gamma_j = 1 / j!, docs/numerics.md, "Stability functions and the method table"); an
+// implicit row's R(z) is that close to e^z and A-stable; the undamped limit it states is where R
+// first leaves the unit disc on the imaginary axis, and a closed form it gives agrees with R(z) on
+// damped modes. (Order measured in runs: accuracy_test.cpp over the same rows; each limit against
+// the method's own step: stability_test.cpp; bits for any thread count: determinism_test.cpp.)
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,5 +1,5 @@
 // A student's own Runge-Kutta method: a Butcher tableau typed as data, and what follows from it
-// exactly (docs/numerics.md, "Your own tableau").
+// exactly (docs/numerics.md, "A tableau of your own").
 //
 //   stage i:  Y_i = y + h sum_j a_ij F(Y_j),   y1 = y + h sum_i b_i F(Y_i)
 //
