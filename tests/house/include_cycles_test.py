@@ -45,10 +45,10 @@ def self_test():
 
 def read_rooms(project):
     """The app's rooms and the dependencies between them: (rooms, edges, files_read, includes_read),
-    edges mapping (a, b) to the first 'file includes "b/x.hpp"' seen. Shared with rooms_table_test.py."""
+    edges mapping (a, b) to the first 'file includes "b/..."' seen. Shared with rooms_table_test.py."""
     root = pathlib.Path(project) / "app"
     rooms = {p.name for p in root.iterdir() if p.is_dir()} if root.is_dir() else set()
-    edges = {}  # (a, b) -> first "file includes b/x.hpp" seen
+    edges = {}  # (a, b) -> first "file includes b/..." seen
     files_read = includes_read = 0  # includes_read: #include lines from one room into another
     for f in sorted(root.rglob("*")):
         if f.suffix not in (".cpp", ".hpp", ".h") or f.parent == root:
