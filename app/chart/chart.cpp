@@ -247,4 +247,12 @@ std::vector<double> spread_labels(const std::vector<double>& wanted, double gap,
   return y;
 }
 
+void equal_scale(double& xlo, double& xhi, double& ylo, double& yhi, double width, double height) {
+  if (!(width > 0.0 && height > 0.0)) return;
+  const double per_pixel = std::max((xhi - xlo) / width, (yhi - ylo) / height);
+  const double xc = 0.5 * (xlo + xhi), yc = 0.5 * (ylo + yhi);
+  xlo = xc - 0.5 * per_pixel * width, xhi = xc + 0.5 * per_pixel * width;
+  ylo = yc - 0.5 * per_pixel * height, yhi = yc + 0.5 * per_pixel * height;
+}
+
 }  // namespace springlab::chart

@@ -43,6 +43,14 @@ struct Axis {
   std::optional<double> min, max;  // else from the data
 };
 
+// A few words at a point of the plot, in the axes' units, written ending there and just above it:
+// a reference slope named at its end ("order 4").
+struct Note {
+  double x = 0, y = 0;
+  std::string text;
+  draw::Rgba color;
+};
+
 struct Chart {
   std::string title;
   Axis x, y;
@@ -52,6 +60,15 @@ struct Chart {
   // another) in place of the legend, so that a line is named where the eye ends up, by its
   // colour's text and not by a swatch to match: the live charts' lines.
   bool end_labels = false;
+  // One unit as long on both axes (both linear): the complex plane, where a region's shape is
+  // the lesson (explicit Euler's disc drawn round, never a wide ellipse). The axis with room to
+  // spare shows more, about its centre.
+  bool equal_scale = false;
+  // Keep the legend off the plot (beside it, else in rows over it) even where a box in a corner
+  // would fit: where the data fill the plot (the complex plane's regions; live charts whose end
+  // labels found no room).
+  bool legend_off_plot = false;
+  std::vector<Note> notes;
   // A smaller chart drawn over a corner of the plot (the region chart's zoom on the dots near 0),
   // in the corner that hides the least data apart from the legend's.
   std::shared_ptr<const Chart> inset;
@@ -77,6 +94,10 @@ std::vector<Tick> ticks_that_fit(double lo, double hi, bool log, const std::func
 
 // The range the axis shows: the data's, widened to whole ticks, or the one set.
 void axis_range(const Chart& chart, bool x_axis, double& lo, double& hi);
+
+// For an equal_scale chart: the ranges widened, each about its centre, so that a unit is as many
+// pixels on both axes of a plot `width` x `height` pixels.
+void equal_scale(double& xlo, double& xhi, double& ylo, double& yhi, double width, double height);
 
 // Where a legend of the given size (fractions of the plot's width and height) covers the least
 // of the data: the corner whose box holds the fewest of the series' points, each line sampled

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <set>
 
 #include "draw/palette.hpp"
 #include "springlab/text.hpp"
@@ -102,20 +104,29 @@ Chart convergence(const SweepResult& r, const std::string& scene) {
     }
     c.series.push_back(std::move(s));
   }
-  // Reference slopes 1, 2 and 4 through the middle of the data, to read orders against.
+  // Reference slopes through the middle of the data, one for each order the rows drawn against
+  // the step are of (their table's), to read orders against: dashed, each named at its end.
   if (hmax > hmin && emax > emin) {
     const double hc = std::sqrt(hmin * hmax), ec = std::sqrt(emin * emax);
-    for (int order : {1, 2, 4}) {
-      Series guide;
-      guide.label = format_text(tr("slope %d"), order);
+    std::set<int> orders;
+    for (const MethodSummary& m : r.methods)
+      for (const SweepRun& run : r.runs)
+        if (run.method == m.method && std::isnan(run.tolerance) && method_info(m.method).order > 0) {
+          orders.insert(method_info(m.method).order);
+          break;
+        }
+    for (int order : orders) {
+      Series guide;  // (no label: not in the legend; its note names it)
       guide.color = kGuide;
-      guide.color.a = 0.35f + 0.15f * order;
+      guide.color.a = 0.55f;
       guide.dashed = true;
       guide.width = 1.5f;
-      for (double h : {hmin, hmax}) {
+      for (int k = 0; k <= 40; ++k) {  // (points enough for its dashes)
+        const double h = hmin * std::pow(hmax / hmin, k / 40.0);
         guide.x.push_back(h);
         guide.y.push_back(ec * std::pow(h / hc, order));
       }
+      c.notes.push_back({hmax, guide.y.back(), format_text(tr("slope %d"), order), kGuide});
       c.series.push_back(std::move(guide));
     }
     c.y.min = emin / 3.0;

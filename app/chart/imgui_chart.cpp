@@ -29,21 +29,6 @@ struct Mapping {
   }
 };
 
-// A mark (draw/marks.hpp) of radius r at c: filled, hollow (a 2 px outline) or two strokes.
-void draw_mark(ImDrawList* list, draw::Mark mark, ImVec2 c, float r, ImU32 colour) {
-  if (mark == draw::Mark::None) return;
-  std::vector<ImVec2> p;
-  for (const auto& [x, y] : draw::mark_outline(mark)) p.emplace_back(c.x + r * x, c.y + r * y);
-  if (draw::strokes(mark)) {
-    list->AddLine(p[0], p[1], colour, 2.0f);
-    list->AddLine(p[2], p[3], colour, 2.0f);
-  } else if (draw::hollow(mark)) {
-    list->AddPolyline(p.data(), static_cast<int>(p.size()), colour, ImDrawFlags_Closed, 2.0f);
-  } else {
-    list->AddConvexPolyFilled(p.data(), static_cast<int>(p.size()), colour);
-  }
-}
-
 // The text (a title, an axis label), or as many of its words as fit `width` followed by an
 // ellipsis.
 std::string fitted(const std::string& text, float width) {
@@ -65,6 +50,11 @@ struct Plot {
   float line_h = 0.0f, heading = 0.0f, top = 0.0f, left = 0.0f, right = 0.0f, bottom = 0.0f;
   double xlo = 0.0, xhi = 1.0, ylo = 0.0, yhi = 1.0;
 };
+
+// The title, wrapped at spaces to the chart's width: on as many lines as it takes, never cut.
+std::string title_lines(const Chart& chart, float width) {
+  return ui::wrap_text(chart.title, ImGui::GetFont(), ImGui::GetFontSize(), width);
+}
 
 // The legend: its labels (at most the plot's width, a longer one wrapped onto a second line at
 // spaces, never inside a number such as "x1.33") stacked in a box in the plot's corner where it
@@ -104,7 +94,8 @@ LegendLayout place_legend(const Chart& chart, Plot& p) {
   };
   if (chart.legend && !chart.end_labels) {  // (end labels name the lines in its place)
     stack(std::max(60.0f, right - left - 40.0f));
-    if (legend_h + 8.0f > bottom - top) {
+    // (The complex plane, whose regions fill the middle, and a chart told to: off the plot.)
+    if (chart.equal_scale || chart.legend_off_plot || legend_h + 8.0f > bottom - top) {
       const std::vector<std::string> boxed = labels;
       const float box_w = legend_w, box_h = legend_h;
       stack(std::max(60.0f, 0.45f * size.x - 34.0f));
@@ -154,7 +145,7 @@ void draw_axes(ImDrawList* list, const Chart& chart, const Plot& p, const std::v
       xlo, xhi, chart.x.log, [&](double v) { return mx(v); },
       [](const std::string& label) { return ImGui::CalcTextSize(label.c_str()).x; }, 0.25f * line_h);
 
-  if (!chart.title.empty()) list->AddText(ImVec2(origin.x, origin.y), text, fitted(chart.title, size.x).c_str());
+  if (!chart.title.empty()) list->AddText(ImVec2(origin.x, origin.y), text, title_lines(chart, size.x).c_str());
   // (Beside a legend column, only as far as the plot's right edge.)
   list->AddText(ImVec2(origin.x, top - line_h * 1.1f), text,
                 place == Legend::Column ? fitted(chart.y.label, right - origin.x).c_str() : chart.y.label.c_str());
@@ -264,22 +255,27 @@ void draw_lines(ImDrawList* list, const Chart& chart, const Plot& p) {
       draw_mark(list, s.mark, ImVec2(static_cast<float>(m[0]), static_cast<float>(m[1])), mark_r, c);
     if (chart.end_labels && !s.label.empty() && last.x >= 0.0f) ends.push_back({last, c, &s.label});
   }
-  // The end labels: left of each line's last point, moved apart, each on a backdrop.
+  // The notes: each ending at its point, just above it.
+  for (const Note& n : chart.notes) {
+    const bool ok = std::isfinite(n.x) && std::isfinite(n.y) && (!chart.x.log || n.x > 0) && (!chart.y.log || n.y > 0);
+    if (!ok || n.y < ylo || n.y > yhi) continue;
+    const ImVec2 size = ImGui::CalcTextSize(n.text.c_str());
+    const ImVec2 at(std::max(left + 2.0f, mx(n.x) - size.x - 4.0f), std::max(top, my(n.y) - size.y - 2.0f));
+    list->AddText(at, color(n.color), n.text.c_str());
+  }
+  list->PopClipRect();
+  // The end labels: in the margin right of the plot (draw_imgui keeps it), each at the height of
+  // its line's last point, moved apart, with a short lead from that point where it was moved.
   if (!ends.empty()) {
     std::vector<double> wanted;
     for (const EndLabel& e : ends) wanted.push_back(e.at.y - 0.5f * line_h);
-    const std::vector<double> y = spread_labels(wanted, line_h, top + 2.0f, bottom - line_h - 2.0f);
+    const std::vector<double> y = spread_labels(wanted, line_h, top, bottom - line_h);
     for (std::size_t k = 0; k < ends.size(); ++k) {
-      const std::string shown = fitted(*ends[k].text, right - left - 12.0f);
-      const ImVec2 s = ImGui::CalcTextSize(shown.c_str());
-      const ImVec2 at(std::max(left + 4.0f, ends[k].at.x - s.x - 10.0f), static_cast<float>(y[k]));
-      list->AddRectFilled(ImVec2(at.x - 3, at.y), ImVec2(at.x + s.x + 3, at.y + s.y),
-                          ImGui::GetColorU32(ImGuiCol_WindowBg, 0.8f), 3.0f);
-      list->AddText(at, ends[k].colour, shown.c_str());
+      const ImVec2 at(right + 8.0f, static_cast<float>(y[k]));
+      list->AddLine(ImVec2(right + 1.0f, ends[k].at.y), ImVec2(at.x - 2.0f, at.y + 0.5f * line_h), ends[k].colour, 1.0f);
+      list->AddText(at, ends[k].colour, ends[k].text->c_str());
     }
   }
-  list->PopClipRect();
-
 }
 
 // The legend as placed: in rows over the plot, in a column beside it, or in a box in the corner
@@ -338,6 +334,21 @@ std::optional<Corner> draw_legend(ImDrawList* list, const Chart& chart, const Pl
 
 }  // namespace
 
+// A mark (draw/marks.hpp) of radius r at c: filled, hollow (a 2 px outline) or two strokes.
+void draw_mark(ImDrawList* list, draw::Mark mark, ImVec2 c, float r, ImU32 colour) {
+  if (mark == draw::Mark::None) return;
+  std::vector<ImVec2> p;
+  for (const auto& [x, y] : draw::mark_outline(mark)) p.emplace_back(c.x + r * x, c.y + r * y);
+  if (draw::strokes(mark)) {
+    list->AddLine(p[0], p[1], colour, 2.0f);
+    list->AddLine(p[2], p[3], colour, 2.0f);
+  } else if (draw::hollow(mark)) {
+    list->AddPolyline(p.data(), static_cast<int>(p.size()), colour, ImDrawFlags_Closed, 2.0f);
+  } else {
+    list->AddConvexPolyFilled(p.data(), static_cast<int>(p.size()), colour);
+  }
+}
+
 void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart) {
   const ImGuiStyle& style = ImGui::GetStyle();
   const float line_h = ImGui::GetTextLineHeight();
@@ -351,16 +362,49 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
 
   // Plot area: room for the title, the y label (rotated text is not available, so it goes above
   // the axis), tick labels and the x label.
-  const float heading = origin.y + (chart.title.empty() ? 0.0f : line_h * 1.2f);
+  const float heading = origin.y + (chart.title.empty() ? 0.0f : ImGui::CalcTextSize(title_lines(chart, size.x).c_str()).y + 0.2f * line_h);
   const float top = heading + line_h * 1.1f;
   const float left = origin.x + label_w + style.ItemSpacing.x + 4.0f;
   const float right = origin.x + size.x - 8.0f;
   const float bottom = origin.y + size.y - line_h * (chart.x.label.empty() ? 1.3f : 2.4f);
   if (right - left < 20 || bottom - top < 20) return;
-
-  Plot p{origin, size, line_h, heading, top, left, right, bottom, xlo, xhi, ylo, yhi};
+  // End labels in a margin right of the plot, clear of the lines, where the plot is tall enough
+  // to stack them one a line and keeps 55 % of its width beside them; else the legend names the
+  // lines (a phone's short chart: four labels written over one another).
+  std::size_t labelled = 0;
+  float labels_w = 0.0f;
+  for (const Series& s : chart.series)
+    if (!s.label.empty()) ++labelled, labels_w = std::max(labels_w, ImGui::CalcTextSize(s.label.c_str()).x);
+  float plot_right = right;
+  if (chart.end_labels) {
+    const float margin = labels_w + 12.0f;
+    if (labelled * line_h > bottom - top - 4.0f || right - margin - left < 0.55f * (right - left)) {
+      Chart named = chart;
+      named.end_labels = false;
+      named.legend = true;
+      named.legend_off_plot = true;
+      return draw_imgui(list, origin, size, named);
+    }
+    plot_right = right - margin;
+  }
+  Plot p{origin, size, line_h, heading, top, left, plot_right, bottom, xlo, xhi, ylo, yhi};
   const LegendLayout legend = place_legend(chart, p);
-  draw_axes(list, chart, p, yt, legend.place);
+  // One scale on both axes: the ranges widened to the plot's shape as the legend left it, the
+  // plot's left edge moved where the new y ticks' labels are wider.
+  std::vector<Tick> y_ticks = yt;
+  if (chart.equal_scale && !chart.x.log && !chart.y.log)
+    for (int pass = 0; pass < 3; ++pass) {
+      axis_range(chart, true, p.xlo, p.xhi);
+      axis_range(chart, false, p.ylo, p.yhi);
+      equal_scale(p.xlo, p.xhi, p.ylo, p.yhi, p.right - p.left, p.bottom - p.top);
+      y_ticks = ticks(p.ylo, p.yhi, false, 4);
+      float widest = 0.0f;
+      for (const Tick& t : y_ticks) widest = std::max(widest, ImGui::CalcTextSize(t.label.c_str()).x);
+      if (widest <= label_w) break;
+      p.left += widest - label_w;
+      label_w = widest;
+    }
+  draw_axes(list, chart, p, y_ticks, legend.place);
   list->PushClipRect(ImVec2(origin.x, origin.y), ImVec2(origin.x + size.x, origin.y + size.y), true);
   draw_lines(list, chart, p);
   const std::optional<Corner> legend_at = draw_legend(list, chart, p, legend);
@@ -385,12 +429,6 @@ void chart_widget(const char* id, const Chart& chart, ImVec2 size) {
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   ImGui::InvisibleButton(id, size);
   draw_imgui(ImGui::GetWindowDrawList(), origin, size, chart);
-  // A title cut to the chart's width is read whole by pointing at the chart.
-  if (ImGui::IsItemHovered() && fitted(chart.title, size.x) != chart.title) {
-    ImGui::BeginTooltip();
-    ui::text_wrapped(chart.title, {}, 30.0f * ImGui::GetFontSize());  // about 30 em
-    ImGui::EndTooltip();
-  }
 }
 
 }  // namespace springlab::chart

@@ -221,6 +221,7 @@ Chart complex_plane(const StabilityAnalysis& analysis, const std::vector<RegionL
   c.title = tr("Stability region, h lambda in the complex plane (dots: the scene's eigenvalues times h)");
   c.x.label = tr("Re(h lambda)");
   c.y.label = tr("Im(h lambda)");
+  c.equal_scale = true;
   const std::vector<Complex> lambdas = spectrum(analysis);
   // The view, as Hairer and Wanner draw regions: every charted region whole (a bounded one's
   // stable set, an unbounded one's unstable set), whatever its size, and the dots, each with some
@@ -282,6 +283,7 @@ Chart complex_plane(const StabilityAnalysis& analysis, const std::vector<RegionL
     auto zoom = std::make_shared<Chart>();
     zoom->title = tr("near 0");
     zoom->legend = false;
+    zoom->equal_scale = true;
     zoom->x.min = -1.6 * reach;
     zoom->x.max = 0.6 * reach;
     zoom->y.min = -1.3 * reach;

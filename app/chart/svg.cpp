@@ -105,6 +105,13 @@ void write_series(std::ostringstream& s, const Chart& chart, const Map& mx, cons
       write_mark(s, series.mark, m[0], m[1], 2.5 + series.width, colour);
     if (chart.end_labels && !series.label.empty() && last) ends.push_back({(*last)[0], (*last)[1], colour, series.label});
   }
+  // The notes: each ending at its point, just above it.
+  for (const Note& n : chart.notes) {
+    const bool ok = std::isfinite(n.x) && std::isfinite(n.y) && (!chart.x.log || n.x > 0) && (!chart.y.log || n.y > 0);
+    if (!ok) continue;
+    s << "<text x=\"" << mx(n.x) - 4.0 << "\" y=\"" << my(n.y) - 4.0 << "\" fill=\"" << draw::hex(n.color)
+      << "\" text-anchor=\"end\">" << escape(n.text) << "</text>\n";
+  }
   std::vector<double> wanted;
   for (const EndLabel& e : ends) wanted.push_back(e.y);
   const std::vector<double> y = spread_labels(wanted, line, top + line, bottom - 4.0);
@@ -121,13 +128,17 @@ void write_chart(std::ostringstream& s, const Chart& chart, double width, double
   double xlo, xhi, ylo, yhi;
   axis_range(chart, true, xlo, xhi);
   axis_range(chart, false, ylo, yhi);
-  const auto xt = ticks(xlo, xhi, chart.x.log), yt = ticks(ylo, yhi, chart.y.log, 4);
+  auto xt = ticks(xlo, xhi, chart.x.log), yt = ticks(ylo, yhi, chart.y.log, 4);
   std::size_t label_chars = 0;
   for (const Tick& t : yt) label_chars = std::max(label_chars, t.label.size());
   const double line = kFont * 1.35;
   const double top = (chart.title.empty() ? 8.0 : line * 1.4) + line;
   const double left = 14.0 + label_chars * kChar + 8.0;
   const double right = width - 16.0, bottom = height - line * 2.6;
+  if (chart.equal_scale && !chart.x.log && !chart.y.log) {
+    equal_scale(xlo, xhi, ylo, yhi, right - left, bottom - top);
+    xt = ticks(xlo, xhi, false), yt = ticks(ylo, yhi, false, 4);
+  }
   const Map mx{xlo, xhi, chart.x.log, left, right}, my{ylo, yhi, chart.y.log, bottom, top};
 
   s << "<rect width=\"100%\" height=\"100%\" fill=\"#16181c\"/>\n";

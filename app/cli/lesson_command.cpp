@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "cli/commands.hpp"
+#include "util/text_table.hpp"
 #include "lesson/lesson_checks.hpp"
 #include "lesson/lesson_library.hpp"
 
@@ -18,12 +19,16 @@ struct LessonCli {
 };
 
 int list() {
+  std::vector<std::vector<std::string>> rows;
   const auto files = shipped_lesson_files();
   for (std::size_t k = 0; k < files.size(); ++k) {
     const Lesson lesson = open_lesson(files[k]);
-    std::printf("%2zu  %-22s %-42s %zu step%s, %.0f s: %s\n", k + 1, lesson.name.c_str(), lesson.title.c_str(),
-                lesson.steps.size(), lesson.steps.size() == 1 ? "" : "s", lesson.duration(), lesson.summary.c_str());
+    char about[64];
+    std::snprintf(about, sizeof about, "%zu step%s, %.0f s:", lesson.steps.size(), lesson.steps.size() == 1 ? "" : "s",
+                  lesson.duration());
+    rows.push_back({(k < 9 ? " " : "") + std::to_string(k + 1), lesson.name, lesson.title, about + std::string(" ") + lesson.summary});
   }
+  std::fputs(text_table(rows).c_str(), stdout);
   return kOk;
 }
 

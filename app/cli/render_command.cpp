@@ -25,6 +25,7 @@
 #include "springlab/error.hpp"
 #include "springlab/script.hpp"
 #include "ui/overlay.hpp"
+#include "ui/text_fit.hpp"
 #include "ui/panels.hpp"
 #include "util/language.hpp"
 #include "util/data_dir.hpp"
@@ -37,11 +38,11 @@ namespace {
 struct RenderOptions {
   std::string scene;
   SimOptions sim;
-  std::optional<std::string> out, video, script, size = "1280x720", compare, select, lesson;
+  std::optional<std::string> out, video, script, size = "1280x720", compare, compare_layout, select, lesson;
   std::optional<std::int64_t> frames;
   std::optional<double> duration;
   double fps = 60.0;
-  bool ui = false, software = false;
+  bool ui = false, software = false, check_text = false;
   std::optional<double> ui_scale;  // default: the frame's height / 720, at least 0.6
   std::string lang = "en";         // the panels' and captions' language (not the environment's: frames repeat)
 };
@@ -83,6 +84,11 @@ ui::UiState shot_ui(const Session& session, const std::string& scene_name, float
   ui.ranges = ui::Ranges::of(session);
   ui.scene_name = scene_name;
   ui.scenes = shipped_scenes();
+  // The lessons' picker, as the app has it (its titles from the lesson files).
+  for (const std::string& file : shipped_lesson_files()) {
+    const Lesson lesson = open_lesson(file);
+    ui.lessons.emplace_back(lesson.name, lesson.title);
+  }
   return ui;
 }
 
@@ -106,6 +112,43 @@ Shot lesson_shot(const Lesson& lesson, int k, int number, int count, double fps,
   return shot;
 }
 
+// Why a lesson is recorded with its own values, and how to record each of its steps with the
+// class's: a lesson's captions state its values ("Euler is stable while h <= k_d / k_s = 0.02 s")
+// and `lesson check` measures its claims at them, so other values would make it say what is false.
+std::string lesson_takes_its_values(const RenderOptions& o) {
+  const Lesson lesson = open_lesson(*o.lesson);
+  std::string s = "render --lesson: a lesson is recorded with its own values: its captions state them (each step sets its "
+                  "scene, methods, k_s, k_d and dt) and `springlab lesson check` measures its claims there, so "
+                  "--script, --compare, --method, --dt, --substeps, --ks, --kd and --set do not go with it. To record a "
+                  "step with the class's values, render its scene with them:";
+  const auto number = [](double v) {
+    char t[32];
+    std::snprintf(t, sizeof t, "%.6g", v);
+    return std::string(t);
+  };
+  for (std::size_t k = 0; k < lesson.steps.size(); ++k) {
+    const LessonStep& step = lesson.steps[k];
+    std::string c = "springlab render " + step.scene;
+    for (const std::string& set : step.sets) c += " --set " + set;
+    for (const std::string& set : o.sim.sets) c += " --set " + set;
+    std::string lanes;
+    for (const std::string& lane : step.compare) lanes += (lanes.empty() ? "" : ",") + lane;
+    if (o.compare) lanes = *o.compare;
+    if (!lanes.empty()) c += " --compare " + lanes;
+    else if (o.sim.method) c += " --method " + *o.sim.method;
+    else if (step.method) c += std::string(" --method ") + method_info(*step.method).name;
+    if (o.sim.dt || step.dt) c += " --dt " + number(o.sim.dt ? *o.sim.dt : *step.dt);
+    if (o.sim.substeps) c += " --substeps " + *o.sim.substeps;
+    else if (step.substeps) c += " --substeps " + (*step.substeps == 0 ? std::string("auto") : std::to_string(*step.substeps));
+    if (o.sim.ks || step.ks) c += " --ks " + number(o.sim.ks ? *o.sim.ks : *step.ks);
+    if (o.sim.kd || step.kd) c += " --kd " + number(o.sim.kd ? *o.sim.kd : *step.kd);
+    if (o.script) c += " --script " + *o.script;
+    c += " --duration " + number(step.duration) + " --out step" + std::to_string(k + 1);
+    s += "\n  step " + std::to_string(k + 1) + ": " + c;
+  }
+  return s;
+}
+
 // The options that do not go together, and each one's range; the frame's size.
 void check_render_options(const RenderOptions& o, int& width, int& height) {
   if (o.out.has_value() == o.video.has_value())
@@ -114,9 +157,9 @@ void check_render_options(const RenderOptions& o, int& width, int& height) {
     throw InputError("render: give a SCENE or --lesson NAME (springlab lesson list), and not both");
   if (o.lesson && (o.script || o.compare || o.sim.method || o.sim.dt || o.sim.substeps || o.sim.ks || o.sim.kd ||
                    !o.sim.sets.empty()))
-    throw InputError("render --lesson: the lesson sets each step's scene, methods, parameters and script; "
-                     "leave out --script, --compare, --method, --dt, --substeps, --ks, --kd and --set");
+    throw InputError(lesson_takes_its_values(o));
   parse_size(*o.size, width, height);
+  if (o.compare_layout) draw::parse_compare_layout(*o.compare_layout, "--compare-layout");
   check_option("--fps", o.fps, 1.0, 240.0, false);
   if (o.ui_scale) check_option("--ui-scale", *o.ui_scale, 0.5, 4.0, false);
   if (o.frames) check_option("--frames", static_cast<double>(*o.frames), 1, 1e7, false);
@@ -184,27 +227,86 @@ Plan plan_shots(const RenderOptions& o, float scale) {
     if (script) shot.session->play(*script);
     for (Lane& lane : shot.session->lanes()) warn_if_unstable(lane.sim, name);
     shot.ui = shot_ui(*shot.session, name, scale);
+    if (o.compare_layout) shot.ui.view.compare_layout = draw::parse_compare_layout(*o.compare_layout, "--compare-layout");
     shot.frames = frames;
     shots.push_back(std::move(shot));
   }
   return plan;
 }
 
-// A scene's run at its end: each lane's sub-steps, and kDiverged (its reason on stderr) for the
-// first lane that diverged or went unstable.
+// A scene's run at its end: each lane's sub-steps, and each lane that diverged or went unstable.
+// One lane: kDiverged, its reason on stderr (the frames from then on show it stopped). Compare: a
+// lane that diverged is the lesson, said on stdout; kDiverged only when none is left running.
 int lane_verdicts(Session& session, const std::string& name) {
   for (const Lane& lane : session.lanes())
     std::printf("substeps   %s: %d (%s)\n", method_info(lane.sim.settings().method).name, lane.sim.settings().substeps,
                 !lane.sim.auto_substeps() ? "fixed" : lane.sim.substeps_capped() ? "auto, capped" : "auto");
+  int running = 0;
+  const Divergence* first = nullptr;
   for (Lane& lane : session.lanes()) {
     if (lane.sim.diverged()) lane.sim.explain_divergence();
-    if (const Divergence* trouble = lane.sim.trouble()) {
-      std::fflush(stdout);
-      std::fprintf(stderr, "springlab: %s: %s\n", name.c_str(), trouble->message().c_str());
-      return kDiverged;
+    const Divergence* trouble = lane.sim.trouble();
+    running += !lane.sim.diverged();
+    if (!trouble) continue;
+    if (!first) first = trouble;
+    if (session.comparing()) {
+      std::printf("%-10s %s: %s", lane.sim.diverged() ? "diverged" : "unstable", app::lane_name(lane).c_str(),
+                  trouble->message().c_str());
+      if (lane.sim.diverged()) std::printf(" Drawn from then on as it was at t = %.4g s.", lane.sane.t);
+      std::printf("\n");
     }
   }
-  return kOk;
+  if (!first || (session.comparing() && running > 0)) return kOk;
+  std::fflush(stdout);
+  std::fprintf(stderr, "springlab: %s: %s\n", name.c_str(), first->message().c_str());
+  return kDiverged;
+}
+
+// The frames written and the times they show, e.g. "frames 60 to 300, t = 1 to 5 s".
+std::string frames_written(std::int64_t first, std::int64_t last, double t_first, double t_last) {
+  char s[160];
+  if (first == last) std::snprintf(s, sizeof s, "frame %lld, t = %.4g s", static_cast<long long>(first), t_first);
+  else
+    std::snprintf(s, sizeof s, "frames %lld to %lld, t = %.4g to %.4g s", static_cast<long long>(first),
+                  static_cast<long long>(last), t_first, t_last);
+  return s;
+}
+
+// A shot's frame as it is now: the scene's views (compare apart: a view each), the panels where
+// asked, a lesson's chart and band, the overlay.
+// With `faults`: what of its text does not fit (ui/text_fit.hpp) is added to it.
+void draw_shot(gfx::Offscreen& offscreen, Shot& shot, const ui::FrameStats& stats, bool panels, int width, int height,
+               float scale, std::vector<std::string>* faults) {
+  Session& session = *shot.session;
+  if (shot.band) shot.ui.band = ui::lesson_band_height(*shot.band, static_cast<float>(width), scale);
+  const draw::Viewport viewport =
+      panels || shot.band ? ui::scene_viewport(shot.ui, width, height) : draw::Viewport{0, 0, width, height};
+  const std::vector<draw::LaneView> views = draw::lane_views(session, shot.ui.view.camera, shot.ui.view.compare_layout, viewport);
+  std::vector<draw::Frame> pictures;
+  for (const draw::LaneView& view : views) pictures.push_back(draw::build_frame(session, shot.ui.view, view));
+  offscreen.draw(pictures, [&] {
+    if (panels) ui::draw_panels(session, shot.ui, stats, width, height);
+    if (shot.accuracy) {  // in the scene's and the charts' place, as in the app's lesson
+      const ui::Rect r = ui::lesson_chart_rect(shot.ui, viewport, width, height, scale);
+      ImGui::SetNextWindowBgAlpha(1.0f);
+      ui::draw_compare_panel(*shot.accuracy, session, scale, r.x, r.y, r.w, r.h);
+    }
+    if (shot.band) {
+      shot.band->elapsed = session.simulated_target() / session.speed();  // (as the app's)
+      ui::draw_lesson_band(*shot.band, static_cast<float>(width), scale);
+    }
+    ui::OverlayOptions overlay;
+    overlay.scale = scale;
+    overlay.caption = !panels;
+    ui::draw_overlay(session, views, viewport, shot.ui.scene_name, overlay);
+  });
+  if (faults && std::getenv("DEBUG_RUNS"))
+    for (const auto& r : ui::text_runs(*ImGui::GetDrawData(), *ImGui::GetIO().Fonts))
+      std::printf("run [%.0f %.0f %.0f %.0f] clip [%.0f %.0f %.0f %.0f] %s\n", r.box.x, r.box.y, r.box.z, r.box.w, r.clip.x, r.clip.y, r.clip.z, r.clip.w, r.text.c_str());
+  if (faults && ImGui::GetCurrentContext() && ImGui::GetDrawData())
+    for (std::string& fault : ui::text_faults(ui::text_runs(*ImGui::GetDrawData(), *ImGui::GetIO().Fonts),
+                                              ui::windows_of(*ImGui::GetDrawData())))
+      faults->push_back(std::move(fault));
 }
 
 int render(const RenderOptions& o) {
@@ -253,6 +355,10 @@ int render(const RenderOptions& o) {
   // draw it, then it is read back and handed to the writer (rows as GL reads them: the writer
   // puts them in order as it writes).
   std::optional<std::int64_t> drawn;
+  std::size_t text_faults = 0;                // --check-text: pieces of text that do not fit
+  std::optional<std::int64_t> first_written;  // the first and last frames drawn, and the times they show
+  std::int64_t last_written = 0;
+  double t_first = 0.0, t_last = 0.0;
   double draw_ms = 0.0;
   const auto collect = [&] {
     const auto t0 = std::chrono::steady_clock::now();
@@ -277,50 +383,45 @@ int render(const RenderOptions& o) {
       shot = lesson_shot(*lesson, static_cast<int>(current), plan.lesson_number, plan.lesson_count, o.fps, scale);
     } else if (k > shot_start) {
       Session& session = *shot.session;
-      const std::int64_t before = session.primary().sim.counters().force_evals;
+      const std::vector<Counters> before = ui::lane_counters(session);
       const auto t0 = std::chrono::steady_clock::now();
       session.advance_frame();
       stats.sim_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-      stats.force_evals = session.primary().sim.counters().force_evals - before;
+      ui::count_frame(stats, session, before);
     }
     if (drawn) collect();
     if (!selected.empty() && !selected.count(k)) continue;
     Session& session = *shot.session;
     const auto t0 = std::chrono::steady_clock::now();
-    if (shot.band) shot.ui.band = ui::lesson_band_height(*shot.band, static_cast<float>(width), scale);
-    const draw::Viewport viewport =
-        panels || shot.band ? ui::scene_viewport(shot.ui, width, height) : draw::Viewport{0, 0, width, height};
-    const draw::Frame frame = draw::build_frame(session, shot.ui.view, viewport);
-    offscreen.draw(frame, [&] {
-      if (panels) ui::draw_panels(session, shot.ui, stats, width, height);
-      if (shot.accuracy) {  // in the scene's and the charts' place, as in the app's lesson
-        const ui::Rect r = ui::lesson_chart_rect(shot.ui, viewport, width, height, scale);
-        ImGui::SetNextWindowBgAlpha(1.0f);
-        ui::draw_compare_panel(*shot.accuracy, session, scale, r.x, r.y, r.w, r.h);
-      }
-      if (shot.band) {
-        shot.band->elapsed = session.simulated_target() / session.speed();  // (as the app's)
-        ui::draw_lesson_band(*shot.band, static_cast<float>(width), scale);
-      }
-      ui::OverlayOptions overlay;
-      overlay.scale = scale;
-      overlay.caption = !panels;
-      ui::draw_overlay(session, frame.camera, viewport, shot.ui.scene_name, overlay);
-    });
+    std::vector<std::string> faults;
+    draw_shot(offscreen, shot, stats, panels, width, height, scale, o.check_text ? &faults : nullptr);
+    for (const std::string& fault : faults) std::printf("text       frame %lld: %s\n", static_cast<long long>(k), fault.c_str());
+    text_faults += faults.size();
     draw_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     drawn = k;
+    // The time the frame shows: a scene's simulated time (its caption's), a lesson's presentation time.
+    const double shown = lesson ? static_cast<double>(k) / o.fps : session.simulated_target();
+    if (!first_written) first_written = k, t_first = shown;
+    last_written = k, t_last = shown;
   }
   if (drawn) collect();
   writer->finish();
   progress.finish();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const Session& last = *shots[current].session;
-  std::printf("rendered %lld frame%s of %s (%dx%d, %g frames/s, t = 0 to %.4g s) in %.3g s: %.3g frames/s, on %s\n",
+  std::printf("rendered %lld frame%s of %s (%dx%d, %g frames/s: %s) in %.3g s: %.3g frames/s, on %s\n",
               static_cast<long long>(written), written == 1 ? "" : "s", plan.name.c_str(), width, height, o.fps,
-              lesson ? static_cast<double>(frames) / o.fps : last.primary().sim.state().t, wall,
+              frames_written(first_written.value_or(0), last_written, t_first, t_last).c_str(), wall,
               wall > 0 ? written / wall : 0.0, offscreen.renderer_name().c_str());
   std::printf("output     %s\n", (o.out ? *o.out : *o.video).c_str());
-  return lesson ? kOk : lane_verdicts(*shots[current].session, plan.name);  // (a lesson's steps diverge where they mean to)
+  // (a lesson's steps diverge where they mean to)
+  const int verdict = lesson ? kOk : lane_verdicts(*shots[current].session, plan.name);
+  if (o.check_text && text_faults > 0) {
+    std::fflush(stdout);
+    std::fprintf(stderr, "springlab: render --check-text: %zu piece%s of text do%s not fit its place (listed above as 'text')\n",
+                 text_faults, text_faults == 1 ? "" : "s", text_faults == 1 ? "es" : "");
+    return verdict == kOk ? kFailure : verdict;
+  }
+  return verdict;
 }
 
 }  // namespace
@@ -329,7 +430,10 @@ Command add_render_command(CLI::App& app) {
   auto o = std::make_shared<RenderOptions>();
   CLI::App* c = app.add_subcommand("render", "headless frames (PNG) or video (mp4), no display needed");
   c->add_option("scene", o->scene, "scene name or JSON file (or --lesson)");
-  c->add_option("--lesson", o->lesson, "record a lesson, its captions burned in (springlab lesson list)");
+  c->add_option("--lesson", o->lesson,
+                 "record a lesson, its captions burned in (springlab lesson list), with its own values: its captions "
+                 "state them, so it takes no --dt, --ks, --kd, --method or --compare (the message gives each step's "
+                 "scene to render with yours)");
   add_sim_options(*c, o->sim, false);
   c->add_option("--out", o->out, "write frame_00000.png, ... into this folder");
   c->add_option("--video", o->video, "write an mp4 (H.264) through ffmpeg");
@@ -342,7 +446,10 @@ Command add_render_command(CLI::App& app) {
   c->add_option("--lang", o->lang, "language of the panels and captions: " + language_list() + " (default en)");
   c->add_option("--script", o->script, "play a scripted demo (JSON)");
   c->add_option("--compare", o->compare, "2 to 4 methods side by side, e.g. euler,verlet (IK scenes: solvers, e.g. ccd,fabrik,dls)");
+  c->add_option("--compare-layout", o->compare_layout, kCompareLayoutHelp);
   c->add_option("--select", o->select, "write only these frames, e.g. 0,60,120");
+  c->add_flag("--check-text", o->check_text,
+              "say each piece of text that overlaps other text, is cut by its widget or shortened, and exit 1 if any");
   c->add_flag("--software", o->software, "use the software rasteriser even with a GPU (same pixels everywhere)");
   return [o] { return render(*o); };
 }

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "cli/commands.hpp"
+#include "util/text_table.hpp"
 #include "springlab/butcher.hpp"
 #include "util/data_dir.hpp"
 
@@ -56,17 +57,16 @@ void report(const std::string& name, const ButcherTableau& t, const TableauAnaly
 }
 
 int table() {
-  std::printf("%-18s %-28s %-30s %-7s %-8s %-11s %s\n", "name", "tableau", "kind", "order", "embedded", "real axis",
-              "imaginary axis");
+  std::vector<std::vector<std::string>> rows = {{"name", "tableau", "kind", "order", "embedded", "real axis", "imaginary axis"}};
   for (const std::string& name : shipped_tableaux()) {
     const ButcherTableau t = load_tableau_file(resolve_tableau(name));
     const TableauAnalysis a = analyse_tableau(t);
     std::string order = std::to_string(a.order);
     if (a.order_to_rounding > a.order) order += " (" + std::to_string(a.order_to_rounding) + ")";
-    std::printf("%-18s %-28s %-30s %-7s %-8s %-11s %s\n", name.c_str(), t.name.c_str(), kind(t).c_str(), order.c_str(),
-                a.embedded_order ? std::to_string(*a.embedded_order).c_str() : "-", axis_limit_text(a.real_limit).c_str(),
-                axis_limit_text(a.imaginary_limit).c_str());
+    rows.push_back({name, t.name, kind(t), order, a.embedded_order ? std::to_string(*a.embedded_order) : "-",
+                    axis_limit_text(a.real_limit), axis_limit_text(a.imaginary_limit)});
   }
+  std::fputs(text_table(rows).c_str(), stdout);
   std::printf("(order in brackets: to rounding, for entries written as decimals of irrational values)\n");
   return kOk;
 }

@@ -18,7 +18,7 @@ namespace {
 struct ViewCli {
   AppSettings app;
   WindowOptions window;
-  std::optional<std::string> compare, size;
+  std::optional<std::string> compare, compare_layout, size;
   std::optional<long> frames;
 };
 
@@ -38,6 +38,7 @@ int view(ViewCli& o) {
       throw InputError("--size: must be WIDTHxHEIGHT, from 320x240 to 7680x4320, got '" + *o.size + "'");
   }
   o.app.compare = o.compare;  // (its names are the scene kind's rows: checked once the scene is read)
+  if (o.compare_layout) o.app.compare_layout = draw::parse_compare_layout(*o.compare_layout, "--compare-layout");
   // A lesson is checked before any window opens: a bad one is bad input, display or not.
   if (o.app.lesson) check_lesson_step(open_lesson(*o.app.lesson), o.app.lesson_step, "--step");
   o.window.threads_given = o.app.sim.threads.has_value();
@@ -50,6 +51,7 @@ void add_options(CLI::App& c, ViewCli& o) {
   add_sim_options(c, o.app.sim, false);
   c.add_option("--script", o.app.script, "play a scripted demo (JSON)");
   c.add_option("--compare", o.compare, "start in compare mode with 2 to 4 methods, e.g. euler,verlet");
+  c.add_option("--compare-layout", o.compare_layout, kCompareLayoutHelp);
   c.add_option("--frames", o.frames, "run N frames, then exit (with --screenshot: write one)");
   c.add_option("--screenshot", o.window.screenshot, "after --frames N frames, write the window to this PNG");
   c.add_option("--keys", o.window.keys,

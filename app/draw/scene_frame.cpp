@@ -62,9 +62,20 @@ ViewOptions ViewOptions::for_scene(const Scene& scene) {
 }
 
 Frame build_frame(const app::Session& session, const ViewOptions& options, Viewport viewport) {
+  return build_frame(session, options, lane_views(session, options.camera, CompareLayout::Together, viewport).front());
+}
+
+std::vector<Frame> build_frames(const app::Session& session, const ViewOptions& options, Viewport viewport) {
+  std::vector<Frame> frames;
+  for (const LaneView& view : lane_views(session, options.camera, options.compare_layout, viewport))
+    frames.push_back(build_frame(session, options, view));
+  return frames;
+}
+
+Frame build_frame(const app::Session& session, const ViewOptions& options, const LaneView& view) {
   Frame frame;
-  frame.viewport = viewport;
-  frame.camera = view_camera(options.camera, viewport.width, viewport.height);
+  frame.viewport = view.viewport;
+  frame.camera = view.view;
   const float wpp = frame.camera.world_per_pixel;
   const Scene& scene = session.scene();
   const Model& model = session.primary().sim.model();
@@ -97,7 +108,8 @@ Frame build_frame(const app::Session& session, const ViewOptions& options, Viewp
   }
 
   const bool compare = session.comparing();
-  for (const app::Lane& lane : session.lanes()) {
+  for (const int index : view.lanes) {
+    const app::Lane& lane = session.lanes()[index];
     // A lane that diverged: its last sane state, faded (its last good state may be blown up).
     const State& state = lane.sim.diverged() ? lane.sane : lane.sim.state();
     const Model& m = lane.sim.model();

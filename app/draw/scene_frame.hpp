@@ -4,6 +4,7 @@
 #pragma once
 
 #include "draw/frame.hpp"
+#include "draw/lane_views.hpp"
 #include "session/session.hpp"
 
 namespace springlab::draw {
@@ -21,13 +22,19 @@ struct ViewOptions {
   // blows up first.
   bool mode = false;
   float line_scale = 1.0f;  // presentation mode draws lines thicker
+  CompareLayout compare_layout = CompareLayout::Apart;  // compare's lanes: a view each, or one
 
   // Defaults for a scene: a surface hides the springs and particles it is made of.
   static ViewOptions for_scene(const Scene& scene);
 };
 
-// `viewport`: where in the framebuffer the scene goes (the whole of it when empty). A lane that
-// diverged is drawn as its last sane state (Lane::sane), faded: never its blown-up geometry.
+// The frames of a session's views (lane_views.hpp, as options.compare_layout lays them) in
+// `viewport`, where in the framebuffer the scene goes. A lane that diverged is drawn as its last
+// sane state (Lane::sane), faded: never its blown-up geometry.
+std::vector<Frame> build_frames(const app::Session& session, const ViewOptions& options, Viewport viewport);
+// One view's frame: its lanes, with its camera.
+Frame build_frame(const app::Session& session, const ViewOptions& options, const LaneView& view);
+// Every lane in one view of `viewport`.
 Frame build_frame(const app::Session& session, const ViewOptions& options, Viewport viewport);
 
 // Where a lane is, for a label beside it: the top of its bounding box (the sane state's for a

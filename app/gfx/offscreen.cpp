@@ -35,9 +35,9 @@ void Offscreen::render(const draw::Frame& frame, const std::function<void()>& ui
   read(out);
 }
 
-void Offscreen::draw(const draw::Frame& frame, const std::function<void()>& ui) {
+void Offscreen::draw(std::span<const draw::Frame> frames, const std::function<void()>& ui) {
   target_.bind_for_drawing();
-  renderer_->draw(frame, width_, height_);
+  renderer_->draw(frames, width_, height_);
   if (imgui_ && ui) {
     ImGuiIO& io = ImGui::GetIO();
     io.DisplaySize = ImVec2(static_cast<float>(width_), static_cast<float>(height_));

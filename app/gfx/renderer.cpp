@@ -103,10 +103,15 @@ Renderer::~Renderer() {
   glDeleteVertexArrays(4, arrays);
 }
 
-void Renderer::draw(const draw::Frame& frame, int fb_width, int fb_height) {
+void Renderer::draw(std::span<const draw::Frame> frames, int fb_width, int fb_height) {
   glViewport(0, 0, fb_width, fb_height);
-  glClearColor(frame.background.r, frame.background.g, frame.background.b, 1.0f);
+  const draw::Rgba background = frames.empty() ? draw::Frame().background : frames.front().background;
+  glClearColor(background.r, background.g, background.b, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  for (const draw::Frame& frame : frames) draw_view(frame, fb_width, fb_height);
+}
+
+void Renderer::draw_view(const draw::Frame& frame, int fb_width, int fb_height) {
   const draw::Viewport& v = frame.viewport;
   const int width = v.width > 0 ? v.width : fb_width, height = v.height > 0 ? v.height : fb_height;
   glViewport(v.x, fb_height - v.y - height, width, height);  // GL counts rows from the bottom

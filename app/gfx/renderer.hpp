@@ -2,6 +2,8 @@
 // in the window and headless. Owns its shaders and GPU buffers; needs a current GL 3.3 context.
 #pragma once
 
+#include <span>
+
 #include "draw/frame.hpp"
 #include "gfx/program.hpp"
 
@@ -14,10 +16,13 @@ class Renderer {
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
-  // Clears the bound framebuffer (fb_width x fb_height) and draws `frame` into its viewport.
-  void draw(const draw::Frame& frame, int fb_width, int fb_height);
+  // Clears the bound framebuffer (fb_width x fb_height) and draws each frame into its viewport
+  // (compare's lanes apart: a view each).
+  void draw(std::span<const draw::Frame> frames, int fb_width, int fb_height);
+  void draw(const draw::Frame& frame, int fb_width, int fb_height) { draw(std::span(&frame, 1), fb_width, fb_height); }
 
  private:
+  void draw_view(const draw::Frame& frame, int fb_width, int fb_height);
   void draw_planes(const draw::Frame& frame);
   void draw_meshes(const draw::Frame& frame);
   void draw_lines(const draw::Frame& frame, int width, int height);

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "draw/lane_views.hpp"
 #include "options/scene_options.hpp"
 
 namespace springlab::app {
@@ -17,6 +18,8 @@ struct AppSettings {
   // The lanes side by side, as named ("euler,verlet", or an IK scene's "ccd,fabrik"): the scene
   // kind's rows, checked against the scene where it is prepared (compare_rows).
   std::optional<std::string> compare;
+  // How they are shown: apart (a view each) or together (one view).
+  draw::CompareLayout compare_layout = draw::CompareLayout::Apart;
   std::optional<std::string> script;
   double ui_scale = 1.0;  // times the display's own scale
   std::string language;   // "zh-CN", "en"; empty: the environment's (desktop) or the browser's

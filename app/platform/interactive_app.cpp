@@ -63,6 +63,7 @@ InteractiveApp::InteractiveApp(Prepared first, const AppSettings& settings, std:
   const std::string name = first.scene.name;
   show(std::move(first), name);
   if (settings.compare) session_->set_compare_rows(session_->kind().lanes_named(*settings.compare, "--compare"));
+  ui_.view.compare_layout = settings.compare_layout;
   if (script) session_->play(std::move(*script));
   if (settings.accuracy) {
     ui_.accuracy = true;
@@ -144,6 +145,7 @@ ui::LessonBand InteractiveApp::band() const {
 
 void InteractiveApp::show(Prepared p, const std::string& name) {
   const auto compare = ui_.compare_choice;
+  const auto layout = ui_.view.compare_layout;  // (the class's choice, kept from scene to scene)
   const bool presentation = ui_.presentation;
   const float scale = ui_.scale;
   session_ = std::make_unique<Session>(std::move(p.scene), p.settings, 60.0);
@@ -153,6 +155,7 @@ void InteractiveApp::show(Prepared p, const std::string& name) {
   ui::UiState ui;
   ui.scale = scale;
   ui.view = draw::ViewOptions::for_scene(session_->scene());
+  ui.view.compare_layout = layout;
   ui.ranges = ui::Ranges::of(*session_);
   ui.scenes = shipped_scenes();
   ui.scene_name = name;
@@ -208,24 +211,28 @@ void InteractiveApp::set_scale(float scale) {
 }
 
 // Mouse on the scene: left drags a particle, right orbits (pans in 2D), middle pans, wheel zooms.
-void InteractiveApp::mouse(const draw::ViewCamera& camera, const draw::Viewport& viewport, double to_fb) {
+void InteractiveApp::mouse(const std::vector<draw::LaneView>& views, double to_fb) {
   const ImGuiIO& io = ImGui::GetIO();
   Session& session = *session_;
   const ui::Pointer pointer{io.MousePos.x * to_fb, io.MousePos.y * to_fb};
+  // The view under the pointer (apart, a lane's own), or the one a drag started in.
+  const draw::LaneView* under = draw::view_at(views, pointer.x, pointer.y);
+  if (!under) under = &views.front();  // (the camera moves on past the scene's edge)
   if (!io.WantCaptureMouse) {
-    if (ImGui::IsMouseClicked(ImGuiMouseButton_Left))
-      drag_ = ui::press(session, camera, viewport, pointer, 14.0 * ui_.scale);
+    if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !under->lanes.empty())
+      drag_ = ui::press(session, under->view, under->viewport, pointer, 14.0 * ui_.scale, under->lanes.front());
     const ImVec2 d = io.MouseDelta;
     if (ImGui::IsMouseDragging(ImGuiMouseButton_Right, 0.0f)) {
-      if (ui_.view.camera.view == View::Planar) ui::pan(ui_.view.camera, camera, d.x * to_fb, d.y * to_fb);
+      if (ui_.view.camera.view == View::Planar) ui::pan(ui_.view.camera, under->view, d.x * to_fb, d.y * to_fb);
       else ui::orbit(ui_.view.camera, d.x, d.y);
     }
     if (ImGui::IsMouseDragging(ImGuiMouseButton_Middle, 0.0f))
-      ui::pan(ui_.view.camera, camera, d.x * to_fb, d.y * to_fb);
+      ui::pan(ui_.view.camera, under->view, d.x * to_fb, d.y * to_fb);
     if (io.MouseWheel != 0.0f) ui::zoom(ui_.view.camera, io.MouseWheel);
   }
-  if (drag_ && ImGui::IsMouseDown(ImGuiMouseButton_Left)) ui::move(session, camera, viewport, pointer, *drag_);
-  if (drag_ && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+  const draw::LaneView* held = drag_ ? draw::view_of(views, drag_->lane) : nullptr;
+  if (drag_ && held && ImGui::IsMouseDown(ImGuiMouseButton_Left)) ui::move(session, held->view, held->viewport, pointer, *drag_);
+  if (drag_ && (!held || !ImGui::IsMouseDown(ImGuiMouseButton_Left))) {
     ui::release(session);
     drag_.reset();
   }
@@ -263,14 +270,11 @@ void InteractiveApp::keyboard() {
 
 void InteractiveApp::simulate() {
   Session& session = *session_;
-  const Counters before = session.primary().sim.counters();
+  const std::vector<Counters> before = ui::lane_counters(session);
   const auto sim_start = Clock::now();
   session.advance_frame();
   stats_.sim_ms = std::chrono::duration<double, std::milli>(Clock::now() - sim_start).count();
-  const Counters& after = session.primary().sim.counters();
-  stats_.force_evals = after.force_evals - before.force_evals;
-  stats_.linear_solves = after.linear_solves - before.linear_solves;
-  stats_.solver_iterations = after.solver_iterations - before.solver_iterations;
+  ui::count_frame(stats_, session, before);
   // The real-time factor over the last second: simulated time (what the lanes reached) against
   // the wall clock. Below 1 the simulation cannot keep up and the app slows down with it,
   // rather than drop simulated time; the panels say by how much.
@@ -297,11 +301,13 @@ void InteractiveApp::frame(const FrameSize& size) {
   draw::Viewport viewport = ui::scene_viewport(ui_, win_w, win_h);
   viewport = {static_cast<int>(viewport.x * to_fb), static_cast<int>(viewport.y * to_fb),
               static_cast<int>(viewport.width * to_fb), static_cast<int>(viewport.height * to_fb)};
-  const draw::ViewCamera camera = draw::view_camera(ui_.view.camera, viewport.width, viewport.height);
   // What the class changes (a drag, a slider, a key) interrupts a lesson: compared around the input.
   const std::uint64_t edits = session_->edits();
   for (auto& change : std::exchange(controls_, {})) change(*session_, ui_);
-  mouse(camera, viewport, to_fb);
+  // The views of the lanes (apart in compare: a view each), in framebuffer units.
+  const std::vector<draw::LaneView> views =
+      draw::lane_views(*session_, ui_.view.camera, ui_.view.compare_layout, viewport, static_cast<float>(2.0 * to_fb));
+  mouse(views, to_fb);
   keyboard();
 
   Session& session = *session_;
@@ -344,9 +350,9 @@ void InteractiveApp::frame(const FrameSize& size) {
   overlay.scale = scale * (ui_.presentation ? ui::kPresentationScale : 1.0f);
   overlay.caption = !ui_.panels;
   overlay.realtime = stats_.realtime;
-  ui::draw_overlay(session, camera,
-                   {static_cast<int>(viewport.x / to_fb), static_cast<int>(viewport.y / to_fb),
-                    static_cast<int>(viewport.width / to_fb), static_cast<int>(viewport.height / to_fb)},
+  const draw::Viewport in_window{static_cast<int>(viewport.x / to_fb), static_cast<int>(viewport.y / to_fb),
+                                 static_cast<int>(viewport.width / to_fb), static_cast<int>(viewport.height / to_fb)};
+  ui::draw_overlay(session, draw::lane_views(session, ui_.view.camera, ui_.view.compare_layout, in_window), in_window,
                    ui_.scene_name, overlay);
   if (requests.quit) quit_ = true;
   if (requests.language) language_ = requests.language;
@@ -365,7 +371,7 @@ void InteractiveApp::frame(const FrameSize& size) {
   ImGui::Render();
   target_.resize(size.fb_width, size.fb_height, samples_);
   target_.bind_for_drawing();
-  renderer_.draw(draw::build_frame(session, ui_.view, viewport), size.fb_width, size.fb_height);
+  renderer_.draw(draw::build_frames(session, ui_.view, viewport), size.fb_width, size.fb_height);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   target_.resolve();
   target_.blit_to_window(size.fb_width, size.fb_height);

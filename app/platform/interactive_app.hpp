@@ -115,7 +115,7 @@ class InteractiveApp {
 
  private:
   void show(Prepared prepared, const std::string& name);
-  void mouse(const draw::ViewCamera& camera, const draw::Viewport& viewport, double to_fb);
+  void mouse(const std::vector<draw::LaneView>& views, double to_fb);
   void keyboard();
   void simulate();
   ui::LessonBand band() const;

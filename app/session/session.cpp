@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <numbers>
 #include <limits>
 
 namespace springlab::app {
@@ -43,9 +44,7 @@ Session::Session(Scene scene, SimulationSettings settings, double fps, std::uniq
   } else if (scene_.model.gravity.squaredNorm() > 0.0) {
     scene_.model.gravity.cwiseAbs().maxCoeff(&watched_axis_);
   }
-  // A sane state keeps its particles within ten times the scene's size of its starting box.
-  const Vec3 lo = scene_.state.x.colwise().minCoeff().transpose(), hi = scene_.state.x.colwise().maxCoeff().transpose();
-  sane_reach_ = 10.0 * std::max({(hi - lo).norm(), scene_.camera.height, scene_.camera.distance, 1.0});
+  sane_reach_ = scene_reach(scene_);
   for (Lane& lane : lanes_) sample(lane);
 }
 
@@ -207,12 +206,32 @@ void Session::keep_if_sane(Lane& lane) {
   const Simulation& sim = lane.sim;
   if (sim.diverged()) return;
   const State& s = sim.state();
-  const Vec3 lo = scene_.state.x.colwise().minCoeff().transpose(), hi = scene_.state.x.colwise().maxCoeff().transpose();
-  const Vec3 centre = 0.5 * (lo + hi);
-  if (!((s.x.rowwise() - centre.transpose()).rowwise().norm().maxCoeff() <= sane_reach_)) return;
+  // Within the scene's bounds: every particle within the reach of the camera's target.
+  const Vec3& target = scene_.camera.target;
+  if (s.particle_count() > 0 && !((s.x.rowwise() - target.transpose()).rowwise().norm().maxCoeff() <= sane_reach_))
+    return;
+  // No spring past twice its longest sane length (its rest length, or its length at the start):
+  // a state blowing up stretches its springs before it leaves the bounds.
+  const Model& m = sim.model();
+  for (int k = 0; k < m.spring_count(); ++k) {
+    const int a = m.spring_a[k], b = m.spring_b[k];
+    const double start = (scene_.state.x.row(b) - scene_.state.x.row(a)).norm();
+    if (!((s.x.row(b) - s.x.row(a)).norm() <= 2.0 * std::max(m.rest_length[k], start))) return;
+  }
   lane.sane.x = s.x;
   lane.sane.v = s.v;
   lane.sane.t = s.t;
+}
+
+double scene_reach(const Scene& scene) {
+  // The half-diagonal of a 16:9 frame of the scene's camera (planar: `height` shown; orbit: the
+  // height the field of view shows at the target's distance), or the farthest starting particle.
+  const Camera& c = scene.camera;
+  const double half_height = c.view == View::Planar ? 0.5 * c.height : c.distance * std::tan(0.5 * c.fov * std::numbers::pi / 180.0);
+  double reach = half_height * std::hypot(1.0, 16.0 / 9.0);
+  const Points& x = scene.state.x;
+  if (x.rows() > 0) reach = std::max(reach, (x.rowwise() - c.target.transpose()).rowwise().norm().maxCoeff());
+  return reach;
 }
 
 void Session::step_once() {

@@ -43,8 +43,9 @@ struct Lane {
   // ago while a new one is made), and the job making the next, in the app's background mode.
   std::shared_ptr<const StabilityAnalysis> analysis;
   StabilityJob job;
-  // The last state that looked sane (positions within a few scene sizes of where they started):
-  // what a diverged lane is drawn as, never its blown-up geometry.
+  // The last state that looked sane (every particle within the scene's reach, scene_reach(), and
+  // no spring stretched past twice its rest or starting length): what a diverged lane is drawn
+  // as, never its blown-up geometry.
   State sane;
   // A free body's momentum (momentum.hpp) since it last became free (a drag pins what it holds)
   // and moving, against which the gauge and the momentum chart measure what the method changes
@@ -62,6 +63,10 @@ struct Lane {
   // session's background mode; otherwise the simulation makes it when it first steps).
   bool waiting() const { return !sim.ready(); }
 };
+
+// How far from its camera's target a scene's particles may be while it is sane: the
+// half-diagonal of a 16:9 frame of its camera, or its farthest particle at the start if farther.
+double scene_reach(const Scene& scene);
 
 // A lane's row (a method's or an IK solver's: its kind's).
 LaneRow lane_row(const Lane& lane);
@@ -232,7 +237,7 @@ class Session {
   std::optional<std::pair<double, std::vector<std::pair<double, Vec3>>>> path_;  // start, waypoints
   bool background_ = false;
   std::uint64_t edits_ = 0;
-  double sane_reach_ = 0.0;  // how far from the scene's start a sane state's particles stay
+  double sane_reach_ = 0.0;  // scene_reach(scene_)
 };
 
 }  // namespace springlab::app

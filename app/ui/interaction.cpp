@@ -15,12 +15,13 @@ draw::Ray ray_at(const draw::ViewCamera& camera, const draw::Viewport& viewport,
 }  // namespace
 
 std::optional<Drag> press(app::Session& session, const draw::ViewCamera& camera, const draw::Viewport& viewport,
-                          Pointer pointer, double radius_px) {
+                          Pointer pointer, double radius_px, int lane) {
   if (pointer.x < viewport.x || pointer.y < viewport.y || pointer.x >= viewport.x + viewport.width ||
       pointer.y >= viewport.y + viewport.height)
     return std::nullopt;
   // Nearest in screen space among the particles within reach of the pointer, the front one on ties.
-  const State& s = session.primary().sim.state();
+  const app::Lane& picked = session.lanes()[std::clamp<std::size_t>(lane, 0, session.lanes().size() - 1)];
+  const State& s = picked.sim.diverged() ? picked.sane : picked.sim.state();
   int best = -1;
   double best_d2 = radius_px * radius_px, best_depth = 2.0;
   for (int i = 0; i < s.particle_count(); ++i) {
@@ -37,6 +38,7 @@ std::optional<Drag> press(app::Session& session, const draw::ViewCamera& camera,
   if (best < 0) return std::nullopt;
   Drag drag;
   drag.particle = best;
+  drag.lane = lane;
   drag.plane_point = s.x.row(best).transpose();
   const draw::Ray r = ray_at(camera, viewport, pointer);
   drag.plane_normal = -r.direction;

@@ -9,7 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "chart/imgui_chart.hpp"
 #include "draw/camera.hpp"
+#include "draw/marks.hpp"
+#include "chart/text_wrap.hpp"
 #include "draw/palette.hpp"
 #include "draw/scene_frame.hpp"
 #include "springlab/text.hpp"
@@ -20,42 +23,74 @@ namespace {
 ImU32 u32(const draw::Rgba& c) { return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, c.a)); }
 
 
-const ImU32 kText = IM_COL32(240, 242, 245, 255), kBack = IM_COL32(10, 12, 14, 190);
+const ImU32 kText = IM_COL32(240, 242, 245, 255), kBack = IM_COL32(10, 12, 14, 190),
+            kSeparator = IM_COL32(90, 96, 108, 255);
 
-// The compare legend, top right: each lane's colour, name and its own clock (a lane that diverged
-// stopped).
+// All of it is the scene's: drawn under the windows (the stability region's over a view), in
+// Dear ImGui's background draw list.
+
+// The compare legend: each lane's colour, mark, name and its own clock (a lane that diverged
+// stopped). Together: every lane's, top right of the scene. Apart: a view's own, at its top left.
 struct Legend {
-  std::vector<std::string> rows;
+  std::vector<int> lanes;
+  std::vector<std::string> rows;  // wrapped to the room there is
+  std::vector<float> tops;        // each row's top, from the first's
   ImVec2 at;     // the first row's swatch
   ImVec4 box;    // its background: x0, y0, x1, y1
 };
 
-Legend legend_of(const app::Session& session, const draw::Viewport& viewport, float scale) {
-  const float pad = 10.0f * scale, line = ImGui::GetTextLineHeightWithSpacing();
+float swatch_width(float scale) { return 22.0f * scale; }
+
+// "; drawn as at 1.53 s" for a lane drawn as its last sane state, from a time before it diverged.
+std::string drawn_as(const app::Lane& lane) {
+  const Divergence* trouble = lane.sim.trouble();
+  if (!trouble || !lane.sim.diverged() || !(lane.sane.t < trouble->t - 1e-9)) return "";
+  char s[96];
+  std::snprintf(s, sizeof s, tr("; drawn as at %.3g s"), lane.sane.t);
+  return s;
+}
+
+// `text` wrapped to `width` pixels in the current font.
+std::string wrapped(const std::string& text, float width) {
+  return wrap_text(text, ImGui::GetFont(), ImGui::GetFontSize(), std::max(width, 1.0f));
+}
+
+Legend legend_of(const app::Session& session, const std::vector<int>& lanes, const draw::Viewport& viewport,
+                 bool right, float scale) {
+  const float pad = 10.0f * scale, spacing = ImGui::GetStyle().ItemSpacing.y;
+  const float swatch = swatch_width(scale);
+  const float room = viewport.width - 2.0f * pad - 12.0f - swatch - 10.0f * scale;
   Legend legend;
-  float width = 0.0f;
-  for (const app::Lane& lane : session.lanes()) {
-    const std::string row = app::lane_label(lane) + kind_panels(session.kind()).progress(lane);
-    width = std::max(width, ImGui::CalcTextSize(row.c_str()).x);
+  legend.lanes = lanes;
+  float width = 0.0f, height = 0.0f;
+  for (const int k : lanes) {
+    const app::Lane& lane = session.lanes()[k];
+    // A view's own title says too what it draws of a lane that diverged.
+    const std::string row = wrapped(app::lane_label(lane) + kind_panels(session.kind()).progress(lane) + (right ? "" : drawn_as(lane)), room);
+    const ImVec2 size = ImGui::CalcTextSize(row.c_str());
+    width = std::max(width, size.x);
+    legend.tops.push_back(height);
+    height += size.y + spacing;
     legend.rows.push_back(row);
   }
-  const float swatch = 22.0f * scale;
-  legend.at = ImVec2(viewport.x + viewport.width - pad - width - swatch - 10.0f * scale, viewport.y + pad);
-  legend.box = ImVec4(legend.at.x - 8, legend.at.y - 4, viewport.x + viewport.width - pad + 4,
-                      legend.at.y + legend.rows.size() * line + 2);
+  const float inner = swatch + 10.0f * scale + width;
+  const float x = right ? viewport.x + viewport.width - pad - inner : viewport.x + pad + 8.0f;
+  legend.at = ImVec2(x, viewport.y + pad);
+  legend.box = ImVec4(legend.at.x - 8, legend.at.y - 4, legend.at.x + inner + 4, legend.at.y + height + 2);
   return legend;
 }
 
 void draw_legend(const app::Session& session, const Legend& legend, float scale) {
-  ImDrawList* dl = ImGui::GetForegroundDrawList();
-  const float line = ImGui::GetTextLineHeightWithSpacing(), swatch = 22.0f * scale;
+  ImDrawList* dl = ImGui::GetBackgroundDrawList();
+  const float line = ImGui::GetTextLineHeight(), swatch = swatch_width(scale);
   dl->AddRectFilled(ImVec2(legend.box.x, legend.box.y), ImVec2(legend.box.z, legend.box.w), kBack, 4.0f);
   for (std::size_t k = 0; k < legend.rows.size(); ++k) {
-    const app::Lane& lane = session.lanes()[k];
-    const float y = legend.at.y + k * line;
+    const app::Lane& lane = session.lanes()[legend.lanes[k]];
+    const float y = legend.at.y + legend.tops[k];
     const draw::Rgba c = draw::lane_color(lane);
     dl->AddLine(ImVec2(legend.at.x, y + 0.5f * line), ImVec2(legend.at.x + swatch, y + 0.5f * line), u32(c),
                 4.0f * scale);
+    chart::draw_mark(dl, draw::lane_mark(lane), ImVec2(legend.at.x + 0.5f * swatch, y + 0.5f * line), 4.5f * scale, u32(c));
     dl->AddText(ImVec2(legend.at.x + swatch + 8.0f * scale, y), lane.sim.trouble() ? u32(draw::kDiverged) : kText,
                 legend.rows[k].c_str());
   }
@@ -86,13 +121,20 @@ std::string realtime_text(double realtime) {
   return s;
 }
 
-void draw_overlay(const app::Session& session, const draw::ViewCamera& camera, const draw::Viewport& viewport,
+void draw_overlay(const app::Session& session, const std::vector<draw::LaneView>& views, const draw::Viewport& viewport,
                   const std::string& scene_name, const OverlayOptions& options) {
-  ImDrawList* dl = ImGui::GetForegroundDrawList();
+  ImDrawList* dl = ImGui::GetBackgroundDrawList();
   const float scale = options.scale;
   const float pad = 10.0f * scale;
   const ImU32 text = kText, back = kBack;
   const ImU32 red = u32(draw::kDiverged);
+
+  // Apart: a thin line between the views.
+  if (views.size() > 1)
+    for (const draw::LaneView& v : views) {
+      const draw::Viewport& p = v.viewport;
+      dl->AddRect(ImVec2(p.x - 1.0f, p.y - 1.0f), ImVec2(p.x + p.width + 1.0f, p.y + p.height + 1.0f), kSeparator);
+    }
 
   if (options.caption) {
     char s[320];
@@ -119,24 +161,31 @@ void draw_overlay(const app::Session& session, const draw::ViewCamera& camera, c
     dl->AddText(p, text, s);
   }
 
+  // The legends: one for the lanes together, or a view's own title.
+  std::vector<Legend> legends;
+  if (session.comparing())
+    for (const draw::LaneView& v : views) legends.push_back(legend_of(session, v.lanes, v.viewport, views.size() == 1, scale));
   // A red label beside each lane that diverged, at the top of its last sane state (one under
-  // another, or under the legend, where they would overlap).
-  std::optional<Legend> legend;
-  if (session.comparing()) legend = legend_of(session, viewport, scale);
+  // another, or under the legend, where they would overlap), with the time it is drawn at; apart,
+  // its view's title says it.
   std::vector<ImVec4> placed;
-  if (legend) placed.push_back(legend->box);
-  for (const app::Lane& lane : session.lanes()) {
+  for (const Legend& legend : legends) placed.push_back(legend.box);
+  for (std::size_t index = 0; index < session.lanes().size() && views.size() == 1; ++index) {
+    const app::Lane& lane = session.lanes()[index];
     const Divergence* trouble = lane.sim.trouble();
-    if (!trouble) continue;
-    char s[160];
+    const draw::LaneView* view = draw::view_of(views, static_cast<int>(index));
+    if (!trouble || !view) continue;
+    char s[200];
     std::snprintf(s, sizeof s, tr("%s %s at t = %.3g s"), app::lane_label(lane).c_str(),
                   trouble->unstable ? tr("went unstable") : tr("diverged"), trouble->t);
-    const Eigen::Vector3d at = draw::project(camera, draw::label_anchor(lane), viewport.width, viewport.height);
-    const ImVec2 size = ImGui::CalcTextSize(s);
-    float x = viewport.x + static_cast<float>(at.x()) - 0.5f * size.x;
-    float y = viewport.y + static_cast<float>(at.y()) - size.y - 8.0f * scale;
-    x = std::clamp(x, viewport.x + pad, viewport.x + viewport.width - pad - size.x);
-    y = std::clamp(y, viewport.y + pad, viewport.y + viewport.height - pad - size.y);
+    const draw::Viewport& vp = view->viewport;
+    const std::string label = wrapped(s + drawn_as(lane), vp.width - 2.0f * pad - 10.0f);
+    const Eigen::Vector3d at = draw::project(view->view, draw::label_anchor(lane), vp.width, vp.height);
+    const ImVec2 size = ImGui::CalcTextSize(label.c_str());
+    float x = vp.x + static_cast<float>(at.x()) - 0.5f * size.x;
+    float y = vp.y + static_cast<float>(at.y()) - size.y - 8.0f * scale;
+    x = std::clamp(x, vp.x + pad, std::max(vp.x + pad, vp.x + vp.width - pad - size.x));
+    y = std::clamp(y, vp.y + pad, vp.y + vp.height - pad - size.y);
     // Its background (5 px either side, 2 above and below) clear of every one placed: moved under
     // the one it meets, 2 px apart (each move passes one box for good, so at most one a box).
     for (std::size_t moves = 0; moves <= placed.size(); ++moves) {
@@ -149,10 +198,10 @@ void draw_overlay(const app::Session& session, const draw::ViewCamera& camera, c
     }
     placed.push_back(ImVec4(x - 5, y - 2, x + size.x + 5, y + size.y + 2));
     dl->AddRectFilled(ImVec2(x - 5, y - 2), ImVec2(x + size.x + 5, y + size.y + 2), back, 4.0f);
-    dl->AddText(ImVec2(x, y), red, s);
+    dl->AddText(ImVec2(x, y), red, label.c_str());
   }
 
-  if (legend) draw_legend(session, *legend, scale);
+  for (const Legend& legend : legends) draw_legend(session, legend, scale);
 }
 
 }  // namespace springlab::ui

@@ -456,8 +456,17 @@ void pickers(const UiState& ui, Requests& requests) {
   // The lessons: the lecture, step by step (the band across the top then leads).
   if (!ui.lessons.empty()) {
     std::string current = tr("(none: explore freely)");
+    // (Its number and title where they fit the box, else "4 of 13": never a title cut mid-word.)
+    const float room = ImGui::CalcItemWidth() - ImGui::GetFrameHeight() - 2.0f * ImGui::GetStyle().FramePadding.x;
     for (std::size_t k = 0; k < ui.lessons.size(); ++k)
-      if (ui.lessons[k].first == ui.lesson) current = std::to_string(k + 1) + "  " + tr(ui.lessons[k].second);
+      if (ui.lessons[k].first == ui.lesson) {
+        current = std::to_string(k + 1) + "  " + tr(ui.lessons[k].second);
+        if (ImGui::CalcTextSize(current.c_str()).x > room) {
+          char s[64];
+          std::snprintf(s, sizeof s, tr("%zu of %zu"), k + 1, ui.lessons.size());
+          current = s;
+        }
+      }
     if (ImGui::BeginCombo(tr("lesson"), current.c_str())) {
       if (ImGui::Selectable(tr("(none: explore freely)"), ui.lesson.empty())) requests.lesson = "";
       for (std::size_t k = 0; k < ui.lessons.size(); ++k) {
@@ -554,6 +563,33 @@ void tools(app::Session& session, UiState& ui, const FrameStats& stats, float s,
     ImGui::TextDisabled(tr("a frame: %.1f ms simulating, %.1f drawing"), stats.sim_ms, stats.draw_ms);
   else
     ImGui::TextDisabled(tr("a frame: %lld force evaluations"), static_cast<long long>(stats.force_evals));
+  // Compare: each lane's part of it, in its colour, and how the lanes are shown.
+  if (session.comparing()) {
+    for (std::size_t k = 0; k < session.lanes().size() && k < stats.lanes.size(); ++k) {
+      const app::Lane& lane = session.lanes()[k];
+      const Counters& work = stats.lanes[k];
+      const std::string label = app::lane_label(lane);
+      const ImVec4 colour = lane.sim.diverged() ? kBeyond : v4(draw::lane_color(lane));
+      char line[200];
+      if (lane.sim.diverged())
+        std::snprintf(line, sizeof line, tr("%s: none (it diverged)"), label.c_str());
+      else if (work.solver_iterations > 0)
+        std::snprintf(line, sizeof line, tr("%s: %lld force evaluations + %lld solver iterations"), label.c_str(),
+                      static_cast<long long>(work.force_evals), static_cast<long long>(work.solver_iterations));
+      else
+        std::snprintf(line, sizeof line, tr("%s: %lld force evaluations"), label.c_str(), static_cast<long long>(work.force_evals));
+      ImGui::Indent();
+      text_wrapped(line, colour);
+      ImGui::Unindent();
+    }
+    ImGui::TextUnformatted(tr("lanes:"));
+    ImGui::SameLine();
+    if (ImGui::RadioButton(tr("apart"), ui.view.compare_layout == draw::CompareLayout::Apart))
+      ui.view.compare_layout = draw::CompareLayout::Apart;
+    ImGui::SameLine();
+    if (ImGui::RadioButton(tr("together"), ui.view.compare_layout == draw::CompareLayout::Together))
+      ui.view.compare_layout = draw::CompareLayout::Together;
+  }
   kind_panels(session.kind()).tools(session, ui, s);
   if (ImGui::CollapsingHeader(tr("A particle by keys"))) particle_by_keys(session, ui);
   if (ImGui::CollapsingHeader(tr("View and files"))) {
@@ -736,7 +772,9 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
 
   if (ui.panels && !layout.strip.empty()) strip(session, ui, layout, s);
   if (ui.panels && !layout.controls.empty()) controls_window(session, ui, stats, layout, docked, s, few, requests);
-  if (ui.panels && !layout.charts.empty()) charts_window(session, ui, layout, docked);
+  // (A lesson's accuracy chart takes the scene's and the charts' place: the charts are not drawn under it.)
+  const bool covered = !ui.lesson.empty() && ui.accuracy;
+  if (ui.panels && !layout.charts.empty() && !covered) charts_window(session, ui, layout, docked);
   if (ui.panels) region(session, ui, layout, s, width, height);
   divergence_window(session, ui, s, width, height);
   if (!ui.message.empty()) message_window(ui, s, width, height);
@@ -771,6 +809,30 @@ const KindPanels& mass_spring_panels() {
                                  mass_spring_charts,       mass_spring_charts_said,    mass_spring_compare_choice,
                                  mass_spring_caption,      mass_spring_progress};
   return panels;
+}
+
+std::vector<Counters> lane_counters(const app::Session& session) {
+  std::vector<Counters> now;
+  for (const app::Lane& lane : session.lanes()) now.push_back(lane.sim.counters());
+  return now;
+}
+
+void count_frame(FrameStats& stats, const app::Session& session, const std::vector<Counters>& before) {
+  stats.lanes.clear();
+  stats.force_evals = stats.linear_solves = stats.solver_iterations = 0;
+  for (std::size_t k = 0; k < session.lanes().size(); ++k) {
+    const Counters& after = session.lanes()[k].sim.counters();
+    Counters work;
+    if (k < before.size()) {
+      work.force_evals = after.force_evals - before[k].force_evals;
+      work.linear_solves = after.linear_solves - before[k].linear_solves;
+      work.solver_iterations = after.solver_iterations - before[k].solver_iterations;
+    }
+    stats.force_evals += work.force_evals;
+    stats.linear_solves += work.linear_solves;
+    stats.solver_iterations += work.solver_iterations;
+    stats.lanes.push_back(work);
+  }
 }
 
 }  // namespace springlab::ui

@@ -37,7 +37,13 @@ struct FrameStats {
   // Whether the wall-clock times are shown: not in `render`'s frames, which must be the same
   // pixels for the same inputs (golden images): its work is shown instead.
   bool timed = true;
+  // Each lane's work in the frame (the change of its counters); force_evals is their sum.
+  std::vector<Counters> lanes;
 };
+
+// Every lane's counters now, and the frame's work since `before` (from lane_counters) into stats.
+std::vector<Counters> lane_counters(const app::Session& session);
+void count_frame(FrameStats& stats, const app::Session& session, const std::vector<Counters>& before);
 
 // Slider ranges, from the scene as loaded.
 struct Ranges {

@@ -97,12 +97,13 @@ void apply_theme(float scale) {
   ImGuiStyle& style = ImGui::GetStyle();
   style.WindowRounding = 6.0f;
   style.FrameRounding = 4.0f;
-  style.GrabRounding = 4.0f;
+  style.GrabRounding = 1.0f;
   style.WindowBorderSize = 1.0f;
   style.FramePadding = ImVec2(8, 4);
   style.ItemSpacing = ImVec2(10, 6);
   style.WindowPadding = ImVec2(12, 10);
-  style.GrabMinSize = 14.0f;
+  // A slider's grab a thin bar, not a block over the value written across it.
+  style.GrabMinSize = 4.0f;
   ImVec4* c = style.Colors;
   // Near-white text on a near-black, slightly opaque background: readable from the back row.
   c[ImGuiCol_Text] = ImVec4(0.96f, 0.97f, 0.98f, 1.0f);

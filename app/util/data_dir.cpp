@@ -77,10 +77,19 @@ std::optional<Method> lookup_method(const std::string& name) {
 }
 
 std::string method_choices() {
-  std::string tableaux;
-  for (const std::string& n : shipped_tableaux())
-    if (!find_method(n)) tableaux += (tableaux.empty() ? "" : ", ") + n;
-  return "methods: " + method_names() + "; tableaux: " + tableaux + ", or a tableau's JSON file";
+  // The built-in rows, the shipped tableaux (added or not), and apart the user's own rows.
+  std::string tableaux, yours;
+  const std::vector<std::string> shipped = shipped_tableaux();
+  const auto built_in = [](const std::string& n) {
+    const auto rows = built_in_methods();
+    return std::any_of(rows.begin(), rows.end(), [&](const MethodInfo& m) { return n == m.name; });
+  };
+  for (const std::string& n : shipped)
+    if (!built_in(n)) tableaux += (tableaux.empty() ? "" : ", ") + n;
+  for (const MethodInfo& m : added_methods())
+    if (std::find(shipped.begin(), shipped.end(), m.name) == shipped.end()) yours += (yours.empty() ? "" : ", ") + std::string(m.name);
+  return "methods: " + method_names() + "; tableaux: " + tableaux + (yours.empty() ? "" : "; yours: " + yours) +
+         "; or a tableau's JSON file";
 }
 
 }  // namespace springlab::app

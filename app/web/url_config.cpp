@@ -122,6 +122,7 @@ AppSettings settings_from_link(const std::string& fragment) {
     }
     else if (key == "rho") s.sim.rho = number(key, value);
     else if (key == "compare") s.compare = value;  // (the scene kind's rows: checked once the scene is read)
+    else if (key == "compare-layout") s.compare_layout = draw::parse_compare_layout(value, "link: compare-layout");
     else if (key == "script") s.script = value;
     else if (key == "set") s.sim.sets.push_back(value);  // set=cloth.width%3D64, as --set
     else if (key == "lesson") s.lesson = value;
@@ -238,6 +239,8 @@ std::string link_of(const InteractiveApp& app, const std::vector<std::string>& s
     std::string lanes;
     for (const Lane& l : session.lanes()) lanes += (lanes.empty() ? "" : ",") + std::string(lane_row(l).name);
     link += "&compare=" + lanes;
+    if (app.ui().view.compare_layout != draw::CompareLayout::Apart)
+      link += "&compare-layout=" + std::string(draw::layout_name(app.ui().view.compare_layout));
   } else if (!file || session.method() != file->settings.method) {
     link += "&method=" + std::string(method_info(session.method()).name);
   }

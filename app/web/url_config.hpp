@@ -37,7 +37,7 @@ std::string link_of(const InteractiveApp& app, const std::vector<std::string>& s
                     const std::string& homework_js = {});
 
 // The names a link takes, for messages.
-inline constexpr const char* kLinkParameters = "scene, method, tableau, dt, substeps, ks, kd, iterations, rho, compare, script, set, accuracy, region, lesson, step, ui-scale, lang, homework";
+inline constexpr const char* kLinkParameters = "scene, method, tableau, dt, substeps, ks, kd, iterations, rho, compare, compare-layout, script, set, accuracy, region, lesson, step, ui-scale, lang, homework";
 // The longest code a link carries (browsers take links of 2 MB; 64 KB is many times a rope's).
 inline constexpr std::size_t kMaxHomework = 65536;
 

@@ -112,6 +112,9 @@ void bind_methods(py::module_& m) {
       .def_readonly("damping_shift", &MethodInfo::damping_shift)
       .def_readonly("corner_bound", &MethodInfo::corner_bound)
       .def_readonly("audited", &MethodInfo::audited, "whether the energy audit watches it")
+      .def_property_readonly("built_in",
+                             [](const MethodInfo& r) { return static_cast<std::size_t>(r.id) < built_in_methods().size(); },
+                             "whether the row is compiled in; else made this run (a tableau, a step of one's own)")
       .def_property_readonly("adaptive", &MethodInfo::adaptive)
       .def_property_readonly("implicit", &MethodInfo::implicit)
       .def_property_readonly("any_step", &MethodInfo::any_step, "stable at any step")
@@ -123,13 +126,14 @@ void bind_methods(py::module_& m) {
 
   m.def(
       "methods",
-      [] {
+      [](bool built_in) {
         std::vector<const MethodInfo*> rows;
-        for (const MethodInfo& r : springlab::methods()) rows.push_back(&r);
+        for (const MethodInfo& r : built_in ? springlab::built_in_methods() : springlab::methods()) rows.push_back(&r);
         return rows;
       },
-      py::return_value_policy::reference,
-      "the method table's rows: the built-in ones, then those made from tableaux so far");
+      py::return_value_policy::reference, py::arg("built_in") = false,
+      "the method table's rows: the built-in ones, then those made from tableaux so far (built_in=True: the built-in "
+      "ones only; each row's .built_in says which it is)");
   m.def(
       "method", [](const std::string& name) { return &method_info(method_named(name)); },
       py::return_value_policy::reference, py::arg("name"),

@@ -56,6 +56,24 @@ def test_a_tableau_named_as_a_method_becomes_a_row():
     assert springlab.method("rk4").source is None
 
 
+def test_a_users_tableau_is_listed_apart_from_the_built_in_methods(tmp_path):
+    # Heun's third-order tableau written by a user: once used, it is a row of the table, and the
+    # messages that list the methods name it apart ("yours: ..."), never among the built-in ones.
+    path = tmp_path / "my-heun3.json"
+    path.write_text('{"name": "my-heun3", "A": [[0, 0, 0], ["1/3", 0, 0], [0, "2/3", 0]], '
+                    '"b": ["1/4", 0, "3/4"], "c": [0, "1/3", "2/3"]}')
+    row = springlab.method(str(path))
+    assert row.name == "my-heun3" and not row.built_in and springlab.method("vbd").built_in
+    assert "my-heun3" in [m.name for m in springlab.methods()]
+    assert "my-heun3" not in [m.name for m in springlab.methods(built_in=True)]
+    with pytest.raises(springlab.InputError) as error:
+        springlab.method("no-such-method")
+    said = str(error.value)
+    built_in = said.split("methods: ")[1].split(";")[0]
+    assert "my-heun3" not in built_in and "vbd" in built_in, said
+    assert "yours: my-heun3" in said, said
+
+
 def test_one_modes_limit_in_closed_form():
     w, c = 10.0, 0.0
     assert springlab.mode_limit("symplectic-euler", c, w * w) == pytest.approx(2 / w)

@@ -95,7 +95,11 @@ TEST(NewRow, IsFoundShownAndDescribedFromItsRowAlone) {
   const MethodInfo& row = method_info(m);
   EXPECT_STREQ(row.name, "own-heun");
   EXPECT_GE(static_cast<std::size_t>(m), static_cast<std::size_t>(Method::VBD) + 1);
-  EXPECT_NE(method_names().find(", own-heun"), std::string::npos);
+  // A row of its own: in the table, and listed apart from the built-in ones in messages.
+  const auto added = added_methods();
+  EXPECT_TRUE(std::any_of(added.begin(), added.end(), [](const MethodInfo& r) { return std::string(r.name) == "own-heun"; }));
+  EXPECT_EQ(method_names().find("own-heun"), std::string::npos);
+  EXPECT_NE(app::method_choices().find("; yours: own-heun"), std::string::npos) << app::method_choices();
   EXPECT_EQ(tableau_source(m), nullptr);
   EXPECT_EQ(kept_summary(row), "P");
   EXPECT_EQ(iterations_for(m, {}), 1);

@@ -165,7 +165,7 @@ TEST(Lessons, BadLessonOptionsExitTwo) {
       {"render --lesson hoke" + out, "lesson 'hoke': no such file, and no shipped lesson of that name; did you mean 'hooke'?"},
       {"render" + out, "render: give a SCENE or --lesson NAME"},
       {"render spring --lesson hooke" + out, "render: give a SCENE or --lesson NAME"},
-      {"render --lesson hooke --method rk4" + out, "render --lesson: the lesson sets each step's"},
+      {"render --lesson hooke --method rk4" + out, "render --lesson: a lesson is recorded with its own values"},
       {"view --lesson hooke --step 3 --frames 1", "--step: lesson 'hooke' has steps 1 to 2, got 3"},
       {"lesson check nope", "lesson 'nope': no such file"},
   };
@@ -174,6 +174,26 @@ TEST(Lessons, BadLessonOptionsExitTwo) {
     EXPECT_EQ(r.status, 2) << command;
     EXPECT_NE(r.err.find(message), std::string::npos) << command << ": " << r.err;
   }
+}
+
+// A lesson takes none of the class's values (its captions state its own), and says how to record
+// each step with them instead: its scene's render command, which runs.
+TEST(Lessons, RenderWithTheClassesValuesGivesEachStepsCommand) {
+  TempDir dir;
+  const Result r = springlab("render --lesson damping-buys-a-limit --dt 0.01 --kd 1 --out " + (dir / "f").string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_FALSE(std::filesystem::exists(dir / "f"));
+  const std::string step = "step 1: springlab render damped-spring --method euler --dt 0.01 ";
+  const std::size_t at = r.err.find(step);
+  ASSERT_NE(at, std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("step 2: springlab render damped-spring"), std::string::npos) << r.err;
+  std::string command = r.err.substr(at + 8 + std::string("springlab ").size());
+  command = command.substr(0, command.find('\n'));
+  EXPECT_NE(command.find("--kd 1 "), std::string::npos) << command;
+  command.replace(command.find("--out step1"), std::string("--out step1").size(), "--frames 2 --out " + (dir / "step1").string());
+  const Result run = springlab(command);
+  EXPECT_TRUE(run.status == 0 || run.status == 3) << command << ": " << run.err;
+  EXPECT_TRUE(std::filesystem::exists(dir / "step1" / "frame_00001.png")) << command;
 }
 
 TEST(Lessons, RenderPlaysEveryStepForItsDuration) {

@@ -53,6 +53,26 @@ TEST(Render, WritesAnH264Video) {
   EXPECT_EQ(read_file(dir / "probe"), "h264,320,180,yuv420p,30\n");
 }
 
+// What render says is what it wrote: the frames and the times they show. In compare a lane that
+// diverges is the lesson: said, each lane's verdict on stdout, exit 0 while a lane runs on; one
+// lane that diverged is a render that could not show what was asked (exit 3, its reason on stderr).
+TEST(Render, SaysTheFramesAndTimesItWroteAndWhichLaneDiverged) {
+  TempDir dir;
+  const std::string rope = "render rope --substeps 1 --dt 2e-4 --size 320x180 --software --select 60,300 ";
+  const Result compared = springlab(rope + "--compare euler,symplectic-euler,rk4 --out " + (dir / "c").string());
+  EXPECT_EQ(compared.status, 0) << compared.err;
+  EXPECT_NE(compared.out.find("rendered 2 frames of rope (320x180, 60 frames/s: frames 60 to 300, t = 1 to 5 s)"),
+            std::string::npos) << compared.out;
+  EXPECT_NE(compared.out.find("diverged   euler: diverged during step"), std::string::npos) << compared.out;
+  EXPECT_NE(compared.out.find("Drawn from then on as it was at t = "), std::string::npos) << compared.out;
+  EXPECT_EQ(compared.out.find("diverged   rk4"), std::string::npos) << compared.out;
+  EXPECT_TRUE(fs::exists(dir / "c" / "frame_00300.png"));
+  const Result alone = springlab(rope + "--method euler --out " + (dir / "a").string());
+  EXPECT_EQ(alone.status, 3) << alone.out;
+  EXPECT_NE(alone.err.find("springlab: rope: diverged during step"), std::string::npos) << alone.err;
+  EXPECT_NE(alone.out.find("frames 60 to 300, t = 1 to 5 s"), std::string::npos) << alone.out;
+}
+
 TEST(Render, WithoutFfmpegVideoFailsAtOnceSayingHowToInstallIt) {
   TempDir dir;
   // Run with a PATH where there is no ffmpeg.
@@ -99,6 +119,8 @@ TEST(Render, BadOptionsExitTwoWithOneMessage) {
       {"render spring --out /proc/springlab/frames", "--out: cannot create the folder '/proc/springlab/frames'"},
       {"render spring --video /proc/springlab/v.mp4", "cannot write in folder '/proc/springlab'"},
       {"render nope" + out, "scene 'nope'"},
+      {"render spring --compare verlet,rk4 --compare-layout side" + out,
+       "--compare-layout: must be apart (a view each) or together (one view), got 'side'"},
   };
   for (const auto& [args, expected] : cases) {
     const Result r = springlab(args, dir.path);

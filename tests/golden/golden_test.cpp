@@ -3,6 +3,8 @@
 // actual image and a diff image (differing pixels in red over a faded copy, the worst window
 // outlined in yellow) beside the test output and says where. SPRINGLAB_UPDATE_GOLDENS=1
 // (scripts/update-goldens.sh) rewrites the references instead; nothing else ever does.
+// Every frame's text is checked too (render --check-text, ui/text_fit.hpp): in English in the same
+// run, and again in Chinese (TextFitInChinese), where nothing overlaps, is cut or is shortened.
 //
 // The metric. A pixel differs when any channel is off by more than kChannel (24 of 255). A pixel
 // is drawn when, in either image, it is off the background (the reference's most common colour)
@@ -99,10 +101,20 @@ std::string frame_file(int frame) {
   return name;
 }
 
-// Renders a case into `dir`; returns the frame's path.
+// The lines of `render --check-text`'s report: each piece of text that does not fit its place.
+std::string text_faults(const std::string& out) {
+  std::string faults;
+  std::istringstream lines(out);
+  for (std::string line; std::getline(lines, line);)
+    if (line.rfind("text ", 0) == 0) faults += "\n  " + line;
+  return faults;
+}
+
+// Renders a case into `dir`, its text checked (ui/text_fit.hpp); returns the frame's path.
 fs::path render(const Case& c, const fs::path& dir) {
-  const Result r = springlab("render " + c.args + " --software --out '" + dir.string() + "'", SPRINGLAB_SOURCE_DIR);
+  const Result r = springlab("render " + c.args + " --software --check-text --out '" + dir.string() + "'", SPRINGLAB_SOURCE_DIR);
   EXPECT_TRUE(r.status == 0 || r.status == 3) << c.name << ": " << r.err;
+  EXPECT_EQ(text_faults(r.out), "") << c.name << ": text that does not fit its place";
   return dir / frame_file(c.frame);
 }
 
@@ -233,6 +245,34 @@ TEST_P(Golden, MatchesItsReference) {
   }
 }
 
+// The same frames in Chinese (the cases not in it already): every piece of text fits its place,
+// the Chinese words and the CJK font's glyphs too. (Only the English frames are kept as pictures.)
+class TextFitInChinese : public ::testing::TestWithParam<Case> {};
+
+TEST_P(TextFitInChinese, EveryPieceOfTextFitsItsPlace) {
+  const Case& c = GetParam();
+  TempDir dir;
+  const Result r = springlab("render " + c.args + " --lang zh-CN --software --check-text --out '" + dir.path.string() + "'",
+                             SPRINGLAB_SOURCE_DIR);
+  EXPECT_TRUE(r.status == 0 || r.status == 3) << c.name << ": " << r.err;
+  EXPECT_EQ(text_faults(r.out), "") << c.name << " in Chinese: text that does not fit its place";
+}
+
+// (The cases in a language of their own already are checked in it by Golden.)
+std::vector<Case> english_cases() {
+  std::vector<Case> cases;
+  for (const Case& c : load_cases())
+    if (c.args.find("--lang") == std::string::npos) cases.push_back(c);
+  return cases;
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, TextFitInChinese, ::testing::ValuesIn(english_cases()), [](const auto& info) {
+  std::string name = info.param.name;
+  for (char& ch : name)
+    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+  return name;
+});
+
 INSTANTIATE_TEST_SUITE_P(Cases, Golden, ::testing::ValuesIn(load_cases()), [](const auto& info) {
   std::string name = info.param.name;
   for (char& ch : name)
@@ -314,7 +354,7 @@ TEST(Deterministic, SameFrameTwiceInOneProcess) {
   for (int k = 0; k < 30; ++k) session.advance_frame();
   gfx::Offscreen offscreen(true, 320, 180, 0.0f);
   const auto options = draw::ViewOptions::for_scene(session.scene());
-  const draw::Frame frame = draw::build_frame(session, options, {0, 0, 320, 180});
+  const draw::Frame frame = draw::build_frame(session, options, draw::Viewport{0, 0, 320, 180});
   app::Image first, second;
   offscreen.render(frame, {}, first);
   offscreen.render(frame, {}, second);

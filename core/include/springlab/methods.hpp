@@ -253,6 +253,10 @@ struct MethodInfo {
 };
 
 std::span<const MethodInfo> methods();
+/// The rows compiled in (the first of methods()), and the rows added since (add_method,
+/// add_tableau_method): a user's own are listed apart from the built-in ones.
+std::span<const MethodInfo> built_in_methods();
+std::span<const MethodInfo> added_methods();
 const MethodInfo& method_info(Method method);
 std::optional<Method> find_method(std::string_view name);
 
@@ -272,7 +276,7 @@ Method add_method(const MethodInfo& row);
 Method add_tableau_method(const ButcherTableau& tableau, const std::string& name);
 /// The tableau a row was made from (add_tableau_method); nullptr for a built-in row.
 const ButcherTableau* tableau_source(Method method);
-/// "euler, symplectic-euler, ..." for messages.
+/// "euler, symplectic-euler, ..., vbd": the built-in rows, for messages (a user's own rows apart).
 std::string method_names();
 
 /// Advances `in` by h into `out` (which must not be `in`) with the method, counting the work.

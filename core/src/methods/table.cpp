@@ -212,6 +212,10 @@ std::span<const MethodInfo> methods() {
   return {t.rows.data(), t.count.load(std::memory_order_acquire)};
 }
 
+std::span<const MethodInfo> built_in_methods() { return methods().first(std::size(kMethods)); }
+
+std::span<const MethodInfo> added_methods() { return methods().subspan(std::size(kMethods)); }
+
 const MethodInfo& method_info(Method method) { return table().rows[static_cast<std::size_t>(method)]; }
 
 std::optional<Method> find_method(std::string_view name) {
@@ -222,7 +226,7 @@ std::optional<Method> find_method(std::string_view name) {
 
 std::string method_names() {
   std::string names;
-  for (const MethodInfo& m : methods()) names += (names.empty() ? "" : ", ") + std::string(m.name);
+  for (const MethodInfo& m : built_in_methods()) names += (names.empty() ? "" : ", ") + std::string(m.name);
   return names;
 }
 

@@ -1,0 +1,165 @@
+// What the class sees in compare mode: every lane in a view of its own (lane_views.hpp), a lane
+// that diverged drawn as its last state within the scene's bounds (never its blown-up geometry),
+// a drag in a lane's view picking that lane's particle, and each lane's work in the frame.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "draw/camera.hpp"
+#include "draw/lane_views.hpp"
+#include "draw/scene_frame.hpp"
+#include "springlab/error.hpp"
+#include "support.hpp"
+#include "ui/interaction.hpp"
+#include "ui/panels.hpp"
+
+namespace springlab::test {
+namespace {
+
+app::Session rope_compared(double dt, const std::vector<Method>& methods) {
+  Scene scene = shipped("rope");
+  SimulationSettings s = settings_for(scene);
+  s.dt = dt;
+  s.substeps = 1;
+  s.auto_substeps = false;
+  app::Session session(std::move(scene), s, 60.0);
+  session.set_compare(methods);
+  return session;
+}
+
+const draw::Viewport kViewport{10, 20, 1280, 720};
+
+bool inside(const draw::Viewport& outer, const draw::Viewport& v) {
+  return v.x >= outer.x && v.y >= outer.y && v.x + v.width <= outer.x + outer.width && v.y + v.height <= outer.y + outer.height;
+}
+
+bool meet(const draw::Viewport& a, const draw::Viewport& b) {
+  return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
+}
+
+// Apart: a view each, within the scene's place, none over another, each framing at least the
+// width a 16:9 frame of the scene shows; together, one view of every lane.
+TEST(CompareView, ApartEveryLaneHasAViewOfItsOwn) {
+  for (std::size_t n : {2u, 3u, 4u}) {
+    const std::vector<Method> all = {Method::Euler, Method::SymplecticEuler, Method::RK4, Method::ImplicitEuler};
+    const app::Session session = rope_compared(1e-4, {all.begin(), all.begin() + n});
+    const Camera& camera = session.scene().camera;
+    const auto views = draw::lane_views(session, camera, draw::CompareLayout::Apart, kViewport);
+    ASSERT_EQ(views.size(), n);
+    std::vector<int> seen;
+    for (std::size_t k = 0; k < views.size(); ++k) {
+      const draw::LaneView& v = views[k];
+      EXPECT_TRUE(inside(kViewport, v.viewport)) << n << " lanes, view " << k;
+      ASSERT_EQ(v.lanes.size(), 1u);
+      seen.push_back(v.lanes.front());
+      // The world width it shows at its own aspect is at least a 16:9 frame's.
+      const double aspect = static_cast<double>(v.viewport.width) / v.viewport.height;
+      EXPECT_GE(v.camera.height * aspect, camera.height * 16.0 / 9.0 * (1 - 1e-9)) << n << " lanes, view " << k;
+      EXPECT_GE(v.camera.height, camera.height);
+      for (std::size_t j = k + 1; j < views.size(); ++j) EXPECT_FALSE(meet(v.viewport, views[j].viewport)) << k << ", " << j;
+      // The largest views it can: at least a quarter of the scene's place's height.
+      EXPECT_GE(v.viewport.height, kViewport.height / 2 - 2);
+    }
+    std::sort(seen.begin(), seen.end());
+    for (std::size_t k = 0; k < n; ++k) EXPECT_EQ(seen[k], static_cast<int>(k));
+    const auto together = draw::lane_views(session, camera, draw::CompareLayout::Together, kViewport);
+    ASSERT_EQ(together.size(), 1u);
+    EXPECT_EQ(together.front().lanes.size(), n);
+    EXPECT_EQ(draw::build_frames(session, draw::ViewOptions::for_scene(session.scene()), kViewport).size(), n);
+  }
+  EXPECT_EQ(draw::parse_compare_layout("together", "--compare-layout"), draw::CompareLayout::Together);
+  EXPECT_THROW(draw::parse_compare_layout("side", "--compare-layout"), InputError);
+}
+
+// Explicit Euler past its limit on the rope (h = 2e-4 s, twice its limit): once it has diverged
+// it is drawn as its last state within the scene's bounds, every spring short, never lines across
+// the frame; symplectic Euler and RK4, stable, are drawn as they are at every frame.
+TEST(CompareView, ADivergedLaneIsDrawnWithinTheScenesBounds) {
+  app::Session session = rope_compared(2e-4, {Method::Euler, Method::SymplecticEuler, Method::RK4});
+  const Model& model = session.primary().sim.model();
+  const double reach = app::scene_reach(session.scene());
+  int frames = 0;
+  for (; frames < 300 && !session.lanes()[0].sim.diverged(); ++frames) {
+    session.advance_frame();
+    for (std::size_t k = 1; k < session.lanes().size(); ++k)  // (a stable lane is never called insane)
+      EXPECT_EQ(session.lanes()[k].sane.t, session.lanes()[k].sim.state().t) << "frame " << frames << ", lane " << k;
+  }
+  ASSERT_TRUE(session.lanes()[0].sim.diverged()) << "explicit Euler should diverge within 300 frames";
+  for (int k = 0; k < 30; ++k) session.advance_frame();
+  const app::Lane& euler = session.lanes()[0];
+  EXPECT_LT(euler.sane.t, euler.sim.divergence()->t);
+  // Its last good state is far out; the one drawn is within the bounds, springs at most twice their length.
+  const auto spread = [&](const Points& x) {
+    return (x.rowwise() - session.scene().camera.target.transpose()).rowwise().norm().maxCoeff();
+  };
+  EXPECT_GT(spread(euler.sim.state().x), reach);
+  EXPECT_LE(spread(euler.sane.x), reach);
+  for (int s = 0; s < model.spring_count(); ++s)
+    EXPECT_LE((euler.sane.x.row(model.spring_b[s]) - euler.sane.x.row(model.spring_a[s])).norm(), 2.0 * model.rest_length[s] + 1e-9);
+  // Drawn: every line of its view within the view, none longer than a quarter of its width.
+  const draw::ViewOptions options = draw::ViewOptions::for_scene(session.scene());
+  const auto views = draw::lane_views(session, options.camera, draw::CompareLayout::Apart, kViewport);
+  const draw::Frame frame = draw::build_frame(session, options, views[0]);
+  ASSERT_FALSE(frame.lines.empty());
+  const draw::Viewport& v = views[0].viewport;
+  for (const draw::Line& line : frame.lines) {
+    const Eigen::Vector3d a = draw::project(frame.camera, line.a.cast<double>(), v.width, v.height);
+    const Eigen::Vector3d b = draw::project(frame.camera, line.b.cast<double>(), v.width, v.height);
+    for (const Eigen::Vector3d& p : {a, b}) {
+      EXPECT_GE(p.x(), -0.05 * v.width);
+      EXPECT_LE(p.x(), 1.05 * v.width);
+      EXPECT_GE(p.y(), -0.05 * v.height);
+      EXPECT_LE(p.y(), 1.05 * v.height);
+    }
+    EXPECT_LE((a - b).head<2>().norm(), 0.25 * v.width);
+    EXPECT_LT(line.color_a.a, 0.5f);  // faded
+  }
+}
+
+// A press in a lane's view picks that lane's particle where that lane has it (the lanes have
+// parted): the particle nearest the pointer in the view, grabbed in every lane.
+TEST(CompareView, APressInALanesViewPicksItsParticle) {
+  app::Session session = rope_compared(5e-4, {Method::SymplecticEuler, Method::Verlet});
+  for (int k = 0; k < 30; ++k) session.advance_frame();
+  // The second lane's particle 12 a metre to the right of the first's (as lanes that part have it).
+  const int particle = 12;
+  session.lanes()[1].sim.place(particle, session.lanes()[0].sim.state().x.row(particle).transpose() + Vec3(1.0, 0.0, 0.0));
+  const auto views = draw::lane_views(session, session.scene().camera, draw::CompareLayout::Apart, kViewport);
+  ASSERT_EQ(views.size(), 2u);
+  const draw::LaneView& second = views[1];
+  const Eigen::Vector3d at = draw::project(second.view, session.lanes()[1].sim.state().x.row(particle).transpose(),
+                                           second.viewport.width, second.viewport.height);
+  // (Where the first lane has it, the pointer would miss: the pick is the second lane's.)
+  const Eigen::Vector3d other = draw::project(second.view, session.lanes()[0].sim.state().x.row(particle).transpose(),
+                                              second.viewport.width, second.viewport.height);
+  ASSERT_GT((at - other).head<2>().norm(), 20.0);
+  const ui::Pointer pointer{at.x() + second.viewport.x, at.y() + second.viewport.y};
+  const auto drag = ui::press(session, second.view, second.viewport, pointer, 6.0, second.lanes.front());
+  ASSERT_TRUE(drag);
+  EXPECT_EQ(drag->particle, particle);
+  EXPECT_EQ(drag->lane, 1);
+  EXPECT_EQ(session.grabbed(), particle);
+}
+
+// The cost readout counts every lane: each lane's work in the frame, the total their sum, and a
+// lane that diverged none.
+TEST(CompareView, TheFramesWorkIsEachLanesAndTheirSum) {
+  app::Session session = rope_compared(2e-4, {Method::Euler, Method::RK4});
+  ui::FrameStats stats;
+  for (int k = 0; k < 200; ++k) {
+    const auto before = ui::lane_counters(session);
+    session.advance_frame();
+    ui::count_frame(stats, session, before);
+  }
+  ASSERT_TRUE(session.lanes()[0].sim.diverged());
+  ASSERT_EQ(stats.lanes.size(), 2u);
+  EXPECT_EQ(stats.lanes[0].force_evals, 0);
+  // RK4: four evaluations a step, a frame of 1/60 s at h = 2e-4 s is 83 or 84 steps.
+  EXPECT_GE(stats.lanes[1].force_evals, 4 * 83);
+  EXPECT_LE(stats.lanes[1].force_evals, 4 * 84);
+  EXPECT_EQ(stats.force_evals, stats.lanes[0].force_evals + stats.lanes[1].force_evals);
+}
+
+}  // namespace
+}  // namespace springlab::test
