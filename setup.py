@@ -47,6 +47,7 @@ class CMakeBuild(build_ext):
             sys.exit(f"springlab: CMake built no module in {build / 'python' / 'springlab'}")
         target.parent.mkdir(parents=True, exist_ok=True)
         shutil.copy2(built[0], target)
+        shutil.copy2(built[0].with_name("_build.py"), target.with_name("_build.py"))  # the interpreter it is for
 
 
 class WithData(build_py):
@@ -62,9 +63,9 @@ class WithData(build_py):
                 shutil.copy2(data, into / data.name)
 
 
-# setuptools' own build folder and its metadata, apart from CMake's build/ (scripts/build.sh's)
-# and out of the source tree's tracked folders.
-BUILD_BASE = Path(os.environ.get("SPRINGLAB_PIP_BUILD_BASE", ROOT / "build-pip"))
+# setuptools' own build folder and its metadata: build/pip, beside the files of CMake's build/
+# (scripts/build.sh's) and out of the source tree's tracked folders.
+BUILD_BASE = Path(os.environ.get("SPRINGLAB_PIP_BUILD_BASE", ROOT / "build" / "pip"))
 BUILD_BASE.mkdir(parents=True, exist_ok=True)
 
 setup(

@@ -8,7 +8,7 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 dir="${1:-$root/out/lessons}"
 shift || true
 "$root/scripts/setup.sh"
-"$root/scripts/build.sh" >/dev/null
+"$root/scripts/build.sh" --target springlab >/dev/null
 bin="${SPRINGLAB_BUILD_DIR:-$root/build}/springlab"
 mkdir -p "$dir"
 "$bin" lesson list | while read -r number name _; do

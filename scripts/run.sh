@@ -7,7 +7,7 @@
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 "$root/scripts/setup.sh"
-"$root/scripts/build.sh"
+"$root/scripts/build.sh" --target springlab  # (the tests, benchmarks and Python module: scripts/test.sh)
 bin="$root/build/springlab"
 if [[ $# -gt 0 ]]; then
   exec "$bin" "$@"

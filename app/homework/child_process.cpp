@@ -78,7 +78,7 @@ bool ChildProcess::write_line(const std::string& line) {
   const char* p = text.data();
   size_t left = text.size();
   while (left > 0) {
-    const ssize_t n = ::write(to_child_, p, left);  // SIGPIPE is ignored (main.cpp): EPIPE here
+    const ssize_t n = ::write(to_child_, p, left);  // SIGPIPE is ignored (cli/command_line.cpp): EPIPE here
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) return false;
     p += n;

@@ -19,7 +19,7 @@ namespace {
 // batch that fails is taken again a step at a time, so that a crash is told at its own step.
 constexpr int kAhead = 32;
 
-struct Lane {
+struct StudentLane {
   std::shared_ptr<RopeCode> code;
   Step step;
   bool springlab_rope = false;  // built through build_exercise (the code's constructor is not right)
@@ -69,7 +69,7 @@ RopeRequest as_rope(const Model& model, const State& in) {
   return r;
 }
 
-RopeState next_state(Lane& lane, const Model& model, const State& in, double h, const Vec2& gravity) {
+RopeState next_state(StudentLane& lane, const Model& model, const State& in, double h, const Vec2& gravity) {
   const int n = in.particle_count();
   const bool continues =
       lane.synced && lane.made.x.rows() == in.x.rows() && lane.made.x == in.x && lane.made.v == in.v;
@@ -95,7 +95,7 @@ RopeState next_state(Lane& lane, const Model& model, const State& in, double h, 
   return std::move(run.front());
 }
 
-void step_lane(Lane& lane, const Model& model, const State& in, State& out, double h) {
+void step_lane(StudentLane& lane, const Model& model, const State& in, State& out, double h) {
   const int n = in.particle_count();
   const RopeRequest request = as_rope(model, in);
   const Vec2 gravity = model.gravity.head<2>();
@@ -157,7 +157,7 @@ bool is_one_rope(const Model& model) {
 }
 
 OwnStep rope_lane_step(std::shared_ptr<RopeCode> code, Step step, bool springlab_rope) {
-  auto lane = std::make_shared<Lane>();
+  auto lane = std::make_shared<StudentLane>();
   lane->code = std::move(code);
   lane->step = step;
   lane->springlab_rope = springlab_rope;

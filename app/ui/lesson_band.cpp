@@ -13,7 +13,7 @@
 namespace springlab::ui {
 
 namespace {
-constexpr float kPad = 12.0f, kBar = 8.0f, kGap = 6.0f;
+constexpr float kBandPad = 12.0f, kBar = 8.0f, kGap = 6.0f;
 const ImVec4 kPrompt(0.55f, 0.85f, 1.0f, 1.0f), kTookOver(1.0f, 0.75f, 0.2f, 1.0f);
 }  // namespace
 
@@ -21,7 +21,7 @@ float lesson_band_height(float scale, int caption_lines, int title_rows, int pro
   const float row = kFontSize + 8.0f;                                         // a framed row (buttons)
   const float caption = std::max(2, caption_lines) * kFontSize * (narrow ? 1.0f : kCaptionScale) * 1.17f;  // its font
   const float prompt = kFontSize * 1.25f * std::max(1, prompt_lines);
-  return (2 * kPad + std::max(1, title_rows) * (row + kGap) + caption + prompt + kBar + 2 * kGap) * scale;
+  return (2 * kBandPad + std::max(1, title_rows) * (row + kGap) + caption + prompt + kBar + 2 * kGap) * scale;
 }
 
 namespace {
@@ -36,7 +36,7 @@ std::string caption_text(const std::string& caption, float width, float scale) {
   if (io.Fonts->Fonts.Size <= kCaptionFont) return caption;
   const ImFont* font = io.Fonts->Fonts[caption_font(width, scale)];
   if (!font->IsLoaded()) return caption;  // the atlas not built yet: no glyphs to measure
-  return wrap_text(caption, font, font->FontSize * font->Scale, width - 2 * kPad * scale);
+  return wrap_text(caption, font, font->FontSize * font->Scale, width - 2 * kBandPad * scale);
 }
 }  // namespace
 
@@ -72,7 +72,7 @@ TitleRows title_rows(const LessonBand& band, float width, float scale) {
   const ImFont* font = io.Fonts->Fonts[kPanelFont];
   const float size = font->FontSize * font->Scale;
   const auto text_w = [&](const char* t) { return font->CalcTextSizeA(size, FLT_MAX, 0.0f, t).x; };
-  const float inner = width - 2 * kPad * scale, spacing = 8.0f * scale, frame = ImGui::GetStyle().FramePadding.x;
+  const float inner = width - 2 * kBandPad * scale, spacing = 8.0f * scale, frame = ImGui::GetStyle().FramePadding.x;
   if (band.interactive)
     out.buttons_width = text_w(tr("\u2190 Back")) + text_w(next_label(band)) + text_w(tr("End lesson")) + 6 * frame +
                         2 * spacing;
@@ -91,7 +91,7 @@ std::string prompt_text(const LessonBand& band, float width, float scale) {
   const ImGuiIO& io = ImGui::GetIO();
   if (band.prompt.empty() || io.Fonts->Fonts.Size <= kPanelFont || !io.Fonts->Fonts[kPanelFont]->IsLoaded()) return text;
   const ImFont* font = io.Fonts->Fonts[kPanelFont];
-  return wrap_text(text, font, font->FontSize * font->Scale, width - 2 * kPad * scale);
+  return wrap_text(text, font, font->FontSize * font->Scale, width - 2 * kBandPad * scale);
 }
 
 float lesson_band_height(const LessonBand& band, float width, float scale) {
@@ -105,7 +105,7 @@ BandRequests draw_lesson_band(const LessonBand& band, float width, float scale) 
   const float height = lesson_band_height(band, width, scale);
   ImGui::SetNextWindowPos(ImVec2(0, 0));
   ImGui::SetNextWindowSize(ImVec2(width, height));
-  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(kPad * scale, kPad * scale));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(kBandPad * scale, kBandPad * scale));
   ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(8.0f * scale, kGap * scale));
   ImGui::PushStyleColor(ImGuiCol_WindowBg, ImVec4(0.03f, 0.04f, 0.05f, 0.97f));
   ImGui::Begin("##lesson", nullptr,
@@ -126,13 +126,13 @@ BandRequests draw_lesson_band(const LessonBand& band, float width, float scale) 
     out.end = ImGui::Button(tr("End lesson"));
   };
   if (title.buttons_above) {
-    ImGui::SetCursorPosX(std::max(ImGui::GetCursorPosX(), width - kPad * scale - title.buttons_width));
+    ImGui::SetCursorPosX(std::max(ImGui::GetCursorPosX(), width - kBandPad * scale - title.buttons_width));
     buttons();
   }
   ImGui::AlignTextToFramePadding();
   ImGui::TextDisabled("%s", title.title.c_str());
   if (band.interactive && !title.buttons_above) {
-    ImGui::SameLine(std::max(ImGui::GetCursorPosX(), width - kPad * scale - title.buttons_width));
+    ImGui::SameLine(std::max(ImGui::GetCursorPosX(), width - kBandPad * scale - title.buttons_width));
     buttons();
   }
 
@@ -146,7 +146,7 @@ BandRequests draw_lesson_band(const LessonBand& band, float width, float scale) 
   // What the class may try, or the way back once it has taken over; on the band's last row.
   const std::string prompt = prompt_text(band, width, scale);
   const int prompt_lines = 1 + static_cast<int>(std::count(prompt.begin(), prompt.end(), '\n'));
-  ImGui::SetCursorPosY(height - kPad * scale - kBar * scale - kGap * scale - kFontSize * 1.25f * scale * prompt_lines);
+  ImGui::SetCursorPosY(height - kBandPad * scale - kBar * scale - kGap * scale - kFontSize * 1.25f * scale * prompt_lines);
   if (band.interrupted && band.interactive) {
     ImGui::AlignTextToFramePadding();
     ImGui::TextColored(kTookOver, tr("You took over: the lesson waits."));
@@ -160,7 +160,7 @@ BandRequests draw_lesson_band(const LessonBand& band, float width, float scale) 
 
   // Progress: one segment a step, as long as its duration, filled up to now.
   ImDrawList* dl = ImGui::GetWindowDrawList();
-  const float x0 = kPad * scale, x1 = width - kPad * scale, y1 = height - kPad * scale, y0 = y1 - kBar * scale;
+  const float x0 = kBandPad * scale, x1 = width - kBandPad * scale, y1 = height - kBandPad * scale, y0 = y1 - kBar * scale;
   const double total = std::max(1e-9, std::accumulate(band.durations.begin(), band.durations.end(), 0.0));
   double start = 0.0;
   for (int k = 0; k < steps; ++k) {

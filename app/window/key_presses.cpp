@@ -1,5 +1,6 @@
 #include "window/key_presses.hpp"
 
+#define GLFW_INCLUDE_NONE  // (no OpenGL header here: gfx/gl.hpp brings epoxy where GL is drawn)
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 

@@ -448,7 +448,7 @@ IkChain read(const std::string& text) {
 }
 
 // The message of the InputError that reading `text` throws ("" when none).
-std::string error_of(const std::string& text) {
+std::string ik_error_of(const std::string& text) {
   try {
     read(text);
   } catch (const InputError& e) {
@@ -521,7 +521,7 @@ TEST(ReadIkChain, BadValuesNameTheFileAndTheField) {
       {R"({"links": [1], "base": [0, 0]})", "/ik/0/base"},
   };
   for (const auto& c : cases) {
-    const std::string message = error_of(c.text);
+    const std::string message = ik_error_of(c.text);
     EXPECT_NE(message.find("scene 'arm.json': "), std::string::npos) << c.text << " -> " << message;
     EXPECT_NE(message.find(c.path), std::string::npos) << c.text << " -> " << message;
   }
@@ -529,19 +529,19 @@ TEST(ReadIkChain, BadValuesNameTheFileAndTheField) {
   std::string links = R"({"links": [1)";
   for (int i = 1; i < kMaxIkLinks; ++i) links += ", 1";
   EXPECT_EQ(read(links + "]}").size(), kMaxIkLinks);
-  EXPECT_NE(error_of(links + ", 1]}").find("/ik/0/links: must be an array of 1 to 1000"),
+  EXPECT_NE(ik_error_of(links + ", 1]}").find("/ik/0/links: must be an array of 1 to 1000"),
             std::string::npos);
 }
 
 TEST(ReadIkChain, MessagesSayWhatIsAllowed) {
-  EXPECT_EQ(error_of(R"({"links": [1.0, 0]})"),
+  EXPECT_EQ(ik_error_of(R"({"links": [1.0, 0]})"),
             "scene 'arm.json': /ik/0/links/1: must be in (0, 1000], got 0");
-  EXPECT_EQ(error_of(R"({"links": [1, 1], "limits": [[90, -90], null]})"),
+  EXPECT_EQ(ik_error_of(R"({"links": [1, 1], "limits": [[90, -90], null]})"),
             "scene 'arm.json': /ik/0/limits/0: must have min < max, got [90,-90]");
-  EXPECT_EQ(error_of(R"({"links": [1, 1], "angles": [10]})"),
+  EXPECT_EQ(ik_error_of(R"({"links": [1, 1], "angles": [10]})"),
             "scene 'arm.json': /ik/0/angles: must be an array of one angle per link (2) in "
             "degrees, each in [-180, 180], got 1 entries");
-  EXPECT_EQ(error_of(R"({"links": [1], "limits": [[-90, 90]], "angles": [100]})"),
+  EXPECT_EQ(ik_error_of(R"({"links": [1], "limits": [[-90, 90]], "angles": [100]})"),
             "scene 'arm.json': /ik/0/angles/0: must be within the joint's limits [-90, 90] "
             "(\"limits\"), got 100");
 }

@@ -25,7 +25,7 @@ Lesson parse(const std::string& step, const std::string& top = "") {
 }
 
 // The message parsing `step` throws.
-std::string error_of(const std::string& step, const std::string& top = "") {
+std::string lesson_error_of(const std::string& step, const std::string& top = "") {
   try {
     parse(step, top);
   } catch (const InputError& e) {
@@ -130,7 +130,7 @@ TEST(Lesson, EachMistakeGetsOneMessageNamingTheFileAndTheField) {
        "/steps/0/claims/0/lane: solver-converges is about an iterative method's lane"},
   };
   for (const auto& [step, expected] : cases) {
-    const std::string message = error_of(step);
+    const std::string message = lesson_error_of(step);
     EXPECT_EQ(message.rfind(file, 0), 0u) << message;
     EXPECT_NE(message.find(expected), std::string::npos) << "expected '" << expected << "' in: " << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;

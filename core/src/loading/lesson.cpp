@@ -15,7 +15,7 @@ using json_reader::ObjectReader;
 
 namespace {
 
-std::string fmt(double x) {
+std::string four_digits(double x) {
   char s[32];
   std::snprintf(s, sizeof s, "%.4g", x);
   return s;
@@ -125,7 +125,7 @@ LessonClaim read_claim(ObjectReader& r, const LessonStep& step, const Scene& sce
   const json_reader::Range time = {0.0, step.duration};
   c.from = r.number("from", 0.0, time);
   if (r.has("to")) c.to = r.number("to", time);
-  if (c.to && *c.to <= c.from) r.fail("to", "must come after from (" + fmt(c.from) + " s)");
+  if (c.to && *c.to <= c.from) r.fail("to", "must come after from (" + four_digits(c.from) + " s)");
 
   const bool ik = scene.ik.has_value();
   const auto needs_dynamics = [&] {
@@ -324,29 +324,29 @@ std::string LessonClaim::describe() const {
   switch (kind) {
     case K::EnergyGrows: return who + "energy grows" + (per_step ? " by x" + precise(*per_step) + " a step" : "");
     case K::EnergyDecays: return who + "energy decays" + (per_step ? " by x" + precise(*per_step) + " a step" : "");
-    case K::EnergyBounded: return who + "energy stays within " + fmt(within) + " of its scale";
-    case K::Diverges: return who + "diverges by t = " + fmt(*by) + " s";
+    case K::EnergyBounded: return who + "energy stays within " + four_digits(within) + " of its scale";
+    case K::Diverges: return who + "diverges by t = " + four_digits(*by) + " s";
     case K::Holds: return who + "holds (no divergence, no instability)";
-    case K::FollowsExact: return who + "follows the exact solution within " + fmt(within) + " m";
-    case K::Limit: return who + "stated stability limit h = " + fmt(h) + " s";
-    case K::StepsAdapt: return who + "rejects tries, step varies x" + fmt(ratio) + " or more";
+    case K::FollowsExact: return who + "follows the exact solution within " + four_digits(within) + " m";
+    case K::Limit: return who + "stated stability limit h = " + four_digits(h) + " s";
+    case K::StepsAdapt: return who + "rejects tries, step varies x" + four_digits(ratio) + " or more";
     case K::MomentumKept: return "momentum and angular momentum kept";
-    case K::LinearMomentumKept: return who + "momentum kept to " + fmt(within) + " of sum m|v|";
-    case K::LinearMomentumChanges: return who + "momentum changes by more than " + fmt(above) + " of sum m|v|";
+    case K::LinearMomentumKept: return who + "momentum kept to " + four_digits(within) + " of sum m|v|";
+    case K::LinearMomentumChanges: return who + "momentum changes by more than " + four_digits(above) + " of sum m|v|";
     case K::DragSlows: return "centre of mass slows as exp(-k_drag n t / M)";
     case K::ActsAs:
-      return who + "at rest acts as k_s x" + (above > 0.0 ? fmt(above) + " or more" : "") +
-             (above > 0.0 && below > 0.0 ? ", " : "") + (below > 0.0 ? fmt(below) + " or less" : "");
-    case K::SolverConverges: return who + "nears the converged implicit-Euler step by x" + fmt(below) + " or less an iteration";
-    case K::InternalDecays: return "the wiggles (motion besides the rigid one) keep under " + fmt(below) + " of their kinetic energy";
+      return who + "at rest acts as k_s x" + (above > 0.0 ? four_digits(above) + " or more" : "") +
+             (above > 0.0 && below > 0.0 ? ", " : "") + (below > 0.0 ? four_digits(below) + " or less" : "");
+    case K::SolverConverges: return who + "nears the converged implicit-Euler step by x" + four_digits(below) + " or less an iteration";
+    case K::InternalDecays: return "the wiggles (motion besides the rigid one) keep under " + four_digits(below) + " of their kinetic energy";
     case K::OutOfReach: return who + "target out of reach, chain straight towards it";
-    case K::PosesDiffer: return "solvers reach the target in poses " + fmt(min) + " m apart or more";
+    case K::PosesDiffer: return "solvers reach the target in poses " + four_digits(min) + " m apart or more";
     case K::Orders: {
       std::string s = "orders";
-      for (const auto& [m, p] : orders) s += " " + m + " " + fmt(p);
+      for (const auto& [m, p] : orders) s += " " + m + " " + four_digits(p);
       return s + (best.empty() ? "" : "; most accurate for its cost: " + best);
     }
-    case K::Particles: return "about " + fmt(about) + " particles at t = " + fmt(*at) + " s";
+    case K::Particles: return "about " + four_digits(about) + " particles at t = " + four_digits(*at) + " s";
     case K::Bursts: return "bursts of " + std::to_string(count) + " particles";
   }
   return "";

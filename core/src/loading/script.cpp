@@ -13,7 +13,7 @@ using json_reader::positive;
 
 namespace {
 
-std::string fmt(double x) {
+std::string three_digits(double x) {
   std::ostringstream s;
   s.precision(3);
   s << x;
@@ -85,7 +85,7 @@ ScriptEvent read_event(ObjectReader& r, const Scene& scene) {
         json_reader::fail_at(r.where(), pointer, "must be a waypoint [dt, x, y, z], " + json_reader::describe(w));
       const double dt = json_reader::as_number(w[0], pointer + "/0", r.where(), {0.0, 1e7});
       if (dt <= last)
-        json_reader::fail_at(r.where(), pointer + "/0", "waypoint times must increase, got " + fmt(dt) + " after " + fmt(last));
+        json_reader::fail_at(r.where(), pointer + "/0", "waypoint times must increase, got " + three_digits(dt) + " after " + three_digits(last));
       last = dt;
       Vec3 x;
       for (int c = 0; c < 3; ++c)
@@ -137,11 +137,11 @@ std::vector<ScriptEvent> read_events(std::vector<ObjectReader> events, const Sce
 }
 
 std::string ScriptEvent::describe() const {
-  std::string s = "t = " + fmt(t) + " s: ";
+  std::string s = "t = " + three_digits(t) + " s: ";
   switch (kind) {
-    case Kind::Grab: return s + (near ? "grab the particle nearest (" + fmt(near->x()) + ", " + fmt(near->y()) + ", " + fmt(near->z()) + ")" : "grab particle " + std::to_string(particle));
+    case Kind::Grab: return s + (near ? "grab the particle nearest (" + three_digits(near->x()) + ", " + three_digits(near->y()) + ", " + three_digits(near->z()) + ")" : "grab particle " + std::to_string(particle));
     case Kind::Path: return s + "drag along " + std::to_string(path.size()) + " waypoints";
-    case Kind::Move: return s + "drag to (" + fmt(path[0].second.x()) + ", " + fmt(path[0].second.y()) + ", " + fmt(path[0].second.z()) + ")";
+    case Kind::Move: return s + "drag to (" + three_digits(path[0].second.x()) + ", " + three_digits(path[0].second.y()) + ", " + three_digits(path[0].second.z()) + ")";
     case Kind::Release: return s + "release";
     case Kind::Pause: return s + "pause";
     case Kind::Resume: return s + "resume";
@@ -150,15 +150,15 @@ std::string ScriptEvent::describe() const {
       std::string what;
       const auto add = [&](const std::string& x) { what += (what.empty() ? "" : ", ") + x; };
       if (method) add(std::string("method ") + method_info(*method).name);
-      if (ks) add("k_s " + fmt(*ks));
-      if (kd) add("k_d " + fmt(*kd));
-      if (dt) add("dt " + fmt(*dt));
+      if (ks) add("k_s " + three_digits(*ks));
+      if (kd) add("k_d " + three_digits(*kd));
+      if (dt) add("dt " + three_digits(*dt));
       if (substeps) add("substeps " + std::to_string(*substeps));
-      if (gravity) add("gravity " + fmt(gravity->y()));
-      if (drag) add("drag " + fmt(*drag));
-      if (friction) add("friction " + fmt(*friction));
-      if (mass) add("mass " + fmt(*mass));
-      if (speed) add("speed " + fmt(*speed));
+      if (gravity) add("gravity " + three_digits(gravity->y()));
+      if (drag) add("drag " + three_digits(*drag));
+      if (friction) add("friction " + three_digits(*friction));
+      if (mass) add("mass " + three_digits(*mass));
+      if (speed) add("speed " + three_digits(*speed));
       return s + "set " + what;
     }
   }

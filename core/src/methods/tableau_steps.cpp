@@ -109,14 +109,14 @@ void dirk_stages(const Tableau& tableau, const Model& model, const State& in, St
 // A step whose stages were not solved at h is taken as two of h / 2, and so on down to h / 16:
 // the same method over the same interval, as implicit integrators reject a step whose Newton
 // iteration fails (counted: Counters::halved_steps). Where even h / 16 is not solved, it fails.
-constexpr int kMaxHalvings = 4;
+constexpr int kMaxStepHalvings = 4;
 
 void dirk_halving(const Tableau& tableau, const Model& model, const State& in, State& out, double h,
                   const StepSettings& settings, Workspace& ws, int depth) {
   try {
     dirk_stages(tableau, model, in, out, h, settings, ws);
   } catch (const SolveFailure&) {
-    if (depth == kMaxHalvings) throw;
+    if (depth == kMaxStepHalvings) throw;
     ++ws.counters.halved_steps;
     State mid;
     dirk_halving(tableau, model, in, mid, 0.5 * h, settings, ws, depth + 1);

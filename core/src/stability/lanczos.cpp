@@ -76,7 +76,7 @@ Eigen::VectorXd top_eigenvector(const std::vector<double>& alpha, const std::vec
 
 // The calling thread's array of kept Lanczos vectors (uninitialised: a run writes each vector
 // before it reads it), and whether a run is using it.
-struct Kept {
+struct KeptVectors {
   std::unique_ptr<double[]> data;
   std::size_t capacity = 0;
   double* reserve(std::size_t size) {
@@ -89,7 +89,7 @@ struct Kept {
     return data.get();
   }
 };
-thread_local Kept g_kept;
+thread_local KeptVectors g_kept;
 thread_local bool g_kept_in_use = false;
 
 // Marks the thread's array in use for the run's lifetime (a nested run leaves it alone).
@@ -108,7 +108,7 @@ struct InUse {
 }  // namespace
 
 void release_lanczos_memory() {
-  if (!g_kept_in_use) g_kept = Kept{};
+  if (!g_kept_in_use) g_kept = KeptVectors{};
 }
 
 TopEigenpair top_eigenpair(const SymmetricOperator& apply, const Points& start, int max_steps, double tolerance) {
@@ -125,7 +125,7 @@ TopEigenpair top_eigenpair(const SymmetricOperator& apply, const Points& start, 
   // into the thread's own array (lanczos.hpp), room for all of them made at once; a run started
   // from inside another's `apply` on the same thread has an array of its own.
   const long keep = std::clamp<long>((64L << 20) / std::max<long>(1, 24L * n), 0, max_steps);
-  Kept own;
+  KeptVectors own;
   const bool nested = g_kept_in_use;
   const InUse in_use(nested);
   double* const kept = (nested ? own : g_kept).reserve(static_cast<std::size_t>(keep) * 3 * static_cast<std::size_t>(n));

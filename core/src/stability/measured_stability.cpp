@@ -1,7 +1,5 @@
 // Stability measured on the methods' own steps (stability.hpp): the amplification of one step
 // of the oscillator, and a scene's largest stable step found by running it.
-#include <Eigen/Eigenvalues>
-#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -12,6 +10,7 @@
 #include "springlab/simulation.hpp"
 #include "springlab/stability.hpp"
 #include "stability/cancel.hpp"
+#include "stability/dense_spectrum.hpp"
 
 namespace springlab {
 
@@ -102,7 +101,7 @@ OscillatorStep oscillator_step(Method method, double w, double c, double h, doub
 double amplification(Method method, double w, double c, double h, double verlet_damping) {
   const OscillatorStep s = oscillator_step(method, w, c, h, verlet_damping);
   double rho = 0.0;
-  const Eigen::VectorXcd mu = Eigen::EigenSolver<Eigen::MatrixXd>(s.matrix.topLeftCorner(s.size, s.size), false).eigenvalues();
+  const Eigen::VectorXcd mu = eigenvalues(s.matrix.topLeftCorner(s.size, s.size));
   for (const auto& z : mu) rho = std::max(rho, std::abs(z));
   return rho;
 }
@@ -118,14 +117,18 @@ double transient_growth(Method method, double gamma, double kappa, double h, dou
   const OscillatorStep s = oscillator_step(method, std::sqrt(kappa), std::max(gamma, 0.0), h, verlet_damping);
   const Eigen::Matrix2d D = Eigen::Vector2d(std::sqrt(kappa), 1.0).asDiagonal();
   const Eigen::Matrix2d T = D * s.matrix.topLeftCorner<2, 2>() * D.inverse();
-  const Eigen::EigenSolver<Eigen::Matrix2d> eigen(T);
+  Eigen::VectorXcd mu;
+  Eigen::MatrixXcd V;
+  eigen_decomposition(T, mu, V);
   double rho = 0.0;
-  for (int k = 0; k < 2; ++k) rho = std::max(rho, std::abs(eigen.eigenvalues()[k]));
+  for (int k = 0; k < 2; ++k) rho = std::max(rho, std::abs(mu[k]));
   if (!(rho <= 1.0 + 1e-12)) return kInf;
-  const Eigen::Matrix2cd V = eigen.eigenvectors();
-  const Eigen::JacobiSVD<Eigen::Matrix2cd> svd(V);
-  const double smallest = svd.singularValues()(1);
-  const double condition = smallest > 1e-12 * svd.singularValues()(0) ? svd.singularValues()(0) / smallest : kInf;
+  // cond(V) = s1 / s2 from the singular values of a 2 x 2 matrix: s1^2 + s2^2 = |V|_F^2 and
+  // s1 s2 = |det V|.
+  const double f = V.squaredNorm(), d = std::abs(V(0, 0) * V(1, 1) - V(0, 1) * V(1, 0));
+  const double largest_sv = std::sqrt(0.5 * (f + std::sqrt(std::max(f * f - 4.0 * d * d, 0.0))));
+  const double smallest = largest_sv > 0.0 ? d / largest_sv : 0.0;
+  const double condition = smallest > 1e-12 * largest_sv ? largest_sv / smallest : kInf;
   // |P|^2 of a 2 x 2 matrix: the larger eigenvalue of P^T P, from its trace (the entries'
   // squares) and determinant (det(P)^2).
   const auto norm2 = [](const Eigen::Matrix2d& P) {

@@ -18,7 +18,7 @@ namespace springlab {
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNoLimit = std::numeric_limits<double>::infinity();  // every step is stable
 using Complex = std::complex<double>;
 
 // |R(h lambda)|^2 - 1 has the sign of |P|^2 - |Q|^2 = sum_{m >= 1} c_m h^m for R = P / Q (Q = 1
@@ -96,7 +96,7 @@ bool grows(const GrowthPolynomial& poly, const Tableau& tableau, Complex lambda,
 double runge_kutta_exit(const Tableau& tableau, Complex lambda) {
   const std::vector<double>& gamma = tableau.numerator;
   const double size = std::abs(lambda);
-  if (!(size > 0.0)) return kInf;
+  if (!(size > 0.0)) return kNoLimit;
   if (lambda.real() > 0.0) return 0.0;
   if (gamma.size() == 2 && tableau.denominator.size() == 1) {
     // R(z) = 1 + gamma_1 z: |1 + h gamma_1 lambda| <= 1 up to h = -2 Re(lambda) / (gamma_1 |lambda|^2).
@@ -115,7 +115,7 @@ double runge_kutta_exit(const Tableau& tableau, Complex lambda) {
     }
     lo = h;
   }
-  if (hi == 0.0) return kInf;
+  if (hi == 0.0) return kNoLimit;
   for (int k = 0; k < 80 && hi - lo > 1e-15 * hi; ++k) {
     const double mid = 0.5 * (lo + hi);
     (grows_at(mid) ? hi : lo) = mid;
@@ -174,9 +174,9 @@ double mode_limit(Method method, double gamma, double kappa, double verlet_dampi
   if (info.adaptive()) return std::numeric_limits<double>::quiet_NaN();
   gamma = std::max(gamma, 0.0);
   kappa = std::max(kappa, 0.0);
-  if (gamma == 0.0 && kappa == 0.0) return kInf;  // a free motion: nothing to oscillate
+  if (gamma == 0.0 && kappa == 0.0) return kNoLimit;  // a free motion: nothing to oscillate
   if (info.mode_limit) return info.mode_limit(gamma, kappa, verlet_damping);
-  if (info.any_step()) return kInf;
+  if (info.any_step()) return kNoLimit;
   Complex first, second;
   mode_eigenvalues(gamma, kappa, first, second);
   return std::min(runge_kutta_limit(method, first), runge_kutta_limit(method, second));
@@ -184,7 +184,7 @@ double mode_limit(Method method, double gamma, double kappa, double verlet_dampi
 
 double runge_kutta_limit(Method method, std::complex<double> lambda) {
   const MethodInfo& info = method_info(method);
-  if (info.any_step()) return kInf;
+  if (info.any_step()) return kNoLimit;
   if (info.family != MethodFamily::RungeKutta) return std::numeric_limits<double>::quiet_NaN();
   return runge_kutta_exit(*info.tableau, lambda);
 }

@@ -8,7 +8,7 @@
 #include "springlab/text.hpp"
 
 #include <Eigen/Dense>
-#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -19,6 +19,7 @@
 
 #include "dynamics/threads.hpp"
 #include "stability/cancel.hpp"
+#include "stability/dense_spectrum.hpp"
 #include "stability/lanczos.hpp"
 #include "stability/linearised.hpp"
 #include "stability/sqrt_of_real.hpp"
@@ -436,7 +437,7 @@ void StabilityAnalysis::analyse(const Model& model, const State& state, int dens
     A.topRightCorner(n, n).setIdentity();
     A.bottomLeftCorner(n, n) = -K;
     A.bottomRightCorner(n, n) = -C;
-    const Eigen::VectorXcd lambdas = Eigen::EigenSolver<Eigen::MatrixXd>(A, false).eigenvalues();
+    const Eigen::VectorXcd lambdas = springlab::eigenvalues(A);
     // K^ and C^ are positive semidefinite: a positive real part is rounding. A direction with
     // no stiffness and no damping (a spring at rest turning about its anchor) is a double
     // eigenvalue 0 that rounding splits by about sqrt(eps) |A|: left out.

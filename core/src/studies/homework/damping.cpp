@@ -18,14 +18,12 @@ namespace springlab::homework {
 
 namespace {
 
-constexpr double kH = 1.0 / 1024;
-constexpr double kMass = 0.25;
 
 // What the step did to each mass: Euler's implied force m (v1 - v0) / h; Verlet's kept fraction
 // (x1 - x) . (x - x_last) / |x - x_last|^2.
 struct Motion {
   RopeState before, after;
-  double mass = kMass;  // each mass's, kg
+  double mass = kProbeMass;  // each mass's, kg
 };
 
 Motion move(const Bench& bench, const BuiltRope& rope, Step step, const Vec2 velocity[3]) {
@@ -34,20 +32,20 @@ Motion move(const Bench& bench, const BuiltRope& rope, Step step, const Vec2 vel
   m.before = at_rest(rope);
   for (int i = 0; i < 3; ++i) {
     if (step == Step::Euler) m.before[i].v = velocity[i];
-    else m.before[i].x_last = m.before[i].x - kH * velocity[i];
+    else m.before[i].x_last = m.before[i].x - kProbeH * velocity[i];
   }
-  m.after = bench.run(m.before, step, kH, Vec2::Zero(), 1).back();
+  m.after = bench.run(m.before, step, kProbeH, Vec2::Zero(), 1).back();
   return m;
 }
 
 // The force a motion's step implies on mass i, less what the same step gives masses at rest there
 // (`still`: the springs' own forces, whatever rule the code has for them), so damping alone.
 Vec2 force(const Motion& m, const Motion& still, int i) {
-  return m.mass * ((m.after[i].v - m.before[i].v) - (still.after[i].v - still.before[i].v)) / kH;
+  return m.mass * ((m.after[i].v - m.before[i].v) - (still.after[i].v - still.before[i].v)) / kProbeH;
 }
 
 // A coefficient worth naming: beyond rounding of the probe's own scale (m / h = 256 N s/m).
-bool present(double coefficient) { return std::abs(coefficient) > 1e-7 * kMass / kH; }
+bool present(double coefficient) { return std::abs(coefficient) > 1e-7 * kProbeMass / kProbeH; }
 
 void last_position_line(const Motion& m, CheckSection& section) {
   const MassState &s = m.before[1], &after = m.after[1];
@@ -75,7 +73,7 @@ Damping verlet_damping(const Bench& bench, const BuiltRope& rope, CheckSection& 
   double d[3];
   for (int i = 0; i < 3; ++i) {
     const Vec2 moved = (m.after[i].x - m.before[i].x) - (still.after[i].x - still.before[i].x);
-    d[i] = 1.0 - moved.dot(kH * u) / (kH * kH * u.squaredNorm());
+    d[i] = 1.0 - moved.dot(kProbeH * u) / (kProbeH * kProbeH * u.squaredNorm());
   }
   const double ends = 0.5 * (d[0] + d[2]), middle = d[1];
   Damping out;
@@ -211,7 +209,7 @@ Damping euler_damping(const Bench& bench, const BuiltRope& rope, CheckSection& s
     const Motion th = move(bench, heavy, Step::Euler, together), sh = move(bench, heavy, Step::Euler, none);
     const double c_heavy = -force(th, sh, 1).dot(u) / u.squaredNorm();
     if (std::abs(c_heavy - 4.0 * out.drag) <= 1e-3 * std::abs(4.0 * out.drag)) {
-      out.drag /= kMass;
+      out.drag /= kProbeMass;
       out.drag_rate = true;
     }
   }

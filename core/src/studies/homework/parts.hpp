@@ -110,6 +110,8 @@ std::vector<RopeRequest> every_rope();
 inline const Vec2 kCheckGravity(0.0, -8.0);
 inline constexpr double kCheckStep = 1.0 / 1024;
 inline constexpr int kCheckSteps = 64;
+/// The probes' step, s, and each mass, kg (probes.cpp, damping.cpp).
+inline constexpr double kProbeH = 1.0 / 1024, kProbeMass = 0.25;
 /// A match to springlab's row in double: within this fraction of a step's motion (rounding is
 /// 1e-10 here).
 inline constexpr double kMatch = 1e-8;

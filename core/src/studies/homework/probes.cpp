@@ -21,8 +21,6 @@ namespace springlab::homework {
 
 namespace {
 
-constexpr double kH = 1.0 / 1024;
-constexpr double kMass = 0.25;
 
 double largest(const std::vector<Vec2>& f) {
   double m = 0.0;
@@ -59,8 +57,8 @@ std::vector<Vec2> spring_forces(const BuiltRope& rope, const RopeState& s, Rule 
     Vec2 on_a = rule == Rule::NoRestLength ? Vec2(spring.k * ab) : Vec2(spring.k * (len - spring.rest) * ab / len);
     if (rule == Rule::Reversed) on_a = -on_a;
     if (rule == Rule::Twice) on_a *= 2.0;
-    if (rule == Rule::TimesStep) on_a *= kH;
-    if (rule == Rule::OverStep) on_a /= kH;
+    if (rule == Rule::TimesStep) on_a *= kProbeH;
+    if (rule == Rule::OverStep) on_a /= kProbeH;
     if (rule != Rule::SecondEndOnly) f[spring.m1] += on_a;
     if (rule != Rule::FirstEndOnly) f[spring.m2] -= on_a;
   }
@@ -95,10 +93,10 @@ Rule probe_springs(const Bench& bench, Step step, const Damping& damping, CheckS
   s[1].x = Vec2(0.625, 0.125);
   s[2].x = Vec2(1.0, 0.0);
   for (MassState& m : s) m.x_last = m.x;
-  const std::vector<RopeState> run = bench.run(s, step, kH, Vec2::Zero(), 2);
-  const std::vector<double> masses(3, kMass);
+  const std::vector<RopeState> run = bench.run(s, step, kProbeH, Vec2::Zero(), 2);
+  const std::vector<double> masses(3, kProbeMass);
   const double d = step == Step::Verlet ? damping.verlet : 0.0;
-  const std::vector<Vec2> got = implied_forces(step, masses, s, run[0], kH, d, bench.h_power);
+  const std::vector<Vec2> got = implied_forces(step, masses, s, run[0], kProbeH, d, bench.h_power);
   const Reading* best = &kReadings[0];
   double best_gap = INFINITY;
   for (const Reading& r : kReadings) {
@@ -130,7 +128,7 @@ Rule probe_springs(const Bench& bench, Step step, const Damping& damping, CheckS
     for (int i = 0; i < 3; ++i) due[i] += damped[i], kept[i] += damped[i];
   }
   for (int i = 0; i < 3; ++i) kept[i] += got[i];
-  const std::vector<Vec2> second = implied_forces(step, masses, s1, run[1], kH, d, bench.h_power);
+  const std::vector<Vec2> second = implied_forces(step, masses, s1, run[1], kProbeH, d, bench.h_power);
   if (relative_gap(second, due) <= 1e-3) pass(section, "cleared", tr("forces are cleared between steps"));
   else if (relative_gap(second, kept) <= 1e-3)
     fail(section, "forces-kept",
@@ -154,8 +152,8 @@ void probe_gravity(const Bench& bench, Step step, const Damping& damping, Rule r
   const BuiltRope rope = bench.build(three_masses({0}));
   const RopeState s = at_rest(rope);
   const Vec2 g(0.0, -8.0);
-  const RopeState after = bench.run(s, step, kH, g, 1).back();
-  const std::vector<double> masses(3, kMass);
+  const RopeState after = bench.run(s, step, kProbeH, g, 1).back();
+  const std::vector<double> masses(3, kProbeMass);
 
   const double pin_moved = (after[0].x - s[0].x).norm() + (step == Step::Euler ? after[0].v.norm() : 0.0);
   if (!(pin_moved == 0.0))
@@ -167,37 +165,37 @@ void probe_gravity(const Bench& bench, Step step, const Damping& damping, Rule r
 
   // Gravity alone: what the step implies less what the code's springs give (nothing, by Hooke's
   // law, at rest length; a constraint holds a horizontal rope to within (g h^2)^2 / L).
-  std::vector<Vec2> got = implied_forces(step, masses, s, after, kH, step == Step::Verlet ? damping.verlet : 0.0, bench.h_power);
+  std::vector<Vec2> got = implied_forces(step, masses, s, after, kProbeH, step == Step::Verlet ? damping.verlet : 0.0, bench.h_power);
   if (!constraints) {
     const std::vector<Vec2> springs = spring_forces(rope, s, rule);
     for (int i = 1; i < 3; ++i) got[i] -= springs[i];
   }
-  const Vec2 a = got[1] / kMass;
+  const Vec2 a = got[1] / kProbeMass;
   const double along = a.dot(g) / g.squaredNorm(), across = (a - along * g).norm() / g.norm();
   const GravityReading readings[] = {
       {1.0, "gravity", ""},
-      {1.0 / kMass, "gravity-no-mass", N_("gravity was added as a force without its mass (the force is m g)")},
+      {1.0 / kProbeMass, "gravity-no-mass", N_("gravity was added as a force without its mass (the force is m g)")},
       {2.0, "gravity-twice", N_("gravity is applied twice (added as m g to the forces and as g to the acceleration?)")},
       {0.0, "no-gravity", N_("gravity is left out")},
       {-1.0, "gravity-sign", N_("gravity has the wrong sign")},
-      {kMass, "gravity-times-mass", N_("gravity was multiplied by the mass where it is an acceleration (a = g, not m g)")},
-      {kH, "gravity-times-step", N_("gravity was multiplied by the step (its force is m g, not m g h)")},
-      {1.0 / kH, "verlet-a-h", N_("gravity moves a mass by g h in a step, not g h^2: the acceleration is multiplied by delta_t "
+      {kProbeMass, "gravity-times-mass", N_("gravity was multiplied by the mass where it is an acceleration (a = g, not m g)")},
+      {kProbeH, "gravity-times-step", N_("gravity was multiplied by the step (its force is m g, not m g h)")},
+      {1.0 / kProbeH, "verlet-a-h", N_("gravity moves a mass by g h in a step, not g h^2: the acceleration is multiplied by delta_t "
                                   "once (x_next = x + (1 - d)(x - x_last) + a delta_t^2)")},
   };
   // The nearest reading within 1e-3 of its own size (of h's, for none: 0 and h are 1e-3 apart).
   const GravityReading* found = nullptr;
   double nearest = INFINITY;
   for (const GravityReading& r : readings) {
-    const double size = std::max(std::abs(r.factor), kH), off = std::abs(along - r.factor) / size;
+    const double size = std::max(std::abs(r.factor), kProbeH), off = std::abs(along - r.factor) / size;
     if (off <= 1e-3 && across <= 1e-3 * std::max(1.0, std::abs(r.factor)) && off < nearest) nearest = off, found = &r;
   }
   if (found && found->factor == 1.0)
     pass(section, "gravity", format_text(tr("gravity: each free mass falls at g = %s m/s^2 (to %s)"), vec(g).c_str(),
                                          num(std::abs(along - 1.0) + across).c_str()));
-  else if (found && ((found->factor == kH && rule == Rule::TimesStep) || (found->factor == 1.0 / kH && rule == Rule::OverStep)))
+  else if (found && ((found->factor == kProbeH && rule == Rule::TimesStep) || (found->factor == 1.0 / kProbeH && rule == Rule::OverStep)))
     note(section, "gravity", tr("gravity: scaled with the springs' forces (above)"));
-  else if (found && !(found->factor == 1.0 / kH && step == Step::Euler))
+  else if (found && !(found->factor == 1.0 / kProbeH && step == Step::Euler))
     fail(section, found->key, format_text(tr("%s: a free mass falls at %s m/s^2 where g = %s"), tr(found->says), vec(a).c_str(),
                                           vec(g).c_str()));
   else
@@ -243,7 +241,7 @@ bool probe_verlet_kind(Bench& bench, CheckSection& section) {
     const RopeState after = bench.run(s, Step::Verlet, h, Vec2::Zero(), 1).back();
     return (1.25 - (after[1].x - after[0].x).norm()) / 0.25;
   };
-  const double at_h = taken(kH), at_half = taken(0.5 * kH);
+  const double at_h = taken(kProbeH), at_half = taken(0.5 * kProbeH);
   const double ratio = at_half == 0.0 ? INFINITY : at_h / at_half;
   if (at_h > 0.1 && std::abs(std::log2(ratio)) <= 0.3) {
     const double length = 1.25 - 0.25 * at_h;
