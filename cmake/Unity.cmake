@@ -42,4 +42,8 @@ function(springlab_unity target size)
     endforeach()
   endforeach()
   set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_MODE GROUP)
+  # GCC takes a .cpp included by a unit for a header, and a class there with a member of a type
+  # from an anonymous namespace for one that every includer would see differently
+  # (-Wsubobject-linkage); in a unit the file is included exactly once.
+  target_compile_options(${target} PRIVATE $<$<CXX_COMPILER_ID:GNU>:-Wno-subobject-linkage>)
 endfunction()

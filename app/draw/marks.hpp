@@ -16,7 +16,13 @@ namespace springlab::draw {
 
 using springlab::Mark;  // (a row's own, MethodInfo::mark)
 
-inline bool hollow(Mark m) { return m >= Mark::RingCircle && m <= Mark::RingTriangleDown; }
+inline bool hollow(Mark m) {
+  switch (m) {
+    case Mark::RingCircle: case Mark::RingSquare: case Mark::RingDiamond: case Mark::RingTriangleUp:
+    case Mark::RingTriangleDown: return true;
+    default: return false;
+  }
+}
 inline bool strokes(Mark m) { return m == Mark::Plus || m == Mark::Cross; }
 
 // The outline of a shape of radius 1 about (0, 0), y down (a screen's): a circle as 16 sides;

@@ -208,7 +208,6 @@ class Session {
   void play(Script script);
   void stop_script();  // the script's remaining events are dropped; what is held stays held
   const std::optional<Script>& script() const { return script_; }
-  std::size_t script_next() const { return next_event_; }
 
  private:
   void apply(const ScriptEvent& event);

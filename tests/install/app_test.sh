@@ -15,7 +15,7 @@ unset SPRINGLAB_DATA
 "$work/prefix/bin/springlab" run rope --duration 0.05 --csv rope.csv
 "$work/prefix/bin/springlab" render spring --lang zh-CN --ui --frames 1 --out frames | tee render.txt
 ls frames/*.png >/dev/null
-# Its data is the prefix's (the executable's ../share/springlab), not the source tree's: a scene
+# Its data is the prefix's (share/springlab beside the executable's bin), not the source tree's: a scene
 # only the prefix has is found by name.
 cp "$work/prefix/share/springlab/assets/scenes/spring.json" "$work/prefix/share/springlab/assets/scenes/only-installed.json"
 "$work/prefix/bin/springlab" run only-installed --duration 0.05 >/dev/null

@@ -34,8 +34,6 @@ T at(const double* p) {
   else return load(p);
 }
 
-inline f64x4 broadcast(double x) { return f64x4{x, x, x, x}; }
-
 inline f64x4 sqrt(f64x4 v) { return f64x4{std::sqrt(v[0]), std::sqrt(v[1]), std::sqrt(v[2]), std::sqrt(v[3])}; }
 inline double sqrt(double v) { return std::sqrt(v); }
 

@@ -106,9 +106,6 @@ struct Divergence {
   std::string message() const;  ///< one paragraph for people
 };
 
-/// "stable up to h = 0.0283 s", "unstable at any step without damping", ...
-std::string describe_limit(const StabilityLimit& limit);
-
 /// The Simulation: a model, its state and a method, advanced step by step, with everything a run
 /// must watch: contacts after each integrator step, divergence, cost, the energy dissipated and
 /// the energy audit. A step advances the time by dt in `substeps` integrator steps of
@@ -125,7 +122,6 @@ class Simulation {
 
   const Model& model() const { return model_; }
   const State& state() const { return current_; }
-  const State& initial_state() const { return initial_; }
   const Emission& emission() const { return emission_; }
   const SimulationSettings& settings() const { return settings_; }
   double h() const { return settings_.dt / settings_.substeps; }

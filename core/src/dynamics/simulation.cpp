@@ -35,8 +35,6 @@ void put_springs(Model& m, SpringArrays&& s) {
 
 }  // namespace
 
-std::string describe_limit(const StabilityLimit& limit) { return describe(limit); }
-
 SimulationSettings settings_for(const Scene& scene) {
   SimulationSettings s;
   s.method = scene.methods.front();

@@ -77,9 +77,6 @@ inline constexpr bool kAvailable = true;
 // Threads a parallel loop started now would have (omp_get_max_threads).
 inline int max_team() { return omp_get_max_threads(); }
 inline void set_max_team(int threads) { omp_set_num_threads(threads); }
-// Inside a parallel loop: its team's size and this thread's number.
-inline int team_size() { return omp_get_num_threads(); }
-inline int team_index() { return omp_get_thread_num(); }
 inline int processors() { return omp_get_num_procs(); }
 // Worker threads a sweep may run its runs on at once.
 inline int hardware_workers() { return static_cast<int>(std::thread::hardware_concurrency()); }
@@ -87,8 +84,6 @@ inline int hardware_workers() { return static_cast<int>(std::thread::hardware_co
 inline constexpr bool kAvailable = false;
 inline int max_team() { return 1; }
 inline void set_max_team(int) {}
-inline int team_size() { return 1; }
-inline int team_index() { return 0; }
 inline int processors() { return 1; }
 inline int hardware_workers() { return 1; }
 #endif
@@ -181,10 +176,10 @@ class Team {
 //
 // The one place that decides when a loop is worth a second thread: below kParallelWork
 // particle- and spring-visits a pass, one thread is taken to be faster than waking another. The
-// figure is the force pass's former threshold carried over to every pass, not yet measured for
-// each solver's (the crossover per pass kind is open work, said in issue 41's notes). A solver's pass (implicit Euler's products, local-global's
-// local step, a VBD colour) states its work in the same units: what one force pass over the same
-// particles and springs would visit.
+// figure is the force pass's threshold carried over to every pass, not yet measured for each
+// solver's. A solver's pass (implicit Euler's products, local-global's local step, a VBD colour)
+// states its work in the same units: what one force pass over the same particles and springs
+// would visit.
 inline constexpr double kParallelWork = 4096;
 inline bool worth_threads(double work) { return work >= kParallelWork && max_team() > 1; }
 
@@ -196,9 +191,8 @@ inline bool worth_threads(double work) { return work >= kParallelWork && max_tea
 // pieces (at least one every two of the thread's own pieces' time), and takes the rest from its
 // back once it stops, or at once if its owner has not begun it: one another program has parked
 // does nothing, and its run is done by the others. Taken sooner, a piece moves its data to the
-// taker's caches and back to its owner's for the next pass: with the two cores' caches 380 ns
-// apart rather than 83 (a virtual machine's cores placed apart), a CG iteration took 79 us taking
-// at once, 71 leaving working owners be. The caller takes whatever the helpers leave. What a piece computes must not depend on which
+// taker's caches and back to its owner's for the next pass (docs/decisions.md, "Taking a piece
+// from a helper's run"). The caller takes whatever the helpers leave. What a piece computes must not depend on which
 // thread runs it (each writes its own results), so that results are the same bits for any number
 // of threads.
 // `per_thread`, if given: the least work a thread is given (a pass that does not scale past a few

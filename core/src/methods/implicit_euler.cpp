@@ -25,13 +25,8 @@
 //     another program has parked is never waited for. Each particle's sum and each dot product
 //     (per block, then the blocks in order) is taken in an order the blocks alone fix, so results
 //     are bit-identical for any number of threads.
-// Tried and set aside, on the same cloth: an assembled Eigen matrix (its parallel product waits
-// in barriers: 1 step/s, about 400 Jacobi iterations a step at 1e-10); a sparse Cholesky
-// factorisation each step (Eigen's SimplicialLDLT: 0.4 to 0.6 s); the factorisation of the matrix
-// of 10 steps before as preconditioner (the cloth turns: 100 to 450 iterations); incomplete
-// Cholesky (a third of the iterations, but sequential triangular solves costing two products each);
-// a coarse space of translations of 8-particle groups (a third of the iterations, but a
-// 1536-unknown coarse problem to solve exactly every iteration).
+// Other solvers tried and set aside, with their figures: docs/decisions.md, "Implicit Euler's
+// solve".
 //
 // Pinned particles keep dv = 0: their rows and columns of A are the identity's, which is exact
 // because their dv is known; their motion still enters b through K v.

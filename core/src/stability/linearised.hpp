@@ -31,7 +31,6 @@ class Linearised {
   int particles() const { return static_cast<int>(root_inv_mass_.size()); }
   int dofs() const { return 3 * static_cast<int>(free_.size()); }
   const std::vector<int>& free_particles() const { return free_; }
-  bool has_damping() const { return damping_bound_ > 0.0; }
 
   // y = a K^ x + b C^ x.
   void apply(double a, double b, const Points& x, Points& y) const;
