@@ -1,7 +1,6 @@
 // The mass-spring kind (scene_kind.hpp): a lane is a method's row, its simulation all it has.
 #include "session/scene_kind.hpp"
 
-#include "session/ik_kind.hpp"
 #include "session/session.hpp"
 #include "springlab/error.hpp"
 #include "springlab/text.hpp"
@@ -56,32 +55,8 @@ class MassSpringKind final : public SceneKind {
 
 }  // namespace
 
-std::optional<int> SceneKind::find(const std::string& name) const {
-  for (int k = 0; k < row_count(); ++k)
-    if (row(k).name == name) return k;
-  return std::nullopt;
-}
-
-std::vector<int> SceneKind::lanes_named(const std::string& list, const char* option) const {
-  std::vector<int> rows;
-  std::stringstream s(list);
-  for (std::string name; std::getline(s, name, ',');) {
-    const std::optional<int> row = find(name);
-    if (!row) throw InputError(std::string(option) + ": unknown " + row_noun() + " '" + name + "' (" + choices() + ")");
-    rows.push_back(*row);
-  }
-  if (rows.size() < 2 || rows.size() > Session::kMaxLanes) {
-    std::string example;
-    for (int k : compared_first()) example += (example.empty() ? "" : ",") + std::string(row(k).name);
-    throw InputError(std::string(option) + ": give 2 to " + std::to_string(Session::kMaxLanes) + " " + row_noun() +
-                     "s separated by commas, e.g. " + example);
-  }
-  return rows;
-}
-
-std::unique_ptr<SceneKind> make_scene_kind(const Scene& scene) {
-  if (scene.ik) return std::make_unique<IkKind>(*scene.ik);
-  return std::make_unique<MassSpringKind>(scene.methods);
+std::unique_ptr<SceneKind> make_mass_spring_kind(const std::vector<Method>& methods) {
+  return std::make_unique<MassSpringKind>(methods);
 }
 
 }  // namespace springlab::app

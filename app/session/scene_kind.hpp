@@ -104,7 +104,10 @@ class SceneKind {
   virtual bool strained() const { return true; }
 };
 
-// The kind of `scene`: the one place that asks (an "ik" part makes it inverse kinematics).
+// The kind of `scene`: the one place that asks (an "ik" part makes it inverse kinematics;
+// scene_kind.cpp).
 std::unique_ptr<SceneKind> make_scene_kind(const Scene& scene);
+// The mass-spring kind with these methods' rows first (mass_spring_kind.cpp).
+std::unique_ptr<SceneKind> make_mass_spring_kind(const std::vector<Method>& methods);
 
 }  // namespace springlab::app

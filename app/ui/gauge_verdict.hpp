@@ -1,4 +1,4 @@
-// The words and the colour of a lane's stability gauge (ui/panels.cpp draws them): h against its
+// The words and the colour of a lane's stability gauge (ui/mass_spring_panels.cpp draws them): h against its
 // method's limit, or what a method stable at any step pays instead (iterative_cost.hpp), what it
 // breaks (a free body's momentum, momentum.hpp; a box's cells, cells.hpp), and its divergence.
 // Kept apart from the drawing, so that the tests read the verdicts a class would.

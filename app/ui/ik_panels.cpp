@@ -15,6 +15,7 @@
 #include "springlab/text.hpp"
 #include "ui/live_charts.hpp"
 #include "ui/theme.hpp"
+#include "ui/widgets.hpp"
 
 namespace springlab::ui {
 
@@ -111,14 +112,6 @@ std::string progress(const app::Lane& lane) {
 const KindPanels& ik_panels() {
   static const KindPanels panels{controls, tools, strip, charts, charts_said, compare_choice, caption, progress};
   return panels;
-}
-
-const KindPanels& kind_panels(const app::SceneKind& kind) {
-  switch (kind.id()) {
-    case app::SceneKind::Id::InverseKinematics: return ik_panels();
-    case app::SceneKind::Id::MassSpring: break;
-  }
-  return mass_spring_panels();
 }
 
 }  // namespace springlab::ui

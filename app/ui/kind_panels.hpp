@@ -3,7 +3,7 @@
 // the overlay, the keys and the browser's words draw the frame around them and ask the session's
 // kind for its own, so that none of them asks which kind a scene is.
 //
-//   mass-spring          mass_spring_panels(): panels.cpp (its words: overlay.cpp)
+//   mass-spring          mass_spring_panels(): mass_spring_panels.cpp (its words: overlay.cpp)
 //   inverse kinematics   ik_panels(): ik_panels.cpp
 #pragma once
 
@@ -18,11 +18,12 @@
 namespace springlab::ui {
 
 struct KindPanels {
-  // The simulation's controls, under the pickers: the row's picker, the transport and the clocks,
-  // and what the kind sets and says ("few": presentation mode's fewer).
-  void (*controls)(app::Session& session, UiState& ui, const FrameStats& stats, const PanelLayout& layout, bool few);
+  // The simulation's controls, under the pickers: the row's picker, the transport and the clocks
+  // (ui/widgets.hpp), and what the kind sets and says (`presenting`: presentation mode's fewer).
+  void (*controls)(app::Session& session, UiState& ui, const FrameStats& stats, const PanelLayout& layout, bool presenting);
   // Under the controls: the kind's studies (their panels' buttons) and its compare choices.
-  void (*tools)(app::Session& session, UiState& ui, float s);
+  // (`scale`: the panels' scale, ui/layout.hpp.)
+  void (*tools)(app::Session& session, UiState& ui, float scale);
   // The upright strip's tail, after its menu, play and step buttons.
   void (*strip)(app::Session& session, UiState& ui, float button);
   // The charts' panel: a lesson step's (`only`), or the kind's own.
@@ -41,14 +42,5 @@ struct KindPanels {
 const KindPanels& kind_panels(const app::SceneKind& kind);
 const KindPanels& mass_spring_panels();
 const KindPanels& ik_panels();
-
-// Parts every kind's controls share (panels.cpp).
-// The single lane's row (a method, a solver): its number key and label, in its colour; nothing
-// while comparing. `label`: the combo's ("##method": none shown).
-void row_picker(app::Session& session, const char* label, bool coloured);
-// Pause, step, reset.
-void transport(app::Session& session);
-// Each lane's time, the speed, the real-time factor when the simulation cannot keep up.
-void clocks(app::Session& session, const FrameStats& stats);
 
 }  // namespace springlab::ui

@@ -1,6 +1,6 @@
 // The live charts of a session, as data (chart::Chart): the energy of each lane, the watched
 // particle's position (with the exact solution where there is one), its phase plot, an adaptive
-// lane's step, and what a free body's lanes keep of their momentum. The panels draw them (ui/panels.cpp) and the browser's accessible
+// lane's step, and what a free body's lanes keep of their momentum. The panels draw them (ui/mass_spring_panels.cpp) and the browser's accessible
 // document says them in words and gives their data (web/access.cpp, chart/chart_text.hpp).
 #pragma once
 

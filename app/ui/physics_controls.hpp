@@ -1,5 +1,5 @@
 // The physics' sliders as data: what each sets, its label, value and range, read from the session
-// and the ranges of the scene as loaded. The panels draw them (ui/panels.cpp) and the browser's
+// and the ranges of the scene as loaded. The panels draw them (ui/mass_spring_panels.cpp) and the browser's
 // accessible document offers them as its own sliders (web/access.cpp): one list, the same ranges.
 #pragma once
 
