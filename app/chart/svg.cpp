@@ -123,6 +123,40 @@ void write_series(std::ostringstream& s, const Chart& chart, const Map& mx, cons
 
 // The chart's drawing, in a picture of width x height: the root document's or a nested <svg>'s
 // (an inset). `id` keeps its clip path's name apart from another chart's in the same document.
+// The legend, in the corner of the plot where it hides the least (chart.hpp); that corner, or none
+// (no labelled series).
+std::optional<Corner> write_legend(std::ostringstream& s, const Chart& chart, double left, double right, double top,
+                                   double bottom, double font, double line, const char* text) {
+  const double kFont = font, kChar = 0.56 * font;
+  std::size_t chars = 0;
+  int rows = 0;
+  for (const Series& series : chart.series)
+    if (!series.label.empty()) {
+      chars = std::max(chars, series.label.size());
+      ++rows;
+    }
+  if (rows == 0) return std::nullopt;
+  const double w = chars * kChar + 44;
+  const Corner corner = legend_corner(chart, (w + 14) / (right - left), (rows * line + 12) / (bottom - top));
+  const bool on_left = corner == Corner::TopLeft || corner == Corner::BottomLeft;
+  const bool below = corner == Corner::BottomRight || corner == Corner::BottomLeft;
+  const double x = on_left ? left + 10 : right - w - 6, y0 = below ? bottom - rows * line - 6 : top + 6;
+  s << "<rect x=\"" << x - 6 << "\" y=\"" << y0 - 4 << "\" width=\"" << w + 8 << "\" height=\"" << rows * line + 8
+    << "\" rx=\"3\" fill=\"#0d0f12\" fill-opacity=\"0.85\"/>\n";
+  int row = 0;
+  for (const Series& series : chart.series) {
+    if (series.label.empty()) continue;
+    const double y = y0 + row++ * line + 0.5 * line;
+    s << "<line x1=\"" << x << "\" y1=\"" << y << "\" x2=\"" << x + 22 << "\" y2=\"" << y << "\" stroke=\""
+      << draw::hex(series.color) << "\" stroke-width=\"3\"" << (series.dashed ? " stroke-dasharray=\"5 3\"" : "")
+      << "/>\n<text x=\"" << x + 30 << "\" y=\"" << y + kFont * 0.35 << "\" fill=\""
+      << (series.escapes ? draw::hex(draw::kDiverged) : std::string(text)) << "\">"
+      << escape(series.label) << "</text>\n";
+    write_mark(s, series.mark, x + 11, y, 0.3 * kFont, draw::hex(series.color));
+  }
+  return corner;
+}
+
 void write_chart(std::ostringstream& s, const Chart& chart, double width, double height, const std::string& id) {
   constexpr double kFont = 15.0, kChar = 0.56 * kFont;  // DejaVu Sans's mean advance, roughly
   double xlo, xhi, ylo, yhi;
@@ -180,37 +214,8 @@ void write_chart(std::ostringstream& s, const Chart& chart, double width, double
   write_series(s, chart, mx, my, kFont, line, top, bottom, left);
   s << "</g>\n";
   std::optional<Corner> legend_at;
-  if (chart.legend && !chart.end_labels) {  // (end labels name the lines in its place)
-    std::size_t chars = 0;
-    int rows = 0;
-    for (const Series& series : chart.series)
-      if (!series.label.empty()) {
-        chars = std::max(chars, series.label.size());
-        ++rows;
-      }
-    if (rows > 0) {
-      // In the corner where it hides the least (chart.hpp).
-      const double w = chars * kChar + 44;
-      const Corner corner = legend_corner(chart, (w + 14) / (right - left), (rows * line + 12) / (bottom - top));
-      legend_at = corner;
-      const bool on_left = corner == Corner::TopLeft || corner == Corner::BottomLeft;
-      const bool below = corner == Corner::BottomRight || corner == Corner::BottomLeft;
-      const double x = on_left ? left + 10 : right - w - 6, y0 = below ? bottom - rows * line - 6 : top + 6;
-      s << "<rect x=\"" << x - 6 << "\" y=\"" << y0 - 4 << "\" width=\"" << w + 8 << "\" height=\"" << rows * line + 8
-        << "\" rx=\"3\" fill=\"#0d0f12\" fill-opacity=\"0.85\"/>\n";
-      int row = 0;
-      for (const Series& series : chart.series) {
-        if (series.label.empty()) continue;
-        const double y = y0 + row++ * line + 0.5 * line;
-        s << "<line x1=\"" << x << "\" y1=\"" << y << "\" x2=\"" << x + 22 << "\" y2=\"" << y << "\" stroke=\""
-          << draw::hex(series.color) << "\" stroke-width=\"3\"" << (series.dashed ? " stroke-dasharray=\"5 3\"" : "")
-          << "/>\n<text x=\"" << x + 30 << "\" y=\"" << y + kFont * 0.35 << "\" fill=\""
-          << (series.escapes ? draw::hex(draw::kDiverged) : std::string(text)) << "\">"
-          << escape(series.label) << "</text>\n";
-        write_mark(s, series.mark, x + 11, y, 0.3 * kFont, draw::hex(series.color));
-      }
-    }
-  }
+  if (chart.legend && !chart.end_labels)  // (end labels name the lines in its place)
+    legend_at = write_legend(s, chart, left, right, top, bottom, kFont, line, text);
   if (chart.inset) {
     // Over the corner that hides the least apart from the legend's (chart.hpp), on its backdrop.
     const Corner at = legend_corner(chart, kInsetWidth, kInsetHeight, legend_at);

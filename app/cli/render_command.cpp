@@ -300,13 +300,54 @@ void draw_shot(gfx::Offscreen& offscreen, Shot& shot, const ui::FrameStats& stat
     overlay.caption = !panels;
     ui::draw_overlay(session, views, viewport, shot.ui.scene_name, overlay);
   });
-  if (faults && std::getenv("DEBUG_RUNS"))
-    for (const auto& r : ui::text_runs(*ImGui::GetDrawData(), *ImGui::GetIO().Fonts))
-      std::printf("run [%.0f %.0f %.0f %.0f] clip [%.0f %.0f %.0f %.0f] %s\n", r.box.x, r.box.y, r.box.z, r.box.w, r.clip.x, r.clip.y, r.clip.z, r.clip.w, r.text.c_str());
   if (faults && ImGui::GetCurrentContext() && ImGui::GetDrawData())
     for (std::string& fault : ui::text_faults(ui::text_runs(*ImGui::GetDrawData(), *ImGui::GetIO().Fonts),
                                               ui::windows_of(*ImGui::GetDrawData())))
       faults->push_back(std::move(fault));
+}
+
+// The output, made before any work: a folder that cannot be written, or no ffmpeg, fails first.
+std::unique_ptr<FrameWriter> open_output(const RenderOptions& o, int width, int height, MadeFolder& folder) {
+  if (!o.out) return mp4_video(*o.video, width, height, o.fps);
+  std::error_code ec;
+  folder.path = *o.out;
+  folder.made = std::filesystem::create_directories(*o.out, ec);
+  if (ec || !std::filesystem::is_directory(*o.out))
+    throw InputError("--out: cannot create the folder '" + *o.out + "' (" + ec.message() + ")");
+  return png_sequence(*o.out);
+}
+
+// The shot frame k shows, brought to it: a lesson's next step made at its first frame (the one
+// before let go); otherwise its session advanced a frame past the shot's first, the work counted.
+Shot& shot_for_frame(Plan& plan, std::int64_t k, std::size_t& current, std::int64_t& shot_start, ui::FrameStats& stats,
+                     double fps, float scale) {
+  std::vector<Shot>& shots = plan.shots;
+  if (k - shot_start >= shots[current].frames) {  // the next step of a lesson
+    shot_start += shots[current].frames;
+    shots[current].session.reset();
+    ++current;
+  }
+  Shot& shot = shots[current];
+  if (!shot.session) {
+    shot = lesson_shot(*plan.lesson, static_cast<int>(current), plan.lesson_number, plan.lesson_count, fps, scale);
+  } else if (k > shot_start) {
+    Session& session = *shot.session;
+    const std::vector<Counters> before = ui::lane_counters(session);
+    const auto t0 = std::chrono::steady_clock::now();
+    session.advance_frame();
+    stats.sim_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    ui::count_frame(stats, session, before);
+  }
+  return shot;
+}
+
+// --check-text's verdict over the run's: text that does not fit fails a run that went well.
+int with_text_faults(int verdict, std::size_t text_faults) {
+  if (text_faults == 0) return verdict;
+  std::fflush(stdout);
+  std::fprintf(stderr, "springlab: render --check-text: %zu piece%s of text do%s not fit its place (listed above as 'text')\n",
+               text_faults, text_faults == 1 ? "" : "s", text_faults == 1 ? "es" : "");
+  return verdict == kOk ? kFailure : verdict;
 }
 
 int render(const RenderOptions& o) {
@@ -318,7 +359,6 @@ int render(const RenderOptions& o) {
 
   // What to render: one scene, or a lesson's steps one after another.
   Plan plan = plan_shots(o, scale);
-  std::vector<Shot>& shots = plan.shots;
   const std::optional<Lesson>& lesson = plan.lesson;
   const std::int64_t frames = plan.frames;
   if (!selected.empty() && *selected.rbegin() >= frames)
@@ -326,20 +366,8 @@ int render(const RenderOptions& o) {
                      std::to_string(frames - 1) + ")");
   // A lesson is drawn with the panels (its chart is the point of many steps) under its band.
   const bool panels = o.ui || lesson;
-
-  // Outputs first: a folder that cannot be written, or no ffmpeg, fails before any work.
-  std::unique_ptr<FrameWriter> writer;
   MadeFolder folder;
-  if (o.out) {
-    std::error_code ec;
-    folder.path = *o.out;
-    folder.made = std::filesystem::create_directories(*o.out, ec);
-    if (ec || !std::filesystem::is_directory(*o.out))
-      throw InputError("--out: cannot create the folder '" + *o.out + "' (" + ec.message() + ")");
-    writer = png_sequence(*o.out);
-  } else {
-    writer = mp4_video(*o.video, width, height, o.fps);
-  }
+  std::unique_ptr<FrameWriter> writer = open_output(o, width, height, folder);
 
   // Dear ImGui draws the panels (--ui) and, always, the caption and the compare legend.
   gfx::Offscreen offscreen(o.software, width, height, scale, o.fps);
@@ -373,22 +401,7 @@ int render(const RenderOptions& o) {
   std::size_t current = 0;
   std::int64_t shot_start = 0;  // the frame the current shot starts at
   for (std::int64_t k = 0; k < frames; ++k) {
-    if (k - shot_start >= shots[current].frames) {  // the next step of a lesson
-      shot_start += shots[current].frames;
-      shots[current].session.reset();
-      ++current;
-    }
-    Shot& shot = shots[current];
-    if (!shot.session) {
-      shot = lesson_shot(*lesson, static_cast<int>(current), plan.lesson_number, plan.lesson_count, o.fps, scale);
-    } else if (k > shot_start) {
-      Session& session = *shot.session;
-      const std::vector<Counters> before = ui::lane_counters(session);
-      const auto t0 = std::chrono::steady_clock::now();
-      session.advance_frame();
-      stats.sim_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-      ui::count_frame(stats, session, before);
-    }
+    Shot& shot = shot_for_frame(plan, k, current, shot_start, stats, o.fps, scale);
     if (drawn) collect();
     if (!selected.empty() && !selected.count(k)) continue;
     Session& session = *shot.session;
@@ -414,14 +427,8 @@ int render(const RenderOptions& o) {
               wall > 0 ? written / wall : 0.0, offscreen.renderer_name().c_str());
   std::printf("output     %s\n", (o.out ? *o.out : *o.video).c_str());
   // (a lesson's steps diverge where they mean to)
-  const int verdict = lesson ? kOk : lane_verdicts(*shots[current].session, plan.name);
-  if (o.check_text && text_faults > 0) {
-    std::fflush(stdout);
-    std::fprintf(stderr, "springlab: render --check-text: %zu piece%s of text do%s not fit its place (listed above as 'text')\n",
-                 text_faults, text_faults == 1 ? "" : "s", text_faults == 1 ? "es" : "");
-    return verdict == kOk ? kFailure : verdict;
-  }
-  return verdict;
+  const int verdict = lesson ? kOk : lane_verdicts(*plan.shots[current].session, plan.name);
+  return o.check_text ? with_text_faults(verdict, text_faults) : verdict;
 }
 
 }  // namespace

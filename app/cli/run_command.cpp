@@ -118,6 +118,45 @@ void print_iterative_account(const Simulation& sim) {
   }
 }
 
+// The stability line: the stiffest mode, h w_max, the method's limit and the mode that sets it.
+void print_stability(const Simulation& sim, const StabilityAnalysis& stability, const StabilityLimit& limit,
+                     const MethodInfo& m) {
+  if (stability.oscillates()) {
+    std::printf("stability  w_max = %s rad/s (Gershgorin bound %s), h w_max = %s; %s: %s", format(stability.w_max()).c_str(),
+                format(stability.w_bound()).c_str(), format(sim.h() * stability.w_max()).c_str(), m.name,
+                describe(limit).c_str());
+    if (limit.mode && std::isfinite(limit.h))
+      std::printf(", set by a mode of %s rad/s with damping ratio %s", format(limit.mode->w).c_str(),
+                  format(limit.mode->damping_ratio()).c_str());
+    std::printf(" (at the scene's equilibrium, %s, %s s)\n", stability.dense() ? "every eigenvalue" : "Lanczos",
+                format(stability.seconds()).c_str());
+  } else {
+    std::printf("stability  no oscillating modes (%s); %s: %s\n", stability.no_modes_reason().c_str(), m.name,
+                describe(limit).c_str());
+  }
+}
+
+// The cost line: force evaluations, and a solver's iterations, solves, corrections, halvings, or
+// an adaptive method's accepted and rejected steps.
+void print_cost(const Counters& c, const MethodInfo& m) {
+  std::printf("cost       %lld force evaluations", static_cast<long long>(c.force_evals));
+  if (m.family == MethodFamily::Iterative)
+    std::printf(", %lld solver iterations (%s)", static_cast<long long>(c.solver_iterations),
+                m.iteration_unit ? m.iteration_unit : "iterations");
+  else if (c.linear_solves)
+    std::printf(", %lld linear solves (%lld CG iterations)", static_cast<long long>(c.linear_solves),
+                static_cast<long long>(c.solver_iterations));
+  if (c.newton_corrections)
+    std::printf(", %lld Newton corrections (%.3g a step)", static_cast<long long>(c.newton_corrections),
+                static_cast<double>(c.newton_corrections) / static_cast<double>(std::max<std::int64_t>(1, c.accepted)));
+  if (c.halved_steps)
+    std::printf(", %lld steps halved (their stages not solved at the whole step)", static_cast<long long>(c.halved_steps));
+  if (m.adaptive())
+    std::printf(", %lld accepted and %lld rejected internal steps",
+                static_cast<long long>(c.accepted), static_cast<long long>(c.rejected));
+  std::printf("\n");
+}
+
 int run(const RunOptions& o) {
   Prepared p = prepare(o.scene, o.sim);
   if (p.scene.ik) return run_ik(p.scene, o.csv.has_value());
@@ -131,7 +170,7 @@ int run(const RunOptions& o) {
   Simulation sim(std::move(p.scene.model), std::move(p.scene.state), p.settings);
   const Energy initial = sim.energy();
   const Momentum initial_momentum = momentum(sim.model(), sim.state());
-  const StabilityAnalysis& stability = sim.stability();
+  const StabilityAnalysis& stability = sim.stability();  // (before the timed steps)
   const StabilityLimit limit = sim.stability_limit();
   warn_if_unstable(sim, p.scene.name);
 
@@ -171,35 +210,8 @@ int run(const RunOptions& o) {
   std::printf("energy     kinetic %s J, potential %s J, total %s J (initially %s J)\n",
               format(e.kinetic).c_str(), format(e.potential()).c_str(), format(e.total()).c_str(),
               format(initial.total()).c_str());
-  if (stability.oscillates()) {
-    std::printf("stability  w_max = %s rad/s (Gershgorin bound %s), h w_max = %s; %s: %s", format(stability.w_max()).c_str(),
-                format(stability.w_bound()).c_str(), format(sim.h() * stability.w_max()).c_str(), m.name,
-                describe(limit).c_str());
-    if (limit.mode && std::isfinite(limit.h))
-      std::printf(", set by a mode of %s rad/s with damping ratio %s", format(limit.mode->w).c_str(),
-                  format(limit.mode->damping_ratio()).c_str());
-    std::printf(" (at the scene's equilibrium, %s, %s s)\n", stability.dense() ? "every eigenvalue" : "Lanczos",
-                format(stability.seconds()).c_str());
-  } else {
-    std::printf("stability  no oscillating modes (%s); %s: %s\n", stability.no_modes_reason().c_str(), m.name,
-                describe(limit).c_str());
-  }
-  std::printf("cost       %lld force evaluations", static_cast<long long>(c.force_evals));
-  if (m.family == MethodFamily::Iterative)
-    std::printf(", %lld solver iterations (%s)", static_cast<long long>(c.solver_iterations),
-                m.iteration_unit ? m.iteration_unit : "iterations");
-  else if (c.linear_solves)
-    std::printf(", %lld linear solves (%lld CG iterations)", static_cast<long long>(c.linear_solves),
-                static_cast<long long>(c.solver_iterations));
-  if (c.newton_corrections)
-    std::printf(", %lld Newton corrections (%.3g a step)", static_cast<long long>(c.newton_corrections),
-                static_cast<double>(c.newton_corrections) / static_cast<double>(std::max<std::int64_t>(1, c.accepted)));
-  if (c.halved_steps)
-    std::printf(", %lld steps halved (their stages not solved at the whole step)", static_cast<long long>(c.halved_steps));
-  if (m.adaptive())
-    std::printf(", %lld accepted and %lld rejected internal steps",
-                static_cast<long long>(c.accepted), static_cast<long long>(c.rejected));
-  std::printf("\n");
+  print_stability(sim, stability, limit, m);
+  print_cost(c, m);
   if (iterative && !sim.diverged() && sim.state().t > 0.0) print_iterative_account(sim);
   if (!p.scene.cells.empty()) {
     // Springs cannot undo an inverted cell (cells.hpp): counted for every method.

@@ -72,6 +72,53 @@ std::vector<Frame> build_frames(const app::Session& session, const ViewOptions& 
   return frames;
 }
 
+namespace {
+
+// What the scene holds besides its particles: colliders, attractors (a small ball the size of
+// the softening) and the kind's guides (an IK chain: the circles bounding what its end can reach).
+void add_fixtures(Frame& frame, const Model& model, const app::SceneKind& kind, const ViewOptions& options) {
+  // Colliders.
+  const float size = std::max(1.0f, static_cast<float>(options.spacing) * 20.0f);
+  for (const PlaneCollider& p : model.planes)
+    frame.planes.push_back({p.point.cast<float>(), p.normal.cast<float>(), 4.0f * size, 0.5f});
+  for (const SphereCollider& s : model.spheres)
+    frame.spheres.push_back({s.center.cast<float>(), static_cast<float>(s.radius), kCollider});
+  // Attractors: a small ball at the centre, the size of the softening.
+  for (const Attractor& a : model.attractors)
+    frame.spheres.push_back({a.center.cast<float>(), static_cast<float>(std::min(a.softening, 2.0 * options.spacing)), kAttractor});
+  // The kind's guides (an IK chain: the circles bounding what its end can reach), in the x-y plane.
+  for (const app::GuideCircle& guide : kind.guides()) {
+    const Vec3f centre = guide.centre.cast<float>();
+    constexpr int kSegments = 128;
+    for (int k = 0; k < kSegments; ++k) {
+      const double a0 = 2 * std::numbers::pi * k / kSegments, a1 = 2 * std::numbers::pi * (k + 1) / kSegments;
+      const Vec3f p0 = centre + static_cast<float>(guide.radius) * Vec3f(std::cos(a0), std::sin(a0), 0.0f);
+      const Vec3f p1 = centre + static_cast<float>(guide.radius) * Vec3f(std::cos(a1), std::sin(a1), 0.0f);
+      frame.lines.push_back({p0, p1, kReach, kReach, 1.5f});
+    }
+  }
+}
+
+// The limiting mode (a lane analysed, not diverged): each particle's displacement in it, as an
+// arrow from the particle.
+void add_mode_arrows(Frame& frame, const app::Lane& lane, const State& state, const ViewOptions& options) {
+  const StabilityLimit& limit = lane.analysis->limit(lane.sim.settings().method);
+  if (!limit.mode || limit.mode->shape.rows() != state.particle_count()) return;
+  const Points& shape = limit.mode->shape;
+  const double length = 3.0 * options.spacing;
+  for (int i = 0; i < state.particle_count(); ++i) {
+    const double size = shape.row(i).norm();
+    if (size < 0.02) continue;
+    const Vec3f a = f(state.x.row(i)), b = f(state.x.row(i) + length * shape.row(i));
+    Rgba tip = kDiverged, tail = kDiverged;
+    tail.a = 0.3f;
+    tip.a = 0.4f + 0.6f * static_cast<float>(size);
+    frame.lines.push_back({a, b, tail, tip, 2.5f * options.line_scale});
+  }
+}
+
+}  // namespace
+
 Frame build_frame(const app::Session& session, const ViewOptions& options, const LaneView& view) {
   Frame frame;
   frame.viewport = view.viewport;
@@ -85,27 +132,8 @@ Frame build_frame(const app::Session& session, const ViewOptions& options, const
   const float radius = std::clamp(0.2f * spacing_px, 3.0f, 13.0f) * wpp * std::sqrt(options.line_scale);
   const float line_width = std::clamp(0.07f * spacing_px, 1.5f, 4.0f) * options.line_scale;
 
-  // Colliders.
-  const float size = std::max(1.0f, static_cast<float>(options.spacing) * 20.0f);
-  for (const PlaneCollider& p : model.planes)
-    frame.planes.push_back({p.point.cast<float>(), p.normal.cast<float>(), 4.0f * size, 0.5f});
-  for (const SphereCollider& s : model.spheres)
-    frame.spheres.push_back({s.center.cast<float>(), static_cast<float>(s.radius), kCollider});
-  // Attractors: a small ball at the centre, the size of the softening.
-  for (const Attractor& a : model.attractors)
-    frame.spheres.push_back({a.center.cast<float>(), static_cast<float>(std::min(a.softening, 2.0 * options.spacing)), kAttractor});
-  // The kind's guides (an IK chain: the circles bounding what its end can reach), in the x-y plane.
   const app::SceneKind& kind = session.kind();
-  for (const app::GuideCircle& guide : kind.guides()) {
-    const Vec3f centre = guide.centre.cast<float>();
-    constexpr int kSegments = 128;
-    for (int k = 0; k < kSegments; ++k) {
-      const double a0 = 2 * std::numbers::pi * k / kSegments, a1 = 2 * std::numbers::pi * (k + 1) / kSegments;
-      const Vec3f p0 = centre + static_cast<float>(guide.radius) * Vec3f(std::cos(a0), std::sin(a0), 0.0f);
-      const Vec3f p1 = centre + static_cast<float>(guide.radius) * Vec3f(std::cos(a1), std::sin(a1), 0.0f);
-      frame.lines.push_back({p0, p1, kReach, kReach, 1.5f});
-    }
-  }
+  add_fixtures(frame, model, kind, options);
 
   const bool compare = session.comparing();
   for (const int index : view.lanes) {
@@ -163,23 +191,7 @@ Frame build_frame(const app::Session& session, const ViewOptions& options, const
       if (lane.sim.diverged()) c.a = 0.35f;
       frame.particles.push_back({f(state.x.row(i)), held ? 1.3f * radius : radius, c, pinned});
     }
-    // The limiting mode: each particle's displacement in it, as an arrow from the particle.
-    if (options.mode && lane.analysis && !lane.sim.diverged()) {
-      const StabilityLimit& limit = lane.analysis->limit(lane.sim.settings().method);
-      if (limit.mode && limit.mode->shape.rows() == state.particle_count()) {
-        const Points& shape = limit.mode->shape;
-        const double length = 3.0 * options.spacing;
-        for (int i = 0; i < state.particle_count(); ++i) {
-          const double size = shape.row(i).norm();
-          if (size < 0.02) continue;
-          const Vec3f a = f(state.x.row(i)), b = f(state.x.row(i) + length * shape.row(i));
-          Rgba tip = kDiverged, tail = kDiverged;
-          tail.a = 0.3f;
-          tip.a = 0.4f + 0.6f * static_cast<float>(size);
-          frame.lines.push_back({a, b, tail, tip, 2.5f * options.line_scale});
-        }
-      }
-    }
+    if (options.mode && lane.analysis && !lane.sim.diverged()) add_mode_arrows(frame, lane, state, options);
   }
   return frame;
 }

@@ -112,6 +112,75 @@ std::string run_beside(const ButcherTableau& tableau, app::Session& session) {
   return why;
 }
 
+namespace {
+
+// The grid: c (the row sums, as the steps use them), A's lower triangle and diagonal, then b; the
+// cell an error points at in red.
+void tableau_grid(TableauPanel& panel, float scale) {
+  const float cell = 62.0f * scale;
+  const ImVec4 red(0.65f, 0.12f, 0.10f, 1.0f);
+  if (ImGui::BeginTable("tableau", panel.stages + 1, ImGuiTableFlags_SizingFixedFit)) {
+    for (int i = 0; i <= panel.stages; ++i) {
+      const bool weights = i == panel.stages;
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      if (weights) ImGui::TextUnformatted("b");
+      else if (panel.tableau) ImGui::TextDisabled("c%d = %s", i + 1, panel.tableau->c[static_cast<std::size_t>(i)].text.c_str());
+      else ImGui::TextDisabled("c%d", i + 1);
+      for (int j = 0; j < panel.stages; ++j) {
+        ImGui::TableNextColumn();
+        if (!weights && j > i) {  // above the diagonal: diagonally implicit at most
+          ImGui::TextDisabled("  .");
+          continue;
+        }
+        TableauPanel::Cell& c = weights ? panel.b[j] : panel.a[i][j];
+        const bool bad = weights ? panel.error_row == j && panel.error_col < 0 : panel.error_row == i && panel.error_col == j;
+        if (bad) ImGui::PushStyleColor(ImGuiCol_FrameBg, red);
+        ImGui::SetNextItemWidth(cell);
+        const std::string id = "##" + std::to_string(i) + "_" + std::to_string(j);
+        if (ImGui::InputText(id.c_str(), c.data(), c.size())) panel.dirty = true;
+        if (bad) ImGui::PopStyleColor();
+      }
+    }
+    ImGui::EndTable();
+  }
+}
+
+// What the cells make, at once: the order, exactly, the first condition failed, R(z) and its
+// stretch of each axis; or the error.
+void tableau_verdict(const TableauPanel& panel) {
+  const float wrap = ImGui::GetContentRegionAvail().x;
+  if (!panel.error.empty()) {
+    text_wrapped(panel.error, ImVec4(1.0f, 0.45f, 0.40f, 1.0f), wrap);
+  } else if (panel.analysis && panel.tableau) {
+    const TableauAnalysis& a = *panel.analysis;
+    std::string order = format_text(a.order == TableauAnalysis::kMaxOrder
+                                        ? tr("order %d or more, exactly (%d conditions checked)")
+                                        : tr("order %d, exactly (%d conditions checked)"),
+                                    a.order, a.conditions);
+    if (a.order_to_rounding > a.order) order += format_text(tr("; %d to rounding"), a.order_to_rounding);
+    text_wrapped((panel.tableau->is_explicit() ? tr("explicit, ") : tr("diagonally implicit, ")) + order, {}, wrap);
+    if (a.first_failure) {
+      const OrderCondition& f = *a.first_failure;
+      text_wrapped(format_text(tr("fails at order %d, tree %s: %s = %s, but this tableau gives %s"), f.order,
+                               f.tree.c_str(), f.formula.c_str(), f.rhs.c_str(), f.lhs.c_str()),
+                   {}, wrap);
+    }
+    text_wrapped("R(z) = " + stability_function_text(a), {}, wrap);
+    const std::string real = std::isinf(a.real_limit) ? tr("the whole negative real axis")
+                             : a.real_limit == 0.0   ? tr("no part of the negative real axis")
+                                                     : "[-" + axis_limit_text(a.real_limit, 4) + ", 0]";
+    const std::string imaginary = std::isinf(a.imaginary_limit) ? tr("the whole imaginary axis")
+                                  : a.imaginary_limit == 0.0    ? tr("the imaginary axis only at 0")
+                                                                : "[-" + axis_limit_text(a.imaginary_limit, 4) + "i, " +
+                                                                      axis_limit_text(a.imaginary_limit, 4) + "i]";
+    text_wrapped(format_text(tr("|R| <= 1 on %s, and on %s"), real.c_str(), imaginary.c_str()), {}, wrap);
+    for (const std::string& w : a.warnings) ImGui::TextDisabled("%s", w.c_str());
+  }
+}
+
+}  // namespace
+
 void draw_tableau_panel(TableauPanel& panel, app::Session& session, const std::vector<std::string>& shipped,
                         float scale) {
   if (!panel.open) return;
@@ -144,66 +213,11 @@ void draw_tableau_panel(TableauPanel& panel, app::Session& session, const std::v
   }
   if (panel.dirty) panel.check();
 
-  // The grid: c (the row sums, as the steps use them), A's lower triangle and diagonal, then b.
-  const float cell = 62.0f * scale;
-  const ImVec4 red(0.65f, 0.12f, 0.10f, 1.0f);
-  if (ImGui::BeginTable("tableau", panel.stages + 1, ImGuiTableFlags_SizingFixedFit)) {
-    for (int i = 0; i <= panel.stages; ++i) {
-      const bool weights = i == panel.stages;
-      ImGui::TableNextRow();
-      ImGui::TableNextColumn();
-      if (weights) ImGui::TextUnformatted("b");
-      else if (panel.tableau) ImGui::TextDisabled("c%d = %s", i + 1, panel.tableau->c[static_cast<std::size_t>(i)].text.c_str());
-      else ImGui::TextDisabled("c%d", i + 1);
-      for (int j = 0; j < panel.stages; ++j) {
-        ImGui::TableNextColumn();
-        if (!weights && j > i) {  // above the diagonal: diagonally implicit at most
-          ImGui::TextDisabled("  .");
-          continue;
-        }
-        TableauPanel::Cell& c = weights ? panel.b[j] : panel.a[i][j];
-        const bool bad = weights ? panel.error_row == j && panel.error_col < 0 : panel.error_row == i && panel.error_col == j;
-        if (bad) ImGui::PushStyleColor(ImGuiCol_FrameBg, red);
-        ImGui::SetNextItemWidth(cell);
-        const std::string id = "##" + std::to_string(i) + "_" + std::to_string(j);
-        if (ImGui::InputText(id.c_str(), c.data(), c.size())) panel.dirty = true;
-        if (bad) ImGui::PopStyleColor();
-      }
-    }
-    ImGui::EndTable();
-  }
+  tableau_grid(panel, scale);
   ImGui::TextDisabled(tr("entries: 1/6, -2, 0.25; the diagonal makes a stage implicit"));
   ImGui::Separator();
 
-  // What the cells make, at once.
-  const float wrap = ImGui::GetContentRegionAvail().x;
-  if (!panel.error.empty()) {
-    text_wrapped(panel.error, ImVec4(1.0f, 0.45f, 0.40f, 1.0f), wrap);
-  } else if (panel.analysis && panel.tableau) {
-    const TableauAnalysis& a = *panel.analysis;
-    std::string order = format_text(a.order == TableauAnalysis::kMaxOrder
-                                        ? tr("order %d or more, exactly (%d conditions checked)")
-                                        : tr("order %d, exactly (%d conditions checked)"),
-                                    a.order, a.conditions);
-    if (a.order_to_rounding > a.order) order += format_text(tr("; %d to rounding"), a.order_to_rounding);
-    text_wrapped((panel.tableau->is_explicit() ? tr("explicit, ") : tr("diagonally implicit, ")) + order, {}, wrap);
-    if (a.first_failure) {
-      const OrderCondition& f = *a.first_failure;
-      text_wrapped(format_text(tr("fails at order %d, tree %s: %s = %s, but this tableau gives %s"), f.order,
-                               f.tree.c_str(), f.formula.c_str(), f.rhs.c_str(), f.lhs.c_str()),
-                   {}, wrap);
-    }
-    text_wrapped("R(z) = " + stability_function_text(a), {}, wrap);
-    const std::string real = std::isinf(a.real_limit) ? tr("the whole negative real axis")
-                             : a.real_limit == 0.0   ? tr("no part of the negative real axis")
-                                                     : "[-" + axis_limit_text(a.real_limit, 4) + ", 0]";
-    const std::string imaginary = std::isinf(a.imaginary_limit) ? tr("the whole imaginary axis")
-                                  : a.imaginary_limit == 0.0    ? tr("the imaginary axis only at 0")
-                                                                : "[-" + axis_limit_text(a.imaginary_limit, 4) + "i, " +
-                                                                      axis_limit_text(a.imaginary_limit, 4) + "i]";
-    text_wrapped(format_text(tr("|R| <= 1 on %s, and on %s"), real.c_str(), imaginary.c_str()), {}, wrap);
-    for (const std::string& w : a.warnings) ImGui::TextDisabled("%s", w.c_str());
-  }
+  tableau_verdict(panel);
 
   ImGui::BeginDisabled(!panel.tableau);
   if (ImGui::Button(tr("Run beside")) && panel.tableau) panel.run_message = run_beside(*panel.tableau, session);

@@ -96,6 +96,83 @@ int report_run(const Session& session, const WindowOptions& o, const RunTimes& r
   return result;
 }
 
+// Dear ImGui for the window: no files of its own, the language, the theme at `scale`.
+void start_imgui(GLFWwindow* window, const AppSettings& settings, float scale) {
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;  // no imgui.ini in the user's folder
+  io.LogFilename = nullptr;
+  // The language before the fonts (they carry its glyphs): --lang, or the environment's, which
+  // falls back to English where it cannot be spoken.
+  if (!settings.language.empty()) {
+    use_language(settings.language);
+  } else {
+    try {
+      use_language(environment_language());
+    } catch (const InputError& e) {
+      std::fprintf(stderr, "springlab: %s; speaking English\n", e.what());
+    }
+  }
+  ui::apply_theme(scale);
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 330 core");
+}
+
+// The frames until the window closes (or --frames are drawn): paced by the wall clock, one
+// simulated frame every 1/60 s, or as fast as they come with --frames. `shown_w` x `shown_h`:
+// the last frame's size.
+RunTimes frame_loop(GLFWwindow* window, InteractiveApp& app, const WindowOptions& o, const std::vector<KeyPress>& keys,
+                    HomeworkWatch* homework, int& shown_w, int& shown_h) {
+  FramePacer pacer;
+  const auto start = Clock::now();
+  long frames = 0;
+  auto first_frame = start;
+  double first_t = 0.0;
+  while (!glfwWindowShouldClose(window)) {
+    if (!o.frames) {
+      // Paced by the wall clock: one simulated frame every 1/60 s, whatever the display does.
+      const double wait = pacer.seconds_to_next();
+      if (wait > 0) glfwWaitEventsTimeout(wait);
+      else glfwPollEvents();
+      if (!pacer.take()) continue;
+    } else {
+      glfwPollEvents();
+    }
+
+    FrameSize size;
+    glfwGetFramebufferSize(window, &size.fb_width, &size.fb_height);
+    glfwGetWindowSize(window, &size.win_width, &size.win_height);
+    if (size.fb_width <= 0 || size.fb_height <= 0) continue;  // minimised
+    shown_w = size.fb_width;
+    shown_h = size.fb_height;
+
+    if (app.apply_language()) ImGui_ImplOpenGL3_DestroyDeviceObjects();  // its font texture, remade
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    press_keys(keys, frames, 2);  // (from the second frame: the first analyses the scene)
+    if (homework) homework->poll(app.session());
+    app.frame(size);
+    if (app.quit_requested()) glfwSetWindowShouldClose(window, GLFW_TRUE);
+    if (const auto opened = app.take_opened())
+      glfwSetWindowTitle(window, ("springlab - " + app.session().scene().name).c_str());
+    ++frames;
+    if (frames == 1) {  // the steady figures start after the first frame (the scene's analysis)
+      first_frame = Clock::now();
+      first_t = app.session().primary().sim.state().t;
+    }
+    if (o.frames && frames >= *o.frames) {
+      if (o.screenshot) screenshot(*o.screenshot, size.fb_width, size.fb_height);
+      glfwSwapBuffers(window);
+      break;
+    }
+    glfwSwapBuffers(window);
+  }
+
+  return {frames, std::chrono::duration<double>(Clock::now() - start).count(),
+          std::chrono::duration<double>(Clock::now() - first_frame).count(), first_t};
+}
+
 }  // namespace
 
 int run_window(const AppSettings& settings, const WindowOptions& o) {
@@ -123,25 +200,7 @@ int run_window(const AppSettings& settings, const WindowOptions& o) {
   glfwGetWindowContentScale(window, &content_scale, &unused);
   const float scale = static_cast<float>(settings.ui_scale) * std::max(1.0f, content_scale);
 
-  IMGUI_CHECKVERSION();
-  ImGui::CreateContext();
-  ImGuiIO& io = ImGui::GetIO();
-  io.IniFilename = nullptr;  // no imgui.ini in the user's folder
-  io.LogFilename = nullptr;
-  // The language before the fonts (they carry its glyphs): --lang, or the environment's, which
-  // falls back to English where it cannot be spoken.
-  if (!settings.language.empty()) {
-    use_language(settings.language);
-  } else {
-    try {
-      use_language(environment_language());
-    } catch (const InputError& e) {
-      std::fprintf(stderr, "springlab: %s; speaking English\n", e.what());
-    }
-  }
-  ui::apply_theme(scale);
-  ImGui_ImplGlfw_InitForOpenGL(window, true);
-  ImGui_ImplOpenGL3_Init("#version 330 core");
+  start_imgui(window, settings, scale);
 
   int result = 0;
   {
@@ -159,57 +218,9 @@ int run_window(const AppSettings& settings, const WindowOptions& o) {
       if (count > 0) static_cast<InteractiveApp*>(glfwGetWindowUserPointer(w))->open_after_frame(paths[0]);
     });
 
-    FramePacer pacer;
     int shown_w = 0, shown_h = 0;
-    const auto start = Clock::now();
-    long frames = 0;
-    auto first_frame = start;
-    double first_t = 0.0;
-    while (!glfwWindowShouldClose(window)) {
-      if (!o.frames) {
-        // Paced by the wall clock: one simulated frame every 1/60 s, whatever the display does.
-        const double wait = pacer.seconds_to_next();
-        if (wait > 0) glfwWaitEventsTimeout(wait);
-        else glfwPollEvents();
-        if (!pacer.take()) continue;
-      } else {
-        glfwPollEvents();
-      }
-
-      FrameSize size;
-      glfwGetFramebufferSize(window, &size.fb_width, &size.fb_height);
-      glfwGetWindowSize(window, &size.win_width, &size.win_height);
-      if (size.fb_width <= 0 || size.fb_height <= 0) continue;  // minimised
-      shown_w = size.fb_width;
-      shown_h = size.fb_height;
-
-      if (app.apply_language()) ImGui_ImplOpenGL3_DestroyDeviceObjects();  // its font texture, remade
-      ImGui_ImplOpenGL3_NewFrame();
-      ImGui_ImplGlfw_NewFrame();
-      press_keys(keys, frames, 2);  // (from the second frame: the first analyses the scene)
-      if (homework) homework->poll(app.session());
-      app.frame(size);
-      if (app.quit_requested()) glfwSetWindowShouldClose(window, GLFW_TRUE);
-      if (const auto opened = app.take_opened())
-        glfwSetWindowTitle(window, ("springlab - " + app.session().scene().name).c_str());
-      ++frames;
-      if (frames == 1) {  // the steady figures start after the first frame (the scene's analysis)
-        first_frame = Clock::now();
-        first_t = app.session().primary().sim.state().t;
-      }
-      if (o.frames && frames >= *o.frames) {
-        if (o.screenshot) screenshot(*o.screenshot, size.fb_width, size.fb_height);
-        glfwSwapBuffers(window);
-        break;
-      }
-      glfwSwapBuffers(window);
-    }
-
-    if (o.frames) {
-      const RunTimes times{frames, std::chrono::duration<double>(Clock::now() - start).count(),
-                           std::chrono::duration<double>(Clock::now() - first_frame).count(), first_t};
-      result = report_run(app.session(), o, times, shown_w, shown_h, samples, gl_renderer);
-    }
+    const RunTimes times = frame_loop(window, app, o, keys, homework.get(), shown_w, shown_h);
+    if (o.frames) result = report_run(app.session(), o, times, shown_w, shown_h, samples, gl_renderer);
   }
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();

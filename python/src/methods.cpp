@@ -32,16 +32,8 @@ std::vector<std::string> texts(const std::vector<TableauEntry>& row) {
   return out;
 }
 
-}  // namespace
-
-void bind_methods(py::module_& m) {
-  py::enum_<MethodFamily>(m, "MethodFamily", "how a method steps, which decides how its stability is found")
-      .value("RUNGE_KUTTA", MethodFamily::RungeKutta)
-      .value("PARTITIONED", MethodFamily::Partitioned)
-      .value("IMPLICIT", MethodFamily::Implicit)
-      .value("ADAPTIVE", MethodFamily::Adaptive)
-      .value("ITERATIVE", MethodFamily::Iterative);
-
+// The tableau classes: a row's Tableau (doubles) and a ButcherTableau as read (its entries' text).
+void bind_tableaux(py::module_& m) {
   // Rows live for the whole process (the table is never shrunk): returned by reference.
   py::class_<Tableau>(m, "Tableau", "a Runge-Kutta method's Butcher tableau, in doubles")
       .def_readonly("stages", &Tableau::stages)
@@ -81,7 +73,10 @@ void bind_methods(py::module_& m) {
       .def_property_readonly("b", [](const ButcherTableau& t) { return texts(t.b); })
       .def_property_readonly("c", [](const ButcherTableau& t) { return texts(t.c); })
       .def_readonly("stated_order", &ButcherTableau::stated_order);
+}
 
+// MethodInfo: a row of the method table, read-only.
+void bind_method_info(py::module_& m) {
   py::class_<MethodInfo>(m, "MethodInfo", "a row of the method table (springlab/methods.hpp)")
       .def_property_readonly("id", [](const MethodInfo& r) { return static_cast<int>(r.id); })
       .def_readonly("name", &MethodInfo::name, "as typed on the command line")
@@ -123,6 +118,20 @@ void bind_methods(py::module_& m) {
                              "what it keeps on a free body: \"P\", \"P, L\", \"P to the solver's tolerance\", \"neither\" "
                              "(P the momentum, L the angular momentum; springlab/momentum.hpp)")
       .def("__repr__", [](const MethodInfo& r) { return std::string("<springlab.MethodInfo '") + r.name + "'>"; });
+}
+
+}  // namespace
+
+void bind_methods(py::module_& m) {
+  py::enum_<MethodFamily>(m, "MethodFamily", "how a method steps, which decides how its stability is found")
+      .value("RUNGE_KUTTA", MethodFamily::RungeKutta)
+      .value("PARTITIONED", MethodFamily::Partitioned)
+      .value("IMPLICIT", MethodFamily::Implicit)
+      .value("ADAPTIVE", MethodFamily::Adaptive)
+      .value("ITERATIVE", MethodFamily::Iterative);
+
+  bind_tableaux(m);
+  bind_method_info(m);
 
   m.def(
       "methods",

@@ -93,8 +93,9 @@ struct Workspace {
 
   Counters counters;
   SpringForces spring_forces;
-  std::vector<Points> kx, kv;    ///< Runge-Kutta stage derivatives (dx/dt, dv/dt), one a stage
-  Points tx, tv, ux, uv;         ///< stage and trial states
+  std::vector<Points> stage_dx, stage_dv;  ///< Runge-Kutta stage derivatives (dx/dt, dv/dt), one a stage
+  Points stage_x, stage_v;                 ///< a stage's state (adaptive Euler: the state after half a step)
+  Points trial_x, trial_v;                 ///< a trial step's result (adaptive methods: kept if accepted)
 
   /// Verlet: the previous positions and a(x) at the current positions, valid while `verlet_ready`.
   Points x_prev, a_now;
@@ -102,7 +103,7 @@ struct Workspace {
   double verlet_h = 0.0;
 
   /// Adaptive methods: the internal step to try next (0: start from h), and whether rk45's
-  /// first-same-as-last derivative (ws.kx[0], ws.kv[0]) is that of the state it is given next.
+  /// first-same-as-last derivative (ws.stage_dx[0], ws.stage_dv[0]) is that of the state it is given next.
   double adaptive_step = 0.0;
   bool fsal_ready = false;
 

@@ -109,24 +109,46 @@ std::vector<std::string> lanes_of(const LessonStep& step, const Scene& scene) {
   return {method_info(step.method.value_or(scene.methods.front())).name};
 }
 
-LessonClaim read_claim(ObjectReader& r, const LessonStep& step, const Scene& scene, const LessonMethodFinder& find) {
+// An iterative method's claim (acts-as, solver-converges): its lane must be one, then its figures.
+void read_iterative_claim(ObjectReader& r, LessonClaim& c, const std::string& name, const std::vector<std::string>& lanes,
+                          const LessonMethodFinder& find) {
   using K = LessonClaim::Kind;
-  LessonClaim c;
-  std::vector<std::string> names;
-  for (const auto& [name, kind] : claim_kinds()) names.push_back(name);
-  const std::string name = r.choice("claim", "", names);
-  for (const auto& [n, kind] : claim_kinds())
-    if (n == name) c.kind = kind;
+  const std::string lane = c.lane.empty() && !lanes.empty() ? lanes.front() : c.lane;
+  const std::optional<Method> m = find(lane);
+  if (!m || method_info(*m).family != MethodFamily::Iterative)
+    r.fail("lane", name + " is about an iterative method's lane (xpbd, local-global, vbd), not '" + lane + "'");
+  if (c.kind == K::SolverConverges) {
+    c.below = r.number("below", {0.0, 1.0, true, true});
+  } else {
+    if (!r.has("below") && !r.has("above")) r.fail("claim", "acts-as needs \"below\", \"above\" or both");
+    if (r.has("below")) c.below = r.number("below", json_reader::positive(1e3));
+    if (r.has("above")) c.above = r.number("above", json_reader::positive(1e3));
+  }
+}
 
-  const std::vector<std::string> lanes = lanes_of(step, scene);
-  c.lane = r.text("lane", "");
-  if (!c.lane.empty() && std::find(lanes.begin(), lanes.end(), c.lane) == lanes.end())
-    r.fail("lane", "'" + c.lane + "' is not a lane of this step (its lanes: " + join(lanes) + ")");
+// orders: {"method": order, ...}, each a fixed-step method, two or more, and the best for its cost.
+void read_orders_claim(ObjectReader& r, LessonClaim& c, const LessonMethodFinder& find) {
+  if (!r.has("orders")) r.fail("orders", "is required: {\"method\": order, ...}, e.g. {\"euler\": 1, \"rk4\": 4}");
+  ObjectReader orders = *r.object("orders");
+  const json* raw = r.raw("orders");
+  for (const auto& [method, value] : raw->items()) {
+    const auto m = find(method);
+    if (!m || method_info(*m).adaptive())
+      orders.fail(method.c_str(), "must be a fixed-step method (" + method_names() + ")");
+    c.orders[method] = orders.number(method.c_str(), {0.5, 8.0});
+  }
+  if (c.orders.size() < 2) r.fail("orders", "must name two or more methods");
+  c.within = r.number("within", 0.3, json_reader::positive(2.0));
+  c.best = r.text("best", "");
+  if (!c.best.empty() && !c.orders.count(c.best))
+    r.fail("best", "must be one of the methods in \"orders\" (" + c.best + " is not)");
+}
+
+// The figures a claim of its kind takes, and what it needs of the step's scene.
+void read_claim_figures(ObjectReader& r, LessonClaim& c, const std::string& name, const LessonStep& step,
+                        const Scene& scene, const std::vector<std::string>& lanes, const LessonMethodFinder& find) {
+  using K = LessonClaim::Kind;
   const json_reader::Range time = {0.0, step.duration};
-  c.from = r.number("from", 0.0, time);
-  if (r.has("to")) c.to = r.number("to", time);
-  if (c.to && *c.to <= c.from) r.fail("to", "must come after from (" + four_digits(c.from) + " s)");
-
   const bool ik = scene.ik.has_value();
   const auto needs_dynamics = [&] {
     if (ik) r.fail("claim", "'" + name + "' is about a simulation; scene '" + scene.name + "' is an inverse-kinematics scene");
@@ -169,21 +191,10 @@ LessonClaim read_claim(ObjectReader& r, const LessonStep& step, const Scene& sce
       break;
     case K::InternalDecays: needs_dynamics(); c.below = r.number("below", {0.0, 1.0, true, true}); break;
     case K::ActsAs:
-    case K::SolverConverges: {
+    case K::SolverConverges:
       needs_dynamics();
-      const std::string lane = c.lane.empty() && !lanes.empty() ? lanes.front() : c.lane;
-      const std::optional<Method> m = find(lane);
-      if (!m || method_info(*m).family != MethodFamily::Iterative)
-        r.fail("lane", name + " is about an iterative method's lane (xpbd, local-global, vbd), not '" + lane + "'");
-      if (c.kind == K::SolverConverges) {
-        c.below = r.number("below", {0.0, 1.0, true, true});
-      } else {
-        if (!r.has("below") && !r.has("above")) r.fail("claim", "acts-as needs \"below\", \"above\" or both");
-        if (r.has("below")) c.below = r.number("below", json_reader::positive(1e3));
-        if (r.has("above")) c.above = r.number("above", json_reader::positive(1e3));
-      }
+      read_iterative_claim(r, c, name, lanes, find);
       break;
-    }
     case K::OutOfReach:
     case K::PosesDiffer:
       if (!ik) r.fail("claim", "'" + name + "' is about inverse kinematics; scene '" + scene.name + "' has no \"ik\" part");
@@ -192,24 +203,10 @@ LessonClaim read_claim(ObjectReader& r, const LessonStep& step, const Scene& sce
         if (lanes.size() < 2) r.fail("claim", "poses-differ needs two or more solvers side by side (\"compare\")");
       }
       break;
-    case K::Orders: {
+    case K::Orders:
       needs_dynamics();
-      if (!r.has("orders")) r.fail("orders", "is required: {\"method\": order, ...}, e.g. {\"euler\": 1, \"rk4\": 4}");
-      ObjectReader orders = *r.object("orders");
-      const json* raw = r.raw("orders");
-      for (const auto& [method, value] : raw->items()) {
-        const auto m = find(method);
-        if (!m || method_info(*m).adaptive())
-          orders.fail(method.c_str(), "must be a fixed-step method (" + method_names() + ")");
-        c.orders[method] = orders.number(method.c_str(), {0.5, 8.0});
-      }
-      if (c.orders.size() < 2) r.fail("orders", "must name two or more methods");
-      c.within = r.number("within", 0.3, json_reader::positive(2.0));
-      c.best = r.text("best", "");
-      if (!c.best.empty() && !c.orders.count(c.best))
-        r.fail("best", "must be one of the methods in \"orders\" (" + c.best + " is not)");
+      read_orders_claim(r, c, find);
       break;
-    }
     case K::Bursts:
       c.count = static_cast<int>(r.integer("count", 1, 10000));
       if (scene.model.emitters.empty()) r.fail("claim", "bursts needs a scene with emitters; '" + scene.name + "' has none");
@@ -220,6 +217,26 @@ LessonClaim read_claim(ObjectReader& r, const LessonStep& step, const Scene& sce
       c.at = r.number("at", step.duration, time);
       break;
   }
+}
+
+LessonClaim read_claim(ObjectReader& r, const LessonStep& step, const Scene& scene, const LessonMethodFinder& find) {
+  LessonClaim c;
+  std::vector<std::string> names;
+  for (const auto& [name, kind] : claim_kinds()) names.push_back(name);
+  const std::string name = r.choice("claim", "", names);
+  for (const auto& [n, kind] : claim_kinds())
+    if (n == name) c.kind = kind;
+
+  const std::vector<std::string> lanes = lanes_of(step, scene);
+  c.lane = r.text("lane", "");
+  if (!c.lane.empty() && std::find(lanes.begin(), lanes.end(), c.lane) == lanes.end())
+    r.fail("lane", "'" + c.lane + "' is not a lane of this step (its lanes: " + join(lanes) + ")");
+  const json_reader::Range time = {0.0, step.duration};
+  c.from = r.number("from", 0.0, time);
+  if (r.has("to")) c.to = r.number("to", time);
+  if (c.to && *c.to <= c.from) r.fail("to", "must come after from (" + four_digits(c.from) + " s)");
+
+  read_claim_figures(r, c, name, step, scene, lanes, find);
   r.finish();
   return c;
 }

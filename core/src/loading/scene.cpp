@@ -269,31 +269,8 @@ std::vector<int> read_trails(ObjectReader& top, const std::string& where, int to
   return out;
 }
 
-}  // namespace
-
-Scene parse_scene(const std::string& text, const std::string& file,
-                  const std::vector<std::string>& overrides) {
-  const std::string where = "scene '" + file + "'";
-  json doc = json_reader::parse_document(text, where);
-  for (const std::string& o : overrides) apply_override(doc, o, file);
-
-  Scene scene;
-  scene.file = file;
-  scene.name = std::filesystem::path(file).stem().string();
-  ObjectReader top(doc, "", where);
-  top.expect({"description", "view", "particles", "generators", "emitters", "ik", "springs", "gravity", "drag", "wind", "attractors",
-              "verlet_damping", "particle_radius", "colliders", "methods", "dt", "substeps", "safety", "duration", "tolerance",
-              "camera", "trails"});
-  top.finish();  // a misspelt field first: it may be why something else looks missing
-  scene.description = top.text("description", "");
-  const View view = top.choice("view", "3d", {"2d", "3d"}) == "2d" ? View::Planar : View::Orbit;
-
-  Model& model = scene.model;
-  std::vector<Vec3> x, v;
-  std::map<std::string, std::pair<int, int>> named;
-  generators::Builder builder{model, x, v, scene.surfaces, scene.cells, named};
-
-  // Particles declared one by one.
+// Particles declared one by one.
+void read_particles(ObjectReader& top, generators::Builder& builder) {
   auto particles = top.objects("particles");
   if (static_cast<long>(particles.size()) > kMaxParticles)
     top.fail("particles", "has " + std::to_string(particles.size()) + " particles; the limit is " +
@@ -306,8 +283,12 @@ Scene parse_scene(const std::string& text, const std::string& file,
     p.finish();
     builder.particle(position, velocity, mass, pinned);
   }
+}
 
-  // Generators.
+// Generators (rope, cloth, box), each under a name of its own; then an inverse-kinematics part,
+// a scene of its own.
+void read_generators(ObjectReader& top, generators::Builder& builder, Scene& scene) {
+  std::map<std::string, std::pair<int, int>>& named = builder.named;
   for (auto& g : top.objects("generators")) {
     const std::string type = g.choice("type", "", {"rope", "cloth", "box"});
     const std::string name = g.text("name", type);
@@ -318,14 +299,16 @@ Scene parse_scene(const std::string& text, const std::string& file,
     g.finish();
   }
   if (auto ik = top.object("ik")) {
-    if (model.particle_count() > 0)
+    if (builder.model.particle_count() > 0)
       top.fail("ik", "is a scene of its own: leave out \"particles\" and \"generators\"");
     scene.ik = read_ik_scene(*ik, builder);
     ik->finish();
   }
+}
 
-  // Springs and plain indices refer to these; the emitters' pools follow them.
-  const int total = model.particle_count();
+// The emitters, whose pools follow every other particle.
+void read_emitters(ObjectReader& top, generators::Builder& builder) {
+  const std::map<std::string, std::pair<int, int>>& named = builder.named;
   for (auto& e : top.objects("emitters")) {
     const std::string name = e.text("name", "emitter");
     if (named.count(name) || named.count(name + "-sparks"))
@@ -333,10 +316,14 @@ Scene parse_scene(const std::string& text, const std::string& file,
     read_emitter(e, name, builder);
     e.finish();
   }
-  if (model.particle_count() == 0)
-    top.fail("declares no particles: add \"particles\", \"generators\" or \"emitters\"");
+}
 
-  // Springs declared one by one.
+// Springs declared one by one, between particles by index or by a generator's name and index
+// (`total`: the particles before the emitters').
+void read_springs(ObjectReader& top, generators::Builder& builder, int total, const std::string& where) {
+  Model& model = builder.model;
+  const std::vector<Vec3>& x = builder.x;
+  const std::map<std::string, std::pair<int, int>>& named = builder.named;
   auto springs = top.objects("springs");
   builder.springs_planned += static_cast<long>(springs.size());
   if (builder.springs_planned > kMaxSprings)
@@ -369,6 +356,41 @@ Scene parse_scene(const std::string& text, const std::string& file,
     }
     add_spring(model, a, b, rest, material->second);
   }
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& text, const std::string& file,
+                  const std::vector<std::string>& overrides) {
+  const std::string where = "scene '" + file + "'";
+  json doc = json_reader::parse_document(text, where);
+  for (const std::string& o : overrides) apply_override(doc, o, file);
+
+  Scene scene;
+  scene.file = file;
+  scene.name = std::filesystem::path(file).stem().string();
+  ObjectReader top(doc, "", where);
+  top.expect({"description", "view", "particles", "generators", "emitters", "ik", "springs", "gravity", "drag", "wind", "attractors",
+              "verlet_damping", "particle_radius", "colliders", "methods", "dt", "substeps", "safety", "duration", "tolerance",
+              "camera", "trails"});
+  top.finish();  // a misspelt field first: it may be why something else looks missing
+  scene.description = top.text("description", "");
+  const View view = top.choice("view", "3d", {"2d", "3d"}) == "2d" ? View::Planar : View::Orbit;
+
+  Model& model = scene.model;
+  std::vector<Vec3> x, v;
+  std::map<std::string, std::pair<int, int>> named;
+  generators::Builder builder{model, x, v, scene.surfaces, scene.cells, named};
+
+  read_particles(top, builder);
+  read_generators(top, builder, scene);
+
+  // Springs and plain indices refer to these; the emitters' pools follow them.
+  const int total = model.particle_count();
+  read_emitters(top, builder);
+  if (model.particle_count() == 0)
+    top.fail("declares no particles: add \"particles\", \"generators\" or \"emitters\"");
+  read_springs(top, builder, total, where);
   if (model.materials.size() > 65535) top.fail("springs", "use more than 65535 distinct (ks, kd) pairs");
   finalize(model);
 

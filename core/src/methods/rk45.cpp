@@ -40,8 +40,8 @@ double error_norm(const Model& model, const Points& x0, const Points& v0, const 
     for (int c = 0; c < 3; ++c) {
       double ex = 0.0, ev = 0.0;
       for (int s = 0; s < stages; ++s) {
-        ex += weights[s] * ws.kx[s](i, c);
-        ev += weights[s] * ws.kv[s](i, c);
+        ex += weights[s] * ws.stage_dx[s](i, c);
+        ev += weights[s] * ws.stage_dv[s](i, c);
       }
       const double sx = tol + tol * std::max(std::abs(x0(i, c)), std::abs(x1(i, c)));
       const double sv = tol + tol * std::max(std::abs(v0(i, c)), std::abs(v1(i, c)));
@@ -68,7 +68,7 @@ void embedded_pair_step(const Tableau& tableau, const double* error_weights, dou
                         Workspace& ws) {
   const int last_stage = tableau.stages - 1;
   const bool fsal = tableau.first_same_as_last();
-  // The state walks in `out`; each try is written to (ws.ux, ws.uv) and swapped in if accepted.
+  // The state walks in `out`; each try is written to (ws.trial_x, ws.trial_v) and swapped in if accepted.
   out.x = in.x;
   out.v = in.v;
   double T = first_try(ws, h);
@@ -80,8 +80,8 @@ void embedded_pair_step(const Tableau& tableau, const double* error_weights, dou
     const bool last = T >= remaining * (1.0 - 1e-12);
     const double step = last ? remaining : T;
     rk::stages(model, out.x, out.v, step, tableau, ws, first_known);
-    rk::combine(out.x, out.v, step, tableau.b, ws, ws.ux, ws.uv);
-    const double err = steps::error_norm(model, out.x, out.v, ws.ux, ws.uv, step, ws, settings.tolerance,
+    rk::combine(out.x, out.v, step, tableau.b, ws, ws.trial_x, ws.trial_v);
+    const double err = steps::error_norm(model, out.x, out.v, ws.trial_x, ws.trial_v, step, ws, settings.tolerance,
                                          error_weights, tableau.stages);
     if (!(err <= 1.0)) {  // also rejects NaN
       ++ws.counters.rejected;
@@ -92,12 +92,12 @@ void embedded_pair_step(const Tableau& tableau, const double* error_weights, dou
       continue;
     }
     ++ws.counters.accepted;
-    std::swap(out.x, ws.ux);
-    std::swap(out.v, ws.uv);
+    std::swap(out.x, ws.trial_x);
+    std::swap(out.v, ws.trial_v);
     done = last ? h : done + step;
     if (fsal) {  // the last stage was evaluated at the new state: the next step's first
-      std::swap(ws.kx[0], ws.kx[static_cast<std::size_t>(last_stage)]);
-      std::swap(ws.kv[0], ws.kv[static_cast<std::size_t>(last_stage)]);
+      std::swap(ws.stage_dx[0], ws.stage_dx[static_cast<std::size_t>(last_stage)]);
+      std::swap(ws.stage_dv[0], ws.stage_dv[static_cast<std::size_t>(last_stage)]);
     }
     first_known = fsal;
     const double growth = err > 0.0 ? 0.9 * std::pow(err, -exponent) : 5.0;

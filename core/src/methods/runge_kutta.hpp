@@ -1,7 +1,7 @@
 // Explicit Runge-Kutta methods from their Butcher tableaux, on y = (x, v), y' = (v, a(x, v)):
 //   stage i:  y_i = y + h sum_j A[i][j] k_j,   k_i = F(y_i)
 //   result:   y + h sum_i b[i] k_i
-// The stage derivatives k_i = (kx_i, kv_i) = (v_i, a(x_i, v_i)) are left in ws.kx, ws.kv.
+// The stage derivatives k_i = (stage_dx_i, stage_dv_i) = (v_i, a(x_i, v_i)) are left in ws.stage_dx, ws.stage_dv.
 #pragma once
 
 #include "springlab/methods.hpp"
@@ -9,8 +9,8 @@
 
 namespace springlab::rk {
 
-// Fills ws.kx[0..stages), ws.kv[0..stages) (explicit tableaux; grown to the stages) for the step of size h from (x, v). When
-// `first_known` the first stage's derivative is already in ws.kx[0], ws.kv[0].
+// Fills ws.stage_dx[0..stages), ws.stage_dv[0..stages) (explicit tableaux; grown to the stages) for the step of size h from (x, v). When
+// `first_known` the first stage's derivative is already in ws.stage_dx[0], ws.stage_dv[0].
 void stages(const Model& model, const Points& x, const Points& v, double h, const Tableau& tableau,
             Workspace& ws, bool first_known = false);
 

@@ -65,9 +65,9 @@ void dirk_stages(const Tableau& tableau, const Model& model, const State& in, St
   if (!ws.stages) ws.stages = std::make_unique<StageSolvers>();
   StageSolvers& S = *ws.stages;
   if (S.solvers.size() < static_cast<std::size_t>(s)) S.solvers.resize(static_cast<std::size_t>(s));
-  if (ws.kx.size() < static_cast<std::size_t>(s)) {
-    ws.kx.resize(static_cast<std::size_t>(s));
-    ws.kv.resize(static_cast<std::size_t>(s));
+  if (ws.stage_dx.size() < static_cast<std::size_t>(s)) {
+    ws.stage_dx.resize(static_cast<std::size_t>(s));
+    ws.stage_dv.resize(static_cast<std::size_t>(s));
   }
   for (int i = 0; i < s; ++i) {
     S.in.x = in.x;
@@ -76,13 +76,13 @@ void dirk_stages(const Tableau& tableau, const Model& model, const State& in, St
     for (int j = 0; j < i; ++j) {
       const double w = h * tableau.A(i, j);
       if (w == 0.0) continue;
-      S.in.x += w * ws.kx[static_cast<std::size_t>(j)];
-      S.in.v += w * ws.kv[static_cast<std::size_t>(j)];
+      S.in.x += w * ws.stage_dx[static_cast<std::size_t>(j)];
+      S.in.v += w * ws.stage_dv[static_cast<std::size_t>(j)];
     }
     const double g = h * tableau.A(i, i);
     if (g == 0.0) {
-      ws.kx[static_cast<std::size_t>(i)] = S.in.v;
-      accelerations(model, S.in.x, S.in.v, ws.kv[static_cast<std::size_t>(i)], ws);
+      ws.stage_dx[static_cast<std::size_t>(i)] = S.in.v;
+      accelerations(model, S.in.x, S.in.v, ws.stage_dv[static_cast<std::size_t>(i)], ws);
       continue;
     }
     Workspace& solver = S.solvers[static_cast<std::size_t>(i)];
@@ -91,8 +91,8 @@ void dirk_stages(const Tableau& tableau, const Model& model, const State& in, St
     } catch (const StepFailure& e) {
       throw SolveFailure("stage " + std::to_string(i + 1) + " of the tableau: " + e.what());
     }
-    ws.kx[static_cast<std::size_t>(i)] = S.out.v;
-    ws.kv[static_cast<std::size_t>(i)] = (S.out.v - S.in.v) / g;
+    ws.stage_dx[static_cast<std::size_t>(i)] = S.out.v;
+    ws.stage_dv[static_cast<std::size_t>(i)] = (S.out.v - S.in.v) / g;
     // The stage's work counts as the step's.
     Counters& c = solver.counters;
     ws.counters.force_evals += c.force_evals;

@@ -27,8 +27,8 @@ void verlet(const Model& model, const State& in, State& out, double h, const Ste
   for (int i = 0; i < n; ++i)
     if (model.pinned(i)) out.x.row(i) = in.x.row(i) + h * in.v.row(i);
 
-  ws.tv = (out.x - in.x) / h + (0.5 * h) * ws.a_now;  // predicted v(t1)
-  accelerations(model, out.x, ws.tv, ws.a_now, ws);
+  ws.stage_v = (out.x - in.x) / h + (0.5 * h) * ws.a_now;  // predicted v(t1)
+  accelerations(model, out.x, ws.stage_v, ws.a_now, ws);
   out.v = ((2.0 - d) * (out.x - in.x) + (h * h) * ws.a_now) / (2.0 * h);
   for (int i = 0; i < n; ++i)
     if (model.pinned(i)) out.v.row(i) = in.v.row(i);

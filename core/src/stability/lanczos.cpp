@@ -111,6 +111,8 @@ void release_lanczos_memory() {
   if (!g_kept_in_use) g_kept = KeptVectors{};
 }
 
+// Long: the run and its second pass (the vector made again where it was not kept) share the three
+// rotating vectors, the kept array and the step (lanczos_step); apart, each would take all of them.
 TopEigenpair top_eigenpair(const SymmetricOperator& apply, const Points& start, int max_steps, double tolerance) {
   TopEigenpair result;
   const Eigen::Index n = start.rows();

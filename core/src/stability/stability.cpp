@@ -365,6 +365,72 @@ StabilityAnalysis::StabilityAnalysis(const Model& model, const State& state, int
   }
 }
 
+namespace {
+
+// The dense spectrum, where the free coordinates are few: every eigenvalue of [0 I; -K -C], the
+// modes from them (an overdamped pair from its eigenvector), and each Runge-Kutta row's limit
+// from the eigenvalue that sets it, with its mode.
+struct DenseSpectrum {
+  std::vector<Complex> eigenvalues;
+  std::vector<StabilityAnalysis::ModePoint> modes, growth_modes;
+  std::vector<StabilityLimit> limits;
+};
+
+DenseSpectrum dense_spectrum(const Linearised& lin) {
+  DenseSpectrum out;
+  const Eigen::MatrixXd K = lin.dense_stiffness(), C = lin.dense_damping();
+  const Eigen::Index n = K.rows();
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+  A.topRightCorner(n, n).setIdentity();
+  A.bottomLeftCorner(n, n) = -K;
+  A.bottomRightCorner(n, n) = -C;
+  const Eigen::VectorXcd lambdas = springlab::eigenvalues(A);
+  // K^ and C^ are positive semidefinite: a positive real part is rounding. A direction with
+  // no stiffness and no damping (a spring at rest turning about its anchor) is a double
+  // eigenvalue 0 that rounding splits by about sqrt(eps) |A|: left out.
+  const double size = std::sqrt(lin.stiffness_bound()) + lin.damping_bound();
+  for (Complex lambda : lambdas) {
+    if (std::abs(lambda) <= 1e-6 * size) continue;
+    if (lambda.real() > 0.0) lambda.real(0.0);
+    if (std::abs(lambda.real()) <= 1e-13 * size) lambda.real(0.0);
+    if (std::abs(lambda.imag()) <= 1e-13 * size) lambda.imag(0.0);
+    out.eigenvalues.push_back(lambda);
+    if (lambda.imag() > 0.0) {
+      out.modes.push_back({-2.0 * lambda.real(), std::norm(lambda)});
+      out.growth_modes.push_back(out.modes.back());
+    } else if (lambda.imag() == 0.0 && lambda.real() < 0.0) {
+      out.modes.push_back({-lambda.real(), 0.0});
+      // A real eigenvalue is one root of its eigenvector's lambda^2 + gamma lambda + kappa: the
+      // pair (an overdamped mode) comes from the vector (rare: none in the shipped scenes).
+      const Points y = lin.points(dense_eigenvector(K, C, lambda));
+      out.growth_modes.push_back({lin.damping(y), lin.stiffness(y)});
+    }
+  }
+  for (const MethodInfo& info : methods()) {
+    if (info.family != MethodFamily::RungeKutta) continue;
+    const Method m = info.id;
+    StabilityLimit limit;
+    limit.method = m;
+    limit.h = kInf;
+    Complex worst = 0.0;
+    for (Complex lambda : out.eigenvalues) {
+      const double h = runge_kutta_limit(m, lambda);
+      if (h < limit.h) {
+        limit.h = h;
+        worst = lambda;
+      }
+    }
+    if (std::abs(worst) > 0.0) {
+      const Points y = lin.points(dense_eigenvector(K, C, worst));
+      limit.mode = mode_of(lin, y, lin.damping(y), lin.stiffness(y));
+    }
+    out.limits.push_back(std::move(limit));
+  }
+  return out;
+}
+
+}  // namespace
+
 void StabilityAnalysis::analyse(const Model& model, const State& state, int dense_dofs) {
   const auto started = std::chrono::steady_clock::now();
   for (const MethodInfo& m : methods()) {
@@ -431,54 +497,11 @@ void StabilityAnalysis::analyse(const Model& model, const State& state, int dens
   }
 
   if (dense_) {
-    const Eigen::MatrixXd K = lin.dense_stiffness(), C = lin.dense_damping();
-    const Eigen::Index n = K.rows();
-    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
-    A.topRightCorner(n, n).setIdentity();
-    A.bottomLeftCorner(n, n) = -K;
-    A.bottomRightCorner(n, n) = -C;
-    const Eigen::VectorXcd lambdas = springlab::eigenvalues(A);
-    // K^ and C^ are positive semidefinite: a positive real part is rounding. A direction with
-    // no stiffness and no damping (a spring at rest turning about its anchor) is a double
-    // eigenvalue 0 that rounding splits by about sqrt(eps) |A|: left out.
-    const double size = std::sqrt(lin.stiffness_bound()) + lin.damping_bound();
-    for (Complex lambda : lambdas) {
-      if (std::abs(lambda) <= 1e-6 * size) continue;
-      if (lambda.real() > 0.0) lambda.real(0.0);
-      if (std::abs(lambda.real()) <= 1e-13 * size) lambda.real(0.0);
-      if (std::abs(lambda.imag()) <= 1e-13 * size) lambda.imag(0.0);
-      eigenvalues_.push_back(lambda);
-      if (lambda.imag() > 0.0) {
-        modes_.push_back({-2.0 * lambda.real(), std::norm(lambda)});
-        growth_modes_.push_back(modes_.back());
-      } else if (lambda.imag() == 0.0 && lambda.real() < 0.0) {
-        modes_.push_back({-lambda.real(), 0.0});
-        // A real eigenvalue is one root of its eigenvector's lambda^2 + gamma lambda + kappa: the
-        // pair (an overdamped mode) comes from the vector (rare: none in the shipped scenes).
-        const Points y = lin.points(dense_eigenvector(K, C, lambda));
-        growth_modes_.push_back({lin.damping(y), lin.stiffness(y)});
-      }
-    }
-    for (const MethodInfo& info : methods()) {
-      if (info.family != MethodFamily::RungeKutta) continue;
-      const Method m = info.id;
-      StabilityLimit limit;
-      limit.method = m;
-      limit.h = kInf;
-      Complex worst = 0.0;
-      for (Complex lambda : eigenvalues_) {
-        const double h = runge_kutta_limit(m, lambda);
-        if (h < limit.h) {
-          limit.h = h;
-          worst = lambda;
-        }
-      }
-      if (std::abs(worst) > 0.0) {
-        const Points y = lin.points(dense_eigenvector(K, C, worst));
-        limit.mode = mode_of(lin, y, lin.damping(y), lin.stiffness(y));
-      }
-      set(std::move(limit));
-    }
+    DenseSpectrum spectrum = dense_spectrum(lin);
+    eigenvalues_ = std::move(spectrum.eigenvalues);
+    modes_ = std::move(spectrum.modes);
+    growth_modes_ = std::move(spectrum.growth_modes);
+    for (StabilityLimit& limit : spectrum.limits) set(std::move(limit));
   } else {
     for (const Sample& s : trace.samples()) modes_.push_back({s.gamma, s.kappa});
     growth_modes_ = modes_;
