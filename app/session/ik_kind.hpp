@@ -27,7 +27,7 @@ class IkKind final : public SceneKind {
  public:
   explicit IkKind(IkScene ik) : ik_(std::move(ik)), per_frame_(ik_.iterations_per_frame) {}
 
-  Id id() const override { return Id::InverseKinematics; }
+  std::string_view kind_name() const override { return "inverse-kinematics"; }
   int row_count() const override;
   LaneRow row(int k) const override;
   int row_of(const Lane& lane) const override;

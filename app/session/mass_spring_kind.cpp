@@ -16,7 +16,7 @@ class MassSpringKind final : public SceneKind {
  public:
   explicit MassSpringKind(std::vector<Method> scene_methods) : scene_methods_(std::move(scene_methods)) {}
 
-  Id id() const override { return Id::MassSpring; }
+  std::string_view kind_name() const override { return "mass-spring"; }
 
   // The rows are the method table's, in its order: row k is Method k (methods/table.cpp checks
   // the order).

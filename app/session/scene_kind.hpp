@@ -13,7 +13,7 @@
 // A session makes its kind once, from its scene (make_scene_kind), and asks it to make, follow,
 // sample and reset its lanes, which particles may be held, what compare sets side by side and
 // what the number keys choose. The kind's UI half (its controls, chart, words) is
-// ui/kind_panels.hpp's, chosen by id(). docs/architecture.md, "A scene kind", says how to add one.
+// the panels registered under its kind_name() (ui/kind_panels.hpp). docs/architecture.md, "A scene kind", says how to add one.
 #pragma once
 
 #include <array>
@@ -52,12 +52,13 @@ struct GuideCircle {
 
 class SceneKind {
  public:
-  enum class Id { MassSpring, InverseKinematics };
   // What a lane has just done: a frame's steps (or none, paused), or one step (single-stepping).
   enum class Steps { Paused, Frame, One };
 
   virtual ~SceneKind() = default;
-  virtual Id id() const = 0;
+  // The kind's name ("mass-spring", "inverse-kinematics"): its UI half is the panels registered
+  // under it (ui/kind_panels.hpp, add_kind_panels).
+  virtual std::string_view kind_name() const = 0;
 
   // Rows: what a lane may be, in the order the number keys choose them (1, 2, ...).
   virtual int row_count() const = 0;

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "chart/chart.hpp"
@@ -39,7 +40,11 @@ struct KindPanels {
   std::string (*progress)(const app::Lane& lane);
 };
 
+// The UI half of a scene's kind: the panels registered under its kind_name(). The built-in kinds'
+// are there from the start; a kind of one's own adds its own before its first frame (a kind with
+// none is a mistake of the program: std::logic_error naming it).
 const KindPanels& kind_panels(const app::SceneKind& kind);
+void add_kind_panels(std::string_view kind_name, const KindPanels& panels);
 const KindPanels& mass_spring_panels();
 const KindPanels& ik_panels();
 

@@ -16,6 +16,10 @@
 #include "support.hpp"
 #include "ui/actions.hpp"
 #include "ui/kind_panels.hpp"
+#include "ui/panels.hpp"
+#include "ui/theme.hpp"
+
+#include <imgui.h>
 
 namespace springlab::app {
 namespace {
@@ -32,7 +36,8 @@ double distance(const std::array<float, 3>& a, const std::array<float, 3>& b) {
 
 TEST(SceneKind, EachSceneHasItsKindAndItsRows) {
   const auto spring = make_scene_kind(test::shipped("spring"));
-  EXPECT_EQ(spring->id(), SceneKind::Id::MassSpring);
+  EXPECT_EQ(spring->kind_name(), "mass-spring");
+  EXPECT_EQ(&ui::kind_panels(*spring), &ui::mass_spring_panels());
   ASSERT_EQ(spring->row_count(), static_cast<int>(methods().size()));
   for (const MethodInfo& m : methods()) {  // row k is method k, as its table says
     const LaneRow row = spring->row(static_cast<int>(m.id));
@@ -46,7 +51,8 @@ TEST(SceneKind, EachSceneHasItsKindAndItsRows) {
             (std::vector<int>{static_cast<int>(Method::Euler), static_cast<int>(Method::Verlet)}));
 
   const auto arm = make_scene_kind(test::shipped("ik-arm"));
-  EXPECT_EQ(arm->id(), SceneKind::Id::InverseKinematics);
+  EXPECT_EQ(arm->kind_name(), "inverse-kinematics");
+  EXPECT_EQ(&ui::kind_panels(*arm), &ui::ik_panels());
   ASSERT_EQ(arm->row_count(), 3);
   std::set<Mark> marks;
   for (int k = 0; k < 3; ++k) {
@@ -138,10 +144,10 @@ TEST(SceneKind, KeysAndHoldingAskTheKind) {
 // A kind no one else names: its lanes are two methods (explicit Euler and Verlet), the rope's
 // free end is its handle, and a guide circle of 0.5 m is drawn round the anchor, its springs
 // in the lane's colour. The session, picking, the keys and the drawing take it as it is.
-class TetheredKind final : public SceneKind {
+class TetheredKind : public SceneKind {
  public:
   explicit TetheredKind(int handle) : handle_(handle) {}
-  Id id() const override { return Id::MassSpring; }  // (its UI half: the mass-spring panels)
+  std::string_view kind_name() const override { return "tethered"; }
   int row_count() const override { return 2; }
   LaneRow row(int k) const override {
     const MethodInfo& m = method_info(k == 0 ? Method::Euler : Method::Verlet);
@@ -165,9 +171,58 @@ class TetheredKind final : public SceneKind {
   int handle_;
 };
 
+// Its UI half, its own: the mass-spring panels but for its controls, which say what they are.
+int g_tethered_controls_drawn = 0;
+const ui::KindPanels& tethered_panels() {
+  static const ui::KindPanels panels = [] {
+    ui::KindPanels p = ui::mass_spring_panels();
+    p.controls = [](Session&, ui::UiState&, const ui::FrameStats&, const ui::PanelLayout&, bool) {
+      ImGui::TextUnformatted("tethered controls");
+      ++g_tethered_controls_drawn;
+    };
+    return p;
+  }();
+  return panels;
+}
+
+// A kind whose panels no one added: asking for them is a mistake of the program, said by name.
+class UnpanelledKind final : public TetheredKind {
+ public:
+  UnpanelledKind() : TetheredKind(0) {}
+  std::string_view kind_name() const override { return "unpanelled"; }
+};
+
+TEST(SceneKind, AKindWithNoPanelsIsToldByName) {
+  try {
+    (void)ui::kind_panels(UnpanelledKind());
+    ADD_FAILURE() << "a kind with no panels was given some";
+  } catch (const std::logic_error& e) {
+    EXPECT_NE(std::string(e.what()).find("'unpanelled'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("add_kind_panels"), std::string::npos) << e.what();
+  }
+}
+
 TEST(SceneKind, AKindOfOnesOwnNeedsNoOtherEdit) {
   const int end = test::shipped("rope").model.particle_count() - 1;
   Session session = session_of("rope", std::make_unique<TetheredKind>(end));
+  // Its UI half, added under its name, is the one the panels draw.
+  ui::add_kind_panels("tethered", tethered_panels());
+  ASSERT_EQ(&ui::kind_panels(session.kind()), &tethered_panels());
+  ImGui::CreateContext();
+  ui::apply_theme(1.0f);
+  unsigned char* pixels = nullptr;
+  int tex_w = 0, tex_h = 0;
+  ImGui::GetIO().Fonts->GetTexDataAsRGBA32(&pixels, &tex_w, &tex_h);
+  ImGui::GetIO().DisplaySize = ImVec2(1280, 720);
+  ImGui::GetIO().DeltaTime = 1.0f / 60.0f;
+  {
+    ui::UiState panels_ui;
+    ImGui::NewFrame();
+    ui::draw_panels(session, panels_ui, ui::FrameStats{}, 1280, 720);
+    ImGui::Render();
+  }
+  ImGui::DestroyContext();
+  EXPECT_EQ(g_tethered_controls_drawn, 1);
   EXPECT_EQ(session.primary().sim.settings().method, Method::Verlet);  // its initial row
   EXPECT_EQ(session.primary().inverted_cells, 1);                      // started by it
   ui::UiState ui;
