@@ -696,10 +696,13 @@ check("a pinch zooms the view on a phone", async ({ browser, base }) => {
 // Then code that loops forever, throws or does not parse: each said, with the step or the line,
 // and the page runs on.
 const homeworkCode = (name) => fs.readFileSync(path.join(root, "tests/homework/js", name), "utf8");
+// The report once it is new and no longer "checking...": the text the wait saw, read in the same
+// evaluation (a second read could see the next run's "checking..." in between).
 async function homeworkReport(page, before) {
-  await page.waitForFunction((b) => { const t = document.getElementById("homework-report").textContent;
-                                      return t !== b && t !== "checking\u2026"; }, { timeout: 60000 }, before);
-  return page.$eval("#homework-report", (e) => e.textContent);
+  const seen = await page.waitForFunction((b) => { const t = document.getElementById("homework-report").textContent;
+                                                   return t !== b && t !== "checking\u2026" ? t : null; },
+                                          { timeout: 60000 }, before);
+  return seen.jsonValue();
 }
 // (The button pressed from the page's script: a mouse click costs a second of SwiftShader's frames
 // here, and the first run is a real key press.)
