@@ -19,6 +19,8 @@ import re
 import subprocess
 import sys
 
+from house_check import self_test_verdict, take_floor
+
 FIXTURE = pathlib.Path(__file__).resolve().parent / "fixtures" / "dead_code"
 DIRS = ["core", "app", "python/src", "tests", "bench", "examples"]
 SCRIPTS = (".js", ".cjs", ".html")
@@ -40,18 +42,11 @@ def self_test():
     for alive in ("called_from_a_return", "called_inline", "exported_to_javascript", " user"):
         if alive + "\n" in out:
             problems.append(f"{alive.strip()}, which is called, was named")
-    for p in problems:
-        print(f"self-test: {p}", file=sys.stderr)
-    print("self-test: " + ("FAILED" if problems else "the check names the planted dead function and no live one"))
-    sys.exit(1 if problems else 0)
+    self_test_verdict(problems, "the check names the planted dead function and no live one")
 
 
 def main(args):
-    min_functions = 800
-    if "--min-functions" in args:
-        k = args.index("--min-functions")
-        min_functions = int(args[k + 1])
-        del args[k:k + 2]
+    min_functions = take_floor(args, "--min-functions", 800)
     root = pathlib.Path(args[0]).resolve()
     files = [p for d in DIRS if (root / d).is_dir() for p in sorted((root / d).rglob("*"))
              if p.is_file() and "fixtures" not in p.relative_to(root).parts

@@ -14,6 +14,8 @@ import re
 import subprocess
 import sys
 
+from house_check import self_test_verdict, take_floor
+
 FIXTURE = pathlib.Path(__file__).resolve().parent / "fixtures" / "function_length"
 
 
@@ -35,20 +37,13 @@ def self_test():
     rc, out = run()  # the default floor: the fixture's few functions are too few
     if rc == 0 or "too few" not in out:
         problems.append("reading the fixture's 3 functions passed the default floor")
-    for p in problems:
-        print(f"self-test: {p}", file=sys.stderr)
-    print("self-test: " + ("FAILED" if problems else "the check fails on the planted function and on too few read"))
-    sys.exit(1 if problems else 0)
+    self_test_verdict(problems, "the check fails on the planted function and on too few read")
 
 
 args = sys.argv[1:]
 if args == ["--self-test"]:
     self_test()
-min_functions = 1000
-if "--min-functions" in args:
-    k = args.index("--min-functions")
-    min_functions = int(args[k + 1])
-    del args[k:k + 2]
+min_functions = take_floor(args, "--min-functions", 1000)
 root = pathlib.Path(args[0] if args else ".")
 limit = int(args[1]) if len(args) > 1 else 100
 SCOPES = re.compile(r"\b(namespace|class|struct|union|enum)\b|extern\s*\"C\"")

@@ -13,6 +13,8 @@ import re
 import subprocess
 import sys
 
+from house_check import self_test_verdict, take_floor
+
 FIXTURE = pathlib.Path(__file__).resolve().parent / "fixtures" / "include_cycles"
 
 
@@ -37,10 +39,7 @@ def self_test():
     rc, out = run()  # the default floor: the fixture's 3 includes are too few
     if rc == 0 or "too few" not in out:
         problems.append("reading the fixture's 3 includes passed the default floor")
-    for p in problems:
-        print(f"self-test: {p}", file=sys.stderr)
-    print("self-test: " + ("FAILED" if problems else "the check fails on the planted cycle and on too few read"))
-    sys.exit(1 if problems else 0)
+    self_test_verdict(problems, "the check fails on the planted cycle and on too few read")
 
 
 def read_rooms(project):
@@ -100,11 +99,7 @@ def main():
     args = sys.argv[1:]
     if args == ["--self-test"]:
         self_test()
-    min_includes = 80
-    if "--min-includes" in args:
-        k = args.index("--min-includes")
-        min_includes = int(args[k + 1])
-        del args[k:k + 2]
+    min_includes = take_floor(args, "--min-includes", 80)
     project = pathlib.Path(args[0] if args else ".")
     rooms, edges, files_read, includes_read = read_rooms(project)
     cycles = find_cycles(rooms, edges)

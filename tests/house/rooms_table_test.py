@@ -16,6 +16,8 @@ import re
 import subprocess
 import sys
 
+from house_check import self_test_verdict, take_floor
+
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from include_cycles_test import read_rooms  # noqa: E402  (the same reading of the includes)
 
@@ -43,10 +45,7 @@ def self_test():
                  "docs/architecture.md: the rooms table has no row for delta/ (it depends on beta)"):
         if want not in out:
             problems.append(f"not said: {want}")
-    for p in problems:
-        print(f"self-test: {p}", file=sys.stderr)
-    print("self-test: " + ("FAILED" if problems else "the check fails on each planted difference"))
-    sys.exit(1 if problems else 0)
+    self_test_verdict(problems, "the check fails on each planted difference")
 
 
 def read_table(path):
@@ -83,11 +82,7 @@ def main():
     args = sys.argv[1:]
     if args == ["--self-test"]:
         self_test()
-    min_includes = 80
-    if "--min-includes" in args:
-        k = args.index("--min-includes")
-        min_includes = int(args[k + 1])
-        del args[k:k + 2]
+    min_includes = take_floor(args, "--min-includes", 80)
     project = pathlib.Path(args[0] if args else ".")
     rooms, edges, files_read, includes_read = read_rooms(project)
     depends = {r: {b for (a, b) in edges if a == r} for r in rooms}
