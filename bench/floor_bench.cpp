@@ -59,7 +59,8 @@ struct Rope {
       for (int c = 0; c < 3; ++c) d[c] = at<f64x4>(X[c] + i + 1) - at<f64x4>(X[c] + i);
       for (int c = 0; c < 3; ++c) rate += (at<f64x4>(V[c] + i + 1) - at<f64x4>(V[c] + i)) * d[c];
       f64x4 s = spring_scale<true>(d[0] * d[0] + d[1] * d[1] + d[2] * d[2], rate, ks, kd, rest);
-      if (i + simd::kLanes >= kNodes) s = simd::first_lanes(s, kNodes - 1 - i);  // the last has none
+      if (i + simd::kLanes >= kNodes)
+        s = simd::first_lanes(s, kNodes - 1 - i);  // the last has none
       for (int c = 0; c < 3; ++c) f[c] = s * d[c];
     };
     f64x4 before[3] = {}, now[3], next[3] = {}, sum{};
@@ -98,7 +99,8 @@ void BM_RopeFloor(benchmark::State& state) {
     helper = std::thread([&] {
       for (std::int64_t n = 1;; ++n) {
         std::int64_t wanted;
-        while ((wanted = go.load(std::memory_order_acquire)) >= 0 && wanted < n) __builtin_ia32_pause();
+        while ((wanted = go.load(std::memory_order_acquire)) >= 0 && wanted < n)
+          __builtin_ia32_pause();
         if (wanted < 0) return;
         helper_check += rope.step(half, Rope::kNodes);
         done.store(n, std::memory_order_release);
@@ -121,10 +123,12 @@ void BM_RopeFloor(benchmark::State& state) {
     go.store(-1, std::memory_order_release);
     helper.join();
   }
-  const double ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
+  const double ns =
+      std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
   benchmark::DoNotOptimize(check);
   benchmark::DoNotOptimize(helper_check);
-  state.counters["ns_per_spring"] = ns / (static_cast<double>(state.iterations()) * (Rope::kNodes - 1));
+  state.counters["ns_per_spring"] =
+      ns / (static_cast<double>(state.iterations()) * (Rope::kNodes - 1));
 }
 BENCHMARK(BM_RopeFloor)->Arg(1)->Arg(2)->UseRealTime();
 
@@ -156,10 +160,13 @@ void BM_CoreToCore(benchmark::State& state) {
   };
   const auto start = std::chrono::steady_clock::now();
   for (auto _ : state) trip();  // (exactly kCoreToCoreTrips: Iterations below)
-  const double ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
-  while (trips < kCoreToCoreTrips) trip();  // (never, unless run with other iterations: the other thread ends)
+  const double ns =
+      std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
+  while (trips < kCoreToCoreTrips)
+    trip();  // (never, unless run with other iterations: the other thread ends)
   other.join();
-  state.counters["ns_round_trip"] = ns / static_cast<double>(std::max<std::int64_t>(state.iterations(), 1));
+  state.counters["ns_round_trip"] =
+      ns / static_cast<double>(std::max<std::int64_t>(state.iterations(), 1));
 }
 BENCHMARK(BM_CoreToCore)->Iterations(kCoreToCoreTrips)->UseRealTime();
 

@@ -38,8 +38,10 @@ void BM_IterativeCloth(benchmark::State& state) {
   sim.advance(20);  // past local-global's factorisation
   const std::int64_t solver_iterations = sim.counters().solver_iterations;
   for (auto _ : state) sim.step();
-  state.counters["steps_per_s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
-  const double iterations = static_cast<double>(sim.counters().solver_iterations - solver_iterations);
+  state.counters["steps_per_s"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  const double iterations =
+      static_cast<double>(sim.counters().solver_iterations - solver_iterations);
   if (settings.method == Method::ImplicitEuler && iterations > 0) {
     state.counters["cg_per_step"] = iterations / static_cast<double>(state.iterations());
     state.counters["cg_per_s"] = benchmark::Counter(iterations, benchmark::Counter::kIsRate);
@@ -77,8 +79,8 @@ FloatFactor single_precision(const LocalGlobalSolver& S) {
 }
 void solve_in_place_float(const LocalGlobalSolver& S, const FloatFactor& f, std::vector<float>& z) {
   const auto& L = S.factor.matrixL().nestedExpression();
-  local_global_parts::solve_ldlt3(static_cast<int>(L.cols()), L.outerIndexPtr(), L.innerIndexPtr(), f.value.data(),
-                                  f.inv_d.data(), z.data());
+  local_global_parts::solve_ldlt3(static_cast<int>(L.cols()), L.outerIndexPtr(), L.innerIndexPtr(),
+                                  f.value.data(), f.inv_d.data(), z.data());
 }
 
 // Local-global's floor on the same cloths: one local pass and one pair of triangular solves (of
@@ -117,8 +119,11 @@ void BM_IterativeLocalGlobalFloor(benchmark::State& state) {
     if (part != 1) local_global_parts::solve_in_place(S, S.rhs);
     benchmark::ClobberMemory();
   }
-  state.counters["factor_nonzeros"] = static_cast<double>(S.factor.matrixL().nestedExpression().nonZeros());
-  state.SetLabel(part == 0 ? "local pass + solves" : part == 1 ? "local pass" : "triangular solves");
+  state.counters["factor_nonzeros"] =
+      static_cast<double>(S.factor.matrixL().nestedExpression().nonZeros());
+  state.SetLabel(part == 0   ? "local pass + solves"
+                 : part == 1 ? "local pass"
+                             : "triangular solves");
 }
 BENCHMARK(BM_IterativeLocalGlobalFloor)
     ->ArgsProduct({{81}, {30}, {0, 1, 2, 3}})

@@ -15,8 +15,9 @@ namespace springlab {
 namespace {
 
 app::Session cloth_session(int side) {
-  Scene scene = load_scene(std::string(SPRINGLAB_SOURCE_DIR) + "/assets/scenes/cloth.json",
-                           {"cloth.width=" + std::to_string(side), "cloth.height=" + std::to_string(side)});
+  Scene scene =
+      load_scene(std::string(SPRINGLAB_SOURCE_DIR) + "/assets/scenes/cloth.json",
+                 {"cloth.width=" + std::to_string(side), "cloth.height=" + std::to_string(side)});
   SimulationSettings settings;
   settings.dt = 5e-4 * 64 / side;  // stable: the step a cloth allows shrinks with its spacing
   app::Session session(std::move(scene), settings, 30.0);
@@ -32,11 +33,13 @@ void BM_RenderFrame(benchmark::State& state) {
   app::Image image;
   for (auto _ : state) {
     const draw::Frame frame = draw::build_frame(session, view, draw::Viewport{0, 0, 1280, 720});
-    offscreen.render(frame, [] {}, image);
+    offscreen.render(
+        frame, [] {}, image);
     benchmark::DoNotOptimize(image);
   }
   state.SetLabel(offscreen.renderer_name());
-  state.counters["frames_per_s"] = benchmark::Counter(1.0, benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["frames_per_s"] =
+      benchmark::Counter(1.0, benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(BM_RenderFrame)->Arg(64)->Arg(128)->UseRealTime()->Unit(benchmark::kMillisecond);
 
@@ -44,7 +47,8 @@ BENCHMARK(BM_RenderFrame)->Arg(64)->Arg(128)->UseRealTime()->Unit(benchmark::kMi
 void BM_BuildFrame(benchmark::State& state) {
   app::Session session = cloth_session(static_cast<int>(state.range(0)));
   const draw::ViewOptions view = draw::ViewOptions::for_scene(session.scene());
-  for (auto _ : state) benchmark::DoNotOptimize(draw::build_frame(session, view, draw::Viewport{0, 0, 1280, 720}));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(draw::build_frame(session, view, draw::Viewport{0, 0, 1280, 720}));
 }
 BENCHMARK(BM_BuildFrame)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond);
 

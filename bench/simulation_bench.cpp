@@ -1,10 +1,10 @@
 // Benchmarks of the simulation core (Google Benchmark): the spring kernel and the force pass,
 // each method's step on rope and cloth at several sizes and thread counts, the implicit solve,
-// building scenes, and the stability estimate. Run: build/bench/springlab_bench (docs/performance.md has the figures).
+// building scenes, and the stability estimate. Run: build/bench/springlab_bench
+// (docs/performance.md has the figures).
 #include <benchmark/benchmark.h>
 
 #include <Eigen/SparseCholesky>
-
 #include <chrono>
 #include <cstdio>
 #include <string>
@@ -110,13 +110,17 @@ void BM_ImplicitCloth(benchmark::State& state) {
   const double solves = static_cast<double>(after.linear_solves - before.linear_solves);
   state.counters["cg_iterations_per_step"] =
       static_cast<double>(after.solver_iterations - before.solver_iterations) / solves;
-  state.counters["unconverged"] = static_cast<double>(after.unconverged_solves - before.unconverged_solves);
+  state.counters["unconverged"] =
+      static_cast<double>(after.unconverged_solves - before.unconverged_solves);
   char label[32];
   std::snprintf(label, sizeof label, "tolerance %.0e", settings.step.solver_tolerance);
   state.SetLabel(label);
   set_thread_count(0);
 }
-BENCHMARK(BM_ImplicitCloth)->ArgsProduct({{32, 64}, {1, 2}})->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ImplicitCloth)
+    ->ArgsProduct({{32, 64}, {1, 2}})
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
 
 // A rope's step: nodes, threads, method.
 void BM_RopeStep(benchmark::State& state) {
@@ -133,7 +137,9 @@ void BM_RopeStep(benchmark::State& state) {
   state.SetLabel(method_info(settings.method).name);
   set_thread_count(0);
 }
-BENCHMARK(BM_RopeStep)->ArgsProduct({{100, 1000, 10000}, {1, 2}, explicit_methods()})->UseRealTime();
+BENCHMARK(BM_RopeStep)
+    ->ArgsProduct({{100, 1000, 10000}, {1, 2}, explicit_methods()})
+    ->UseRealTime();
 
 // Building a scene from its file: parsing, checking, generating, sorting springs into spans.
 void BM_BuildScene(benchmark::State& state) {
@@ -153,8 +159,11 @@ Scene analysed_scene(const benchmark::State& state) {
 std::string analysed_label(const benchmark::State& state) {
   const int nodes = static_cast<int>(state.range(0)), side = static_cast<int>(state.range(1));
   const int threads = static_cast<int>(state.range(2));
-  return (nodes > 0 ? "rope " + std::to_string(nodes) : "cloth " + std::to_string(side) + "x" + std::to_string(side)) +
-         ", " + (threads > 0 ? std::to_string(threads) + " thread" + (threads > 1 ? "s" : "") : "all threads");
+  return (nodes > 0 ? "rope " + std::to_string(nodes)
+                    : "cloth " + std::to_string(side) + "x" + std::to_string(side)) +
+         ", " +
+         (threads > 0 ? std::to_string(threads) + " thread" + (threads > 1 ? "s" : "")
+                      : "all threads");
 }
 void analysis_arguments(benchmark::internal::Benchmark* b) {
   for (int threads : {1, 0}) {
@@ -189,9 +198,9 @@ void BM_StabilityAtRest(benchmark::State& state) {
 }
 BENCHMARK(BM_StabilityAtRest)->Apply(analysis_arguments);
 
-// The floor under the analysis's Newton steps (docs/performance.md, "The stability analysis"): one sparse LDL^T
-// factorisation of a cloth's stiffness at its balance plus a small mu M, as equilibrium.cpp
-// makes it (Eigen's SimplicialLDLT, the ordering found once, outside the timing).
+// The floor under the analysis's Newton steps (docs/performance.md, "The stability analysis"): one
+// sparse LDL^T factorisation of a cloth's stiffness at its balance plus a small mu M, as
+// equilibrium.cpp makes it (Eigen's SimplicialLDLT, the ordering found once, outside the timing).
 void BM_BalanceFactorisation(benchmark::State& state) {
   const Scene s = cloth(static_cast<int>(state.range(0)));
   const Model& m = s.model;
@@ -203,18 +212,22 @@ void BM_BalanceFactorisation(benchmark::State& state) {
   std::vector<Eigen::Triplet<double>> t;
   for (int k = 0; k < m.spring_count(); ++k) {
     const int ends[2] = {index[m.spring_a[k]], index[m.spring_b[k]]};
-    const Eigen::Matrix3d block = spring_jacobian(rest.x.row(m.spring_a[k]).transpose(), rest.x.row(m.spring_b[k]).transpose(),
-                                                  Vec3::Zero(), Vec3::Zero(), m.ks(k), 0.0, m.rest_length[k], false)
-                                      .dfdx;
+    const Eigen::Matrix3d block =
+        spring_jacobian(rest.x.row(m.spring_a[k]).transpose(),
+                        rest.x.row(m.spring_b[k]).transpose(), Vec3::Zero(), Vec3::Zero(), m.ks(k),
+                        0.0, m.rest_length[k], false)
+            .dfdx;
     for (int p = 0; p < 2; ++p)
       for (int q = 0; q < 2; ++q)
         if (ends[p] >= 0 && ends[q] >= 0)
           for (int r = 0; r < 3; ++r)
-            for (int c = 0; c < 3; ++c) t.emplace_back(3 * ends[p] + r, 3 * ends[q] + c, (p == q ? 1.0 : -1.0) * block(r, c));
+            for (int c = 0; c < 3; ++c)
+              t.emplace_back(3 * ends[p] + r, 3 * ends[q] + c, (p == q ? 1.0 : -1.0) * block(r, c));
   }
   for (int i = 0; i < m.particle_count(); ++i)
     if (index[i] >= 0)
-      for (int c = 0; c < 3; ++c) t.emplace_back(3 * index[i] + c, 3 * index[i] + c, 1e-3 * m.mass[i]);
+      for (int c = 0; c < 3; ++c)
+        t.emplace_back(3 * index[i] + c, 3 * index[i] + c, 1e-3 * m.mass[i]);
   Eigen::SparseMatrix<double> A(3 * free, 3 * free);
   A.setFromTriplets(t.begin(), t.end());
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
@@ -226,7 +239,6 @@ BENCHMARK(BM_BalanceFactorisation)->Arg(64)->Arg(128)->Unit(benchmark::kMillisec
 
 }  // namespace
 }  // namespace springlab
-
 
 namespace springlab {
 namespace {

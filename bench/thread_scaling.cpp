@@ -1,18 +1,19 @@
 // Steps a second of one solver at each of several thread counts, with the core alone (no window,
 // no GL: it links statically and runs on any x86-64 Linux, the lent 16-core machine included).
-// docs/performance.md's scaling and load tables come from it (scripts/load-bench.sh, scripts/scaling.sh).
+// docs/performance.md's scaling and load tables come from it (scripts/load-bench.sh,
+// scripts/scaling.sh).
 //
 //   springlab_threads SCENE_FILE METHOD DT STEPS THREADS... [--set KEY=VALUE]... [--analysis]
 //
 // For each thread count: a warm-up of STEPS / 10 steps, then STEPS timed steps; one line
-// "threads=T steps_per_s=S team=J alone=A yields=Y stalls=R". With --analysis, the scene's stability
-// analysis is timed instead: "threads=T analysis_s=S".
+// "threads=T steps_per_s=S team=J alone=A yields=Y stalls=R". With --analysis, the scene's
+// stability analysis is timed instead: "threads=T analysis_s=S".
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <optional>
-#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -25,7 +26,10 @@ using namespace springlab;
 
 int main(int argc, char** argv) {
   if (argc < 6) {
-    std::fprintf(stderr, "usage: %s SCENE_FILE METHOD DT STEPS THREADS... [--set KEY=VALUE]... [--analysis]\n", argv[0]);
+    std::fprintf(
+        stderr,
+        "usage: %s SCENE_FILE METHOD DT STEPS THREADS... [--set KEY=VALUE]... [--analysis]\n",
+        argv[0]);
     return 2;
   }
   try {
@@ -34,9 +38,12 @@ int main(int argc, char** argv) {
     bool analysis = false;
     for (int a = 5; a < argc; ++a) {
       const std::string arg = argv[a];
-      if (arg == "--set" && a + 1 < argc) overrides.push_back(argv[++a]);
-      else if (arg == "--analysis") analysis = true;
-      else thread_counts.push_back(std::atoi(argv[a]));
+      if (arg == "--set" && a + 1 < argc)
+        overrides.push_back(argv[++a]);
+      else if (arg == "--analysis")
+        analysis = true;
+      else
+        thread_counts.push_back(std::atoi(argv[a]));
     }
     const Scene scene = load_scene(argv[1], overrides);
     const std::optional<Method> method = find_method(argv[2]);
@@ -51,7 +58,8 @@ int main(int argc, char** argv) {
       if (analysis) {
         const auto start = std::chrono::steady_clock::now();
         const StabilityAnalysis a(scene.model, scene.state);
-        const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double s =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         std::printf("threads=%d analysis_s=%.4g w_max=%.6g\n", threads, s, a.w_max());
         std::fflush(stdout);
         continue;
@@ -66,15 +74,16 @@ int main(int argc, char** argv) {
       const TeamCounts before = team_counts();
       const auto start = std::chrono::steady_clock::now();
       const long taken = static_cast<long>(sim.advance(steps));
-      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const double s =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       const TeamCounts after = team_counts();
       if (sim.diverged()) {
         std::fprintf(stderr, "diverged: %s\n", sim.explain_divergence()->message().c_str());
         return 3;
       }
-      std::printf("threads=%d steps_per_s=%.5g team=%ld alone=%ld yields=%ld stalls=%ld\n", threads, taken / s,
-                  after.team - before.team, after.alone - before.alone, after.yields - before.yields,
-                  after.stalls - before.stalls);
+      std::printf("threads=%d steps_per_s=%.5g team=%ld alone=%ld yields=%ld stalls=%ld\n", threads,
+                  taken / s, after.team - before.team, after.alone - before.alone,
+                  after.yields - before.yields, after.stalls - before.stalls);
       std::fflush(stdout);
     }
   } catch (const std::exception& e) {

@@ -57,14 +57,16 @@ inline double rms_over_free(const Model& model, const Points& a, const Points& b
 struct BackwardEulerResidual {
   double worst = 0.0, largest_force = 0.0;
 };
-inline BackwardEulerResidual backward_euler_residual(const Model& model, const State& in, const State& out, double h) {
+inline BackwardEulerResidual backward_euler_residual(const Model& model, const State& in,
+                                                     const State& out, double h) {
   Points f;
   SpringForces buffer;
   evaluate_forces(model, out.x, out.v, f, buffer, ForceOutput::Force);
   BackwardEulerResidual r;
   for (int i = 0; i < model.particle_count(); ++i) {
     if (model.pinned(i)) continue;
-    r.worst = std::max(r.worst, (model.mass[i] * (out.v.row(i) - in.v.row(i)) - h * f.row(i)).norm());
+    r.worst =
+        std::max(r.worst, (model.mass[i] * (out.v.row(i) - in.v.row(i)) - h * f.row(i)).norm());
     r.largest_force = std::max(r.largest_force, f.row(i).norm());
   }
   return r;
@@ -95,8 +97,8 @@ inline void jitter(State& s, double dx, double dv, unsigned seed) {
     }
 }
 
-// The reference oscillator of docs/numerics.md ("Accuracy and cost") with optional damping: anchor at the origin, unit mass
-// at (1.5, 0, 0), rest length 1, k_s, k_d.
+// The reference oscillator of docs/numerics.md ("Accuracy and cost") with optional damping: anchor
+// at the origin, unit mass at (1.5, 0, 0), rest length 1, k_s, k_d.
 inline Scene oscillator(double ks = 100.0, double kd = 0.0) {
   Scene s = shipped("spring");
   set_stiffness(s.model, ks);
@@ -130,7 +132,8 @@ inline Scene coincident_pair(bool pinned, double ks, double kd) {
   return s;
 }
 
-// Largest over the steps of the RMS over free particles of |x - x_exact| (docs/numerics.md, "Accuracy and cost").
+// Largest over the steps of the RMS over free particles of |x - x_exact| (docs/numerics.md,
+// "Accuracy and cost").
 inline double error_against_exact(const Scene& scene, Method method, double h, double duration,
                                   double tolerance = 1e-4) {
   const auto exact = ExactOscillator::detect(scene.model, scene.state);

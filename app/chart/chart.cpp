@@ -16,11 +16,13 @@ std::string format_tick(double value, double step) {
     if (step > 0.0) {
       const double lead = std::floor(std::log10(step) + 1e-9);
       const double mantissa = step / std::pow(10.0, lead);
-      const int decimals = std::max(0, static_cast<int>(-lead) + (std::abs(mantissa - std::round(mantissa)) > 1e-6 ? 1 : 0));
+      const int decimals = std::max(
+          0, static_cast<int>(-lead) + (std::abs(mantissa - std::round(mantissa)) > 1e-6 ? 1 : 0));
       std::snprintf(s, sizeof s, "%.*f", std::min(decimals, 12), value);
       return s;
     }
-    // %.5g, not %.4g: 10000 stays "10000" (%.4g writes "1e+04", beside "1e5" from the branch below).
+    // %.5g, not %.4g: 10000 stays "10000" (%.4g writes "1e+04", beside "1e5" from the branch
+    // below).
     std::snprintf(s, sizeof s, "%.5g", value);
   } else {  // 1e-6, 2.5e7: a short mantissa and a bare exponent
     int exponent = static_cast<int>(std::floor(std::log10(a)));
@@ -31,7 +33,9 @@ std::string format_tick(double value, double step) {
     }
     // Digits enough for the step, relative to the exponent.
     int digits = 3;
-    if (step > 0.0) digits = std::clamp(exponent - static_cast<int>(std::floor(std::log10(step) + 1e-9)) + 1, 1, 12);
+    if (step > 0.0)
+      digits =
+          std::clamp(exponent - static_cast<int>(std::floor(std::log10(step) + 1e-9)) + 1, 1, 12);
     std::snprintf(s, sizeof s, "%.*ge%d", digits, mantissa, exponent);
   }
   return s;
@@ -73,12 +77,15 @@ std::vector<Tick> ticks(double lo, double hi, bool log, int target) {
   return out;
 }
 
-std::vector<Tick> ticks_that_fit(double lo, double hi, bool log, const std::function<float(double)>& at,
+std::vector<Tick> ticks_that_fit(double lo, double hi, bool log,
+                                 const std::function<float(double)>& at,
                                  const std::function<float(const std::string&)>& width, float gap) {
   const auto apart = [&](const std::vector<Tick>& t) {
     std::vector<std::pair<float, float>> spans;  // each label's left and right, in pixels
     for (const Tick& k : t)
-      if (!k.label.empty()) spans.emplace_back(at(k.value) - 0.5f * width(k.label), at(k.value) + 0.5f * width(k.label));
+      if (!k.label.empty())
+        spans.emplace_back(at(k.value) - 0.5f * width(k.label),
+                           at(k.value) + 0.5f * width(k.label));
     std::sort(spans.begin(), spans.end());
     for (std::size_t i = 1; i < spans.size(); ++i)
       if (spans[i].first < spans[i - 1].second + gap) return false;
@@ -127,7 +134,8 @@ void axis_range(const Chart& chart, bool x_axis, double& lo, double& hi) {
   // its growth is the point), or where every lane diverged (the single view after a divergence).
   if (!x_axis) {
     const bool none = !std::isfinite(lo);
-    const double reach = none ? 0.0 : kEscapeReach * std::max({hi - lo, std::abs(lo), std::abs(hi)});
+    const double reach =
+        none ? 0.0 : kEscapeReach * std::max({hi - lo, std::abs(lo), std::abs(hi)});
     for (const Series& s : chart.series) {
       if (!s.escapes) continue;
       double a, b;
@@ -167,11 +175,13 @@ Corner legend_corner(const Chart& chart, double width, double height, std::optio
   axis_range(chart, false, ylo, yhi);
   // The plot's unit square, y up.
   const auto unit = [](double v, double lo, double hi, bool log) {
-    return log ? (std::log10(v) - std::log10(lo)) / (std::log10(hi) - std::log10(lo)) : (v - lo) / (hi - lo);
+    return log ? (std::log10(v) - std::log10(lo)) / (std::log10(hi) - std::log10(lo))
+               : (v - lo) / (hi - lo);
   };
   const double pad = 0.01;  // the box's own margin
   const double w = std::min(width + pad, 1.0), h = std::min(height + pad, 1.0);
-  const Corner corners[] = {Corner::TopRight, Corner::TopLeft, Corner::BottomRight, Corner::BottomLeft};
+  const Corner corners[] = {Corner::TopRight, Corner::TopLeft, Corner::BottomRight,
+                            Corner::BottomLeft};
   int covered[4] = {0, 0, 0, 0};
   const auto count = [&](double u, double v) {
     if (!(u >= 0.0 && u <= 1.0 && v >= 0.0 && v <= 1.0)) return;
@@ -188,7 +198,8 @@ Corner legend_corner(const Chart& chart, double width, double height, std::optio
     double pu = 0.0, pv = 0.0;
     for (std::size_t k = 0; k < s.x.size() && k < s.y.size(); ++k) {
       const double x = s.x[k], y = s.y[k];
-      if (!std::isfinite(x) || !std::isfinite(y) || (chart.x.log && x <= 0) || (chart.y.log && y <= 0)) {
+      if (!std::isfinite(x) || !std::isfinite(y) || (chart.x.log && x <= 0) ||
+          (chart.y.log && y <= 0)) {
         have = false;
         continue;
       }
@@ -208,7 +219,8 @@ Corner legend_corner(const Chart& chart, double width, double height, std::optio
   return corners[best];
 }
 
-std::vector<Pixel> marks_along(const std::vector<std::vector<Pixel>>& lines, double spacing, double phase) {
+std::vector<Pixel> marks_along(const std::vector<std::vector<Pixel>>& lines, double spacing,
+                               double phase) {
   std::vector<Pixel> out;
   double next = phase;  // the length along the lines at which the next mark goes
   double walked = 0.0;
@@ -226,11 +238,13 @@ std::vector<Pixel> marks_along(const std::vector<std::vector<Pixel>>& lines, dou
   return out;
 }
 
-std::vector<double> spread_labels(const std::vector<double>& wanted, double gap, double lo, double hi) {
+std::vector<double> spread_labels(const std::vector<double>& wanted, double gap, double lo,
+                                  double hi) {
   const std::size_t n = wanted.size();
   std::vector<std::size_t> order(n);
   for (std::size_t k = 0; k < n; ++k) order[k] = k;
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return wanted[a] < wanted[b]; });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return wanted[a] < wanted[b]; });
   // Down from the top, each at least `gap` below the one above; then, where the last ran past
   // `hi`, back up from the bottom; a plot too short for them all keeps the top's.
   std::vector<double> y(n);

@@ -4,8 +4,8 @@
 #pragma once
 
 #include <array>
-#include <memory>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,12 +20,12 @@ struct Series {
   draw::Rgba color;
   std::vector<double> x, y;
   bool dashed = false;
-  bool markers = false;            // its mark (a dot if none) on each point
+  bool markers = false;  // its mark (a dot if none) on each point
   // Its shape (draw/marks.hpp): on each point with `markers`, else along its line every
   // kMarkSpacing pixels, and on its legend's swatch: lines told apart by more than colour.
   draw::Mark mark = draw::Mark::None;
-  std::vector<bool> crossed;       // per point: drawn as a cross (a diverged run)
-  float width = 2.0f;              // pixels
+  std::vector<bool> crossed;  // per point: drawn as a cross (a diverged run)
+  float width = 2.0f;         // pixels
   // A series that left the sane range (a diverged lane): it does not set the axes' range (unless
   // it stays within kEscapeReach times the others' values, or every series escapes), and is drawn
   // up to where it leaves the plot, with a marker on the edge there; its legend entry is red.
@@ -89,7 +89,8 @@ std::vector<Tick> ticks(double lo, double hi, bool log, int target_count = 5);
 // An x axis's ticks as many as their labels leave room for (at most 5): `at` puts a value on the
 // axis (pixels), `width` measures a label; no two labels, centred on their ticks, come closer
 // than `gap` (a narrow chart would otherwise read 5 ticks' labels as "00.250.50.751").
-std::vector<Tick> ticks_that_fit(double lo, double hi, bool log, const std::function<float(double)>& at,
+std::vector<Tick> ticks_that_fit(double lo, double hi, bool log,
+                                 const std::function<float(double)>& at,
                                  const std::function<float(const std::string&)>& width, float gap);
 
 // The range the axis shows: the data's, widened to whole ticks, or the one set.
@@ -105,17 +106,20 @@ void equal_scale(double& xlo, double& xhi, double& ylo, double& yhi, double widt
 // 0.5: a region's fill) do not count. Ties keep the earlier corner
 // in this order, so that a legend stays top right unless it would hide something there.
 enum class Corner { TopRight, TopLeft, BottomRight, BottomLeft };
-Corner legend_corner(const Chart& chart, double width, double height, std::optional<Corner> taken = std::nullopt);
+Corner legend_corner(const Chart& chart, double width, double height,
+                     std::optional<Corner> taken = std::nullopt);
 
 // Where a line's marks go (kMarkSpacing): along the polylines a series is drawn as (pixels), one
 // every `spacing` of their length from `phase` on, the length carried from one polyline to the
 // next (a line broken where it left the plot keeps its rhythm).
 using Pixel = std::array<double, 2>;
-std::vector<Pixel> marks_along(const std::vector<std::vector<Pixel>>& lines, double spacing, double phase);
+std::vector<Pixel> marks_along(const std::vector<std::vector<Pixel>>& lines, double spacing,
+                               double phase);
 
 // The end labels' heights: each wanted height (its line's end), moved apart as little as it
 // takes for no two to come closer than `gap`, kept within [lo, hi]; in the order given.
-std::vector<double> spread_labels(const std::vector<double>& wanted, double gap, double lo, double hi);
+std::vector<double> spread_labels(const std::vector<double>& wanted, double gap, double lo,
+                                  double hi);
 
 // "0.5", "1e-06", "120": short tick labels; with the ticks' spacing, as many digits as the labels
 // need to differ ("1.9990", "1.9995").

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <sstream>
 #include <utility>
 #include <vector>
-#include <sstream>
 
 #include "springlab/text.hpp"
 
@@ -14,7 +14,9 @@ namespace springlab::chart {
 
 namespace {
 
-std::string num(double v) { return format_text("%.3g", v); }
+std::string num(double v) {
+  return format_text("%.3g", v);
+}
 
 std::string name_of(const Series& s, std::size_t k) {
   return s.label.empty() ? format_text(tr("line %d"), static_cast<int>(k) + 1) : s.label;
@@ -59,9 +61,10 @@ std::vector<std::pair<double, double>> logs_of(const Series& s) {
 std::optional<double> log_y_at(const std::vector<std::pair<double, double>>& p, double u) {
   for (std::size_t i = 0; i + 1 < p.size(); ++i)
     if (p[i].first <= u && u <= p[i + 1].first)
-      return p[i].first == p[i + 1].first ? p[i].second
-                                          : p[i].second + (u - p[i].first) / (p[i + 1].first - p[i].first) *
-                                                              (p[i + 1].second - p[i].second);
+      return p[i].first == p[i + 1].first
+                 ? p[i].second
+                 : p[i].second + (u - p[i].first) / (p[i + 1].first - p[i].first) *
+                                     (p[i + 1].second - p[i].second);
   return std::nullopt;
 }
 
@@ -83,8 +86,11 @@ std::string describe_log_log(const Chart& chart) {
     double sxy = 0, sxx = 0;
     for (const auto& [u, v] : p) sxy += (u - mx) * (v - my), sxx += (u - mx) * (u - mx);
     if (sxx <= 0) continue;
-    lines += (lines.empty() ? "" : "; ") +
-             format_text(tr("%s has slope %.2g on these log-log axes, from %s to %s"), name_of(s, k).c_str(), sxy / sxx, num(std::pow(10.0, p.front().second)).c_str(), num(std::pow(10.0, p.back().second)).c_str());
+    lines +=
+        (lines.empty() ? "" : "; ") +
+        format_text(tr("%s has slope %.2g on these log-log axes, from %s to %s"),
+                    name_of(s, k).c_str(), sxy / sxx, num(std::pow(10.0, p.front().second)).c_str(),
+                    num(std::pow(10.0, p.back().second)).c_str());
     shared_lo = std::max(shared_lo, p.front().first);
     shared_hi = std::min(shared_hi, p.back().first);
     named.emplace_back(name_of(s, k), std::move(p));
@@ -94,11 +100,13 @@ std::string describe_log_log(const Chart& chart) {
     const std::pair<std::string, std::vector<std::pair<double, double>>>* best = nullptr;
     double best_y = INFINITY;
     for (const auto& line : named)
-      if (const auto y = log_y_at(line.second, shared_hi); y && *y < best_y) best_y = *y, best = &line;
+      if (const auto y = log_y_at(line.second, shared_hi); y && *y < best_y)
+        best_y = *y, best = &line;
     if (best)
-      text += " " + format_text(tr("Furthest right where every line has points (%s), %s is lowest (%s)."),
-                                num(std::pow(10.0, shared_hi)).c_str(), best->first.c_str(),
-                                num(std::pow(10.0, best_y)).c_str());
+      text += " " +
+              format_text(tr("Furthest right where every line has points (%s), %s is lowest (%s)."),
+                          num(std::pow(10.0, shared_hi)).c_str(), best->first.c_str(),
+                          num(std::pow(10.0, best_y)).c_str());
   }
   return text;
 }
@@ -121,21 +129,25 @@ std::string describe_chart(const Chart& chart) {
   std::string lines;
   for (std::size_t k = 0; k < chart.series.size(); ++k) {
     const Series& s = chart.series[k];
-    if (s.label.empty() && chart.legend) continue;  // (a companion line: "total + lost" beside a lane's)
+    if (s.label.empty() && chart.legend)
+      continue;  // (a companion line: "total + lost" beside a lane's)
     const Span sy = span_of(s.y);
     if (!sy.any) continue;
     std::string said;
     if (s.escapes)
-      said = format_text(tr("%s leaves the chart (diverged), at %s"), name_of(s, k).c_str(), num(sy.last).c_str());
+      said = format_text(tr("%s leaves the chart (diverged), at %s"), name_of(s, k).c_str(),
+                         num(sy.last).c_str());
     else if (std::abs(sy.last - sy.first) < 0.02 * range && sy.hi - sy.lo < 0.1 * range)
-      said = format_text(tr("%s holds at about %s (%s to %s)"), name_of(s, k).c_str(), num(sy.last).c_str(),
-                         num(sy.lo).c_str(), num(sy.hi).c_str());
+      said = format_text(tr("%s holds at about %s (%s to %s)"), name_of(s, k).c_str(),
+                         num(sy.last).c_str(), num(sy.lo).c_str(), num(sy.hi).c_str());
     else if (std::abs(sy.last - sy.first) < 0.02 * range)
-      said = format_text(tr("%s goes between %s and %s, ending where it began, at %s"), name_of(s, k).c_str(),
-                         num(sy.lo).c_str(), num(sy.hi).c_str(), num(sy.last).c_str());
+      said = format_text(tr("%s goes between %s and %s, ending where it began, at %s"),
+                         name_of(s, k).c_str(), num(sy.lo).c_str(), num(sy.hi).c_str(),
+                         num(sy.last).c_str());
     else
-      said = format_text(sy.last > sy.first ? tr("%s rises from %s to %s") : tr("%s falls from %s to %s"),
-                         name_of(s, k).c_str(), num(sy.first).c_str(), num(sy.last).c_str());
+      said = format_text(
+          sy.last > sy.first ? tr("%s rises from %s to %s") : tr("%s falls from %s to %s"),
+          name_of(s, k).c_str(), num(sy.first).c_str(), num(sy.last).c_str());
     lines += (lines.empty() ? "" : "; ") + said;
   }
   return text + (lines.empty() ? "." : ": " + lines + ".");
@@ -146,7 +158,8 @@ std::string chart_csv(const Chart& chart) {
   std::size_t rows = 0;
   for (std::size_t k = 0; k < chart.series.size(); ++k) {
     const Series& s = chart.series[k];
-    out << (k ? "," : "") << csv_cell(name_of(s, k) + " " + chart.x.label) << "," << csv_cell(name_of(s, k) + " " + chart.y.label);
+    out << (k ? "," : "") << csv_cell(name_of(s, k) + " " + chart.x.label) << ","
+        << csv_cell(name_of(s, k) + " " + chart.y.label);
     rows = std::max(rows, std::min(s.x.size(), s.y.size()));
   }
   out << "\n";
@@ -154,8 +167,10 @@ std::string chart_csv(const Chart& chart) {
     for (std::size_t k = 0; k < chart.series.size(); ++k) {
       const Series& s = chart.series[k];
       if (k) out << ",";
-      if (r < std::min(s.x.size(), s.y.size())) out << format_text("%.9g,%.9g", s.x[r], s.y[r]);
-      else out << ",";
+      if (r < std::min(s.x.size(), s.y.size()))
+        out << format_text("%.9g,%.9g", s.x[r], s.y[r]);
+      else
+        out << ",";
     }
     out << "\n";
   }

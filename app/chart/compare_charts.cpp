@@ -46,12 +46,16 @@ double ceiling_of(const SweepResult& r) {
 
 }  // namespace
 
-double work(const Counters& c) { return static_cast<double>(c.force_evals + c.solver_iterations); }
+double work(const Counters& c) {
+  return static_cast<double>(c.force_evals + c.solver_iterations);
+}
 
 Chart work_precision(const SweepResult& r, const std::string& scene, Cost cost) {
   Chart c;
-  c.title = format_text(tr("Work-precision on %s: error against cost (lower left is better)"), scene.c_str());
-  c.x.label = cost == Cost::Time ? tr("wall time of the run (s)") : tr("work: force evaluations + linear-solver iterations");
+  c.title = format_text(tr("Work-precision on %s: error against cost (lower left is better)"),
+                        scene.c_str());
+  c.x.label = cost == Cost::Time ? tr("wall time of the run (s)")
+                                 : tr("work: force evaluations + linear-solver iterations");
   c.x.log = true;
   c.y.label = tr("error: largest RMS position error over the samples (m)");
   c.y.log = true;
@@ -66,7 +70,8 @@ Chart work_precision(const SweepResult& r, const std::string& scene, Cost cost) 
     for (const SweepRun& run : r.runs) {
       // Adaptive methods at their tolerances: the accuracy they choose, at the price they pay.
       if (run.method != m.method || adaptive == std::isnan(run.tolerance)) continue;
-      s.x.push_back(cost == Cost::Time ? std::max(run.seconds, 1e-6) : std::max(work(run.counters), 1.0));
+      s.x.push_back(cost == Cost::Time ? std::max(run.seconds, 1e-6)
+                                       : std::max(work(run.counters), 1.0));
       s.y.push_back(run.diverged ? ceiling : run.error);
       s.crossed.push_back(run.diverged);
     }
@@ -111,7 +116,8 @@ Chart convergence(const SweepResult& r, const std::string& scene) {
     std::set<int> orders;
     for (const MethodSummary& m : r.methods)
       for (const SweepRun& run : r.runs)
-        if (run.method == m.method && std::isnan(run.tolerance) && method_info(m.method).order > 0) {
+        if (run.method == m.method && std::isnan(run.tolerance) &&
+            method_info(m.method).order > 0) {
           orders.insert(method_info(m.method).order);
           break;
         }
@@ -138,8 +144,10 @@ Chart convergence(const SweepResult& r, const std::string& scene) {
 Chart stability(const SweepResult& r, const std::string& scene) {
   Chart c;
   char title[160];
-  std::snprintf(title, sizeof title, tr("Largest stable step on %s: measured by runs against the analysis (w_max = %.4g rad/s)"),
-                scene.c_str(), r.w_max);
+  std::snprintf(
+      title, sizeof title,
+      tr("Largest stable step on %s: measured by runs against the analysis (w_max = %.4g rad/s)"),
+      scene.c_str(), r.w_max);
   c.title = title;
   c.x.label = tr("from the analysis (s)");
   c.x.log = true;
@@ -152,12 +160,14 @@ Chart stability(const SweepResult& r, const std::string& scene) {
     s.mark = draw::method_mark(m.method);
     s.markers = true;
     s.width = 3.0f;
-    const bool plotted = !m.measured_at_least && std::isfinite(m.theoretical_stable_h) && m.theoretical_stable_h > 0 &&
-                         std::isfinite(m.measured_stable_h) && m.measured_stable_h > 0;
+    const bool plotted = !m.measured_at_least && std::isfinite(m.theoretical_stable_h) &&
+                         m.theoretical_stable_h > 0 && std::isfinite(m.measured_stable_h) &&
+                         m.measured_stable_h > 0;
     char label[160];
     if (plotted) {
-      std::snprintf(label, sizeof label, tr("%s: %.3g s measured, %s%.3g s analysis"), method_info(m.method).name,
-                    m.measured_stable_h, m.theory_exact ? "" : ">= ", m.theoretical_stable_h);
+      std::snprintf(label, sizeof label, tr("%s: %.3g s measured, %s%.3g s analysis"),
+                    method_info(m.method).name, m.measured_stable_h,
+                    m.theory_exact ? "" : ">= ", m.theoretical_stable_h);
       s.x = {m.theoretical_stable_h};
       s.y = {m.measured_stable_h};
       lo = std::min({lo, m.theoretical_stable_h, m.measured_stable_h});
@@ -187,7 +197,8 @@ Chart stability(const SweepResult& r, const std::string& scene) {
 
 Chart energy_drift(const SweepResult& r, const std::string& scene) {
   Chart c;
-  c.title = format_text(tr("Energy drift on %s: |E + dissipated - E0| / energy scale (x = diverged)"), scene.c_str());
+  c.title = format_text(
+      tr("Energy drift on %s: |E + dissipated - E0| / energy scale (x = diverged)"), scene.c_str());
   c.x.label = "t (s)";
   c.x.log = false;
   c.y.label = tr("relative drift");
@@ -211,9 +222,10 @@ Chart energy_drift(const SweepResult& r, const std::string& scene) {
 Chart solver_convergence(const SweepResult& r, const std::string& scene) {
   Chart c;
   char title[200];
-  std::snprintf(title, sizeof title,
-                tr("Solver error on %s: one step of h = %.3g s against the converged implicit-Euler step"), scene.c_str(),
-                r.solver.h);
+  std::snprintf(
+      title, sizeof title,
+      tr("Solver error on %s: one step of h = %.3g s against the converged implicit-Euler step"),
+      scene.c_str(), r.solver.h);
   c.title = title;
   c.x.label = tr("iterations a step (XPBD: passes; implicit Euler: conjugate-gradient iterations)");
   c.x.log = true;
@@ -241,7 +253,8 @@ std::vector<NamedChart> compare_charts(const SweepResult& result, const std::str
                               {"convergence", convergence(result, scene)},
                               {"stability", stability(result, scene)}};
   if (!result.drift.empty()) out.push_back({"energy-drift", energy_drift(result, scene)});
-  if (!result.solver.curves.empty()) out.push_back({"solver-convergence", solver_convergence(result, scene)});
+  if (!result.solver.curves.empty())
+    out.push_back({"solver-convergence", solver_convergence(result, scene)});
   return out;
 }
 

@@ -1,8 +1,8 @@
 // The charts of a sweep (springlab compare, and the app's Compare panel), as chart::Chart data:
 // work-precision (error against wall time, and against work: force evaluations plus linear-solver
-// iterations, the same on every machine and every run), convergence (error against step, with the fitted orders
-// and reference slopes), stability (measured against theoretical largest stable step) and energy
-// drift over a long run. One colour per method, as everywhere in springlab.
+// iterations, the same on every machine and every run), convergence (error against step, with the
+// fitted orders and reference slopes), stability (measured against theoretical largest stable step)
+// and energy drift over a long run. One colour per method, as everywhere in springlab.
 #pragma once
 
 #include <string>

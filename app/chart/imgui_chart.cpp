@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "draw/palette.hpp"
 #include "chart/text_wrap.hpp"
+#include "draw/palette.hpp"
 
 namespace springlab::chart {
 
@@ -35,14 +35,15 @@ std::string fitted(const std::string& text, float width) {
   const auto fits = [&](const std::string& t) { return ImGui::CalcTextSize(t.c_str()).x <= width; };
   if (fits(text)) return text;
   std::string cut = text;
-  for (std::size_t space = cut.rfind(' '); space != std::string::npos && space > 0; space = cut.rfind(' ')) {
+  for (std::size_t space = cut.rfind(' '); space != std::string::npos && space > 0;
+       space = cut.rfind(' ')) {
     cut.resize(space);
-    while (!cut.empty() && (cut.back() == ',' || cut.back() == ':' || cut.back() == '(')) cut.pop_back();
+    while (!cut.empty() && (cut.back() == ',' || cut.back() == ':' || cut.back() == '('))
+      cut.pop_back();
     if (fits(cut + "\u2026")) return cut + "\u2026";
   }
   return cut;
 }
-
 
 // Where a chart is drawn: its box, its plot's edges, its text's line height (pixels), its ranges.
 struct Plot {
@@ -100,7 +101,8 @@ LegendLayout place_legend(const Chart& chart, Plot& p) {
       const float box_w = legend_w, box_h = legend_h;
       stack(std::max(60.0f, 0.45f * size.x - 34.0f));
       const float column = legend_w + 34.0f + 8.0f;  // swatch, margins, the gap to the plot
-      if (heading + legend_h <= origin.y + size.y && right - column - left >= 0.4f * (right - left)) {
+      if (heading + legend_h <= origin.y + size.y &&
+          right - column - left >= 0.4f * (right - left)) {
         place = Legend::Column;
         right -= column;
       } else {
@@ -131,7 +133,8 @@ LegendLayout place_legend(const Chart& chart, Plot& p) {
 }
 
 // The title, the axes' labels, the ticks and their grid, the plot's frame.
-void draw_axes(ImDrawList* list, const Chart& chart, const Plot& p, const std::vector<Tick>& yt, Legend place) {
+void draw_axes(ImDrawList* list, const Chart& chart, const Plot& p, const std::vector<Tick>& yt,
+               Legend place) {
   const ImVec2 origin = p.origin, size = p.size;
   const float line_h = p.line_h, top = p.top, left = p.left, right = p.right, bottom = p.bottom;
   const double xlo = p.xlo, xhi = p.xhi, ylo = p.ylo, yhi = p.yhi;
@@ -143,23 +146,29 @@ void draw_axes(ImDrawList* list, const Chart& chart, const Plot& p, const std::v
   // narrow chart takes 5 ticks' "0 0.25 0.5 0.75 1" as "00.250.50.751").
   const std::vector<Tick> xt = ticks_that_fit(
       xlo, xhi, chart.x.log, [&](double v) { return mx(v); },
-      [](const std::string& label) { return ImGui::CalcTextSize(label.c_str()).x; }, 0.25f * line_h);
+      [](const std::string& label) { return ImGui::CalcTextSize(label.c_str()).x; },
+      0.25f * line_h);
 
-  if (!chart.title.empty()) list->AddText(ImVec2(origin.x, origin.y), text, title_lines(chart, size.x).c_str());
+  if (!chart.title.empty())
+    list->AddText(ImVec2(origin.x, origin.y), text, title_lines(chart, size.x).c_str());
   // (Beside a legend column, only as far as the plot's right edge.)
   list->AddText(ImVec2(origin.x, top - line_h * 1.1f), text,
-                place == Legend::Column ? fitted(chart.y.label, right - origin.x).c_str() : chart.y.label.c_str());
+                place == Legend::Column ? fitted(chart.y.label, right - origin.x).c_str()
+                                        : chart.y.label.c_str());
   const std::string x_label = fitted(chart.x.label, size.x);
   const ImVec2 xl = ImGui::CalcTextSize(x_label.c_str());
   // Centred under the plot, but kept inside the chart (the plot is off centre by the y ticks).
-  list->AddText(ImVec2(std::max(origin.x, std::min(0.5f * (left + right) - 0.5f * xl.x, origin.x + size.x - xl.x)),
+  list->AddText(ImVec2(std::max(origin.x, std::min(0.5f * (left + right) - 0.5f * xl.x,
+                                                   origin.x + size.x - xl.x)),
                        bottom + line_h * 1.15f),
                 text, x_label.c_str());
 
-  list->PushClipRect(ImVec2(origin.x, origin.y), ImVec2(origin.x + size.x, origin.y + size.y), true);  // (the tick labels kept within the chart)
+  list->PushClipRect(ImVec2(origin.x, origin.y), ImVec2(origin.x + size.x, origin.y + size.y),
+                     true);  // (the tick labels kept within the chart)
   for (const Tick& t : xt) {
     const float x = mx(t.value);
-    list->AddLine(ImVec2(x, top), ImVec2(x, bottom), t.major ? grid : ImGui::GetColorU32(ImGuiCol_Border, 0.2f));
+    list->AddLine(ImVec2(x, top), ImVec2(x, bottom),
+                  t.major ? grid : ImGui::GetColorU32(ImGuiCol_Border, 0.2f));
     if (!t.label.empty()) {
       // Centred under its tick, but kept inside the chart (the last one sits on the right edge).
       const ImVec2 s = ImGui::CalcTextSize(t.label.c_str());
@@ -170,12 +179,15 @@ void draw_axes(ImDrawList* list, const Chart& chart, const Plot& p, const std::v
   const ImVec2 yl = ImGui::CalcTextSize(chart.y.label.c_str());
   for (const Tick& t : yt) {
     const float y = my(t.value);
-    list->AddLine(ImVec2(left, y), ImVec2(right, y), t.major ? grid : ImGui::GetColorU32(ImGuiCol_Border, 0.2f));
+    list->AddLine(ImVec2(left, y), ImVec2(right, y),
+                  t.major ? grid : ImGui::GetColorU32(ImGuiCol_Border, 0.2f));
     if (!t.label.empty()) {
       const ImVec2 s = ImGui::CalcTextSize(t.label.c_str());
       // A tick at the very top would write over the axis' label above it: that one goes unlabelled.
-      const bool under_label = y - 0.5f * s.y < top - 0.1f * line_h && left - s.x - 6.0f < origin.x + yl.x;
-      if (!under_label) list->AddText(ImVec2(left - s.x - 6.0f, y - 0.5f * s.y), text, t.label.c_str());
+      const bool under_label =
+          y - 0.5f * s.y < top - 0.1f * line_h && left - s.x - 6.0f < origin.x + yl.x;
+      if (!under_label)
+        list->AddText(ImVec2(left - s.x - 6.0f, y - 0.5f * s.y), text, t.label.c_str());
     }
   }
   list->AddRect(ImVec2(left, top), ImVec2(right, bottom), faint);
@@ -207,16 +219,19 @@ void draw_lines(ImDrawList* list, const Chart& chart, const Plot& p) {
       }
       if (points.size() >= 2) {
         if (s.dashed) {
-          for (std::size_t k = 0; k + 1 < points.size(); k += 2) list->AddLine(points[k], points[k + 1], c, s.width);
+          for (std::size_t k = 0; k + 1 < points.size(); k += 2)
+            list->AddLine(points[k], points[k + 1], c, s.width);
         } else {
-          list->AddPolyline(points.data(), static_cast<int>(points.size()), c, ImDrawFlags_None, s.width);
+          list->AddPolyline(points.data(), static_cast<int>(points.size()), c, ImDrawFlags_None,
+                            s.width);
         }
       }
       points.clear();
     };
     for (std::size_t k = 0; k < s.x.size(); ++k) {
       const double x = s.x[k], y = s.y[k];
-      const bool ok = std::isfinite(x) && std::isfinite(y) && (!chart.x.log || x > 0) && (!chart.y.log || y > 0);
+      const bool ok = std::isfinite(x) && std::isfinite(y) && (!chart.x.log || x > 0) &&
+                      (!chart.y.log || y > 0);
       if (s.escapes && (!ok || y > yhi || y < ylo)) {
         // Leaving the plot: the line to its edge, a marker there, and nothing after.
         if (!points.empty() && ok) {
@@ -225,7 +240,8 @@ void draw_lines(ImDrawList* list, const Chart& chart, const Plot& p) {
           const ImVec2 at(mx(s.x[k - 1] + f * (x - s.x[k - 1])), my(edge));
           points.push_back(at);
           const float r = 5.0f + s.width, d = y > yhi ? 1.0f : -1.0f;
-          list->AddTriangleFilled(ImVec2(at.x - r, at.y + d * 1.7f * r), ImVec2(at.x + r, at.y + d * 1.7f * r), at, c);
+          list->AddTriangleFilled(ImVec2(at.x - r, at.y + d * 1.7f * r),
+                                  ImVec2(at.x + r, at.y + d * 1.7f * r), at, c);
         }
         break;
       }
@@ -244,23 +260,30 @@ void draw_lines(ImDrawList* list, const Chart& chart, const Plot& p) {
       }
       points.push_back(p);
       if (s.markers) {
-        if (s.mark == draw::Mark::None) list->AddCircleFilled(p, 2.0f + s.width, c);
-        else draw_mark(list, s.mark, p, 3.0f + s.width, c);
+        if (s.mark == draw::Mark::None)
+          list->AddCircleFilled(p, 2.0f + s.width, c);
+        else
+          draw_mark(list, s.mark, p, 3.0f + s.width, c);
       }
     }
     const ImVec2 last = points.empty() ? ImVec2(-1, -1) : points.back();
     flush();
     const float mark_r = 2.5f + s.width;
-    for (const Pixel& m : marks_along(drawn, kMarkSpacing, 0.5 * kMarkSpacing * (1.0 + 0.37 * static_cast<double>(index % 5))))
-      draw_mark(list, s.mark, ImVec2(static_cast<float>(m[0]), static_cast<float>(m[1])), mark_r, c);
+    for (const Pixel& m :
+         marks_along(drawn, kMarkSpacing,
+                     0.5 * kMarkSpacing * (1.0 + 0.37 * static_cast<double>(index % 5))))
+      draw_mark(list, s.mark, ImVec2(static_cast<float>(m[0]), static_cast<float>(m[1])), mark_r,
+                c);
     if (chart.end_labels && !s.label.empty() && last.x >= 0.0f) ends.push_back({last, c, &s.label});
   }
   // The notes: each ending at its point, just above it.
   for (const Note& n : chart.notes) {
-    const bool ok = std::isfinite(n.x) && std::isfinite(n.y) && (!chart.x.log || n.x > 0) && (!chart.y.log || n.y > 0);
+    const bool ok = std::isfinite(n.x) && std::isfinite(n.y) && (!chart.x.log || n.x > 0) &&
+                    (!chart.y.log || n.y > 0);
     if (!ok || n.y < ylo || n.y > yhi) continue;
     const ImVec2 size = ImGui::CalcTextSize(n.text.c_str());
-    const ImVec2 at(std::max(left + 2.0f, mx(n.x) - size.x - 4.0f), std::max(top, my(n.y) - size.y - 2.0f));
+    const ImVec2 at(std::max(left + 2.0f, mx(n.x) - size.x - 4.0f),
+                    std::max(top, my(n.y) - size.y - 2.0f));
     list->AddText(at, color(n.color), n.text.c_str());
   }
   list->PopClipRect();
@@ -272,7 +295,8 @@ void draw_lines(ImDrawList* list, const Chart& chart, const Plot& p) {
     const std::vector<double> y = spread_labels(wanted, line_h, top, bottom - line_h);
     for (std::size_t k = 0; k < ends.size(); ++k) {
       const ImVec2 at(right + 8.0f, static_cast<float>(y[k]));
-      list->AddLine(ImVec2(right + 1.0f, ends[k].at.y), ImVec2(at.x - 2.0f, at.y + 0.5f * line_h), ends[k].colour, 1.0f);
+      list->AddLine(ImVec2(right + 1.0f, ends[k].at.y), ImVec2(at.x - 2.0f, at.y + 0.5f * line_h),
+                    ends[k].colour, 1.0f);
       list->AddText(at, ends[k].colour, ends[k].text->c_str());
     }
   }
@@ -280,16 +304,19 @@ void draw_lines(ImDrawList* list, const Chart& chart, const Plot& p) {
 
 // The legend as placed: in rows over the plot, in a column beside it, or in a box in the corner
 // where it hides the least. Returns that corner (the inset takes another).
-std::optional<Corner> draw_legend(ImDrawList* list, const Chart& chart, const Plot& p, const LegendLayout& legend) {
+std::optional<Corner> draw_legend(ImDrawList* list, const Chart& chart, const Plot& p,
+                                  const LegendLayout& legend) {
   const ImVec2 origin = p.origin;
-  const float line_h = p.line_h, heading = p.heading, top = p.top, left = p.left, right = p.right, bottom = p.bottom;
+  const float line_h = p.line_h, heading = p.heading, top = p.top, left = p.left, right = p.right,
+              bottom = p.bottom;
   const ImU32 text = ImGui::GetColorU32(ImGuiCol_Text);
   const Legend place = legend.place;
   const std::vector<std::string>& labels = legend.labels;
   const float legend_w = legend.w, legend_h = legend.h;
   const std::vector<int>& row_of = legend.row_of;
   std::optional<Corner> legend_at;
-  const auto entry = [&](std::size_t k, float x, float y, const std::string& label) {  // a swatch, its label
+  const auto entry = [&](std::size_t k, float x, float y,
+                         const std::string& label) {  // a swatch, its label
     const Series& s = chart.series[k];
     const float mid = y + 0.5f * line_h;
     list->AddLine(ImVec2(x, mid), ImVec2(x + 20, mid), color(s.color), 3.0f);
@@ -314,7 +341,8 @@ std::optional<Corner> draw_legend(ImDrawList* list, const Chart& chart, const Pl
     // the least.
     float x = right + 8.0f + 6.0f, y = heading;
     if (place == Legend::Box) {
-      const Corner corner = legend_corner(chart, (legend_w + 40.0f) / (right - left), (legend_h + 8.0f) / (bottom - top));
+      const Corner corner = legend_corner(chart, (legend_w + 40.0f) / (right - left),
+                                          (legend_h + 8.0f) / (bottom - top));
       legend_at = corner;
       const bool on_left = corner == Corner::TopLeft || corner == Corner::BottomLeft;
       const bool below = corner == Corner::BottomRight || corner == Corner::BottomLeft;
@@ -362,7 +390,10 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
 
   // Plot area: room for the title, the y label (rotated text is not available, so it goes above
   // the axis), tick labels and the x label.
-  const float heading = origin.y + (chart.title.empty() ? 0.0f : ImGui::CalcTextSize(title_lines(chart, size.x).c_str()).y + 0.2f * line_h);
+  const float heading =
+      origin.y + (chart.title.empty()
+                      ? 0.0f
+                      : ImGui::CalcTextSize(title_lines(chart, size.x).c_str()).y + 0.2f * line_h);
   const float top = heading + line_h * 1.1f;
   const float left = origin.x + label_w + style.ItemSpacing.x + 4.0f;
   const float right = origin.x + size.x - 8.0f;
@@ -374,7 +405,8 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
   std::size_t labelled = 0;
   float labels_w = 0.0f;
   for (const Series& s : chart.series)
-    if (!s.label.empty()) ++labelled, labels_w = std::max(labels_w, ImGui::CalcTextSize(s.label.c_str()).x);
+    if (!s.label.empty())
+      ++labelled, labels_w = std::max(labels_w, ImGui::CalcTextSize(s.label.c_str()).x);
   float plot_right = right;
   if (chart.end_labels) {
     const float margin = labels_w + 12.0f;
@@ -399,17 +431,20 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
       equal_scale(p.xlo, p.xhi, p.ylo, p.yhi, p.right - p.left, p.bottom - p.top);
       y_ticks = ticks(p.ylo, p.yhi, false, 4);
       float widest = 0.0f;
-      for (const Tick& t : y_ticks) widest = std::max(widest, ImGui::CalcTextSize(t.label.c_str()).x);
+      for (const Tick& t : y_ticks)
+        widest = std::max(widest, ImGui::CalcTextSize(t.label.c_str()).x);
       if (widest <= label_w) break;
       p.left += widest - label_w;
       label_w = widest;
     }
   draw_axes(list, chart, p, y_ticks, legend.place);
-  list->PushClipRect(ImVec2(origin.x, origin.y), ImVec2(origin.x + size.x, origin.y + size.y), true);
+  list->PushClipRect(ImVec2(origin.x, origin.y), ImVec2(origin.x + size.x, origin.y + size.y),
+                     true);
   draw_lines(list, chart, p);
   const std::optional<Corner> legend_at = draw_legend(list, chart, p, legend);
   const ImU32 faint = ImGui::GetColorU32(ImGuiCol_Border);
-  const float inset_w = static_cast<float>(kInsetWidth) * (p.right - p.left), inset_h = static_cast<float>(kInsetHeight) * (p.bottom - p.top);
+  const float inset_w = static_cast<float>(kInsetWidth) * (p.right - p.left),
+              inset_h = static_cast<float>(kInsetHeight) * (p.bottom - p.top);
   // (In a small chart there is no room for one worth reading: the dots stay in the main view.)
   if (chart.inset && inset_w >= 12.0f * line_h && inset_h >= 7.0f * line_h) {
     // Over the corner that hides the least apart from the legend's, on its own backdrop.
@@ -417,8 +452,10 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
     const float w = inset_w, h = inset_h;
     const bool on_left = at == Corner::TopLeft || at == Corner::BottomLeft;
     const bool below = at == Corner::BottomRight || at == Corner::BottomLeft;
-    const ImVec2 o(on_left ? p.left + 4.0f : p.right - w - 4.0f, below ? p.bottom - h - 4.0f : p.top + 4.0f);
-    list->AddRectFilled(o, ImVec2(o.x + w, o.y + h), ImGui::GetColorU32(ImGuiCol_WindowBg, 0.97f), 3.0f);
+    const ImVec2 o(on_left ? p.left + 4.0f : p.right - w - 4.0f,
+                   below ? p.bottom - h - 4.0f : p.top + 4.0f);
+    list->AddRectFilled(o, ImVec2(o.x + w, o.y + h), ImGui::GetColorU32(ImGuiCol_WindowBg, 0.97f),
+                        3.0f);
     list->AddRect(o, ImVec2(o.x + w, o.y + h), faint, 3.0f);
     draw_imgui(list, ImVec2(o.x + 4.0f, o.y + 2.0f), ImVec2(w - 8.0f, h - 4.0f), *chart.inset);
   }

@@ -21,20 +21,26 @@ double margin_at(Method method, Complex z) {
   const Tableau* tableau = method_info(method).tableau;
   return tableau ? std::abs(tableau->stability_function(z)) - 1.0 : 1.0;
 }
-bool stable_at(Method method, Complex z) { return margin_at(method, z) <= 0.0; }
+bool stable_at(Method method, Complex z) {
+  return margin_at(method, z) <= 0.0;
+}
 
 // For a mode at (X, Y) = (h w, h c) (the oscillator plane's methods): 1 - mode_limit() of the
 // mode (c, w^2) over h (with h = 1, w = X and c = Y), <= 0 where the mode is stable.
-double margin_at(Method method, double X, double Y) { return 1.0 - std::min(mode_limit(method, Y, X * X), 1e3); }
-bool stable_at(Method method, double X, double Y) { return mode_limit(method, Y, X * X) >= 1.0 * (1.0 - 1e-12); }
+double margin_at(Method method, double X, double Y) {
+  return 1.0 - std::min(mode_limit(method, Y, X * X), 1e3);
+}
+bool stable_at(Method method, double X, double Y) {
+  return mode_limit(method, Y, X * X) >= 1.0 * (1.0 - 1e-12);
+}
 
 // The region where `margin` <= 0, from its values on a grid: the boundary as the contour
 // margin = 0 (marching squares, each crossing placed on its cell side by linear interpolation, so
 // the edge is a smooth curve, not a staircase), and the inside as faint horizontal strokes whose
 // ends are interpolated the same way; both appended to series.
 template <typename Margin>
-void region(const Margin& margin, double x0, double x1, double y0, double y1, const draw::Rgba& color,
-            const std::string& label, std::vector<Series>& out) {
+void region(const Margin& margin, double x0, double x1, double y0, double y1,
+            const draw::Rgba& color, const std::string& label, std::vector<Series>& out) {
   constexpr int kN = 160;
   Series edge, fill;
   edge.label = label;
@@ -53,7 +59,8 @@ void region(const Margin& margin, double x0, double x1, double y0, double y1, co
     }
   const auto at = [&](int i, int j) { return m[j * (kN + 1) + i]; };
   const auto inside = [&](int i, int j) { return at(i, j) <= 0.0; };
-  // Where margin = 0 between two grid points a and b (one inside, one not), as a fraction of a to b.
+  // Where margin = 0 between two grid points a and b (one inside, one not), as a fraction of a to
+  // b.
   const auto zero = [](double a, double b) { return std::clamp(a / (a - b), 0.0, 1.0); };
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const auto cut = [&](Series& s) {
@@ -66,7 +73,8 @@ void region(const Margin& margin, double x0, double x1, double y0, double y1, co
       if (!inside(i, j)) continue;
       int k = i;
       while (k + 1 <= kN && inside(k + 1, j)) ++k;
-      const double from = i > 0 ? x(i - 1) + zero(at(i - 1, j), at(i, j)) * (x(i) - x(i - 1)) : x(i);
+      const double from =
+          i > 0 ? x(i - 1) + zero(at(i - 1, j), at(i, j)) * (x(i) - x(i - 1)) : x(i);
       const double to = k < kN ? x(k) + zero(at(k, j), at(k + 1, j)) * (x(k + 1) - x(k)) : x(k);
       fill.x.insert(fill.x.end(), {from, to});
       fill.y.insert(fill.y.end(), {y(j), y(j)});
@@ -76,7 +84,8 @@ void region(const Margin& margin, double x0, double x1, double y0, double y1, co
   // The edge: in each cell, segments between the interpolated crossings of its sides.
   for (int j = 0; j < kN; ++j)
     for (int i = 0; i < kN; ++i) {
-      const int ci[4] = {i, i + 1, i + 1, i}, cj[4] = {j, j, j + 1, j + 1};  // corners, anticlockwise
+      const int ci[4] = {i, i + 1, i + 1, i},
+                cj[4] = {j, j, j + 1, j + 1};  // corners, anticlockwise
       double px[4], py[4];
       std::vector<int> crossings;
       for (int e = 0; e < 4; ++e) {
@@ -131,7 +140,7 @@ Extent region_extent(Method method) {
     const bool bounded = tableau->is_explicit();
     constexpr int kN = 96;
     constexpr double kLargest = 4096.0;  // (a 45-stage Chebyshev method's interval)
-    double kL = bounded ? 8.0 : 16.0;  // (an SDIRK's unstable disc reaches past 10)
+    double kL = bounded ? 8.0 : 16.0;    // (an SDIRK's unstable disc reaches past 10)
     double left = 0.0, right = 0.0, up = 0.0, step = kL / kN;
     for (;; kL *= 2.0) {
       left = right = up = 0.0;
@@ -168,7 +177,8 @@ double room(const StabilityAnalysis& analysis, const RegionLane& lane) {
 }  // namespace
 
 RegionPlane region_plane(Method method) {
-  return method_info(method).family == MethodFamily::Partitioned ? RegionPlane::Oscillator : RegionPlane::Complex;
+  return method_info(method).family == MethodFamily::Partitioned ? RegionPlane::Oscillator
+                                                                 : RegionPlane::Complex;
 }
 
 std::string region_verdict(const StabilityAnalysis& analysis, const RegionLane& lane) {
@@ -177,13 +187,15 @@ std::string region_verdict(const StabilityAnalysis& analysis, const RegionLane& 
   if (m.adaptive()) return format_text(tr("%s chooses its own steps: no region"), m.name);
   const double factor = room(analysis, lane);
   if (std::isinf(factor)) return format_text(tr("%s: stable at any step"), m.name);
-  if (factor == 0.0) return format_text(tr("%s: unstable at any step (a mode sits outside for every h)"), m.name);
+  if (factor == 0.0)
+    return format_text(tr("%s: unstable at any step (a mode sits outside for every h)"), m.name);
   const bool exact = analysis.limit(lane.method).exact;
   if (factor >= 1.0)
-    std::snprintf(s, sizeof s, tr("%s: every mode inside; h may grow x%.3g%s"), m.name, factor, exact ? "" : tr(" at least"));
+    std::snprintf(s, sizeof s, tr("%s: every mode inside; h may grow x%.3g%s"), m.name, factor,
+                  exact ? "" : tr(" at least"));
   else
-    std::snprintf(s, sizeof s, tr("%s: modes outside; h must shrink x%.3g (to %.3g s)"), m.name, factor,
-                  analysis.limit(lane.method).h);
+    std::snprintf(s, sizeof s, tr("%s: modes outside; h must shrink x%.3g (to %.3g s)"), m.name,
+                  factor, analysis.limit(lane.method).h);
   return s;
 }
 
@@ -193,7 +205,8 @@ namespace {
 // region holds it; stable ones in the lane's colour and mark, the others in red, added after
 // every lane's stable ones (a red dot is never hidden under another lane's).
 template <typename Points>
-void lane_dots(std::vector<Series>& series, const std::vector<RegionLane>& shown, const Points& points) {
+void lane_dots(std::vector<Series>& series, const std::vector<RegionLane>& shown,
+               const Points& points) {
   std::vector<Series> outsides;
   for (const RegionLane& l : shown) {
     Series inside, outside;
@@ -217,8 +230,10 @@ void lane_dots(std::vector<Series>& series, const std::vector<RegionLane>& shown
 
 // The regions of h lambda in the complex plane (the Runge-Kutta rows and tableaux), with the
 // scene's eigenvalues times h as dots; an inset on the dots near 0 when they gather there.
-Chart complex_plane(const StabilityAnalysis& analysis, const std::vector<RegionLane>& shown, Chart c) {
-  c.title = tr("Stability region, h lambda in the complex plane (dots: the scene's eigenvalues times h)");
+Chart complex_plane(const StabilityAnalysis& analysis, const std::vector<RegionLane>& shown,
+                    Chart c) {
+  c.title =
+      tr("Stability region, h lambda in the complex plane (dots: the scene's eigenvalues times h)");
   c.x.label = tr("Re(h lambda)");
   c.y.label = tr("Im(h lambda)");
   c.equal_scale = true;
@@ -243,7 +258,9 @@ Chart complex_plane(const StabilityAnalysis& analysis, const std::vector<RegionL
       dots.right = std::max(dots.right, 1.1 * z.real());
       dots.up = std::max(dots.up, 1.1 * std::abs(z.imag()));
     }
-  const auto shown_to = [](double region, double dot) { return std::max(region, std::min(dot, std::max(region, 40.0))); };
+  const auto shown_to = [](double region, double dot) {
+    return std::max(region, std::min(dot, std::max(region, 40.0)));
+  };
   const double x0 = -shown_to(regions.left, dots.left), x1 = shown_to(regions.right, dots.right);
   const double y0 = -shown_to(regions.up, dots.up), y1 = -y0;
   c.x.min = x0;
@@ -258,8 +275,8 @@ Chart complex_plane(const StabilityAnalysis& analysis, const std::vector<RegionL
     const Extent e = region_extent(l.method);
     region([&](double x, double y) { return margin_at(l.method, Complex(x, y)); },
            bounded ? std::max(x0, -e.left) : x0, bounded ? std::min(x1, e.right) : x1,
-           bounded ? std::max(y0, -e.up) : y0, bounded ? std::min(y1, e.up) : y1, draw::method_color(l.method),
-           region_verdict(analysis, l), c.series);
+           bounded ? std::max(y0, -e.up) : y0, bounded ? std::min(y1, e.up) : y1,
+           draw::method_color(l.method), region_verdict(analysis, l), c.series);
   }
   // The dots, each lane's inside its region in its colour, outside in red (drawn last: a red dot
   // is never hidden under another lane's).
@@ -289,8 +306,9 @@ Chart complex_plane(const StabilityAnalysis& analysis, const std::vector<RegionL
     zoom->y.min = -1.3 * reach;
     zoom->y.max = 1.3 * reach;
     for (const RegionLane& l : shown)
-      region([&](double x, double y) { return margin_at(l.method, Complex(x, y)); }, *zoom->x.min, *zoom->x.max,
-             *zoom->y.min, *zoom->y.max, draw::method_color(l.method), "", zoom->series);
+      region([&](double x, double y) { return margin_at(l.method, Complex(x, y)); }, *zoom->x.min,
+             *zoom->x.max, *zoom->y.min, *zoom->y.max, draw::method_color(l.method), "",
+             zoom->series);
     add_dots(*zoom);
     c.inset = zoom;
   }
@@ -299,9 +317,12 @@ Chart complex_plane(const StabilityAnalysis& analysis, const std::vector<RegionL
 
 // The regions in the damped oscillator's plane (h w, h c), for the rows that have none in the
 // complex plane, with the scene's modes as dots.
-Chart oscillator_plane(const StabilityAnalysis& analysis, const std::vector<RegionLane>& shown, Chart c) {
-  c.title = tr("Stability region in the damped oscillator's plane (h w, h c): these methods have none in the "
-            "complex plane; dots: the scene's modes");
+Chart oscillator_plane(const StabilityAnalysis& analysis, const std::vector<RegionLane>& shown,
+                       Chart c) {
+  c.title =
+      tr("Stability region in the damped oscillator's plane (h w, h c): these methods have none in "
+         "the "
+         "complex plane; dots: the scene's modes");
   c.x.label = "h w";
   c.y.label = "h c";
   double xmax = 2.5, ymax = 2.5;
@@ -316,11 +337,12 @@ Chart oscillator_plane(const StabilityAnalysis& analysis, const std::vector<Regi
   c.x.max = xmax;
   c.y.min = 0.0;
   c.y.max = ymax;
-  // Every region here lies within h w <= 2, h c <= 2 (the closed forms of docs/numerics.md, "One damped mode"): sampled
-  // there, its edge stays smooth when the modes stretch the view.
+  // Every region here lies within h w <= 2, h c <= 2 (the closed forms of docs/numerics.md, "One
+  // damped mode"): sampled there, its edge stays smooth when the modes stretch the view.
   for (const RegionLane& l : shown)
-    region([&](double x, double y) { return margin_at(l.method, x, y); }, 0.0, std::min(xmax, 2.2), 0.0,
-           std::min(ymax, 2.2), draw::method_color(l.method), region_verdict(analysis, l), c.series);
+    region([&](double x, double y) { return margin_at(l.method, x, y); }, 0.0, std::min(xmax, 2.2),
+           0.0, std::min(ymax, 2.2), draw::method_color(l.method), region_verdict(analysis, l),
+           c.series);
   lane_dots(c.series, shown, [&](const RegionLane& l, const auto& put) {
     for (const auto& m : analysis.modes()) {
       const double X = l.h * std::sqrt(std::max(m.kappa, 0.0)), Y = l.h * m.gamma;
@@ -341,7 +363,8 @@ Chart stability_region(const StabilityAnalysis& analysis, const std::vector<Regi
   std::vector<RegionLane> shown;
   for (const RegionLane& l : lanes)
     if (region_plane(l.method) == plane && !method_info(l.method).adaptive()) shown.push_back(l);
-  return plane == RegionPlane::Complex ? complex_plane(analysis, shown, std::move(c)) : oscillator_plane(analysis, shown, std::move(c));
+  return plane == RegionPlane::Complex ? complex_plane(analysis, shown, std::move(c))
+                                       : oscillator_plane(analysis, shown, std::move(c));
 }
 
 }  // namespace springlab::chart

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cfloat>
 #include <iterator>
-#include <vector>
 #include <string_view>
+#include <vector>
 
 namespace springlab::ui {
 
@@ -12,8 +12,9 @@ namespace {
 
 // Ideographs, kana, hangul, CJK punctuation and full-width forms: a line may break around them.
 bool breaks_around(char32_t c) {
-  return (c >= 0x2E80 && c <= 0x9FFF) || (c >= 0xAC00 && c <= 0xD7AF) || (c >= 0xF900 && c <= 0xFAFF) ||
-         (c >= 0xFE30 && c <= 0xFE4F) || (c >= 0xFF00 && c <= 0xFFEF) || c >= 0x20000;
+  return (c >= 0x2E80 && c <= 0x9FFF) || (c >= 0xAC00 && c <= 0xD7AF) ||
+         (c >= 0xF900 && c <= 0xFAFF) || (c >= 0xFE30 && c <= 0xFE4F) ||
+         (c >= 0xFF00 && c <= 0xFFEF) || c >= 0x20000;
 }
 
 // Marks that close (never start a line) and that open (never end one).
@@ -37,8 +38,10 @@ bool number(std::string_view w) {
   if (w.empty()) return false;
   bool digit = false;
   for (const char c : w) {
-    if (c >= '0' && c <= '9') digit = true;
-    else if (c != '.' && c != '-' && c != '+' && c != 'e') return false;
+    if (c >= '0' && c <= '9')
+      digit = true;
+    else if (c != '.' && c != '-' && c != '+' && c != 'e')
+      return false;
   }
   return digit;
 }
@@ -46,7 +49,8 @@ bool number(std::string_view w) {
 // The spaces a line must not break at, made no-break spaces (U+00A0): either side of "=" and
 // between a number and its unit ("t = 1.95 s" stays on one line).
 std::string glued(const std::string& text) {
-  static constexpr std::string_view kUnits[] = {"s", "ms", "m", "cm", "mm", "J", "N", "kg", "Hz", "rad/s", "m/s", "N/m", "%"};  // not shown
+  static constexpr std::string_view kUnits[] = {
+      "s", "ms", "m", "cm", "mm", "J", "N", "kg", "Hz", "rad/s", "m/s", "N/m", "%"};  // not shown
   std::vector<std::string_view> words;
   std::vector<char> after;  // the separator after each word (' ', '\n' or 0 at the end)
   std::size_t start = 0;
@@ -61,7 +65,8 @@ std::string glued(const std::string& text) {
     out += words[k];
     if (!after[k]) break;
     const std::string_view next = k + 1 < words.size() ? words[k + 1] : std::string_view();
-    const bool unit = number(words[k]) && std::find(std::begin(kUnits), std::end(kUnits), next) != std::end(kUnits);
+    const bool unit = number(words[k]) &&
+                      std::find(std::begin(kUnits), std::end(kUnits), next) != std::end(kUnits);
     const bool keep = after[k] == ' ' && (words[k] == "=" || next == "=" || unit);
     out += keep ? "\u00a0" : std::string(1, after[k]);
   }
@@ -72,13 +77,15 @@ std::string glued(const std::string& text) {
 
 bool may_break_between(char32_t before, char32_t after) {
   if (!breaks_around(before) && !breaks_around(after)) return false;  // inside a Latin word
-  return kClosing.find(after) == std::u32string_view::npos && kOpening.find(before) == std::u32string_view::npos;
+  return kClosing.find(after) == std::u32string_view::npos &&
+         kOpening.find(before) == std::u32string_view::npos;
 }
 
 std::string wrap_text(const std::string& given, const ImFont* font, float size, float width) {
   const std::string text = glued(given);
   const auto wide = [&](const std::string& line) {
-    return font->CalcTextSizeA(size, FLT_MAX, 0.0f, line.data(), line.data() + line.size()).x > width;
+    return font->CalcTextSizeA(size, FLT_MAX, 0.0f, line.data(), line.data() + line.size()).x >
+           width;
   };
   std::string out, line, word;
   bool spaced = false;  // a space before `word`
@@ -98,7 +105,8 @@ std::string wrap_text(const std::string& given, const ImFont* font, float size, 
     if (wide(word) && word.find("\u00a0") != std::string::npos) {
       std::size_t from = 0;
       for (std::size_t at = word.find("\u00a0");; at = word.find("\u00a0", from)) {
-        put(word.substr(from, at == std::string::npos ? std::string::npos : at - from), from > 0 || spaced);
+        put(word.substr(from, at == std::string::npos ? std::string::npos : at - from),
+            from > 0 || spaced);
         if (at == std::string::npos) break;
         from = at + 2;
       }
@@ -156,7 +164,8 @@ void text_wrapped_disabled(const std::string& text, float width) {
 
 void same_line_if_fits(float width) {
   const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
-  if (ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + width <= right) ImGui::SameLine();
+  if (ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + width <= right)
+    ImGui::SameLine();
 }
 
 }  // namespace springlab::ui

@@ -3,18 +3,17 @@
 // else. Here among the subcommands rather than in main.cpp: one unit parses CLI11 for all of them.
 #include "cli/command_line.hpp"
 
+#include <CLI/CLI.hpp>
 #include <csignal>
 #include <cstdio>
 #include <exception>
 #include <map>
 #include <string>
 
-#include <CLI/CLI.hpp>
-
 #include "cli/commands.hpp"
+#include "session/stability_job.hpp"
 #include "springlab/error.hpp"
 #include "springlab/version.hpp"
-#include "session/stability_job.hpp"
 #include "util/atomic_file.hpp"
 
 namespace springlab::app {

@@ -1,6 +1,6 @@
 // The subcommands of springlab. Each registers its options on the parsed command line and
-// returns the function that runs it; a run returns the process exit status (docs/command-line.md, "Exit status"):
-// 0 done, 2 bad input, 3 the simulation diverged, 1 anything else.
+// returns the function that runs it; a run returns the process exit status (docs/command-line.md,
+// "Exit status"): 0 done, 2 bad input, 3 the simulation diverged, 1 anything else.
 #pragma once
 
 #include <CLI/CLI.hpp>

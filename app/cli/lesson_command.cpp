@@ -5,9 +5,9 @@
 #include <memory>
 
 #include "cli/commands.hpp"
-#include "util/text_table.hpp"
 #include "lesson/lesson_checks.hpp"
 #include "lesson/lesson_library.hpp"
+#include "util/text_table.hpp"
 
 namespace springlab::app {
 
@@ -24,9 +24,10 @@ int list() {
   for (std::size_t k = 0; k < files.size(); ++k) {
     const Lesson lesson = open_lesson(files[k]);
     char about[64];
-    std::snprintf(about, sizeof about, "%zu step%s, %.0f s:", lesson.steps.size(), lesson.steps.size() == 1 ? "" : "s",
-                  lesson.duration());
-    rows.push_back({(k < 9 ? " " : "") + std::to_string(k + 1), lesson.name, lesson.title, about + std::string(" ") + lesson.summary});
+    std::snprintf(about, sizeof about, "%zu step%s, %.0f s:", lesson.steps.size(),
+                  lesson.steps.size() == 1 ? "" : "s", lesson.duration());
+    rows.push_back({(k < 9 ? " " : "") + std::to_string(k + 1), lesson.name, lesson.title,
+                    about + std::string(" ") + lesson.summary});
   }
   std::fputs(text_table(rows).c_str(), stdout);
   return kOk;
@@ -45,7 +46,8 @@ int check(const LessonCli& o) {
       for (const ClaimResult& r : check_step(step, o.fps)) {
         ++claims;
         failed += !r.passed;
-        std::printf("    %s  %s: %s\n", r.passed ? "ok  " : "FAIL", r.claim.describe().c_str(), r.measured.c_str());
+        std::printf("    %s  %s: %s\n", r.passed ? "ok  " : "FAIL", r.claim.describe().c_str(),
+                    r.measured.c_str());
       }
       std::fflush(stdout);
     }
@@ -58,11 +60,14 @@ int check(const LessonCli& o) {
 
 Command add_lesson_command(CLI::App& app) {
   auto o = std::make_shared<LessonCli>();
-  CLI::App* c = app.add_subcommand("lesson", "the guided lessons: list them, or check their claims by playing them");
+  CLI::App* c = app.add_subcommand(
+      "lesson", "the guided lessons: list them, or check their claims by playing them");
   c->require_subcommand(1, 1);
   CLI::App* l = c->add_subcommand("list", "the shipped lessons in the course's order");
-  CLI::App* k = c->add_subcommand("check", "play lessons headlessly and check what their captions claim");
-  k->add_option("lessons", o->names, "lesson names, numbers or files (default: every shipped lesson)");
+  CLI::App* k =
+      c->add_subcommand("check", "play lessons headlessly and check what their captions claim");
+  k->add_option("lessons", o->names,
+                "lesson names, numbers or files (default: every shipped lesson)");
   return [o, l, k] { return l->parsed() ? list() : check(*o); };
 }
 

@@ -24,12 +24,18 @@ Command add_list_command(CLI::App& app) {
     }
     for (const MethodInfo& m : methods()) {
       char limit[64];
-      if (std::isnan(m.undamped_limit)) std::snprintf(limit, sizeof limit, "adaptive step");
-      else if (std::isinf(m.undamped_limit)) std::snprintf(limit, sizeof limit, "stable at any step");
-      else if (m.undamped_limit == 0.0) std::snprintf(limit, sizeof limit, "unstable undamped");
-      else std::snprintf(limit, sizeof limit, "stable for h w <= %.3g", m.undamped_limit);
-      std::printf("method  %-18s %s: order %d, force evaluations per step: %s, %s; keeps on a free body: %s\n",
-                  m.name, m.label, m.order, m.evaluations, limit, kept_summary(m).c_str());
+      if (std::isnan(m.undamped_limit))
+        std::snprintf(limit, sizeof limit, "adaptive step");
+      else if (std::isinf(m.undamped_limit))
+        std::snprintf(limit, sizeof limit, "stable at any step");
+      else if (m.undamped_limit == 0.0)
+        std::snprintf(limit, sizeof limit, "unstable undamped");
+      else
+        std::snprintf(limit, sizeof limit, "stable for h w <= %.3g", m.undamped_limit);
+      std::printf(
+          "method  %-18s %s: order %d, force evaluations per step: %s, %s; keeps on a free body: "
+          "%s\n",
+          m.name, m.label, m.order, m.evaluations, limit, kept_summary(m).c_str());
     }
     return kOk;
   };

@@ -21,7 +21,8 @@ void warn_if_unstable(Simulation& sim, const std::string& scene);
 
 // --compare-layout, in `view` and `render`.
 inline constexpr const char* kCompareLayoutHelp =
-    "how compare shows its lanes: apart (a view each, the default: lanes that agree cannot hide one another) or "
+    "how compare shows its lanes: apart (a view each, the default: lanes that agree cannot hide "
+    "one another) or "
     "together (one view, each lane in its colour)";
 
 // For an integer option: accepts a whole number written any way ("1e6"), refuses anything else

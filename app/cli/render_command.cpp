@@ -20,15 +20,15 @@
 #include "gfx/offscreen.hpp"
 #include "io/frame_writer.hpp"
 #include "lesson/lesson_library.hpp"
-#include "ui/compare_panel.hpp"
-#include "ui/lesson_band.hpp"
 #include "springlab/error.hpp"
 #include "springlab/script.hpp"
+#include "ui/compare_panel.hpp"
+#include "ui/lesson_band.hpp"
 #include "ui/overlay.hpp"
-#include "ui/text_fit.hpp"
 #include "ui/panels.hpp"
-#include "util/language.hpp"
+#include "ui/text_fit.hpp"
 #include "util/data_dir.hpp"
+#include "util/language.hpp"
 #include "util/progress.hpp"
 
 namespace springlab::app {
@@ -38,22 +38,25 @@ namespace {
 struct RenderOptions {
   std::string scene;
   SimOptions sim;
-  std::optional<std::string> out, video, script, size = "1280x720", compare, compare_layout, select, lesson;
+  std::optional<std::string> out, video, script, size = "1280x720", compare, compare_layout, select,
+                                                 lesson;
   std::optional<std::int64_t> frames;
   std::optional<double> duration;
   double fps = 60.0;
   bool ui = false, software = false, check_text = false;
   std::optional<double> ui_scale;  // default: the frame's height / 720, at least 0.6
-  std::string lang = "en";         // the panels' and captions' language (not the environment's: frames repeat)
+  std::string lang =
+      "en";  // the panels' and captions' language (not the environment's: frames repeat)
 };
 
 void parse_size(const std::string& text, int& width, int& height) {
   char x = 0;
   std::istringstream s(text);
-  if (!(s >> width >> x >> height) || x != 'x' || !s.eof() || width < 16 || height < 16 || width > 7680 ||
-      height > 4320)
-    throw InputError("--size: must be WIDTHxHEIGHT, each from 16 to 7680 x 4320, for example 1280x720; got '" +
-                     text + "'");
+  if (!(s >> width >> x >> height) || x != 'x' || !s.eof() || width < 16 || height < 16 ||
+      width > 7680 || height > 4320)
+    throw InputError(
+        "--size: must be WIDTHxHEIGHT, each from 16 to 7680 x 4320, for example 1280x720; got '" +
+        text + "'");
 }
 
 // A folder made for the output, removed again if the render fails before putting anything in it.
@@ -117,10 +120,13 @@ Shot lesson_shot(const Lesson& lesson, int k, int number, int count, double fps,
 // and `lesson check` measures its claims at them, so other values would make it say what is false.
 std::string lesson_takes_its_values(const RenderOptions& o) {
   const Lesson lesson = open_lesson(*o.lesson);
-  std::string s = "render --lesson: a lesson is recorded with its own values: its captions state them (each step sets its "
-                  "scene, methods, k_s, k_d and dt) and `springlab lesson check` measures its claims there, so "
-                  "--script, --compare, --method, --dt, --substeps, --ks, --kd and --set do not go with it. To record a "
-                  "step with the class's values, render its scene with them:";
+  std::string s =
+      "render --lesson: a lesson is recorded with its own values: its captions state them (each "
+      "step sets its "
+      "scene, methods, k_s, k_d and dt) and `springlab lesson check` measures its claims there, so "
+      "--script, --compare, --method, --dt, --substeps, --ks, --kd and --set do not go with it. To "
+      "record a "
+      "step with the class's values, render its scene with them:";
   const auto number = [](double v) {
     char t[32];
     std::snprintf(t, sizeof t, "%.6g", v);
@@ -134,12 +140,18 @@ std::string lesson_takes_its_values(const RenderOptions& o) {
     std::string lanes;
     for (const std::string& lane : step.compare) lanes += (lanes.empty() ? "" : ",") + lane;
     if (o.compare) lanes = *o.compare;
-    if (!lanes.empty()) c += " --compare " + lanes;
-    else if (o.sim.method) c += " --method " + *o.sim.method;
-    else if (step.method) c += std::string(" --method ") + method_info(*step.method).name;
+    if (!lanes.empty())
+      c += " --compare " + lanes;
+    else if (o.sim.method)
+      c += " --method " + *o.sim.method;
+    else if (step.method)
+      c += std::string(" --method ") + method_info(*step.method).name;
     if (o.sim.dt || step.dt) c += " --dt " + number(o.sim.dt ? *o.sim.dt : *step.dt);
-    if (o.sim.substeps) c += " --substeps " + *o.sim.substeps;
-    else if (step.substeps) c += " --substeps " + (*step.substeps == 0 ? std::string("auto") : std::to_string(*step.substeps));
+    if (o.sim.substeps)
+      c += " --substeps " + *o.sim.substeps;
+    else if (step.substeps)
+      c += " --substeps " +
+           (*step.substeps == 0 ? std::string("auto") : std::to_string(*step.substeps));
     if (o.sim.ks || step.ks) c += " --ks " + number(o.sim.ks ? *o.sim.ks : *step.ks);
     if (o.sim.kd || step.kd) c += " --kd " + number(o.sim.kd ? *o.sim.kd : *step.kd);
     if (o.script) c += " --script " + *o.script;
@@ -155,8 +167,8 @@ void check_render_options(const RenderOptions& o, int& width, int& height) {
     throw InputError("render: give exactly one of --out DIR (PNG frames) and --video FILE.mp4");
   if (o.lesson.has_value() == !o.scene.empty())
     throw InputError("render: give a SCENE or --lesson NAME (springlab lesson list), and not both");
-  if (o.lesson && (o.script || o.compare || o.sim.method || o.sim.dt || o.sim.substeps || o.sim.ks || o.sim.kd ||
-                   !o.sim.sets.empty()))
+  if (o.lesson && (o.script || o.compare || o.sim.method || o.sim.dt || o.sim.substeps ||
+                   o.sim.ks || o.sim.kd || !o.sim.sets.empty()))
     throw InputError(lesson_takes_its_values(o));
   parse_size(*o.size, width, height);
   if (o.compare_layout) draw::parse_compare_layout(*o.compare_layout, "--compare-layout");
@@ -175,7 +187,8 @@ std::set<std::int64_t> parse_select(const std::string& text) {
   for (std::string item; std::getline(s, item, ',');) {
     char* end = nullptr;
     const long long k = std::strtoll(item.c_str(), &end, 10);
-    if (item.empty() || *end || k < 0) throw InputError("--select: frame numbers separated by commas, got '" + text + "'");
+    if (item.empty() || *end || k < 0)
+      throw InputError("--select: frame numbers separated by commas, got '" + text + "'");
     selected.insert(k);
   }
   return selected;
@@ -209,7 +222,8 @@ Plan plan_shots(const RenderOptions& o, float scale) {
       shots[k].frames = std::max<std::int64_t>(1, std::llround(lesson->steps[k].duration * o.fps));
       frames += shots[k].frames;
     }
-    if (o.duration) frames = std::min(frames, std::max<std::int64_t>(1, std::llround(*o.duration * o.fps)));
+    if (o.duration)
+      frames = std::min(frames, std::max<std::int64_t>(1, std::llround(*o.duration * o.fps)));
     if (o.frames) frames = std::min(frames, *o.frames);
   } else {
     Prepared p = prepare(o.scene, o.sim);
@@ -218,7 +232,9 @@ Plan plan_shots(const RenderOptions& o, float scale) {
     if (o.compare) compare = make_scene_kind(p.scene)->lanes_named(*o.compare, "--compare");
     std::optional<Script> script;
     if (o.script) script = load_script(*o.script, p.scene);
-    const double duration = o.duration ? *o.duration : script ? std::max(script->end_time() + 1.0, 1.0) : p.scene.duration;
+    const double duration = o.duration ? *o.duration
+                            : script   ? std::max(script->end_time() + 1.0, 1.0)
+                                       : p.scene.duration;
     frames = o.frames ? *o.frames : std::max<std::int64_t>(1, std::llround(duration * o.fps));
     name = p.scene.name;
     Shot shot;
@@ -227,7 +243,9 @@ Plan plan_shots(const RenderOptions& o, float scale) {
     if (script) shot.session->play(*script);
     for (Lane& lane : shot.session->lanes()) warn_if_unstable(lane.sim, name);
     shot.ui = shot_ui(*shot.session, name, scale);
-    if (o.compare_layout) shot.ui.view.compare_layout = draw::parse_compare_layout(*o.compare_layout, "--compare-layout");
+    if (o.compare_layout)
+      shot.ui.view.compare_layout =
+          draw::parse_compare_layout(*o.compare_layout, "--compare-layout");
     shot.frames = frames;
     shots.push_back(std::move(shot));
   }
@@ -239,8 +257,11 @@ Plan plan_shots(const RenderOptions& o, float scale) {
 // lane that diverged is the lesson, said on stdout; kDiverged only when none is left running.
 int lane_verdicts(Session& session, const std::string& name) {
   for (const Lane& lane : session.lanes())
-    std::printf("substeps   %s: %d (%s)\n", method_info(lane.sim.settings().method).name, lane.sim.settings().substeps,
-                !lane.sim.auto_substeps() ? "fixed" : lane.sim.substeps_capped() ? "auto, capped" : "auto");
+    std::printf("substeps   %s: %d (%s)\n", method_info(lane.sim.settings().method).name,
+                lane.sim.settings().substeps,
+                !lane.sim.auto_substeps()    ? "fixed"
+                : lane.sim.substeps_capped() ? "auto, capped"
+                                             : "auto");
   int running = 0;
   const Divergence* first = nullptr;
   for (Lane& lane : session.lanes()) {
@@ -250,9 +271,10 @@ int lane_verdicts(Session& session, const std::string& name) {
     if (!trouble) continue;
     if (!first) first = trouble;
     if (session.comparing()) {
-      std::printf("%-10s %s: %s", lane.sim.diverged() ? "diverged" : "unstable", app::lane_name(lane).c_str(),
-                  trouble->message().c_str());
-      if (lane.sim.diverged()) std::printf(" Drawn from then on as it was at t = %.4g s.", lane.sane.t);
+      std::printf("%-10s %s: %s", lane.sim.diverged() ? "diverged" : "unstable",
+                  app::lane_name(lane).c_str(), trouble->message().c_str());
+      if (lane.sim.diverged())
+        std::printf(" Drawn from then on as it was at t = %.4g s.", lane.sane.t);
       std::printf("\n");
     }
   }
@@ -265,25 +287,29 @@ int lane_verdicts(Session& session, const std::string& name) {
 // The frames written and the times they show, e.g. "frames 60 to 300, t = 1 to 5 s".
 std::string frames_written(std::int64_t first, std::int64_t last, double t_first, double t_last) {
   char s[160];
-  if (first == last) std::snprintf(s, sizeof s, "frame %lld, t = %.4g s", static_cast<long long>(first), t_first);
+  if (first == last)
+    std::snprintf(s, sizeof s, "frame %lld, t = %.4g s", static_cast<long long>(first), t_first);
   else
-    std::snprintf(s, sizeof s, "frames %lld to %lld, t = %.4g to %.4g s", static_cast<long long>(first),
-                  static_cast<long long>(last), t_first, t_last);
+    std::snprintf(s, sizeof s, "frames %lld to %lld, t = %.4g to %.4g s",
+                  static_cast<long long>(first), static_cast<long long>(last), t_first, t_last);
   return s;
 }
 
 // A shot's frame as it is now: the scene's views (compare apart: a view each), the panels where
 // asked, a lesson's chart and band, the overlay.
 // With `faults`: what of its text does not fit (ui/text_fit.hpp) is added to it.
-void draw_shot(gfx::Offscreen& offscreen, Shot& shot, const ui::FrameStats& stats, bool panels, int width, int height,
-               float scale, std::vector<std::string>* faults) {
+void draw_shot(gfx::Offscreen& offscreen, Shot& shot, const ui::FrameStats& stats, bool panels,
+               int width, int height, float scale, std::vector<std::string>* faults) {
   Session& session = *shot.session;
-  if (shot.band) shot.ui.band = ui::lesson_band_height(*shot.band, static_cast<float>(width), scale);
-  const draw::Viewport viewport =
-      panels || shot.band ? ui::scene_viewport(shot.ui, width, height) : draw::Viewport{0, 0, width, height};
-  const std::vector<draw::LaneView> views = draw::lane_views(session, shot.ui.view.camera, shot.ui.view.compare_layout, viewport);
+  if (shot.band)
+    shot.ui.band = ui::lesson_band_height(*shot.band, static_cast<float>(width), scale);
+  const draw::Viewport viewport = panels || shot.band ? ui::scene_viewport(shot.ui, width, height)
+                                                      : draw::Viewport{0, 0, width, height};
+  const std::vector<draw::LaneView> views =
+      draw::lane_views(session, shot.ui.view.camera, shot.ui.view.compare_layout, viewport);
   std::vector<draw::Frame> pictures;
-  for (const draw::LaneView& view : views) pictures.push_back(draw::build_frame(session, shot.ui.view, view));
+  for (const draw::LaneView& view : views)
+    pictures.push_back(draw::build_frame(session, shot.ui.view, view));
   offscreen.draw(pictures, [&] {
     if (panels) ui::draw_panels(session, shot.ui, stats, width, height);
     if (shot.accuracy) {  // in the scene's and the charts' place, as in the app's lesson
@@ -301,13 +327,15 @@ void draw_shot(gfx::Offscreen& offscreen, Shot& shot, const ui::FrameStats& stat
     ui::draw_overlay(session, views, viewport, shot.ui.scene_name, overlay);
   });
   if (faults && ImGui::GetCurrentContext() && ImGui::GetDrawData())
-    for (std::string& fault : ui::text_faults(ui::text_runs(*ImGui::GetDrawData(), *ImGui::GetIO().Fonts),
-                                              ui::windows_of(*ImGui::GetDrawData())))
+    for (std::string& fault :
+         ui::text_faults(ui::text_runs(*ImGui::GetDrawData(), *ImGui::GetIO().Fonts),
+                         ui::windows_of(*ImGui::GetDrawData())))
       faults->push_back(std::move(fault));
 }
 
 // The output, made before any work: a folder that cannot be written, or no ffmpeg, fails first.
-std::unique_ptr<FrameWriter> open_output(const RenderOptions& o, int width, int height, MadeFolder& folder) {
+std::unique_ptr<FrameWriter> open_output(const RenderOptions& o, int width, int height,
+                                         MadeFolder& folder) {
   if (!o.out) return mp4_video(*o.video, width, height, o.fps);
   std::error_code ec;
   folder.path = *o.out;
@@ -319,8 +347,8 @@ std::unique_ptr<FrameWriter> open_output(const RenderOptions& o, int width, int 
 
 // The shot frame k shows, brought to it: a lesson's next step made at its first frame (the one
 // before let go); otherwise its session advanced a frame past the shot's first, the work counted.
-Shot& shot_for_frame(Plan& plan, std::int64_t k, std::size_t& current, std::int64_t& shot_start, ui::FrameStats& stats,
-                     double fps, float scale) {
+Shot& shot_for_frame(Plan& plan, std::int64_t k, std::size_t& current, std::int64_t& shot_start,
+                     ui::FrameStats& stats, double fps, float scale) {
   std::vector<Shot>& shots = plan.shots;
   if (k - shot_start >= shots[current].frames) {  // the next step of a lesson
     shot_start += shots[current].frames;
@@ -329,13 +357,15 @@ Shot& shot_for_frame(Plan& plan, std::int64_t k, std::size_t& current, std::int6
   }
   Shot& shot = shots[current];
   if (!shot.session) {
-    shot = lesson_shot(*plan.lesson, static_cast<int>(current), plan.lesson_number, plan.lesson_count, fps, scale);
+    shot = lesson_shot(*plan.lesson, static_cast<int>(current), plan.lesson_number,
+                       plan.lesson_count, fps, scale);
   } else if (k > shot_start) {
     Session& session = *shot.session;
     const std::vector<Counters> before = ui::lane_counters(session);
     const auto t0 = std::chrono::steady_clock::now();
     session.advance_frame();
-    stats.sim_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    stats.sim_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     ui::count_frame(stats, session, before);
   }
   return shot;
@@ -345,7 +375,9 @@ Shot& shot_for_frame(Plan& plan, std::int64_t k, std::size_t& current, std::int6
 int with_text_faults(int verdict, std::size_t text_faults) {
   if (text_faults == 0) return verdict;
   std::fflush(stdout);
-  std::fprintf(stderr, "springlab: render --check-text: %zu piece%s of text do%s not fit its place (listed above as 'text')\n",
+  std::fprintf(stderr,
+               "springlab: render --check-text: %zu piece%s of text do%s not fit its place (listed "
+               "above as 'text')\n",
                text_faults, text_faults == 1 ? "" : "s", text_faults == 1 ? "es" : "");
   return verdict == kOk ? kFailure : verdict;
 }
@@ -353,7 +385,8 @@ int with_text_faults(int verdict, std::size_t text_faults) {
 int render(const RenderOptions& o) {
   int width = 0, height = 0;
   check_render_options(o, width, height);
-  const std::set<std::int64_t> selected = o.select ? parse_select(*o.select) : std::set<std::int64_t>{};
+  const std::set<std::int64_t> selected =
+      o.select ? parse_select(*o.select) : std::set<std::int64_t>{};
   const float scale = static_cast<float>(o.ui_scale ? *o.ui_scale : std::max(0.6, height / 720.0));
   use_language(check_language(o.lang, "--lang"));
 
@@ -362,8 +395,8 @@ int render(const RenderOptions& o) {
   const std::optional<Lesson>& lesson = plan.lesson;
   const std::int64_t frames = plan.frames;
   if (!selected.empty() && *selected.rbegin() >= frames)
-    throw InputError("--select: frame " + std::to_string(*selected.rbegin()) + " is past the last frame (" +
-                     std::to_string(frames - 1) + ")");
+    throw InputError("--select: frame " + std::to_string(*selected.rbegin()) +
+                     " is past the last frame (" + std::to_string(frames - 1) + ")");
   // A lesson is drawn with the panels (its chart is the point of many steps) under its band.
   const bool panels = o.ui || lesson;
   MadeFolder folder;
@@ -383,8 +416,9 @@ int render(const RenderOptions& o) {
   // draw it, then it is read back and handed to the writer (rows as GL reads them: the writer
   // puts them in order as it writes).
   std::optional<std::int64_t> drawn;
-  std::size_t text_faults = 0;                // --check-text: pieces of text that do not fit
-  std::optional<std::int64_t> first_written;  // the first and last frames drawn, and the times they show
+  std::size_t text_faults = 0;  // --check-text: pieces of text that do not fit
+  std::optional<std::int64_t>
+      first_written;  // the first and last frames drawn, and the times they show
   std::int64_t last_written = 0;
   double t_first = 0.0, t_last = 0.0;
   double draw_ms = 0.0;
@@ -392,7 +426,9 @@ int render(const RenderOptions& o) {
     const auto t0 = std::chrono::steady_clock::now();
     Image image = writer->spare();
     offscreen.read(image, true);
-    stats.draw_ms = draw_ms + std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    stats.draw_ms =
+        draw_ms +
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     writer->push(std::move(image), static_cast<int>(*drawn));
     ++written;
     progress.update(*drawn + 1);
@@ -407,12 +443,16 @@ int render(const RenderOptions& o) {
     Session& session = *shot.session;
     const auto t0 = std::chrono::steady_clock::now();
     std::vector<std::string> faults;
-    draw_shot(offscreen, shot, stats, panels, width, height, scale, o.check_text ? &faults : nullptr);
-    for (const std::string& fault : faults) std::printf("text       frame %lld: %s\n", static_cast<long long>(k), fault.c_str());
+    draw_shot(offscreen, shot, stats, panels, width, height, scale,
+              o.check_text ? &faults : nullptr);
+    for (const std::string& fault : faults)
+      std::printf("text       frame %lld: %s\n", static_cast<long long>(k), fault.c_str());
     text_faults += faults.size();
-    draw_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    draw_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     drawn = k;
-    // The time the frame shows: a scene's simulated time (its caption's), a lesson's presentation time.
+    // The time the frame shows: a scene's simulated time (its caption's), a lesson's presentation
+    // time.
     const double shown = lesson ? static_cast<double>(k) / o.fps : session.simulated_target();
     if (!first_written) first_written = k, t_first = shown;
     last_written = k, t_last = shown;
@@ -420,11 +460,13 @@ int render(const RenderOptions& o) {
   if (drawn) collect();
   writer->finish();
   progress.finish();
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("rendered %lld frame%s of %s (%dx%d, %g frames/s: %s) in %.3g s: %.3g frames/s, on %s\n",
-              static_cast<long long>(written), written == 1 ? "" : "s", plan.name.c_str(), width, height, o.fps,
-              frames_written(first_written.value_or(0), last_written, t_first, t_last).c_str(), wall,
-              wall > 0 ? written / wall : 0.0, offscreen.renderer_name().c_str());
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf(
+      "rendered %lld frame%s of %s (%dx%d, %g frames/s: %s) in %.3g s: %.3g frames/s, on %s\n",
+      static_cast<long long>(written), written == 1 ? "" : "s", plan.name.c_str(), width, height,
+      o.fps, frames_written(first_written.value_or(0), last_written, t_first, t_last).c_str(), wall,
+      wall > 0 ? written / wall : 0.0, offscreen.renderer_name().c_str());
   std::printf("output     %s\n", (o.out ? *o.out : *o.video).c_str());
   // (a lesson's steps diverge where they mean to)
   const int verdict = lesson ? kOk : lane_verdicts(*plan.shots[current].session, plan.name);
@@ -435,29 +477,38 @@ int render(const RenderOptions& o) {
 
 Command add_render_command(CLI::App& app) {
   auto o = std::make_shared<RenderOptions>();
-  CLI::App* c = app.add_subcommand("render", "headless frames (PNG) or video (mp4), no display needed");
+  CLI::App* c =
+      app.add_subcommand("render", "headless frames (PNG) or video (mp4), no display needed");
   c->add_option("scene", o->scene, "scene name or JSON file (or --lesson)");
   c->add_option("--lesson", o->lesson,
-                 "record a lesson, its captions burned in (springlab lesson list), with its own values: its captions "
-                 "state them, so it takes no --dt, --ks, --kd, --method or --compare (the message gives each step's "
-                 "scene to render with yours)");
+                "record a lesson, its captions burned in (springlab lesson list), with its own "
+                "values: its captions "
+                "state them, so it takes no --dt, --ks, --kd, --method or --compare (the message "
+                "gives each step's "
+                "scene to render with yours)");
   add_sim_options(*c, o->sim, false);
   c->add_option("--out", o->out, "write frame_00000.png, ... into this folder");
   c->add_option("--video", o->video, "write an mp4 (H.264) through ffmpeg");
-  c->add_option("--frames", o->frames, "number of frames (default: the scene's duration, or the script's)");
+  c->add_option("--frames", o->frames,
+                "number of frames (default: the scene's duration, or the script's)");
   c->add_option("--duration", o->duration, "seconds of presentation time to render");
   c->add_option("--fps", o->fps, "frames per second (default 60)");
   c->add_option("--size", o->size, "WIDTHxHEIGHT (default 1280x720)");
   c->add_flag("--ui", o->ui, "include the app's panels");
   c->add_option("--ui-scale", o->ui_scale, "size of the panels and text (default: height / 720)");
-  c->add_option("--lang", o->lang, "language of the panels and captions: " + language_list() + " (default en)");
+  c->add_option("--lang", o->lang,
+                "language of the panels and captions: " + language_list() + " (default en)");
   c->add_option("--script", o->script, "play a scripted demo (JSON)");
-  c->add_option("--compare", o->compare, "2 to 4 methods side by side, e.g. euler,verlet (IK scenes: solvers, e.g. ccd,fabrik,dls)");
+  c->add_option(
+      "--compare", o->compare,
+      "2 to 4 methods side by side, e.g. euler,verlet (IK scenes: solvers, e.g. ccd,fabrik,dls)");
   c->add_option("--compare-layout", o->compare_layout, kCompareLayoutHelp);
   c->add_option("--select", o->select, "write only these frames, e.g. 0,60,120");
   c->add_flag("--check-text", o->check_text,
-              "say each piece of text that overlaps other text, is cut by its widget or shortened, and exit 1 if any");
-  c->add_flag("--software", o->software, "use the software rasteriser even with a GPU (same pixels everywhere)");
+              "say each piece of text that overlaps other text, is cut by its widget or shortened, "
+              "and exit 1 if any");
+  c->add_flag("--software", o->software,
+              "use the software rasteriser even with a GPU (same pixels everywhere)");
   return [o] { return render(*o); };
 }
 

@@ -66,21 +66,27 @@ std::string format(double x) {
 // An inverse-kinematics scene: each solver from the starting pose to the target, as far as it
 // gets, one line each.
 int run_ik(const Scene& scene, bool csv) {
-  if (csv) throw InputError("--csv: '" + scene.name + "' is an inverse-kinematics scene, which has no trace over time");
+  if (csv)
+    throw InputError("--csv: '" + scene.name +
+                     "' is an inverse-kinematics scene, which has no trace over time");
   const IkScene& ik = *scene.ik;
   const Eigen::Vector2d target = scene.state.x.row(ik.target).head<2>().transpose();
   const double distance = (target - ik.chain.base).norm();
-  std::printf("scene      %s (inverse kinematics: %d links, reach %.4g m)\n", scene.name.c_str(), ik.chain.size(),
-              ik.chain.reach());
+  std::printf("scene      %s (inverse kinematics: %d links, reach %.4g m)\n", scene.name.c_str(),
+              ik.chain.size(), ik.chain.reach());
   const IkStatus start = ik_status(ik.chain, target, ik.settings);
-  std::printf("target     (%.4g, %.4g), %.4g m from the base: %s\n", target.x(), target.y(), distance,
-              start.reachable ? "within reach" : "out of reach (the chain can only stretch towards it)");
+  std::printf(
+      "target     (%.4g, %.4g), %.4g m from the base: %s\n", target.x(), target.y(), distance,
+      start.reachable ? "within reach" : "out of reach (the chain can only stretch towards it)");
   for (IkSolver solver : ik.solvers) {
     IkChain chain = ik.chain;
     const IkStatus s = ik_solve(solver, chain, target, ik.settings);
-    std::printf("%-10s %s after %d iterations, error %.3g m (tolerance %.3g m)\n", ik_solver_info(solver).name,
-                s.converged ? "reached" : s.stalled ? "stuck" : "not reached", s.iterations, s.error,
-                ik.settings.tolerance);
+    std::printf("%-10s %s after %d iterations, error %.3g m (tolerance %.3g m)\n",
+                ik_solver_info(solver).name,
+                s.converged ? "reached"
+                : s.stalled ? "stuck"
+                            : "not reached",
+                s.iterations, s.error, ik.settings.tolerance);
   }
   return kOk;
 }
@@ -93,46 +99,60 @@ void print_iterative_account(const Simulation& sim) {
   // method's own. Negative, it put energy in: its springs' stretch, counted with k_s, grew.
   const double artificial = -(sim.net_energy() + sim.dissipated());
   if (!energy_account_closed(sim.model()))
-    std::printf("damping    not stated: the colliders' contacts and friction take energy the account does not "
-                "count apart\n");
+    std::printf(
+        "damping    not stated: the colliders' contacts and friction take energy the account does "
+        "not "
+        "count apart\n");
   else if (artificial >= 0.0)
-    std::printf("damping    %s J taken out beyond the physics' damping (%s W on average; the physics' damping took %s J)\n",
-                format(artificial).c_str(), format(artificial / sim.state().t).c_str(), format(sim.dissipated()).c_str());
+    std::printf(
+        "damping    %s J taken out beyond the physics' damping (%s W on average; the physics' "
+        "damping took %s J)\n",
+        format(artificial).c_str(), format(artificial / sim.state().t).c_str(),
+        format(sim.dissipated()).c_str());
   else
-    std::printf("energy in  %s J put in beyond the physics (%s W on average): its springs ended stretched or compressed further than k_s "
-                "would hold them, and that counts with k_s (the physics' damping took %s J)\n",
-                format(-artificial).c_str(), format(-artificial / sim.state().t).c_str(), format(sim.dissipated()).c_str());
+    std::printf(
+        "energy in  %s J put in beyond the physics (%s W on average): its springs ended stretched "
+        "or compressed further than k_s "
+        "would hold them, and that counts with k_s (the physics' damping took %s J)\n",
+        format(-artificial).c_str(), format(-artificial / sim.state().t).c_str(),
+        format(sim.dissipated()).c_str());
   const double lengths = length_ratio(sim.model(), sim.state());
   if (!at_rest(sim.model(), sim.state(), sim.energy_scale())) {
-    std::printf("stretch    in motion: springs at %sx their rest length in all\n", format(lengths).c_str());
+    std::printf("stretch    in motion: springs at %sx their rest length in all\n",
+                format(lengths).c_str());
   } else if (loaded_balance(sim.model())) {
     const Softness s = softness(sim.model(), sim.state());
-    std::printf("stretch    at rest, springs at %sx their rest length in all; %s m RMS against the spring model's %s m "
-                "under the same load: its springs act as k_s x %s\n",
-                format(lengths).c_str(), format(s.stretch).c_str(), format(s.model_stretch).c_str(),
-                format(s.ratio()).c_str());
+    std::printf(
+        "stretch    at rest, springs at %sx their rest length in all; %s m RMS against the spring "
+        "model's %s m "
+        "under the same load: its springs act as k_s x %s\n",
+        format(lengths).c_str(), format(s.stretch).c_str(), format(s.model_stretch).c_str(),
+        format(s.ratio()).c_str());
   } else {
-    std::printf("stretch    at rest, springs at %sx their rest length in all; no load carried to pins (free, or resting "
-                "on a collider), so no effective stiffness to state\n",
-                format(lengths).c_str());
+    std::printf(
+        "stretch    at rest, springs at %sx their rest length in all; no load carried to pins "
+        "(free, or resting "
+        "on a collider), so no effective stiffness to state\n",
+        format(lengths).c_str());
   }
 }
 
 // The stability line: the stiffest mode, h w_max, the method's limit and the mode that sets it.
-void print_stability(const Simulation& sim, const StabilityAnalysis& stability, const StabilityLimit& limit,
-                     const MethodInfo& m) {
+void print_stability(const Simulation& sim, const StabilityAnalysis& stability,
+                     const StabilityLimit& limit, const MethodInfo& m) {
   if (stability.oscillates()) {
-    std::printf("stability  w_max = %s rad/s (Gershgorin bound %s), h w_max = %s; %s: %s", format(stability.w_max()).c_str(),
-                format(stability.w_bound()).c_str(), format(sim.h() * stability.w_max()).c_str(), m.name,
-                describe(limit).c_str());
+    std::printf("stability  w_max = %s rad/s (Gershgorin bound %s), h w_max = %s; %s: %s",
+                format(stability.w_max()).c_str(), format(stability.w_bound()).c_str(),
+                format(sim.h() * stability.w_max()).c_str(), m.name, describe(limit).c_str());
     if (limit.mode && std::isfinite(limit.h))
-      std::printf(", set by a mode of %s rad/s with damping ratio %s", format(limit.mode->w).c_str(),
-                  format(limit.mode->damping_ratio()).c_str());
-    std::printf(" (at the scene's equilibrium, %s, %s s)\n", stability.dense() ? "every eigenvalue" : "Lanczos",
+      std::printf(", set by a mode of %s rad/s with damping ratio %s",
+                  format(limit.mode->w).c_str(), format(limit.mode->damping_ratio()).c_str());
+    std::printf(" (at the scene's equilibrium, %s, %s s)\n",
+                stability.dense() ? "every eigenvalue" : "Lanczos",
                 format(stability.seconds()).c_str());
   } else {
-    std::printf("stability  no oscillating modes (%s); %s: %s\n", stability.no_modes_reason().c_str(), m.name,
-                describe(limit).c_str());
+    std::printf("stability  no oscillating modes (%s); %s: %s\n",
+                stability.no_modes_reason().c_str(), m.name, describe(limit).c_str());
   }
 }
 
@@ -144,13 +164,17 @@ void print_cost(const Counters& c, const MethodInfo& m) {
     std::printf(", %lld solver iterations (%s)", static_cast<long long>(c.solver_iterations),
                 m.iteration_unit ? m.iteration_unit : "iterations");
   else if (c.linear_solves)
-    std::printf(", %lld linear solves (%lld CG iterations)", static_cast<long long>(c.linear_solves),
+    std::printf(", %lld linear solves (%lld CG iterations)",
+                static_cast<long long>(c.linear_solves),
                 static_cast<long long>(c.solver_iterations));
   if (c.newton_corrections)
-    std::printf(", %lld Newton corrections (%.3g a step)", static_cast<long long>(c.newton_corrections),
-                static_cast<double>(c.newton_corrections) / static_cast<double>(std::max<std::int64_t>(1, c.accepted)));
+    std::printf(", %lld Newton corrections (%.3g a step)",
+                static_cast<long long>(c.newton_corrections),
+                static_cast<double>(c.newton_corrections) /
+                    static_cast<double>(std::max<std::int64_t>(1, c.accepted)));
   if (c.halved_steps)
-    std::printf(", %lld steps halved (their stages not solved at the whole step)", static_cast<long long>(c.halved_steps));
+    std::printf(", %lld steps halved (their stages not solved at the whole step)",
+                static_cast<long long>(c.halved_steps));
   if (m.adaptive())
     std::printf(", %lld accepted and %lld rejected internal steps",
                 static_cast<long long>(c.accepted), static_cast<long long>(c.rejected));
@@ -186,7 +210,8 @@ int run(const RunOptions& o) {
     if (csv && (taken % o.every == 0 || taken == p.steps)) write_row(csv->file(), sim);
     if ((taken & 255) == 0) progress.update(taken);
   }
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   progress.finish();
   if (csv) csv->commit();
 
@@ -198,11 +223,14 @@ int run(const RunOptions& o) {
   const int substeps = sim.settings().substeps;
   std::string chosen = "fixed";
   if (sim.auto_substeps())
-    chosen = !sim.substeps_capped() ? "auto: h within " + format(sim.settings().safety) + " of the limit"
-             : sim.stable_step() == 0.0 ? "auto: unstable at any step, sub-steps cannot help"
-                                        : "auto, capped at " + std::to_string(kMaxAutoSubsteps) + ": still past the limit";
-  std::printf("method     %s, dt = %s s, %d substep%s (%s; h = %s s)\n", m.name, format(p.settings.dt).c_str(),
-              substeps, substeps == 1 ? "" : "s", chosen.c_str(), format(sim.h()).c_str());
+    chosen = !sim.substeps_capped()
+                 ? "auto: h within " + format(sim.settings().safety) + " of the limit"
+             : sim.stable_step() == 0.0
+                 ? "auto: unstable at any step, sub-steps cannot help"
+                 : "auto, capped at " + std::to_string(kMaxAutoSubsteps) + ": still past the limit";
+  std::printf("method     %s, dt = %s s, %d substep%s (%s; h = %s s)\n", m.name,
+              format(p.settings.dt).c_str(), substeps, substeps == 1 ? "" : "s", chosen.c_str(),
+              format(sim.h()).c_str());
   std::printf("steps      %lld of %lld, simulated %s s in %s s of wall time (%s steps/s)\n",
               static_cast<long long>(taken), static_cast<long long>(p.steps),
               format(sim.state().t).c_str(), format(wall).c_str(),
@@ -224,12 +252,16 @@ int run(const RunOptions& o) {
     const Momentum now = momentum(sim.model(), sim.state());
     const MomentumChange d = momentum_change(initial_momentum, now);
     const auto said = [](double change) {
-      return std::string(change <= kMomentumKept ? "kept (" : "changed (") + "by " + format(change) + " of ";
+      return std::string(change <= kMomentumKept ? "kept (" : "changed (") + "by " +
+             format(change) + " of ";
     };
-    std::printf("momentum   a free body (no pins, gravity, drag, fields or colliders): P %ssum m|v| = %s kg m/s), "
-                "L %ssum m|x||v| = %s kg m^2/s); %s: P %s, L %s\n",
-                said(d.linear).c_str(), format(now.linear_scale).c_str(), said(d.angular).c_str(),
-                format(now.angular_scale).c_str(), m.name, kept_text(m.momentum), kept_text(m.angular_momentum));
+    std::printf(
+        "momentum   a free body (no pins, gravity, drag, fields or colliders): P %ssum m|v| = %s "
+        "kg m/s), "
+        "L %ssum m|x||v| = %s kg m^2/s); %s: P %s, L %s\n",
+        said(d.linear).c_str(), format(now.linear_scale).c_str(), said(d.angular).c_str(),
+        format(now.angular_scale).c_str(), m.name, kept_text(m.momentum),
+        kept_text(m.angular_momentum));
   }
   if (o.csv) std::printf("trace      %s\n", o.csv->c_str());
 
@@ -246,7 +278,8 @@ int run(const RunOptions& o) {
 
 Command add_run_command(CLI::App& app) {
   auto options = std::make_shared<RunOptions>();
-  CLI::App* c = app.add_subcommand("run", "simulate without graphics; print a summary, write a CSV trace");
+  CLI::App* c =
+      app.add_subcommand("run", "simulate without graphics; print a summary, write a CSV trace");
   c->add_option("scene", options->scene, "scene name or JSON file")->required();
   add_sim_options(*c, options->sim);
   c->add_option("--csv", options->csv, "write a trace: one row per step");

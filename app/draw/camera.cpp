@@ -58,7 +58,8 @@ ViewCamera view_camera(const Camera& camera, int width, int height) {
   }
   const double yaw = camera.yaw * kDegree, pitch = camera.pitch * kDegree;
   const Vec3f offset = Eigen::Vector3d(std::cos(pitch) * std::sin(yaw), std::sin(pitch),
-                                       std::cos(pitch) * std::cos(yaw)).cast<float>() *
+                                       std::cos(pitch) * std::cos(yaw))
+                           .cast<float>() *
                        static_cast<float>(camera.distance);
   v.eye = target + offset;
   v.view = look_at(v.eye, target, Vec3f::UnitY());
@@ -80,9 +81,10 @@ Ray pixel_ray(const ViewCamera& camera, double x, double y, int width, int heigh
   return {near, (far - near).normalized()};
 }
 
-Eigen::Vector3d project(const ViewCamera& camera, const Eigen::Vector3d& world, int width, int height) {
-  const Eigen::Vector4d clip =
-      (camera.projection * camera.view).cast<double>() * Eigen::Vector4d(world.x(), world.y(), world.z(), 1.0);
+Eigen::Vector3d project(const ViewCamera& camera, const Eigen::Vector3d& world, int width,
+                        int height) {
+  const Eigen::Vector4d clip = (camera.projection * camera.view).cast<double>() *
+                               Eigen::Vector4d(world.x(), world.y(), world.z(), 1.0);
   const Eigen::Vector3d ndc = clip.head<3>() / clip.w();
   return {(ndc.x() + 1.0) * 0.5 * width, (1.0 - ndc.y()) * 0.5 * height, 0.5 * (ndc.z() + 1.0)};
 }

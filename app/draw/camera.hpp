@@ -17,6 +17,7 @@ struct Ray {
 Ray pixel_ray(const ViewCamera& camera, double x, double y, int width, int height);
 
 // Where a world point lands, in pixels from the top-left; z in [0, 1] is its depth.
-Eigen::Vector3d project(const ViewCamera& camera, const Eigen::Vector3d& world, int width, int height);
+Eigen::Vector3d project(const ViewCamera& camera, const Eigen::Vector3d& world, int width,
+                        int height);
 
 }  // namespace springlab::draw

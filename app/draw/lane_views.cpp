@@ -16,23 +16,28 @@ constexpr double kFramed = 16.0 / 9.0;
 
 Camera framed(Camera camera, double aspect) {
   const double back = std::max(1.0, kFramed / aspect);
-  if (camera.view == View::Planar) camera.height *= back;
-  else camera.distance *= back;
+  if (camera.view == View::Planar)
+    camera.height *= back;
+  else
+    camera.distance *= back;
   return camera;
 }
 
 }  // namespace
 
-const char* layout_name(CompareLayout layout) { return layout == CompareLayout::Apart ? "apart" : "together"; }
+const char* layout_name(CompareLayout layout) {
+  return layout == CompareLayout::Apart ? "apart" : "together";
+}
 
 CompareLayout parse_compare_layout(std::string_view text, const std::string& what) {
   if (text == "apart") return CompareLayout::Apart;
   if (text == "together") return CompareLayout::Together;
-  throw InputError(what + ": must be apart (a view each) or together (one view), got '" + std::string(text) + "'");
+  throw InputError(what + ": must be apart (a view each) or together (one view), got '" +
+                   std::string(text) + "'");
 }
 
-std::vector<LaneView> lane_views(const app::Session& session, const Camera& camera, CompareLayout layout,
-                                 Viewport viewport, float gap) {
+std::vector<LaneView> lane_views(const app::Session& session, const Camera& camera,
+                                 CompareLayout layout, Viewport viewport, float gap) {
   const int n = static_cast<int>(session.lanes().size());
   std::vector<LaneView> views;
   if (n <= 1 || layout == CompareLayout::Together || viewport.width <= 0 || viewport.height <= 0) {
@@ -50,7 +55,8 @@ std::vector<LaneView> lane_views(const app::Session& session, const Camera& came
   for (int cols = n; cols >= 1; --cols) {
     const int rows = (n + cols - 1) / cols;
     if ((rows - 1) * cols >= n) continue;
-    const double w = (viewport.width - (cols - 1) * gap) / cols, h = (viewport.height - (rows - 1) * gap) / rows;
+    const double w = (viewport.width - (cols - 1) * gap) / cols,
+                 h = (viewport.height - (rows - 1) * gap) / rows;
     const double size = std::min(h, w / kFramed);
     if (size > best * (1.0 + 1e-9)) best = size, best_cols = cols, best_rows = rows;
   }

@@ -23,15 +23,15 @@ CompareLayout parse_compare_layout(std::string_view text, const std::string& wha
 // One view: its place in the framebuffer (pixels from the top-left), its camera, its lanes.
 struct LaneView {
   Viewport viewport;
-  Camera camera;   // the scene's camera, framing at least what a 16:9 frame shows of it
-  ViewCamera view; // its matrices for this viewport
+  Camera camera;    // the scene's camera, framing at least what a 16:9 frame shows of it
+  ViewCamera view;  // its matrices for this viewport
   std::vector<int> lanes;
 };
 
 // The views of a session in `viewport`: one (one lane, or together), or one a lane (apart), in
 // the grid of tiles that shows the scene largest (ties: more columns), the last row centred.
-std::vector<LaneView> lane_views(const app::Session& session, const Camera& camera, CompareLayout layout,
-                                 Viewport viewport, float gap = 2.0f);
+std::vector<LaneView> lane_views(const app::Session& session, const Camera& camera,
+                                 CompareLayout layout, Viewport viewport, float gap = 2.0f);
 
 // The view that holds a point (pixels, as the views' viewports), or none.
 const LaneView* view_at(const std::vector<LaneView>& views, double x, double y);

@@ -18,24 +18,42 @@ using springlab::Mark;  // (a row's own, MethodInfo::mark)
 
 inline bool hollow(Mark m) {
   switch (m) {
-    case Mark::RingCircle: case Mark::RingSquare: case Mark::RingDiamond: case Mark::RingTriangleUp:
-    case Mark::RingTriangleDown: return true;
-    default: return false;
+    case Mark::RingCircle:
+    case Mark::RingSquare:
+    case Mark::RingDiamond:
+    case Mark::RingTriangleUp:
+    case Mark::RingTriangleDown:
+      return true;
+    default:
+      return false;
   }
 }
-inline bool strokes(Mark m) { return m == Mark::Plus || m == Mark::Cross; }
+inline bool strokes(Mark m) {
+  return m == Mark::Plus || m == Mark::Cross;
+}
 
 // The outline of a shape of radius 1 about (0, 0), y down (a screen's): a circle as 16 sides;
 // a plus or a cross as two segments (four points).
 inline std::vector<std::array<float, 2>> mark_outline(Mark m) {
   switch (m) {
-    case Mark::Square: case Mark::RingSquare: return {{-0.8f, -0.8f}, {0.8f, -0.8f}, {0.8f, 0.8f}, {-0.8f, 0.8f}};
-    case Mark::Diamond: case Mark::RingDiamond: return {{0.0f, -1.1f}, {1.1f, 0.0f}, {0.0f, 1.1f}, {-1.1f, 0.0f}};
-    case Mark::TriangleUp: case Mark::RingTriangleUp: return {{0.0f, -1.15f}, {1.05f, 0.7f}, {-1.05f, 0.7f}};
-    case Mark::TriangleDown: case Mark::RingTriangleDown: return {{0.0f, 1.15f}, {-1.05f, -0.7f}, {1.05f, -0.7f}};
-    case Mark::Plus: return {{-1.1f, 0.0f}, {1.1f, 0.0f}, {0.0f, -1.1f}, {0.0f, 1.1f}};
-    case Mark::Cross: return {{-0.85f, -0.85f}, {0.85f, 0.85f}, {-0.85f, 0.85f}, {0.85f, -0.85f}};
-    case Mark::None: return {};
+    case Mark::Square:
+    case Mark::RingSquare:
+      return {{-0.8f, -0.8f}, {0.8f, -0.8f}, {0.8f, 0.8f}, {-0.8f, 0.8f}};
+    case Mark::Diamond:
+    case Mark::RingDiamond:
+      return {{0.0f, -1.1f}, {1.1f, 0.0f}, {0.0f, 1.1f}, {-1.1f, 0.0f}};
+    case Mark::TriangleUp:
+    case Mark::RingTriangleUp:
+      return {{0.0f, -1.15f}, {1.05f, 0.7f}, {-1.05f, 0.7f}};
+    case Mark::TriangleDown:
+    case Mark::RingTriangleDown:
+      return {{0.0f, 1.15f}, {-1.05f, -0.7f}, {1.05f, -0.7f}};
+    case Mark::Plus:
+      return {{-1.1f, 0.0f}, {1.1f, 0.0f}, {0.0f, -1.1f}, {0.0f, 1.1f}};
+    case Mark::Cross:
+      return {{-0.85f, -0.85f}, {0.85f, 0.85f}, {-0.85f, 0.85f}, {0.85f, -0.85f}};
+    case Mark::None:
+      return {};
     default: {
       std::vector<std::array<float, 2>> circle;
       for (int k = 0; k < 16; ++k) {
@@ -48,7 +66,9 @@ inline std::vector<std::array<float, 2>> mark_outline(Mark m) {
 }
 
 // A method's mark: its row's (methods/table.cpp).
-inline Mark method_mark(Method m) { return method_info(m).mark; }
+inline Mark method_mark(Method m) {
+  return method_info(m).mark;
+}
 
 // A lane's: its row's (a method's or an IK solver's), or for a lane of one's own (homework) a cross
 // or a plus (the reference lanes beside it are the Euler rows' and Verlet's).

@@ -12,7 +12,9 @@ namespace springlab::draw {
 
 namespace {
 
-Vec3f f(const Eigen::RowVector3d& x) { return x.transpose().cast<float>(); }
+Vec3f f(const Eigen::RowVector3d& x) {
+  return x.transpose().cast<float>();
+}
 
 Mesh surface_mesh(const Surface& surface, const State& state, Rgba front, Rgba back) {
   Mesh m;
@@ -29,8 +31,9 @@ Mesh surface_mesh(const Surface& surface, const State& state, Rgba front, Rgba b
     const Vec3f& c = m.positions[t[2]];
     const Vec3f normal = (b - a).cross(c - a);  // area-weighted
     for (int k : t) m.normals[k] += normal;
-    m.indices.insert(m.indices.end(), {static_cast<std::uint32_t>(t[0]), static_cast<std::uint32_t>(t[1]),
-                                       static_cast<std::uint32_t>(t[2])});
+    m.indices.insert(m.indices.end(),
+                     {static_cast<std::uint32_t>(t[0]), static_cast<std::uint32_t>(t[1]),
+                      static_cast<std::uint32_t>(t[2])});
   }
   for (Vec3f& nrm : m.normals) {
     const float length = nrm.norm();
@@ -62,10 +65,13 @@ ViewOptions ViewOptions::for_scene(const Scene& scene) {
 }
 
 Frame build_frame(const app::Session& session, const ViewOptions& options, Viewport viewport) {
-  return build_frame(session, options, lane_views(session, options.camera, CompareLayout::Together, viewport).front());
+  return build_frame(
+      session, options,
+      lane_views(session, options.camera, CompareLayout::Together, viewport).front());
 }
 
-std::vector<Frame> build_frames(const app::Session& session, const ViewOptions& options, Viewport viewport) {
+std::vector<Frame> build_frames(const app::Session& session, const ViewOptions& options,
+                                Viewport viewport) {
   std::vector<Frame> frames;
   for (const LaneView& view : lane_views(session, options.camera, options.compare_layout, viewport))
     frames.push_back(build_frame(session, options, view));
@@ -76,7 +82,8 @@ namespace {
 
 // What the scene holds besides its particles: colliders, attractors (a small ball the size of
 // the softening) and the kind's guides (an IK chain: the circles bounding what its end can reach).
-void add_fixtures(Frame& frame, const Model& model, const app::SceneKind& kind, const ViewOptions& options) {
+void add_fixtures(Frame& frame, const Model& model, const app::SceneKind& kind,
+                  const ViewOptions& options) {
   // Colliders.
   const float size = std::max(1.0f, static_cast<float>(options.spacing) * 20.0f);
   for (const PlaneCollider& p : model.planes)
@@ -85,15 +92,20 @@ void add_fixtures(Frame& frame, const Model& model, const app::SceneKind& kind, 
     frame.spheres.push_back({s.center.cast<float>(), static_cast<float>(s.radius), kCollider});
   // Attractors: a small ball at the centre, the size of the softening.
   for (const Attractor& a : model.attractors)
-    frame.spheres.push_back({a.center.cast<float>(), static_cast<float>(std::min(a.softening, 2.0 * options.spacing)), kAttractor});
+    frame.spheres.push_back({a.center.cast<float>(),
+                             static_cast<float>(std::min(a.softening, 2.0 * options.spacing)),
+                             kAttractor});
   // The kind's guides (an IK chain: the circles bounding what its end can reach), in the x-y plane.
   for (const app::GuideCircle& guide : kind.guides()) {
     const Vec3f centre = guide.centre.cast<float>();
     constexpr int kSegments = 128;
     for (int k = 0; k < kSegments; ++k) {
-      const double a0 = 2 * std::numbers::pi * k / kSegments, a1 = 2 * std::numbers::pi * (k + 1) / kSegments;
-      const Vec3f p0 = centre + static_cast<float>(guide.radius) * Vec3f(std::cos(a0), std::sin(a0), 0.0f);
-      const Vec3f p1 = centre + static_cast<float>(guide.radius) * Vec3f(std::cos(a1), std::sin(a1), 0.0f);
+      const double a0 = 2 * std::numbers::pi * k / kSegments,
+                   a1 = 2 * std::numbers::pi * (k + 1) / kSegments;
+      const Vec3f p0 =
+          centre + static_cast<float>(guide.radius) * Vec3f(std::cos(a0), std::sin(a0), 0.0f);
+      const Vec3f p1 =
+          centre + static_cast<float>(guide.radius) * Vec3f(std::cos(a1), std::sin(a1), 0.0f);
       frame.lines.push_back({p0, p1, kReach, kReach, 1.5f});
     }
   }
@@ -101,7 +113,8 @@ void add_fixtures(Frame& frame, const Model& model, const app::SceneKind& kind, 
 
 // The limiting mode (a lane analysed, not diverged): each particle's displacement in it, as an
 // arrow from the particle.
-void add_mode_arrows(Frame& frame, const app::Lane& lane, const State& state, const ViewOptions& options) {
+void add_mode_arrows(Frame& frame, const app::Lane& lane, const State& state,
+                     const ViewOptions& options) {
   const StabilityLimit& limit = lane.analysis->limit(lane.sim.settings().method);
   if (!limit.mode || limit.mode->shape.rows() != state.particle_count()) return;
   const Points& shape = limit.mode->shape;
@@ -129,7 +142,8 @@ Frame build_frame(const app::Session& session, const ViewOptions& options, const
 
   // Sizes in pixels from the spacing: particles a fifth of a spring, lines thinner.
   const float spacing_px = static_cast<float>(options.spacing) / wpp;
-  const float radius = std::clamp(0.2f * spacing_px, 3.0f, 13.0f) * wpp * std::sqrt(options.line_scale);
+  const float radius =
+      std::clamp(0.2f * spacing_px, 3.0f, 13.0f) * wpp * std::sqrt(options.line_scale);
   const float line_width = std::clamp(0.07f * spacing_px, 1.5f, 4.0f) * options.line_scale;
 
   const app::SceneKind& kind = session.kind();
@@ -145,7 +159,8 @@ Frame build_frame(const app::Session& session, const ViewOptions& options, const
     if (lane.sim.diverged()) tint.a = 0.35f;
 
     if (options.surfaces && !compare)
-      for (const Surface& s : scene.surfaces) frame.meshes.push_back(surface_mesh(s, state, kClothFront, kClothBack));
+      for (const Surface& s : scene.surfaces)
+        frame.meshes.push_back(surface_mesh(s, state, kClothFront, kClothBack));
 
     if (options.springs || compare || scene.surfaces.empty()) {
       for (int k = 0; k < m.spring_count(); ++k) {
@@ -153,8 +168,10 @@ Frame build_frame(const app::Session& session, const ViewOptions& options, const
         const double l = (state.x.row(b) - state.x.row(a)).norm();
         const double rest = m.rest_length[k];
         const double strain = rest > 0 ? (l - rest) / rest : 0.0;
-        const Rgba c = compare || !kind.strained() ? tint : strain_color(strain, options.strain_scale);
-        frame.lines.push_back({f(state.x.row(a)), f(state.x.row(b)), c, c, line_width});  // (sane state when diverged)
+        const Rgba c =
+            compare || !kind.strained() ? tint : strain_color(strain, options.strain_scale);
+        frame.lines.push_back({f(state.x.row(a)), f(state.x.row(b)), c, c,
+                               line_width});  // (sane state when diverged)
       }
     }
     if (options.trails)
@@ -173,9 +190,14 @@ Frame build_frame(const app::Session& session, const ViewOptions& options, const
         // An emitted particle: drawn only while alive, in its colour, fading out with age.
         if (!emission.alive(i)) continue;
         const double life = emission.lifetime(i);
-        const float left = life > 0 ? static_cast<float>(std::clamp(1.0 - emission.age(i, state.t) / life, 0.0, 1.0)) : 1.0f;
+        const float left =
+            life > 0
+                ? static_cast<float>(std::clamp(1.0 - emission.age(i, state.t) / life, 0.0, 1.0))
+                : 1.0f;
         const Vec3& rgb = emission.color(i);
-        Rgba c = held ? kGrabbed : compare ? tint : Rgba{float(rgb.x()), float(rgb.y()), float(rgb.z()), 1.0f};
+        Rgba c = held      ? kGrabbed
+                 : compare ? tint
+                           : Rgba{float(rgb.x()), float(rgb.y()), float(rgb.z()), 1.0f};
         c.a *= std::sqrt(left) * (lane.sim.diverged() ? 0.35f : 1.0f);
         frame.particles.push_back({f(state.x.row(i)), held ? 1.3f * radius : radius, c, false});
         continue;
@@ -184,14 +206,16 @@ Frame build_frame(const app::Session& session, const ViewOptions& options, const
       if (!options.particles && !pinned && !held && !(scene.surfaces.empty())) continue;
       if (i == kind.handle()) {
         const float size = std::max(1.4f * radius, 8.0f * wpp);  // big enough to grab
-        frame.particles.push_back({f(state.x.row(i)), held ? 1.2f * size : size, held ? kGrabbed : kTarget, false});
+        frame.particles.push_back(
+            {f(state.x.row(i)), held ? 1.2f * size : size, held ? kGrabbed : kTarget, false});
         continue;
       }
       Rgba c = held ? kGrabbed : compare ? tint : kParticle;
       if (lane.sim.diverged()) c.a = 0.35f;
       frame.particles.push_back({f(state.x.row(i)), held ? 1.3f * radius : radius, c, pinned});
     }
-    if (options.mode && lane.analysis && !lane.sim.diverged()) add_mode_arrows(frame, lane, state, options);
+    if (options.mode && lane.analysis && !lane.sim.diverged())
+      add_mode_arrows(frame, lane, state, options);
   }
   return frame;
 }
@@ -199,7 +223,8 @@ Frame build_frame(const app::Session& session, const ViewOptions& options, const
 Eigen::Vector3d label_anchor(const app::Lane& lane) {
   const State& s = lane.sim.diverged() ? lane.sane : lane.sim.state();
   if (s.particle_count() == 0) return Eigen::Vector3d::Zero();
-  const Eigen::Vector3d lo = s.x.colwise().minCoeff().transpose(), hi = s.x.colwise().maxCoeff().transpose();
+  const Eigen::Vector3d lo = s.x.colwise().minCoeff().transpose(),
+                        hi = s.x.colwise().maxCoeff().transpose();
   Eigen::Vector3d top = 0.5 * (lo + hi);
   top.y() = hi.y();
   return top;

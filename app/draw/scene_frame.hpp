@@ -21,7 +21,7 @@ struct ViewOptions {
   // displacement in that mode, the largest three spacings long, so that a class sees which motion
   // blows up first.
   bool mode = false;
-  float line_scale = 1.0f;  // presentation mode draws lines thicker
+  float line_scale = 1.0f;                              // presentation mode draws lines thicker
   CompareLayout compare_layout = CompareLayout::Apart;  // compare's lanes: a view each, or one
 
   // Defaults for a scene: a surface hides the springs and particles it is made of.
@@ -31,7 +31,8 @@ struct ViewOptions {
 // The frames of a session's views (lane_views.hpp, as options.compare_layout lays them) in
 // `viewport`, where in the framebuffer the scene goes. A lane that diverged is drawn as its last
 // sane state (Lane::sane), faded: never its blown-up geometry.
-std::vector<Frame> build_frames(const app::Session& session, const ViewOptions& options, Viewport viewport);
+std::vector<Frame> build_frames(const app::Session& session, const ViewOptions& options,
+                                Viewport viewport);
 // One view's frame: its lanes, with its camera.
 Frame build_frame(const app::Session& session, const ViewOptions& options, const LaneView& view);
 // Every lane in one view of `viewport`.

@@ -1,7 +1,8 @@
 // OpenGL for every platform, and the only place that knows which one it is. On the desktop:
 // OpenGL 3.3 core through libepoxy, which resolves functions in a GLFW window and in a headless
-// EGL context alike, with no init call (docs/platform.md, "OpenGL function loading"). In the browser: OpenGL ES 3.0 (WebGL2),
-// whose functions emscripten links directly. Every GL call of springlab is in app/gfx/.
+// EGL context alike, with no init call (docs/platform.md, "OpenGL function loading"). In the
+// browser: OpenGL ES 3.0 (WebGL2), whose functions emscripten links directly. Every GL call of
+// springlab is in app/gfx/.
 #pragma once
 
 #ifdef __EMSCRIPTEN__

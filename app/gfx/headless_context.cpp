@@ -43,10 +43,12 @@ EGLDisplay open_display(bool software) {
     }
   }
   if (has("EGL_MESA_platform_surfaceless")) {
-    EGLDisplay d = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    EGLDisplay d =
+        eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
     if (d != EGL_NO_DISPLAY) return d;
   }
-  throw std::runtime_error(std::string("no EGL display without a window system could be opened") + kInstall);
+  throw std::runtime_error(std::string("no EGL display without a window system could be opened") +
+                           kInstall);
 }
 
 }  // namespace
@@ -65,13 +67,18 @@ HeadlessContext::HeadlessContext(bool software) {
   EGLint configs = 0;
   // Surfaceless contexts may have no config at all; EGL_KHR_no_config_context allows that.
   eglChooseConfig(display, config_attributes, &config, 1, &configs);
-  const EGLint context_attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
+  const EGLint context_attributes[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                       3,
+                                       EGL_CONTEXT_MINOR_VERSION,
+                                       3,
                                        EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                                       EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+                                       EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                       EGL_NONE};
   EGLContext context = eglCreateContext(display, configs > 0 ? config : EGL_NO_CONFIG_KHR,
                                         EGL_NO_CONTEXT, context_attributes);
   if (context == EGL_NO_CONTEXT)
-    throw std::runtime_error(std::string("EGL could not make an OpenGL 3.3 core context") + kInstall);
+    throw std::runtime_error(std::string("EGL could not make an OpenGL 3.3 core context") +
+                             kInstall);
   context_ = context;
   if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context))
     throw std::runtime_error("EGL could not make the context current without a surface");
@@ -91,7 +98,8 @@ std::string HeadlessContext::renderer() const {
 }
 
 bool software_renderer(const std::string& gl_renderer) {
-  return gl_renderer.find("llvmpipe") != std::string::npos || gl_renderer.find("softpipe") != std::string::npos;
+  return gl_renderer.find("llvmpipe") != std::string::npos ||
+         gl_renderer.find("softpipe") != std::string::npos;
 }
 
 }  // namespace springlab::gfx

@@ -8,7 +8,11 @@
 namespace springlab::gfx {
 
 Offscreen::Offscreen(bool software, int width, int height, float ui_scale, double fps)
-    : context_(software), renderer_(std::make_unique<Renderer>()), width_(width), height_(height), fps_(fps) {
+    : context_(software),
+      renderer_(std::make_unique<Renderer>()),
+      width_(width),
+      height_(height),
+      fps_(fps) {
   target_.resize(width, height, 4);
   if (ui_scale > 0.0f) {
     IMGUI_CHECKVERSION();

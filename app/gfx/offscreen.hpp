@@ -29,7 +29,9 @@ class Offscreen {
   // (Mesa's llvmpipe starts on glFlush): draw() returns at once, read() waits for the pixels.
   // With `bottom_up` the rows are left as GL reads them (out.bottom_up), sparing a copy.
   void draw(std::span<const draw::Frame> frames, const std::function<void()>& ui);
-  void draw(const draw::Frame& frame, const std::function<void()>& ui) { draw(std::span(&frame, 1), ui); }
+  void draw(const draw::Frame& frame, const std::function<void()>& ui) {
+    draw(std::span(&frame, 1), ui);
+  }
   void read(app::Image& out, bool bottom_up = false);
 
   std::string renderer_name() const { return context_.renderer(); }

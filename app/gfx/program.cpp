@@ -85,9 +85,17 @@ Program& Program::operator=(Program&& other) noexcept {
 void Program::set(const char* name, const draw::Mat4f& m) const {
   glUniformMatrix4fv(uniform(name), 1, GL_FALSE, m.data());  // Eigen is column-major, as GL
 }
-void Program::set(const char* name, const draw::Vec3f& v) const { glUniform3f(uniform(name), v.x(), v.y(), v.z()); }
-void Program::set(const char* name, const draw::Rgba& c) const { glUniform4f(uniform(name), c.r, c.g, c.b, c.a); }
-void Program::set(const char* name, float x) const { glUniform1f(uniform(name), x); }
-void Program::set(const char* name, float x, float y) const { glUniform2f(uniform(name), x, y); }
+void Program::set(const char* name, const draw::Vec3f& v) const {
+  glUniform3f(uniform(name), v.x(), v.y(), v.z());
+}
+void Program::set(const char* name, const draw::Rgba& c) const {
+  glUniform4f(uniform(name), c.r, c.g, c.b, c.a);
+}
+void Program::set(const char* name, float x) const {
+  glUniform1f(uniform(name), x);
+}
+void Program::set(const char* name, float x, float y) const {
+  glUniform2f(uniform(name), x, y);
+}
 
 }  // namespace springlab::gfx

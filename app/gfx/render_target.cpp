@@ -6,7 +6,9 @@
 
 namespace springlab::gfx {
 
-RenderTarget::~RenderTarget() { release(); }
+RenderTarget::~RenderTarget() {
+  release();
+}
 
 void RenderTarget::release() {
   if (msaa_fbo_) glDeleteFramebuffers(1, &msaa_fbo_);

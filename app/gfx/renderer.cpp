@@ -20,7 +20,8 @@ draw::Mesh make_unit_sphere(int slices, int stacks) {
     const float phi = kPi * static_cast<float>(j) / stacks;
     for (int i = 0; i <= slices; ++i) {
       const float theta = 2.0f * kPi * static_cast<float>(i) / slices;
-      const Vec3f p(std::sin(phi) * std::cos(theta), std::cos(phi), std::sin(phi) * std::sin(theta));
+      const Vec3f p(std::sin(phi) * std::cos(theta), std::cos(phi),
+                    std::sin(phi) * std::sin(theta));
       m.positions.push_back(p);
       m.normals.push_back(p);
     }
@@ -43,7 +44,10 @@ void attribute(GLuint index, int size, int stride_floats, int offset_floats, boo
 }  // namespace
 
 Renderer::Renderer()
-    : particle_("particle"), line_("line"), mesh_("mesh"), ground_("ground"),
+    : particle_("particle"),
+      line_("line"),
+      mesh_("mesh"),
+      ground_("ground"),
       unit_sphere_(make_unit_sphere(48, 24)) {
   const float quad[] = {-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1};
   glGenBuffers(1, &quad_);
@@ -97,7 +101,8 @@ Renderer::Renderer()
 }
 
 Renderer::~Renderer() {
-  const GLuint buffers[] = {quad_, particle_instances_, line_corners_, line_instances_, mesh_vertices_, mesh_indices_};
+  const GLuint buffers[] = {quad_,           particle_instances_, line_corners_,
+                            line_instances_, mesh_vertices_,      mesh_indices_};
   glDeleteBuffers(6, buffers);
   const GLuint arrays[] = {particle_vao_, line_vao_, mesh_vao_, ground_vao_};
   glDeleteVertexArrays(4, arrays);
@@ -105,7 +110,8 @@ Renderer::~Renderer() {
 
 void Renderer::draw(std::span<const draw::Frame> frames, int fb_width, int fb_height) {
   glViewport(0, 0, fb_width, fb_height);
-  const draw::Rgba background = frames.empty() ? draw::Frame().background : frames.front().background;
+  const draw::Rgba background =
+      frames.empty() ? draw::Frame().background : frames.front().background;
   glClearColor(background.r, background.g, background.b, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   for (const draw::Frame& frame : frames) draw_view(frame, fb_width, fb_height);
@@ -140,7 +146,8 @@ void Renderer::draw_planes(const draw::Frame& frame) {
   glPolygonOffset(1.0f, 2.0f);
   for (const draw::Plane& p : frame.planes) {
     const Vec3f n = p.normal.normalized();
-    const Vec3f u = (std::abs(n.y()) < 0.9f ? n.cross(Vec3f::UnitY()) : n.cross(Vec3f::UnitX())).normalized();
+    const Vec3f u =
+        (std::abs(n.y()) < 0.9f ? n.cross(Vec3f::UnitY()) : n.cross(Vec3f::UnitX())).normalized();
     const Vec3f v = n.cross(u);
     ground_.set("origin", p.point);
     ground_.set("axis_u", Vec3f(u * p.extent));
@@ -167,8 +174,8 @@ void Renderer::draw_mesh(const draw::Mesh& mesh, const Mat4f& model, const draw:
   glBindBuffer(GL_ARRAY_BUFFER, mesh_vertices_);
   glBufferData(GL_ARRAY_BUFFER, scratch_.size() * sizeof(float), scratch_.data(), GL_STREAM_DRAW);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, mesh_indices_);
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, mesh.indices.size() * sizeof(std::uint32_t), mesh.indices.data(),
-               GL_STREAM_DRAW);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, mesh.indices.size() * sizeof(std::uint32_t),
+               mesh.indices.data(), GL_STREAM_DRAW);
   mesh_.set("model", model);
   mesh_.set("front_color", front);
   mesh_.set("back_color", back);
@@ -199,8 +206,8 @@ void Renderer::draw_lines(const draw::Frame& frame, int width, int height) {
   scratch_.resize(frame.lines.size() * 15);
   float* p = scratch_.data();
   for (const draw::Line& l : frame.lines) {
-    const float values[15] = {l.a.x(), l.a.y(), l.a.z(), l.b.x(), l.b.y(), l.b.z(),
-                              l.color_a.r, l.color_a.g, l.color_a.b, l.color_a.a,
+    const float values[15] = {l.a.x(),     l.a.y(),     l.a.z(),     l.b.x(),     l.b.y(),
+                              l.b.z(),     l.color_a.r, l.color_a.g, l.color_a.b, l.color_a.a,
                               l.color_b.r, l.color_b.g, l.color_b.b, l.color_b.a, l.width};
     std::copy(values, values + 15, p);
     p += 15;
@@ -224,8 +231,9 @@ void Renderer::draw_particles(const draw::Frame& frame) {
   scratch_.resize(frame.particles.size() * 9);
   float* p = scratch_.data();
   for (const draw::Particle& q : frame.particles) {
-    const float values[9] = {q.position.x(), q.position.y(), q.position.z(), q.radius,
-                             q.color.r, q.color.g, q.color.b, q.color.a, q.pinned ? 1.0f : 0.0f};
+    const float values[9] = {q.position.x(), q.position.y(), q.position.z(),
+                             q.radius,       q.color.r,      q.color.g,
+                             q.color.b,      q.color.a,      q.pinned ? 1.0f : 0.0f};
     std::copy(values, values + 9, p);
     p += 9;
   }

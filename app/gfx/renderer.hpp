@@ -19,7 +19,9 @@ class Renderer {
   // Clears the bound framebuffer (fb_width x fb_height) and draws each frame into its viewport
   // (compare's lanes apart: a view each).
   void draw(std::span<const draw::Frame> frames, int fb_width, int fb_height);
-  void draw(const draw::Frame& frame, int fb_width, int fb_height) { draw(std::span(&frame, 1), fb_width, fb_height); }
+  void draw(const draw::Frame& frame, int fb_width, int fb_height) {
+    draw(std::span(&frame, 1), fb_width, fb_height);
+  }
 
  private:
   void draw_view(const draw::Frame& frame, int fb_width, int fb_height);

@@ -1,23 +1,24 @@
 #include "homework/child_process.hpp"
 
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
-#include <fcntl.h>
 #include <fstream>
-#include <poll.h>
 #include <stdexcept>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace springlab::app {
 
 namespace {
 
 // What the child may use: memory for a rope and far more, and output for any debugging print.
-constexpr rlim_t kMemory = rlim_t(2) << 30;   // 2 GiB of address space
+constexpr rlim_t kMemory = rlim_t(2) << 30;     // 2 GiB of address space
 constexpr rlim_t kFileSize = rlim_t(64) << 20;  // 64 MiB a file
 constexpr rlim_t kCpuSeconds = 120;
 
@@ -28,12 +29,14 @@ void limit(int resource, rlim_t value) {
 
 }  // namespace
 
-ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::filesystem::path& output) {
+ChildProcess::ChildProcess(const std::vector<std::string>& argv,
+                           const std::filesystem::path& output) {
   int in[2], reply[2];
   if (pipe2(in, O_CLOEXEC) != 0 || pipe2(reply, O_CLOEXEC) != 0)
     throw std::runtime_error(std::string("cannot make a pipe: ") + std::strerror(errno));
   const int out = open(output.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (out < 0) throw std::runtime_error("cannot write " + output.string() + ": " + std::strerror(errno));
+  if (out < 0)
+    throw std::runtime_error("cannot write " + output.string() + ": " + std::strerror(errno));
   std::vector<char*> args;
   for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
@@ -78,7 +81,8 @@ bool ChildProcess::write_line(const std::string& line) {
   const char* p = text.data();
   size_t left = text.size();
   while (left > 0) {
-    const ssize_t n = ::write(to_child_, p, left);  // SIGPIPE is ignored (cli/command_line.cpp): EPIPE here
+    const ssize_t n =
+        ::write(to_child_, p, left);  // SIGPIPE is ignored (cli/command_line.cpp): EPIPE here
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) return false;
     p += n;
@@ -96,7 +100,8 @@ std::optional<std::string> ChildProcess::read_line(std::chrono::steady_clock::ti
       return line;
     }
     if (from_child_ < 0) return std::nullopt;
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+        deadline - std::chrono::steady_clock::now());
     if (left.count() <= 0) {
       timed_out_ = true;
       kill_now();
@@ -140,7 +145,8 @@ std::string ChildProcess::wait(std::chrono::milliseconds grace) {
     poll(nullptr, 0, 2);  // 2 ms
   }
   std::string how;
-  if (done < 0) how = "could not be waited for";
+  if (done < 0)
+    how = "could not be waited for";
   else if (WIFSIGNALED(status)) {
     const int sig = WTERMSIG(status);
     how = "was killed by signal " + std::to_string(sig) + " (" + strsignal(sig) + ")";
@@ -160,8 +166,10 @@ std::string ChildProcess::run_to_end(std::chrono::seconds limit) {
     wait(std::chrono::milliseconds(0));
     return "ran past " + std::to_string(limit.count()) + " s and was stopped";
   }
-  return wait(std::chrono::milliseconds(static_cast<long long>(
-      std::max<long long>(0, std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()).count()))));
+  return wait(std::chrono::milliseconds(static_cast<long long>(std::max<long long>(
+      0, std::chrono::duration_cast<std::chrono::milliseconds>(deadline -
+                                                               std::chrono::steady_clock::now())
+             .count()))));
 }
 
 std::string last_lines(const std::filesystem::path& file, int lines) {
@@ -170,7 +178,8 @@ std::string last_lines(const std::filesystem::path& file, int lines) {
   for (std::string line; std::getline(in, line);)
     if (!line.empty()) all.push_back(line);
   std::string text;
-  for (size_t i = all.size() > static_cast<size_t>(lines) ? all.size() - lines : 0; i < all.size(); ++i)
+  for (size_t i = all.size() > static_cast<size_t>(lines) ? all.size() - lines : 0; i < all.size();
+       ++i)
     text += (text.empty() ? "" : " | ") + all[i];
   if (text.size() > 400) text = text.substr(0, 400) + "...";
   return text;
@@ -183,7 +192,8 @@ std::optional<std::filesystem::path> find_program(const std::string& name) {
   size_t start = 0;
   while (start <= dirs.size()) {
     const size_t end = dirs.find(':', start);
-    const std::string dir = dirs.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    const std::string dir =
+        dirs.substr(start, end == std::string::npos ? std::string::npos : end - start);
     const std::filesystem::path candidate = std::filesystem::path(dir.empty() ? "." : dir) / name;
     if (access(candidate.c_str(), X_OK) == 0) return candidate;
     if (end == std::string::npos) break;

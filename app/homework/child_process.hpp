@@ -6,11 +6,12 @@
 // When the child dies, how it died (a signal, an exit status) is said in words.
 #pragma once
 
+#include <sys/types.h>
+
 #include <chrono>
 #include <filesystem>
 #include <optional>
 #include <string>
-#include <sys/types.h>
 #include <vector>
 
 namespace springlab::app {

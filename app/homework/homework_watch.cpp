@@ -43,13 +43,17 @@ HomeworkWatch::HomeworkWatch(std::filesystem::path file) : file_(std::move(file)
   status_.file = file_.filename().string();
 }
 
-HomeworkWatch::~HomeworkWatch() { worker_.join(); }
+HomeworkWatch::~HomeworkWatch() {
+  worker_.join();
+}
 
 void HomeworkWatch::use(std::unique_ptr<Built> built) {
   current_ = std::move(built);
-  const std::filesystem::path runner = current_->build->runner(), folder = current_->build->folder();
-  lanes_.set(current_->report, current_->seconds,
-             [runner, folder] { return std::make_shared<RopeProcess>(runner, folder, kLaneLimit); });
+  const std::filesystem::path runner = current_->build->runner(),
+                              folder = current_->build->folder();
+  lanes_.set(current_->report, current_->seconds, [runner, folder] {
+    return std::make_shared<RopeProcess>(runner, folder, kLaneLimit);
+  });
 }
 
 void HomeworkWatch::poll(Session& session) {
@@ -89,8 +93,10 @@ void HomeworkWatch::poll(Session& session) {
       error = e.what();
     }
     std::lock_guard<std::mutex> lock(mutex_);
-    if (built) fresh_ = std::move(built);
-    else failed_ = error;
+    if (built)
+      fresh_ = std::move(built);
+    else
+      failed_ = error;
     building_ = false;
   });
 }

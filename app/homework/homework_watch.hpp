@@ -47,8 +47,8 @@ class HomeworkWatch {
 
   Worker worker_;
   std::mutex mutex_;
-  std::unique_ptr<Built> fresh_;          // a finished build, waiting to be installed
-  std::optional<std::string> failed_;     // or a finished build's error
+  std::unique_ptr<Built> fresh_;       // a finished build, waiting to be installed
+  std::optional<std::string> failed_;  // or a finished build's error
   std::atomic<bool> building_{false};
   std::chrono::steady_clock::time_point next_look_{};
 };

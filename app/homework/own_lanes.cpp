@@ -12,10 +12,15 @@ using namespace homework;
 namespace {
 
 std::string identified(const char* step, const Identified& found) {
-  if (found.constraints) return format_text(tr("%s: position Verlet with its springs held as constraints"), step);
-  if (found.method.empty()) return format_text(tr("%s: none of the textbook methods (the checker's report says why)"), step);
-  return format_text("%s: %s, %s", step, tr(method_info(*find_method(found.method)).label),
-                     damping_text(found.damping, step == std::string("simulateEuler") ? Step::Euler : Step::Verlet).c_str());
+  if (found.constraints)
+    return format_text(tr("%s: position Verlet with its springs held as constraints"), step);
+  if (found.method.empty())
+    return format_text(tr("%s: none of the textbook methods (the checker's report says why)"),
+                       step);
+  return format_text(
+      "%s: %s, %s", step, tr(method_info(*find_method(found.method)).label),
+      damping_text(found.damping, step == std::string("simulateEuler") ? Step::Euler : Step::Verlet)
+          .c_str());
 }
 
 // The row beside a lane of one's own, with the student's damping: an Euler row takes the drag and
@@ -31,8 +36,9 @@ BesideRow beside_row(Method like, Step step, const Identified& found, double nod
 }
 
 std::string row_words(const BesideRow& row) {
-  return format_text(tr("beside it springlab's %s with drag %s N s/m, k_d %s N s/m, d = %s"), method_info(row.method).name,
-                     format_text("%.3g", *row.drag).c_str(), format_text("%.3g", *row.kd).c_str(),
+  return format_text(tr("beside it springlab's %s with drag %s N s/m, k_d %s N s/m, d = %s"),
+                     method_info(row.method).name, format_text("%.3g", *row.drag).c_str(),
+                     format_text("%.3g", *row.kd).c_str(),
                      format_text("%.3g", *row.verlet_damping).c_str());
 }
 
@@ -48,8 +54,10 @@ void HomeworkLanes::set(Report report, double seconds, MakeCode make) {
 void HomeworkLanes::poll(Session& session, ui::HomeworkStatus& status) {
   if (!make_ || installed_in_ == session.serial()) return;
   installed_in_ = session.serial();
-  if (is_one_rope(session.scene().model)) install(session, status);
-  else status.lines = {tr("open a rope scene to see your rope's lanes")};
+  if (is_one_rope(session.scene().model))
+    install(session, status);
+  else
+    status.lines = {tr("open a rope scene to see your rope's lanes")};
 }
 
 void HomeworkLanes::install(Session& session, ui::HomeworkStatus& status) {
@@ -57,10 +65,11 @@ void HomeworkLanes::install(Session& session, ui::HomeworkStatus& status) {
   std::vector<BesideRow> beside;
   const Report& r = report_;
   status.lines.clear();
-  status.lines.push_back(format_text(tr("built and checked in %.1f s: %d checks passed, %d failed"), seconds_,
-                                     r.passed(), r.failed()));
-  for (const auto& [step, found, label] : {std::tuple{Step::Euler, r.euler, tr("Your simulateEuler")},
-                                           std::tuple{Step::Verlet, r.verlet, tr("Your simulateVerlet")}}) {
+  status.lines.push_back(format_text(tr("built and checked in %.1f s: %d checks passed, %d failed"),
+                                     seconds_, r.passed(), r.failed()));
+  for (const auto& [step, found, label] :
+       {std::tuple{Step::Euler, r.euler, tr("Your simulateEuler")},
+        std::tuple{Step::Verlet, r.verlet, tr("Your simulateVerlet")}}) {
     // The row it was found to be (its theory is the lane's), or, found none, the exercise's own.
     Method like = step == Step::Euler ? Method::SymplecticEuler : Method::Verlet;
     const bool known = !found.method.empty();
@@ -71,16 +80,19 @@ void HomeworkLanes::install(Session& session, ui::HomeworkStatus& status) {
     status.lines.push_back(identified(step_name(step), found));
     status.lines.push_back("  " + row_words(beside.back()));
     if (step == Step::Euler && found.damping.relative != 0.0)
-      status.lines.push_back(tr("  (its k_d is your damping along the relative velocity, run along the spring: yours "
-                                "also damps the rope's bending, the row's does not)"));
+      status.lines.push_back(
+          tr("  (its k_d is your damping along the relative velocity, run along the spring: yours "
+             "also damps the rope's bending, the row's does not)"));
     if (step == Step::Verlet && found.damping.verlet_whole)
-      status.lines.push_back(tr("  (the row takes d on (x - x_last); yours takes it on the whole displacement, a "
-                                "difference of d a h^2 a step)"));
+      status.lines.push_back(
+          tr("  (the row takes d on (x - x_last); yours takes it on the whole displacement, a "
+             "difference of d a h^2 a step)"));
   }
   session.set_own_lanes(own, beside);
   if (r.constructor_wrong)
-    status.lines.push_back(tr("your constructor is not right yet (the checker's report says how): your steps run on "
-                              "springlab's rope"));
+    status.lines.push_back(
+        tr("your constructor is not right yet (the checker's report says how): your steps run on "
+           "springlab's rope"));
 }
 
 }  // namespace springlab::app

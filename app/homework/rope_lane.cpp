@@ -14,22 +14,24 @@ using namespace homework;
 namespace {
 
 // Steps are asked for a batch at a time, ahead of the lane: a round trip to the runner costs more
-// than a rope's step (and a call into the page's JavaScript some), and while nothing from outside changes the lane's state (a reset, a drag,
-// a slider, a new h) the steps it will ask for next are those the runner would make anyway. A
-// batch that fails is taken again a step at a time, so that a crash is told at its own step.
+// than a rope's step (and a call into the page's JavaScript some), and while nothing from outside
+// changes the lane's state (a reset, a drag, a slider, a new h) the steps it will ask for next are
+// those the runner would make anyway. A batch that fails is taken again a step at a time, so that a
+// crash is told at its own step.
 constexpr int kAhead = 32;
 
 struct StudentLane {
   std::shared_ptr<RopeCode> code;
   Step step;
-  bool springlab_rope = false;  // built through build_exercise (the code's constructor is not right)
+  bool springlab_rope =
+      false;  // built through build_exercise (the code's constructor is not right)
   std::optional<RopeRequest> built;  // the rope the runner holds
-  State made;                        // the state the lane was last given (the runner's, when synced)
+  State made;  // the state the lane was last given (the runner's, when synced)
   bool synced = false;
   std::deque<RopeState> ahead;  // the runner's next states, from `made`
   double ahead_h = 0.0;
   Vec2 ahead_g = Vec2::Zero();
-  bool one_at_a_time = false;   // after a failed batch
+  bool one_at_a_time = false;  // after a failed batch
 };
 
 bool same(const RopeRequest& a, const RopeRequest& b) {
@@ -41,13 +43,16 @@ bool same(const RopeRequest& a, const RopeRequest& b) {
 RopeRequest as_rope(const Model& model, const State& in) {
   const int n = model.particle_count();
   auto refuse = [](const char* why) {
-    throw StepFailure(std::string(tr("your rope code steps a rope: ")) + tr(why) + tr(" (open the rope scene)"));
+    throw StepFailure(std::string(tr("your rope code steps a rope: ")) + tr(why) +
+                      tr(" (open the rope scene)"));
   };
   if (n < 2 || model.spring_count() != n - 1) refuse(N_("this scene is not one rope"));
   std::vector<int> joined(n, 0);
   for (int s = 0; s < model.spring_count(); ++s) {
-    if (model.spring_b[s] != model.spring_a[s] + 1) refuse(N_("a spring joins masses that are not neighbours"));
-    if (model.ks(s) != model.ks(0) || model.rest_length[s] != model.rest_length[0]) refuse(N_("its springs differ"));
+    if (model.spring_b[s] != model.spring_a[s] + 1)
+      refuse(N_("a spring joins masses that are not neighbours"));
+    if (model.ks(s) != model.ks(0) || model.rest_length[s] != model.rest_length[0])
+      refuse(N_("its springs differ"));
     ++joined[model.spring_a[s]];
   }
   for (int i = 0; i + 1 < n; ++i)
@@ -69,10 +74,11 @@ RopeRequest as_rope(const Model& model, const State& in) {
   return r;
 }
 
-RopeState next_state(StudentLane& lane, const Model& model, const State& in, double h, const Vec2& gravity) {
+RopeState next_state(StudentLane& lane, const Model& model, const State& in, double h,
+                     const Vec2& gravity) {
   const int n = in.particle_count();
-  const bool continues =
-      lane.synced && lane.made.x.rows() == in.x.rows() && lane.made.x == in.x && lane.made.v == in.v;
+  const bool continues = lane.synced && lane.made.x.rows() == in.x.rows() && lane.made.x == in.x &&
+                         lane.made.v == in.v;
   if (continues && !lane.ahead.empty() && lane.ahead_h == h && lane.ahead_g == gravity) {
     RopeState next = std::move(lane.ahead.front());
     lane.ahead.pop_front();
@@ -88,7 +94,8 @@ RopeState next_state(StudentLane& lane, const Model& model, const State& in, dou
     }
     lane.code->set_state(s);
   }
-  std::vector<RopeState> run = lane.code->simulate(lane.step, h, gravity, lane.one_at_a_time ? 1 : kAhead);
+  std::vector<RopeState> run =
+      lane.code->simulate(lane.step, h, gravity, lane.one_at_a_time ? 1 : kAhead);
   lane.ahead.assign(std::make_move_iterator(run.begin() + 1), std::make_move_iterator(run.end()));
   lane.ahead_h = h;
   lane.ahead_g = gravity;
@@ -103,8 +110,10 @@ void step_lane(StudentLane& lane, const Model& model, const State& in, State& ou
   for (bool retried = false;; retried = true) {
     try {
       if (!lane.built || !same(*lane.built, request)) {
-        if (lane.springlab_rope) lane.code->build_exercise(request);
-        else lane.code->build(request);
+        if (lane.springlab_rope)
+          lane.code->build_exercise(request);
+        else
+          lane.code->build(request);
         lane.built = request;
         lane.synced = false;
         lane.ahead.clear();
@@ -119,14 +128,17 @@ void step_lane(StudentLane& lane, const Model& model, const State& in, State& ou
       lane.one_at_a_time = true;  // once more, a step at a time: the failure at its own step
     }
   }
-  if (static_cast<int>(next.size()) != n) throw StepFailure(tr("the rope code changed its number of masses"));
+  if (static_cast<int>(next.size()) != n)
+    throw StepFailure(tr("the rope code changed its number of masses"));
   out.x = in.x;
   out.v = in.v;
   bool held_moved = false;
   for (int i = 0; i < n; ++i) {
     out.x.row(i).head<2>() = next[i].x.transpose();
     out.v.row(i).head<2>() =
-        (lane.step == Step::Verlet ? Vec2((next[i].x - in.x.row(i).head<2>().transpose()) / h) : next[i].v).transpose();
+        (lane.step == Step::Verlet ? Vec2((next[i].x - in.x.row(i).head<2>().transpose()) / h)
+                                   : next[i].v)
+            .transpose();
     // A held particle moves with its prescribed velocity, as every row moves it: then the runner's
     // rope is no longer the lane's.
     if (model.pinned(i) && in.v.row(i).squaredNorm() > 0.0) {

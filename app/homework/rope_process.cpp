@@ -42,7 +42,8 @@ MassState parse_state(std::istringstream& in) {
 
 }  // namespace
 
-RopeProcess::RopeProcess(std::filesystem::path runner, std::filesystem::path folder, std::chrono::milliseconds limit)
+RopeProcess::RopeProcess(std::filesystem::path runner, std::filesystem::path folder,
+                         std::chrono::milliseconds limit)
     : runner_(std::move(runner)), folder_(std::move(folder)), limit_(limit) {
   // Its own file for what the student's code prints: a check and the app's lanes run side by side.
   static std::atomic<int> made{0};
@@ -50,16 +51,21 @@ RopeProcess::RopeProcess(std::filesystem::path runner, std::filesystem::path fol
 }
 
 ChildProcess& RopeProcess::child() {
-  if (!child_) child_ = std::make_unique<ChildProcess>(std::vector<std::string>{runner_.string()}, output_);
+  if (!child_)
+    child_ = std::make_unique<ChildProcess>(std::vector<std::string>{runner_.string()}, output_);
   return *child_;
 }
 
-void RopeProcess::failed(const std::string& doing, const std::string& error, const std::string& fault) {
+void RopeProcess::failed(const std::string& doing, const std::string& error,
+                         const std::string& fault) {
   std::string what;
-  if (!fault.empty()) what = doing + " " + fault;
-  else if (!error.empty()) what = doing + " threw an exception: " + error;
+  if (!fault.empty())
+    what = doing + " " + fault;
+  else if (!error.empty())
+    what = doing + " threw an exception: " + error;
   else if (child_ && child_->timed_out())
-    what = doing + " did not return within " + step_text_seconds(limit_) + " and was stopped (an endless loop?)";
+    what = doing + " did not return within " + step_text_seconds(limit_) +
+           " and was stopped (an endless loop?)";
   else {
     const std::string how = child_ ? child_->wait() : "";
     what = doing + (how.empty() ? " ended the program" : " " + how);
@@ -70,7 +76,8 @@ void RopeProcess::failed(const std::string& doing, const std::string& error, con
   throw CodeFailure(what);
 }
 
-std::string RopeProcess::next(const std::string& doing, std::chrono::steady_clock::time_point deadline) {
+std::string RopeProcess::next(const std::string& doing,
+                              std::chrono::steady_clock::time_point deadline) {
   std::optional<std::string> line = child_->read_line(deadline);
   if (!line) failed(doing);
   if (line->rfind("error ", 0) == 0) failed(doing, line->substr(6));
@@ -79,16 +86,19 @@ std::string RopeProcess::next(const std::string& doing, std::chrono::steady_cloc
 }
 
 BuiltRope RopeProcess::build(const RopeRequest& r) {
-  return construct("build", "the constructor, Rope(..., " + std::to_string(r.nodes) + " nodes, ...),", r);
+  return construct("build",
+                   "the constructor, Rope(..., " + std::to_string(r.nodes) + " nodes, ...),", r);
 }
 
 BuiltRope RopeProcess::build_exercise(const RopeRequest& r) {
   return construct("make", "building springlab's rope through Rope(masses, springs)", r);
 }
 
-BuiltRope RopeProcess::construct(const std::string& verb, const std::string& doing, const RopeRequest& r) {
-  std::string command = verb + " " + hex(r.start.x()) + " " + hex(r.start.y()) + " " + hex(r.end.x()) + " " + hex(r.end.y()) +
-                        " " + std::to_string(r.nodes) + " " + hex(r.node_mass) + " " + hex(r.k) + " " +
+BuiltRope RopeProcess::construct(const std::string& verb, const std::string& doing,
+                                 const RopeRequest& r) {
+  std::string command = verb + " " + hex(r.start.x()) + " " + hex(r.start.y()) + " " +
+                        hex(r.end.x()) + " " + hex(r.end.y()) + " " + std::to_string(r.nodes) +
+                        " " + hex(r.node_mass) + " " + hex(r.k) + " " +
                         std::to_string(r.pinned.size());
   for (int p : r.pinned) command += " " + std::to_string(p);
   if (!child().write_line(command)) failed(doing);
@@ -127,23 +137,26 @@ BuiltRope RopeProcess::construct(const std::string& verb, const std::string& doi
 void RopeProcess::set_state(const RopeState& state) {
   std::string command = "set " + std::to_string(state.size());
   for (const MassState& m : state)
-    command += "\n" + hex(m.x.x()) + " " + hex(m.x.y()) + " " + hex(m.x_last.x()) + " " + hex(m.x_last.y()) + " " +
-               hex(m.v.x()) + " " + hex(m.v.y()) + " " + hex(m.f.x()) + " " + hex(m.f.y());
+    command += "\n" + hex(m.x.x()) + " " + hex(m.x.y()) + " " + hex(m.x_last.x()) + " " +
+               hex(m.x_last.y()) + " " + hex(m.v.x()) + " " + hex(m.v.y()) + " " + hex(m.f.x()) +
+               " " + hex(m.f.y());
   if (!child().write_line(command)) failed("setting the masses' state");
   next("setting the masses' state", std::chrono::steady_clock::now() + limit_);
 }
 
 std::vector<RopeState> RopeProcess::simulate(Step step, double dt, const Vec2& gravity, int steps) {
   const std::string name = step_name(step);
-  if (!child().write_line("sim " + std::string(step == Step::Euler ? "euler " : "verlet ") + hex(dt) + " " +
-                          hex(gravity.x()) + " " + hex(gravity.y()) + " " + std::to_string(steps)))
+  if (!child().write_line("sim " + std::string(step == Step::Euler ? "euler " : "verlet ") +
+                          hex(dt) + " " + hex(gravity.x()) + " " + hex(gravity.y()) + " " +
+                          std::to_string(steps)))
     failed(name);
   // Each step has its own share of the limit, beyond a fixed allowance.
-  const auto deadline = std::chrono::steady_clock::now() + limit_ + std::chrono::microseconds(200) * steps;
+  const auto deadline =
+      std::chrono::steady_clock::now() + limit_ + std::chrono::microseconds(200) * steps;
   std::vector<RopeState> states;
   for (int n = 1; n <= steps; ++n) {
-    const std::string doing = name + " (step " + std::to_string(n) + " of " + std::to_string(steps) + ", h = " +
-                              step_text(dt) + ")";
+    const std::string doing = name + " (step " + std::to_string(n) + " of " +
+                              std::to_string(steps) + ", h = " + step_text(dt) + ")";
     next(doing, deadline);  // state n
     RopeState s;
     for (int i = 0; i < masses_; ++i) {

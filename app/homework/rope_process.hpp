@@ -23,15 +23,18 @@ class RopeProcess : public homework::RopeCode {
   homework::BuiltRope build(const homework::RopeRequest& request) override;
   homework::BuiltRope build_exercise(const homework::RopeRequest& request) override;
   void set_state(const homework::RopeState& state) override;
-  std::vector<homework::RopeState> simulate(homework::Step step, double dt, const homework::Vec2& gravity,
-                                            int steps) override;
+  std::vector<homework::RopeState> simulate(homework::Step step, double dt,
+                                            const homework::Vec2& gravity, int steps) override;
 
  private:
   ChildProcess& child();
-  homework::BuiltRope construct(const std::string& verb, const std::string& doing, const homework::RopeRequest& r);
+  homework::BuiltRope construct(const std::string& verb, const std::string& doing,
+                                const homework::RopeRequest& r);
   std::string next(const std::string& doing, std::chrono::steady_clock::time_point deadline);
-  /// `error`: the student's exception; `fault`: what the runner could not read of what the code built.
-  [[noreturn]] void failed(const std::string& doing, const std::string& error = {}, const std::string& fault = {});
+  /// `error`: the student's exception; `fault`: what the runner could not read of what the code
+  /// built.
+  [[noreturn]] void failed(const std::string& doing, const std::string& error = {},
+                           const std::string& fault = {});
 
   std::filesystem::path runner_, folder_, output_;
   std::chrono::milliseconds limit_;

@@ -21,9 +21,13 @@ extern char** environ;
 
 namespace springlab::app {
 
-FrameWriter::~FrameWriter() { stop(); }
+FrameWriter::~FrameWriter() {
+  stop();
+}
 
-void FrameWriter::start() { thread_.start([this] { run(); }); }
+void FrameWriter::start() {
+  thread_.start([this] { run(); });
+}
 
 void FrameWriter::stop() {
   {
@@ -106,8 +110,9 @@ class Mp4Video final : public FrameWriter {
       : temp_(file, "video"), width_(width), height_(height) {
     const std::string ffmpeg = find_executable("ffmpeg");
     if (ffmpeg.empty())
-      throw std::runtime_error("--video needs ffmpeg, which is not installed: apt-get install ffmpeg "
-                               "(scripts/setup.sh installs it), or write PNG frames with --out DIR");
+      throw std::runtime_error(
+          "--video needs ffmpeg, which is not installed: apt-get install ffmpeg "
+          "(scripts/setup.sh installs it), or write PNG frames with --out DIR");
     int fds[2];
     if (::pipe(fds) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
     std::ostringstream size, rate;
@@ -115,10 +120,12 @@ class Mp4Video final : public FrameWriter {
     rate.precision(17);
     rate << fps;
     const std::string sz = size.str(), fr = rate.str(), out = temp_.path().string();
-    const char* argv[] = {ffmpeg.c_str(), "-nostdin", "-loglevel", "error", "-y", "-f", "rawvideo",
-                          "-pix_fmt", "rgba", "-s", sz.c_str(), "-r", fr.c_str(), "-i", "-",
-                          "-c:v", "libx264", "-preset", "veryfast", "-pix_fmt", "yuv420p",
-                          "-movflags", "+faststart", "-f", "mp4", out.c_str(), nullptr};
+    const char* argv[] = {ffmpeg.c_str(), "-nostdin",  "-loglevel",  "error",    "-y",
+                          "-f",           "rawvideo",  "-pix_fmt",   "rgba",     "-s",
+                          sz.c_str(),     "-r",        fr.c_str(),   "-i",       "-",
+                          "-c:v",         "libx264",   "-preset",    "veryfast", "-pix_fmt",
+                          "yuv420p",      "-movflags", "+faststart", "-f",       "mp4",
+                          out.c_str(),    nullptr};
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_adddup2(&actions, fds[0], 0);
@@ -126,7 +133,8 @@ class Mp4Video final : public FrameWriter {
     posix_spawnattr_t attributes;
     posix_spawnattr_init(&attributes);
     unblock_interrupts_in_child(attributes);
-    const int rc = posix_spawn(&pid_, ffmpeg.c_str(), &actions, &attributes, const_cast<char**>(argv), environ);
+    const int rc = posix_spawn(&pid_, ffmpeg.c_str(), &actions, &attributes,
+                               const_cast<char**>(argv), environ);
     posix_spawnattr_destroy(&attributes);
     posix_spawn_file_actions_destroy(&actions);
     ::close(fds[0]);
@@ -151,15 +159,16 @@ class Mp4Video final : public FrameWriter {
   }
 
  protected:
-  // The rows from the top, as ffmpeg takes them: one writev of up to kRows rows at a time, whichever
-  // way the image holds them.
+  // The rows from the top, as ffmpeg takes them: one writev of up to kRows rows at a time,
+  // whichever way the image holds them.
   void write(const Image& frame, int) override {
     constexpr int kRows = 512;  // below IOV_MAX (1024)
     const std::size_t row = static_cast<std::size_t>(frame.width) * 4;
     iovec rows[kRows];
     for (int top = 0; top < frame.height; top += kRows) {
       const int count = std::min(kRows, frame.height - top);
-      for (int y = 0; y < count; ++y) rows[y] = {const_cast<std::uint8_t*>(frame.row(top + y)), row};
+      for (int y = 0; y < count; ++y)
+        rows[y] = {const_cast<std::uint8_t*>(frame.row(top + y)), row};
       send(rows, count);
     }
   }
@@ -169,8 +178,8 @@ class Mp4Video final : public FrameWriter {
       ssize_t n = ::writev(pipe_, rows, count);
       if (n < 0) {
         if (errno == EINTR) continue;
-        throw std::runtime_error("ffmpeg stopped taking frames (" + std::string(std::strerror(errno)) +
-                                 "): is the disk full?");
+        throw std::runtime_error("ffmpeg stopped taking frames (" +
+                                 std::string(std::strerror(errno)) + "): is the disk full?");
       }
       // Past what was written: whole rows, then part of one.
       while (count > 0 && static_cast<std::size_t>(n) >= rows->iov_len) {
@@ -210,7 +219,8 @@ std::unique_ptr<FrameWriter> png_sequence(const std::filesystem::path& dir) {
   return std::make_unique<PngSequence>(dir);
 }
 
-std::unique_ptr<FrameWriter> mp4_video(const std::filesystem::path& file, int width, int height, double fps) {
+std::unique_ptr<FrameWriter> mp4_video(const std::filesystem::path& file, int width, int height,
+                                       double fps) {
   return std::make_unique<Mp4Video>(file, width, height, fps);
 }
 

@@ -51,7 +51,8 @@ std::unique_ptr<FrameWriter> png_sequence(const std::filesystem::path& dir);
 // An H.264 mp4 (libx264, yuv420p) through an ffmpeg process fed raw RGBA on a pipe; written under
 // a temporary name and renamed when ffmpeg has finished. Throws std::runtime_error at once, saying
 // how to install it, when ffmpeg is missing; width and height must be even.
-std::unique_ptr<FrameWriter> mp4_video(const std::filesystem::path& file, int width, int height, double fps);
+std::unique_ptr<FrameWriter> mp4_video(const std::filesystem::path& file, int width, int height,
+                                       double fps);
 
 // The full path of an executable on PATH, or "" when none.
 std::string find_executable(const std::string& name);

@@ -1,4 +1,5 @@
-// PNG files with libpng: fast (zlib level 1) for frame dumps, as docs/platform.md ("Images and video") measured.
+// PNG files with libpng: fast (zlib level 1) for frame dumps, as docs/platform.md ("Images and
+// video") measured.
 #pragma once
 
 #include <cstdint>

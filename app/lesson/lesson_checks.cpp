@@ -1,15 +1,14 @@
 #include "lesson/lesson_checks.hpp"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
-#include <Eigen/Dense>
-
+#include "chart/compare_charts.hpp"
 #include "lesson/lesson_library.hpp"
 #include "session/ik_kind.hpp"
-#include "chart/compare_charts.hpp"
 #include "springlab/energy.hpp"
 #include "springlab/iterative_cost.hpp"
 #include "springlab/momentum.hpp"
@@ -34,10 +33,10 @@ struct Record {
   std::vector<double> energy, steps, adaptive_step, rejected, x_error;
   std::vector<Momentum> momentum;  // of the free particles (momentum.hpp), with its scales
   std::vector<std::int64_t> born;  // particles born so far (emitters)
-  std::vector<double> internal;  // kinetic energy besides the rigid motion's
-  std::vector<double> time;      // simulated
-  int diverged_at = -1;          // the frame that first showed it diverged (stopped)
-  int troubled_at = -1;          // the frame that first showed it diverged or went unstable
+  std::vector<double> internal;    // kinetic energy besides the rigid motion's
+  std::vector<double> time;        // simulated
+  int diverged_at = -1;            // the frame that first showed it diverged (stopped)
+  int troubled_at = -1;            // the frame that first showed it diverged or went unstable
   double scale = 1.0;
 };
 
@@ -51,7 +50,9 @@ void record(const Lane& lane, int frame, Record& r) {
   r.adaptive_step.push_back(sim.adaptive_step());
   r.rejected.push_back(static_cast<double>(sim.counters().rejected));
   r.time.push_back(s.t);
-  r.x_error.push_back(lane.history.exact_x.size() > 0 ? std::abs(lane.history.x.back() - lane.history.exact_x.back()) : 0.0);
+  r.x_error.push_back(lane.history.exact_x.size() > 0
+                          ? std::abs(lane.history.x.back() - lane.history.exact_x.back())
+                          : 0.0);
   // Momentum and angular momentum (about the origin) of the free particles; the kinetic energy
   // of their rigid motion: the centre of mass's, and the spin's, L_c^T I^-1 L_c / 2 with L_c and
   // I about the centre of mass (a pseudo-inverse: a straight rope has no inertia about its axis).
@@ -81,7 +82,8 @@ void record(const Lane& lane, int frame, Record& r) {
     // complete orthogonal decomposition did, and GCC 12 warned of its dynamic blocks).
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(inertia);
     const Vec3 along = eig.eigenvectors().transpose() * lc;
-    const double floor = 3.0 * std::numeric_limits<double>::epsilon() * eig.eigenvalues().maxCoeff();
+    const double floor =
+        3.0 * std::numeric_limits<double>::epsilon() * eig.eigenvalues().maxCoeff();
     double spin = 0.0;
     for (int k = 0; k < 3; ++k)
       if (eig.eigenvalues()[k] > floor) spin += along[k] * along[k] / eig.eigenvalues()[k];
@@ -122,7 +124,8 @@ ClaimResult orders(const LessonClaim& claim, const Session& session) {
   SweepSettings settings = panel.settings(session);
   settings.workers = 1;  // the same result whatever the machine (only the seconds differ)
   settings.stability = false;
-  const SweepResult result = run_sweep(session.primary().sim.model(), session.scene().state, settings);
+  const SweepResult result =
+      run_sweep(session.primary().sim.model(), session.scene().state, settings);
   for (const MethodSummary& m : result.methods) {
     const std::string name = method_info(m.method).name;
     const double expected = claim.orders.at(name);
@@ -156,13 +159,15 @@ ClaimResult orders(const LessonClaim& claim, const Session& session) {
     double error = line.back().second;
     for (std::size_t k = 1; k < line.size(); ++k)
       if (c <= line[k].first) {
-        const double s = (c - line[k - 1].first) / std::max(1e-300, line[k].first - line[k - 1].first);
+        const double s =
+            (c - line[k - 1].first) / std::max(1e-300, line[k].first - line[k - 1].first);
         error = line[k - 1].second + s * (line[k].second - line[k - 1].second);
         break;
       }
     if (error < best_error) best_error = error, best = method_info(m.method).name;
   }
-  out.measured += "; least error at the work of " + fmt("%.3g", cost) + " force evaluations: " + best + fmt(" (%.2g m)", std::exp(best_error));
+  out.measured += "; least error at the work of " + fmt("%.3g", cost) +
+                  " force evaluations: " + best + fmt(" (%.2g m)", std::exp(best_error));
   if (best != claim.best) out.passed = false;
   return out;
 }
@@ -206,24 +211,27 @@ void judge_energy_and_motion(const Window& w, ClaimResult& out) {
     }
     case K::EnergyBounded: {
       double worst = 0.0;
-      for (int k = i0; k <= sane_end; ++k) worst = std::max(worst, std::abs(r.energy[k] - r.energy[i0]) / scale);
+      for (int k = i0; k <= sane_end; ++k)
+        worst = std::max(worst, std::abs(r.energy[k] - r.energy[i0]) / scale);
       out.measured = fmt("within %.3g of the energy scale", worst);
       out.passed = worst <= c.within && r.troubled_at < 0;
       break;
     }
     case K::Diverges:
-      out.measured = r.troubled_at < 0 ? "did not diverge"
-                                       : fmt(lane.sim.trouble()->unstable ? "went unstable at t = %.3g s"
-                                                                          : "diverged at t = %.3g s",
-                                             lane.sim.trouble()->t) +
-                                             fmt(" (seen in frame %.0f)", r.troubled_at);
+      out.measured = r.troubled_at < 0
+                         ? "did not diverge"
+                         : fmt(lane.sim.trouble()->unstable ? "went unstable at t = %.3g s"
+                                                            : "diverged at t = %.3g s",
+                               lane.sim.trouble()->t) +
+                               fmt(" (seen in frame %.0f)", r.troubled_at);
       out.passed = r.troubled_at >= 0 && r.troubled_at <= std::lround(*c.by * fps);
       break;
     case K::Holds:
-      out.measured = r.troubled_at < 0 ? fmt("held to t = %.3g s", r.time.back())
-                                       : fmt(lane.sim.trouble()->unstable ? "went unstable at t = %.3g s"
-                                                                          : "diverged at t = %.3g s",
-                                             lane.sim.trouble()->t);
+      out.measured = r.troubled_at < 0
+                         ? fmt("held to t = %.3g s", r.time.back())
+                         : fmt(lane.sim.trouble()->unstable ? "went unstable at t = %.3g s"
+                                                            : "diverged at t = %.3g s",
+                               lane.sim.trouble()->t);
       out.passed = r.troubled_at < 0;
       break;
     case K::FollowsExact: {
@@ -242,13 +250,16 @@ void judge_energy_and_motion(const Window& w, ClaimResult& out) {
     case K::StepsAdapt: {
       double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
       for (int k = std::max(i0, 1); k <= sane_end; ++k)
-        if (r.adaptive_step[k] > 0.0) lo = std::min(lo, r.adaptive_step[k]), hi = std::max(hi, r.adaptive_step[k]);
+        if (r.adaptive_step[k] > 0.0)
+          lo = std::min(lo, r.adaptive_step[k]), hi = std::max(hi, r.adaptive_step[k]);
       const double rejected = r.rejected[sane_end] - r.rejected[i0];
-      out.measured = fmt("%.0f tries rejected", rejected) + fmt(", step from %.3g", lo) + fmt(" to %.3g s", hi);
+      out.measured = fmt("%.0f tries rejected", rejected) + fmt(", step from %.3g", lo) +
+                     fmt(" to %.3g s", hi);
       out.passed = rejected > 0 && hi >= c.ratio * lo;
       break;
     }
-    default: break;
+    default:
+      break;
   }
 }
 
@@ -265,8 +276,8 @@ void judge_momentum_and_drag(const Window& w, ClaimResult& out) {
       const double p0 = from.linear.norm(), l0 = from.angular.norm();
       const double dp = (to.linear - from.linear).norm() / std::max(p0, 1e-300);
       const double dl = (to.angular - from.angular).norm() / std::max(l0, 1e-300);
-      out.measured = fmt("|P| = %.4g kg m/s", p0) + fmt(" changed by %.2g of it", dp) + fmt(", |L| = %.4g kg m^2/s", l0) +
-                     fmt(" by %.2g", dl);
+      out.measured = fmt("|P| = %.4g kg m/s", p0) + fmt(" changed by %.2g of it", dp) +
+                     fmt(", |L| = %.4g kg m^2/s", l0) + fmt(" by %.2g", dl);
       out.passed = p0 > 0.0 && dp <= c.within && l0 > 0.0 && dl <= c.within;
       break;
     }
@@ -276,9 +287,10 @@ void judge_momentum_and_drag(const Window& w, ClaimResult& out) {
       double most = 0.0;
       for (int k = i0; k <= sane_end; ++k)
         most = std::max(most, momentum_change(r.momentum[i0], r.momentum[k]).linear);
-      out.measured = fmt("P changed by %.2g of sum m|v|", most) +
-                     fmt(" (%.4g kg m/s)", r.momentum[i0].linear_scale) +
-                     (free_body(lane.sim.model()) ? "" : "; not a free body: an outside force acts");
+      out.measured =
+          fmt("P changed by %.2g of sum m|v|", most) +
+          fmt(" (%.4g kg m/s)", r.momentum[i0].linear_scale) +
+          (free_body(lane.sim.model()) ? "" : "; not a free body: an outside force acts");
       out.passed = free_body(lane.sim.model()) && r.momentum[i0].linear_scale > 0.0 &&
                    (c.kind == K::LinearMomentumKept ? most <= c.within : most > c.above);
       break;
@@ -290,8 +302,10 @@ void judge_momentum_and_drag(const Window& w, ClaimResult& out) {
       for (int i = 0; i < m.particle_count(); ++i)
         if (!m.pinned(i)) mass += m.mass[i], ++n;
       const double expected = std::exp(-m.drag * n * (r.time[sane_end] - r.time[i0]) / mass);
-      const double measured = r.momentum[sane_end].linear.norm() / std::max(r.momentum[i0].linear.norm(), 1e-300);
-      out.measured = fmt("speed ratio %.4f", measured) + fmt(" (exp(-k_drag n t / M) = %.4f)", expected);
+      const double measured =
+          r.momentum[sane_end].linear.norm() / std::max(r.momentum[i0].linear.norm(), 1e-300);
+      out.measured =
+          fmt("speed ratio %.4f", measured) + fmt(" (exp(-k_drag n t / M) = %.4f)", expected);
       out.passed = std::abs(measured / expected - 1.0) <= c.within;
       break;
     }
@@ -300,17 +314,20 @@ void judge_momentum_and_drag(const Window& w, ClaimResult& out) {
       const int second = static_cast<int>(std::lround(fps));
       const auto peak = [&](int a, int b) {
         double most = 0.0;
-        for (int k = std::max(a, i0); k <= std::min(b, sane_end); ++k) most = std::max(most, r.internal[k]);
+        for (int k = std::max(a, i0); k <= std::min(b, sane_end); ++k)
+          most = std::max(most, r.internal[k]);
         return most;
       };
       const double first = peak(i0, i0 + second), last = peak(sane_end - second, sane_end);
       const double ratio = last / std::max(first, 1e-300);
-      out.measured = fmt("the wiggles' kinetic energy peaks at %.4g J", first) + fmt(" in the first second, %.3g J", last) +
+      out.measured = fmt("the wiggles' kinetic energy peaks at %.4g J", first) +
+                     fmt(" in the first second, %.3g J", last) +
                      fmt(" in the last (%.3g of it)", ratio);
       out.passed = first > 0.0 && ratio <= c.below;
       break;
     }
-    default: break;
+    default:
+      break;
   }
 }
 
@@ -326,23 +343,26 @@ void judge_solvers_and_scenes(const Window& w, ClaimResult& out) {
     case K::ActsAs: {
       const Model& model = lane.sim.model();
       if (!loaded_balance(model)) {  // (iterative_cost.hpp: no load, no stiffness to act as)
-        out.measured = "no load carried to pins (free, or resting on a collider): no effective stiffness";
+        out.measured =
+            "no load carried to pins (free, or resting on a collider): no effective stiffness";
         break;
       }
       if (!at_rest(model, lane.sim.state(), lane.sim.energy_scale())) {
-        out.measured = fmt("not at rest at the end (kinetic energy %.3g J)", kinetic_energy(model, lane.sim.state()));
+        out.measured = fmt("not at rest at the end (kinetic energy %.3g J)",
+                           kinetic_energy(model, lane.sim.state()));
         break;
       }
       const Softness s = softness(model, lane.sim.state());
-      out.measured = fmt("stretch %.3g m RMS", s.stretch) + fmt(" against the spring model's %.3g m", s.model_stretch) +
+      out.measured = fmt("stretch %.3g m RMS", s.stretch) +
+                     fmt(" against the spring model's %.3g m", s.model_stretch) +
                      fmt(": k_s x%.3g", s.ratio());
       out.passed = (c.below == 0.0 || s.ratio() <= c.below) && s.ratio() >= c.above;
       break;
     }
     case K::SolverConverges: {
       // From where the lane is at the claim's end: one step at its h, 8 and 64 iterations.
-      const SolverErrorStudy study = solver_error(lane.sim.model(), lane.sim.state(), lane.sim.h(), 64,
-                                                  lane.sim.settings().step);
+      const SolverErrorStudy study = solver_error(lane.sim.model(), lane.sim.state(), lane.sim.h(),
+                                                  64, lane.sim.settings().step);
       for (const SolverErrorCurve& curve : study.curves) {
         if (curve.method != lane.sim.settings().method) continue;
         const double e8 = curve.error[3], e64 = curve.error[6];
@@ -371,14 +391,17 @@ void judge_solvers_and_scenes(const Window& w, ClaimResult& out) {
       for (std::size_t a = 0; a < lanes.size(); ++a) {
         converged = converged && ik_lane(lanes[a]).status.converged;
         for (std::size_t b = a + 1; b < lanes.size(); ++b) {
-          const auto pa = ik_lane(lanes[a]).chain.positions(), pb = ik_lane(lanes[b]).chain.positions();
+          const auto pa = ik_lane(lanes[a]).chain.positions(),
+                     pb = ik_lane(lanes[b]).chain.positions();
           double apart = 0.0;
-          for (std::size_t j = 0; j < pa.size(); ++j) apart = std::max(apart, (pa[j] - pb[j]).norm());
+          for (std::size_t j = 0; j < pa.size(); ++j)
+            apart = std::max(apart, (pa[j] - pb[j]).norm());
           closest = std::min(closest, apart);
         }
       }
-      out.measured = std::string(converged ? "all reached the target" : "not all reached the target") +
-                     fmt(", the closest two poses %.3g m apart", closest);
+      out.measured =
+          std::string(converged ? "all reached the target" : "not all reached the target") +
+          fmt(", the closest two poses %.3g m apart", closest);
       out.passed = converged && closest >= c.min;
       break;
     }
@@ -392,17 +415,20 @@ void judge_solvers_and_scenes(const Window& w, ClaimResult& out) {
         bursts += static_cast<int>(births / c.count);
         if (births % c.count > 1) ++odd;
       }
-      out.measured = std::to_string(bursts) + " bursts" +
-                     (odd ? ", " + std::to_string(odd) + " frames with births not a whole number of bursts" : "");
+      out.measured =
+          std::to_string(bursts) + " bursts" +
+          (odd ? ", " + std::to_string(odd) + " frames with births not a whole number of bursts"
+               : "");
       out.passed = bursts > 0 && odd == 0;
       break;
     }
-    default: break;
+    default:
+      break;
   }
 }
 
-ClaimResult judge(const LessonClaim& c, const Session& session, const std::vector<Record>& records, double fps,
-                  int frames) {
+ClaimResult judge(const LessonClaim& c, const Session& session, const std::vector<Record>& records,
+                  double fps, int frames) {
   ClaimResult out{c, false, ""};
   const Lane& lane = lane_of(session, c.lane);
   const Record& r = records[&lane - session.lanes().data()];
@@ -418,7 +444,6 @@ ClaimResult judge(const LessonClaim& c, const Session& session, const std::vecto
   judge_solvers_and_scenes(w, out);  // (Particles: measured while playing, check_step)
   return out;
 }
-
 
 }  // namespace
 
@@ -442,7 +467,8 @@ std::vector<ClaimResult> check_step(const LessonStep& step, double fps) {
     take(k);
   }
   for (std::size_t k = 0; k < step.claims.size(); ++k)
-    if (step.claims[k].kind != K::Particles) results[k] = judge(step.claims[k], *session, records, fps, frames);
+    if (step.claims[k].kind != K::Particles)
+      results[k] = judge(step.claims[k], *session, records, fps, frames);
   return results;
 }
 

@@ -20,7 +20,8 @@ std::vector<std::string> shipped_lesson_files() {
 }
 
 Lesson open_lesson(const std::string& name) {
-  const LessonSceneOpener open = [](const std::string& scene, const std::vector<std::string>& sets) {
+  const LessonSceneOpener open = [](const std::string& scene,
+                                    const std::vector<std::string>& sets) {
     return load_scene(resolve_scene(scene), sets);
   };
   const LessonMethodFinder find = [](const std::string& method) { return lookup_method(method); };
@@ -30,13 +31,15 @@ Lesson open_lesson(const std::string& name) {
   std::vector<std::string> names;
   for (std::size_t k = 0; k < files.size(); ++k) {
     names.push_back(lesson_name(files[k]));
-    if (names.back() == name || std::to_string(k + 1) == name) return load_lesson(files[k], open, find);
+    if (names.back() == name || std::to_string(k + 1) == name)
+      return load_lesson(files[k], open, find);
   }
   std::string list;
   for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
   const std::string near = closest_match(name, names.data(), names.size());
   throw InputError("lesson '" + name + "': no such file, and no shipped lesson of that name" +
-                   (near.empty() ? "" : "; did you mean '" + near + "'?") + " (shipped: " + list + ")");
+                   (near.empty() ? "" : "; did you mean '" + near + "'?") + " (shipped: " + list +
+                   ")");
 }
 
 int course_number(const Lesson& lesson) {
@@ -47,8 +50,8 @@ int course_number(const Lesson& lesson) {
 
 void check_lesson_step(const Lesson& lesson, int step, const std::string& option) {
   if (step < 1 || step > static_cast<int>(lesson.steps.size()))
-    throw InputError(option + ": lesson '" + lesson.name + "' has steps 1 to " + std::to_string(lesson.steps.size()) +
-                     ", got " + std::to_string(step));
+    throw InputError(option + ": lesson '" + lesson.name + "' has steps 1 to " +
+                     std::to_string(lesson.steps.size()) + ", got " + std::to_string(step));
 }
 
 StepSetup setup_step(const LessonStep& step) {
@@ -62,7 +65,8 @@ StepSetup setup_step(const LessonStep& step) {
   o.sets = step.sets;
   StepSetup setup{prepare(step.scene, o), {}};
   const std::unique_ptr<SceneKind> kind = make_scene_kind(setup.prepared.scene);
-  for (const std::string& lane : step.compare) setup.compare.push_back(*kind->find(lane));  // (checked as the lesson loaded)
+  for (const std::string& lane : step.compare)
+    setup.compare.push_back(*kind->find(lane));  // (checked as the lesson loaded)
   return setup;
 }
 

@@ -7,6 +7,7 @@ namespace springlab::app {
 struct WholeRange {
   double lo, hi;
 };
-inline constexpr WholeRange kSubsteps{1, 100000}, kSteps{1, 1e12}, kThreads{0, 1024}, kIterations{1, 10000};
+inline constexpr WholeRange kSubsteps{1, 100000}, kSteps{1, 1e12}, kThreads{0, 1024},
+    kIterations{1, 10000};
 
 }  // namespace springlab::app

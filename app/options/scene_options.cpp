@@ -21,8 +21,10 @@ std::string parse_whole_number(std::string& text, double lo, double hi) {
   }
   std::ostringstream s;
   s << "must be a whole number in [" << lo << ", " << hi << "], got ";
-  if (number) s << x;
-  else s << "'" << text << "'";
+  if (number)
+    s << x;
+  else
+    s << "'" << text << "'";
   return s.str();
 }
 
@@ -31,7 +33,9 @@ std::vector<Method> parse_method_list(const std::string& text, const char* optio
   std::stringstream s(text);
   for (std::string name; std::getline(s, name, ',');) {
     const auto m = lookup_method(name);
-    if (!m) throw InputError(std::string(option) + ": unknown method '" + name + "' (" + method_choices() + ")");
+    if (!m)
+      throw InputError(std::string(option) + ": unknown method '" + name + "' (" +
+                       method_choices() + ")");
     list.push_back(*m);
   }
   return list;
@@ -52,14 +56,18 @@ Method resolve_method(const std::string& name) {
   for (const auto& m : methods()) names.emplace_back(m.name);
   for (const auto& t : shipped_tableaux()) names.push_back(t);
   const std::string near = closest_match(name, names.data(), names.size());
-  throw InputError("--method: unknown method '" + name + "'" + (near.empty() ? "" : "; did you mean '" + near + "'?") +
-                   " (" + method_choices() + ")");
+  throw InputError("--method: unknown method '" + name + "'" +
+                   (near.empty() ? "" : "; did you mean '" + near + "'?") + " (" +
+                   method_choices() + ")");
 }
 
 void require_integration(const Scene& scene, const char* command) {
   if (scene.ik)
-    throw InputError(std::string(command) + ": '" + scene.name + "' is an inverse-kinematics scene, which has no "
-                     "integrator to measure; use `springlab run " + scene.name + "` (each solver's result), "
+    throw InputError(std::string(command) + ": '" + scene.name +
+                     "' is an inverse-kinematics scene, which has no "
+                     "integrator to measure; use `springlab run " +
+                     scene.name +
+                     "` (each solver's result), "
                      "`view` or `render`");
 }
 
@@ -80,7 +88,8 @@ Prepared prepare(const std::string& scene_name, const SimOptions& o) {
   if (o.kd) check_option("--kd", *o.kd, 0.0, 1e12, false, " N s/m");
   if (o.tol) check_option("--tol", *o.tol, 0.0, 1.0, true);
   if (o.threads) check_option("--threads", *o.threads, kThreads.lo, kThreads.hi, false);
-  if (o.iterations) check_option("--iterations", *o.iterations, kIterations.lo, kIterations.hi, false);
+  if (o.iterations)
+    check_option("--iterations", *o.iterations, kIterations.lo, kIterations.hi, false);
   if (o.rho && !(*o.rho >= 0.0 && *o.rho < 1.0)) {
     std::ostringstream s;
     s << "--rho: must be in [0, 1) (local-global's Chebyshev acceleration; 0: off), got " << *o.rho;
@@ -119,8 +128,8 @@ Prepared prepare(const std::string& scene_name, const SimOptions& o) {
       throw InputError(m.str());
     }
   }
-  p.steps = o.steps ? *o.steps
-                    : static_cast<std::int64_t>(std::ceil(duration / p.settings.dt - 1e-9));
+  p.steps =
+      o.steps ? *o.steps : static_cast<std::int64_t>(std::ceil(duration / p.settings.dt - 1e-9));
   if (p.steps < 1) p.steps = 1;
   return p;
 }

@@ -27,6 +27,7 @@ struct PreparedSweep {
 
 // Checks the options (named as the command line's flags), loads the scene and sets the sweep
 // up. Throws InputError.
-PreparedSweep prepare_sweep(const std::string& scene, const SimOptions& sim, const SweepOptions& options);
+PreparedSweep prepare_sweep(const std::string& scene, const SimOptions& sim,
+                            const SweepOptions& options);
 
 }  // namespace springlab::app

@@ -48,8 +48,9 @@ bool FramePacer::take() {
 
 // --- The app -------------------------------------------------------------------------------
 
-InteractiveApp::InteractiveApp(Prepared first, const AppSettings& settings, std::optional<Script> script,
-                               float scale, int samples, bool background)
+InteractiveApp::InteractiveApp(Prepared first, const AppSettings& settings,
+                               std::optional<Script> script, float scale, int samples,
+                               bool background)
     : samples_(samples), background_(background) {
   ui_.scale = scale;
   for (const std::string& file : shipped_lesson_files()) {
@@ -62,7 +63,8 @@ InteractiveApp::InteractiveApp(Prepared first, const AppSettings& settings, std:
   }
   const std::string name = first.scene.name;
   show(std::move(first), name);
-  if (settings.compare) session_->set_compare_rows(session_->kind().lanes_named(*settings.compare, "--compare"));
+  if (settings.compare)
+    session_->set_compare_rows(session_->kind().lanes_named(*settings.compare, "--compare"));
   ui_.view.compare_layout = settings.compare_layout;
   if (script) session_->play(std::move(*script));
   if (settings.accuracy) {
@@ -137,8 +139,10 @@ void InteractiveApp::end_lesson() {
 }
 
 ui::LessonBand InteractiveApp::band() const {
-  ui::LessonBand b = ui::band_of(*lesson_, step_, lesson_number_, static_cast<int>(ui_.lessons.size()));
-  b.elapsed = session_->simulated_target() / lesson_->steps[step_].speed;  // (stands still while paused)
+  ui::LessonBand b =
+      ui::band_of(*lesson_, step_, lesson_number_, static_cast<int>(ui_.lessons.size()));
+  b.elapsed =
+      session_->simulated_target() / lesson_->steps[step_].speed;  // (stands still while paused)
   b.interrupted = interrupted_;
   return b;
 }
@@ -220,18 +224,22 @@ void InteractiveApp::mouse(const std::vector<draw::LaneView>& views, double to_f
   if (!under) under = &views.front();  // (the camera moves on past the scene's edge)
   if (!io.WantCaptureMouse) {
     if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !under->lanes.empty())
-      drag_ = ui::press(session, under->view, under->viewport, pointer, 14.0 * ui_.scale, under->lanes.front());
+      drag_ = ui::press(session, under->view, under->viewport, pointer, 14.0 * ui_.scale,
+                        under->lanes.front());
     const ImVec2 d = io.MouseDelta;
     if (ImGui::IsMouseDragging(ImGuiMouseButton_Right, 0.0f)) {
-      if (ui_.view.camera.view == View::Planar) ui::pan(ui_.view.camera, under->view, d.x * to_fb, d.y * to_fb);
-      else ui::orbit(ui_.view.camera, d.x, d.y);
+      if (ui_.view.camera.view == View::Planar)
+        ui::pan(ui_.view.camera, under->view, d.x * to_fb, d.y * to_fb);
+      else
+        ui::orbit(ui_.view.camera, d.x, d.y);
     }
     if (ImGui::IsMouseDragging(ImGuiMouseButton_Middle, 0.0f))
       ui::pan(ui_.view.camera, under->view, d.x * to_fb, d.y * to_fb);
     if (io.MouseWheel != 0.0f) ui::zoom(ui_.view.camera, io.MouseWheel);
   }
   const draw::LaneView* held = drag_ ? draw::view_of(views, drag_->lane) : nullptr;
-  if (drag_ && held && ImGui::IsMouseDown(ImGuiMouseButton_Left)) ui::move(session, held->view, held->viewport, pointer, *drag_);
+  if (drag_ && held && ImGui::IsMouseDown(ImGuiMouseButton_Left))
+    ui::move(session, held->view, held->viewport, pointer, *drag_);
   if (drag_ && (!held || !ImGui::IsMouseDown(ImGuiMouseButton_Left))) {
     ui::release(session);
     drag_.reset();
@@ -244,20 +252,25 @@ void InteractiveApp::keyboard() {
   const ImGuiIO& io = ImGui::GetIO();
   const bool panels = ui::update_keyboard_focus(keys_);
   if (io.WantTextInput) return;
-  if (!panels && ImGui::IsKeyPressed(GLFW_KEY_SPACE, false)) ui::perform(ui::Action::TogglePause, *session_, ui_);
-  const std::pair<int, ui::Action> keys[] = {
-      {GLFW_KEY_S, ui::Action::Step},
-      {GLFW_KEY_R, ui::Action::Reset},           {GLFW_KEY_C, ui::Action::ToggleCompare},
-      {GLFW_KEY_H, ui::Action::TogglePanels},    {GLFW_KEY_F1, ui::Action::ToggleHelp},
-      {GLFW_KEY_A, ui::Action::ToggleAccuracy},  {GLFW_KEY_G, ui::Action::ToggleRegion},
-      {GLFW_KEY_M, ui::Action::ToggleMode},      {GLFW_KEY_P, ui::Action::TogglePresentation},
-      {GLFW_KEY_Y, ui::Action::ToggleTableau}};
+  if (!panels && ImGui::IsKeyPressed(GLFW_KEY_SPACE, false))
+    ui::perform(ui::Action::TogglePause, *session_, ui_);
+  const std::pair<int, ui::Action> keys[] = {{GLFW_KEY_S, ui::Action::Step},
+                                             {GLFW_KEY_R, ui::Action::Reset},
+                                             {GLFW_KEY_C, ui::Action::ToggleCompare},
+                                             {GLFW_KEY_H, ui::Action::TogglePanels},
+                                             {GLFW_KEY_F1, ui::Action::ToggleHelp},
+                                             {GLFW_KEY_A, ui::Action::ToggleAccuracy},
+                                             {GLFW_KEY_G, ui::Action::ToggleRegion},
+                                             {GLFW_KEY_M, ui::Action::ToggleMode},
+                                             {GLFW_KEY_P, ui::Action::TogglePresentation},
+                                             {GLFW_KEY_Y, ui::Action::ToggleTableau}};
   for (const auto& [key, action] : keys)
     if (ImGui::IsKeyPressed(key, false)) ui::perform(action, *session_, ui_);
   // Keys 1 to 9: the table's first nine rows.
   for (int k = 0; k < std::min<int>(9, static_cast<int>(methods().size())); ++k)
     if (ImGui::IsKeyPressed(GLFW_KEY_1 + k, false))
-      ui::perform(static_cast<ui::Action>(static_cast<int>(ui::Action::Method1) + k), *session_, ui_);
+      ui::perform(static_cast<ui::Action>(static_cast<int>(ui::Action::Method1) + k), *session_,
+                  ui_);
   if (panels) return;
   if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) quit_ = true;
   if (lesson_) {
@@ -279,10 +292,13 @@ void InteractiveApp::simulate() {
   // the wall clock. Below 1 the simulation cannot keep up and the app slows down with it,
   // rather than drop simulated time; the panels say by how much.
   pace_.emplace_back(Clock::now(), session.simulated_target());
-  while (pace_.size() > 2 && pace_.front().first < pace_.back().first - std::chrono::seconds(1)) pace_.pop_front();
+  while (pace_.size() > 2 && pace_.front().first < pace_.back().first - std::chrono::seconds(1))
+    pace_.pop_front();
   if (pace_.size() >= 2 && !session.paused()) {
-    const double wall = std::chrono::duration<double>(pace_.back().first - pace_.front().first).count();
-    const double simulated = (pace_.back().second - pace_.front().second) / std::max(1e-9, session.speed());
+    const double wall =
+        std::chrono::duration<double>(pace_.back().first - pace_.front().first).count();
+    const double simulated =
+        (pace_.back().second - pace_.front().second) / std::max(1e-9, session.speed());
     if (wall > 0.25) {
       stats_.realtime = simulated / wall;
       stats_.fps = (pace_.size() - 1) / wall;
@@ -301,12 +317,14 @@ void InteractiveApp::frame(const FrameSize& size) {
   draw::Viewport viewport = ui::scene_viewport(ui_, win_w, win_h);
   viewport = {static_cast<int>(viewport.x * to_fb), static_cast<int>(viewport.y * to_fb),
               static_cast<int>(viewport.width * to_fb), static_cast<int>(viewport.height * to_fb)};
-  // What the class changes (a drag, a slider, a key) interrupts a lesson: compared around the input.
+  // What the class changes (a drag, a slider, a key) interrupts a lesson: compared around the
+  // input.
   const std::uint64_t edits = session_->edits();
   for (auto& change : std::exchange(controls_, {})) change(*session_, ui_);
   // The views of the lanes (apart in compare: a view each), in framebuffer units.
   const std::vector<draw::LaneView> views =
-      draw::lane_views(*session_, ui_.view.camera, ui_.view.compare_layout, viewport, static_cast<float>(2.0 * to_fb));
+      draw::lane_views(*session_, ui_.view.camera, ui_.view.compare_layout, viewport,
+                       static_cast<float>(2.0 * to_fb));
   mouse(views, to_fb);
   keyboard();
 
@@ -334,12 +352,13 @@ void InteractiveApp::frame(const FrameSize& size) {
   accuracy_.open = ui_.accuracy;
   accuracy_.sweep.advance();  // (without threads: the sweep's next pieces; else nothing)
   if (lesson_) {  // the step is about this chart: it takes the scene's and the charts' place
-    const ui::Rect r = ui::lesson_chart_rect(ui_, ui::scene_viewport(ui_, win_w, win_h), win_w, win_h, scale);
+    const ui::Rect r =
+        ui::lesson_chart_rect(ui_, ui::scene_viewport(ui_, win_w, win_h), win_w, win_h, scale);
     ImGui::SetNextWindowBgAlpha(1.0f);  // (the charts under it do not show through)
     ui::draw_compare_panel(accuracy_, session, scale, r.x, r.y, r.w, r.h);
   } else {
-    ui::draw_compare_panel(accuracy_, session, scale, 380.0f * scale, 20.0f * scale, win_w - 400.0f * scale,
-                           win_h * 0.62f);
+    ui::draw_compare_panel(accuracy_, session, scale, 380.0f * scale, 20.0f * scale,
+                           win_w - 400.0f * scale, win_h * 0.62f);
   }
   ui_.accuracy = accuracy_.open;
   tableau_.open = ui_.tableau;
@@ -350,10 +369,12 @@ void InteractiveApp::frame(const FrameSize& size) {
   overlay.scale = scale * (ui_.presentation ? ui::kPresentationScale : 1.0f);
   overlay.caption = !ui_.panels;
   overlay.realtime = stats_.realtime;
-  const draw::Viewport in_window{static_cast<int>(viewport.x / to_fb), static_cast<int>(viewport.y / to_fb),
-                                 static_cast<int>(viewport.width / to_fb), static_cast<int>(viewport.height / to_fb)};
-  ui::draw_overlay(session, draw::lane_views(session, ui_.view.camera, ui_.view.compare_layout, in_window), in_window,
-                   ui_.scene_name, overlay);
+  const draw::Viewport in_window{
+      static_cast<int>(viewport.x / to_fb), static_cast<int>(viewport.y / to_fb),
+      static_cast<int>(viewport.width / to_fb), static_cast<int>(viewport.height / to_fb)};
+  ui::draw_overlay(session,
+                   draw::lane_views(session, ui_.view.camera, ui_.view.compare_layout, in_window),
+                   in_window, ui_.scene_name, overlay);
   if (requests.quit) quit_ = true;
   if (requests.language) language_ = requests.language;
   std::optional<std::string> load = requests.load;

@@ -19,8 +19,6 @@
 #include "gfx/render_target.hpp"
 #include "gfx/renderer.hpp"
 #include "platform/app_settings.hpp"
-#include "ui/tableau_panel.hpp"
-#include "util/data_dir.hpp"
 #include "session/session.hpp"
 #include "springlab/lesson.hpp"
 #include "springlab/script.hpp"
@@ -29,6 +27,8 @@
 #include "ui/keyboard_focus.hpp"
 #include "ui/lesson_band.hpp"
 #include "ui/panels.hpp"
+#include "ui/tableau_panel.hpp"
+#include "util/data_dir.hpp"
 
 namespace springlab::app {
 
@@ -57,14 +57,16 @@ class InteractiveApp {
  public:
   // `samples`: multisampling of the scene; `background`: stability analyses beside the frame loop
   // (interactive), or made where needed (a scripted run: the same frames every time).
-  InteractiveApp(Prepared first, const AppSettings& settings, std::optional<Script> script, float scale, int samples,
-                 bool background);
+  InteractiveApp(Prepared first, const AppSettings& settings, std::optional<Script> script,
+                 float scale, int samples, bool background);
 
   // One frame: the mouse and the keys, the panels, one simulated frame, the scene and the panels
   // drawn into the default framebuffer.
   void frame(const FrameSize& size);
   // The platform's own controls in the panels, under the scene picker (ui::UiState).
-  void set_platform_controls(std::function<void()> draw) { ui_.platform_controls = std::move(draw); }
+  void set_platform_controls(std::function<void()> draw) {
+    ui_.platform_controls = std::move(draw);
+  }
 
   // Opens a scene (a shipped name or a path) in place of the one shown, keeping the panels'
   // choices. When it cannot be opened, the scene shown goes on and the banner says why: false.
@@ -72,8 +74,11 @@ class InteractiveApp {
   // Opens it after the next frame (a file dropped on the window during one).
   void open_after_frame(std::string scene) { pending_ = std::move(scene); }
   // A change asked for from outside the panels (the browser's accessible controls, web/access.js):
-  // made in the next frame where the panels make theirs, so that it interrupts a lesson as theirs do.
-  void control(std::function<void(Session&, ui::UiState&)> change) { controls_.push_back(std::move(change)); }
+  // made in the next frame where the panels make theirs, so that it interrupts a lesson as theirs
+  // do.
+  void control(std::function<void(Session&, ui::UiState&)> change) {
+    controls_.push_back(std::move(change));
+  }
   // A one-line message in the panels' banner (a bad file, a bad link).
   void say(std::string message) { ui_.message = std::move(message); }
 
@@ -96,7 +101,9 @@ class InteractiveApp {
   // The scene opened by the last frame, if any (the window puts its name in the title).
   std::optional<std::string> take_opened() { return std::exchange(opened_, std::nullopt); }
   const ui::FrameStats& stats() const { return stats_; }
-  const ui::ComparePanel& accuracy() const { return accuracy_; }  // the accuracy-against-cost panel (A)
+  const ui::ComparePanel& accuracy() const {
+    return accuracy_;
+  }  // the accuracy-against-cost panel (A)
 
   // Lessons. start_lesson opens a lesson at a step (from 0); lesson_step moves to another of its
   // steps (a new session from the step's start, its script playing); a drag or a change made by
@@ -138,7 +145,8 @@ class InteractiveApp {
   int step_ = 0, lesson_number_ = 0;  // lesson_number_: its place in the course (0: not shipped)
   bool interrupted_ = false;
   std::optional<std::function<void()>> lesson_move_;  // a move between steps, made after the frame
-  std::vector<std::function<void(Session&, ui::UiState&)>> controls_;  // control()'s, for the next frame
+  std::vector<std::function<void(Session&, ui::UiState&)>>
+      controls_;  // control()'s, for the next frame
   bool quit_ = false;
 };
 

@@ -9,7 +9,9 @@ BackgroundSweep::~BackgroundSweep() {
   join();
 }
 
-void BackgroundSweep::join() { worker_.join(); }
+void BackgroundSweep::join() {
+  worker_.join();
+}
 
 void BackgroundSweep::cancel() {
   cancel_ = true;
@@ -48,9 +50,9 @@ void BackgroundSweep::start(const Model& model, const State& state, const SweepS
     return;
   }
   worker_.start([this, model, state, settings] {
-    SweepResult result = run_sweep(model, state, settings, [this](const SweepRun& run, int done, int total) {
-      record(run, done, total);
-    }, &cancel_);
+    SweepResult result = run_sweep(
+        model, state, settings,
+        [this](const SweepRun& run, int done, int total) { record(run, done, total); }, &cancel_);
     {
       std::lock_guard lock(mutex_);
       partial_ = std::move(result);
@@ -62,9 +64,13 @@ void BackgroundSweep::start(const Model& model, const State& state, const SweepS
 void BackgroundSweep::advance(double budget_ms) {
   if (!steps_) return;
   const auto start = std::chrono::steady_clock::now();
-  const auto on_run = [this](const SweepRun& run, int done, int total) { record(run, done, total); };
+  const auto on_run = [this](const SweepRun& run, int done, int total) {
+    record(run, done, total);
+  };
   while (steps_->step(on_run))
-    if (std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() > budget_ms) return;
+    if (std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+            .count() > budget_ms)
+      return;
   std::lock_guard lock(mutex_);
   partial_ = steps_->result();
   steps_.reset();

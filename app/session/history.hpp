@@ -14,8 +14,10 @@ class Series {
   explicit Series(std::size_t capacity) : values_(capacity) {}
   void push(double x) {
     values_[(start_ + size_) % values_.size()] = x;
-    if (size_ < values_.size()) ++size_;
-    else start_ = (start_ + 1) % values_.size();
+    if (size_ < values_.size())
+      ++size_;
+    else
+      start_ = (start_ + 1) % values_.size();
   }
   void clear() { start_ = size_ = 0; }
   std::size_t size() const { return size_; }
@@ -29,18 +31,18 @@ class Series {
 
 struct History {
   Series t, kinetic, potential, total, dissipated;
-  Series net;         // E - E0 - W (Simulation::net_energy): with `dissipated`, the method's own losses
-  Series x, v;        // the watched particle: its coordinate along the watched axis, and velocity
-  Series exact_x;     // the exact solution there, where the scene has one (else empty)
-  Series ik_error;    // IK scenes: the distance from the chain's end to the target (m)
-  Series step;        // adaptive methods: the internal step their controller chose (s)
-  Series rejected;    // adaptive methods: tries thrown away so far
+  Series net;   // E - E0 - W (Simulation::net_energy): with `dissipated`, the method's own losses
+  Series x, v;  // the watched particle: its coordinate along the watched axis, and velocity
+  Series exact_x;   // the exact solution there, where the scene has one (else empty)
+  Series ik_error;  // IK scenes: the distance from the chain's end to the target (m)
+  Series step;      // adaptive methods: the internal step their controller chose (s)
+  Series rejected;  // adaptive methods: tries thrown away so far
   // A free body (momentum.hpp): |P - P0| and |L - L0| against their scales since it became free
   // (NaN while it is not).
   Series linear_change, angular_change;
   void clear() {
-    for (Series* s : {&t, &kinetic, &potential, &total, &dissipated, &net, &x, &v, &exact_x, &ik_error, &step, &rejected,
-                      &linear_change, &angular_change})
+    for (Series* s : {&t, &kinetic, &potential, &total, &dissipated, &net, &x, &v, &exact_x,
+                      &ik_error, &step, &rejected, &linear_change, &angular_change})
       s->clear();
   }
 };

@@ -7,7 +7,9 @@
 namespace springlab::app {
 
 namespace {
-IkLane& part(Lane& lane) { return dynamic_cast<IkLane&>(*lane.part); }
+IkLane& part(Lane& lane) {
+  return dynamic_cast<IkLane&>(*lane.part);
+}
 }  // namespace
 
 const IkLane& ik_lane(const Lane& lane) {
@@ -15,16 +17,22 @@ const IkLane& ik_lane(const Lane& lane) {
   return dynamic_cast<const IkLane&>(*lane.part);
 }
 
-int IkKind::row_count() const { return static_cast<int>(ik_solvers().size()); }
+int IkKind::row_count() const {
+  return static_cast<int>(ik_solvers().size());
+}
 
 LaneRow IkKind::row(int k) const {
   const IkSolverInfo& s = ik_solvers()[static_cast<std::size_t>(k)];
   return {s.name, s.label, s.colour, s.mark};
 }
 
-std::string IkKind::choices() const { return "this is an inverse-kinematics scene; solvers: " + ik_solver_names(); }
+std::string IkKind::choices() const {
+  return "this is an inverse-kinematics scene; solvers: " + ik_solver_names();
+}
 
-int IkKind::row_of(const Lane& lane) const { return static_cast<int>(ik_lane(lane).solver); }
+int IkKind::row_of(const Lane& lane) const {
+  return static_cast<int>(ik_lane(lane).solver);
+}
 
 std::vector<int> IkKind::compared_first() const {
   std::vector<int> rows;
@@ -43,7 +51,8 @@ void IkKind::start(Lane& lane, int row) const {
 
 void IkKind::switch_to(Lane& lane, int row) const {
   IkLane& ik = part(lane);
-  ik.solver = static_cast<IkSolver>(row);  // from the pose it has reached: a new solver takes over from there
+  ik.solver = static_cast<IkSolver>(
+      row);  // from the pose it has reached: a new solver takes over from there
   ik.status = ik_status(ik.chain, ik.target, ik_.settings);
 }
 
@@ -73,7 +82,9 @@ void IkKind::iterate(Lane& lane, int iterations) const {
     lane.sim.place(ik_.first_joint + static_cast<int>(j), Vec3(joints[j].x(), joints[j].y(), 0.0));
 }
 
-void IkKind::sample(Lane& lane) const { lane.history.ik_error.push(part(lane).status.error); }
+void IkKind::sample(Lane& lane) const {
+  lane.history.ik_error.push(part(lane).status.error);
+}
 
 std::vector<GuideCircle> IkKind::guides() const {
   // The circles bounding what its end can reach: its reach, and the inner one, if any.
@@ -84,6 +95,8 @@ std::vector<GuideCircle> IkKind::guides() const {
   return circles;
 }
 
-void IkKind::set_iterations_per_frame(int iterations) { per_frame_ = std::clamp(iterations, 1, 10000); }
+void IkKind::set_iterations_per_frame(int iterations) {
+  per_frame_ = std::clamp(iterations, 1, 10000);
+}
 
 }  // namespace springlab::app

@@ -1,12 +1,11 @@
 // The mass-spring kind (scene_kind.hpp): a lane is a method's row, its simulation all it has.
-#include "session/scene_kind.hpp"
+#include <sstream>
 
+#include "session/scene_kind.hpp"
 #include "session/session.hpp"
 #include "springlab/error.hpp"
 #include "springlab/text.hpp"
 #include "util/data_dir.hpp"
-
-#include <sstream>
 
 namespace springlab::app {
 
@@ -14,7 +13,8 @@ namespace {
 
 class MassSpringKind final : public SceneKind {
  public:
-  explicit MassSpringKind(std::vector<Method> scene_methods) : scene_methods_(std::move(scene_methods)) {}
+  explicit MassSpringKind(std::vector<Method> scene_methods)
+      : scene_methods_(std::move(scene_methods)) {}
 
   std::string_view kind_name() const override { return "mass-spring"; }
 
@@ -25,7 +25,9 @@ class MassSpringKind final : public SceneKind {
     const MethodInfo& m = methods()[static_cast<std::size_t>(k)];
     return {m.name, m.label, m.colour, m.mark};
   }
-  int row_of(const Lane& lane) const override { return static_cast<int>(lane.sim.settings().method); }
+  int row_of(const Lane& lane) const override {
+    return static_cast<int>(lane.sim.settings().method);
+  }
   std::optional<int> find(const std::string& name) const override {
     if (const std::optional<Method> m = lookup_method(name)) return static_cast<int>(*m);
     return std::nullopt;
@@ -43,9 +45,13 @@ class MassSpringKind final : public SceneKind {
     return rows;
   }
 
-  void configure(SimulationSettings& settings, int row) const override { settings.method = static_cast<Method>(row); }
+  void configure(SimulationSettings& settings, int row) const override {
+    settings.method = static_cast<Method>(row);
+  }
   void start(Lane&, int) const override {}
-  void switch_to(Lane& lane, int row) const override { lane.sim.set_method(static_cast<Method>(row)); }
+  void switch_to(Lane& lane, int row) const override {
+    lane.sim.set_method(static_cast<Method>(row));
+  }
   void after_steps(Lane&, Steps) const override {}
   void sample(Lane&) const override {}
 

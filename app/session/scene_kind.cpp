@@ -21,14 +21,17 @@ std::vector<int> SceneKind::lanes_named(const std::string& list, const char* opt
   std::stringstream s(list);
   for (std::string name; std::getline(s, name, ',');) {
     const std::optional<int> row = find(name);
-    if (!row) throw InputError(std::string(option) + ": unknown " + row_noun() + " '" + name + "' (" + choices() + ")");
+    if (!row)
+      throw InputError(std::string(option) + ": unknown " + row_noun() + " '" + name + "' (" +
+                       choices() + ")");
     rows.push_back(*row);
   }
   if (rows.size() < 2 || rows.size() > Session::kMaxLanes) {
     std::string example;
-    for (int k : compared_first()) example += (example.empty() ? "" : ",") + std::string(row(k).name);
-    throw InputError(std::string(option) + ": give 2 to " + std::to_string(Session::kMaxLanes) + " " + row_noun() +
-                     "s separated by commas, e.g. " + example);
+    for (int k : compared_first())
+      example += (example.empty() ? "" : ",") + std::string(row(k).name);
+    throw InputError(std::string(option) + ": give 2 to " + std::to_string(Session::kMaxLanes) +
+                     " " + row_noun() + "s separated by commas, e.g. " + example);
   }
   return rows;
 }

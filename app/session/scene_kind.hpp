@@ -13,7 +13,8 @@
 // A session makes its kind once, from its scene (make_scene_kind), and asks it to make, follow,
 // sample and reset its lanes, which particles may be held, what compare sets side by side and
 // what the number keys choose. The kind's UI half (its controls, chart, words) is
-// the panels registered under its kind_name() (ui/kind_panels.hpp). docs/architecture.md, "A scene kind", says how to add one.
+// the panels registered under its kind_name() (ui/kind_panels.hpp). docs/architecture.md, "A scene
+// kind", says how to add one.
 #pragma once
 
 #include <array>
@@ -33,9 +34,9 @@ struct Lane;
 
 // A row a lane may be, as shown: a method's or an IK solver's.
 struct LaneRow {
-  std::string_view name;         // as typed: "rk4", "fabrik"
-  const char* label;             // as shown to people (untranslated)
-  std::array<float, 3> colour;   // sRGB
+  std::string_view name;        // as typed: "rk4", "fabrik"
+  const char* label;            // as shown to people (untranslated)
+  std::array<float, 3> colour;  // sRGB
   Mark mark;
 };
 

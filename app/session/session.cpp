@@ -1,12 +1,12 @@
 #include "session/session.hpp"
 
-#include "springlab/text.hpp"
-
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <numbers>
 #include <limits>
+#include <numbers>
+
+#include "springlab/text.hpp"
 
 namespace springlab::app {
 
@@ -20,7 +20,8 @@ std::uint64_t next_serial() {
 Session::Session(Scene scene, SimulationSettings settings, double fps)
     : Session(std::move(scene), settings, fps, nullptr) {}
 
-Session::Session(Scene scene, SimulationSettings settings, double fps, std::unique_ptr<SceneKind> kind)
+Session::Session(Scene scene, SimulationSettings settings, double fps,
+                 std::unique_ptr<SceneKind> kind)
     : serial_(next_serial()),
       scene_(std::move(scene)),
       kind_(kind ? std::move(kind) : make_scene_kind(scene_)),
@@ -39,7 +40,8 @@ Session::Session(Scene scene, SimulationSettings settings, double fps, std::uniq
       break;
     }
   if (lanes_.front().exact) {
-    const Vec3 d = (scene_.state.x.row(watched_) - scene_.state.x.row(scene_.model.spring_a[0])).transpose();
+    const Vec3 d =
+        (scene_.state.x.row(watched_) - scene_.state.x.row(scene_.model.spring_a[0])).transpose();
     d.cwiseAbs().maxCoeff(&watched_axis_);
   } else if (scene_.model.gravity.squaredNorm() > 0.0) {
     scene_.model.gravity.cwiseAbs().maxCoeff(&watched_axis_);
@@ -142,7 +144,8 @@ void Session::sample(Lane& lane) {
   // Inverted cells: every frame, or twice a second for a box past 32768 cells (a 128^3 lattice's
   // two million take tens of milliseconds).
   if (!scene_.cells.empty() && (scene_.cells.size() <= 32768 || frame_ % 30 == 0))
-    lane.inverted_cells = sim.diverged() ? 0 : springlab::inverted_cells(scene_.cells, sim.state().x);
+    lane.inverted_cells =
+        sim.diverged() ? 0 : springlab::inverted_cells(scene_.cells, sim.state().x);
   // A free body's momentum from when it is free and moving: at rest its scale, sum m |v|, is
   // rounding's, and a change against it noise over noise. Moving: a mean speed past 1 nm/s.
   if (!free_body(sim.model())) {
@@ -151,9 +154,10 @@ void Session::sample(Lane& lane) {
     lane.free_since = momentum(sim.model(), sim.state());
     if (!moving(*lane.free_since, sim.model())) lane.free_since.reset();
   }
-  const MomentumChange change = lane.free_since && !sim.diverged()
-                                    ? momentum_change(*lane.free_since, momentum(sim.model(), sim.state()))
-                                    : MomentumChange{std::nan(""), std::nan("")};
+  const MomentumChange change =
+      lane.free_since && !sim.diverged()
+          ? momentum_change(*lane.free_since, momentum(sim.model(), sim.state()))
+          : MomentumChange{std::nan(""), std::nan("")};
   h.linear_change.push(change.linear);
   h.angular_change.push(change.angular);
   // Trails follow sane states only (a diverged lane's last good one may be far off).
@@ -184,10 +188,13 @@ void Session::advance_frame() {
   for (Lane& lane : lanes_) {
     Simulation& sim = lane.sim;
     if (sim.diverged()) continue;
-    if (background_ && lane.waiting()) continue;  // its sub-steps are not chosen yet: it starts when they are
+    if (background_ && lane.waiting())
+      continue;  // its sub-steps are not chosen yet: it starts when they are
     if (grabbed_ >= 0 && drag_target_) {
-      if (paused_) sim.place(grabbed_, *drag_target_);
-      else sim.move_grabbed(*drag_target_, frame_time);
+      if (paused_)
+        sim.place(grabbed_, *drag_target_);
+      else
+        sim.move_grabbed(*drag_target_, frame_time);
     }
     const double dt = sim.settings().dt;
     const double due = std::floor((target_ - sim.state().t) / dt + 1e-9);
@@ -208,7 +215,8 @@ void Session::keep_if_sane(Lane& lane) {
   const State& s = sim.state();
   // Within the scene's bounds: every particle within the reach of the camera's target.
   const Vec3& target = scene_.camera.target;
-  if (s.particle_count() > 0 && !((s.x.rowwise() - target.transpose()).rowwise().norm().maxCoeff() <= sane_reach_))
+  if (s.particle_count() > 0 &&
+      !((s.x.rowwise() - target.transpose()).rowwise().norm().maxCoeff() <= sane_reach_))
     return;
   // No spring past twice its longest sane length (its rest length, or its length at the start):
   // a state blowing up stretches its springs before it leaves the bounds.
@@ -227,10 +235,13 @@ double scene_reach(const Scene& scene) {
   // The half-diagonal of a 16:9 frame of the scene's camera (planar: `height` shown; orbit: the
   // height the field of view shows at the target's distance), or the farthest starting particle.
   const Camera& c = scene.camera;
-  const double half_height = c.view == View::Planar ? 0.5 * c.height : c.distance * std::tan(0.5 * c.fov * std::numbers::pi / 180.0);
+  const double half_height = c.view == View::Planar
+                                 ? 0.5 * c.height
+                                 : c.distance * std::tan(0.5 * c.fov * std::numbers::pi / 180.0);
   double reach = half_height * std::hypot(1.0, 16.0 / 9.0);
   const Points& x = scene.state.x;
-  if (x.rows() > 0) reach = std::max(reach, (x.rowwise() - c.target.transpose()).rowwise().norm().maxCoeff());
+  if (x.rows() > 0)
+    reach = std::max(reach, (x.rowwise() - c.target.transpose()).rowwise().norm().maxCoeff());
   return reach;
 }
 
@@ -248,11 +259,17 @@ void Session::step_once() {
   target_ = latest;
 }
 
-LaneRow lane_row(const Lane& lane) { return lane.kind->row(lane.kind->row_of(lane)); }
+LaneRow lane_row(const Lane& lane) {
+  return lane.kind->row(lane.kind->row_of(lane));
+}
 
-std::string lane_label(const Lane& lane) { return lane.own.empty() ? tr(lane_row(lane).label) : lane.own; }
+std::string lane_label(const Lane& lane) {
+  return lane.own.empty() ? tr(lane_row(lane).label) : lane.own;
+}
 
-std::string lane_name(const Lane& lane) { return lane.own.empty() ? std::string(lane_row(lane).name) : lane.own; }
+std::string lane_name(const Lane& lane) {
+  return lane.own.empty() ? std::string(lane_row(lane).name) : lane.own;
+}
 
 void Session::set_own_lanes(const std::vector<OwnLane>& own, const std::vector<BesideRow>& beside) {
   ++edits_;
@@ -404,7 +421,9 @@ double Session::damping() const {
   return m.materials.empty() ? 0.0 : m.materials.front().kd;
 }
 
-double Session::mass() const { return primary().sim.model().mass[watched_]; }
+double Session::mass() const {
+  return primary().sim.model().mass[watched_];
+}
 
 double Session::friction() const {
   const Model& m = primary().sim.model();
@@ -413,14 +432,15 @@ double Session::friction() const {
   return 0.0;
 }
 
-int Session::pick(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, double radius) const {
+int Session::pick(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
+                  double radius) const {
   const State& s = primary().sim.state();
   const Emission& emission = primary().sim.emission();
   int best = -1;
   double best_along = std::numeric_limits<double>::infinity();
   for (int i = 0; i < s.particle_count(); ++i) {
     if (emission.owned(i) && !emission.alive(i)) continue;  // not born yet, or gone
-    if (!kind_->holdable(i)) continue;                      // (an IK chain's joints: its solver places them)
+    if (!kind_->holdable(i)) continue;  // (an IK chain's joints: its solver places them)
     const Vec3 p = s.x.row(i).transpose() - origin;
     const double along = p.dot(direction);
     if (along < 0.0) continue;
@@ -484,7 +504,9 @@ void Session::stop_script() {
 
 void Session::apply(const ScriptEvent& e) {
   switch (e.kind) {
-    case ScriptEvent::Kind::Grab: grab(e.near ? nearest(*e.near) : e.particle); break;
+    case ScriptEvent::Kind::Grab:
+      grab(e.near ? nearest(*e.near) : e.particle);
+      break;
     case ScriptEvent::Kind::Path:
     case ScriptEvent::Kind::Move: {
       if (grabbed_ < 0) break;
@@ -495,10 +517,18 @@ void Session::apply(const ScriptEvent& e) {
       path_ = {{e.t, std::move(path)}};
       break;
     }
-    case ScriptEvent::Kind::Release: release(); break;
-    case ScriptEvent::Kind::Pause: paused_ = true; break;
-    case ScriptEvent::Kind::Resume: paused_ = false; break;
-    case ScriptEvent::Kind::Reset: reset(); break;
+    case ScriptEvent::Kind::Release:
+      release();
+      break;
+    case ScriptEvent::Kind::Pause:
+      paused_ = true;
+      break;
+    case ScriptEvent::Kind::Resume:
+      paused_ = false;
+      break;
+    case ScriptEvent::Kind::Reset:
+      reset();
+      break;
     case ScriptEvent::Kind::Set:
       if (e.method) set_method(*e.method);  // (in compare mode the lanes keep theirs)
       if (e.ks) set_stiffness(*e.ks);

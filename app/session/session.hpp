@@ -21,9 +21,9 @@
 #include "session/scene_kind.hpp"
 #include "session/stability_job.hpp"
 #include "springlab/exact.hpp"
+#include "springlab/momentum.hpp"
 #include "springlab/scene.hpp"
 #include "springlab/script.hpp"
-#include "springlab/momentum.hpp"
 #include "springlab/simulation.hpp"
 
 namespace springlab::app {
@@ -33,7 +33,7 @@ struct Lane {
 
   Simulation sim;
   History history;
-  std::optional<ExactOscillator> exact;  // from the last change of the model
+  std::optional<ExactOscillator> exact;   // from the last change of the model
   std::vector<std::vector<Vec3>> trails;  // one per scene.trails particle, oldest first
   // Its scene's kind (the session's: scene_kind.hpp), and what the kind keeps of it besides its
   // simulation (an IK lane's chain: ik_kind.hpp); none for a mass-spring lane.

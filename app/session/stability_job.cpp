@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <atomic>
-#include <mutex>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 #include "springlab/forces.hpp"
@@ -81,7 +81,9 @@ Threads& threads() {
 
 }  // namespace
 
-StabilityJob::~StabilityJob() { cancel(); }
+StabilityJob::~StabilityJob() {
+  cancel();
+}
 
 StabilityJob& StabilityJob::operator=(StabilityJob&& other) noexcept {
   if (this != &other) {
@@ -105,9 +107,12 @@ void StabilityJob::start(const Model& model, const State& state, std::uint64_t v
   // on two cores, where a second search would take the frame loop's).
   const int analysis_threads = std::max(1, thread_count() - 1);
   auto work = [shared, model, state, analysis_threads] {
-    if constexpr (kWorkerThreads) set_thread_count(analysis_threads);  // (this thread's own setting)
-    else (void)analysis_threads;  // (no worker threads in the browser: the caller's one thread)
-    auto analysis = std::make_shared<const StabilityAnalysis>(model, state, kDenseDofs, &shared->cancel);
+    if constexpr (kWorkerThreads)
+      set_thread_count(analysis_threads);  // (this thread's own setting)
+    else
+      (void)analysis_threads;  // (no worker threads in the browser: the caller's one thread)
+    auto analysis =
+        std::make_shared<const StabilityAnalysis>(model, state, kDenseDofs, &shared->cancel);
     std::lock_guard lock(shared->mutex);
     if (!analysis->cancelled()) shared->result.analysis = std::move(analysis);
     shared->done = true;
@@ -124,7 +129,9 @@ void StabilityJob::start(const Model& model, const State& state, std::uint64_t v
   }
 }
 
-bool StabilityJob::running() const { return shared_ && !shared_->done; }
+bool StabilityJob::running() const {
+  return shared_ && !shared_->done;
+}
 
 std::optional<StabilityJob::Result> StabilityJob::take() {
   if (!shared_ || !shared_->done) return std::nullopt;
@@ -141,7 +148,9 @@ std::optional<StabilityJob::Result> StabilityJob::take() {
   return result;
 }
 
-void StabilityJob::shutdown() { threads().join_all(); }
+void StabilityJob::shutdown() {
+  threads().join_all();
+}
 
 int StabilityJob::analyses_running() {
   Threads& all = threads();
@@ -150,7 +159,9 @@ int StabilityJob::analyses_running() {
                                         [](const auto& e) { return !e.shared->done; }));
 }
 
-int StabilityJob::freed_while_locked() { return g_freed_while_locked.load(); }
+int StabilityJob::freed_while_locked() {
+  return g_freed_while_locked.load();
+}
 
 int StabilityJob::threads_alive() {
   Threads& all = threads();

@@ -8,18 +8,26 @@
 namespace springlab::ui {
 
 enum class Action {
-  TogglePause,    // space
-  Step,           // S: one step, paused
-  Reset,          // R
-  ToggleCompare,  // C: the ticked methods, else the scene's, else four classics
-  TogglePanels,   // H
-  ToggleHelp,     // F1
-  ToggleAccuracy, // A: the Compare panel
-  ToggleRegion,   // G: the stability region
-  ToggleTableau,  // Y: your method
-  ToggleMode,     // M: the limiting mode on the scene
+  TogglePause,         // space
+  Step,                // S: one step, paused
+  Reset,               // R
+  ToggleCompare,       // C: the ticked methods, else the scene's, else four classics
+  TogglePanels,        // H
+  ToggleHelp,          // F1
+  ToggleAccuracy,      // A: the Compare panel
+  ToggleRegion,        // G: the stability region
+  ToggleTableau,       // Y: your method
+  ToggleMode,          // M: the limiting mode on the scene
   TogglePresentation,  // P: larger, for a projector
-  Method1, Method2, Method3, Method4, Method5, Method6, Method7, Method8, Method9,  // 1 - 9
+  Method1,
+  Method2,
+  Method3,
+  Method4,
+  Method5,
+  Method6,
+  Method7,
+  Method8,
+  Method9,  // 1 - 9
 };
 
 void perform(Action action, app::Session& session, UiState& ui);

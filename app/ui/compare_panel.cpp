@@ -8,9 +8,9 @@
 
 #include "chart/compare_charts.hpp"
 #include "chart/imgui_chart.hpp"
+#include "chart/text_wrap.hpp"
 #include "draw/palette.hpp"
 #include "springlab/text.hpp"
-#include "chart/text_wrap.hpp"
 
 namespace springlab::ui {
 
@@ -41,19 +41,23 @@ namespace {
 
 // (A phone's panel is narrower than the row of sliders, buttons and tabs a laptop's holds: they
 // wrap, same_line_if_fits.)
-float labelled_width(float frame, const char* label) {  // a slider's or a radio button's, with its label
+float labelled_width(float frame,
+                     const char* label) {  // a slider's or a radio button's, with its label
   return frame + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(label).x;
 }
-float button_width(const char* label) { return ImGui::CalcTextSize(label).x + 2.0f * ImGui::GetStyle().FramePadding.x; }
+float button_width(const char* label) {
+  return ImGui::CalcTextSize(label).x + 2.0f * ImGui::GetStyle().FramePadding.x;
+}
 
 }  // namespace
 
-void draw_compare_panel(ComparePanel& panel, const app::Session& session, float scale, float x, float y,
-                        float width, float height) {
+void draw_compare_panel(ComparePanel& panel, const app::Session& session, float scale, float x,
+                        float y, float width, float height) {
   if (!panel.open) return;
   ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Appearing);
   ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Appearing);
-  if (!ImGui::Begin((tr("Accuracy against cost") + std::string("###accuracy")).c_str(), &panel.open, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
+  if (!ImGui::Begin((tr("Accuracy against cost") + std::string("###accuracy")).c_str(), &panel.open,
+                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
     ImGui::End();
     return;
   }
@@ -65,14 +69,16 @@ void draw_compare_panel(ComparePanel& panel, const app::Session& session, float 
   same_line_if_fits(labelled_width(slider, tr("seconds")));
   ImGui::SliderFloat(tr("seconds"), &panel.duration, 0.2f, 5.0f, "%.1f");
   same_line_if_fits(labelled_width(slider, tr("range")));
-  ImGui::SliderFloat(tr("range"), &panel.step_range, 4.0f, 64.0f, tr("dt/%.0f..2dt"), ImGuiSliderFlags_Logarithmic);
+  ImGui::SliderFloat(tr("range"), &panel.step_range, 4.0f, 64.0f, tr("dt/%.0f..2dt"),
+                     ImGuiSliderFlags_Logarithmic);
   ImGui::PopItemWidth();
   same_line_if_fits(button_width(running ? tr("Cancel") : tr("Run")));
   if (!running && ImGui::Button(tr("Run"))) panel.start(session);
   if (running && ImGui::Button(tr("Cancel"))) panel.sweep.cancel();
   if (running || done > 0) {
     same_line_if_fits(160.0f * scale);
-    ImGui::ProgressBar(total > 0 ? static_cast<float>(done) / total : 0.0f, ImVec2(160.0f * scale, 0),
+    ImGui::ProgressBar(total > 0 ? static_cast<float>(done) / total : 0.0f,
+                       ImVec2(160.0f * scale, 0),
                        (std::to_string(done) + " / " + std::to_string(total)).c_str());
   }
   // Methods: none ticked means all. Five columns; where the longest name does not fit five (a
@@ -84,9 +90,13 @@ void draw_compare_panel(ComparePanel& panel, const app::Session& session, float 
     name = std::max(name, ImGui::CalcTextSize(m.name).x);
     ticked += panel.methods.has(m.id) ? 1 : 0;
   }
-  const float column = ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + name + ImGui::GetStyle().CellPadding.x * 2;
+  const float column = ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + name +
+                       ImGui::GetStyle().CellPadding.x * 2;
   const int columns = std::clamp(static_cast<int>(ImGui::GetContentRegionAvail().x / column), 2, 5);
-  const bool shown = columns == 5 || ImGui::CollapsingHeader((format_text(tr("Methods (%d)"), ticked) + std::string("###methods")).c_str());
+  const bool shown =
+      columns == 5 ||
+      ImGui::CollapsingHeader(
+          (format_text(tr("Methods (%d)"), ticked) + std::string("###methods")).c_str());
   if (shown && ImGui::BeginTable("methods", columns)) {
     for (const MethodInfo& m : methods()) {
       ImGui::TableNextColumn();
@@ -101,8 +111,10 @@ void draw_compare_panel(ComparePanel& panel, const app::Session& session, float 
 
   const SweepResult result = panel.sweep.snapshot();
   if (result.runs.empty()) {
-    ImGui::TextDisabled(tr("Run: every method over steps from dt/%.0f to 2 dt (adaptive ones over tolerances), "
-                        "each against the exact solution or a fine RK4 run."), panel.step_range);
+    ImGui::TextDisabled(
+        tr("Run: every method over steps from dt/%.0f to 2 dt (adaptive ones over tolerances), "
+           "each against the exact solution or a fine RK4 run."),
+        panel.step_range);
   } else {
     const auto charts = chart::compare_charts(result, session.scene().name);
     // A tab a chart, in compare_charts' order (energy drift and the iterative rows' solver error
@@ -110,12 +122,12 @@ void draw_compare_panel(ComparePanel& panel, const app::Session& session, float 
     const auto tab = [](const std::string& name) {
       // The charts' keys (not shown) and their tabs' names.
       static const std::pair<const char*, const char*> kTabs[] = {
-          {"work-precision", N_("error vs time")},             // not shown: the key
-          {"work-precision-work", N_("error vs work")},        // not shown: the key
-          {"convergence", N_("convergence")},                  // not shown: the key
-          {"stability", N_("stability")},                      // not shown: the key
-          {"energy-drift", N_("energy drift")},                // not shown: the key
-          {"solver-convergence", N_("solver error")}};         // not shown: the key
+          {"work-precision", N_("error vs time")},       // not shown: the key
+          {"work-precision-work", N_("error vs work")},  // not shown: the key
+          {"convergence", N_("convergence")},            // not shown: the key
+          {"stability", N_("stability")},                // not shown: the key
+          {"energy-drift", N_("energy drift")},          // not shown: the key
+          {"solver-convergence", N_("solver error")}};   // not shown: the key
       for (const auto& [key, text] : kTabs)
         if (name == key) return tr(text);
       return tr(name.c_str());

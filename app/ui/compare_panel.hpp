@@ -5,18 +5,18 @@
 #include <array>
 
 #include "session/background_sweep.hpp"
-#include "ui/method_choice.hpp"
 #include "session/session.hpp"
+#include "ui/method_choice.hpp"
 
 namespace springlab::ui {
 
 struct ComparePanel {
   bool open = false;
   int points = 6;
-  float duration = 1.0f;          // s simulated by each run
-  float step_range = 16.0f;       // from dt / range to 2 dt
-  MethodChoice methods;  // which to sweep (none ticked: all)
-  int chart = 0;                  // the tab shown: compare_charts' order (0: error vs time, 1: vs work)
+  float duration = 1.0f;     // s simulated by each run
+  float step_range = 16.0f;  // from dt / range to 2 dt
+  MethodChoice methods;      // which to sweep (none ticked: all)
+  int chart = 0;             // the tab shown: compare_charts' order (0: error vs time, 1: vs work)
   app::BackgroundSweep sweep;
 
   // The settings for the session's scene as it is now.
@@ -25,7 +25,7 @@ struct ComparePanel {
 };
 
 // Draws the panel (when open) over the area `x, y, width, height` of the window.
-void draw_compare_panel(ComparePanel& panel, const app::Session& session, float scale, float x, float y,
-                        float width, float height);
+void draw_compare_panel(ComparePanel& panel, const app::Session& session, float scale, float x,
+                        float y, float width, float height);
 
 }  // namespace springlab::ui

@@ -37,16 +37,19 @@ GaugeVerdict gauge_verdict(const app::Lane& lane, const StabilityAnalysis* analy
         // pins, the energy it takes where no collider's contacts take any (iterative_cost.hpp).
         const bool resting = at_rest(sim.model(), sim.state(), sim.energy_scale());
         if (resting && loaded_balance(sim.model()) && analysis->rest_stretch() > 0.0) {
-          const double ratio = analysis->rest_stretch() / std::max(rms_stretch(sim.model(), sim.state()), 1e-300);
+          const double ratio =
+              analysis->rest_stretch() / std::max(rms_stretch(sim.model(), sim.state()), 1e-300);
           verdict = format_text(tr("bounded; at rest acts as k_s x%.2g"), ratio);
           if (ratio < 0.5) color = Tone::Near;
-        } else if (!resting && energy_account_closed(sim.model()) && back >= 2 && hist.net.size() == n &&
-                   hist.dissipated.size() == n) {
+        } else if (!resting && energy_account_closed(sim.model()) && back >= 2 &&
+                   hist.net.size() == n && hist.dissipated.size() == n) {
           const std::size_t a = n - back, b = n - 1;
           const double dt = hist.t[b] - hist.t[a];
-          const double lost = -((hist.net[b] - hist.net[a]) + (hist.dissipated[b] - hist.dissipated[a]));
+          const double lost =
+              -((hist.net[b] - hist.net[a]) + (hist.dissipated[b] - hist.dissipated[a]));
           // Negative: energy went into the springs' stretch, counted with k_s (XPBD at few passes).
-          if (dt > 0.0 && lost >= 0.0) verdict = format_text(tr("bounded; damps %.2g W extra"), lost / dt);
+          if (dt > 0.0 && lost >= 0.0)
+            verdict = format_text(tr("bounded; damps %.2g W extra"), lost / dt);
           if (dt > 0.0 && lost < 0.0) {
             verdict = format_text(tr("bounded; +%.2g W into stretch"), -lost / dt);
             color = Tone::Near;
@@ -60,10 +63,14 @@ GaugeVerdict gauge_verdict(const app::Lane& lane, const StabilityAnalysis* analy
     } else {
       const double ratio = h / limit->h;
       fraction = std::min(1.0, ratio / 1.5);
-      color = ratio > 1.0 ? (limit->exact ? Tone::Beyond : Tone::Near) : ratio > 0.8 ? Tone::Near : Tone::Safe;
-      verdict = format_text(ratio > 1.0 ? (limit->exact ? tr("beyond: %.2fx") : tr("past proven: %.2fx"))
-                                : ratio > 0.8 ? tr("near: %.2fx") : tr("safe: %.2fx"),
-                    ratio);
+      color = ratio > 1.0   ? (limit->exact ? Tone::Beyond : Tone::Near)
+              : ratio > 0.8 ? Tone::Near
+                            : Tone::Safe;
+      verdict =
+          format_text(ratio > 1.0 ? (limit->exact ? tr("beyond: %.2fx") : tr("past proven: %.2fx"))
+                      : ratio > 0.8 ? tr("near: %.2fx")
+                                    : tr("safe: %.2fx"),
+                      ratio);
     }
   }
   // A step of one's own that the homework checker found to be no row of the table: its row is a
@@ -79,10 +86,11 @@ GaugeVerdict gauge_verdict(const app::Lane& lane, const StabilityAnalysis* analy
   std::string& momentum_line = out.momentum;
   if (lane.free_since && !sim.trouble() && !unknown) {
     const MomentumChange d = momentum_change(*lane.free_since, momentum(sim.model(), sim.state()));
-    momentum_line = format_text(tr("a free body: its momentum changed by %s of sum m|v|, its angular momentum by %s; "
-                                   "%s: P %s, L %s"),
-                                format_text("%.2g", d.linear).c_str(), format_text("%.2g", d.angular).c_str(), tr(m.label),
-                                tr(kept_text(m.momentum)), tr(kept_text(m.angular_momentum)));
+    momentum_line = format_text(
+        tr("a free body: its momentum changed by %s of sum m|v|, its angular momentum by %s; "
+           "%s: P %s, L %s"),
+        format_text("%.2g", d.linear).c_str(), format_text("%.2g", d.angular).c_str(), tr(m.label),
+        tr(kept_text(m.momentum)), tr(kept_text(m.angular_momentum)));
     if (d.linear > kMomentumVisible) {
       verdict += format_text(tr("; momentum off by %.2g%%"), 100.0 * d.linear);
       color = Tone::Near;
@@ -94,7 +102,9 @@ GaugeVerdict gauge_verdict(const app::Lane& lane, const StabilityAnalysis* analy
   }
   if (const Divergence* trouble = sim.trouble()) {
     color = Tone::Beyond;
-    verdict = explain ? format_text(trouble->unstable ? tr("unstable at %.3g s") : tr("diverged at %.3g s"), trouble->t)
+    verdict = explain ? format_text(
+                            trouble->unstable ? tr("unstable at %.3g s") : tr("diverged at %.3g s"),
+                            trouble->t)
                       : std::string(trouble->unstable ? tr("unstable") : tr("diverged"));
   }
   return out;

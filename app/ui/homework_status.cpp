@@ -13,8 +13,10 @@ void draw_homework_status(const HomeworkStatus& status) {
   for (const std::string& line : status.lines) ImGui::TextWrapped("%s", line.c_str());
   if (!status.error.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.55f, 0.45f, 1.0f));
-    ImGui::TextWrapped("%s", format_text(tr("the saved file does not build (the last good build runs): %s"),
-                                         status.error.c_str()).c_str());
+    ImGui::TextWrapped(
+        "%s", format_text(tr("the saved file does not build (the last good build runs): %s"),
+                          status.error.c_str())
+                  .c_str());
     ImGui::PopStyleColor();
   }
 }

@@ -9,23 +9,27 @@ namespace springlab::ui {
 namespace {
 
 draw::Ray ray_at(const draw::ViewCamera& camera, const draw::Viewport& viewport, Pointer p) {
-  return draw::pixel_ray(camera, p.x - viewport.x, p.y - viewport.y, viewport.width, viewport.height);
+  return draw::pixel_ray(camera, p.x - viewport.x, p.y - viewport.y, viewport.width,
+                         viewport.height);
 }
 
 }  // namespace
 
-std::optional<Drag> press(app::Session& session, const draw::ViewCamera& camera, const draw::Viewport& viewport,
-                          Pointer pointer, double radius_px, int lane) {
-  if (pointer.x < viewport.x || pointer.y < viewport.y || pointer.x >= viewport.x + viewport.width ||
-      pointer.y >= viewport.y + viewport.height)
+std::optional<Drag> press(app::Session& session, const draw::ViewCamera& camera,
+                          const draw::Viewport& viewport, Pointer pointer, double radius_px,
+                          int lane) {
+  if (pointer.x < viewport.x || pointer.y < viewport.y ||
+      pointer.x >= viewport.x + viewport.width || pointer.y >= viewport.y + viewport.height)
     return std::nullopt;
   // Nearest in screen space among the particles within reach of the pointer, the front one on ties.
-  const app::Lane& picked = session.lanes()[std::clamp<std::size_t>(lane, 0, session.lanes().size() - 1)];
+  const app::Lane& picked =
+      session.lanes()[std::clamp<std::size_t>(lane, 0, session.lanes().size() - 1)];
   const State& s = picked.sim.diverged() ? picked.sane : picked.sim.state();
   int best = -1;
   double best_d2 = radius_px * radius_px, best_depth = 2.0;
   for (int i = 0; i < s.particle_count(); ++i) {
-    const Eigen::Vector3d q = draw::project(camera, s.x.row(i).transpose(), viewport.width, viewport.height);
+    const Eigen::Vector3d q =
+        draw::project(camera, s.x.row(i).transpose(), viewport.width, viewport.height);
     if (q.z() < 0.0 || q.z() > 1.0) continue;  // behind the eye or past the far plane
     const double dx = q.x() + viewport.x - pointer.x, dy = q.y() + viewport.y - pointer.y;
     const double d2 = dx * dx + dy * dy;
@@ -46,8 +50,8 @@ std::optional<Drag> press(app::Session& session, const draw::ViewCamera& camera,
   return drag;
 }
 
-void move(app::Session& session, const draw::ViewCamera& camera, const draw::Viewport& viewport, Pointer pointer,
-          const Drag& drag) {
+void move(app::Session& session, const draw::ViewCamera& camera, const draw::Viewport& viewport,
+          Pointer pointer, const Drag& drag) {
   const draw::Ray r = ray_at(camera, viewport, pointer);
   const double denom = r.direction.dot(drag.plane_normal);
   if (std::abs(denom) < 1e-9) return;
@@ -56,7 +60,9 @@ void move(app::Session& session, const draw::ViewCamera& camera, const draw::Vie
   session.drag_to(r.origin + t * r.direction);
 }
 
-void release(app::Session& session) { session.release(); }
+void release(app::Session& session) {
+  session.release();
+}
 
 bool hold(app::Session& session, int particle) {
   if (particle < 0 || particle >= session.primary().sim.state().particle_count()) return false;
@@ -68,7 +74,8 @@ bool hold(app::Session& session, int particle) {
 void nudge(app::Session& session, double dx, double dy) {
   if (session.grabbed() < 0 || !session.drag_target()) return;
   const Points& x = session.scene().state.x;
-  const double extent = x.rows() == 0 ? 0.0 : (x.colwise().maxCoeff() - x.colwise().minCoeff()).norm();
+  const double extent =
+      x.rows() == 0 ? 0.0 : (x.colwise().maxCoeff() - x.colwise().minCoeff()).norm();
   const double step = extent > 0.0 ? extent / 20.0 : 0.05;
   session.drag_to(*session.drag_target() + step * Vec3(dx, dy, 0.0));
 }
@@ -88,8 +95,10 @@ void pan(Camera& camera, const draw::ViewCamera& view, double dx, double dy) {
 
 void zoom(Camera& camera, double notches) {
   const double factor = std::pow(0.88, notches);
-  if (camera.view == View::Planar) camera.height = std::clamp(camera.height * factor, 1e-3, 1e6);
-  else camera.distance = std::clamp(camera.distance * factor, 1e-3, 1e6);
+  if (camera.view == View::Planar)
+    camera.height = std::clamp(camera.height * factor, 1e-3, 1e6);
+  else
+    camera.distance = std::clamp(camera.distance * factor, 1e-3, 1e6);
 }
 
 }  // namespace springlab::ui

@@ -18,17 +18,18 @@ struct Pointer {
 struct Drag {
   int particle = -1;
   int lane = 0;  // the lane it was picked in (compare apart: the view's), whose view moves it
-  Vec3 plane_point = Vec3::Zero();   // the plane the particle moves in: through where it was
-  Vec3 plane_normal = Vec3::UnitZ(); // grabbed, facing the camera
+  Vec3 plane_point = Vec3::Zero();    // the plane the particle moves in: through where it was
+  Vec3 plane_normal = Vec3::UnitZ();  // grabbed, facing the camera
 };
 
 // Picks the particle of `lane` nearest the eye among those within `radius_px` pixels of the
 // pointer and grabs it (in every lane). Returns the drag, or nothing when no particle is there.
-std::optional<Drag> press(app::Session& session, const draw::ViewCamera& camera, const draw::Viewport& viewport,
-                          Pointer pointer, double radius_px = 14.0, int lane = 0);
+std::optional<Drag> press(app::Session& session, const draw::ViewCamera& camera,
+                          const draw::Viewport& viewport, Pointer pointer, double radius_px = 14.0,
+                          int lane = 0);
 // Moves the held particle to where the pointer's ray meets the drag plane.
-void move(app::Session& session, const draw::ViewCamera& camera, const draw::Viewport& viewport, Pointer pointer,
-          const Drag& drag);
+void move(app::Session& session, const draw::ViewCamera& camera, const draw::Viewport& viewport,
+          Pointer pointer, const Drag& drag);
 // Lets go: the particle keeps the velocity it was being dragged with.
 void release(app::Session& session);
 

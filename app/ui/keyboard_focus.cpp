@@ -17,8 +17,9 @@ std::vector<ImGuiWindow*> panels() {
   std::vector<ImGuiWindow*> out;
   for (ImGuiWindow* w : ImGui::GetCurrentContext()->Windows) {
     if (!w->WasActive || w->Hidden || w->IsFallbackWindow) continue;
-    if (w->Flags & (ImGuiWindowFlags_ChildWindow | ImGuiWindowFlags_Tooltip | ImGuiWindowFlags_Popup |
-                    ImGuiWindowFlags_NoNavInputs | ImGuiWindowFlags_NoNavFocus))
+    if (w->Flags &
+        (ImGuiWindowFlags_ChildWindow | ImGuiWindowFlags_Tooltip | ImGuiWindowFlags_Popup |
+         ImGuiWindowFlags_NoNavInputs | ImGuiWindowFlags_NoNavFocus))
       continue;
     out.push_back(w);
   }

@@ -14,7 +14,7 @@ namespace springlab::ui {
 
 struct KeyboardFocus {
   bool in_panels = false;  // the panels have the keys (navigation on)
-  bool editing = false;    // at the end of the last frame, a control was being used (Esc cancels it)
+  bool editing = false;  // at the end of the last frame, a control was being used (Esc cancels it)
 };
 
 // After ImGui::NewFrame and before the app's shortcuts: F6, Shift+F6, Ctrl+Tab, Esc and clicks

@@ -15,7 +15,8 @@ struct PanelsRegistry {
 };
 
 PanelsRegistry& registry() {
-  static PanelsRegistry r{{}, {{"mass-spring", &mass_spring_panels()}, {"inverse-kinematics", &ik_panels()}}};
+  static PanelsRegistry r{
+      {}, {{"mass-spring", &mass_spring_panels()}, {"inverse-kinematics", &ik_panels()}}};
   return r;
 }
 

@@ -21,14 +21,16 @@ namespace springlab::ui {
 struct KindPanels {
   // The simulation's controls, under the pickers: the row's picker, the transport and the clocks
   // (ui/widgets.hpp), and what the kind sets and says (`presenting`: presentation mode's fewer).
-  void (*controls)(app::Session& session, UiState& ui, const FrameStats& stats, const PanelLayout& layout, bool presenting);
+  void (*controls)(app::Session& session, UiState& ui, const FrameStats& stats,
+                   const PanelLayout& layout, bool presenting);
   // Under the controls: the kind's studies (their panels' buttons) and its compare choices.
   // (`scale`: the panels' scale, ui/layout.hpp.)
   void (*tools)(app::Session& session, UiState& ui, float scale);
   // The upright strip's tail, after its menu, play and step buttons.
   void (*strip)(app::Session& session, UiState& ui, float button);
   // The charts' panel: a lesson step's (`only`), or the kind's own.
-  void (*charts)(app::Session& session, float width, float height, bool presentation, const std::vector<LessonChart>& only);
+  void (*charts)(app::Session& session, float width, float height, bool presentation,
+                 const std::vector<LessonChart>& only);
   // The charts the browser's words describe (web/access.cpp).
   std::vector<chart::Chart> (*charts_said)(const app::Session& session);
   // The rows C sets side by side.
@@ -36,7 +38,8 @@ struct KindPanels {
   // The caption over a frame without panels, of the single view (compare mode's is every kind's:
   // overlay.cpp), from the scene's name ("slow": "0.42x real time" or ""), and a lane's progress
   // after its label in the legend (leading spaces included).
-  std::string (*caption)(const app::Session& session, const std::string& scene_name, const std::string& slow);
+  std::string (*caption)(const app::Session& session, const std::string& scene_name,
+                         const std::string& slow);
   std::string (*progress)(const app::Lane& lane);
 };
 

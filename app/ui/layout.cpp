@@ -9,8 +9,8 @@ namespace springlab::ui {
 namespace {
 // At scale 1: the gap between panels, Wide's left panel and charts (1280 x 720 holds them with
 // nothing cut off), the touch layouts' row (a 44-unit frame and its padding) and Side's panel.
-constexpr float kPad = 8.0f, kLeftWidth = 360.0f, kChartHeight = 230.0f, kRow = 60.0f, kSideWidth = 330.0f,
-                kStrip = 64.0f;
+constexpr float kPad = 8.0f, kLeftWidth = 360.0f, kChartHeight = 230.0f, kRow = 60.0f,
+                kSideWidth = 330.0f, kStrip = 64.0f;
 }  // namespace
 
 LayoutKind layout_kind(float w, float h) {
@@ -28,8 +28,8 @@ PanelLayout panel_layout(const UiState& ui, int width, int height) {
   const int scene_top = std::min(static_cast<int>(ui.band), height / 2);
   const float pad = kPad * s;
   const auto viewport = [](float x, float y, float w, float h) {
-    return draw::Viewport{static_cast<int>(x), static_cast<int>(y), std::max(0, static_cast<int>(w)),
-                          std::max(0, static_cast<int>(h))};
+    return draw::Viewport{static_cast<int>(x), static_cast<int>(y),
+                          std::max(0, static_cast<int>(w)), std::max(0, static_cast<int>(h))};
   };
   out.kind = ui.presentation ? LayoutKind::Wide : layout_kind(W / ui.scale, H / ui.scale);
   out.scene = {0, scene_top, width, height - scene_top};
@@ -64,17 +64,23 @@ PanelLayout panel_layout(const UiState& ui, int width, int height) {
       const float scene_h = std::max(0.41f * H, 0.5f * (H - band - row));
       out.scene = viewport(0, band, W, scene_h);
       const float below = band + scene_h;
-      if (ui.sheet_open) out.controls = {0, below, W, H - below};  // over the chart, never the scene
-      else if (H - row - below - 2 * pad >= 140.0f * s) out.charts = {pad, below + pad, W - 2 * pad, H - row - below - 2 * pad};
-      else out.scene = viewport(0, band, W, H - row - band);  // no room for a chart: the scene takes it
+      if (ui.sheet_open)
+        out.controls = {0, below, W, H - below};  // over the chart, never the scene
+      else if (H - row - below - 2 * pad >= 140.0f * s)
+        out.charts = {pad, below + pad, W - 2 * pad, H - row - below - 2 * pad};
+      else
+        out.scene =
+            viewport(0, band, W, H - row - band);  // no room for a chart: the scene takes it
       return out;
     }
     case LayoutKind::Side: {
       out.touch = true;
       const bool open = ui.side_open.value_or(ui.lesson.empty());
       const float panel = open ? std::min(kSideWidth * s, 0.42f * W) : kStrip * s;
-      if (open) out.controls = {0, band, panel, H - band};
-      else out.strip = {0, band, panel, H - band};
+      if (open)
+        out.controls = {0, band, panel, H - band};
+      else
+        out.strip = {0, band, panel, H - band};
       out.scene = viewport(panel, band, W - panel, H - band);
       return out;
     }

@@ -20,7 +20,8 @@ struct LessonBand {
   int step = 0;                   // from 0
   std::vector<double> durations;  // s, every step's
   std::string step_title, caption, prompt;
-  double elapsed = 0.0;  // s into the step: simulated time over the step's speed (paused, it stands still)
+  double elapsed =
+      0.0;  // s into the step: simulated time over the step's speed (paused, it stands still)
   bool interrupted = false;
   bool interactive = true;  // buttons (the app) or none (a video)
   bool last_lesson = true;  // no next lesson after this one
@@ -33,8 +34,9 @@ struct BandRequests {
 // The band's height at `scale`, in window units: a title row, the caption's lines (two at least,
 // so that the scene keeps its place from step to step; core/include/springlab/lesson.hpp limits a
 // caption to two at 1280 x 720), the prompt and the progress bar.
-float lesson_band_height(float scale, int caption_lines = 2, int title_rows = 1, int prompt_lines = 1,
-                         bool narrow = false);  // narrow: a phone's, the caption in the panels' font
+float lesson_band_height(
+    float scale, int caption_lines = 2, int title_rows = 1, int prompt_lines = 1,
+    bool narrow = false);  // narrow: a phone's, the caption in the panels' font
 
 // The height of `band` across a window `width` wide: a narrower window (a laptop's browser) wraps
 // the caption onto more lines, and the band grows to hold them rather than cut them off.

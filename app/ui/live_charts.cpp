@@ -28,8 +28,8 @@ const char* const kAxes = "xyz";  // not shown: the axes' letters
 
 }  // namespace
 
-chart::Series series(const std::string& label, const draw::Rgba& color, const app::Series& x, const app::Series& y,
-                     bool dashed) {
+chart::Series series(const std::string& label, const draw::Rgba& color, const app::Series& x,
+                     const app::Series& y, bool dashed) {
   chart::Series s;
   s.label = label;
   s.color = color;
@@ -46,8 +46,8 @@ chart::Series series(const std::string& label, const draw::Rgba& color, const ap
 
 chart::Chart energy_chart(const app::Session& session) {
   const bool compare = session.comparing();
-  const draw::Rgba white{0.95f, 0.95f, 0.95f, 1}, ke{1.0f, 0.55f, 0.25f, 1}, pe{0.45f, 0.7f, 1.0f, 1},
-      lost{0.7f, 0.7f, 0.7f, 1};
+  const draw::Rgba white{0.95f, 0.95f, 0.95f, 1}, ke{1.0f, 0.55f, 0.25f, 1},
+      pe{0.45f, 0.7f, 1.0f, 1}, lost{0.7f, 0.7f, 0.7f, 1};
   chart::Chart energy;
   energy.title = tr("Energy");
   energy.x.label = "t (s)";
@@ -69,12 +69,15 @@ chart::Chart energy_chart(const app::Session& session) {
     // for a step of one's own, whose damping is its own, not the scene's that this counts.
     const bool counted = lane.own.empty();
     if (counted) {
-      chart::Series kept = series(compare ? "" : tr("total + lost"), compare ? c : lost, h.t, h.total, true);
-      for (std::size_t k = 0; k < kept.y.size(); ++k) kept.y[k] += h.dissipated[h.dissipated.size() - kept.y.size() + k];
+      chart::Series kept =
+          series(compare ? "" : tr("total + lost"), compare ? c : lost, h.t, h.total, true);
+      for (std::size_t k = 0; k < kept.y.size(); ++k)
+        kept.y[k] += h.dissipated[h.dissipated.size() - kept.y.size() + k];
       energy.series.push_back(kept);
     }
     const std::size_t from = energy.series.size() - (compare ? 1 : 3) - (counted ? 1 : 0);
-    for (std::size_t k = from; k < energy.series.size(); ++k) mark_diverged(energy.series[k], lane, "J");
+    for (std::size_t k = from; k < energy.series.size(); ++k)
+      mark_diverged(energy.series[k], lane, "J");
   }
   return energy;
 }
@@ -87,13 +90,15 @@ chart::Chart position_chart(const app::Session& session) {
   position.y.label = std::string(1, kAxes[a]) + " (m)";
   position.end_labels = true;
   for (const app::Lane& lane : session.lanes()) {
-    position.series.push_back(series(app::lane_name(lane), draw::lane_color(lane), lane.history.t, lane.history.x));
+    position.series.push_back(
+        series(app::lane_name(lane), draw::lane_color(lane), lane.history.t, lane.history.x));
     position.series.back().mark = draw::lane_mark(lane);
     mark_diverged(position.series.back(), lane, "m");
   }
   if (session.primary().history.exact_x.size() > 0)
-    position.series.push_back(series(tr("exact"), draw::Rgba{0.95f, 0.95f, 0.95f, 1}, session.primary().history.t,
-                                     session.primary().history.exact_x, true));
+    position.series.push_back(series(tr("exact"), draw::Rgba{0.95f, 0.95f, 0.95f, 1},
+                                     session.primary().history.t, session.primary().history.exact_x,
+                                     true));
   return position;
 }
 
@@ -122,8 +127,9 @@ chart::Chart steps_chart(const app::Session& session) {
   for (const app::Lane& lane : session.lanes()) {
     if (!method_info(lane.sim.settings().method).adaptive()) continue;
     const app::History& h = lane.history;
-    chart::Series step = series(format_text(tr("%s step"), method_info(lane.sim.settings().method).name),
-                                draw::method_color(lane.sim.settings().method), h.t, h.step);
+    chart::Series step =
+        series(format_text(tr("%s step"), method_info(lane.sim.settings().method).name),
+               draw::method_color(lane.sim.settings().method), h.t, h.step);
     step.mark = draw::method_mark(lane.sim.settings().method);
     chart::Series rejected;
     rejected.label = tr("rejected");
@@ -136,7 +142,8 @@ chart::Chart steps_chart(const app::Session& session) {
         rejected.crossed.push_back(true);
       }
     }
-    for (double& y : step.y) y = y > 0.0 ? y : std::numeric_limits<double>::quiet_NaN();  // before the first step
+    for (double& y : step.y)
+      y = y > 0.0 ? y : std::numeric_limits<double>::quiet_NaN();  // before the first step
     steps.series.push_back(std::move(step));
     if (!rejected.x.empty()) steps.series.push_back(std::move(rejected));
   }
@@ -169,9 +176,10 @@ chart::Chart momentum_chart(const app::Session& session) {
   }
   if (!any) {
     chart.series.clear();
-    chart.title = free_body(session.primary().sim.model())
-                      ? tr("Momentum: a free body at rest (its P0 is taken once it moves)")
-                      : tr("Momentum: not a free body here (pins, gravity, drag or colliders act on it)");
+    chart.title =
+        free_body(session.primary().sim.model())
+            ? tr("Momentum: a free body at rest (its P0 is taken once it moves)")
+            : tr("Momentum: not a free body here (pins, gravity, drag or colliders act on it)");
     return chart;
   }
   chart::Series visible;

@@ -43,8 +43,10 @@ void gauge(app::Session& session, app::Lane& lane, float width, bool explain, bo
   const double fraction = said.fraction;
   const std::string& verdict = said.text;
   const std::string& momentum_line = said.momentum;
-  const ImVec4 color = said.tone == Tone::Safe ? kSafe : said.tone == Tone::Near ? kNear
-                       : said.tone == Tone::Beyond ? kBeyond : kNeutral;
+  const ImVec4 color = said.tone == Tone::Safe     ? kSafe
+                       : said.tone == Tone::Near   ? kNear
+                       : said.tone == Tone::Beyond ? kBeyond
+                                                   : kNeutral;
   const ImGuiStyle& style = ImGui::GetStyle();
   // The bars line up after the usual label ("Symplectic Euler"); a longer one pushes its bar on
   // ("Vertex block descent" was drawn under it).
@@ -61,8 +63,10 @@ void gauge(app::Session& session, app::Lane& lane, float width, bool explain, bo
   const float bar_h = line_h * 0.7f;
   const ImVec2 q(p.x, p.y + 0.5f * (line_h - bar_h));
   ImDrawList* dl = ImGui::GetWindowDrawList();
-  dl->AddRectFilled(q, ImVec2(q.x + bar_w, q.y + bar_h), ImGui::GetColorU32(ImGuiCol_FrameBg), 3.0f);
-  dl->AddRectFilled(q, ImVec2(q.x + bar_w * static_cast<float>(fraction), q.y + bar_h), ImGui::GetColorU32(color), 3.0f);
+  dl->AddRectFilled(q, ImVec2(q.x + bar_w, q.y + bar_h), ImGui::GetColorU32(ImGuiCol_FrameBg),
+                    3.0f);
+  dl->AddRectFilled(q, ImVec2(q.x + bar_w * static_cast<float>(fraction), q.y + bar_h),
+                    ImGui::GetColorU32(color), 3.0f);
   if (limit && std::isfinite(limit->h) && limit->h > 0.0) {
     const float x = q.x + bar_w / 1.5f;
     dl->AddLine(ImVec2(x, q.y - 3), ImVec2(x, q.y + bar_h + 3), IM_COL32_WHITE, 2.0f);
@@ -77,12 +81,13 @@ void gauge(app::Session& session, app::Lane& lane, float width, bool explain, bo
   if (touch) text_wrapped_disabled(tr(m.stability));  // (no hover under a finger)
   if (!momentum_line.empty()) text_wrapped_disabled(momentum_line);
   if (analysis && !analysis->oscillates()) {
-    text_wrapped_disabled(format_text(tr("no oscillating modes (%s); %s"), tr(analysis->no_modes_reason()).c_str(),
+    text_wrapped_disabled(format_text(tr("no oscillating modes (%s); %s"),
+                                      tr(analysis->no_modes_reason()).c_str(),
                                       describe(*limit).c_str()));
   } else if (limit->mode && std::isfinite(limit->h) && limit->h > 0.0) {
     char mode[96];
-    std::snprintf(mode, sizeof mode, tr(" (its mode: %.4g rad/s, damping ratio %.2g)"), limit->mode->w,
-                  limit->mode->damping_ratio());
+    std::snprintf(mode, sizeof mode, tr(" (its mode: %.4g rad/s, damping ratio %.2g)"),
+                  limit->mode->w, limit->mode->damping_ratio());
     text_wrapped_disabled(describe(*limit) + mode);
   } else {
     text_wrapped_disabled(describe(*limit));
@@ -114,7 +119,8 @@ namespace {
 // The charts: energy, the watched particle's position (with the exact solution) and its phase
 // plot side by side; one (energy) in presentation mode; in a lesson, the ones its step shows.
 // For a class (presentation, lessons) the lines are thicker; the stability regions keep theirs.
-void mass_spring_charts(app::Session& session, float width, float height, bool presentation, const std::vector<LessonChart>& only) {
+void mass_spring_charts(app::Session& session, float width, float height, bool presentation,
+                        const std::vector<LessonChart>& only) {
   std::vector<chart::Chart> shown;
   std::string none;
   const float line = presentation || !only.empty() ? 3.0f : 0.0f;
@@ -143,7 +149,6 @@ void mass_spring_charts(app::Session& session, float width, float height, bool p
   charts_row(shown, width, height);
 }
 
-
 // The sliders of the physics; `presenting`: only dt, k_s and k_d (presentation mode).
 void parameters(app::Session& session, UiState& ui, bool touch, bool presenting) {
   Simulation& sim = session.lanes()[0].sim;
@@ -156,7 +161,8 @@ void parameters(app::Session& session, UiState& ui, bool touch, bool presenting)
     if (slider(c.label.c_str(), v, c.lo, c.hi, c.log, touch, c.format)) c.set(session, v);
   };
   std::size_t next = 0;
-  for (; next < controls.size() && std::string_view(controls[next].id) != "mass"; ++next) draw(controls[next]);
+  for (; next < controls.size() && std::string_view(controls[next].id) != "mass"; ++next)
+    draw(controls[next]);
   // Sub-steps: chosen from each lane's limit ("auto (N)"), until the slider fixes them.
   int substeps = sim.settings().substeps;
   std::string shown = std::to_string(substeps);
@@ -170,16 +176,19 @@ void parameters(app::Session& session, UiState& ui, bool touch, bool presenting)
     if (bound) shown += tr(", bound");  // from the quick bound until the analysis ends
     shown = format_text(tr("auto (%s)"), shown.c_str());
   }
-  ImGui::PushItemWidth(ImGui::CalcItemWidth() - ImGui::CalcTextSize(tr("auto")).x - ImGui::GetFrameHeight() -
-                       2 * ImGui::GetStyle().ItemInnerSpacing.x);
-  if (ImGui::SliderInt("##substeps", &substeps, 1, 256, shown.c_str(), ImGuiSliderFlags_Logarithmic))
+  ImGui::PushItemWidth(ImGui::CalcItemWidth() - ImGui::CalcTextSize(tr("auto")).x -
+                       ImGui::GetFrameHeight() - 2 * ImGui::GetStyle().ItemInnerSpacing.x);
+  if (ImGui::SliderInt("##substeps", &substeps, 1, 256, shown.c_str(),
+                       ImGuiSliderFlags_Logarithmic))
     session.set_substeps(substeps);
   ImGui::PopItemWidth();
   ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
   bool automatic = session.auto_substeps();
   if (ImGui::Checkbox(tr("auto"), &automatic)) {
-    if (automatic) session.set_auto_substeps();
-    else session.set_substeps(sim.settings().substeps);
+    if (automatic)
+      session.set_auto_substeps();
+    else
+      session.set_substeps(sim.settings().substeps);
   }
   ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
   ImGui::TextUnformatted(tr("sub-steps"));
@@ -187,14 +196,17 @@ void parameters(app::Session& session, UiState& ui, bool touch, bool presenting)
     if (lane.sim.auto_substeps() && lane.sim.substeps_capped() && lane.analysis) {
       const bool hopeless = lane.analysis->limit(lane.sim.settings().method).h == 0.0;
       text_wrapped(app::lane_name(lane) + ": " +
-                       (hopeless ? tr("unstable at any step: sub-steps cannot help") : tr("sub-steps capped: still past its limit")),
+                       (hopeless ? tr("unstable at any step: sub-steps cannot help")
+                                 : tr("sub-steps capped: still past its limit")),
                    kNear);
       break;
     }
   if (presenting) return;
   for (; next < controls.size(); ++next) draw(controls[next]);
-  if (sim.model().has_colliders() && slider(tr("friction"), mu, 0.0, 2.0, false, touch, "%.2f")) session.set_friction(mu);
-  if (method_info(session.method()).adaptive() && slider(tr("tolerance"), tol, 1e-10, 1e-1, true, touch, "%.1e"))
+  if (sim.model().has_colliders() && slider(tr("friction"), mu, 0.0, 2.0, false, touch, "%.2f"))
+    session.set_friction(mu);
+  if (method_info(session.method()).adaptive() &&
+      slider(tr("tolerance"), tol, 1e-10, 1e-1, true, touch, "%.1e"))
     session.set_tolerance(tol);
   if (method_info(session.method()).family == MethodFamily::Iterative) {
     // Iterations a step: the solver error against the cost (XPBD: passes over the springs).
@@ -204,7 +216,8 @@ void parameters(app::Session& session, UiState& ui, bool touch, bool presenting)
   }
   int speed_exp = static_cast<int>(std::lround(std::log2(session.speed())));
   const char* speeds[] = {"1/16", "1/8", "1/4", "1/2", "1", "2", "4"};
-  if (ImGui::SliderInt(tr("speed"), &speed_exp, -4, 2, speeds[speed_exp + 4])) session.set_speed(std::pow(2.0, speed_exp));
+  if (ImGui::SliderInt(tr("speed"), &speed_exp, -4, 2, speeds[speed_exp + 4]))
+    session.set_speed(std::pow(2.0, speed_exp));
 }
 
 // The mass-spring kind's strip tail: the method and dt (the strip is the touch layouts' own).
@@ -213,25 +226,30 @@ void mass_spring_strip(app::Session& session, UiState& ui, float button) {
   // The method's combo takes what the dt slider leaves: at least its two buttons and a
   // button's width of slider (a phone's row: they ran off its right edge).
   const float left = ImGui::GetContentRegionAvail().x;
-  const float dt_least = 3.0f * button + 2.0f * ImGui::GetStyle().ItemInnerSpacing.x + ImGui::GetStyle().ItemSpacing.x;
+  const float dt_least =
+      3.0f * button + 2.0f * ImGui::GetStyle().ItemInnerSpacing.x + ImGui::GetStyle().ItemSpacing.x;
   ImGui::SetNextItemWidth(std::max(button, std::min(0.45f * left, left - dt_least)));
   row_picker(session, "##method", false);
   ImGui::SameLine();
   double dt = session.primary().sim.settings().dt;
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x);
-  if (slider("##dt", dt, ui.ranges.dt / 100, std::min(1.0, std::max(0.1, ui.ranges.dt * 100)), true, true, "dt %.3g"))  // symbols
+  if (slider("##dt", dt, ui.ranges.dt / 100, std::min(1.0, std::max(0.1, ui.ranges.dt * 100)), true,
+             true, "dt %.3g"))  // symbols
     session.set_dt(dt);
 }
 
 // The mass-spring kind's controls: the method, play and step, the clocks, each lane's stability
 // gauge and the parameters.
-void mass_spring_controls(app::Session& session, UiState& ui, const FrameStats& stats, const PanelLayout& layout, bool presenting) {
+void mass_spring_controls(app::Session& session, UiState& ui, const FrameStats& stats,
+                          const PanelLayout& layout, bool presenting) {
   row_picker(session, tr("method"), true);
   transport(session);
   clocks(session, stats);
   // Stability: the gauge of each lane, under the method it judges.
-  const float inner_w = layout.controls.w - 2 * ImGui::GetStyle().WindowPadding.x - ImGui::GetStyle().ScrollbarSize;
-  for (app::Lane& lane : session.lanes()) gauge(session, lane, inner_w, !session.comparing(), layout.touch);
+  const float inner_w =
+      layout.controls.w - 2 * ImGui::GetStyle().WindowPadding.x - ImGui::GetStyle().ScrollbarSize;
+  for (app::Lane& lane : session.lanes())
+    gauge(session, lane, inner_w, !session.comparing(), layout.touch);
   ImGui::Separator();
   parameters(session, ui, layout.touch, presenting);
 }
@@ -239,14 +257,19 @@ void mass_spring_controls(app::Session& session, UiState& ui, const FrameStats& 
 // The mass-spring kind's tools: the accuracy, region and tableau panels' buttons and the compare
 // choices.
 void mass_spring_tools(app::Session& session, UiState& ui, float scale) {
-  if (ImGui::Button(ui.accuracy ? tr("Hide accuracy (A)") : tr("Accuracy vs cost (A)"))) ui.accuracy = !ui.accuracy;
+  if (ImGui::Button(ui.accuracy ? tr("Hide accuracy (A)") : tr("Accuracy vs cost (A)")))
+    ui.accuracy = !ui.accuracy;
   ImGui::SameLine();
-  if (ImGui::Button(ui.region ? tr("Hide region (G)") : tr("Stability region (G)"))) ui.region = !ui.region;
-  if (ImGui::Button(ui.tableau ? tr("Hide your method (Y)") : tr("Your method (Y)"))) ui.tableau = !ui.tableau;
+  if (ImGui::Button(ui.region ? tr("Hide region (G)") : tr("Stability region (G)")))
+    ui.region = !ui.region;
+  if (ImGui::Button(ui.tableau ? tr("Hide your method (Y)") : tr("Your method (Y)")))
+    ui.tableau = !ui.tableau;
   if (ImGui::CollapsingHeader(tr("Compare methods"))) {
     if (ImGui::Button(session.comparing() ? tr("Single view (C)") : tr("Compare (C)"))) {
-      if (session.comparing()) session.set_compare({});
-      else if (compare_methods(ui).size() >= 2) session.set_compare(compare_methods(ui));
+      if (session.comparing())
+        session.set_compare({});
+      else if (compare_methods(ui).size() >= 2)
+        session.set_compare(compare_methods(ui));
     }
     ImGui::SameLine();
     ImGui::TextDisabled(tr("tick 2 to 4:"));
@@ -267,7 +290,8 @@ void mass_spring_tools(app::Session& session, UiState& ui, float scale) {
 
 // The charts the browser's words describe: energy, position and phase, and a free body's momentum.
 std::vector<chart::Chart> mass_spring_charts_said(const app::Session& session) {
-  std::vector<chart::Chart> out = {energy_chart(session), position_chart(session), phase_chart(session)};
+  std::vector<chart::Chart> out = {energy_chart(session), position_chart(session),
+                                   phase_chart(session)};
   if (free_body(session.primary().sim.model())) out.push_back(momentum_chart(session));
   return out;
 }
@@ -284,9 +308,10 @@ std::vector<int> mass_spring_compare_choice(const app::Session& session, const U
 }  // namespace
 
 const KindPanels& mass_spring_panels() {
-  static const KindPanels panels{mass_spring_controls,     mass_spring_tools,          mass_spring_strip,
-                                 mass_spring_charts,       mass_spring_charts_said,    mass_spring_compare_choice,
-                                 mass_spring_caption,      mass_spring_progress};
+  static const KindPanels panels{mass_spring_controls,    mass_spring_tools,
+                                 mass_spring_strip,       mass_spring_charts,
+                                 mass_spring_charts_said, mass_spring_compare_choice,
+                                 mass_spring_caption,     mass_spring_progress};
   return panels;
 }
 

@@ -1,5 +1,4 @@
 #include "ui/overlay.hpp"
-#include "ui/kind_panels.hpp"
 
 #include <imgui.h>
 
@@ -10,18 +9,20 @@
 #include <vector>
 
 #include "chart/imgui_chart.hpp"
+#include "chart/text_wrap.hpp"
 #include "draw/camera.hpp"
 #include "draw/marks.hpp"
-#include "chart/text_wrap.hpp"
 #include "draw/palette.hpp"
 #include "draw/scene_frame.hpp"
 #include "springlab/text.hpp"
+#include "ui/kind_panels.hpp"
 
 namespace springlab::ui {
 
 namespace {
-ImU32 u32(const draw::Rgba& c) { return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, c.a)); }
-
+ImU32 u32(const draw::Rgba& c) {
+  return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, c.a));
+}
 
 const ImU32 kText = IM_COL32(240, 242, 245, 255), kBack = IM_COL32(10, 12, 14, 190),
             kSeparator = IM_COL32(90, 96, 108, 255);
@@ -35,11 +36,13 @@ struct Legend {
   std::vector<int> lanes;
   std::vector<std::string> rows;  // wrapped to the room there is
   std::vector<float> tops;        // each row's top, from the first's
-  ImVec2 at;     // the first row's swatch
-  ImVec4 box;    // its background: x0, y0, x1, y1
+  ImVec2 at;                      // the first row's swatch
+  ImVec4 box;                     // its background: x0, y0, x1, y1
 };
 
-float swatch_width(float scale) { return 22.0f * scale; }
+float swatch_width(float scale) {
+  return 22.0f * scale;
+}
 
 // "; drawn as at 1.53 s" for a lane drawn as its last sane state, from a time before it diverged.
 std::string drawn_as(const app::Lane& lane) {
@@ -55,8 +58,8 @@ std::string wrapped(const std::string& text, float width) {
   return wrap_text(text, ImGui::GetFont(), ImGui::GetFontSize(), std::max(width, 1.0f));
 }
 
-Legend legend_of(const app::Session& session, const std::vector<int>& lanes, const draw::Viewport& viewport,
-                 bool right, float scale) {
+Legend legend_of(const app::Session& session, const std::vector<int>& lanes,
+                 const draw::Viewport& viewport, bool right, float scale) {
   const float pad = 10.0f * scale, spacing = ImGui::GetStyle().ItemSpacing.y;
   const float swatch = swatch_width(scale);
   const float room = viewport.width - 2.0f * pad - 12.0f - swatch - 10.0f * scale;
@@ -66,7 +69,10 @@ Legend legend_of(const app::Session& session, const std::vector<int>& lanes, con
   for (const int k : lanes) {
     const app::Lane& lane = session.lanes()[k];
     // A view's own title says too what it draws of a lane that diverged.
-    const std::string row = wrapped(app::lane_label(lane) + kind_panels(session.kind()).progress(lane) + (right ? "" : drawn_as(lane)), room);
+    const std::string row =
+        wrapped(app::lane_label(lane) + kind_panels(session.kind()).progress(lane) +
+                    (right ? "" : drawn_as(lane)),
+                room);
     const ImVec2 size = ImGui::CalcTextSize(row.c_str());
     width = std::max(width, size.x);
     legend.tops.push_back(height);
@@ -76,39 +82,45 @@ Legend legend_of(const app::Session& session, const std::vector<int>& lanes, con
   const float inner = swatch + 10.0f * scale + width;
   const float x = right ? viewport.x + viewport.width - pad - inner : viewport.x + pad + 8.0f;
   legend.at = ImVec2(x, viewport.y + pad);
-  legend.box = ImVec4(legend.at.x - 8, legend.at.y - 4, legend.at.x + inner + 4, legend.at.y + height + 2);
+  legend.box =
+      ImVec4(legend.at.x - 8, legend.at.y - 4, legend.at.x + inner + 4, legend.at.y + height + 2);
   return legend;
 }
 
 void draw_legend(const app::Session& session, const Legend& legend, float scale) {
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
   const float line = ImGui::GetTextLineHeight(), swatch = swatch_width(scale);
-  dl->AddRectFilled(ImVec2(legend.box.x, legend.box.y), ImVec2(legend.box.z, legend.box.w), kBack, 4.0f);
+  dl->AddRectFilled(ImVec2(legend.box.x, legend.box.y), ImVec2(legend.box.z, legend.box.w), kBack,
+                    4.0f);
   for (std::size_t k = 0; k < legend.rows.size(); ++k) {
     const app::Lane& lane = session.lanes()[legend.lanes[k]];
     const float y = legend.at.y + legend.tops[k];
     const draw::Rgba c = draw::lane_color(lane);
-    dl->AddLine(ImVec2(legend.at.x, y + 0.5f * line), ImVec2(legend.at.x + swatch, y + 0.5f * line), u32(c),
-                4.0f * scale);
-    chart::draw_mark(dl, draw::lane_mark(lane), ImVec2(legend.at.x + 0.5f * swatch, y + 0.5f * line), 4.5f * scale, u32(c));
-    dl->AddText(ImVec2(legend.at.x + swatch + 8.0f * scale, y), lane.sim.trouble() ? u32(draw::kDiverged) : kText,
-                legend.rows[k].c_str());
+    dl->AddLine(ImVec2(legend.at.x, y + 0.5f * line), ImVec2(legend.at.x + swatch, y + 0.5f * line),
+                u32(c), 4.0f * scale);
+    chart::draw_mark(dl, draw::lane_mark(lane),
+                     ImVec2(legend.at.x + 0.5f * swatch, y + 0.5f * line), 4.5f * scale, u32(c));
+    dl->AddText(ImVec2(legend.at.x + swatch + 8.0f * scale, y),
+                lane.sim.trouble() ? u32(draw::kDiverged) : kText, legend.rows[k].c_str());
   }
 }
 }  // namespace
 
 // The mass-spring kind's words (kind_panels.hpp): its method and time, or where it diverged.
-std::string mass_spring_caption(const app::Session& session, const std::string& scene_name, const std::string& slow) {
+std::string mass_spring_caption(const app::Session& session, const std::string& scene_name,
+                                const std::string& slow) {
   char s[320];
-  std::snprintf(s, sizeof s, "%s  |  %s  |  t = %.3f s%s%s", scene_name.c_str(), app::lane_label(session.primary()).c_str(),
-                session.primary().sim.state().t, slow.empty() ? "" : "  |  ", slow.c_str());
+  std::snprintf(s, sizeof s, "%s  |  %s  |  t = %.3f s%s%s", scene_name.c_str(),
+                app::lane_label(session.primary()).c_str(), session.primary().sim.state().t,
+                slow.empty() ? "" : "  |  ", slow.c_str());
   return s;
 }
 
 std::string mass_spring_progress(const app::Lane& lane) {
   char s[96];
   if (const Divergence* trouble = lane.sim.trouble())
-    std::snprintf(s, sizeof s, tr("  %s at t = %.3g s"), trouble->unstable ? tr("went unstable") : tr("diverged"), trouble->t);
+    std::snprintf(s, sizeof s, tr("  %s at t = %.3g s"),
+                  trouble->unstable ? tr("went unstable") : tr("diverged"), trouble->t);
   else
     std::snprintf(s, sizeof s, "  t = %.3f s", lane.sim.state().t);
   return s;
@@ -121,8 +133,9 @@ std::string realtime_text(double realtime) {
   return s;
 }
 
-void draw_overlay(const app::Session& session, const std::vector<draw::LaneView>& views, const draw::Viewport& viewport,
-                  const std::string& scene_name, const OverlayOptions& options) {
+void draw_overlay(const app::Session& session, const std::vector<draw::LaneView>& views,
+                  const draw::Viewport& viewport, const std::string& scene_name,
+                  const OverlayOptions& options) {
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
   const float scale = options.scale;
   const float pad = 10.0f * scale;
@@ -133,7 +146,8 @@ void draw_overlay(const app::Session& session, const std::vector<draw::LaneView>
   if (views.size() > 1)
     for (const draw::LaneView& v : views) {
       const draw::Viewport& p = v.viewport;
-      dl->AddRect(ImVec2(p.x - 1.0f, p.y - 1.0f), ImVec2(p.x + p.width + 1.0f, p.y + p.height + 1.0f), kSeparator);
+      dl->AddRect(ImVec2(p.x - 1.0f, p.y - 1.0f),
+                  ImVec2(p.x + p.width + 1.0f, p.y + p.height + 1.0f), kSeparator);
     }
 
   if (options.caption) {
@@ -143,28 +157,34 @@ void draw_overlay(const app::Session& session, const std::vector<draw::LaneView>
       std::snprintf(s, sizeof s, "%s  |  %s  |  t = %.3f s%s%s", scene_name.c_str(), tr("compare"),
                     session.simulated_target(), slow.empty() ? "" : "  |  ", slow.c_str());
     else
-      std::snprintf(s, sizeof s, "%s", kind_panels(session.kind()).caption(session, scene_name, slow).c_str());
+      std::snprintf(s, sizeof s, "%s",
+                    kind_panels(session.kind()).caption(session, scene_name, slow).c_str());
     const ImVec2 size = ImGui::CalcTextSize(s);
     const ImVec2 p(viewport.x + pad, viewport.y + viewport.height - pad - size.y);
-    dl->AddRectFilled(ImVec2(p.x - 6, p.y - 3), ImVec2(p.x + size.x + 6, p.y + size.y + 3), back, 4.0f);
+    dl->AddRectFilled(ImVec2(p.x - 6, p.y - 3), ImVec2(p.x + size.x + 6, p.y + size.y + 3), back,
+                      4.0f);
     dl->AddText(p, text, s);
   }
 
   // A lane waiting for its stability analysis (its sub-steps are chosen from it).
   bool waiting = false;
-  for (const app::Lane& lane : session.lanes()) waiting |= session.background_analysis() && lane.waiting();
+  for (const app::Lane& lane : session.lanes())
+    waiting |= session.background_analysis() && lane.waiting();
   if (waiting) {
     const char* s = tr("analysing stability: choosing the sub-steps...");
     const ImVec2 size = ImGui::CalcTextSize(s);
-    const ImVec2 p(viewport.x + 0.5f * (viewport.width - size.x), viewport.y + 0.45f * viewport.height);
-    dl->AddRectFilled(ImVec2(p.x - 8, p.y - 4), ImVec2(p.x + size.x + 8, p.y + size.y + 4), back, 4.0f);
+    const ImVec2 p(viewport.x + 0.5f * (viewport.width - size.x),
+                   viewport.y + 0.45f * viewport.height);
+    dl->AddRectFilled(ImVec2(p.x - 8, p.y - 4), ImVec2(p.x + size.x + 8, p.y + size.y + 4), back,
+                      4.0f);
     dl->AddText(p, text, s);
   }
 
   // The legends: one for the lanes together, or a view's own title.
   std::vector<Legend> legends;
   if (session.comparing())
-    for (const draw::LaneView& v : views) legends.push_back(legend_of(session, v.lanes, v.viewport, views.size() == 1, scale));
+    for (const draw::LaneView& v : views)
+      legends.push_back(legend_of(session, v.lanes, v.viewport, views.size() == 1, scale));
   // A red label beside each lane that diverged, at the top of its last sane state (one under
   // another, or under the legend, where they would overlap), with the time it is drawn at; apart,
   // its view's title says it.
@@ -180,7 +200,8 @@ void draw_overlay(const app::Session& session, const std::vector<draw::LaneView>
                   trouble->unstable ? tr("went unstable") : tr("diverged"), trouble->t);
     const draw::Viewport& vp = view->viewport;
     const std::string label = wrapped(s + drawn_as(lane), vp.width - 2.0f * pad - 10.0f);
-    const Eigen::Vector3d at = draw::project(view->view, draw::label_anchor(lane), vp.width, vp.height);
+    const Eigen::Vector3d at =
+        draw::project(view->view, draw::label_anchor(lane), vp.width, vp.height);
     const ImVec2 size = ImGui::CalcTextSize(label.c_str());
     float x = vp.x + static_cast<float>(at.x()) - 0.5f * size.x;
     float y = vp.y + static_cast<float>(at.y()) - size.y - 8.0f * scale;

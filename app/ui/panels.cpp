@@ -42,11 +42,13 @@ constexpr ImGuiWindowFlags kPanel = ImGuiWindowFlags_NoSavedSettings | ImGuiWind
 // background: filling them again would only cost time (on a software rasteriser, most of a frame).
 constexpr ImGuiWindowFlags kDocked = kPanel | ImGuiWindowFlags_NoBackground;
 
-void region_window(app::Session& session, UiState& ui, float x, float y, float width, float height) {
+void region_window(app::Session& session, UiState& ui, float x, float y, float width,
+                   float height) {
   if (!ui.region) return;
   ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Appearing);
   ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Appearing);
-  if (!ImGui::Begin((tr("Stability region (G)") + std::string("###region")).c_str(), &ui.region, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
+  if (!ImGui::Begin((tr("Stability region (G)") + std::string("###region")).c_str(), &ui.region,
+                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
     ImGui::End();
     return;
   }
@@ -79,16 +81,21 @@ std::vector<Method> compare_methods(const UiState& ui) {
 }
 
 namespace {
-float layout_scale(const UiState& ui) { return ui.scale * (ui.presentation ? kPresentationScale : 1.0f); }
+float layout_scale(const UiState& ui) {
+  return ui.scale * (ui.presentation ? kPresentationScale : 1.0f);
+}
 }  // namespace
 
 draw::Viewport scene_viewport(const UiState& ui, int width, int height) {
   return panel_layout(ui, width, height).scene;
 }
 
-Rect lesson_chart_rect(const UiState& ui, const draw::Viewport& scene, int width, int height, float scale) {
+Rect lesson_chart_rect(const UiState& ui, const draw::Viewport& scene, int width, int height,
+                       float scale) {
   const Rect strip = panel_layout(ui, width, height).strip;
-  const float foot = !strip.empty() && strip.y > static_cast<float>(scene.y) ? strip.y : static_cast<float>(height);
+  const float foot = !strip.empty() && strip.y > static_cast<float>(scene.y)
+                         ? strip.y
+                         : static_cast<float>(height);
   const float pad = 8.0f * scale, x = static_cast<float>(scene.x), y = static_cast<float>(scene.y);
   return {x + pad, y + pad, static_cast<float>(width) - x - 2.0f * pad, foot - y - 2.0f * pad};
 }
@@ -101,18 +108,22 @@ void strip(app::Session& session, UiState& ui, const PanelLayout& layout) {
   const Rect& r = layout.strip;
   ImGui::SetNextWindowPos(ImVec2(r.x, r.y));
   ImGui::SetNextWindowSize(ImVec2(r.w, r.h));
-  ImGui::Begin("##strip", nullptr, kPanel | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar);
+  ImGui::Begin("##strip", nullptr,
+               kPanel | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar);
   const bool row = layout.kind == LayoutKind::Upright;
   const float button = ImGui::GetFrameHeight();
   const auto next = [&] {
     if (row) ImGui::SameLine();
   };
   if (ImGui::Button("\u2261", ImVec2(button, button))) {  // the menu: all the controls
-    if (row) ui.sheet_open = true;
-    else ui.side_open = true;
+    if (row)
+      ui.sheet_open = true;
+    else
+      ui.side_open = true;
   }
   next();
-  if (ImGui::Button(session.paused() ? ">" : "||", ImVec2(button, button))) session.set_paused(!session.paused());
+  if (ImGui::Button(session.paused() ? ">" : "||", ImVec2(button, button)))
+    session.set_paused(!session.paused());
   next();
   if (ImGui::Button("S", ImVec2(button, button))) {
     session.set_paused(true);
@@ -135,7 +146,8 @@ void pickers(const UiState& ui, Requests& requests) {
   if (!ui.lessons.empty()) {
     std::string current = tr("(none: explore freely)");
     // (Its number and title where they fit the box, else "4 of 13": never a title cut mid-word.)
-    const float room = ImGui::CalcItemWidth() - ImGui::GetFrameHeight() - 2.0f * ImGui::GetStyle().FramePadding.x;
+    const float room =
+        ImGui::CalcItemWidth() - ImGui::GetFrameHeight() - 2.0f * ImGui::GetStyle().FramePadding.x;
     for (std::size_t k = 0; k < ui.lessons.size(); ++k)
       if (ui.lessons[k].first == ui.lesson) {
         current = std::to_string(k + 1) + "  " + tr(ui.lessons[k].second);
@@ -149,7 +161,8 @@ void pickers(const UiState& ui, Requests& requests) {
       if (ImGui::Selectable(tr("(none: explore freely)"), ui.lesson.empty())) requests.lesson = "";
       for (std::size_t k = 0; k < ui.lessons.size(); ++k) {
         const std::string label = std::to_string(k + 1) + "  " + tr(ui.lessons[k].second);
-        if (ImGui::Selectable(label.c_str(), ui.lessons[k].first == ui.lesson)) requests.lesson = ui.lessons[k].first;
+        if (ImGui::Selectable(label.c_str(), ui.lessons[k].first == ui.lesson))
+          requests.lesson = ui.lessons[k].first;
       }
       ImGui::EndCombo();
     }
@@ -159,7 +172,8 @@ void pickers(const UiState& ui, Requests& requests) {
 // The scene's description: its first sentence, the rest on hover (on touch, all of it).
 void about(const app::Session& session, float scale, bool touch) {
   const std::string text = tr(session.scene().description);
-  const std::size_t stop = touch ? std::string::npos : text.find(". ");  // (touch: all of it, no hover)
+  const std::size_t stop =
+      touch ? std::string::npos : text.find(". ");  // (touch: all of it, no hover)
   text_wrapped_disabled(stop == std::string::npos ? text : text.substr(0, stop + 1) + " (...)");
   if (ImGui::IsItemHovered() && stop != std::string::npos) {
     ImGui::BeginTooltip();
@@ -183,8 +197,10 @@ void particle_by_keys(app::Session& session, UiState& ui) {
   if (ImGui::Button(tr("Let go"))) return release(session);
   ImGui::PushButtonRepeat(true);
   const std::tuple<const char*, ImGuiDir, double, double> arrows[] = {
-      {"##left", ImGuiDir_Left, -1, 0}, {"##right", ImGuiDir_Right, 1, 0},
-      {"##up", ImGuiDir_Up, 0, 1}, {"##down", ImGuiDir_Down, 0, -1}};
+      {"##left", ImGuiDir_Left, -1, 0},
+      {"##right", ImGuiDir_Right, 1, 0},
+      {"##up", ImGuiDir_Up, 0, 1},
+      {"##down", ImGuiDir_Down, 0, -1}};
   for (const auto& [id, dir, dx, dy] : arrows) {
     ImGui::SameLine();
     if (ImGui::ArrowButton(id, dir)) nudge(session, dx, dy);
@@ -194,11 +210,14 @@ void particle_by_keys(app::Session& session, UiState& ui) {
 
 // Below the controls: what a frame costs, the kind's tools (its studies and compare choices), a
 // particle by keys and the view and files.
-void tools(app::Session& session, UiState& ui, const FrameStats& stats, float scale, bool touch, Requests& requests) {
+void tools(app::Session& session, UiState& ui, const FrameStats& stats, float scale, bool touch,
+           Requests& requests) {
   if (stats.timed)
-    ImGui::TextDisabled(tr("a frame: %.1f ms simulating, %.1f drawing"), stats.sim_ms, stats.draw_ms);
+    ImGui::TextDisabled(tr("a frame: %.1f ms simulating, %.1f drawing"), stats.sim_ms,
+                        stats.draw_ms);
   else
-    ImGui::TextDisabled(tr("a frame: %lld force evaluations"), static_cast<long long>(stats.force_evals));
+    ImGui::TextDisabled(tr("a frame: %lld force evaluations"),
+                        static_cast<long long>(stats.force_evals));
   // Compare: each lane's part of it, in its colour, and how the lanes are shown.
   if (session.comparing()) {
     for (std::size_t k = 0; k < session.lanes().size() && k < stats.lanes.size(); ++k) {
@@ -210,10 +229,12 @@ void tools(app::Session& session, UiState& ui, const FrameStats& stats, float sc
       if (lane.sim.diverged())
         std::snprintf(line, sizeof line, tr("%s: none (it diverged)"), label.c_str());
       else if (work.solver_iterations > 0)
-        std::snprintf(line, sizeof line, tr("%s: %lld force evaluations + %lld solver iterations"), label.c_str(),
-                      static_cast<long long>(work.force_evals), static_cast<long long>(work.solver_iterations));
+        std::snprintf(line, sizeof line, tr("%s: %lld force evaluations + %lld solver iterations"),
+                      label.c_str(), static_cast<long long>(work.force_evals),
+                      static_cast<long long>(work.solver_iterations));
       else
-        std::snprintf(line, sizeof line, tr("%s: %lld force evaluations"), label.c_str(), static_cast<long long>(work.force_evals));
+        std::snprintf(line, sizeof line, tr("%s: %lld force evaluations"), label.c_str(),
+                      static_cast<long long>(work.force_evals));
       ImGui::Indent();
       text_wrapped(line, colour);
       ImGui::Unindent();
@@ -229,7 +250,8 @@ void tools(app::Session& session, UiState& ui, const FrameStats& stats, float sc
   kind_panels(session.kind()).tools(session, ui, scale);
   if (ImGui::CollapsingHeader(tr("A particle by keys"))) particle_by_keys(session, ui);
   if (ImGui::CollapsingHeader(tr("View and files"))) {
-    ImGui::InputTextWithHint("##open", tr("a scene file (or drop one)"), ui.open_path, sizeof ui.open_path);
+    ImGui::InputTextWithHint("##open", tr("a scene file (or drop one)"), ui.open_path,
+                             sizeof ui.open_path);
     ImGui::SameLine();
     if (ImGui::Button(tr("Open")) && ui.open_path[0]) requests.load = std::string(ui.open_path);
     ImGui::Checkbox(tr("springs"), &ui.view.springs);
@@ -239,32 +261,39 @@ void tools(app::Session& session, UiState& ui, const FrameStats& stats, float sc
     ImGui::Checkbox(tr("surface"), &ui.view.surfaces);
     ImGui::Checkbox(tr("the limiting mode (M)"), &ui.view.mode);
     double strain = ui.view.strain_scale;
-    if (slider(tr("strain scale"), strain, 1e-3, 0.5, true, touch, "+-%.3f")) ui.view.strain_scale = strain;
+    if (slider(tr("strain scale"), strain, 1e-3, 0.5, true, touch, "+-%.3f"))
+      ui.view.strain_scale = strain;
     ImGui::Checkbox(tr("presentation (P)"), &ui.presentation);
     // The language, switched live (the fonts are remade before the next frame).
     const std::string now = current_language();
     const auto& all = app::languages();
-    const auto shown = std::find_if(all.begin(), all.end(), [&](const app::Language& l) { return now == l.tag; });
+    const auto shown =
+        std::find_if(all.begin(), all.end(), [&](const app::Language& l) { return now == l.tag; });
     if (ImGui::BeginCombo(tr("language"), shown == all.end() ? now.c_str() : shown->name.c_str())) {
       for (const app::Language& l : all)
-        if (ImGui::Selectable(l.name.c_str(), now == l.tag) && now != l.tag) requests.language = l.tag;
+        if (ImGui::Selectable(l.name.c_str(), now == l.tag) && now != l.tag)
+          requests.language = l.tag;
       ImGui::EndCombo();
     }
   }
 }
 
 // The controls' window: the pickers, the platform's own controls, the simulation's and the tools.
-void controls_window(app::Session& session, UiState& ui, const FrameStats& stats, const PanelLayout& layout,
-                     ImGuiWindowFlags docked, float scale, bool presenting, Requests& requests) {
+void controls_window(app::Session& session, UiState& ui, const FrameStats& stats,
+                     const PanelLayout& layout, ImGuiWindowFlags docked, float scale,
+                     bool presenting, Requests& requests) {
   const Rect& c = layout.controls;
   ImGui::SetNextWindowPos(ImVec2(c.x, c.y));
   ImGui::SetNextWindowSize(ImVec2(c.w, c.h));
   ImGui::Begin("springlab", nullptr, docked | ImGuiWindowFlags_NoTitleBar);
   ImGui::PushItemWidth(-std::min(130.0f * scale, 0.4f * c.w));
   if (layout.touch) {  // the way back to the scene's room: close the sheet, fold the panel
-    if (ImGui::Button(layout.kind == LayoutKind::Upright ? "\u2193" : "\u2190", ImVec2(ImGui::GetFrameHeight(), 0))) {
-      if (layout.kind == LayoutKind::Upright) ui.sheet_open = false;
-      else ui.side_open = false;
+    if (ImGui::Button(layout.kind == LayoutKind::Upright ? "\u2193" : "\u2190",
+                      ImVec2(ImGui::GetFrameHeight(), 0))) {
+      if (layout.kind == LayoutKind::Upright)
+        ui.sheet_open = false;
+      else
+        ui.side_open = false;
     }
     ImGui::SameLine();
   }
@@ -280,7 +309,8 @@ void controls_window(app::Session& session, UiState& ui, const FrameStats& stats
 
 // The charts' window: side by side; one in presentation mode and in the upright layout (the
 // lesson's first).
-void charts_window(app::Session& session, const UiState& ui, const PanelLayout& layout, ImGuiWindowFlags docked) {
+void charts_window(app::Session& session, const UiState& ui, const PanelLayout& layout,
+                   ImGuiWindowFlags docked) {
   const Rect& c = layout.charts;
   ImGui::SetNextWindowPos(ImVec2(c.x, c.y));
   ImGui::SetNextWindowSize(ImVec2(c.w, c.h));
@@ -288,25 +318,30 @@ void charts_window(app::Session& session, const UiState& ui, const PanelLayout& 
   std::vector<LessonChart> only = ui.lesson_charts;
   const bool one = layout.kind == LayoutKind::Upright || layout.kind == LayoutKind::Compact;
   if (one && only.size() > 1) only.erase(only.begin() + 1, only.end());
-  kind_panels(session.kind()).charts(session, ImGui::GetContentRegionAvail().x, ImGui::GetContentRegionAvail().y,
-                                     ui.presentation || one, only);
+  kind_panels(session.kind())
+      .charts(session, ImGui::GetContentRegionAvail().x, ImGui::GetContentRegionAvail().y,
+              ui.presentation || one, only);
   ImGui::End();
 }
 
 // The stability region's window, over the scene's top left.
-void region(app::Session& session, UiState& ui, const PanelLayout& layout, float scale, int width, int height) {
+void region(app::Session& session, UiState& ui, const PanelLayout& layout, float scale, int width,
+            int height) {
   const float pad = 8.0f * scale;
   if (layout.kind == LayoutKind::Wide) {
-    region_window(session, ui, layout.charts.x, layout.controls.y, 0.55f * (width - layout.charts.x), 0.55f * height);
+    region_window(session, ui, layout.charts.x, layout.controls.y,
+                  0.55f * (width - layout.charts.x), 0.55f * height);
   } else {
     const float x = layout.scene.x + pad, y = layout.scene.y + pad;
-    region_window(session, ui, x, y, std::max(0.55f * (width - x), std::min(480.0f * scale, width - x - pad)),
+    region_window(session, ui, x, y,
+                  std::max(0.55f * (width - x), std::min(480.0f * scale, width - x - pad)),
                   std::max(0.55f * height, 0.5f * layout.scene.height));
   }
 }
 
 // Divergence in the single view: a banner, and the way out.
-void divergence_window(app::Session& session, const UiState& ui, float scale, int width, int height) {
+void divergence_window(app::Session& session, const UiState& ui, float scale, int width,
+                       int height) {
   const float pad = 8.0f * scale;
   const Simulation& first = session.primary().sim;
   if (const Divergence* trouble = first.trouble(); !session.comparing() && trouble) {
@@ -315,13 +350,16 @@ void divergence_window(app::Session& session, const UiState& ui, float scale, in
     const bool lesson = ui.band > 0.0f;
     const draw::Viewport scene = scene_viewport(ui, width, height);
     if (lesson)
-      ImGui::SetNextWindowPos(ImVec2(scene.x + 0.5f * scene.width, static_cast<float>(scene.y + scene.height) - pad),
-                              ImGuiCond_Always, ImVec2(0.5f, 1.0f));
+      ImGui::SetNextWindowPos(
+          ImVec2(scene.x + 0.5f * scene.width, static_cast<float>(scene.y + scene.height) - pad),
+          ImGuiCond_Always, ImVec2(0.5f, 1.0f));
     else
-      ImGui::SetNextWindowPos(ImVec2(0.5f * width, 0.30f * height), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+      ImGui::SetNextWindowPos(ImVec2(0.5f * width, 0.30f * height), ImGuiCond_Always,
+                              ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowSize(ImVec2(lesson ? 0.0f : 560.0f * scale, 0.0f));
     ImGui::PushStyleColor(ImGuiCol_WindowBg, ImVec4(0.35f, 0.05f, 0.05f, 0.95f));
-    ImGui::Begin((tr("Diverged") + std::string("###diverged")).c_str(), nullptr, kPanel | ImGuiWindowFlags_AlwaysAutoResize);
+    ImGui::Begin((tr("Diverged") + std::string("###diverged")).c_str(), nullptr,
+                 kPanel | ImGuiWindowFlags_AlwaysAutoResize);
     ImGui::Text(trouble->unstable ? tr("The simulation went numerically unstable at t = %.4g s")
                                   : tr("The simulation diverged at t = %.4g s"),
                 trouble->t);
@@ -343,9 +381,11 @@ void divergence_window(app::Session& session, const UiState& ui, float scale, in
 
 // A message (a file that failed to load), until dismissed.
 void message_window(UiState& ui, float scale, int width, int height) {
-  ImGui::SetNextWindowPos(ImVec2(0.5f * width, 0.12f * height), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowPos(ImVec2(0.5f * width, 0.12f * height), ImGuiCond_Always,
+                          ImVec2(0.5f, 0.5f));
   ImGui::SetNextWindowSize(ImVec2(600.0f * scale, 0.0f));
-  ImGui::Begin((tr("Message") + std::string("###message")).c_str(), nullptr, kPanel | ImGuiWindowFlags_AlwaysAutoResize);
+  ImGui::Begin((tr("Message") + std::string("###message")).c_str(), nullptr,
+               kPanel | ImGuiWindowFlags_AlwaysAutoResize);
   text_wrapped(ui.message, kNear, 600.0f * scale - 2.0f * ImGui::GetStyle().WindowPadding.x);
   if (ImGui::Button(tr("OK"))) ui.message.clear();
   ImGui::End();
@@ -353,24 +393,33 @@ void message_window(UiState& ui, float scale, int width, int height) {
 
 // The keys (F1).
 void keys_window(UiState& ui, int width, int height) {
-  ImGui::SetNextWindowPos(ImVec2(0.5f * width, 0.5f * height), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-  ImGui::Begin((tr("Keys") + std::string("###keys")).c_str(), &ui.help, kPanel | ImGuiWindowFlags_AlwaysAutoResize);
-  const char* keys[][2] = {{N_("space"), N_("pause or resume")}, {N_("S"), N_("one step")}, {N_("R"), N_("reset")},
-                           {N_("1 - 9"), N_("choose a method")}, {N_("C"), N_("compare mode on or off")},
-                           {N_("H"), N_("hide or show the panels")}, {N_("A"), N_("accuracy against cost: chart every method")},
-                           {N_("G"), N_("the stability region, with the scene's modes")},
-                           {N_("Y"), N_("your method: type a Butcher tableau, run it beside")},
-                           {N_("M"), N_("show the mode that limits the step")},
-                           {N_("P"), N_("presentation mode: larger, for a projector")},
-                           {N_("\u2192  PgDn  N"), N_("lesson: the next step")},
-                           {N_("\u2190  PgUp  B"), N_("lesson: the step before")},
-                           {N_("F1"), N_("this help")},
-                           {N_("F6  Ctrl+Tab"), N_("the keys into the panels, panel after panel")},
-                           {N_("\u2190\u2191\u2192\u2193  space  Enter"), N_("in a panel: move, press, type a value")},
-                           {N_("Esc  (in a panel)"), N_("the keys back to the scene")},
-                           {N_("left drag"), N_("move a particle (release lets it go with its speed)")},
-                           {N_("right drag"), N_("orbit the camera (3D) / pan (2D)")},
-                           {N_("middle drag"), N_("pan")}, {N_("wheel"), N_("zoom")}, {N_("Esc"), N_("quit")}};
+  ImGui::SetNextWindowPos(ImVec2(0.5f * width, 0.5f * height), ImGuiCond_Always,
+                          ImVec2(0.5f, 0.5f));
+  ImGui::Begin((tr("Keys") + std::string("###keys")).c_str(), &ui.help,
+               kPanel | ImGuiWindowFlags_AlwaysAutoResize);
+  const char* keys[][2] = {
+      {N_("space"), N_("pause or resume")},
+      {N_("S"), N_("one step")},
+      {N_("R"), N_("reset")},
+      {N_("1 - 9"), N_("choose a method")},
+      {N_("C"), N_("compare mode on or off")},
+      {N_("H"), N_("hide or show the panels")},
+      {N_("A"), N_("accuracy against cost: chart every method")},
+      {N_("G"), N_("the stability region, with the scene's modes")},
+      {N_("Y"), N_("your method: type a Butcher tableau, run it beside")},
+      {N_("M"), N_("show the mode that limits the step")},
+      {N_("P"), N_("presentation mode: larger, for a projector")},
+      {N_("\u2192  PgDn  N"), N_("lesson: the next step")},
+      {N_("\u2190  PgUp  B"), N_("lesson: the step before")},
+      {N_("F1"), N_("this help")},
+      {N_("F6  Ctrl+Tab"), N_("the keys into the panels, panel after panel")},
+      {N_("\u2190\u2191\u2192\u2193  space  Enter"), N_("in a panel: move, press, type a value")},
+      {N_("Esc  (in a panel)"), N_("the keys back to the scene")},
+      {N_("left drag"), N_("move a particle (release lets it go with its speed)")},
+      {N_("right drag"), N_("orbit the camera (3D) / pan (2D)")},
+      {N_("middle drag"), N_("pan")},
+      {N_("wheel"), N_("zoom")},
+      {N_("Esc"), N_("quit")}};
   if (ImGui::BeginTable("keys", 2)) {
     for (const auto& k : keys) {
       ImGui::TableNextRow();
@@ -386,7 +435,8 @@ void keys_window(UiState& ui, int width, int height) {
 
 }  // namespace
 
-Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats, int width, int height) {
+Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats, int width,
+                     int height) {
   Requests requests;
   ImGuiIO& io = ImGui::GetIO();
   const bool large = ui.presentation && io.Fonts->Fonts.Size > 1;
@@ -396,18 +446,23 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
   const PanelLayout layout = panel_layout(ui, width, height);
   // A thumb's targets: frames at least 44 units high (Apple's guideline; Material's is 48 dp).
   if (layout.touch) {
-    const float frame_pad = std::max(ImGui::GetStyle().FramePadding.y, 0.5f * (44.0f * scale - ImGui::GetFontSize()));
-    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(ImGui::GetStyle().FramePadding.x, frame_pad));
+    const float frame_pad =
+        std::max(ImGui::GetStyle().FramePadding.y, 0.5f * (44.0f * scale - ImGui::GetFontSize()));
+    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding,
+                        ImVec2(ImGui::GetStyle().FramePadding.x, frame_pad));
     ImGui::PushStyleVar(ImGuiStyleVar_GrabMinSize, 30.0f * scale);
   }
   // The panels over the scene (a window too small to share): they keep their background.
-  const bool over = layout.scene.x == 0 && layout.scene.width == width && !layout.controls.empty() &&
+  const bool over = layout.scene.x == 0 && layout.scene.width == width &&
+                    !layout.controls.empty() &&
                     (layout.kind == LayoutKind::Wide || layout.kind == LayoutKind::Compact);
   const ImGuiWindowFlags docked = over || layout.touch ? kPanel : kDocked;
 
   if (ui.panels && !layout.strip.empty()) strip(session, ui, layout);
-  if (ui.panels && !layout.controls.empty()) controls_window(session, ui, stats, layout, docked, scale, presenting, requests);
-  // (A lesson's accuracy chart takes the scene's and the charts' place: the charts are not drawn under it.)
+  if (ui.panels && !layout.controls.empty())
+    controls_window(session, ui, stats, layout, docked, scale, presenting, requests);
+  // (A lesson's accuracy chart takes the scene's and the charts' place: the charts are not drawn
+  // under it.)
   const bool covered = !ui.lesson.empty() && ui.accuracy;
   if (ui.panels && !layout.charts.empty() && !covered) charts_window(session, ui, layout, docked);
   if (ui.panels) region(session, ui, layout, scale, width, height);
@@ -425,7 +480,8 @@ std::vector<Counters> lane_counters(const app::Session& session) {
   return now;
 }
 
-void count_frame(FrameStats& stats, const app::Session& session, const std::vector<Counters>& before) {
+void count_frame(FrameStats& stats, const app::Session& session,
+                 const std::vector<Counters>& before) {
   stats.lanes.clear();
   stats.force_evals = stats.linear_solves = stats.solver_iterations = 0;
   for (std::size_t k = 0; k < session.lanes().size(); ++k) {

@@ -20,10 +20,10 @@
 #include <vector>
 
 #include "draw/scene_frame.hpp"
-#include "ui/layout.hpp"
-#include "ui/method_choice.hpp"
 #include "session/session.hpp"
 #include "springlab/lesson.hpp"
+#include "ui/layout.hpp"
+#include "ui/method_choice.hpp"
 
 namespace springlab::ui {
 
@@ -43,7 +43,8 @@ struct FrameStats {
 
 // Every lane's counters now, and the frame's work since `before` (from lane_counters) into stats.
 std::vector<Counters> lane_counters(const app::Session& session);
-void count_frame(FrameStats& stats, const app::Session& session, const std::vector<Counters>& before);
+void count_frame(FrameStats& stats, const app::Session& session,
+                 const std::vector<Counters>& before);
 
 // Slider ranges, from the scene as loaded.
 struct Ranges {
@@ -53,21 +54,21 @@ struct Ranges {
 
 struct UiState {
   float scale = 1.0f;
-  bool panels = true;  // H hides them
-  bool help = false;   // F1
-  bool accuracy = false;           // the Compare panel (accuracy against cost), A
-  bool presentation = false;       // P: for a projector
-  bool region = false;             // G: the stability region
-  bool tableau = false;            // Y: your method (a tableau typed in)
-  bool sheet_open = false;         // Upright (ui/layout.hpp): the controls' sheet opened
-  std::optional<bool> side_open;   // Side: the controls unfolded (unset: unless a lesson is taught)
+  bool panels = true;             // H hides them
+  bool help = false;              // F1
+  bool accuracy = false;          // the Compare panel (accuracy against cost), A
+  bool presentation = false;      // P: for a projector
+  bool region = false;            // G: the stability region
+  bool tableau = false;           // Y: your method (a tableau typed in)
+  bool sheet_open = false;        // Upright (ui/layout.hpp): the controls' sheet opened
+  std::optional<bool> side_open;  // Side: the controls unfolded (unset: unless a lesson is taught)
   draw::ViewOptions view;
   Ranges ranges;
   std::vector<std::string> scenes;  // the picker's list
   std::string scene_name;
   char open_path[512] = "";
   int key_particle = 0;  // "A particle by keys": the one to hold
-  std::string message;  // shown in a banner until dismissed (a file that failed to load)
+  std::string message;   // shown in a banner until dismissed (a file that failed to load)
   MethodChoice compare_choice;
   // A platform's own controls, drawn under the scene picker (the browser's Copy link, file
   // picker and UI scale); none on the desktop.
@@ -83,13 +84,14 @@ struct UiState {
 };
 
 struct Requests {
-  std::optional<std::string> load;  // a scene name or file to open
-  std::optional<std::string> lesson;  // a lesson to start ("" ends the one taught)
+  std::optional<std::string> load;      // a scene name or file to open
+  std::optional<std::string> lesson;    // a lesson to start ("" ends the one taught)
   std::optional<std::string> language;  // a language to speak from the next frame ("zh-CN", "en")
   bool quit = false;
 };
 
-Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats, int width, int height);
+Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats, int width,
+                     int height);
 
 // The part of a width x height framebuffer the panels leave to the scene.
 draw::Viewport scene_viewport(const UiState& ui, int width, int height);
@@ -97,7 +99,8 @@ draw::Viewport scene_viewport(const UiState& ui, int width, int height);
 // Where a lesson step's accuracy chart goes, in the scene's and the charts' place: from the
 // scene's top left, 8 units in, to the window's foot, or to the strip of buttons along it (a
 // phone held upright).
-Rect lesson_chart_rect(const UiState& ui, const draw::Viewport& scene, int width, int height, float scale);
+Rect lesson_chart_rect(const UiState& ui, const draw::Viewport& scene, int width, int height,
+                       float scale);
 
 // The methods ticked for compare mode, in table order (at most four).
 std::vector<Method> compare_methods(const UiState& ui);

@@ -8,10 +8,10 @@
 #include <cstring>
 #include <nlohmann/json.hpp>
 
-#include "springlab/error.hpp"
 #include "chart/text_wrap.hpp"
-#include "util/data_dir.hpp"
+#include "springlab/error.hpp"
 #include "springlab/text.hpp"
+#include "util/data_dir.hpp"
 
 namespace springlab::ui {
 
@@ -35,14 +35,17 @@ TableauPanel::TableauPanel() {
 
 void TableauPanel::load(const ButcherTableau& t) {
   if (t.stages > kMaxStages) {
-    error = format_text(tr("%s has %d stages; the panel holds %d"), t.name.c_str(), t.stages, kMaxStages);
+    error = format_text(tr("%s has %d stages; the panel holds %d"), t.name.c_str(), t.stages,
+                        kMaxStages);
     return;
   }
   stages = t.stages;
   name = t.name;
   for (int i = 0; i < kMaxStages; ++i) {
     for (int j = 0; j < kMaxStages; ++j)
-      set(a[i][j], i < stages && j < stages ? t.a[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)].text : "0");
+      set(a[i][j], i < stages && j < stages
+                       ? t.a[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)].text
+                       : "0");
     set(b[i], i < stages ? t.b[static_cast<std::size_t>(i)].text : "0");
   }
   dirty = true;
@@ -81,8 +84,10 @@ void TableauPanel::check() {
       const std::size_t end = error.find(": ", at + 2);
       const std::string pointer = error.substr(at + 2, end - at - 2);
       int i = -1, j = -1;
-      if (std::sscanf(pointer.c_str(), "/A/%d/%d", &i, &j) == 2) error_row = i, error_col = j;
-      else if (std::sscanf(pointer.c_str(), "/b/%d", &i) == 1) error_row = i;
+      if (std::sscanf(pointer.c_str(), "/A/%d/%d", &i, &j) == 2)
+        error_row = i, error_col = j;
+      else if (std::sscanf(pointer.c_str(), "/b/%d", &i) == 1)
+        error_row = i;
       error = end == std::string::npos ? error : error.substr(end + 2);
     }
   }
@@ -91,7 +96,8 @@ void TableauPanel::check() {
 std::string run_beside(const ButcherTableau& tableau, app::Session& session) {
   std::string why;
   for (int k = 1; k <= 32; ++k) {
-    const std::string name = k == 1 ? "mine" : "mine-" + std::to_string(k);  // not shown: a method's name
+    const std::string name =
+        k == 1 ? "mine" : "mine-" + std::to_string(k);  // not shown: a method's name
     try {
       const Method m = add_tableau_method(tableau, name);
       std::vector<Method> lanes;
@@ -124,9 +130,13 @@ void tableau_grid(TableauPanel& panel, float scale) {
       const bool weights = i == panel.stages;
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
-      if (weights) ImGui::TextUnformatted("b");
-      else if (panel.tableau) ImGui::TextDisabled("c%d = %s", i + 1, panel.tableau->c[static_cast<std::size_t>(i)].text.c_str());
-      else ImGui::TextDisabled("c%d", i + 1);
+      if (weights)
+        ImGui::TextUnformatted("b");
+      else if (panel.tableau)
+        ImGui::TextDisabled("c%d = %s", i + 1,
+                            panel.tableau->c[static_cast<std::size_t>(i)].text.c_str());
+      else
+        ImGui::TextDisabled("c%d", i + 1);
       for (int j = 0; j < panel.stages; ++j) {
         ImGui::TableNextColumn();
         if (!weights && j > i) {  // above the diagonal: diagonally implicit at most
@@ -134,7 +144,8 @@ void tableau_grid(TableauPanel& panel, float scale) {
           continue;
         }
         TableauPanel::Cell& c = weights ? panel.b[j] : panel.a[i][j];
-        const bool bad = weights ? panel.error_row == j && panel.error_col < 0 : panel.error_row == i && panel.error_col == j;
+        const bool bad = weights ? panel.error_row == j && panel.error_col < 0
+                                 : panel.error_row == i && panel.error_col == j;
         if (bad) ImGui::PushStyleColor(ImGuiCol_FrameBg, red);
         ImGui::SetNextItemWidth(cell);
         const std::string id = "##" + std::to_string(i) + "_" + std::to_string(j);
@@ -158,37 +169,45 @@ void tableau_verdict(const TableauPanel& panel) {
                                         ? tr("order %d or more, exactly (%d conditions checked)")
                                         : tr("order %d, exactly (%d conditions checked)"),
                                     a.order, a.conditions);
-    if (a.order_to_rounding > a.order) order += format_text(tr("; %d to rounding"), a.order_to_rounding);
-    text_wrapped((panel.tableau->is_explicit() ? tr("explicit, ") : tr("diagonally implicit, ")) + order, {}, wrap);
+    if (a.order_to_rounding > a.order)
+      order += format_text(tr("; %d to rounding"), a.order_to_rounding);
+    text_wrapped(
+        (panel.tableau->is_explicit() ? tr("explicit, ") : tr("diagonally implicit, ")) + order, {},
+        wrap);
     if (a.first_failure) {
       const OrderCondition& f = *a.first_failure;
-      text_wrapped(format_text(tr("fails at order %d, tree %s: %s = %s, but this tableau gives %s"), f.order,
-                               f.tree.c_str(), f.formula.c_str(), f.rhs.c_str(), f.lhs.c_str()),
-                   {}, wrap);
+      text_wrapped(
+          format_text(tr("fails at order %d, tree %s: %s = %s, but this tableau gives %s"), f.order,
+                      f.tree.c_str(), f.formula.c_str(), f.rhs.c_str(), f.lhs.c_str()),
+          {}, wrap);
     }
     text_wrapped("R(z) = " + stability_function_text(a), {}, wrap);
     const std::string real = std::isinf(a.real_limit) ? tr("the whole negative real axis")
-                             : a.real_limit == 0.0   ? tr("no part of the negative real axis")
-                                                     : "[-" + axis_limit_text(a.real_limit, 4) + ", 0]";
+                             : a.real_limit == 0.0
+                                 ? tr("no part of the negative real axis")
+                                 : "[-" + axis_limit_text(a.real_limit, 4) + ", 0]";
     const std::string imaginary = std::isinf(a.imaginary_limit) ? tr("the whole imaginary axis")
-                                  : a.imaginary_limit == 0.0    ? tr("the imaginary axis only at 0")
-                                                                : "[-" + axis_limit_text(a.imaginary_limit, 4) + "i, " +
-                                                                      axis_limit_text(a.imaginary_limit, 4) + "i]";
-    text_wrapped(format_text(tr("|R| <= 1 on %s, and on %s"), real.c_str(), imaginary.c_str()), {}, wrap);
+                                  : a.imaginary_limit == 0.0
+                                      ? tr("the imaginary axis only at 0")
+                                      : "[-" + axis_limit_text(a.imaginary_limit, 4) + "i, " +
+                                            axis_limit_text(a.imaginary_limit, 4) + "i]";
+    text_wrapped(format_text(tr("|R| <= 1 on %s, and on %s"), real.c_str(), imaginary.c_str()), {},
+                 wrap);
     for (const std::string& w : a.warnings) ImGui::TextDisabled("%s", w.c_str());
   }
 }
 
 }  // namespace
 
-void draw_tableau_panel(TableauPanel& panel, app::Session& session, const std::vector<std::string>& shipped,
-                        float scale) {
+void draw_tableau_panel(TableauPanel& panel, app::Session& session,
+                        const std::vector<std::string>& shipped, float scale) {
   if (!panel.open) return;
   // Beside the left panel, opaque (the cells are read, not the scene through them).
   ImGui::SetNextWindowPos(ImVec2(380.0f * scale, 20.0f * scale), ImGuiCond_Appearing);
   ImGui::SetNextWindowSize(ImVec2(560.0f * scale, 430.0f * scale), ImGuiCond_Appearing);
   ImGui::SetNextWindowBgAlpha(0.97f);
-  if (!ImGui::Begin((tr("Your method (Y)") + std::string("###tableau")).c_str(), &panel.open, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
+  if (!ImGui::Begin((tr("Your method (Y)") + std::string("###tableau")).c_str(), &panel.open,
+                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
     ImGui::End();
     return;
   }
@@ -220,7 +239,8 @@ void draw_tableau_panel(TableauPanel& panel, app::Session& session, const std::v
   tableau_verdict(panel);
 
   ImGui::BeginDisabled(!panel.tableau);
-  if (ImGui::Button(tr("Run beside")) && panel.tableau) panel.run_message = run_beside(*panel.tableau, session);
+  if (ImGui::Button(tr("Run beside")) && panel.tableau)
+    panel.run_message = run_beside(*panel.tableau, session);
   ImGui::EndDisabled();
   if (!panel.run_message.empty()) {
     ImGui::SameLine();

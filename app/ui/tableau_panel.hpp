@@ -28,9 +28,10 @@ struct TableauPanel {
   bool dirty = true;
   std::optional<ButcherTableau> tableau;
   std::optional<TableauAnalysis> analysis;
-  std::string error;                 // "" when the cells make a tableau
-  int error_row = -1, error_col = -1;  // the cell the error names; error_col -1 with a row: b's entry
-  std::string run_message;           // what "Run beside" did, or why it could not
+  std::string error;  // "" when the cells make a tableau
+  int error_row = -1,
+      error_col = -1;       // the cell the error names; error_col -1 with a row: b's entry
+  std::string run_message;  // what "Run beside" did, or why it could not
 
   TableauPanel();
   // Fills the cells from a tableau (a shipped one, by the menu).
@@ -47,7 +48,7 @@ struct TableauPanel {
 std::string run_beside(const ButcherTableau& tableau, app::Session& session);
 
 // Draws the panel's window (when open). `shipped`: the shipped tableaux' names for its menu.
-void draw_tableau_panel(TableauPanel& panel, app::Session& session, const std::vector<std::string>& shipped,
-                        float scale);
+void draw_tableau_panel(TableauPanel& panel, app::Session& session,
+                        const std::vector<std::string>& shipped, float scale);
 
 }  // namespace springlab::ui

@@ -19,13 +19,17 @@ constexpr float kTolerance = 1.5f;
 
 struct GlyphKey {
   float u0, v0, u1, v1;
-  bool operator<(const GlyphKey& o) const { return std::tie(u0, v0, u1, v1) < std::tie(o.u0, o.v0, o.u1, o.v1); }
+  bool operator<(const GlyphKey& o) const {
+    return std::tie(u0, v0, u1, v1) < std::tie(o.u0, o.v0, o.u1, o.v1);
+  }
 };
 
 std::string utf8(unsigned int c) {
   std::string s;
-  if (c < 0x80) s += static_cast<char>(c);
-  else if (c < 0x800) s += static_cast<char>(0xC0 | (c >> 6)), s += static_cast<char>(0x80 | (c & 0x3F));
+  if (c < 0x80)
+    s += static_cast<char>(c);
+  else if (c < 0x800)
+    s += static_cast<char>(0xC0 | (c >> 6)), s += static_cast<char>(0x80 | (c & 0x3F));
   else if (c < 0x10000)
     s += static_cast<char>(0xE0 | (c >> 12)), s += static_cast<char>(0x80 | ((c >> 6) & 0x3F)),
         s += static_cast<char>(0x80 | (c & 0x3F));
@@ -51,11 +55,13 @@ Placed placed(const ImVec4& quad, const Known& g) {
 }
 
 bool meets(const ImVec4& a, const ImVec4& b, float by) {
-  return std::min(a.z, b.z) - std::max(a.x, b.x) > by && std::min(a.w, b.w) - std::max(a.y, b.y) > by;
+  return std::min(a.z, b.z) - std::max(a.x, b.x) > by &&
+         std::min(a.w, b.w) - std::max(a.y, b.y) > by;
 }
 
 ImVec4 clipped(const ImVec4& a, const ImVec4& clip) {
-  return ImVec4(std::max(a.x, clip.x), std::max(a.y, clip.y), std::min(a.z, clip.z), std::min(a.w, clip.w));
+  return ImVec4(std::max(a.x, clip.x), std::max(a.y, clip.y), std::min(a.z, clip.z),
+                std::min(a.w, clip.w));
 }
 
 std::string quoted(const std::string& text) {
@@ -83,14 +89,18 @@ std::vector<TextRun> text_runs(const ImDrawData& data, const ImFontAtlas& fonts)
       float last_top = 0.0f, last_size = 0.0f;
       for (unsigned int i = 0; i + 5 < cmd.ElemCount; i += 3) {
         const ImDrawIdx* idx = list.IdxBuffer.Data + cmd.IdxOffset + i;
-        // A glyph: two triangles (a, a+1, a+2) and (a, a+2, a+3) whose corners are its atlas corners.
+        // A glyph: two triangles (a, a+1, a+2) and (a, a+2, a+3) whose corners are its atlas
+        // corners.
         const unsigned int a = idx[0] + cmd.VtxOffset;
-        if (idx[1] != idx[0] + 1 || idx[2] != idx[0] + 2 || idx[3] != idx[0] || idx[4] != idx[0] + 2 ||
-            idx[5] != idx[0] + 3 || a + 3 >= static_cast<unsigned int>(list.VtxBuffer.Size))
+        if (idx[1] != idx[0] + 1 || idx[2] != idx[0] + 2 || idx[3] != idx[0] ||
+            idx[4] != idx[0] + 2 || idx[5] != idx[0] + 3 ||
+            a + 3 >= static_cast<unsigned int>(list.VtxBuffer.Size))
           continue;
         const ImDrawVert* v = list.VtxBuffer.Data + a;
         const auto found = glyphs.find(GlyphKey{v[0].uv.x, v[0].uv.y, v[2].uv.x, v[2].uv.y});
-        if (found == glyphs.end() || v[1].uv.x != v[2].uv.x || v[1].uv.y != v[0].uv.y || v[3].uv.x != v[0].uv.x) continue;
+        if (found == glyphs.end() || v[1].uv.x != v[2].uv.x || v[1].uv.y != v[0].uv.y ||
+            v[3].uv.x != v[0].uv.x)
+          continue;
         i += 3;  // (the glyph's second triangle)
         const Known& g = found->second;
         const ImVec4 quad(v[0].pos.x, v[0].pos.y, v[2].pos.x, v[2].pos.y);
@@ -98,7 +108,8 @@ std::vector<TextRun> text_runs(const ImDrawData& data, const ImFontAtlas& fonts)
         const float top = p.top, size = p.size;
         // The same run: the same line, the pen moved on from the last glyph, and not far.
         const bool same = run && std::abs(top - last_top) < 0.3f * std::max(size, last_size) &&
-                          quad.x >= last.z - kTolerance && quad.x <= last.z + 1.5f * std::max(size, last_size);
+                          quad.x >= last.z - kTolerance &&
+                          quad.x <= last.z + 1.5f * std::max(size, last_size);
         if (!same) {
           runs.push_back(TextRun{});
           run = &runs.back();
@@ -110,8 +121,8 @@ std::vector<TextRun> text_runs(const ImDrawData& data, const ImFontAtlas& fonts)
         }
         run->text += utf8(g.codepoint);
         run->glyphs.push_back(quad);
-        run->box = ImVec4(std::min(run->box.x, quad.x), std::min(run->box.y, quad.y), std::max(run->box.z, quad.z),
-                          std::max(run->box.w, quad.w));
+        run->box = ImVec4(std::min(run->box.x, quad.x), std::min(run->box.y, quad.y),
+                          std::max(run->box.z, quad.z), std::max(run->box.w, quad.w));
         last = quad, last_top = top, last_size = size;
       }
     }
@@ -125,14 +136,18 @@ Windows windows_of(const ImDrawData& data) {
   if (!g) return out;
   for (const ImGuiWindow* w : g->Windows) {
     if (!w->Active) continue;
-    const ImVec4 inner(w->InnerClipRect.Min.x, w->InnerClipRect.Min.y, w->InnerClipRect.Max.x, w->InnerClipRect.Max.y);
+    const ImVec4 inner(w->InnerClipRect.Min.x, w->InnerClipRect.Min.y, w->InnerClipRect.Max.x,
+                       w->InnerClipRect.Max.y);
     if (w->ScrollbarY) out.scrolling.push_back(inner);
     const ImGuiCol bg = (w->Flags & ImGuiWindowFlags_ChildWindow) ? ImGuiCol_ChildBg
-                        : (w->Flags & (ImGuiWindowFlags_Popup | ImGuiWindowFlags_Tooltip)) ? ImGuiCol_PopupBg : ImGuiCol_WindowBg;
+                        : (w->Flags & (ImGuiWindowFlags_Popup | ImGuiWindowFlags_Tooltip))
+                            ? ImGuiCol_PopupBg
+                            : ImGuiCol_WindowBg;
     if ((w->Flags & ImGuiWindowFlags_NoBackground) || g->Style.Colors[bg].w < 0.85f) continue;
     for (int l = 0; l < data.CmdListsCount; ++l)
       if (data.CmdLists[l] == w->DrawList)
-        out.covers.push_back({ImVec4(w->Pos.x, w->Pos.y, w->Pos.x + w->Size.x, w->Pos.y + w->Size.y), l});
+        out.covers.push_back(
+            {ImVec4(w->Pos.x, w->Pos.y, w->Pos.x + w->Size.x, w->Pos.y + w->Size.y), l});
   }
   return out;
 }
@@ -145,15 +160,18 @@ std::vector<std::string> text_faults(const std::vector<TextRun>& all, const Wind
     seen.glyphs.clear();
     for (const ImVec4& g : run.glyphs) {
       const ImVec2 centre(0.5f * (g.x + g.z), 0.5f * (g.y + g.w));
-      const bool hidden = std::any_of(windows.covers.begin(), windows.covers.end(), [&](const Windows::Cover& c) {
-        return c.list > run.list && centre.x >= c.rect.x && centre.x <= c.rect.z && centre.y >= c.rect.y && centre.y <= c.rect.w;
-      });
+      const bool hidden =
+          std::any_of(windows.covers.begin(), windows.covers.end(), [&](const Windows::Cover& c) {
+            return c.list > run.list && centre.x >= c.rect.x && centre.x <= c.rect.z &&
+                   centre.y >= c.rect.y && centre.y <= c.rect.w;
+          });
       if (!hidden) seen.glyphs.push_back(g);
     }
     if (seen.glyphs.empty()) continue;
     seen.box = seen.glyphs.front();
     for (const ImVec4& g : seen.glyphs)
-      seen.box = ImVec4(std::min(seen.box.x, g.x), std::min(seen.box.y, g.y), std::max(seen.box.z, g.z), std::max(seen.box.w, g.w));
+      seen.box = ImVec4(std::min(seen.box.x, g.x), std::min(seen.box.y, g.y),
+                        std::max(seen.box.z, g.z), std::max(seen.box.w, g.w));
     runs.push_back(std::move(seen));
   }
   const std::vector<ImVec4>& scrolling = windows.scrolling;
@@ -166,21 +184,31 @@ std::vector<std::string> text_faults(const std::vector<TextRun>& all, const Wind
       const ImVec4& c = run.clip;
       if (!meets(g, c, 0.0f)) continue;
       // (A developer's report, printed by `render --check-text`: English only.)
-      const char* side = g.z > c.z + kTolerance ? "right" : g.x < c.x - kTolerance ? "left"  // not shown
-                         : g.w > c.w + kTolerance ? "bottom" : g.y < c.y - kTolerance ? "top" : nullptr;  // not shown
+      // not shown
+      const char* side = g.z > c.z + kTolerance   ? "right"
+                         : g.x < c.x - kTolerance ? "left"
+                         : g.w > c.w + kTolerance ? "bottom"
+                         : g.y < c.y - kTolerance ? "top"
+                                                  : nullptr;
       if (!side) continue;
       // (In a window that scrolls, a row half in view at its top or foot is how scrolling looks.)
       const bool vertical = side[0] == 'b' || side[0] == 't';
-      const auto inside = [&](const ImVec4& a) { return c.x >= a.x - 1 && c.y >= a.y - 1 && c.z <= a.z + 1 && c.w <= a.w + 1; };
+      const auto inside = [&](const ImVec4& a) {
+        return c.x >= a.x - 1 && c.y >= a.y - 1 && c.z <= a.z + 1 && c.w <= a.w + 1;
+      };
       if (vertical && std::any_of(scrolling.begin(), scrolling.end(), inside)) continue;
-      std::snprintf(s, sizeof s, "%s is cut at its %s by its widget's edge (%.0f, %.0f to %.0f, %.0f)",  // not shown
+      // not shown
+      std::snprintf(s, sizeof s,
+                    "%s is cut at its %s by its widget's edge (%.0f, %.0f to %.0f, %.0f)",
                     quoted(run.text).c_str(), side, c.x, c.y, c.z, c.w);
       faults.push_back(s);
       break;
     }
-    if (run.text.find("\u2026") != std::string::npos) faults.push_back(quoted(run.text) + " is shortened (an ellipsis)");
+    if (run.text.find("\u2026") != std::string::npos)
+      faults.push_back(quoted(run.text) + " is shortened (an ellipsis)");
   }
-  // Over one another: a glyph of one run on a glyph of another, where both are drawn (in their clips).
+  // Over one another: a glyph of one run on a glyph of another, where both are drawn (in their
+  // clips).
   std::set<std::pair<std::size_t, std::size_t>> said;
   for (std::size_t i = 0; i < runs.size(); ++i)
     for (std::size_t j = i + 1; j < runs.size(); ++j) {
@@ -191,7 +219,8 @@ std::vector<std::string> text_faults(const std::vector<TextRun>& all, const Wind
         for (const ImVec4& b : runs[j].glyphs) {
           const ImVec4 cb = clipped(b, runs[j].clip);
           if (!meets(ca, cb, kTolerance)) continue;
-          std::snprintf(s, sizeof s, "%s overlaps %s at (%.0f, %.0f)", quoted(runs[i].text).c_str(),  // not shown
+          // not shown
+          std::snprintf(s, sizeof s, "%s overlaps %s at (%.0f, %.0f)", quoted(runs[i].text).c_str(),
                         quoted(runs[j].text).c_str(), std::max(ca.x, cb.x), std::max(ca.y, cb.y));
           if (said.emplace(i, j).second) faults.push_back(s);
           hit = true;

@@ -13,11 +13,11 @@ namespace springlab::ui {
 
 // Glyphs drawn one after another on one line: a label, a number, a line of a paragraph.
 struct TextRun {
-  std::string text;          // UTF-8, its spaces where the pen moved on between glyphs
-  ImVec4 box{0, 0, 0, 0};    // x0, y0, x1, y1: its glyphs' bounds
+  std::string text;        // UTF-8, its spaces where the pen moved on between glyphs
+  ImVec4 box{0, 0, 0, 0};  // x0, y0, x1, y1: its glyphs' bounds
   std::vector<ImVec4> glyphs;
-  ImVec4 clip{0, 0, 0, 0};   // the rectangle its widget clips it to
-  int list = 0;              // its draw list's place in the draw data
+  ImVec4 clip{0, 0, 0, 0};  // the rectangle its widget clips it to
+  int list = 0;             // its draw list's place in the draw data
 };
 
 // The glyph quads of every draw list, told from other shapes by their texture coordinates (each

@@ -63,8 +63,8 @@ void apply_theme(float scale) {
   // captions' (kCaptionScale), each drawn at its own size rather than stretched, so that it stays
   // sharp on a projector. The glyphs: Latin-1, Greek, punctuation, super- and subscripts, arrows
   // and math operators (core/src/loading/lesson.cpp lets a caption use exactly these).
-  static const ImWchar base[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x205E, 0x2070, 0x209F,
-                                 0x2190, 0x21FF, 0x2200, 0x22FF, 0};
+  static const ImWchar base[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x205E, 0x2070,
+                                 0x209F, 0x2190, 0x21FF, 0x2200, 0x22FF, 0};
   // With a translation, also the letters below U+2E80 its strings use.
   const ImWchar* glyphs = translated_letters(base);
   // In another language, its characters from the CJK font merged into each size (drawn at 1x: a
@@ -84,11 +84,13 @@ void apply_theme(float scale) {
         merge.PixelSnapH = true;
         // A tenth larger: an ideograph fills its em square, and at DejaVu's size it looks a size
         // smaller than the Latin letters beside it.
-        io.Fonts->AddFontFromFileTTF(cjk.c_str(), 1.1f * kFontSize * scale * size, &merge, translated);
+        io.Fonts->AddFontFromFileTTF(cjk.c_str(), 1.1f * kFontSize * scale * size, &merge,
+                                     translated);
       }
     } else {
       ImFontConfig config;
-      config.SizePixels = std::round(13.0f * scale * size);  // ProggyClean at a whole size stays crisp enough
+      config.SizePixels =
+          std::round(13.0f * scale * size);  // ProggyClean at a whole size stays crisp enough
       io.Fonts->AddFontDefault(&config);
     }
   }
@@ -107,7 +109,8 @@ void apply_theme(float scale) {
   ImVec4* c = style.Colors;
   // Near-white text on a near-black, slightly opaque background: readable from the back row.
   c[ImGuiCol_Text] = ImVec4(0.96f, 0.97f, 0.98f, 1.0f);
-  c[ImGuiCol_TextDisabled] = ImVec4(0.70f, 0.73f, 0.77f, 1.0f);  // 4.5:1 on a field (tests/app/palette_test.cpp)
+  c[ImGuiCol_TextDisabled] =
+      ImVec4(0.70f, 0.73f, 0.77f, 1.0f);  // 4.5:1 on a field (tests/app/palette_test.cpp)
   c[ImGuiCol_WindowBg] = ImVec4(0.05f, 0.06f, 0.07f, 0.90f);
   c[ImGuiCol_PopupBg] = ImVec4(0.07f, 0.08f, 0.09f, 0.97f);
   c[ImGuiCol_Border] = ImVec4(0.45f, 0.48f, 0.53f, 0.60f);
@@ -119,7 +122,8 @@ void apply_theme(float scale) {
   // A slider's value is written across its grab: dark enough for the text on it (4.5:1).
   c[ImGuiCol_SliderGrab] = ImVec4(0.20f, 0.44f, 0.78f, 1.0f);
   c[ImGuiCol_SliderGrabActive] = ImVec4(0.18f, 0.43f, 0.80f, 1.0f);
-  c[ImGuiCol_PlotHistogram] = ImVec4(0.13f, 0.45f, 0.25f, 1.0f);  // a progress bar, its count written on it
+  c[ImGuiCol_PlotHistogram] =
+      ImVec4(0.13f, 0.45f, 0.25f, 1.0f);  // a progress bar, its count written on it
   c[ImGuiCol_Button] = ImVec4(0.20f, 0.36f, 0.55f, 1.0f);
   c[ImGuiCol_ButtonHovered] = ImVec4(0.28f, 0.46f, 0.68f, 1.0f);
   c[ImGuiCol_ButtonActive] = ImVec4(0.34f, 0.54f, 0.78f, 1.0f);

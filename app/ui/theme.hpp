@@ -26,6 +26,8 @@ inline constexpr draw::Rgba kSafeText{0.35f, 0.85f, 0.45f, 1}, kNearText{1.0f, 0
     kBeyondText{1.0f, 0.36f, 0.32f, 1}, kNeutralText{0.55f, 0.75f, 1.0f, 1};
 
 // A colour as ImGui takes it.
-inline ImVec4 v4(const draw::Rgba& c) { return ImVec4(c.r, c.g, c.b, c.a); }
+inline ImVec4 v4(const draw::Rgba& c) {
+  return ImVec4(c.r, c.g, c.b, c.a);
+}
 
 }  // namespace springlab::ui

@@ -5,21 +5,23 @@
 #include <string_view>
 
 #include "chart/imgui_chart.hpp"
+#include "chart/text_wrap.hpp"
 #include "draw/palette.hpp"
+#include "springlab/text.hpp"
 #include "ui/live_charts.hpp"
 #include "ui/overlay.hpp"
-#include "chart/text_wrap.hpp"
-#include "springlab/text.hpp"
 
 namespace springlab::ui {
 
 // On a touch layout, - and + beside the slider, so that a thumb sets a value a step at a
 // time (a logarithmic slider by x1.25, a linear one by a twentieth of its range).
-bool slider(const char* label, double& value, double lo, double hi, bool log, bool touch, const char* format) {
+bool slider(const char* label, double& value, double lo, double hi, bool log, bool touch,
+            const char* format) {
   const ImGuiSliderFlags flags = log ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None;
   float v = static_cast<float>(value);
   if (!touch) {
-    const bool changed = ImGui::SliderFloat(label, &v, static_cast<float>(lo), static_cast<float>(hi), format, flags);
+    const bool changed = ImGui::SliderFloat(label, &v, static_cast<float>(lo),
+                                            static_cast<float>(hi), format, flags);
     if (changed) value = v;
     return changed;
   }
@@ -29,12 +31,16 @@ bool slider(const char* label, double& value, double lo, double hi, bool log, bo
   const float width = ImGui::CalcItemWidth() - 2 * (button + spacing);
   ImGui::PushID(label);
   double next = value;
-  if (ImGui::Button("-", ImVec2(button, button))) next = log ? value / 1.25 : value - (hi - lo) / 20;
+  if (ImGui::Button("-", ImVec2(button, button)))
+    next = log ? value / 1.25 : value - (hi - lo) / 20;
   ImGui::SameLine(0, spacing);
   ImGui::SetNextItemWidth(std::max(width, button));
-  if (ImGui::SliderFloat("##value", &v, static_cast<float>(lo), static_cast<float>(hi), format, flags)) next = v;
+  if (ImGui::SliderFloat("##value", &v, static_cast<float>(lo), static_cast<float>(hi), format,
+                         flags))
+    next = v;
   ImGui::SameLine(0, spacing);
-  if (ImGui::Button("+", ImVec2(button, button))) next = log ? std::max(value, lo > 0 ? lo : 1e-3 * hi) * 1.25 : value + (hi - lo) / 20;
+  if (ImGui::Button("+", ImVec2(button, button)))
+    next = log ? std::max(value, lo > 0 ? lo : 1e-3 * hi) * 1.25 : value + (hi - lo) / 20;
   if (!shown.empty()) {
     ImGui::SameLine(0, spacing);
     ImGui::TextUnformatted(shown.c_str());
@@ -64,8 +70,11 @@ void row_picker(app::Session& session, const char* label, bool coloured) {
 // Pause, step, reset: the buttons a class sees pressed most.
 void transport(app::Session& session) {
   // (On one line where they fit; at a large UI scale, the next button on the next line.)
-  const auto width = [](const char* label) { return ImGui::CalcTextSize(label).x + 2.0f * ImGui::GetStyle().FramePadding.x; };
-  if (ImGui::Button(session.paused() ? tr("Resume (space)") : tr("Pause (space)"))) session.set_paused(!session.paused());
+  const auto width = [](const char* label) {
+    return ImGui::CalcTextSize(label).x + 2.0f * ImGui::GetStyle().FramePadding.x;
+  };
+  if (ImGui::Button(session.paused() ? tr("Resume (space)") : tr("Pause (space)")))
+    session.set_paused(!session.paused());
   same_line_if_fits(width(tr("Step (S)")));
   if (ImGui::Button(tr("Step (S)"))) {
     session.set_paused(true);
@@ -111,7 +120,8 @@ void clocks(app::Session& session, const FrameStats& stats) {
 
 // Charts side by side over the room left in the window.
 void charts_row(const std::vector<chart::Chart>& shown, float width, float height) {
-  const float w = (width - (shown.size() - 1) * ImGui::GetStyle().ItemSpacing.x) / std::max<std::size_t>(1, shown.size());
+  const float w = (width - (shown.size() - 1) * ImGui::GetStyle().ItemSpacing.x) /
+                  std::max<std::size_t>(1, shown.size());
   for (std::size_t k = 0; k < shown.size(); ++k) {
     if (k > 0) ImGui::SameLine();
     chart::chart_widget(("##chart" + std::to_string(k)).c_str(), shown[k], ImVec2(w, height));

@@ -15,10 +15,12 @@
 namespace springlab::ui {
 
 // The verdicts' tones (ui/theme.hpp): within the limit, near it, past it, neither.
-inline const ImVec4 kSafe = v4(kSafeText), kNear = v4(kNearText), kBeyond = v4(kBeyondText), kNeutral = v4(kNeutralText);
+inline const ImVec4 kSafe = v4(kSafeText), kNear = v4(kNearText), kBeyond = v4(kBeyondText),
+                    kNeutral = v4(kNeutralText);
 
 // A slider of a double; on a touch layout (`touch`: no hover, thumbs) with - and + beside it.
-bool slider(const char* label, double& value, double lo, double hi, bool log, bool touch, const char* format = "%.3g");
+bool slider(const char* label, double& value, double lo, double hi, bool log, bool touch,
+            const char* format = "%.3g");
 // The single lane's row (a method, a solver): its number key and label, in its colour; nothing
 // while comparing. `label`: the combo's ("##method": none shown).
 void row_picker(app::Session& session, const char* label, bool coloured);

@@ -1,7 +1,5 @@
 #include "util/atomic_file.hpp"
 
-#include "util/worker.hpp"
-
 #include <pthread.h>
 #include <signal.h>
 #include <unistd.h>
@@ -105,7 +103,9 @@ void TemporaryPath::commit() {
   std::lock_guard lock(g_mutex);
   std::error_code ec;
   std::filesystem::rename(temp_, final_, ec);
-  if (ec) throw std::runtime_error("writing " + what_ + " '" + final_.string() + "' failed: " + ec.message());
+  if (ec)
+    throw std::runtime_error("writing " + what_ + " '" + final_.string() +
+                             "' failed: " + ec.message());
   done_ = true;
   drop_pending(temp_.string());
 }
@@ -115,7 +115,8 @@ std::FILE* TemporaryPath::create() const {
   return std::fopen(temp_.c_str(), "wb");
 }
 
-AtomicFile::AtomicFile(const std::filesystem::path& final_path, const char* what) : path_(final_path, what) {
+AtomicFile::AtomicFile(const std::filesystem::path& final_path, const char* what)
+    : path_(final_path, what) {
   file_ = path_.create();
   if (!file_)
     throw InputError(path_.what() + " '" + final_path.string() + "': cannot be written (" +
@@ -132,8 +133,9 @@ void AtomicFile::commit() {
   const bool closed = std::fclose(file_) == 0;
   file_ = nullptr;
   if (!written || !closed)
-    throw std::runtime_error("writing " + path_.what() + " '" + path_.final_path().string() + "' failed (" +
-                             std::strerror(written ? errno : error) + "); nothing was left behind");
+    throw std::runtime_error("writing " + path_.what() + " '" + path_.final_path().string() +
+                             "' failed (" + std::strerror(written ? errno : error) +
+                             "); nothing was left behind");
   path_.commit();
 }
 

@@ -53,16 +53,26 @@ std::string resolve(const char* kind, const char* folder, const std::string& nam
   for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
   const std::string near = looks_like_name ? closest_match(name, names.data(), names.size()) : "";
   throw InputError(std::string(kind) + " '" + name + "': no such file" +
-                   (looks_like_name ? std::string(", and no shipped ") + kind + " of that name" : std::string()) +
-                   (near.empty() ? "" : "; did you mean '" + near + "'?") + " (shipped: " + list + ")");
+                   (looks_like_name ? std::string(", and no shipped ") + kind + " of that name"
+                                    : std::string()) +
+                   (near.empty() ? "" : "; did you mean '" + near + "'?") + " (shipped: " + list +
+                   ")");
 }
 
 }  // namespace
 
-std::vector<std::string> shipped_scenes() { return shipped("scenes"); }
-std::string resolve_scene(const std::string& name) { return resolve("scene", "scenes", name); }
-std::vector<std::string> shipped_tableaux() { return shipped("tableaux"); }
-std::string resolve_tableau(const std::string& name) { return resolve("tableau", "tableaux", name); }
+std::vector<std::string> shipped_scenes() {
+  return shipped("scenes");
+}
+std::string resolve_scene(const std::string& name) {
+  return resolve("scene", "scenes", name);
+}
+std::vector<std::string> shipped_tableaux() {
+  return shipped("tableaux");
+}
+std::string resolve_tableau(const std::string& name) {
+  return resolve("tableau", "tableaux", name);
+}
 
 std::optional<Method> lookup_method(const std::string& name) {
   if (const auto m = find_method(name)) return m;
@@ -87,9 +97,10 @@ std::string method_choices() {
   for (const std::string& n : shipped)
     if (!built_in(n)) tableaux += (tableaux.empty() ? "" : ", ") + n;
   for (const MethodInfo& m : added_methods())
-    if (std::find(shipped.begin(), shipped.end(), m.name) == shipped.end()) yours += (yours.empty() ? "" : ", ") + std::string(m.name);
-  return "methods: " + method_names() + "; tableaux: " + tableaux + (yours.empty() ? "" : "; yours: " + yours) +
-         "; or a tableau's JSON file";
+    if (std::find(shipped.begin(), shipped.end(), m.name) == shipped.end())
+      yours += (yours.empty() ? "" : ", ") + std::string(m.name);
+  return "methods: " + method_names() + "; tableaux: " + tableaux +
+         (yours.empty() ? "" : "; yours: " + yours) + "; or a tableau's JSON file";
 }
 
 }  // namespace springlab::app

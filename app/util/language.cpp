@@ -35,7 +35,8 @@ const std::vector<Language>& languages() {
       }
       out.push_back({tag, name});
     }
-    std::sort(out.begin(), out.end(), [](const Language& a, const Language& b) { return a.tag < b.tag; });
+    std::sort(out.begin(), out.end(),
+              [](const Language& a, const Language& b) { return a.tag < b.tag; });
     out.insert(out.begin(), {"en", "English"});
     return out;
   }();
@@ -91,13 +92,15 @@ std::string use_language(const std::string& tag, bool draws) {
     }
   const fs::path path = data_dir() / "assets" / "locale" / (lang + ".po");
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("language '" + lang + "': cannot read its translations, " + path.string());
+  if (!in)
+    throw InputError("language '" + lang + "': cannot read its translations, " + path.string());
   std::ostringstream text;
   text << in.rdbuf();
   Catalog catalog = read_po(text.str(), path.string());
   catalog.language = lang;
   if (draws && needs_cjk_font(catalog) && cjk_font_path().empty())
-    throw InputError("language '" + lang + "': its font is missing (the build makes it from Debian's fonts-noto-cjk "
+    throw InputError("language '" + lang +
+                     "': its font is missing (the build makes it from Debian's fonts-noto-cjk "
                      "with python3-fonttools: scripts/setup.sh installs both)");
   loaded.push_back(std::move(catalog));
   set_catalog(&loaded.back());
@@ -108,8 +111,10 @@ std::string check_language(const std::string& tag, const std::string& what) {
   const std::string lang = supported_language(tag, spoken());
   std::string lower;
   for (char c : tag) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (lang == "en" && !(lower == "en" || lower.rfind("en-", 0) == 0 || lower.rfind("en_", 0) == 0)) {
-    throw InputError(what + ": '" + tag + "' is not a language springlab speaks (" + language_list() + ")");
+  if (lang == "en" &&
+      !(lower == "en" || lower.rfind("en-", 0) == 0 || lower.rfind("en_", 0) == 0)) {
+    throw InputError(what + ": '" + tag + "' is not a language springlab speaks (" +
+                     language_list() + ")");
   }
   return lang;
 }
@@ -130,7 +135,8 @@ std::string environment_language() {
     std::istringstream items(list);
     for (std::string item; std::getline(items, item, ':');) {
       const std::string lang = supported_language(item, spoken());
-      if (lang != "en" || item == "en" || item.rfind("en_", 0) == 0 || item.rfind("en-", 0) == 0) return lang;
+      if (lang != "en" || item == "en" || item.rfind("en_", 0) == 0 || item.rfind("en-", 0) == 0)
+        return lang;
     }
     return "en";  // (none it speaks: gettext then shows the messages untranslated)
   }
@@ -139,7 +145,8 @@ std::string environment_language() {
 
 std::string cjk_font_path() {
   std::error_code ec;
-  if (const char* env = std::getenv("SPRINGLAB_CJK_FONT"); env && fs::is_regular_file(env, ec)) return env;
+  if (const char* env = std::getenv("SPRINGLAB_CJK_FONT"); env && fs::is_regular_file(env, ec))
+    return env;
 #ifdef SPRINGLAB_CJK_FONT_BUILT
   if (fs::is_regular_file(SPRINGLAB_CJK_FONT_BUILT, ec)) return SPRINGLAB_CJK_FONT_BUILT;
 #endif

@@ -11,7 +11,9 @@ Progress::Progress(std::string label, std::int64_t total)
   start_ = last_ = std::chrono::steady_clock::now();
 }
 
-Progress::~Progress() { finish(); }
+Progress::~Progress() {
+  finish();
+}
 
 void Progress::update(std::int64_t done) {
   if (!enabled_) return;

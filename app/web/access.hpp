@@ -15,8 +15,8 @@ namespace springlab::app::web {
 
 // {"scene", "description", "scenes": [...], "method", "methods": [{"name", "label"}], "paused",
 //  "t", "controls": [{"id", "label", "value", "lo", "hi", "log"}], "lanes": [{"label", "t",
-//  "verdict", "tone", "diverged", "why", "energy", "energy0", "scale"}], "lesson": {...} or null, "message",
-//  "labels": {the buttons' words}}
+//  "verdict", "tone", "diverged", "why", "energy", "energy0", "scale"}], "lesson": {...} or null,
+//  "message", "labels": {the buttons' words}}
 std::string describe(const InteractiveApp& app);
 
 // The charts the document says in words (describe's "charts": title and summary) and whose data

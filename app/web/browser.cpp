@@ -36,16 +36,21 @@ EM_JS(char*, js_page_address, (), {
 // select-and-copy of a hidden text field. Neither leaves an error in the console.
 EM_JS(void, js_copy_to_clipboard, (const char* text), {
   const value = UTF8ToString(text);
-  const fallback = () => {
+  const fallback = () = > {
     const field = document.createElement("textarea");
     field.value = value;
     document.body.appendChild(field);
     field.select();
-    try { document.execCommand("copy"); } catch (e) {}
+    try {
+      document.execCommand("copy");
+    } catch (e) {
+    }
     field.remove();
   };
-  if (navigator.clipboard && window.isSecureContext) navigator.clipboard.writeText(value).catch(fallback);
-  else fallback();
+  if (navigator.clipboard && window.isSecureContext)
+    navigator.clipboard.writeText(value).catch(fallback);
+  else
+    fallback();
 });
 
 EM_JS(void, js_choose_scene_file, (), {
@@ -54,7 +59,7 @@ EM_JS(void, js_choose_scene_file, (), {
 });
 
 EM_JS(void, js_first_frame_shown, (), {
-  if (typeof window.springlabFirstFrame === "function") window.springlabFirstFrame();
+  if (typeof window.springlabFirstFrame == = "function") window.springlabFirstFrame();
 });
 
 EM_JS(void, js_set_page_link, (const char* text), { window.springlabLink = UTF8ToString(text); });
@@ -64,7 +69,8 @@ EM_JS(void, js_open_homework_panel, (), {
 });
 
 EM_JS(void, js_start_homework, (const char* code), {
-  if (window.springlabHomework && window.springlabHomework.start) window.springlabHomework.start(UTF8ToString(code));
+  if (window.springlabHomework && window.springlabHomework.start)
+    window.springlabHomework.start(UTF8ToString(code));
 });
 
 std::string taken(char* p) {
@@ -76,14 +82,32 @@ std::string taken(char* p) {
 
 namespace springlab::app::web {
 
-std::string location_fragment() { return taken(js_location_fragment()); }
-std::string page_address() { return taken(js_page_address()); }
-std::string browser_language() { return taken(js_browser_language()); }
-void copy_to_clipboard(const std::string& text) { js_copy_to_clipboard(text.c_str()); }
-void choose_scene_file() { js_choose_scene_file(); }
-void first_frame_shown() { js_first_frame_shown(); }
-void set_page_link(const std::string& link) { js_set_page_link(link.c_str()); }
-void open_homework_panel() { js_open_homework_panel(); }
-void start_homework(const std::string& code) { js_start_homework(code.c_str()); }
+std::string location_fragment() {
+  return taken(js_location_fragment());
+}
+std::string page_address() {
+  return taken(js_page_address());
+}
+std::string browser_language() {
+  return taken(js_browser_language());
+}
+void copy_to_clipboard(const std::string& text) {
+  js_copy_to_clipboard(text.c_str());
+}
+void choose_scene_file() {
+  js_choose_scene_file();
+}
+void first_frame_shown() {
+  js_first_frame_shown();
+}
+void set_page_link(const std::string& link) {
+  js_set_page_link(link.c_str());
+}
+void open_homework_panel() {
+  js_open_homework_panel();
+}
+void start_homework(const std::string& code) {
+  js_start_homework(code.c_str());
+}
 
 }  // namespace springlab::app::web

@@ -19,29 +19,31 @@ EM_JS(void, js_rope_build, (int id, const double* masses, int n, const double* s
                                  HEAPF64.slice(springs >> 3, (springs >> 3) + 4 * s));
 });
 
-EM_JS(void, js_rope_set_state, (int id, const double* state, int n), {
-  window.springlabHomework.setState(id, HEAPF64.slice(state >> 3, (state >> 3) + 8 * n));
-});
+EM_JS(void, js_rope_set_state, (int id, const double* state, int n),
+      { window.springlabHomework.setState(id, HEAPF64.slice(state >> 3, (state >> 3) + 8 * n)); });
 
 // The states after each step into `out`; the step that failed (from 0) into *failed_at, and what
 // happened as malloc'ed UTF-8 ("time", or a sentence), or 0.
-EM_JS(char*, js_rope_simulate, (int id, int which, double dt, double gx, double gy, int steps, double ms,
-                                double* out, int* failed_at), {
-  const r = window.springlabHomework.simulate(id, which, dt, gx, gy, steps, ms);
-  if (r.states) {
-    HEAPF64.set(r.states, out >> 3);
-    return 0;
-  }
-  HEAP32[failed_at >> 2] = r.step;
-  const size = lengthBytesUTF8(r.error) + 1;
-  const p = _malloc(size);
-  stringToUTF8(r.error, p, size);
-  return p;
-});
+EM_JS(char*, js_rope_simulate,
+      (int id, int which, double dt, double gx, double gy, int steps, double ms, double* out,
+       int* failed_at),
+      {
+        const r = window.springlabHomework.simulate(id, which, dt, gx, gy, steps, ms);
+        if (r.states) {
+          HEAPF64.set(r.states, out >> 3);
+          return 0;
+        }
+        HEAP32[failed_at >> 2] = r.step;
+        const size = lengthBytesUTF8(r.error) + 1;
+        const p = _malloc(size);
+        stringToUTF8(r.error, p, size);
+        return p;
+      });
 
 EM_JS(void, js_rope_drop, (int id), { window.springlabHomework.drop(id); });
 
-EM_JS(int, js_rope_compiled, (), { return window.springlabHomework && window.springlabHomework.compiled ? 1 : 0; });
+EM_JS(int, js_rope_compiled, (),
+      { return window.springlabHomework && window.springlabHomework.compiled ? 1 : 0; });
 
 int next_id = 1;
 
@@ -51,28 +53,37 @@ namespace springlab::app::web {
 
 using namespace homework;
 
-bool js_code_ready() { return js_rope_compiled() != 0; }
+bool js_code_ready() {
+  return js_rope_compiled() != 0;
+}
 
-JsRope::JsRope(double limit_ms, double per_step_ms) : id_(next_id++), limit_ms_(limit_ms), per_step_ms_(per_step_ms) {}
+JsRope::JsRope(double limit_ms, double per_step_ms)
+    : id_(next_id++), limit_ms_(limit_ms), per_step_ms_(per_step_ms) {}
 
-JsRope::~JsRope() { js_rope_drop(id_); }
+JsRope::~JsRope() {
+  js_rope_drop(id_);
+}
 
 BuiltRope JsRope::build(const RopeRequest& request) {
   BuiltRope rope = exercise_rope(request);
   std::vector<double> masses, springs;
-  for (const BuiltMass& m : rope.masses) masses.insert(masses.end(), {m.start.x(), m.start.y(), m.mass, m.pinned ? 1.0 : 0.0});
-  for (const BuiltSpring& s : rope.springs) springs.insert(springs.end(), {double(s.m1), double(s.m2), s.k, s.rest});
+  for (const BuiltMass& m : rope.masses)
+    masses.insert(masses.end(), {m.start.x(), m.start.y(), m.mass, m.pinned ? 1.0 : 0.0});
+  for (const BuiltSpring& s : rope.springs)
+    springs.insert(springs.end(), {double(s.m1), double(s.m2), s.k, s.rest});
   masses_ = static_cast<int>(rope.masses.size());
   js_rope_build(id_, masses.data(), masses_, springs.data(), static_cast<int>(rope.springs.size()));
   return rope;
 }
 
 void JsRope::set_state(const RopeState& state) {
-  if (static_cast<int>(state.size()) != masses_) throw CodeFailure("a state of " + std::to_string(state.size()) +
-                                                                    " masses for a rope of " + std::to_string(masses_));
+  if (static_cast<int>(state.size()) != masses_)
+    throw CodeFailure("a state of " + std::to_string(state.size()) + " masses for a rope of " +
+                      std::to_string(masses_));
   std::vector<double> values;
   for (const MassState& m : state)
-    values.insert(values.end(), {m.x.x(), m.x.y(), m.x_last.x(), m.x_last.y(), m.v.x(), m.v.y(), m.f.x(), m.f.y()});
+    values.insert(values.end(), {m.x.x(), m.x.y(), m.x_last.x(), m.x_last.y(), m.v.x(), m.v.y(),
+                                 m.f.x(), m.f.y()});
   js_rope_set_state(id_, values.data(), masses_);
 }
 
@@ -81,15 +92,18 @@ std::vector<RopeState> JsRope::simulate(Step step, double dt, const Vec2& gravit
   int failed_at = 0;
   const double ms = limit_ms_ + per_step_ms_ * steps;
   std::unique_ptr<char, decltype(&std::free)> error(
-      js_rope_simulate(id_, step == Step::Euler ? 0 : 1, dt, gravity.x(), gravity.y(), steps, ms, out.data(), &failed_at),
+      js_rope_simulate(id_, step == Step::Euler ? 0 : 1, dt, gravity.x(), gravity.y(), steps, ms,
+                       out.data(), &failed_at),
       &std::free);
   if (error) {
     const std::string what = error.get();
-    const std::string call = format_text("%s (step %d of %d, h = %s)", step_name(step), failed_at + 1, steps,
-                                         step_text(dt).c_str());
+    const std::string call = format_text("%s (step %d of %d, h = %s)", step_name(step),
+                                         failed_at + 1, steps, step_text(dt).c_str());
     // (worded as the desktop's runner words them: homework/rope_process.cpp)
     if (what == "time")
-      throw CodeFailure(format_text("%s did not return within %.3g s and was stopped (an endless loop?)", call.c_str(), ms / 1000.0));
+      throw CodeFailure(
+          format_text("%s did not return within %.3g s and was stopped (an endless loop?)",
+                      call.c_str(), ms / 1000.0));
     if (what.starts_with("it ")) throw CodeFailure(call + ": " + what);
     throw CodeFailure(call + " threw an exception: " + what);
   }

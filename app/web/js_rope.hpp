@@ -19,8 +19,8 @@ class JsRope : public homework::RopeCode {
 
   homework::BuiltRope build(const homework::RopeRequest& request) override;
   void set_state(const homework::RopeState& state) override;
-  std::vector<homework::RopeState> simulate(homework::Step step, double dt, const homework::Vec2& gravity,
-                                            int steps) override;
+  std::vector<homework::RopeState> simulate(homework::Step step, double dt,
+                                            const homework::Vec2& gravity, int steps) override;
   bool own_constructor() const override { return false; }
 
  private:

@@ -33,11 +33,13 @@ Opened open_settings(const AppSettings& settings);
 // The fragment that reopens what `app` shows now: its scene (with the `sets` it was opened with),
 // and whatever differs from that (method, dt, fixed sub-steps, k_s, k_d, compare lanes).
 // The homework's code (empty: none) travels too.
-std::string link_of(const InteractiveApp& app, const std::vector<std::string>& sets, double ui_scale,
-                    const std::string& homework_js = {});
+std::string link_of(const InteractiveApp& app, const std::vector<std::string>& sets,
+                    double ui_scale, const std::string& homework_js = {});
 
 // The names a link takes, for messages.
-inline constexpr const char* kLinkParameters = "scene, method, tableau, dt, substeps, ks, kd, iterations, rho, compare, compare-layout, script, set, accuracy, region, lesson, step, ui-scale, lang, homework";
+inline constexpr const char* kLinkParameters =
+    "scene, method, tableau, dt, substeps, ks, kd, iterations, rho, compare, compare-layout, "
+    "script, set, accuracy, region, lesson, step, ui-scale, lang, homework";
 // The longest code a link carries (browsers take links of 2 MB; 64 KB is many times a rope's).
 inline constexpr std::size_t kMaxHomework = 65536;
 

@@ -27,19 +27,19 @@
 #include <utility>
 #include <vector>
 
+#include "chart/chart_text.hpp"
 #include "homework/own_lanes.hpp"
 #include "platform/interactive_app.hpp"
 #include "springlab/error.hpp"
+#include "springlab/text.hpp"
+#include "ui/homework_status.hpp"
 #include "ui/panels.hpp"
 #include "ui/theme.hpp"
-#include "ui/homework_status.hpp"
-#include "chart/chart_text.hpp"
+#include "util/language.hpp"
 #include "web/access.hpp"
 #include "web/browser.hpp"
 #include "web/js_rope.hpp"
 #include "web/url_config.hpp"
-#include "springlab/text.hpp"
-#include "util/language.hpp"
 
 namespace springlab::app::web {
 
@@ -55,16 +55,18 @@ struct Page {
   FramePacer pacer{1.0 / 60.0, 0.25 / 60.0};
   double ui_scale = 1.0;  // the control's (--ui-scale); the panels' is this times the pixel ratio
   double pixel_ratio = 1.0;
-  std::optional<double> next_ui_scale;  // applied before the next frame (the fonts are in use during one)
+  std::optional<double>
+      next_ui_scale;              // applied before the next frame (the fonts are in use during one)
   std::vector<std::string> sets;  // the link's set=..., while its scene is shown
-  std::string link;  // the last copied
+  std::string link;               // the last copied
   long frames = 0;
-  double frame_ms = 0.0;  // the last frame's whole time in the app (the browser composites after)
-  ImVec4 copy_button;  // where Copy link is (x, y, width, height), for the page's tests
+  double frame_ms = 0.0;   // the last frame's whole time in the app (the browser composites after)
+  ImVec4 copy_button;      // where Copy link is (x, y, width, height), for the page's tests
   ImVec4 homework_button;  // and Homework 8's
-  draw::Viewport scene;  // where the scene is drawn (window pixels from the top left), for the tests
+  draw::Viewport
+      scene;  // where the scene is drawn (window pixels from the top left), for the tests
   double css_width = 0, css_height = 0;  // the canvas's CSS box, as the last frame was laid out in
-  int win_width = 0, win_height = 0;  // and its size in window pixels (the panels' units)
+  int win_width = 0, win_height = 0;     // and its size in window pixels (the panels' units)
   // Homework 8 in JavaScript (the page's panel, homework.js): the student's steps as lanes, what
   // the checker found, and their code as the link carries it (homework=).
   HomeworkLanes homework;
@@ -102,10 +104,11 @@ void fit_canvas(Page& page) {
 // open a scene file, and the UI scale (the desktop's --ui-scale, which a link's ui-scale sets too).
 void browser_controls(Page& page) {
   const bool copy = ImGui::Button(tr("Copy link"));
-  page.copy_button = {ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
-                      ImGui::GetItemRectSize().y};
+  page.copy_button = {ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y,
+                      ImGui::GetItemRectSize().x, ImGui::GetItemRectSize().y};
   if (copy) {
-    page.link = page_address() + "#" + link_of(*page.app, page.sets, page.ui_scale, page.homework_code);
+    page.link =
+        page_address() + "#" + link_of(*page.app, page.sets, page.ui_scale, page.homework_code);
     copy_to_clipboard(page.link);
     set_page_link(page.link);
   }
@@ -120,18 +123,20 @@ void browser_controls(Page& page) {
     for (double s : kScales) {
       char item[16];
       std::snprintf(item, sizeof item, tr("UI %g"), s);
-      if (ImGui::Selectable(item, s == page.ui_scale)) page.next_ui_scale = s;  // (the fonts are in use now)
+      if (ImGui::Selectable(item, s == page.ui_scale))
+        page.next_ui_scale = s;  // (the fonts are in use now)
     }
     ImGui::EndCombo();
   }
   if (ImGui::Button(tr("Homework 8 in JavaScript..."))) open_homework_panel();
-  page.homework_button = {ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectSize().x,
-                          ImGui::GetItemRectSize().y};
+  page.homework_button = {ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y,
+                          ImGui::GetItemRectSize().x, ImGui::GetItemRectSize().y};
   if (page.homework.has_code()) ui::draw_homework_status(page.homework_status);
   if (!page.link.empty()) {
     // What was copied, as text to see or to copy by hand.
     ImGui::SetNextItemWidth(-1.0f);
-    ImGui::InputText("##link", page.link.data(), page.link.size() + 1, ImGuiInputTextFlags_ReadOnly);
+    ImGui::InputText("##link", page.link.data(), page.link.size() + 1,
+                     ImGuiInputTextFlags_ReadOnly);
   }
 }
 
@@ -142,7 +147,8 @@ void frame() {
   if (!page.pacer.take()) return;
   fit_canvas(page);
   if (page.next_ui_scale) set_ui_scale(page, *std::exchange(page.next_ui_scale, std::nullopt));
-  if (page.app->apply_language()) ImGui_ImplOpenGL3_DestroyDeviceObjects();  // the font texture, remade
+  if (page.app->apply_language())
+    ImGui_ImplOpenGL3_DestroyDeviceObjects();  // the font texture, remade
   FrameSize size;
   glfwGetFramebufferSize(page.window, &size.fb_width, &size.fb_height);
   glfwGetWindowSize(page.window, &size.win_width, &size.win_height);
@@ -172,7 +178,8 @@ std::unique_ptr<InteractiveApp> app_for_link(Page& page) {
   try {
     settings = settings_from_link(location_fragment());
     opened = open_settings(settings);
-    if (settings.compare) make_scene_kind(opened->prepared.scene)->lanes_named(*settings.compare, "link: compare");
+    if (settings.compare)
+      make_scene_kind(opened->prepared.scene)->lanes_named(*settings.compare, "link: compare");
   } catch (const std::exception& e) {
     problem = e.what();
     settings = AppSettings();
@@ -192,8 +199,8 @@ std::unique_ptr<InteractiveApp> app_for_link(Page& page) {
   ui::apply_theme(scale);
   // No multisampling: SwiftShader and many laptops' GPUs draw it slowly, and the lines and
   // spheres are drawn with their own smooth edges.
-  auto app = std::make_unique<InteractiveApp>(std::move(opened->prepared), settings, std::move(opened->script),
-                                              scale, 0, true);
+  auto app = std::make_unique<InteractiveApp>(std::move(opened->prepared), settings,
+                                              std::move(opened->script), scale, 0, true);
   if (!problem.empty()) app->say(problem);
   app->set_platform_controls([&page] { browser_controls(page); });
   return app;
@@ -241,7 +248,8 @@ EMSCRIPTEN_KEEPALIVE const char* springlab_homework_check(const char* code) {
   g_page->homework_code = code ? code : "";
   g_page->homework_status.file = tr("your JavaScript");
   g_page->homework_status.error.clear();
-  g_page->homework.set(std::move(report), seconds, [] { return std::make_shared<JsRope>(250.0, 0.05); });
+  g_page->homework.set(std::move(report), seconds,
+                       [] { return std::make_shared<JsRope>(250.0, 0.05); });
   return text.c_str();
 }
 
@@ -273,7 +281,9 @@ EMSCRIPTEN_KEEPALIVE const char* springlab_chart_csv(int index) {
   static std::string csv;
   if (!g_page) return "";
   const auto shown = charts(*g_page->app);
-  csv = index >= 0 && index < static_cast<int>(shown.size()) ? springlab::chart::chart_csv(shown[index]) : "";
+  csv = index >= 0 && index < static_cast<int>(shown.size())
+            ? springlab::chart::chart_csv(shown[index])
+            : "";
   return csv.c_str();
 }
 EMSCRIPTEN_KEEPALIVE int springlab_control(const char* name, double value) {
@@ -310,22 +320,29 @@ EMSCRIPTEN_KEEPALIVE const char* springlab_status() {
   };
   char number[256];
   json = "{\"scene\":" + quoted(g_page->app->scene_name());
-  json += ",\"method\":" + quoted(std::string(app::lane_row(session.primary()).name));  // (an IK scene's: its solver)
+  json +=
+      ",\"method\":" +
+      quoted(std::string(app::lane_row(session.primary()).name));  // (an IK scene's: its solver)
   std::snprintf(number, sizeof number, ",\"dt\":%.17g", session.primary().sim.settings().dt);
   json += number;
-  std::snprintf(number, sizeof number, ",\"ks\":%.17g,\"kd\":%.17g", session.stiffness(), session.damping());
+  std::snprintf(number, sizeof number, ",\"ks\":%.17g,\"kd\":%.17g", session.stiffness(),
+                session.damping());
   json += number;
-  std::snprintf(number, sizeof number, ",\"frames\":%ld,\"scale\":%.4g", g_page->frames, g_page->app->scale());
+  std::snprintf(number, sizeof number, ",\"frames\":%ld,\"scale\":%.4g", g_page->frames,
+                g_page->app->scale());
   json += number;
   const ui::FrameStats& stats = g_page->app->stats();
-  std::snprintf(number, sizeof number, ",\"frame_ms\":%.4g,\"sim_ms\":%.4g,\"draw_ms\":%.4g,\"fps\":%.4g,\"realtime\":%.4g",
-                g_page->frame_ms, stats.sim_ms, stats.draw_ms, stats.fps, stats.realtime);
+  std::snprintf(
+      number, sizeof number,
+      ",\"frame_ms\":%.4g,\"sim_ms\":%.4g,\"draw_ms\":%.4g,\"fps\":%.4g,\"realtime\":%.4g",
+      g_page->frame_ms, stats.sim_ms, stats.draw_ms, stats.fps, stats.realtime);
   json += number;
   const ImVec4& b = g_page->copy_button;
   std::snprintf(number, sizeof number, ",\"copy_link\":[%g,%g,%g,%g]", b.x, b.y, b.z, b.w);
   json += number;
   const ImVec4& hb = g_page->homework_button;
-  std::snprintf(number, sizeof number, ",\"homework_button\":[%g,%g,%g,%g]", hb.x, hb.y, hb.z, hb.w);
+  std::snprintf(number, sizeof number, ",\"homework_button\":[%g,%g,%g,%g]", hb.x, hb.y, hb.z,
+                hb.w);
   json += number;
   const draw::Viewport& v = g_page->scene;
   std::snprintf(number, sizeof number, ",\"viewport\":[%d,%d,%d,%d]", v.x, v.y, v.width, v.height);
@@ -338,14 +355,16 @@ EMSCRIPTEN_KEEPALIVE const char* springlab_status() {
   json += ",\"message\":" + quoted(g_page->app->ui().message);
   json += ",\"lang\":" + quoted(current_language());
   const Camera& camera = g_page->app->ui().view.camera;  // how far the view is zoomed (a pinch)
-  std::snprintf(number, sizeof number, ",\"zoom\":%.9g", camera.view == View::Planar ? camera.height : camera.distance);
+  std::snprintf(number, sizeof number, ",\"zoom\":%.9g",
+                camera.view == View::Planar ? camera.height : camera.distance);
   json += number;
   json += ",\"lanes\":[";
   for (std::size_t i = 0; i < session.lanes().size(); ++i) {
     const app::Lane& lane = session.lanes()[i];
-    std::snprintf(number, sizeof number, "%s{\"method\":\"%s\",\"t\":%.17g,\"diverged\":%s,\"unstable\":%s",
-                  i ? "," : "", std::string(app::lane_row(lane).name).c_str(), lane.sim.state().t,
-                  lane.sim.diverged() ? "true" : "false", lane.sim.instability() ? "true" : "false");
+    std::snprintf(
+        number, sizeof number, "%s{\"method\":\"%s\",\"t\":%.17g,\"diverged\":%s,\"unstable\":%s",
+        i ? "," : "", std::string(app::lane_row(lane).name).c_str(), lane.sim.state().t,
+        lane.sim.diverged() ? "true" : "false", lane.sim.instability() ? "true" : "false");
     json += number;
     // A lane of one's own (homework): its label, and why it stopped where it did.
     if (!lane.own.empty()) json += ",\"own\":" + quoted(lane.own);
@@ -409,7 +428,8 @@ int main() {
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 0);
   static Page page;
-  page.window = glfwCreateWindow(1280, 720, "springlab", nullptr, nullptr);  // not shown: a canvas has no title
+  // not shown: a canvas has no title
+  page.window = glfwCreateWindow(1280, 720, "springlab", nullptr, nullptr);
   if (!page.window) {
     std::fprintf(stderr, "springlab: this browser gives no WebGL2 context\n");
     return 1;

@@ -12,12 +12,20 @@
 namespace springlab::app {
 
 std::vector<KeyPress> parse_key_presses(const std::string& text, const std::string& option) {
-  static const std::pair<const char*, int> named[] = {
-      {"F1", GLFW_KEY_F1},       {"F6", GLFW_KEY_F6},       {"Down", GLFW_KEY_DOWN},
-      {"Up", GLFW_KEY_UP},       {"Left", GLFW_KEY_LEFT},   {"Right", GLFW_KEY_RIGHT},
-      {"Space", GLFW_KEY_SPACE}, {"Enter", GLFW_KEY_ENTER}, {"Escape", GLFW_KEY_ESCAPE},
-      {"Tab", GLFW_KEY_TAB},     {"PageDown", GLFW_KEY_PAGE_DOWN}, {"PageUp", GLFW_KEY_PAGE_UP},
-      {"Home", GLFW_KEY_HOME},   {"End", GLFW_KEY_END}};
+  static const std::pair<const char*, int> named[] = {{"F1", GLFW_KEY_F1},
+                                                      {"F6", GLFW_KEY_F6},
+                                                      {"Down", GLFW_KEY_DOWN},
+                                                      {"Up", GLFW_KEY_UP},
+                                                      {"Left", GLFW_KEY_LEFT},
+                                                      {"Right", GLFW_KEY_RIGHT},
+                                                      {"Space", GLFW_KEY_SPACE},
+                                                      {"Enter", GLFW_KEY_ENTER},
+                                                      {"Escape", GLFW_KEY_ESCAPE},
+                                                      {"Tab", GLFW_KEY_TAB},
+                                                      {"PageDown", GLFW_KEY_PAGE_DOWN},
+                                                      {"PageUp", GLFW_KEY_PAGE_UP},
+                                                      {"Home", GLFW_KEY_HOME},
+                                                      {"End", GLFW_KEY_END}};
   std::vector<KeyPress> out;
   std::stringstream list(text);
   std::string item;
@@ -36,7 +44,8 @@ std::vector<KeyPress> parse_key_presses(const std::string& text, const std::stri
     if (rest.size() == 1 && rest[0] >= '0' && rest[0] <= '9') k.key = GLFW_KEY_0 + (rest[0] - '0');
     if (k.key == 0)
       throw InputError(option + ": unknown key '" + item +
-                       "' (keys: F1, F6, Up, Down, Left, Right, Space, Enter, Escape, Tab, PageUp, PageDown, Home, End, A-Z, "
+                       "' (keys: F1, F6, Up, Down, Left, Right, Space, Enter, Escape, Tab, PageUp, "
+                       "PageDown, Home, End, A-Z, "
                        "0-9, each perhaps after Shift+ or Ctrl+; separated by commas)");
     out.push_back(k);
   }
@@ -55,7 +64,8 @@ void press_keys(const std::vector<KeyPress>& keys, long frame, long first) {
   // A letter or digit types itself too, as GLFW's character callback passes it on.
   if (down && !k.ctrl && k.name.size() == 1 + (k.shift ? 6 : 0)) {
     const char c = k.name.back();
-    io.AddInputCharacter(static_cast<unsigned>(k.shift || !(c >= 'A' && c <= 'Z') ? c : c - 'A' + 'a'));
+    io.AddInputCharacter(
+        static_cast<unsigned>(k.shift || !(c >= 'A' && c <= 'Z') ? c : c - 'A' + 'a'));
   }
 }
 

@@ -1,9 +1,9 @@
-#include "springlab/text.hpp"
-#include "util/language.hpp"
 #include "window/window_app.hpp"
 
 #include "homework/homework_watch.hpp"
+#include "springlab/text.hpp"
 #include "ui/homework_status.hpp"
+#include "util/language.hpp"
 
 // GL through epoxy first, then GLFW without its own GL header.
 #include "gfx/gl.hpp"
@@ -57,7 +57,8 @@ GLFWwindow* open_window(const WindowOptions& o, const std::string& title) {
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
   glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
   GLFWwindow* window = glfwCreateWindow(o.width, o.height, title.c_str(), nullptr, nullptr);
-  if (!window) throw std::runtime_error("no OpenGL 3.3 window could be made (" + g_glfw_error + ")");
+  if (!window)
+    throw std::runtime_error("no OpenGL 3.3 window could be made (" + g_glfw_error + ")");
   glfwMakeContextCurrent(window);
   glfwSwapInterval(o.frames ? 0 : 1);
   return window;
@@ -72,22 +73,25 @@ struct RunTimes {
 
 // What a --frames run did, for whoever scripted it (the tests read it); its exit status (3 when a
 // lane diverged or went unstable).
-int report_run(const Session& session, const WindowOptions& o, const RunTimes& r, int width, int height, int samples,
-               const std::string& renderer) {
-  std::printf("frames     %ld in %.3g s: %.1f frames/s (%dx%d, %d samples, %s)\n", r.frames, r.wall, r.frames / r.wall,
-              width, height, samples, renderer.c_str());
+int report_run(const Session& session, const WindowOptions& o, const RunTimes& r, int width,
+               int height, int samples, const std::string& renderer) {
+  std::printf("frames     %ld in %.3g s: %.1f frames/s (%dx%d, %d samples, %s)\n", r.frames, r.wall,
+              r.frames / r.wall, width, height, samples, renderer.c_str());
   // Each frame advances 1/60 s here, as fast as it can: the real-time factor is what the window
   // would show (above 1, it waits for the display instead).
   if (r.frames > 1 && r.steady > 0.0)
-    std::printf("steady     %.1f frames/s, %.3gx real time (after the first frame)\n", (r.frames - 1) / r.steady,
+    std::printf("steady     %.1f frames/s, %.3gx real time (after the first frame)\n",
+                (r.frames - 1) / r.steady,
                 (session.primary().sim.state().t - r.first_t) / r.steady);
   for (const Lane& lane : session.lanes())
     std::printf("lane       %s at t = %.4g s%s\n", lane_name(lane).c_str(), lane.sim.state().t,
                 lane.sim.diverged() ? (" (diverged: " + lane.sim.divergence()->reason + ")").c_str()
-                : lane.sim.instability() ? " (unstable)" : "");
+                : lane.sim.instability() ? " (unstable)"
+                                         : "");
   for (const Session::DragRecord& d : session.drags())
-    std::printf("dragged    particle %d from (%.4g, %.4g, %.4g) to (%.4g, %.4g, %.4g): %.4g m\n", d.particle,
-                d.from.x(), d.from.y(), d.from.z(), d.to.x(), d.to.y(), d.to.z(), (d.to - d.from).norm());
+    std::printf("dragged    particle %d from (%.4g, %.4g, %.4g) to (%.4g, %.4g, %.4g): %.4g m\n",
+                d.particle, d.from.x(), d.from.y(), d.from.z(), d.to.x(), d.to.y(), d.to.z(),
+                (d.to - d.from).norm());
   if (o.screenshot) std::printf("screenshot %s\n", o.screenshot->c_str());
   std::printf("language   %s\n", current_language().c_str());
   int result = 0;
@@ -122,8 +126,9 @@ void start_imgui(GLFWwindow* window, const AppSettings& settings, float scale) {
 // The frames until the window closes (or --frames are drawn): paced by the wall clock, one
 // simulated frame every 1/60 s, or as fast as they come with --frames. `shown_w` x `shown_h`:
 // the last frame's size.
-RunTimes frame_loop(GLFWwindow* window, InteractiveApp& app, const WindowOptions& o, const std::vector<KeyPress>& keys,
-                    HomeworkWatch* homework, int& shown_w, int& shown_h) {
+RunTimes frame_loop(GLFWwindow* window, InteractiveApp& app, const WindowOptions& o,
+                    const std::vector<KeyPress>& keys, HomeworkWatch* homework, int& shown_w,
+                    int& shown_h) {
   FramePacer pacer;
   const auto start = Clock::now();
   long frames = 0;
@@ -133,8 +138,10 @@ RunTimes frame_loop(GLFWwindow* window, InteractiveApp& app, const WindowOptions
     if (!o.frames) {
       // Paced by the wall clock: one simulated frame every 1/60 s, whatever the display does.
       const double wait = pacer.seconds_to_next();
-      if (wait > 0) glfwWaitEventsTimeout(wait);
-      else glfwPollEvents();
+      if (wait > 0)
+        glfwWaitEventsTimeout(wait);
+      else
+        glfwPollEvents();
       if (!pacer.take()) continue;
     } else {
       glfwPollEvents();
@@ -177,20 +184,24 @@ RunTimes frame_loop(GLFWwindow* window, InteractiveApp& app, const WindowOptions
 
 int run_window(const AppSettings& settings, const WindowOptions& o) {
   Prepared prepared = prepare(settings.scene, settings.sim);
-  if (settings.compare) make_scene_kind(prepared.scene)->lanes_named(*settings.compare, "--compare");  // before any window
+  if (settings.compare)
+    make_scene_kind(prepared.scene)
+        ->lanes_named(*settings.compare, "--compare");  // before any window
   std::optional<Script> script;
   if (settings.script) script = load_script(*settings.script, prepared.scene);
   // The student's rope, built and checked before any window opens: a file that does not compile
   // is bad input, display or not.
   std::unique_ptr<HomeworkWatch> homework;
   if (o.homework) homework = std::make_unique<HomeworkWatch>(*o.homework);
-  const std::vector<KeyPress> keys = o.keys ? parse_key_presses(*o.keys, "--keys") : std::vector<KeyPress>{};
+  const std::vector<KeyPress> keys =
+      o.keys ? parse_key_presses(*o.keys, "--keys") : std::vector<KeyPress>{};
 
   glfwSetErrorCallback([](int, const char* message) { g_glfw_error = message; });
   if (!glfwInit())
-    throw std::runtime_error(
-        "the interactive app needs a display, and none could be opened (" + g_glfw_error +
-        "). Run it on a desktop, under xvfb-run -a springlab view, or without one: springlab render SCENE --video out.mp4");
+    throw std::runtime_error("the interactive app needs a display, and none could be opened (" +
+                             g_glfw_error +
+                             "). Run it on a desktop, under xvfb-run -a springlab view, or without "
+                             "one: springlab render SCENE --video out.mp4");
   struct Terminate {
     ~Terminate() { glfwTerminate(); }
   } terminate;
@@ -211,16 +222,19 @@ int run_window(const AppSettings& settings, const WindowOptions& o) {
     if (software && !o.threads_given) set_thread_count(1);
 
     InteractiveApp app(std::move(prepared), settings, std::move(script), scale, samples, !o.frames);
-    if (homework) app.set_platform_controls([&homework] { ui::draw_homework_status(homework->status()); });
+    if (homework)
+      app.set_platform_controls([&homework] { ui::draw_homework_status(homework->status()); });
     glfwSetWindowUserPointer(window, &app);
     // A scene file dropped on the window opens.
     glfwSetDropCallback(window, [](GLFWwindow* w, int count, const char** paths) {
-      if (count > 0) static_cast<InteractiveApp*>(glfwGetWindowUserPointer(w))->open_after_frame(paths[0]);
+      if (count > 0)
+        static_cast<InteractiveApp*>(glfwGetWindowUserPointer(w))->open_after_frame(paths[0]);
     });
 
     int shown_w = 0, shown_h = 0;
     const RunTimes times = frame_loop(window, app, o, keys, homework.get(), shown_w, shown_h);
-    if (o.frames) result = report_run(app.session(), o, times, shown_w, shown_h, samples, gl_renderer);
+    if (o.frames)
+      result = report_run(app.session(), o, times, shown_w, shown_h, samples, gl_renderer);
   }
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();

@@ -15,9 +15,10 @@ struct WindowOptions {
   std::optional<long> frames;  // run this many frames as fast as they come, then exit
   int width = 1280, height = 720;
   int msaa = -1;  // samples; -1: 4 on a GPU, none on a software rasteriser (to keep 60 frames/s)
-  bool threads_given = false;  // --threads was given (else a software rasteriser leaves one core to the simulation)
+  bool threads_given =
+      false;  // --threads was given (else a software rasteriser leaves one core to the simulation)
   std::optional<std::string> homework;  // a student's rope.cpp: its steps as lanes (app/homework/)
-  std::optional<std::string> keys;      // keys pressed, one every other frame (window/key_presses.hpp)
+  std::optional<std::string> keys;  // keys pressed, one every other frame (window/key_presses.hpp)
 };
 
 // Runs until the window closes (or after `frames` frames). Throws InputError for a bad scene,

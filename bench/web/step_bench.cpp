@@ -22,14 +22,22 @@ int main(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) {
       const std::string arg = argv[i];
       const std::size_t eq = arg.find('=');
-      const std::string key = arg.substr(0, eq), value = eq == std::string::npos ? "" : arg.substr(eq + 1);
-      if (key == "scene") scene = value;
-      else if (key == "method") options.method = value;
-      else if (key == "dt") options.dt = std::stod(value);
-      else if (key == "steps") options.steps = std::stoll(value);
-      else if (key == "repeat") repeat = std::max(1, std::stoi(value));
-      else if (key == "set") options.sets.push_back(value);
-      else throw std::invalid_argument("unknown argument '" + arg + "'");
+      const std::string key = arg.substr(0, eq),
+                        value = eq == std::string::npos ? "" : arg.substr(eq + 1);
+      if (key == "scene")
+        scene = value;
+      else if (key == "method")
+        options.method = value;
+      else if (key == "dt")
+        options.dt = std::stod(value);
+      else if (key == "steps")
+        options.steps = std::stoll(value);
+      else if (key == "repeat")
+        repeat = std::max(1, std::stoi(value));
+      else if (key == "set")
+        options.sets.push_back(value);
+      else
+        throw std::invalid_argument("unknown argument '" + arg + "'");
     }
     app::Prepared p = app::prepare(scene, options);
     Simulation s(std::move(p.scene.model), std::move(p.scene.state), p.settings);
@@ -39,12 +47,15 @@ int main(int argc, char** argv) {
     for (int run = 0; run < repeat; ++run) {
       const auto start = std::chrono::steady_clock::now();
       taken = s.advance(p.steps);
-      fastest = std::min(fastest, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      fastest = std::min(
+          fastest, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     }
     const double springs = s.model().spring_count();
-    std::printf("springs=%g\nsteps=%lld\nsubsteps=%d\nseconds=%.6g\nns_per_spring_step=%.4g\ndiverged=%d\n", springs,
-                static_cast<long long>(taken), s.settings().substeps, fastest,
-                1e9 * fastest / (static_cast<double>(taken) * s.settings().substeps * springs), s.diverged() ? 1 : 0);
+    std::printf(
+        "springs=%g\nsteps=%lld\nsubsteps=%d\nseconds=%.6g\nns_per_spring_step=%.4g\ndiverged=%d\n",
+        springs, static_cast<long long>(taken), s.settings().substeps, fastest,
+        1e9 * fastest / (static_cast<double>(taken) * s.settings().substeps * springs),
+        s.diverged() ? 1 : 0);
     EM_ASM({ window.benchFinished(0); });
     return 0;
   } catch (const std::exception& e) {

@@ -14,8 +14,8 @@ int main(int argc, char** argv) {
   }
   try {
     const springlab::Scene scene = springlab::load_scene(argv[1]);
-    std::printf("springlab %s: %d particles, %d springs\n", springlab::kVersion, scene.model.particle_count(),
-                scene.model.spring_count());
+    std::printf("springlab %s: %d particles, %d springs\n", springlab::kVersion,
+                scene.model.particle_count(), scene.model.spring_count());
     for (springlab::Method method : {springlab::Method::SymplecticEuler, springlab::Method::RK4}) {
       springlab::SimulationSettings settings;
       settings.method = method;
@@ -25,8 +25,9 @@ int main(int argc, char** argv) {
       const auto steps = static_cast<std::int64_t>(1.0 / scene.dt + 0.5);
       sim.advance(steps);
       // As `springlab run` prints it ("total %g J").
-      std::printf("%s: energy total %g J after %lld steps (initially %g J)\n", springlab::method_info(method).name,
-                  sim.energy().total(), static_cast<long long>(steps), start);
+      std::printf("%s: energy total %g J after %lld steps (initially %g J)\n",
+                  springlab::method_info(method).name, sim.energy().total(),
+                  static_cast<long long>(steps), start);
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "consumer: %s\n", e.what());

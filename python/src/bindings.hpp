@@ -3,13 +3,12 @@
 //
 //   module.cpp      the module: version, data folder, shipped scenes and tableaux
 //   errors.cpp      springlab::InputError -> springlab.InputError, with the command line's message
-//   options.cpp     keyword options -> the command line's SimOptions (the same checks, the same words)
-//   scenes.cpp      Scene: a scene file loaded, with --set overrides
-//   methods.cpp     the method table's rows, their tableaux
-//   simulation.cpp  Simulation: stepped; its state as numpy views; energies; divergence
-//   stability.cpp   StabilityAnalysis: each method's limit and its limiting mode
-//   sweep.cpp       sweep(): accuracy against cost, as numpy arrays
-//   homework.cpp    a step of one's own (fn(x, v, force, h)) and springlab.homework.check
+//   options.cpp     keyword options -> the command line's SimOptions (the same checks, the same
+//   words) scenes.cpp      Scene: a scene file loaded, with --set overrides methods.cpp     the
+//   method table's rows, their tableaux simulation.cpp  Simulation: stepped; its state as numpy
+//   views; energies; divergence stability.cpp   StabilityAnalysis: each method's limit and its
+//   limiting mode sweep.cpp       sweep(): accuracy against cost, as numpy arrays homework.cpp    a
+//   step of one's own (fn(x, v, force, h)) and springlab.homework.check
 #pragma once
 
 #include <pybind11/eigen.h>
@@ -48,7 +47,8 @@ struct LoadedScene {
 // Positions, velocities, a mode's shape: N x 3 doubles, column-major with the columns a padded
 // stride apart (state.hpp). Returned to Python with reference_internal, this Map is a read-only
 // numpy view of those doubles whose base keeps the owner alive: no copy.
-using PointsView = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3>, 0, Eigen::OuterStride<>>;
+using PointsView =
+    Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3>, 0, Eigen::OuterStride<>>;
 inline PointsView view(const Points& p) {
   return PointsView(p.data(), p.rows(), 3, Eigen::OuterStride<>(p.outerStride()));
 }
@@ -58,7 +58,8 @@ inline PointsView view(const Points& p) {
 // rest.
 app::SimOptions sim_options(const py::kwargs& options, std::vector<std::string>& known);
 // Refuses a keyword no option reads: TypeError, as Python does for a function's arguments.
-void refuse_unknown(const char* function, const py::kwargs& options, const std::vector<std::string>& known);
+void refuse_unknown(const char* function, const py::kwargs& options,
+                    const std::vector<std::string>& known);
 // --set as a string, a list of "KEY=VALUE" strings, or a dict {key: value} (a value not a string
 // is written as JSON: 64, [0, -9.81, 0], true).
 std::vector<std::string> set_overrides(const py::handle& set);

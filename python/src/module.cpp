@@ -5,7 +5,9 @@
 
 PYBIND11_MODULE(_springlab, m) {
   using namespace springlab::python;
-  m.doc() = "springlab: mass-spring simulation for teaching (scenes, methods, stability, accuracy sweeps)";
+  m.doc() =
+      "springlab: mass-spring simulation for teaching (scenes, methods, stability, accuracy "
+      "sweeps)";
   m.attr("__version__") = springlab::kVersion;
   bind_errors(m);
   bind_methods(m);

@@ -39,7 +39,7 @@ std::vector<std::string> set_overrides(const py::handle& set) {
     const py::object dumps = py::module_::import("json").attr("dumps");
     for (const auto& [key, value] : set.cast<py::dict>()) {
       const std::string text = py::isinstance<py::str>(value) ? value.cast<std::string>()
-                                                               : dumps(value).cast<std::string>();
+                                                              : dumps(value).cast<std::string>();
       out.push_back(py::str(key).cast<std::string>() + "=" + text);
     }
     return out;
@@ -68,18 +68,23 @@ app::SimOptions sim_options(const py::kwargs& kw, std::vector<std::string>& know
     o.iterations = static_cast<int>(whole("--iterations", v, app::kIterations));
   if (auto v = given("rho"); !v.is_none()) o.rho = v.cast<double>();
   if (auto v = given("set"); !v.is_none()) o.sets = set_overrides(v);
-  if (auto v = given("threads"); !v.is_none()) o.threads = static_cast<int>(whole("--threads", v, app::kThreads));
+  if (auto v = given("threads"); !v.is_none())
+    o.threads = static_cast<int>(whole("--threads", v, app::kThreads));
   return o;
 }
 
-void refuse_unknown(const char* function, const py::kwargs& kw, const std::vector<std::string>& known) {
+void refuse_unknown(const char* function, const py::kwargs& kw,
+                    const std::vector<std::string>& known) {
   for (const auto& [key, value] : kw) {
     const std::string name = py::str(key).cast<std::string>();
     if (std::find(known.begin(), known.end(), name) == known.end())
-      throw py::type_error(std::string(function) + "() got an unexpected keyword argument '" + name + "'");
+      throw py::type_error(std::string(function) + "() got an unexpected keyword argument '" +
+                           name + "'");
   }
 }
 
-Method method_named(const std::string& name) { return app::resolve_method(name); }
+Method method_named(const std::string& name) {
+  return app::resolve_method(name);
+}
 
 }  // namespace springlab::python

@@ -1,23 +1,24 @@
 // Simulation: a scene made ready as `springlab run` makes it (app::prepare: the same options, the
 // same checks, the same settings), stepped from Python. Its state is read through numpy views of
 // the simulation's own arrays, without a copy.
+#include "springlab/simulation.hpp"
+
 #include <algorithm>
 #include <cstdio>
 
 #include "bindings.hpp"
 #include "divergence_error.hpp"
-#include "own_step.hpp"
 #include "options/option_ranges.hpp"
+#include "own_step.hpp"
 #include "springlab/error.hpp"
-#include "springlab/simulation.hpp"
 
 namespace springlab::python {
 
 namespace {
 
 struct PySimulation {
-  std::string scene;                  // its name, for messages
-  std::int64_t planned_steps = 0;     // steps=, or duration= (or the scene's) / dt, as `run` takes
+  std::string scene;               // its name, for messages
+  std::int64_t planned_steps = 0;  // steps=, or duration= (or the scene's) / dt, as `run` takes
   std::unique_ptr<Simulation> sim;
 };
 
@@ -27,8 +28,10 @@ std::unique_ptr<PySimulation> make(const py::object& scene, const py::kwargs& gi
   py::kwargs kw;
   py::object own;
   for (const auto& [key, value] : given) {
-    if (key.cast<std::string>() == "method" && PyCallable_Check(value.ptr())) own = py::reinterpret_borrow<py::object>(value);
-    else kw[key] = value;
+    if (key.cast<std::string>() == "method" && PyCallable_Check(value.ptr()))
+      own = py::reinterpret_borrow<py::object>(value);
+    else
+      kw[key] = value;
   }
   std::vector<std::string> known;
   app::SimOptions options = sim_options(kw, known);
@@ -43,7 +46,8 @@ std::unique_ptr<PySimulation> make(const py::object& scene, const py::kwargs& gi
   }
   app::Prepared p = app::prepare(source, options);
   // As `run` does: the iterative methods' artificial damping is measured against the physics'.
-  if (method_info(p.settings.method).family == MethodFamily::Iterative) p.settings.track_dissipation = true;
+  if (method_info(p.settings.method).family == MethodFamily::Iterative)
+    p.settings.track_dissipation = true;
   if (own) {
     p.settings.own_step_name = step_name(own);
     p.settings.own_step = python_step(own, p.settings.own_step_name);
@@ -52,7 +56,8 @@ std::unique_ptr<PySimulation> make(const py::object& scene, const py::kwargs& gi
   auto out = std::make_unique<PySimulation>();
   out->scene = p.scene.name;
   out->planned_steps = p.steps;
-  out->sim = std::make_unique<Simulation>(std::move(p.scene.model), std::move(p.scene.state), p.settings);
+  out->sim =
+      std::make_unique<Simulation>(std::move(p.scene.model), std::move(p.scene.state), p.settings);
   return out;
 }
 
@@ -97,11 +102,12 @@ void bind_results(py::module_& m) {
       .def_property_readonly("potential", &Energy::potential, "spring + gravity + field")
       .def_property_readonly("total", &Energy::total)
       .def("__repr__", [](const Energy& e) {
-        return "<springlab.Energy kinetic " + format(e.kinetic) + " J, potential " + format(e.potential()) +
-               " J, total " + format(e.total()) + " J>";
+        return "<springlab.Energy kinetic " + format(e.kinetic) + " J, potential " +
+               format(e.potential()) + " J, total " + format(e.total()) + " J>";
       });
 
-  py::class_<Counters>(m, "Counters", "work done, summed over steps: the machine-independent cost of a run")
+  py::class_<Counters>(m, "Counters",
+                       "work done, summed over steps: the machine-independent cost of a run")
       .def_readonly("force_evals", &Counters::force_evals)
       .def_readonly("linear_solves", &Counters::linear_solves)
       .def_readonly("solver_iterations", &Counters::solver_iterations)
@@ -112,49 +118,71 @@ void bind_results(py::module_& m) {
   py::class_<Divergence>(m, "Divergence", "how a run diverged or went numerically unstable")
       .def_readonly("step", &Divergence::step, "the step during which it happened (1-based)")
       .def_readonly("t", &Divergence::t, "time of the last good state kept, s")
-      .def_property_readonly("method", [](const Divergence& d) {
-        return d.own_step.empty() ? std::string(method_info(d.method).name) : d.own_step;
-      })
+      .def_property_readonly("method",
+                             [](const Divergence& d) {
+                               return d.own_step.empty() ? std::string(method_info(d.method).name)
+                                                         : d.own_step;
+                             })
       .def_readonly("h", &Divergence::h)
       .def_readonly("stable_h", &Divergence::stable_h, "the method's stated limit")
       .def_readonly("unstable", &Divergence::unstable, "caught by the energy audit")
       .def_readonly("reason", &Divergence::reason)
-      .def_property_readonly("message", &Divergence::message, "one paragraph, as `springlab run` prints it");
+      .def_property_readonly("message", &Divergence::message,
+                             "one paragraph, as `springlab run` prints it");
 }
 
 // What a Simulation says of itself: its scene and settings, its state as numpy views, its
 // energies, cost and divergence.
 void bind_readouts(py::class_<PySimulation>& simulation) {
-  simulation
-      .def_property_readonly("scene", [](const PySimulation& s) { return s.scene; })
+  simulation.def_property_readonly("scene", [](const PySimulation& s) { return s.scene; })
       .def_property_readonly("planned_steps", [](const PySimulation& s) { return s.planned_steps; })
-      .def_property_readonly("method", [](const PySimulation& s) {
-        const SimulationSettings& settings = s.sim->settings();
-        return settings.own_step ? settings.own_step_name : std::string(method_info(settings.method).name);
-      }, "the row's name, or the name of the function given as method=")
-      .def_property_readonly("t", [](const PySimulation& s) { return s.sim->state().t; }, "s")
-      .def_property_readonly("steps_taken", [](const PySimulation& s) { return s.sim->steps_taken(); })
+      .def_property_readonly(
+          "method",
+          [](const PySimulation& s) {
+            const SimulationSettings& settings = s.sim->settings();
+            return settings.own_step ? settings.own_step_name
+                                     : std::string(method_info(settings.method).name);
+          },
+          "the row's name, or the name of the function given as method=")
+      .def_property_readonly(
+          "t", [](const PySimulation& s) { return s.sim->state().t; }, "s")
+      .def_property_readonly("steps_taken",
+                             [](const PySimulation& s) { return s.sim->steps_taken(); })
       .def_property_readonly("dt", [](const PySimulation& s) { return s.sim->settings().dt; })
-      .def_property_readonly("substeps", [](const PySimulation& s) { return s.sim->settings().substeps; })
-      .def_property_readonly("auto_substeps", [](const PySimulation& s) { return s.sim->auto_substeps(); })
-      .def_property_readonly("substeps_capped", [](const PySimulation& s) { return s.sim->substeps_capped(); })
-      .def_property_readonly("h", [](const PySimulation& s) { return s.sim->h(); }, "dt / substeps")
-      .def_property_readonly("particle_count", [](const PySimulation& s) { return s.sim->model().particle_count(); })
-      .def_property_readonly("spring_count", [](const PySimulation& s) { return s.sim->model().spring_count(); })
+      .def_property_readonly("substeps",
+                             [](const PySimulation& s) { return s.sim->settings().substeps; })
+      .def_property_readonly("auto_substeps",
+                             [](const PySimulation& s) { return s.sim->auto_substeps(); })
+      .def_property_readonly("substeps_capped",
+                             [](const PySimulation& s) { return s.sim->substeps_capped(); })
+      .def_property_readonly(
+          "h", [](const PySimulation& s) { return s.sim->h(); }, "dt / substeps")
+      .def_property_readonly("particle_count",
+                             [](const PySimulation& s) { return s.sim->model().particle_count(); })
+      .def_property_readonly("spring_count",
+                             [](const PySimulation& s) { return s.sim->model().spring_count(); })
       .def_property_readonly(
           "positions", [](const PySimulation& s) { return view(s.sim->state().x); },
-          py::return_value_policy::reference_internal, "N x 3, m: a read-only view of the state now")
+          py::return_value_policy::reference_internal,
+          "N x 3, m: a read-only view of the state now")
       .def_property_readonly(
           "velocities", [](const PySimulation& s) { return view(s.sim->state().v); },
-          py::return_value_policy::reference_internal, "N x 3, m/s: a read-only view of the state now")
-      .def("state_hash", [](const PySimulation& s) { return state_hash(s.sim->state()); },
-           "FNV-1a of the state's exact bits: equal hashes mean bit-identical states")
+          py::return_value_policy::reference_internal,
+          "N x 3, m/s: a read-only view of the state now")
+      .def(
+          "state_hash", [](const PySimulation& s) { return state_hash(s.sim->state()); },
+          "FNV-1a of the state's exact bits: equal hashes mean bit-identical states")
       .def("energy", [](const PySimulation& s) { return s.sim->energy(); })
-      .def_property_readonly("energy_scale", [](const PySimulation& s) { return s.sim->energy_scale(); })
-      .def_property_readonly("dissipated", [](const PySimulation& s) { return s.sim->dissipated(); },
-                             "J taken out by damping, drag and contacts (counted for the iterative methods, as by run)")
-      .def_property_readonly("external_work", [](const PySimulation& s) { return s.sim->external_work(); })
-      .def_property_readonly("net_energy", [](const PySimulation& s) { return s.sim->net_energy(); })
+      .def_property_readonly("energy_scale",
+                             [](const PySimulation& s) { return s.sim->energy_scale(); })
+      .def_property_readonly(
+          "dissipated", [](const PySimulation& s) { return s.sim->dissipated(); },
+          "J taken out by damping, drag and contacts (counted for the iterative methods, as by "
+          "run)")
+      .def_property_readonly("external_work",
+                             [](const PySimulation& s) { return s.sim->external_work(); })
+      .def_property_readonly("net_energy",
+                             [](const PySimulation& s) { return s.sim->net_energy(); })
       .def_property_readonly("counters", [](const PySimulation& s) { return s.sim->counters(); })
       .def_property_readonly("diverged", [](const PySimulation& s) { return s.sim->diverged(); })
       .def_property_readonly(
@@ -164,8 +192,9 @@ void bind_readouts(py::class_<PySimulation>& simulation) {
             return *s.sim->explain_divergence();
           },
           "how it diverged (with the stated limit), or None")
-      .def_property_readonly("instability", [](const PySimulation& s) { return s.sim->instability(); },
-                             "the energy audit's finding, or None");
+      .def_property_readonly(
+          "instability", [](const PySimulation& s) { return s.sim->instability(); },
+          "the energy audit's finding, or None");
 }
 
 // The stability analysis and limit, and the settings changed between steps as the app's panels
@@ -186,8 +215,10 @@ void bind_analysis_and_settings(py::class_<PySimulation>& simulation) {
           "stability_limit",
           [](PySimulation& s) {
             if (s.sim->settings().own_step)
-              throw InputError(s.sim->settings().own_step_name + " is a step of your own: springlab states no limit for it "
-                               "(springlab.homework.check measures its stability against the row it is)");
+              throw InputError(
+                  s.sim->settings().own_step_name +
+                  " is a step of your own: springlab states no limit for it "
+                  "(springlab.homework.check measures its stability against the row it is)");
             {
               py::gil_scoped_release unlocked;
               s.sim->stability();
@@ -196,7 +227,8 @@ void bind_analysis_and_settings(py::class_<PySimulation>& simulation) {
           },
           "the current method's stated limit (a copy); InputError for a step of your own")
       .def(
-          "set_method", [](PySimulation& s, const std::string& name) { s.sim->set_method(method_named(name)); },
+          "set_method",
+          [](PySimulation& s, const std::string& name) { s.sim->set_method(method_named(name)); },
           py::arg("method"))
       .def(
           "set_dt",
@@ -208,10 +240,12 @@ void bind_analysis_and_settings(py::class_<PySimulation>& simulation) {
       .def(
           "set_substeps",
           [](PySimulation& s, const py::object& substeps) {
-            std::string text = py::isinstance<py::str>(substeps) ? substeps.cast<std::string>()
-                                                                  : py::repr(substeps).cast<std::string>();
+            std::string text = py::isinstance<py::str>(substeps)
+                                   ? substeps.cast<std::string>()
+                                   : py::repr(substeps).cast<std::string>();
             if (text == "auto") return s.sim->set_auto_substeps(s.sim->settings().safety);
-            const std::string error = app::parse_whole_number(text, app::kSubsteps.lo, app::kSubsteps.hi);
+            const std::string error =
+                app::parse_whole_number(text, app::kSubsteps.lo, app::kSubsteps.hi);
             if (!error.empty()) throw InputError("--substeps: " + error + " (or auto)");
             s.sim->set_substeps(std::stoi(text));
           },
@@ -233,14 +267,16 @@ void bind_analysis_and_settings(py::class_<PySimulation>& simulation) {
       .def("__repr__", [](const PySimulation& s) {
         const SimulationSettings& settings = s.sim->settings();
         return "<springlab.Simulation '" + s.scene + "' " +
-               (settings.own_step ? settings.own_step_name : std::string(method_info(settings.method).name)) +
+               (settings.own_step ? settings.own_step_name
+                                  : std::string(method_info(settings.method).name)) +
                ", t = " + format(s.sim->state().t) + " s>";
       });
 }
 
 void bind_simulation(py::module_& m) {
   bind_results(m);
-  py::class_<PySimulation> simulation(m, "Simulation", R"(A scene stepped as `springlab run` steps it.
+  py::class_<PySimulation> simulation(m, "Simulation",
+                                      R"(A scene stepped as `springlab run` steps it.
 
 Simulation(scene, **options): scene is a shipped scene's name, a JSON file or a Scene; options are
 the command line's: method="rk4" (or a function of your own, fn(x, v, force, h) -> (x, v): see
@@ -255,7 +291,8 @@ stepping (or keep a .copy()).)");
       .def(
           "step", [](PySimulation& s) { return s.sim->step(); },
           "one step of dt; False (and nothing done) once the run has diverged")
-      .def("advance", &advance, py::arg("steps"), "up to `steps` steps; returns how many were taken")
+      .def("advance", &advance, py::arg("steps"),
+           "up to `steps` steps; returns how many were taken")
       .def(
           "run",
           [](PySimulation& s, std::optional<std::int64_t> steps) {
@@ -271,9 +308,12 @@ stepping (or keep a .copy()).)");
             return taken;
           },
           py::arg("steps") = py::none(),
-          "the steps `springlab run` takes (planned_steps), or `steps`, after the stability analysis as `run` "
+          "the steps `springlab run` takes (planned_steps), or `steps`, after the stability "
+          "analysis as `run` "
           "makes it; springlab.DivergenceError, with `run`'s message, if it diverges")
-      .def("reset", [](PySimulation& s) { s.sim->reset(); }, "back to the initial state, keeping the settings");
+      .def(
+          "reset", [](PySimulation& s) { s.sim->reset(); },
+          "back to the initial state, keeping the settings");
   bind_readouts(simulation);
   bind_analysis_and_settings(simulation);
 }

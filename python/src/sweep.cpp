@@ -1,11 +1,12 @@
 // sweep(): accuracy against cost (springlab/sweep.hpp), set up as `springlab compare` sets it up
 // (app::prepare_sweep: the same defaults, checks and messages), its results as numpy arrays: a
 // column a field, a row a run, so that a work-precision chart is one plot call per method.
+#include "springlab/sweep.hpp"
+
 #include <cmath>
 
 #include "bindings.hpp"
 #include "options/sweep_options.hpp"
-#include "springlab/sweep.hpp"
 
 namespace springlab::python {
 
@@ -49,13 +50,18 @@ py::dict runs_table(const std::vector<SweepRun>& runs) {
   t["mean_step"] = array_of(column(runs, [](const SweepRun& r) { return r.mean_step; }));
   t["error"] = array_of(column(runs, [](const SweepRun& r) { return r.error; }));
   t["seconds"] = array_of(column(runs, [](const SweepRun& r) { return r.seconds; }));
-  t["force_evals"] = array_of(column(runs, [](const SweepRun& r) { return r.counters.force_evals; }));
-  t["linear_solves"] = array_of(column(runs, [](const SweepRun& r) { return r.counters.linear_solves; }));
-  t["solver_iterations"] = array_of(column(runs, [](const SweepRun& r) { return r.counters.solver_iterations; }));
+  t["force_evals"] =
+      array_of(column(runs, [](const SweepRun& r) { return r.counters.force_evals; }));
+  t["linear_solves"] =
+      array_of(column(runs, [](const SweepRun& r) { return r.counters.linear_solves; }));
+  t["solver_iterations"] =
+      array_of(column(runs, [](const SweepRun& r) { return r.counters.solver_iterations; }));
   t["accepted"] = array_of(column(runs, [](const SweepRun& r) { return r.counters.accepted; }));
   t["rejected"] = array_of(column(runs, [](const SweepRun& r) { return r.counters.rejected; }));
   // The work-precision chart's cost, the same on every machine (app/chart/compare_charts.cpp).
-  t["work"] = array_of(column(runs, [](const SweepRun& r) { return r.counters.force_evals + r.counters.solver_iterations; }));
+  t["work"] = array_of(column(runs, [](const SweepRun& r) {
+    return r.counters.force_evals + r.counters.solver_iterations;
+  }));
   t["diverged"] = array_of(column(runs, [](const SweepRun& r) { return r.diverged; }));
   t["diverged_at"] = array_of(column(runs, [](const SweepRun& r) { return r.diverged_at; }));
   t["rise"] = array_of(column(runs, [](const SweepRun& r) { return r.rise; }));
@@ -67,12 +73,17 @@ py::dict summary_table(const std::vector<MethodSummary>& rows) {
   py::dict t;
   if (rows.empty()) return t;
   t["method"] = names(column(rows, [](const MethodSummary& r) { return r.method; }));
-  t["order_table"] = array_of(column(rows, [](const MethodSummary& r) { return method_info(r.method).order; }));
+  t["order_table"] =
+      array_of(column(rows, [](const MethodSummary& r) { return method_info(r.method).order; }));
   t["order"] = array_of(column(rows, [](const MethodSummary& r) { return r.order; }));
-  t["fitted_points"] = array_of(column(rows, [](const MethodSummary& r) { return r.fitted_points; }));
-  t["measured_stable_h"] = array_of(column(rows, [](const MethodSummary& r) { return r.measured_stable_h; }));
-  t["measured_resolution"] = array_of(column(rows, [](const MethodSummary& r) { return r.measured_resolution; }));
-  t["theoretical_stable_h"] = array_of(column(rows, [](const MethodSummary& r) { return r.theoretical_stable_h; }));
+  t["fitted_points"] =
+      array_of(column(rows, [](const MethodSummary& r) { return r.fitted_points; }));
+  t["measured_stable_h"] =
+      array_of(column(rows, [](const MethodSummary& r) { return r.measured_stable_h; }));
+  t["measured_resolution"] =
+      array_of(column(rows, [](const MethodSummary& r) { return r.measured_resolution; }));
+  t["theoretical_stable_h"] =
+      array_of(column(rows, [](const MethodSummary& r) { return r.theoretical_stable_h; }));
   t["theory_exact"] = array_of(column(rows, [](const MethodSummary& r) { return r.theory_exact; }));
   return t;
 }
@@ -81,25 +92,32 @@ py::dict summary_table(const std::vector<MethodSummary>& rows) {
 
 void bind_sweep(py::module_& m) {
   py::class_<DriftTrace>(m, "DriftTrace", "a method's energy drift at the scene's step")
-      .def_property_readonly("method", [](const DriftTrace& d) { return std::string(method_info(d.method).name); })
+      .def_property_readonly(
+          "method", [](const DriftTrace& d) { return std::string(method_info(d.method).name); })
       .def_readonly("substeps", &DriftTrace::substeps)
       .def_property_readonly("t", [](const DriftTrace& d) { return array_of(d.t); })
-      .def_property_readonly("drift", [](const DriftTrace& d) { return array_of(d.drift); },
-                             "(E + dissipated - E0) / energy scale")
+      .def_property_readonly(
+          "drift", [](const DriftTrace& d) { return array_of(d.drift); },
+          "(E + dissipated - E0) / energy scale")
       .def_readonly("diverged", &DriftTrace::diverged);
 
   py::class_<SolverErrorCurve>(m, "SolverErrorCurve")
-      .def_property_readonly("method", [](const SolverErrorCurve& c) { return std::string(method_info(c.method).name); })
-      .def_property_readonly("iterations", [](const SolverErrorCurve& c) { return array_of(c.iterations); })
+      .def_property_readonly(
+          "method",
+          [](const SolverErrorCurve& c) { return std::string(method_info(c.method).name); })
+      .def_property_readonly("iterations",
+                             [](const SolverErrorCurve& c) { return array_of(c.iterations); })
       .def_property_readonly("error", [](const SolverErrorCurve& c) { return array_of(c.error); });
 
-  py::class_<SolverErrorStudy>(m, "SolverErrorStudy", "the iterative methods' solver error at one step (solver_error.hpp)")
+  py::class_<SolverErrorStudy>(m, "SolverErrorStudy",
+                               "the iterative methods' solver error at one step (solver_error.hpp)")
       .def_readonly("h", &SolverErrorStudy::h)
       .def_readonly("motion", &SolverErrorStudy::motion)
       .def_readonly("residual", &SolverErrorStudy::residual)
       .def_readonly("curves", &SolverErrorStudy::curves);
 
-  py::class_<SweepResult>(m, "SweepResult", R"(Accuracy against cost, as `springlab compare` measures it.
+  py::class_<SweepResult>(m, "SweepResult",
+                          R"(Accuracy against cost, as `springlab compare` measures it.
 
 runs: a dict of equal-length numpy arrays, a row a run (method, h, tolerance, mean_step, error
 in m, seconds, force_evals, linear_solves, solver_iterations, accepted, rejected, work = force
@@ -107,7 +125,8 @@ evaluations + solver iterations, diverged, diverged_at, rise, unstable); grouped
 steps from coarse to fine. summary: the same a row a method (method, order_table, order fitted,
 fitted_points, measured_stable_h, measured_resolution, theoretical_stable_h, theory_exact).)")
       .def_property_readonly("runs", [](const SweepResult& r) { return runs_table(r.runs); })
-      .def_property_readonly("summary", [](const SweepResult& r) { return summary_table(r.methods); })
+      .def_property_readonly("summary",
+                             [](const SweepResult& r) { return summary_table(r.methods); })
       .def_readonly("drift", &SweepResult::drift)
       .def_readonly("reference", &SweepResult::reference, "'exact solution' or 'rk4 at h = ... s'")
       .def_readonly("reference_error", &SweepResult::reference_error, "m, estimated")

@@ -9,7 +9,8 @@ Usage: shown_literals.py [--fix] FILE...
   --fix        wrap them in tr() in place (a one-off; read the diff)
 Skipped: literals with no two letters in a row ("%s", "%.3f", "s"), ImGui IDs ("##open"), JSON
 (a literal with an escaped quote), and lines marked "// not shown" or "// symbols" (dt, k_s: the same
-in every language).
+in every language); a "// not shown" comment on a line of its own marks the whole statement below it
+(one that clang-format spreads over several lines).
 """
 import re
 import sys
@@ -121,6 +122,13 @@ def candidates(text):
         while end < len(text) and (text[end] != ";" or not mask[end]):
             end += 1
         spans.append((m.end(), end))
+    # Statements below a "// not shown" line of their own: from that line to the statement's ';'.
+    statements = []
+    for m in re.finditer(r"^[ \t]*// not shown[^\n]*\n", text, re.M):
+        end = m.end()
+        while end < len(text) and (text[end] != ";" or not mask[end]):
+            end += 1
+        statements.append((m.end(), end))
     found = set()
     for a, b in spans:
         i = a
@@ -131,6 +139,7 @@ def candidates(text):
                 line_end = text.find("\n", i)
                 line = text[text.rfind("\n", 0, i):line_end]
                 marked = "// not shown" in line or "// symbols" in line
+                marked = marked or any(s <= i < e for s, e in statements)
                 if not text[i - 1].isalnum() and not marked and shown(text, i, end) and not wrapped(text, i):
                     found.add((i, end))
                 i = end

@@ -2,17 +2,18 @@
 // explicit Euler's energy is said to rise and symplectic Euler's to hold (the growth per step
 // 1 + (h w)^2 and the bounded energy of a symplectic step); a diverged lane is said to leave the
 // chart; the CSV holds every point of every line.
+#include "chart/chart_text.hpp"
+
 #include <gtest/gtest.h>
 
 #include <memory>
 #include <regex>
 #include <sstream>
 
-#include "chart/chart_text.hpp"
 #include "chart/compare_charts.hpp"
+#include "session/session.hpp"
 #include "springlab/momentum.hpp"
 #include "springlab/sweep.hpp"
-#include "session/session.hpp"
 #include "support.hpp"
 #include "ui/live_charts.hpp"
 
@@ -31,7 +32,9 @@ std::unique_ptr<app::Session> compared(double dt, double seconds) {
   return session;
 }
 
-bool has(const std::string& text, const std::string& words) { return text.find(words) != std::string::npos; }
+bool has(const std::string& text, const std::string& words) {
+  return text.find(words) != std::string::npos;
+}
 
 TEST(ChartText, ExplicitEulersEnergyRisesAndSymplecticEulersHolds) {
   // h w = 0.1 on the spring (w = 10 rad/s): explicit Euler's energy x1.01 a step, 4 s of steps.
@@ -66,9 +69,12 @@ TEST(ChartText, TheCsvHoldsEveryPointOfEveryLine) {
   std::istringstream csv(chart::chart_csv(energy));
   std::string header, row;
   std::getline(csv, header);
-  EXPECT_EQ(std::count(header.begin(), header.end(), ','), 2 * static_cast<long>(energy.series.size()) - 1) << header;
+  EXPECT_EQ(std::count(header.begin(), header.end(), ','),
+            2 * static_cast<long>(energy.series.size()) - 1)
+      << header;
   EXPECT_TRUE(has(header, "euler t (s),euler J")) << header;
-  // Every row holds every line's point of its index (to the CSV's 9 digits), or nothing past its end.
+  // Every row holds every line's point of its index (to the CSV's 9 digits), or nothing past its
+  // end.
   std::size_t rows = 0, longest = 0;
   for (const chart::Series& s : energy.series) longest = std::max(longest, s.x.size());
   for (; std::getline(csv, row); ++rows) {
@@ -82,8 +88,10 @@ TEST(ChartText, TheCsvHoldsEveryPointOfEveryLine) {
         EXPECT_TRUE(cells[2 * k].empty()) << "row " << rows << ", line " << k;
         continue;
       }
-      EXPECT_NEAR(std::stod(cells[2 * k]), s.x[rows], 1e-8 * std::max(1.0, std::abs(s.x[rows]))) << "row " << rows << ", line " << k;
-      EXPECT_NEAR(std::stod(cells[2 * k + 1]), s.y[rows], 1e-8 * std::max(1.0, std::abs(s.y[rows]))) << "row " << rows << ", line " << k;
+      EXPECT_NEAR(std::stod(cells[2 * k]), s.x[rows], 1e-8 * std::max(1.0, std::abs(s.x[rows])))
+          << "row " << rows << ", line " << k;
+      EXPECT_NEAR(std::stod(cells[2 * k + 1]), s.y[rows], 1e-8 * std::max(1.0, std::abs(s.y[rows])))
+          << "row " << rows << ", line " << k;
     }
   }
   EXPECT_EQ(rows, longest);
@@ -133,7 +141,8 @@ TEST(ChartText, TheMomentumChartShowsWhatEachLaneKeeps) {
   session.set_compare({Method::XPBD, Method::VBD});
   session.set_stiffness(20000.0);
   session.advance_frame();  // free, at rest: nothing to keep yet, and said so
-  EXPECT_TRUE(has(ui::momentum_chart(session).title, "a free body at rest")) << ui::momentum_chart(session).title;
+  EXPECT_TRUE(has(ui::momentum_chart(session).title, "a free body at rest"))
+      << ui::momentum_chart(session).title;
   session.grab(0);
   const Eigen::Vector3d start = session.primary().sim.state().x.row(0).transpose();
   for (int frame = 1; frame <= 15; ++frame) {
@@ -150,7 +159,8 @@ TEST(ChartText, TheMomentumChartShowsWhatEachLaneKeeps) {
     return most;
   };
   const std::vector<double>& xpbd = chart.series[0].y;
-  EXPECT_TRUE(std::any_of(xpbd.begin(), xpbd.end(), [](double y) { return std::isnan(y); })) << "held: not free";
+  EXPECT_TRUE(std::any_of(xpbd.begin(), xpbd.end(), [](double y) { return std::isnan(y); }))
+      << "held: not free";
   EXPECT_LE(largest(chart.series[0]), kMomentumKept) << "xpbd's P";
   EXPECT_GT(largest(chart.series[2]), kMomentumVisible) << "vbd's P";
   EXPECT_TRUE(has(chart::describe_chart(chart), "vbd rises")) << chart::describe_chart(chart);

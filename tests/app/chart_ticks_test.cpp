@@ -1,16 +1,19 @@
 // Axis ticks: where they fall and how they read. A log axis labels every decade the same way
-// (plain from 0.001 to 10000, 1eN beyond); a linear axis gives each label the decimals its step needs.
+// (plain from 0.001 to 10000, 1eN beyond); a linear axis gives each label the decimals its step
+// needs.
 #include <gtest/gtest.h>
-
-#include "chart/chart.hpp"
 
 #include <cmath>
 #include <tuple>
 
+#include "chart/chart.hpp"
+
 namespace springlab::chart {
 namespace {
 
-float width_of_8(const std::string& label) { return 8.0f * static_cast<float>(label.size()); }
+float width_of_8(const std::string& label) {
+  return 8.0f * static_cast<float>(label.size());
+}
 
 std::vector<std::string> major_labels(const std::vector<Tick>& ticks) {
   std::vector<std::string> out;
@@ -21,12 +24,13 @@ std::vector<std::string> major_labels(const std::vector<Tick>& ticks) {
 
 TEST(ChartTicks, LogDecadesReadAlike) {
   EXPECT_EQ(major_labels(ticks(1e-6, 1e9, true, 20)),
-            (std::vector<std::string>{"1e-6", "1e-5", "1e-4", "0.001", "0.01", "0.1", "1", "10", "100", "1000",
-                                      "10000", "1e5", "1e6", "1e7", "1e8", "1e9"}));
+            (std::vector<std::string>{"1e-6", "1e-5", "1e-4", "0.001", "0.01", "0.1", "1", "10",
+                                      "100", "1000", "10000", "1e5", "1e6", "1e7", "1e8", "1e9"}));
 }
 
 TEST(ChartTicks, LinearStepsGetTheirDecimals) {
-  EXPECT_EQ(major_labels(ticks(0.0, 1.0, false, 4)), (std::vector<std::string>{"0", "0.25", "0.50", "0.75", "1.00"}));
+  EXPECT_EQ(major_labels(ticks(0.0, 1.0, false, 4)),
+            (std::vector<std::string>{"0", "0.25", "0.50", "0.75", "1.00"}));
   EXPECT_EQ(major_labels(ticks(0.0, 20000.0, false, 4)),
             (std::vector<std::string>{"0", "5000", "10000", "15000", "20000"}));
   EXPECT_EQ(major_labels(ticks(-2e-7, 2e-7, false, 4)),
@@ -44,16 +48,22 @@ TEST(ChartTicks, LogMinorTicksLabelTwoAndFiveOnShortAxes) {
 // A narrow chart (a phone, a panel on the side) keeps its x labels apart: as many ticks as fit,
 // never two labels running together, and all five where there is room.
 TEST(ChartTicks, XLabelsNeverRunTogether) {
-  const auto width = [](const std::string& label) { return 8.0f * static_cast<float>(label.size()); };  // 8 px a character
-  for (const auto& range : std::vector<std::tuple<double, double, bool>>{
-           {0.0, 1.0, false}, {-1.0, 1.0, false}, {0.0, 1.5, false}, {1e-4, 0.01, true}, {-0.12, -0.08, false}}) {
+  const auto width = [](const std::string& label) {
+    return 8.0f * static_cast<float>(label.size());
+  };  // 8 px a character
+  for (const auto& range : std::vector<std::tuple<double, double, bool>>{{0.0, 1.0, false},
+                                                                         {-1.0, 1.0, false},
+                                                                         {0.0, 1.5, false},
+                                                                         {1e-4, 0.01, true},
+                                                                         {-0.12, -0.08, false}}) {
     // Plain variables: clang before 16 cannot capture a structured binding in a lambda.
     const double lo = std::get<0>(range), hi = std::get<1>(range);
     const bool log = std::get<2>(range);
     int most = 0;
     for (float plot = 40.0f; plot <= 800.0f; plot += 20.0f) {
       const auto at = [&](double v) {
-        const double f = log ? (std::log10(v) - std::log10(lo)) / (std::log10(hi) - std::log10(lo)) : (v - lo) / (hi - lo);
+        const double f = log ? (std::log10(v) - std::log10(lo)) / (std::log10(hi) - std::log10(lo))
+                             : (v - lo) / (hi - lo);
         return static_cast<float>(f) * plot;
       };
       const std::vector<Tick> t = ticks_that_fit(lo, hi, log, at, width, 4.0f);
@@ -62,7 +72,8 @@ TEST(ChartTicks, XLabelsNeverRunTogether) {
       for (const Tick& k : t) {
         if (k.label.empty()) continue;
         ++labels;
-        EXPECT_GE(at(k.value) - 0.5f * width(k.label), last + 4.0f) << lo << ".." << hi << " in " << plot << " px";
+        EXPECT_GE(at(k.value) - 0.5f * width(k.label), last + 4.0f)
+            << lo << ".." << hi << " in " << plot << " px";
         last = at(k.value) + 0.5f * width(k.label);
       }
       EXPECT_GE(labels, 1) << plot;
@@ -72,7 +83,8 @@ TEST(ChartTicks, XLabelsNeverRunTogether) {
   }
   // The case a phone showed: 5 ticks' labels in 100 px ran together as "00.250.50.751.00".
   const auto at = [](double v) { return static_cast<float>(v) * 100.0f; };
-  EXPECT_LT(ticks_that_fit(0.0, 1.0, false, at, width_of_8, 4.0f).size(), ticks(0.0, 1.0, false, 5).size());
+  EXPECT_LT(ticks_that_fit(0.0, 1.0, false, at, width_of_8, 4.0f).size(),
+            ticks(0.0, 1.0, false, 5).size());
 }
 
 }  // namespace

@@ -31,7 +31,8 @@ app::Session rope_compared(double dt, const std::vector<Method>& methods) {
 const draw::Viewport kViewport{10, 20, 1280, 720};
 
 bool inside(const draw::Viewport& outer, const draw::Viewport& v) {
-  return v.x >= outer.x && v.y >= outer.y && v.x + v.width <= outer.x + outer.width && v.y + v.height <= outer.y + outer.height;
+  return v.x >= outer.x && v.y >= outer.y && v.x + v.width <= outer.x + outer.width &&
+         v.y + v.height <= outer.y + outer.height;
 }
 
 bool meet(const draw::Viewport& a, const draw::Viewport& b) {
@@ -42,7 +43,8 @@ bool meet(const draw::Viewport& a, const draw::Viewport& b) {
 // width a 16:9 frame of the scene shows; together, one view of every lane.
 TEST(CompareView, ApartEveryLaneHasAViewOfItsOwn) {
   for (std::size_t n : {2u, 3u, 4u}) {
-    const std::vector<Method> all = {Method::Euler, Method::SymplecticEuler, Method::RK4, Method::ImplicitEuler};
+    const std::vector<Method> all = {Method::Euler, Method::SymplecticEuler, Method::RK4,
+                                     Method::ImplicitEuler};
     const app::Session session = rope_compared(1e-4, {all.begin(), all.begin() + n});
     const Camera& camera = session.scene().camera;
     const auto views = draw::lane_views(session, camera, draw::CompareLayout::Apart, kViewport);
@@ -55,20 +57,26 @@ TEST(CompareView, ApartEveryLaneHasAViewOfItsOwn) {
       seen.push_back(v.lanes.front());
       // The world width it shows at its own aspect is at least a 16:9 frame's.
       const double aspect = static_cast<double>(v.viewport.width) / v.viewport.height;
-      EXPECT_GE(v.camera.height * aspect, camera.height * 16.0 / 9.0 * (1 - 1e-9)) << n << " lanes, view " << k;
+      EXPECT_GE(v.camera.height * aspect, camera.height * 16.0 / 9.0 * (1 - 1e-9))
+          << n << " lanes, view " << k;
       EXPECT_GE(v.camera.height, camera.height);
-      for (std::size_t j = k + 1; j < views.size(); ++j) EXPECT_FALSE(meet(v.viewport, views[j].viewport)) << k << ", " << j;
+      for (std::size_t j = k + 1; j < views.size(); ++j)
+        EXPECT_FALSE(meet(v.viewport, views[j].viewport)) << k << ", " << j;
       // The largest views it can: at least a quarter of the scene's place's height.
       EXPECT_GE(v.viewport.height, kViewport.height / 2 - 2);
     }
     std::sort(seen.begin(), seen.end());
     for (std::size_t k = 0; k < n; ++k) EXPECT_EQ(seen[k], static_cast<int>(k));
-    const auto together = draw::lane_views(session, camera, draw::CompareLayout::Together, kViewport);
+    const auto together =
+        draw::lane_views(session, camera, draw::CompareLayout::Together, kViewport);
     ASSERT_EQ(together.size(), 1u);
     EXPECT_EQ(together.front().lanes.size(), n);
-    EXPECT_EQ(draw::build_frames(session, draw::ViewOptions::for_scene(session.scene()), kViewport).size(), n);
+    EXPECT_EQ(draw::build_frames(session, draw::ViewOptions::for_scene(session.scene()), kViewport)
+                  .size(),
+              n);
   }
-  EXPECT_EQ(draw::parse_compare_layout("together", "--compare-layout"), draw::CompareLayout::Together);
+  EXPECT_EQ(draw::parse_compare_layout("together", "--compare-layout"),
+            draw::CompareLayout::Together);
   EXPECT_THROW(draw::parse_compare_layout("side", "--compare-layout"), InputError);
 }
 
@@ -82,24 +90,30 @@ TEST(CompareView, ADivergedLaneIsDrawnWithinTheScenesBounds) {
   int frames = 0;
   for (; frames < 300 && !session.lanes()[0].sim.diverged(); ++frames) {
     session.advance_frame();
-    for (std::size_t k = 1; k < session.lanes().size(); ++k)  // (a stable lane is never called insane)
-      EXPECT_EQ(session.lanes()[k].sane.t, session.lanes()[k].sim.state().t) << "frame " << frames << ", lane " << k;
+    for (std::size_t k = 1; k < session.lanes().size();
+         ++k)  // (a stable lane is never called insane)
+      EXPECT_EQ(session.lanes()[k].sane.t, session.lanes()[k].sim.state().t)
+          << "frame " << frames << ", lane " << k;
   }
-  ASSERT_TRUE(session.lanes()[0].sim.diverged()) << "explicit Euler should diverge within 300 frames";
+  ASSERT_TRUE(session.lanes()[0].sim.diverged())
+      << "explicit Euler should diverge within 300 frames";
   for (int k = 0; k < 30; ++k) session.advance_frame();
   const app::Lane& euler = session.lanes()[0];
   EXPECT_LT(euler.sane.t, euler.sim.divergence()->t);
-  // Its last good state is far out; the one drawn is within the bounds, springs at most twice their length.
+  // Its last good state is far out; the one drawn is within the bounds, springs at most twice their
+  // length.
   const auto spread = [&](const Points& x) {
     return (x.rowwise() - session.scene().camera.target.transpose()).rowwise().norm().maxCoeff();
   };
   EXPECT_GT(spread(euler.sim.state().x), reach);
   EXPECT_LE(spread(euler.sane.x), reach);
   for (int s = 0; s < model.spring_count(); ++s)
-    EXPECT_LE((euler.sane.x.row(model.spring_b[s]) - euler.sane.x.row(model.spring_a[s])).norm(), 2.0 * model.rest_length[s] + 1e-9);
+    EXPECT_LE((euler.sane.x.row(model.spring_b[s]) - euler.sane.x.row(model.spring_a[s])).norm(),
+              2.0 * model.rest_length[s] + 1e-9);
   // Drawn: every line of its view within the view, none longer than a quarter of its width.
   const draw::ViewOptions options = draw::ViewOptions::for_scene(session.scene());
-  const auto views = draw::lane_views(session, options.camera, draw::CompareLayout::Apart, kViewport);
+  const auto views =
+      draw::lane_views(session, options.camera, draw::CompareLayout::Apart, kViewport);
   const draw::Frame frame = draw::build_frame(session, options, views[0]);
   ASSERT_FALSE(frame.lines.empty());
   const draw::Viewport& v = views[0].viewport;
@@ -124,18 +138,23 @@ TEST(CompareView, APressInALanesViewPicksItsParticle) {
   for (int k = 0; k < 30; ++k) session.advance_frame();
   // The second lane's particle 12 a metre to the right of the first's (as lanes that part have it).
   const int particle = 12;
-  session.lanes()[1].sim.place(particle, session.lanes()[0].sim.state().x.row(particle).transpose() + Vec3(1.0, 0.0, 0.0));
-  const auto views = draw::lane_views(session, session.scene().camera, draw::CompareLayout::Apart, kViewport);
+  session.lanes()[1].sim.place(
+      particle, session.lanes()[0].sim.state().x.row(particle).transpose() + Vec3(1.0, 0.0, 0.0));
+  const auto views =
+      draw::lane_views(session, session.scene().camera, draw::CompareLayout::Apart, kViewport);
   ASSERT_EQ(views.size(), 2u);
   const draw::LaneView& second = views[1];
-  const Eigen::Vector3d at = draw::project(second.view, session.lanes()[1].sim.state().x.row(particle).transpose(),
-                                           second.viewport.width, second.viewport.height);
+  const Eigen::Vector3d at =
+      draw::project(second.view, session.lanes()[1].sim.state().x.row(particle).transpose(),
+                    second.viewport.width, second.viewport.height);
   // (Where the first lane has it, the pointer would miss: the pick is the second lane's.)
-  const Eigen::Vector3d other = draw::project(second.view, session.lanes()[0].sim.state().x.row(particle).transpose(),
-                                              second.viewport.width, second.viewport.height);
+  const Eigen::Vector3d other =
+      draw::project(second.view, session.lanes()[0].sim.state().x.row(particle).transpose(),
+                    second.viewport.width, second.viewport.height);
   ASSERT_GT((at - other).head<2>().norm(), 20.0);
   const ui::Pointer pointer{at.x() + second.viewport.x, at.y() + second.viewport.y};
-  const auto drag = ui::press(session, second.view, second.viewport, pointer, 6.0, second.lanes.front());
+  const auto drag =
+      ui::press(session, second.view, second.viewport, pointer, 6.0, second.lanes.front());
   ASSERT_TRUE(drag);
   EXPECT_EQ(drag->particle, particle);
   EXPECT_EQ(drag->lane, 1);

@@ -16,7 +16,8 @@ namespace {
 using ui::Tone;
 
 // A session of `scene` under `method` at dt, one step a frame's worth, played for `seconds`.
-std::unique_ptr<app::Session> played(Scene scene, Method method, double dt, double seconds, int substeps = 1) {
+std::unique_ptr<app::Session> played(Scene scene, Method method, double dt, double seconds,
+                                     int substeps = 1) {
   SimulationSettings settings = settings_for(scene);
   settings.method = method;
   settings.dt = dt;
@@ -32,7 +33,9 @@ ui::GaugeVerdict verdict(app::Session& session) {
   return ui::gauge_verdict(lane, &lane.sim.stability(), true);
 }
 
-bool says(const ui::GaugeVerdict& v, const std::string& words) { return v.text.find(words) != std::string::npos; }
+bool says(const ui::GaugeVerdict& v, const std::string& words) {
+  return v.text.find(words) != std::string::npos;
+}
 
 constexpr double kFrame = 1.0 / 30.0;
 
@@ -87,15 +90,18 @@ TEST(Gauge, InvertedCellsAndNothingUndefined) {
 // A stiff cloth thrown in empty space (lesson 11's): VBD's momentum off, XPBD's kept and silent.
 TEST(Gauge, AFreeBodysBrokenMomentum) {
   const auto thrown = [](Method method) {
-    Scene cloth = shipped("cloth", {"cloth.width=12", "cloth.height=12", "cloth.pinned=[]", "gravity=[0,0,0]", "drag=0"});
+    Scene cloth = shipped("cloth", {"cloth.width=12", "cloth.height=12", "cloth.pinned=[]",
+                                    "gravity=[0,0,0]", "drag=0"});
     set_stiffness(cloth.model, 20000.0);
     SimulationSettings settings = settings_for(cloth);
     settings.method = method;
     settings.dt = 1.0 / 60.0;
     settings.auto_substeps = false;
     auto session = std::make_unique<app::Session>(std::move(cloth), settings, 60.0);
-    session->play(parse_script(R"({"events": [{"t": 0.2, "grab": "cloth:0"}, {"t": 0.2, "move": [-1.0, 2.4, 0.4],
-                                   "over": 0.25}, {"t": 0.45, "release": true}]})", "throw", session->scene()));
+    session->play(parse_script(
+        R"({"events": [{"t": 0.2, "grab": "cloth:0"}, {"t": 0.2, "move": [-1.0, 2.4, 0.4],
+                                   "over": 0.25}, {"t": 0.45, "release": true}]})",
+        "throw", session->scene()));
     for (int frame = 0; frame < 90; ++frame) session->advance_frame();
     return session;
   };

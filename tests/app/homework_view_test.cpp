@@ -27,17 +27,18 @@ std::unique_ptr<Session> rope_session(const std::vector<std::string>& sets) {
   app::SimOptions options;
   options.dt = 1.0 / 8192;  // exact in float, as the exercise's step takes it
   options.substeps = "1";
-  options.kd = 0.0;         // the exercise's springs have no damping of their own
+  options.kd = 0.0;  // the exercise's springs have no damping of their own
   options.sets = sets;
-  options.sets.push_back("rope.mass=2");  // 0.125 kg a node: exact in float, as the exercise's mass is
+  options.sets.push_back(
+      "rope.mass=2");  // 0.125 kg a node: exact in float, as the exercise's mass is
   app::Prepared p = app::prepare("rope", options);
   return std::make_unique<Session>(std::move(p.scene), p.settings, 60.0);
 }
 
-// The student's semi-implicit Euler with its drag of 0.01 N s/m beside springlab's symplectic Euler,
-// which runs with what the checker fitted (that drag, no spring damping) instead of the scene's own
-// drag of 0.03: the two lanes stay together to rounding, and the student's code ran for it (the
-// rope fell and swung a metre). The Verlet row takes the student's d.
+// The student's semi-implicit Euler with its drag of 0.01 N s/m beside springlab's symplectic
+// Euler, which runs with what the checker fitted (that drag, no spring damping) instead of the
+// scene's own drag of 0.03: the two lanes stay together to rounding, and the student's code ran for
+// it (the rope fell and swung a metre). The Verlet row takes the student's d.
 TEST(HomeworkView, ALaneOfOnesOwnFollowsItsRowRunWithTheFittedDamping) {
   HomeworkWatch watch(kRopes / "correct.cpp");
   auto session = rope_session({});
@@ -65,12 +66,18 @@ TEST(HomeworkView, ALaneOfOnesOwnFollowsItsRowRunWithTheFittedDamping) {
   // The panel's account: both steps named with their damping, and the parameters the rows took.
   const std::vector<std::string>& lines = watch.status().lines;
   ASSERT_GE(lines.size(), 5u);
-  EXPECT_NE(lines[1].find("simulateEuler: Symplectic Euler, a global drag f = -c v, c = 0.01 N s/m"), std::string::npos)
+  EXPECT_NE(
+      lines[1].find("simulateEuler: Symplectic Euler, a global drag f = -c v, c = 0.01 N s/m"),
+      std::string::npos)
       << lines[1];
-  EXPECT_NE(lines[2].find("beside it springlab's symplectic-euler with drag 0.01 N s/m, k_d 0 N s/m"), std::string::npos)
+  EXPECT_NE(
+      lines[2].find("beside it springlab's symplectic-euler with drag 0.01 N s/m, k_d 0 N s/m"),
+      std::string::npos)
       << lines[2];
-  EXPECT_NE(lines[3].find("simulateVerlet: Verlet, damping factor d = 5e-05"), std::string::npos) << lines[3];
-  EXPECT_NE(lines[4].find("beside it springlab's verlet with drag 0 N s/m, k_d 0 N s/m, d = 5e-05"), std::string::npos)
+  EXPECT_NE(lines[3].find("simulateVerlet: Verlet, damping factor d = 5e-05"), std::string::npos)
+      << lines[3];
+  EXPECT_NE(lines[4].find("beside it springlab's verlet with drag 0 N s/m, k_d 0 N s/m, d = 5e-05"),
+            std::string::npos)
       << lines[4];
 }
 
@@ -82,20 +89,28 @@ TEST(HomeworkView, AWrongLaneLeavesItsRow) {
   ASSERT_EQ(session->lanes().size(), 4u);
   for (int frame = 0; frame < 6; ++frame) session->advance_frame();  // 0.1 s
   const app::Lane &own = session->lanes()[0], &row = session->lanes()[2];
-  const double apart = own.sim.trouble() ? INFINITY : (own.sim.state().x - row.sim.state().x).rowwise().norm().maxCoeff();
+  const double apart = own.sim.trouble()
+                           ? INFINITY
+                           : (own.sim.state().x - row.sim.state().x).rowwise().norm().maxCoeff();
   EXPECT_GT(apart, 1e-2);
 }
 
 // A crash in simulateVerlet stops that lane, with what happened and at which step; the others go
 // on to the end. (Under xvfb, as `view --frames` runs: exit 3, a lane diverged.)
 TEST(HomeworkView, ACrashStopsItsOwnLaneAndTheAppGoesOn) {
-  const Result r = springlab_with("xvfb-run -a -s '-screen 0 1280x720x24' ",
-                                  "view rope --homework " + (kRopes / "crash.cpp").string() + " --frames 20");
+  const Result r =
+      springlab_with("xvfb-run -a -s '-screen 0 1280x720x24' ",
+                     "view rope --homework " + (kRopes / "crash.cpp").string() + " --frames 20");
   EXPECT_EQ(r.status, 3) << r.out << r.err;
-  EXPECT_NE(r.out.find("lane       Your simulateVerlet at t = 0 s (diverged: simulateVerlet (step 1 of 1, h = "),
-            std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("was killed by signal 11 (Segmentation fault))"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("lane       Your simulateEuler at t = 0.3333 s\n"), std::string::npos) << r.out;
+  EXPECT_NE(
+      r.out.find(
+          "lane       Your simulateVerlet at t = 0 s (diverged: simulateVerlet (step 1 of 1, h = "),
+      std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("was killed by signal 11 (Segmentation fault))"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("lane       Your simulateEuler at t = 0.3333 s\n"), std::string::npos)
+      << r.out;
   EXPECT_NE(r.out.find("lane       verlet at t = 0.3333 s\n"), std::string::npos) << r.out;
 }
 
@@ -103,22 +118,28 @@ TEST(HomeworkView, ACrashStopsItsOwnLaneAndTheAppGoesOn) {
 // springlab's (step 4 is the spring: a rope of two masses to the student's constructor).
 TEST(HomeworkView, TheLessonShowsTheStudentsLanes) {
   const Result r = springlab_with("xvfb-run -a -s '-screen 0 1280x720x24' ",
-                                  "view --lesson homework-8 --step 4 --homework " + (kRopes / "correct.cpp").string() +
-                                      " --frames 30");
+                                  "view --lesson homework-8 --step 4 --homework " +
+                                      (kRopes / "correct.cpp").string() + " --frames 30");
   EXPECT_EQ(r.status, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("lane       Your simulateEuler at t = 0.5 s\n"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("lane       Your simulateVerlet at t = 0.5 s\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("lane       Your simulateVerlet at t = 0.5 s\n"), std::string::npos)
+      << r.out;
   EXPECT_NE(r.out.find("lane       verlet at t = 0.5 s\n"), std::string::npos) << r.out;
 }
 
 TEST(HomeworkView, AFileThatDoesNotCompileIsRefusedBeforeAnyWindow) {
-  const Result r = springlab("view --homework " + (kRopes / "does_not_compile.cpp").string());  // no display needed
+  const Result r = springlab("view --homework " +
+                             (kRopes / "does_not_compile.cpp").string());  // no display needed
   EXPECT_EQ(r.status, 2) << r.out << r.err;
   EXPECT_NE(r.err.find("does_not_compile.cpp does not compile: "), std::string::npos) << r.err;
-  const Result both = springlab("view --homework " + (kRopes / "correct.cpp").string() + " --compare euler,rk4");
+  const Result both =
+      springlab("view --homework " + (kRopes / "correct.cpp").string() + " --compare euler,rk4");
   EXPECT_EQ(both.status, 2);
-  EXPECT_NE(both.err.find("--homework: shows your rope's lanes beside springlab's; it does not go with --compare"),
-            std::string::npos) << both.err;
+  EXPECT_NE(
+      both.err.find(
+          "--homework: shows your rope's lanes beside springlab's; it does not go with --compare"),
+      std::string::npos)
+      << both.err;
 }
 
 void write(const fs::path& file, const std::string& text) {
@@ -157,14 +178,16 @@ TEST(HomeworkView, ASavedFileIsBuiltAgainAndABrokenOneLeavesTheLastGoodBuild) {
   write(file, "#define EXPLICIT\n#include \"rope_with.hpp\"\n");
   settle(watch, *session);
   EXPECT_EQ(session->lanes()[0].sim.settings().method, Method::Euler);
-  EXPECT_NE(watch.status().lines[1].find("simulateEuler: Explicit Euler"), std::string::npos) << watch.status().lines[1];
+  EXPECT_NE(watch.status().lines[1].find("simulateEuler: Explicit Euler"), std::string::npos)
+      << watch.status().lines[1];
   EXPECT_TRUE(watch.status().error.empty());
 
   // Saved broken: the error is shown, the explicit lanes go on.
   std::this_thread::sleep_for(std::chrono::milliseconds(20));
   write(file, "#include \"rope_with.hpp\"\nvoid broken() { undeclared(); }\n");
   settle(watch, *session);
-  EXPECT_NE(watch.status().error.find("rope.cpp does not compile: "), std::string::npos) << watch.status().error;
+  EXPECT_NE(watch.status().error.find("rope.cpp does not compile: "), std::string::npos)
+      << watch.status().error;
   EXPECT_NE(watch.status().error.find("undeclared"), std::string::npos) << watch.status().error;
   EXPECT_EQ(session->lanes()[0].sim.settings().method, Method::Euler);
   const double before = session->lanes()[0].sim.state().t;

@@ -1,19 +1,19 @@
 // The app's interaction, without a window, through the functions the window calls: picking a
 // particle under the pointer, dragging and releasing it, camera moves, parameter changes, the
 // keyboard's actions, compare mode and divergence.
+#include "ui/interaction.hpp"
+
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
+#include <thread>
 
 #include "draw/camera.hpp"
 #include "draw/scene_frame.hpp"
 #include "support.hpp"
 #include "ui/actions.hpp"
 #include "ui/compare_panel.hpp"
-#include "ui/interaction.hpp"
-
-#include <chrono>
-#include <thread>
 
 namespace springlab::ui {
 namespace {
@@ -28,14 +28,16 @@ app::Session session_of(const std::string& name, std::optional<Method> method = 
 const draw::Viewport kViewport{100, 0, 800, 450};
 
 Pointer pixel_of(const app::Session& session, const draw::ViewCamera& camera, int particle) {
-  const Eigen::Vector3d p = draw::project(camera, session.primary().sim.state().x.row(particle).transpose(),
-                                          kViewport.width, kViewport.height);
+  const Eigen::Vector3d p =
+      draw::project(camera, session.primary().sim.state().x.row(particle).transpose(),
+                    kViewport.width, kViewport.height);
   return {p.x() + kViewport.x, p.y() + kViewport.y};
 }
 
 TEST(Interaction, PickingGrabsTheParticleUnderThePointer) {
   app::Session session = session_of("rope");
-  const draw::ViewCamera camera = draw::view_camera(session.scene().camera, kViewport.width, kViewport.height);
+  const draw::ViewCamera camera =
+      draw::view_camera(session.scene().camera, kViewport.width, kViewport.height);
   for (int particle : {0, 7, 15}) {
     const auto drag = press(session, camera, kViewport, pixel_of(session, camera, particle));
     ASSERT_TRUE(drag);
@@ -51,7 +53,8 @@ TEST(Interaction, PickingGrabsTheParticleUnderThePointer) {
 
 TEST(Interaction, PickingIn3DTakesTheParticleInFront) {
   app::Session session = session_of("jelly");
-  const draw::ViewCamera camera = draw::view_camera(session.scene().camera, kViewport.width, kViewport.height);
+  const draw::ViewCamera camera =
+      draw::view_camera(session.scene().camera, kViewport.width, kViewport.height);
   // The box's centre column: several particles line up behind one another; the nearest wins.
   const State& s = session.primary().sim.state();
   int nearest = -1;
@@ -70,7 +73,8 @@ TEST(Interaction, PickingIn3DTakesTheParticleInFront) {
 
 TEST(Interaction, DraggingMovesTheParticleToThePointerAndReleaseKeepsItsVelocity) {
   app::Session session = session_of("rope");
-  const draw::ViewCamera camera = draw::view_camera(session.scene().camera, kViewport.width, kViewport.height);
+  const draw::ViewCamera camera =
+      draw::view_camera(session.scene().camera, kViewport.width, kViewport.height);
   const Pointer start = pixel_of(session, camera, 15);
   const auto drag = press(session, camera, kViewport, start);
   ASSERT_TRUE(drag);
@@ -120,7 +124,8 @@ TEST(Interaction, CameraOrbitsPansAndZooms) {
   const Eigen::Vector3d point(1.0, -1.0, 0.0);
   const Eigen::Vector3d before_px = draw::project(view, point, 800, 450);
   pan(planar, view, 50, -20);
-  const Eigen::Vector3d after_px = draw::project(draw::view_camera(planar, 800, 450), point, 800, 450);
+  const Eigen::Vector3d after_px =
+      draw::project(draw::view_camera(planar, 800, 450), point, 800, 450);
   EXPECT_NEAR(after_px.x() - before_px.x(), 50.0, 1e-3);
   EXPECT_NEAR(after_px.y() - before_px.y(), -20.0, 1e-3);
   // A 2D view does not orbit.
@@ -202,7 +207,8 @@ TEST(Interaction, CompareModeMovesTheSameParticleInEveryCopyAndFreezesADivergedO
   // Every copy is stable, by the stability analysis and in fact, and the drag is the same in each.
   for (app::Lane& lane : session.lanes()) {
     const char* name = method_info(lane.sim.settings().method).name;
-    EXPECT_LE(lane.sim.h(), lane.sim.stability_limit().h) << name << ": " << describe(lane.sim.stability_limit());
+    EXPECT_LE(lane.sim.h(), lane.sim.stability_limit().h)
+        << name << ": " << describe(lane.sim.stability_limit());
     EXPECT_FALSE(lane.sim.trouble()) << name << ": " << lane.sim.trouble()->message();
     EXPECT_LT((lane.sim.state().x.row(19) - Eigen::RowVector3d(2, 1, 0)).norm(), 1e-9) << name;
   }
@@ -236,7 +242,8 @@ TEST(Interaction, SlowMotionSlowsTheSimulatedClock) {
   app::Session session = session_of("spring");
   session.set_speed(0.25);
   for (int k = 0; k < 60; ++k) session.advance_frame();
-  EXPECT_NEAR(session.primary().sim.state().t, 0.25, 1e-9);  // dt = 1/120 divides a quarter frame... twice
+  EXPECT_NEAR(session.primary().sim.state().t, 0.25,
+              1e-9);  // dt = 1/120 divides a quarter frame... twice
   EXPECT_NEAR(session.presentation_time(), 1.0, 1e-12);
 }
 
@@ -315,8 +322,9 @@ TEST(Interaction, ALaneStartsAtOnceAndTakesTheAnalysedStepWhenItComes) {
   ASSERT_FALSE(sim.substeps_provisional()) << "no analysis within a minute";
   ASSERT_TRUE(sim.has_stability());
   const StabilityAnalysis& analysis = *sim.stability_if_any();
-  EXPECT_EQ(sim.settings().substeps,
-            choose_substeps(analysis.limit(sim.settings().method), sim.settings().dt, sim.settings().safety).substeps);
+  EXPECT_EQ(sim.settings().substeps, choose_substeps(analysis.limit(sim.settings().method),
+                                                     sim.settings().dt, sim.settings().safety)
+                                         .substeps);
   EXPECT_GE(quick, sim.settings().substeps);
   EXPECT_FALSE(sim.diverged());
 }
@@ -337,10 +345,13 @@ TEST(Interaction, AClosedSessionLeavesNoAnalysisRunning) {
   }
   EXPECT_GE(app::StabilityJob::threads_alive(), 1);
   const auto t0 = std::chrono::steady_clock::now();
-  while (app::StabilityJob::analyses_running() > 0 && std::chrono::steady_clock::now() - t0 < std::chrono::seconds(1))
+  while (app::StabilityJob::analyses_running() > 0 &&
+         std::chrono::steady_clock::now() - t0 < std::chrono::seconds(1))
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  const double stopped = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  EXPECT_EQ(app::StabilityJob::analyses_running(), 0) << "the closed session's analysis still runs after " << stopped << " s";
+  const double stopped =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_EQ(app::StabilityJob::analyses_running(), 0)
+      << "the closed session's analysis still runs after " << stopped << " s";
   app::StabilityJob::shutdown();
   EXPECT_EQ(app::StabilityJob::threads_alive(), 0);
   std::printf("  the closed session's analysis stopped in %.3f s\n", stopped);
@@ -362,11 +373,12 @@ TEST(StabilityJobs, AResultTakenAfterItsThreadIsJoinedIsWhole) {
   EXPECT_EQ(app::StabilityJob::threads_alive(), 0);
   const int before = app::StabilityJob::freed_while_locked();
   const auto result = job.take();  // the last owner: the shared state is freed here
-  EXPECT_EQ(app::StabilityJob::freed_while_locked(), before) << "take() freed the job's state while holding its lock";
+  EXPECT_EQ(app::StabilityJob::freed_while_locked(), before)
+      << "take() freed the job's state while holding its lock";
   ASSERT_TRUE(result);
   EXPECT_EQ(result->version, 7u);
   EXPECT_NEAR(result->analysis->w_max(), 10.0, 1e-9);  // k_s = 100, m = 1
-  EXPECT_FALSE(job.take());  // once
+  EXPECT_FALSE(job.take());                            // once
 }
 
 }  // namespace

@@ -27,7 +27,8 @@ struct Overflow {
 // Draws the panels of `session` for a width x height screen, scrolled page by page through every
 // scrolling panel (Dear ImGui draws only what is in view), and returns the first vertex drawn past
 // its window's left or right edge or the screen's, if any.
-std::optional<Overflow> first_overflow(app::Session& session, ui::UiState& ui, int width, int height) {
+std::optional<Overflow> first_overflow(app::Session& session, ui::UiState& ui, int width,
+                                       int height) {
   ImGuiIO& io = ImGui::GetIO();
   io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
   io.DeltaTime = 1.0f / 60.0f;
@@ -40,9 +41,11 @@ std::optional<Overflow> first_overflow(app::Session& session, ui::UiState& ui, i
   bool more = true;
   for (int page = 0; more && page < 40; ++page) {
     for (ImGuiWindow* w : ImGui::GetCurrentContext()->Windows) {
-      if (!w->WasActive || w->Hidden || std::string(w->Name) == "Charts" || std::string(w->Name).rfind("Debug##", 0) == 0)
+      if (!w->WasActive || w->Hidden || std::string(w->Name) == "Charts" ||
+          std::string(w->Name).rfind("Debug##", 0) == 0)
         continue;
-      const float left = std::max(w->Pos.x, 0.0f) - 1.0f, right = std::min(w->Pos.x + w->Size.x, float(width)) + 1.0f;
+      const float left = std::max(w->Pos.x, 0.0f) - 1.0f,
+                  right = std::min(w->Pos.x + w->Size.x, float(width)) + 1.0f;
       for (const ImDrawVert& v : w->DrawList->VtxBuffer)
         if (v.pos.x < left || v.pos.x > right) return Overflow{w->Name, v.pos.x, left, right};
     }
@@ -72,28 +75,33 @@ TEST_P(NarrowScreens, EveryControlFitsItsPanel) {
   const SimulationSettings settings = settings_for(scene);
   app::Session session(std::move(scene), settings, 60.0);
   for (const bool compare : {false, true}) {
-  if (compare) session.set_compare({Method::ImplicitEuler, Method::XPBD, Method::LocalGlobal, Method::VBD});
-  for (int k = 0; k < 3; ++k) session.advance_frame();
-  for (const auto& [width, height] : {std::pair{390, 844}, std::pair{540, 960}}) {
-    for (const bool open : {false, true}) {
-      ui::UiState ui;
-      ui.scene_name = "cloth";
-      ui.sheet_open = open;  // the sheet's one row, then all of it
-      ui.ranges = ui::Ranges::of(session);
-      const auto overflow = first_overflow(session, ui, width, height);
-      EXPECT_FALSE(overflow) << GetParam() << " at " << width << " x " << height << (open ? ", sheet open" : "")
-                             << ": window '" << overflow->window << "' draws at x = " << overflow->x
-                             << ", outside [" << overflow->left << ", " << overflow->right << "]"
-                             << (compare ? " (four lanes)" : "");
+    if (compare)
+      session.set_compare({Method::ImplicitEuler, Method::XPBD, Method::LocalGlobal, Method::VBD});
+    for (int k = 0; k < 3; ++k) session.advance_frame();
+    for (const auto& [width, height] : {std::pair{390, 844}, std::pair{540, 960}}) {
+      for (const bool open : {false, true}) {
+        ui::UiState ui;
+        ui.scene_name = "cloth";
+        ui.sheet_open = open;  // the sheet's one row, then all of it
+        ui.ranges = ui::Ranges::of(session);
+        const auto overflow = first_overflow(session, ui, width, height);
+        EXPECT_FALSE(overflow) << GetParam() << " at " << width << " x " << height
+                               << (open ? ", sheet open" : "") << ": window '" << overflow->window
+                               << "' draws at x = " << overflow->x << ", outside ["
+                               << overflow->left << ", " << overflow->right << "]"
+                               << (compare ? " (four lanes)" : "");
+      }
     }
-  }
   }
   ImGui::DestroyContext();
   app::use_language("en");
 }
 
 INSTANTIATE_TEST_SUITE_P(Languages, NarrowScreens, ::testing::Values("en", "zh-CN"),
-                         [](const auto& info) { return info.param == "en" ? std::string("English") : std::string("Chinese"); });
+                         [](const auto& info) {
+                           return info.param == "en" ? std::string("English")
+                                                     : std::string("Chinese");
+                         });
 
 }  // namespace
 }  // namespace springlab::test

@@ -9,6 +9,7 @@
 // its stability function is midpoint's, R(z) = 1 + z + z^2 / 2, so its limit on any damped mode is
 // exactly midpoint's, and it is never stable undamped: |R(i h w)|^2 = 1 + (h w)^4 / 4.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <cmath>
@@ -18,8 +19,6 @@
 #include <sstream>
 #include <string>
 #include <vector>
-
-#include <unistd.h>
 
 #include "cli/commands.hpp"
 #include "draw/marks.hpp"
@@ -36,7 +35,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-void heun_step(const Model& model, const State& in, State& out, double h, const StepSettings&, Workspace& ws) {
+void heun_step(const Model& model, const State& in, State& out, double h, const StepSettings&,
+               Workspace& ws) {
   Points a0, a1;
   accelerations(model, in.x, in.v, a0, ws);
   const Points x1 = in.x + h * in.v, v1 = in.v + h * a0;
@@ -97,9 +97,11 @@ TEST(NewRow, IsFoundShownAndDescribedFromItsRowAlone) {
   EXPECT_GE(static_cast<std::size_t>(m), static_cast<std::size_t>(Method::VBD) + 1);
   // A row of its own: in the table, and listed apart from the built-in ones in messages.
   const auto added = added_methods();
-  EXPECT_TRUE(std::any_of(added.begin(), added.end(), [](const MethodInfo& r) { return std::string(r.name) == "own-heun"; }));
+  EXPECT_TRUE(std::any_of(added.begin(), added.end(),
+                          [](const MethodInfo& r) { return std::string(r.name) == "own-heun"; }));
   EXPECT_EQ(method_names().find("own-heun"), std::string::npos);
-  EXPECT_NE(app::method_choices().find("; yours: own-heun"), std::string::npos) << app::method_choices();
+  EXPECT_NE(app::method_choices().find("; yours: own-heun"), std::string::npos)
+      << app::method_choices();
   EXPECT_EQ(tableau_source(m), nullptr);
   EXPECT_EQ(kept_summary(row), "P");
   EXPECT_EQ(iterations_for(m, {}), 1);
@@ -108,7 +110,8 @@ TEST(NewRow, IsFoundShownAndDescribedFromItsRowAlone) {
   EXPECT_NE(draw::method_mark(m), Mark::None);
   for (const MethodInfo& other : methods()) {
     if (other.id == m) continue;
-    EXPECT_NE(draw::hex(draw::method_color(other.id)), draw::hex(draw::method_color(m))) << other.name;
+    EXPECT_NE(draw::hex(draw::method_color(other.id)), draw::hex(draw::method_color(m)))
+        << other.name;
   }
   // The same name again, or a row without a step, is refused.
   MethodInfo again = row;
@@ -126,8 +129,11 @@ TEST(NewRow, IsFoundShownAndDescribedFromItsRowAlone) {
     }
     return std::string("(accepted)");
   };
-  EXPECT_EQ(refusal("own-heun"), "method 'own-heun': a row added by the program has this name; give the tableau's file another name");
-  EXPECT_EQ(refusal("rk4"), "method 'rk4': a built-in method has this name; give the tableau's file another name");
+  EXPECT_EQ(refusal("own-heun"),
+            "method 'own-heun': a row added by the program has this name; give the tableau's file "
+            "another name");
+  EXPECT_EQ(refusal("rk4"),
+            "method 'rk4': a built-in method has this name; give the tableau's file another name");
 }
 
 TEST(NewRow, StepsAtItsOrderAndHoldsExactlyToTheLimitItsTableauGives) {
@@ -140,7 +146,8 @@ TEST(NewRow, StepsAtItsOrderAndHoldsExactlyToTheLimitItsTableauGives) {
   // Its limit is midpoint's, whose R(z) it shares: never undamped; with damping c, the same.
   const double w = 10.0;
   EXPECT_EQ(stable_step(m, w, 0.0), 0.0);
-  for (double c : {0.5, 2.0, 8.0}) EXPECT_NEAR(stable_step(m, w, c), stable_step(Method::Midpoint, w, c), 1e-12) << c;
+  for (double c : {0.5, 2.0, 8.0})
+    EXPECT_NEAR(stable_step(m, w, c), stable_step(Method::Midpoint, w, c), 1e-12) << c;
   // Its own runs hold just inside the limit and diverge, reported, just past it.
   const double c = 2.0;
   const double limit = stable_step(m, w, c);
@@ -158,7 +165,8 @@ TEST(NewRow, StepsAtItsOrderAndHoldsExactlyToTheLimitItsTableauGives) {
   const StabilityLimit& own = analysis.limit(m);
   EXPECT_TRUE(own.exact);
   EXPECT_NEAR(own.h, analysis.limit(Method::Midpoint).h, 1e-12 * own.h);
-  const MeasuredLimit measured = measured_limit(m, damped.model, damped.state, own, analysis.w_max());
+  const MeasuredLimit measured =
+      measured_limit(m, damped.model, damped.state, own, analysis.w_max());
   EXPECT_LE(measured.resolution, 0.01);
   EXPECT_NEAR(measured.h, own.h, (measured.resolution + 1e-3) * own.h);
 }
@@ -173,10 +181,12 @@ TEST(NewRow, IsListedRunAndComparedByTheCommandLine) {
   EXPECT_EQ(run.status, 0) << run.out;
   EXPECT_NE(run.out.find("own-heun: "), std::string::npos) << run.out;  // its limit, stated
 
-  const fs::path dir = fs::temp_directory_path() / ("springlab-new-row-" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("springlab-new-row-" + std::to_string(::getpid()));
   fs::remove_all(dir);
-  const CliRun compare = springlab({"compare", "spring", "--methods", "own-heun,midpoint", "--points", "3", "--drift-duration",
-                                 "0", "--software", "--out", dir.string()});
+  const CliRun compare =
+      springlab({"compare", "spring", "--methods", "own-heun,midpoint", "--points", "3",
+                 "--drift-duration", "0", "--software", "--out", dir.string()});
   EXPECT_EQ(compare.status, 0) << compare.out;
   std::ifstream results(dir / "summary.csv");
   std::stringstream text;
@@ -212,10 +222,12 @@ TEST(NewRow, IsALaneInTheAppsCompareMode) {
   EXPECT_EQ(lanes[0].sim.h(), lanes[1].sim.h());
   EXPECT_LT(lanes[0].sim.h(), lanes[0].sim.settings().dt);
   for (int k = 0; k < 30; ++k) session.advance_frame();
-  for (const app::Lane& lane : lanes) EXPECT_FALSE(lane.sim.trouble()) << method_info(lane.sim.settings().method).name;
+  for (const app::Lane& lane : lanes)
+    EXPECT_FALSE(lane.sim.trouble()) << method_info(lane.sim.settings().method).name;
   session.set_substeps(1);
   for (int k = 0; k < 120; ++k) session.advance_frame();
-  for (const app::Lane& lane : lanes) EXPECT_TRUE(lane.sim.diverged()) << method_info(lane.sim.settings().method).name;
+  for (const app::Lane& lane : lanes)
+    EXPECT_TRUE(lane.sim.diverged()) << method_info(lane.sim.settings().method).name;
 }
 
 }  // namespace

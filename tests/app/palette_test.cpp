@@ -5,8 +5,9 @@
 // (IEC 61966-2-1, as WCAG 2.1 uses them), CIELAB under D65, CIEDE2000 (checked against Sharma,
 // Wu and Dalal's published test pairs, 2005), and protanopia, deuteranopia and tritanopia as
 // Machado, Oliveira and Fernandes (2009) simulate them at full severity, in linear RGB.
-#include <gtest/gtest.h>
+#include "draw/palette.hpp"
 
+#include <gtest/gtest.h>
 #include <imgui.h>
 
 #include <algorithm>
@@ -15,16 +16,14 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <set>
 #include <string>
 #include <unordered_map>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "draw/marks.hpp"
-#include "draw/palette.hpp"
 #include "io/png.hpp"
 #include "ui/theme.hpp"
 #include "util/data_dir.hpp"
@@ -36,14 +35,20 @@ namespace fs = std::filesystem;
 using Rgb = std::array<double, 3>;
 using Mat = std::array<Rgb, 3>;
 
-double linear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
+double linear(double c) {
+  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
 // As drawn: 8 bits a channel.
 Rgb rgb(const draw::Rgba& c) {
   const auto byte = [](float x) { return std::round(std::clamp(x, 0.0f, 1.0f) * 255.0) / 255.0; };
   return {byte(c.r), byte(c.g), byte(c.b)};
 }
-Rgb lin(const Rgb& c) { return {linear(c[0]), linear(c[1]), linear(c[2])}; }
-double luminance_of_linear(const Rgb& l) { return 0.2126 * l[0] + 0.7152 * l[1] + 0.0722 * l[2]; }
+Rgb lin(const Rgb& c) {
+  return {linear(c[0]), linear(c[1]), linear(c[2])};
+}
+double luminance_of_linear(const Rgb& l) {
+  return 0.2126 * l[0] + 0.7152 * l[1] + 0.0722 * l[2];
+}
 // WCAG 2.1's contrast ratio of two sRGB colours.
 double contrast(const Rgb& a, const Rgb& b) {
   const double la = luminance_of_linear(lin(a)), lb = luminance_of_linear(lin(b));
@@ -52,7 +57,8 @@ double contrast(const Rgb& a, const Rgb& b) {
 
 Rgb times(const Mat& m, const Rgb& v) {
   Rgb out{};
-  for (int i = 0; i < 3; ++i) out[i] = std::clamp(m[i][0] * v[0] + m[i][1] * v[1] + m[i][2] * v[2], 0.0, 1.0);
+  for (int i = 0; i < 3; ++i)
+    out[i] = std::clamp(m[i][0] * v[0] + m[i][1] * v[1] + m[i][2] * v[2], 0.0, 1.0);
   return out;
 }
 
@@ -61,12 +67,18 @@ Rgb lab(const Rgb& l) {
   const double X = (0.4124564 * l[0] + 0.3575761 * l[1] + 0.1804375 * l[2]) / 0.95047;
   const double Y = 0.2126729 * l[0] + 0.7151522 * l[1] + 0.0721750 * l[2];
   const double Z = (0.0193339 * l[0] + 0.1191920 * l[1] + 0.9503041 * l[2]) / 1.08883;
-  const auto f = [](double t) { return t > 216.0 / 24389.0 ? std::cbrt(t) : (24389.0 / 27.0 * t + 16.0) / 116.0; };
+  const auto f = [](double t) {
+    return t > 216.0 / 24389.0 ? std::cbrt(t) : (24389.0 / 27.0 * t + 16.0) / 116.0;
+  };
   return {116.0 * f(Y) - 16.0, 500.0 * (f(X) - f(Y)), 200.0 * (f(Y) - f(Z))};
 }
 
-double degrees(double r) { return r * 180.0 / std::numbers::pi; }
-double radians(double d) { return d * std::numbers::pi / 180.0; }
+double degrees(double r) {
+  return r * 180.0 / std::numbers::pi;
+}
+double radians(double d) {
+  return d * std::numbers::pi / 180.0;
+}
 
 // CIEDE2000 (Sharma, Wu and Dalal 2005, equations 1 to 25).
 double de2000(const Rgb& lab1, const Rgb& lab2) {
@@ -84,21 +96,28 @@ double de2000(const Rgb& lab1, const Rgb& lab2) {
   double dh = 0.0;
   if (C1p * C2p != 0.0) {
     dh = h2p - h1p;
-    if (dh > 180) dh -= 360;
-    else if (dh < -180) dh += 360;
+    if (dh > 180)
+      dh -= 360;
+    else if (dh < -180)
+      dh += 360;
   }
-  const double dLp = L2 - L1, dCp = C2p - C1p, dHp = 2.0 * std::sqrt(C1p * C2p) * std::sin(radians(dh / 2));
+  const double dLp = L2 - L1, dCp = C2p - C1p,
+               dHp = 2.0 * std::sqrt(C1p * C2p) * std::sin(radians(dh / 2));
   const double Lbp = 0.5 * (L1 + L2), Cbp = 0.5 * (C1p + C2p);
   double hbp = h1p + h2p;
   if (C1p * C2p != 0.0)
-    hbp = std::abs(h1p - h2p) <= 180 ? 0.5 * (h1p + h2p) : (h1p + h2p < 360 ? 0.5 * (h1p + h2p + 360) : 0.5 * (h1p + h2p - 360));
+    hbp = std::abs(h1p - h2p) <= 180
+              ? 0.5 * (h1p + h2p)
+              : (h1p + h2p < 360 ? 0.5 * (h1p + h2p + 360) : 0.5 * (h1p + h2p - 360));
   const double T = 1 - 0.17 * std::cos(radians(hbp - 30)) + 0.24 * std::cos(radians(2 * hbp)) +
                    0.32 * std::cos(radians(3 * hbp + 6)) - 0.20 * std::cos(radians(4 * hbp - 63));
   const double dtheta = 30 * std::exp(-std::pow((hbp - 275) / 25, 2));
   const double Rc = 2 * std::sqrt(std::pow(Cbp, 7) / (std::pow(Cbp, 7) + std::pow(25.0, 7)));
   const double Sl = 1 + 0.015 * std::pow(Lbp - 50, 2) / std::sqrt(20 + std::pow(Lbp - 50, 2));
-  const double Sc = 1 + 0.045 * Cbp, Sh = 1 + 0.015 * Cbp * T, Rt = -std::sin(radians(2 * dtheta)) * Rc;
-  return std::sqrt(std::pow(dLp / Sl, 2) + std::pow(dCp / Sc, 2) + std::pow(dHp / Sh, 2) + Rt * (dCp / Sc) * (dHp / Sh));
+  const double Sc = 1 + 0.045 * Cbp, Sh = 1 + 0.015 * Cbp * T,
+               Rt = -std::sin(radians(2 * dtheta)) * Rc;
+  return std::sqrt(std::pow(dLp / Sl, 2) + std::pow(dCp / Sc, 2) + std::pow(dHp / Sh, 2) +
+                   Rt * (dCp / Sc) * (dHp / Sh));
 }
 
 // Machado, Oliveira and Fernandes (2009), severity 1.
@@ -108,13 +127,23 @@ struct Vision {
 };
 const Vision kVisions[] = {
     {"normal vision", {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}},
-    {"protanopia", {{{0.152286, 1.052583, -0.204868}, {0.114503, 0.786281, 0.099216}, {-0.003882, -0.048116, 1.051998}}}},
-    {"deuteranopia", {{{0.367322, 0.860646, -0.227968}, {0.280085, 0.672501, 0.047413}, {-0.011820, 0.042940, 0.968881}}}},
-    {"tritanopia", {{{1.255528, -0.076749, -0.178779}, {-0.078411, 0.930809, 0.147602}, {0.004733, 0.691367, 0.303900}}}},
+    {"protanopia",
+     {{{0.152286, 1.052583, -0.204868},
+       {0.114503, 0.786281, 0.099216},
+       {-0.003882, -0.048116, 1.051998}}}},
+    {"deuteranopia",
+     {{{0.367322, 0.860646, -0.227968},
+       {0.280085, 0.672501, 0.047413},
+       {-0.011820, 0.042940, 0.968881}}}},
+    {"tritanopia",
+     {{{1.255528, -0.076749, -0.178779},
+       {-0.078411, 0.930809, 0.147602},
+       {0.004733, 0.691367, 0.303900}}}},
 };
 
 double apart(const Vision& v, Method a, Method b) {
-  return de2000(lab(times(v.m, lin(rgb(draw::method_color(a))))), lab(times(v.m, lin(rgb(draw::method_color(b))))));
+  return de2000(lab(times(v.m, lin(rgb(draw::method_color(a))))),
+                lab(times(v.m, lin(rgb(draw::method_color(b))))));
 }
 
 std::vector<Method> built_in() {  // every compiled-in row, however many the table has
@@ -139,12 +168,14 @@ TEST(Palette, CieDe2000MatchesSharmasPublishedPairs) {
 // is about 1 to 2) under each simulated colour blindness, and 30 in normal vision (measured
 // worst: symplectic against implicit Euler, 7.8 under protanopia).
 TEST(Palette, TheLecturesMethodsStayApartUnderColourBlindness) {
-  const Method five[] = {Method::Euler, Method::SymplecticEuler, Method::RK4, Method::Verlet, Method::ImplicitEuler};
+  const Method five[] = {Method::Euler, Method::SymplecticEuler, Method::RK4, Method::Verlet,
+                         Method::ImplicitEuler};
   for (const Vision& v : kVisions)
     for (std::size_t i = 0; i < std::size(five); ++i)
       for (std::size_t j = i + 1; j < std::size(five); ++j)
         EXPECT_GE(apart(v, five[i], five[j]), v.m[0][0] == 1 ? 30.0 : 7.5)
-            << method_info(five[i]).name << " against " << method_info(five[j]).name << " under " << v.name;
+            << method_info(five[i]).name << " against " << method_info(five[j]).name << " under "
+            << v.name;
 }
 
 // Every pair of lanes a lesson shows together (rows made from its tableaux too, made as the
@@ -162,11 +193,14 @@ TEST(Palette, LanesShownTogetherStayApartAndEachRowHasItsOwnMark) {
     for (std::size_t i = 0; i < rows.size(); ++i)
       for (std::size_t j = i + 1; j < rows.size(); ++j)
         EXPECT_GE(apart(v, rows[i], rows[j]), 4.0)
-            << method_info(rows[i]).name << " against " << method_info(rows[j]).name << " under " << v.name;
+            << method_info(rows[i]).name << " against " << method_info(rows[j]).name << " under "
+            << v.name;
 
   int sets = 0;
-  std::vector<fs::path> lessons;  // in the course's order (the tableaux' rows made as it makes them)
-  for (const auto& file : fs::directory_iterator(fs::path(SPRINGLAB_SOURCE_DIR) / "assets" / "lessons"))
+  std::vector<fs::path>
+      lessons;  // in the course's order (the tableaux' rows made as it makes them)
+  for (const auto& file :
+       fs::directory_iterator(fs::path(SPRINGLAB_SOURCE_DIR) / "assets" / "lessons"))
     if (file.path().extension() == ".json") lessons.push_back(file.path());
   std::sort(lessons.begin(), lessons.end());
   for (const fs::path& file : lessons) {
@@ -181,8 +215,9 @@ TEST(Palette, LanesShownTogetherStayApartAndEachRowHasItsOwnMark) {
       for (const Vision& v : kVisions)
         for (std::size_t i = 0; i < lanes.size(); ++i)
           for (std::size_t j = i + 1; j < lanes.size(); ++j)
-            EXPECT_GE(apart(v, lanes[i], lanes[j]), 7.5) << file.filename() << ": " << method_info(lanes[i]).name
-                                                         << " against " << method_info(lanes[j]).name << " under " << v.name;
+            EXPECT_GE(apart(v, lanes[i], lanes[j]), 7.5)
+                << file.filename() << ": " << method_info(lanes[i]).name << " against "
+                << method_info(lanes[j]).name << " under " << v.name;
     }
   }
   EXPECT_GE(sets, 5);
@@ -195,7 +230,9 @@ TEST(Palette, LanesShownTogetherStayApartAndEachRowHasItsOwnMark) {
 // colour the app writes text in (the theme's, the verdicts', the methods' for their names)
 // is found where it is drawn whole (a glyph's core), beside a surface (within 2 pixels); the
 // ratio of the two is its contrast there.
-ImVec4 style_of(ImGuiCol c) { return ImGui::GetStyle().Colors[c]; }
+ImVec4 style_of(ImGuiCol c) {
+  return ImGui::GetStyle().Colors[c];
+}
 
 TEST(Contrast, TextIsAtLeastFourAndAHalfToOneOnEveryGoldenFrame) {
   ImGui::CreateContext();
@@ -203,8 +240,13 @@ TEST(Contrast, TextIsAtLeastFourAndAHalfToOneOnEveryGoldenFrame) {
   const ImVec4* style = ImGui::GetStyle().Colors;
   std::vector<std::pair<std::string, draw::Rgba>> text = {
       {"text", {style[ImGuiCol_Text].x, style[ImGuiCol_Text].y, style[ImGuiCol_Text].z, 1}},
-      {"quiet text", {style[ImGuiCol_TextDisabled].x, style[ImGuiCol_TextDisabled].y, style[ImGuiCol_TextDisabled].z, 1}},
-      {"safe", ui::kSafeText}, {"near", ui::kNearText}, {"beyond", ui::kBeyondText}, {"neutral", ui::kNeutralText}};
+      {"quiet text",
+       {style[ImGuiCol_TextDisabled].x, style[ImGuiCol_TextDisabled].y,
+        style[ImGuiCol_TextDisabled].z, 1}},
+      {"safe", ui::kSafeText},
+      {"near", ui::kNearText},
+      {"beyond", ui::kBeyondText},
+      {"neutral", ui::kNeutralText}};
   ImGui::DestroyContext();
   for (Method m : built_in()) text.push_back({method_info(m).name, draw::method_color(m)});
 
@@ -215,7 +257,9 @@ TEST(Contrast, TextIsAtLeastFourAndAHalfToOneOnEveryGoldenFrame) {
     for (int dr = -1; dr <= 1; ++dr)
       for (int dg = -1; dg <= 1; ++dg)
         for (int db = -1; db <= 1; ++db) {
-          const auto level = [](double c, int d) { return static_cast<std::uint32_t>(std::clamp(std::lround(c * 255) + d, 0L, 255L)); };
+          const auto level = [](double c, int d) {
+            return static_cast<std::uint32_t>(std::clamp(std::lround(c * 255) + d, 0L, 255L));
+          };
           text_of.emplace(level(t[0], dr) << 16 | level(t[1], dg) << 8 | level(t[2], db), k);
         }
   }
@@ -230,13 +274,16 @@ TEST(Contrast, TextIsAtLeastFourAndAHalfToOneOnEveryGoldenFrame) {
   std::vector<std::uint32_t> fills;
   ImGui::CreateContext();
   ui::apply_theme(1.0f);
-  for (ImGuiCol c : {ImGuiCol_FrameBg, ImGuiCol_Button, ImGuiCol_SliderGrab, ImGuiCol_PlotHistogram}) {
+  for (ImGuiCol c :
+       {ImGuiCol_FrameBg, ImGuiCol_Button, ImGuiCol_SliderGrab, ImGuiCol_PlotHistogram}) {
     const Rgb f = rgb({style_of(c).x, style_of(c).y, style_of(c).z, 1});
     fills.push_back(static_cast<std::uint32_t>(std::lround(f[0] * 255)) << 16 |
-                    static_cast<std::uint32_t>(std::lround(f[1] * 255)) << 8 | static_cast<std::uint32_t>(std::lround(f[2] * 255)));
+                    static_cast<std::uint32_t>(std::lround(f[1] * 255)) << 8 |
+                    static_cast<std::uint32_t>(std::lround(f[2] * 255)));
   }
   ImGui::DestroyContext();
-  for (const fs::path& dir : {fs::path(SPRINGLAB_SOURCE_DIR) / "tests/golden", fs::path(SPRINGLAB_SOURCE_DIR) / "tests/web/golden"})
+  for (const fs::path& dir : {fs::path(SPRINGLAB_SOURCE_DIR) / "tests/golden",
+                              fs::path(SPRINGLAB_SOURCE_DIR) / "tests/web/golden"})
     for (const auto& file : fs::directory_iterator(dir)) {
       if (file.path().extension() != ".png") continue;
       const app::Image im = app::read_png(file.path());
@@ -275,7 +322,8 @@ TEST(Contrast, TextIsAtLeastFourAndAHalfToOneOnEveryGoldenFrame) {
               Worst& w = worst[name];
               if (r < w.ratio) {
                 char where[160];
-                std::snprintf(where, sizeof where, "%s at (%d, %d) on #%06x", file.path().filename().c_str(), x, y, s);
+                std::snprintf(where, sizeof where, "%s at (%d, %d) on #%06x",
+                              file.path().filename().c_str(), x, y, s);
                 w = {r, where};
               }
             }
@@ -285,7 +333,8 @@ TEST(Contrast, TextIsAtLeastFourAndAHalfToOneOnEveryGoldenFrame) {
   for (const auto& [name, w] : worst) EXPECT_GE(w.ratio, 4.5) << name << ": " << w.where;
   // Every colour text is written in was found on a surface in some golden frame, so checked: a
   // colour never found would pass unchecked.
-  for (const auto& [name, colour] : text) EXPECT_TRUE(worst.count(name)) << name << " was never found as text on a surface";
+  for (const auto& [name, colour] : text)
+    EXPECT_TRUE(worst.count(name)) << name << " was never found as text on a surface";
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // the session, picking, the keys and the drawing take without a line changed elsewhere (the
 // CONTRIBUTING checklist "A scene kind", followed).
 #include <gtest/gtest.h>
+#include <imgui.h>
 
 #include <algorithm>
 #include <set>
@@ -18,8 +19,6 @@
 #include "ui/kind_panels.hpp"
 #include "ui/panels.hpp"
 #include "ui/theme.hpp"
-
-#include <imgui.h>
 
 namespace springlab::app {
 namespace {
@@ -60,7 +59,8 @@ TEST(SceneKind, EachSceneHasItsKindAndItsRows) {
     EXPECT_EQ(arm->row(k).name, s.name);
     EXPECT_EQ(arm->row(k).colour, s.colour);
     marks.insert(s.mark);
-    for (int j = 0; j < k; ++j) EXPECT_GT(distance(arm->row(j).colour, arm->row(k).colour), 0.3) << j << " " << k;
+    for (int j = 0; j < k; ++j)
+      EXPECT_GT(distance(arm->row(j).colour, arm->row(k).colour), 0.3) << j << " " << k;
   }
   EXPECT_EQ(marks.size(), 3u);
   EXPECT_EQ(arm->find("fabrik"), 1);
@@ -74,8 +74,11 @@ TEST(SceneKind, EachSceneHasItsKindAndItsRows) {
     return std::string("(accepted)");
   };
   EXPECT_EQ(refused("ccd,rk4"),
-            "--compare: unknown solver 'rk4' (this is an inverse-kinematics scene; solvers: ccd, fabrik, dls)");
-  EXPECT_EQ(refused("ccd").rfind("--compare: give 2 to 4 solvers separated by commas, e.g. ", 0), 0u) << refused("ccd");
+            "--compare: unknown solver 'rk4' (this is an inverse-kinematics scene; solvers: ccd, "
+            "fabrik, dls)");
+  EXPECT_EQ(refused("ccd").rfind("--compare: give 2 to 4 solvers separated by commas, e.g. ", 0),
+            0u)
+      << refused("ccd");
 }
 
 // The three solvers side by side from one start, by the session's calls for any kind: each
@@ -111,7 +114,8 @@ TEST(SceneKind, TheSolversReachTheTargetThroughTheSessionsCalls) {
     EXPECT_EQ(ik_lane(lane).chain.angles, ik.chain.angles);
   }
   session.step_once();  // one step: one iteration each
-  for (const Lane& lane : session.lanes()) EXPECT_EQ(ik_lane(lane).status.iterations, 1) << lane_name(lane);
+  for (const Lane& lane : session.lanes())
+    EXPECT_EQ(ik_lane(lane).status.iterations, 1) << lane_name(lane);
 }
 
 // The keys ask the kind: 1 to 3 choose a solver (from the pose reached), C sets the scene's
@@ -124,7 +128,8 @@ TEST(SceneKind, KeysAndHoldingAskTheKind) {
   ui::perform(static_cast<ui::Action>(static_cast<int>(ui::Action::Method1) + 2), session, ui);
   EXPECT_EQ(lane_name(session.primary()), "dls");
   EXPECT_EQ(ik_lane(session.primary()).chain.angles, reached);  // switched, not restarted
-  ui::perform(static_cast<ui::Action>(static_cast<int>(ui::Action::Method1) + 5), session, ui);  // no sixth solver
+  ui::perform(static_cast<ui::Action>(static_cast<int>(ui::Action::Method1) + 5), session,
+              ui);  // no sixth solver
   EXPECT_EQ(lane_name(session.primary()), "dls");
   ui::perform(ui::Action::ToggleCompare, session, ui);
   ASSERT_EQ(session.lanes().size(), session.kind().compared_first().size());
@@ -153,14 +158,22 @@ class TetheredKind : public SceneKind {
     const MethodInfo& m = method_info(k == 0 ? Method::Euler : Method::Verlet);
     return {m.name, m.label, m.colour, m.mark};
   }
-  int row_of(const Lane& lane) const override { return lane.sim.settings().method == Method::Verlet ? 1 : 0; }
+  int row_of(const Lane& lane) const override {
+    return lane.sim.settings().method == Method::Verlet ? 1 : 0;
+  }
   const char* row_noun() const override { return "method"; }
   std::string choices() const override { return "euler, verlet"; }
   int initial_row(Method) const override { return 1; }
   std::vector<int> compared_first() const override { return {0, 1}; }
-  void configure(SimulationSettings& s, int row) const override { s.method = row == 0 ? Method::Euler : Method::Verlet; }
-  void start(Lane& lane, int) const override { ++lane.inverted_cells; }  // (a mark that each lane was started)
-  void switch_to(Lane& lane, int row) const override { lane.sim.set_method(row == 0 ? Method::Euler : Method::Verlet); }
+  void configure(SimulationSettings& s, int row) const override {
+    s.method = row == 0 ? Method::Euler : Method::Verlet;
+  }
+  void start(Lane& lane, int) const override {
+    ++lane.inverted_cells;
+  }  // (a mark that each lane was started)
+  void switch_to(Lane& lane, int row) const override {
+    lane.sim.set_method(row == 0 ? Method::Euler : Method::Verlet);
+  }
   void after_steps(Lane&, Steps) const override {}
   void sample(Lane&) const override {}
   int handle() const override { return handle_; }
@@ -228,7 +241,8 @@ TEST(SceneKind, AKindOfOnesOwnNeedsNoOtherEdit) {
   ui::UiState ui;
   ui::perform(ui::Action::Method1, session, ui);
   EXPECT_EQ(session.primary().sim.settings().method, Method::Euler);
-  ui::perform(static_cast<ui::Action>(static_cast<int>(ui::Action::Method1) + 2), session, ui);  // no third row
+  ui::perform(static_cast<ui::Action>(static_cast<int>(ui::Action::Method1) + 2), session,
+              ui);  // no third row
   EXPECT_EQ(session.chosen(), 0);
   ui::perform(ui::Action::ToggleCompare, session, ui);
   ASSERT_EQ(session.lanes().size(), 2u);
@@ -238,7 +252,8 @@ TEST(SceneKind, AKindOfOnesOwnNeedsNoOtherEdit) {
   const State& s = session.primary().sim.state();
   for (int i : {1, end / 2, end}) {
     const Vec3 p = s.x.row(i).transpose();
-    EXPECT_EQ(session.pick(p + Vec3(0, 0, 5), Vec3(0, 0, -1), 1e-3), i == end ? end : -1) << "particle " << i;
+    EXPECT_EQ(session.pick(p + Vec3(0, 0, 5), Vec3(0, 0, -1), 1e-3), i == end ? end : -1)
+        << "particle " << i;
   }
 
   // Drawn: its guide, a circle of 128 segments at 0.5 m, and its springs in each lane's colour.
@@ -258,9 +273,10 @@ TEST(SceneKind, AKindOfOnesOwnNeedsNoOtherEdit) {
   }
   EXPECT_EQ(guide, 128);
   EXPECT_EQ(spring_colours.size(), 1u);  // not by strain: the lane's colour
-  EXPECT_EQ(*spring_colours.begin(), (std::array<float, 4>{method_info(Method::Verlet).colour[0],
-                                                            method_info(Method::Verlet).colour[1],
-                                                            method_info(Method::Verlet).colour[2], 1.0f}));
+  EXPECT_EQ(*spring_colours.begin(),
+            (std::array<float, 4>{method_info(Method::Verlet).colour[0],
+                                  method_info(Method::Verlet).colour[1],
+                                  method_info(Method::Verlet).colour[2], 1.0f}));
 }
 
 }  // namespace

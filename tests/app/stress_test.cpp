@@ -8,9 +8,9 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
-#include <thread>
 #include <cstdlib>
 #include <memory>
+#include <thread>
 
 #include "lesson/lesson_library.hpp"
 #include "session/stability_job.hpp"
@@ -52,12 +52,25 @@ TEST(Stress, AnalysesSweepsAndLessonStepsBesideTheFrameLoop) {
     }
     Session& s = *session;
     switch (round % 6) {
-      case 0: s.set_stiffness(s.stiffness() * (round % 12 ? 1.1 : 0.9)); break;
-      case 1: s.set_method(round % 12 == 1 ? Method::RK4 : Method::SymplecticEuler); break;
-      case 2: s.set_compare({Method::SymplecticEuler, Method::Verlet}); break;
-      case 3: s.set_compare({}); break;
-      case 4: s.grab(s.nearest(Vec3(0, 0, 0))); s.drag_to(Vec3(0.1, 0.1, 0.0)); break;
-      case 5: s.release(); break;
+      case 0:
+        s.set_stiffness(s.stiffness() * (round % 12 ? 1.1 : 0.9));
+        break;
+      case 1:
+        s.set_method(round % 12 == 1 ? Method::RK4 : Method::SymplecticEuler);
+        break;
+      case 2:
+        s.set_compare({Method::SymplecticEuler, Method::Verlet});
+        break;
+      case 3:
+        s.set_compare({});
+        break;
+      case 4:
+        s.grab(s.nearest(Vec3(0, 0, 0)));
+        s.drag_to(Vec3(0.1, 0.1, 0.0));
+        break;
+      case 5:
+        s.release();
+        break;
     }
     if (round % 25 == 0) {  // an accuracy sweep on a worker thread, cancelled a few frames on
       accuracy.start(s);
@@ -82,7 +95,8 @@ TEST(Stress, AnalysesSweepsAndLessonStepsBesideTheFrameLoop) {
   const auto closed = Clock::now();
   while (StabilityJob::analyses_running() > 0 && Clock::now() - closed < std::chrono::seconds(1))
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  EXPECT_EQ(StabilityJob::analyses_running(), 0) << "analyses still running a second after their sessions closed";
+  EXPECT_EQ(StabilityJob::analyses_running(), 0)
+      << "analyses still running a second after their sessions closed";
   StabilityJob::shutdown();
   EXPECT_EQ(StabilityJob::threads_alive(), 0);
   std::printf("  %ld frames, %ld sessions, %ld sweeps\n", frames, sessions, sweeps);

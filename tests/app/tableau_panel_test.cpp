@@ -1,6 +1,8 @@
 // "Your method" (ui/tableau_panel.hpp) without a window: the cells checked as a student types them
 // (the order, the first failing condition, a bad cell named by row and column), a shipped tableau
 // loaded into them, and "Run beside" adding the tableau as a lane whose limit the gauge can show.
+#include "ui/tableau_panel.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,13 +11,14 @@
 
 #include "chart/stability_region.hpp"
 #include "support.hpp"
-#include "ui/tableau_panel.hpp"
 #include "util/data_dir.hpp"
 
 namespace springlab::ui {
 namespace {
 
-void type(TableauPanel::Cell& cell, const char* text) { std::snprintf(cell.data(), cell.size(), "%s", text); }
+void type(TableauPanel::Cell& cell, const char* text) {
+  std::snprintf(cell.data(), cell.size(), "%s", text);
+}
 
 TEST(TableauPanel, ChecksTheCellsAsTheyAreTyped) {
   TableauPanel panel;  // Heun's, to start from
@@ -33,7 +36,8 @@ TEST(TableauPanel, ChecksTheCellsAsTheyAreTyped) {
   EXPECT_FALSE(panel.analysis);
   EXPECT_EQ(panel.error_row, 1);
   EXPECT_EQ(panel.error_col, 0);
-  EXPECT_NE(panel.error.find("A row 2, column 1 \"1/0\" is not a number"), std::string::npos) << panel.error;
+  EXPECT_NE(panel.error.find("A row 2, column 1 \"1/0\" is not a number"), std::string::npos)
+      << panel.error;
   type(panel.a[1][0], "1");
   type(panel.b[1], "half");  // a weight
   panel.check();
@@ -81,7 +85,8 @@ TEST(TableauPanel, RunBesideAddsALaneTheGaugeCanShow) {
   EXPECT_FALSE(session.lanes()[1].sim.diverged());
   EXPECT_NEAR(session.lanes()[1].sim.state().t, session.lanes()[0].sim.state().t, 1e-12);
   // An analysis made before the row existed gives its limit too (from the modes it found).
-  EXPECT_NEAR(before.limit(mine).h, before.limit(Method::Midpoint).h, 1e-9 * before.limit(Method::Midpoint).h);
+  EXPECT_NEAR(before.limit(mine).h, before.limit(Method::Midpoint).h,
+              1e-9 * before.limit(Method::Midpoint).h);
   EXPECT_NEAR(before.limit(mine).h, 0.105, 1e-3);
   // Another tableau takes the next name; the same one again keeps its row.
   type(panel.a[1][0], "2/3");
@@ -103,10 +108,12 @@ TEST(TableauPanel, ThePanelTheRunTimeAnalysisAndTheRegionChartAgree) {
   Scene undamped = test::shipped("damped-spring"), overdamped = test::shipped("damped-spring");
   set_damping(undamped.model, 0.0);
   set_damping(overdamped.model, 30.0);
-  const StabilityAnalysis oscillating(undamped.model, undamped.state), decaying(overdamped.model, overdamped.state);
+  const StabilityAnalysis oscillating(undamped.model, undamped.state),
+      decaying(overdamped.model, overdamped.state);
   const double fastest = 15.0 + std::sqrt(125.0);
   std::vector<std::string> files;
-  for (const std::string& name : app::shipped_tableaux()) files.push_back(app::resolve_tableau(name));
+  for (const std::string& name : app::shipped_tableaux())
+    files.push_back(app::resolve_tableau(name));
   files.push_back(std::string(SPRINGLAB_SOURCE_DIR) + "/tests/data/ssprk10-4.json");
   for (const std::string& file : files) {
     SCOPED_TRACE(file);
@@ -123,8 +130,10 @@ TEST(TableauPanel, ThePanelTheRunTimeAnalysisAndTheRegionChartAgree) {
     const Method row = add_tableau_method(t, "agree-" + std::to_string(&file - files.data()));
     if (method_info(row).adaptive()) continue;  // an embedded pair chooses its own steps
     const auto same = [](double run_time, double exact) {
-      if (std::isinf(exact)) EXPECT_TRUE(std::isinf(run_time)) << run_time;
-      else EXPECT_NEAR(run_time, exact, 1e-9 * exact);
+      if (std::isinf(exact))
+        EXPECT_TRUE(std::isinf(run_time)) << run_time;
+      else
+        EXPECT_NEAR(run_time, exact, 1e-9 * exact);
     };
     same(oscillating.limit(row).h, a.imaginary_limit / 10.0);
     same(decaying.limit(row).h, a.real_limit / fastest);

@@ -3,6 +3,8 @@
 // and says nothing of text that fits, of a row half in view in a window that scrolls, and of text
 // hidden under a window drawn over it. Every golden frame is checked with it by
 // TextFit.EveryGoldenFrameInBothLanguages (tests/golden/golden_test.cpp).
+#include "ui/text_fit.hpp"
+
 #include <gtest/gtest.h>
 #include <imgui.h>
 
@@ -11,7 +13,6 @@
 #include <vector>
 
 #include "chart/text_wrap.hpp"
-#include "ui/text_fit.hpp"
 #include "ui/theme.hpp"
 
 namespace springlab::test {
@@ -101,7 +102,10 @@ TEST(TextFit, FindsTextCutByItsWidget) {
 }
 
 TEST(TextFit, FindsTextShortenedWithAnEllipsis) {
-  const Checked c = check([] { ImGui::GetForegroundDrawList()->AddText(ImVec2(50, 50), IM_COL32_WHITE, "Stability region (dots\u2026"); });
+  const Checked c = check([] {
+    ImGui::GetForegroundDrawList()->AddText(ImVec2(50, 50), IM_COL32_WHITE,
+                                            "Stability region (dots\u2026");
+  });
   EXPECT_TRUE(has(c.faults, "is shortened")) << joined(c.faults);
 }
 
@@ -111,7 +115,8 @@ TEST(TextFit, ARowHalfInViewInAWindowThatScrollsIsNoFault) {
   const auto rows = [](ImGuiWindowFlags flags) {
     return [flags] {
       ImGui::SetNextWindowPos(ImVec2(10, 10));
-      ImGui::SetNextWindowSize(ImVec2(300, ImGui::GetStyle().WindowPadding.y + 5.5f * ImGui::GetTextLineHeightWithSpacing()));
+      ImGui::SetNextWindowSize(ImVec2(
+          300, ImGui::GetStyle().WindowPadding.y + 5.5f * ImGui::GetTextLineHeightWithSpacing()));
       ImGui::Begin("rows", nullptr, ImGuiWindowFlags_NoTitleBar | flags);
       for (int k = 0; k < 20; ++k) ImGui::Text("row %d", k);
       ImGui::End();
@@ -120,13 +125,15 @@ TEST(TextFit, ARowHalfInViewInAWindowThatScrollsIsNoFault) {
   const Checked scrolls = check(rows(0));
   EXPECT_TRUE(scrolls.faults.empty()) << joined(scrolls.faults);
   const Checked fixed = check(rows(ImGuiWindowFlags_NoScrollbar));
-  EXPECT_TRUE(has(fixed.faults, "is cut at its bottom")) << joined(fixed.faults) << joined(fixed.texts);
+  EXPECT_TRUE(has(fixed.faults, "is cut at its bottom"))
+      << joined(fixed.faults) << joined(fixed.texts);
 }
 
 // Text under a window drawn over it is not seen: its overlap with the window's own is not judged.
 TEST(TextFit, TextHiddenUnderAWindowIsNotJudged) {
   const Checked c = check([] {
-    ImGui::GetBackgroundDrawList()->AddText(ImVec2(40, 40), IM_COL32_WHITE, "Midpoint went unstable at t = 1.2 s");
+    ImGui::GetBackgroundDrawList()->AddText(ImVec2(40, 40), IM_COL32_WHITE,
+                                            "Midpoint went unstable at t = 1.2 s");
     ImGui::SetNextWindowPos(ImVec2(20, 20));
     ImGui::SetNextWindowSize(ImVec2(400, 200));
     ImGui::SetNextWindowBgAlpha(1.0f);
@@ -137,7 +144,8 @@ TEST(TextFit, TextHiddenUnderAWindowIsNotJudged) {
   EXPECT_TRUE(c.faults.empty()) << joined(c.faults);
   // The same label over the window (the foreground): it is.
   const Checked over = check([] {
-    ImGui::GetForegroundDrawList()->AddText(ImVec2(40, 25), IM_COL32_WHITE, "Midpoint went unstable at t = 1.2 s");
+    ImGui::GetForegroundDrawList()->AddText(ImVec2(40, 25), IM_COL32_WHITE,
+                                            "Midpoint went unstable at t = 1.2 s");
     ImGui::SetNextWindowPos(ImVec2(20, 20));
     ImGui::SetNextWindowSize(ImVec2(400, 200));
     ImGui::Begin("Stability region (G)");

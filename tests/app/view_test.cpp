@@ -4,14 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
-
 #include <filesystem>
 #include <regex>
 #include <set>
 
-#include "util/language.hpp"
 #include "cli/cli_support.hpp"
 #include "io/png.hpp"
+#include "util/language.hpp"
 
 namespace springlab::test {
 namespace {
@@ -21,7 +20,6 @@ namespace fs = std::filesystem;
 Result view(const std::string& args, const fs::path& cwd = ".") {
   return springlab_with("xvfb-run -a -s '-screen 0 1280x720x24' ", "view " + args, cwd);
 }
-
 
 // Distinct colours, and bright (text) pixels, in a rectangle of an image.
 struct Content {
@@ -64,15 +62,19 @@ INSTANTIATE_TEST_SUITE_P(Scenes, EveryScene, ::testing::ValuesIn(shipped_scenes(
 
 TEST(View, AScriptDragsAParticleAndSwitchesTheMethod) {
   TempDir dir;
-  const std::string script = std::string(SPRINGLAB_SOURCE_DIR) + "/assets/scripts/rope-drag-euler-to-rk4.json";
-  const Result r = view("rope --frames 270 --script " + script + " --screenshot " + (dir / "a.png").string());
+  const std::string script =
+      std::string(SPRINGLAB_SOURCE_DIR) + "/assets/scripts/rope-drag-euler-to-rk4.json";
+  const Result r =
+      view("rope --frames 270 --script " + script + " --screenshot " + (dir / "a.png").string());
   ASSERT_EQ(r.status, 0) << r.err;
   // Grabbed where it was at t = 0.4 s, let go at the path's last waypoint.
-  const std::regex dragged(R"(dragged    particle 15 from \(.*\) to \(3.4, -0.4, 0\): ([0-9.e+-]+) m)");
+  const std::regex dragged(
+      R"(dragged    particle 15 from \(.*\) to \(3.4, -0.4, 0\): ([0-9.e+-]+) m)");
   std::smatch m;
   ASSERT_TRUE(std::regex_search(r.out, m, dragged)) << r.out;
   EXPECT_GT(std::stod(m[1]), 0.3);
-  EXPECT_NE(r.out.find("lane       rk4 at t = 4.5 s"), std::string::npos) << r.out;  // switched at 4 s
+  EXPECT_NE(r.out.find("lane       rk4 at t = 4.5 s"), std::string::npos)
+      << r.out;  // switched at 4 s
 
   // And the picture differs from the same frames without the script.
   const Result plain = view("rope --frames 270 --screenshot " + (dir / "b.png").string());
@@ -95,7 +97,8 @@ TEST(View, CompareModeStartsFromTheCommandLine) {
 TEST(View, CompareModeOfAnIkSceneNamesItsSolvers) {
   const Result r = view("ik-arm --frames 30 --compare ccd,dls");
   ASSERT_EQ(r.status, 0) << r.err;
-  for (const char* lane : {"lane       ccd", "lane       dls"}) EXPECT_NE(r.out.find(lane), std::string::npos) << r.out;
+  for (const char* lane : {"lane       ccd", "lane       dls"})
+    EXPECT_NE(r.out.find(lane), std::string::npos) << r.out;
 }
 
 TEST(View, WithoutADisplaySaysWhatToDo) {
@@ -112,10 +115,12 @@ TEST(View, BadOptionsExitTwo) {
            {"view spring --frames 0", "--frames"},
            {"view spring --size 10x10 --frames 1", "--size"},
            {"view spring --compare euler --frames 1", "--compare: give 2 to 4 methods"},
-           {"view ik-arm --compare ccd,rk4 --frames 1", "--compare: unknown solver 'rk4' (this is an inverse-kinematics scene"},
+           {"view ik-arm --compare ccd,rk4 --frames 1",
+            "--compare: unknown solver 'rk4' (this is an inverse-kinematics scene"},
            {"view nope --frames 1", "scene 'nope'"},
            {"view spring --ui-scale 9 --frames 1", "--ui-scale"},
-           {"view spring --lang fr --frames 1", "--lang: 'fr' is not a language springlab speaks (en, zh-CN)"},
+           {"view spring --lang fr --frames 1",
+            "--lang: 'fr' is not a language springlab speaks (en, zh-CN)"},
            {"view spring --keys F6,Bogus --frames 1", "--keys: unknown key 'Bogus'"}}) {
     const Result r = springlab(args);
     EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
@@ -126,7 +131,8 @@ TEST(View, BadOptionsExitTwo) {
 // The window speaks the environment's language as gettext reads it (LANGUAGE, LC_ALL,
 // LC_MESSAGES, LANG), or --lang's; a locale springlab has no translation for is English.
 TEST(View, SpeaksTheLanguageOfTheEnvironmentOrOfLang) {
-  for (const auto& [env, args, expected] : std::vector<std::tuple<std::string, std::string, std::string>>{
+  for (const auto& [env, args, expected] :
+       std::vector<std::tuple<std::string, std::string, std::string>>{
            {"LANG=zh_CN.UTF-8 LC_ALL= LC_MESSAGES= LANGUAGE=", "", "zh-CN"},
            {"LANG=en_GB.UTF-8 LC_ALL= LC_MESSAGES=zh_CN.UTF-8 LANGUAGE=", "", "zh-CN"},
            {"LANG=zh_CN.UTF-8 LC_ALL=fr_FR.UTF-8 LC_MESSAGES= LANGUAGE=", "", "en"},
@@ -135,7 +141,9 @@ TEST(View, SpeaksTheLanguageOfTheEnvironmentOrOfLang) {
     const Result r = springlab_with("env " + env + " xvfb-run -a -s '-screen 0 1280x720x24' ",
                                     "view spring --frames 2 " + args);
     ASSERT_EQ(r.status, 0) << env << " " << args << "\n" << r.err;
-    EXPECT_NE(r.out.find("language   " + expected + "\n"), std::string::npos) << env << " " << args << "\n" << r.out;
+    EXPECT_NE(r.out.find("language   " + expected + "\n"), std::string::npos)
+        << env << " " << args << "\n"
+        << r.out;
   }
 }
 
@@ -151,8 +159,8 @@ TEST(View, TheEnvironmentsLanguageAsGettextReadsIt) {
   EXPECT_EQ(with("zh_CN:en", "en_US.UTF-8"), "zh-CN");
   EXPECT_EQ(with("en:zh_CN", "zh_CN.UTF-8"), "en");
   EXPECT_EQ(with("fr:zh_CN:en", "en_US.UTF-8"), "zh-CN");  // (no French: the next it speaks)
-  EXPECT_EQ(with("fr:de", "zh_CN.UTF-8"), "en");            // (none it speaks: untranslated)
-  EXPECT_EQ(with("zh_CN:en", "C"), "en");                   // (the C locale ignores LANGUAGE)
+  EXPECT_EQ(with("fr:de", "zh_CN.UTF-8"), "en");           // (none it speaks: untranslated)
+  EXPECT_EQ(with("zh_CN:en", "C"), "en");                  // (the C locale ignores LANGUAGE)
   EXPECT_EQ(with("", "zh_TW.UTF-8"), "zh-CN");
   EXPECT_EQ(with("", "en_GB.UTF-8"), "en");
   unsetenv("LANGUAGE");
@@ -164,13 +172,14 @@ TEST(View, TheEnvironmentsLanguageAsGettextReadsIt) {
 TEST(View, TeachesALessonWithItsCaptionAboveTheScene) {
   TempDir dir;
   const fs::path shot = dir / "shot.png";
-  const Result r = view("--lesson damping-buys-a-limit --step 2 --frames 20 --screenshot " + shot.string());
+  const Result r =
+      view("--lesson damping-buys-a-limit --step 2 --frames 20 --screenshot " + shot.string());
   ASSERT_EQ(r.status, 0) << r.err;
   const app::Image im = app::read_png(shot);
   ASSERT_EQ(im.width, 1280);
-  EXPECT_GT(content(im, 0, 30, 1280, 100).bright, 2000u);   // the caption, large
+  EXPECT_GT(content(im, 0, 30, 1280, 100).bright, 2000u);    // the caption, large
   EXPECT_GT(content(im, 380, 160, 1280, 450).colours, 10u);  // the scene, under the band
-  EXPECT_GT(content(im, 0, 170, 360, 720).bright, 500u);    // the controls
+  EXPECT_GT(content(im, 0, 170, 360, 720).bright, 500u);     // the controls
 }
 
 // The panels by keyboard alone (ui/keyboard_focus.hpp), keys pressed as a person presses them
@@ -202,11 +211,14 @@ TEST(View, ThePanelsAreRunByKeyboardAlone) {
   // A particle held and moved by keys: "A particle by keys" opened (End, Up, Space), particle 15
   // typed (Enter, 1, 5, Enter), held, moved right three times (a twentieth of the rope's 4 m
   // extent each: 0.6 m in all), let go.
-  const Result r = view("rope --frames 60 --keys F6,End,Up,Space,Down,Enter,1,5,Enter,Down,Space,Right,Right,Right,"
-                        "Space,Space,Space,Left,Left,Left,Space");
+  const Result r = view(
+      "rope --frames 60 --keys F6,End,Up,Space,Down,Enter,1,5,Enter,Down,Space,Right,Right,Right,"
+      "Space,Space,Space,Left,Left,Left,Space");
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(r.out.find("dragged    particle 15 from (3.826, -0.6358, 0) to (4.426, -0.6358, 0): 0.6 m"),
-            std::string::npos) << r.out;
+  EXPECT_NE(
+      r.out.find("dragged    particle 15 from (3.826, -0.6358, 0) to (4.426, -0.6358, 0): 0.6 m"),
+      std::string::npos)
+      << r.out;
 }
 
 }  // namespace

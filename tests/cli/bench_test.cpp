@@ -51,11 +51,13 @@ void expect_counts_of(const std::map<std::string, std::string>& k, const std::st
 }
 
 TEST(Bench, PrintsItsFiguresOneKeyALine) {
-  const Result r = springlab("bench cloth --set cloth.width=10 --set cloth.height=10 --method symplectic-euler "
-                             "--steps 300 --threads 1");
+  const Result r = springlab(
+      "bench cloth --set cloth.width=10 --set cloth.height=10 --method symplectic-euler "
+      "--steps 300 --threads 1");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto k = keys(r.out);
-  for (const char* key : {"particles", "springs", "steps", "seconds", "steps_per_s", "ns_per_spring_step", "peak_rss_mb"})
+  for (const char* key : {"particles", "springs", "steps", "seconds", "steps_per_s",
+                          "ns_per_spring_step", "peak_rss_mb"})
     ASSERT_EQ(k.count(key), 1u) << key << "\n" << r.out;
   EXPECT_EQ(k.at("method"), "symplectic-euler");
   EXPECT_EQ(k.at("threads"), "1");
@@ -74,11 +76,13 @@ TEST(Bench, RepeatedRunsPrintTheirCountAndMedian) {
   // Two sub-steps a step, pinned: the figures count integrator steps (steps x substeps).
   const auto start = std::chrono::steady_clock::now();
   const Result r = springlab("bench spring --steps 2000 --substeps 2 --repeat 5");
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   ASSERT_EQ(r.status, 0) << r.err;
   const auto k = keys(r.out);
-  for (const char* key : {"particles", "springs", "steps", "substeps", "substeps_auto", "seconds", "steps_per_s",
-                          "ns_per_spring_step", "repeats", "ns_per_spring_step_median"})
+  for (const char* key :
+       {"particles", "springs", "steps", "substeps", "substeps_auto", "seconds", "steps_per_s",
+        "ns_per_spring_step", "repeats", "ns_per_spring_step_median"})
     ASSERT_EQ(k.count(key), 1u) << key << "\n" << r.out;
   EXPECT_EQ(k.at("repeats"), "5");
   EXPECT_EQ(k.at("steps"), "2000");  // a run's steps, not all runs'
@@ -90,9 +94,11 @@ TEST(Bench, RepeatedRunsPrintTheirCountAndMedian) {
   // The median run was no faster than the fastest (a rounding to 4 digits keeps the order), and
   // no slower than the process allows: of the 5 runs, 3 took at least the median's time and the
   // other 2 at least the fastest's, all within the command's wall time (a bound, not a speed).
-  const double fastest = number(k, "ns_per_spring_step"), median = number(k, "ns_per_spring_step_median");
+  const double fastest = number(k, "ns_per_spring_step"),
+               median = number(k, "ns_per_spring_step_median");
   EXPECT_GE(median, fastest) << r.out;
-  const double seconds_per_ns = 1e-9 * 2000 * 2 * number(k, "springs");  // a run's seconds per ns a spring-step
+  const double seconds_per_ns =
+      1e-9 * 2000 * 2 * number(k, "springs");  // a run's seconds per ns a spring-step
   EXPECT_LE((3 * median + 2 * fastest) * seconds_per_ns * (1 - 1e-3), wall) << r.out;
 }
 
@@ -106,8 +112,8 @@ TEST(Bench, ReportsADivergenceInsteadOfFigures) {
 }
 
 TEST(Bench, RefusesBadOptionsWithOneMessage) {
-  for (const char* args : {"bench spring --repeat 0", "bench spring --repeat 2.5", "bench spring --steps 0",
-                           "bench no-such-scene"}) {
+  for (const char* args : {"bench spring --repeat 0", "bench spring --repeat 2.5",
+                           "bench spring --steps 0", "bench no-such-scene"}) {
     const Result r = springlab(args);
     EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
     EXPECT_TRUE(r.out.empty()) << args << "\n" << r.out;

@@ -30,7 +30,8 @@ inline std::string read_file(const std::filesystem::path& path) {
 // every scene, named for GoogleTest by scene_test_name ("cloth-sphere" -> "cloth_sphere").
 inline std::vector<std::string> shipped_scenes() {
   std::vector<std::string> names;
-  for (const auto& e : std::filesystem::directory_iterator(std::string(SPRINGLAB_SOURCE_DIR) + "/assets/scenes"))
+  for (const auto& e :
+       std::filesystem::directory_iterator(std::string(SPRINGLAB_SOURCE_DIR) + "/assets/scenes"))
     if (e.path().extension() == ".json") names.push_back(e.path().stem().string());
   std::sort(names.begin(), names.end());
   return names;
@@ -62,8 +63,9 @@ struct TempDir {
 inline Result springlab_with(const std::string& prefix, const std::string& args,
                              const std::filesystem::path& cwd = ".") {
   TempDir io;
-  const std::string command = "cd '" + cwd.string() + "' && " + prefix + "'" SPRINGLAB_EXECUTABLE "' " + args +
-                              " > '" + (io / "out").string() + "' 2> '" + (io / "err").string() + "'";
+  const std::string command = "cd '" + cwd.string() + "' && " + prefix +
+                              "'" SPRINGLAB_EXECUTABLE "' " + args + " > '" +
+                              (io / "out").string() + "' 2> '" + (io / "err").string() + "'";
   const int raw = std::system(command.c_str());
   Result r;
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);

@@ -30,13 +30,14 @@ std::vector<std::vector<std::string>> csv(const fs::path& path) {
 
 TEST(Compare, OnTheSpringWritesResultsSummaryAndCharts) {
   TempDir dir;
-  const Result r = springlab("compare spring --software --points 5 --duration 1 --drift-duration 2 --out " +
-                             dir.path.string());
+  const Result r =
+      springlab("compare spring --software --points 5 --duration 1 --drift-duration 2 --out " +
+                dir.path.string());
   ASSERT_EQ(r.status, 0) << r.err;
   for (const char* file : {"results.csv", "summary.csv", "work-precision.png", "work-precision.svg",
                            "work-precision-work.png", "work-precision-work.svg", "convergence.png",
-                           "convergence.svg", "stability.png", "stability.svg", "energy-drift.png", "energy-drift.svg",
-                           "solver-convergence.png", "solver-convergence.svg"})
+                           "convergence.svg", "stability.png", "stability.svg", "energy-drift.png",
+                           "energy-drift.svg", "solver-convergence.png", "solver-convergence.svg"})
     EXPECT_TRUE(fs::exists(dir / file)) << file;
   const auto summary = csv(dir / "summary.csv");
   ASSERT_EQ(summary.size(), methods().size() + 1);  // header and every method
@@ -53,7 +54,8 @@ TEST(Compare, OnTheSpringWritesResultsSummaryAndCharts) {
   EXPECT_EQ(summary[0][5], "measured_resolution");
   EXPECT_EQ(summary[0][9], "error_floor");
   EXPECT_GT(results.size(), 40u);
-  for (const char* part : {"reference: exact solution", "symplectic-euler", "0.2 s", "0.2828 s", "never", "always"})
+  for (const char* part :
+       {"reference: exact solution", "symplectic-euler", "0.2 s", "0.2828 s", "never", "always"})
     EXPECT_NE(r.out.find(part), std::string::npos) << part << "\n" << r.out;
   EXPECT_NE(read_file(dir / "convergence.svg").find("rk4 (order"), std::string::npos);
   // The stability regions at the scene's step h = 1/120 s: w = 10 rad/s, so h w = 0.0833 against
@@ -62,7 +64,8 @@ TEST(Compare, OnTheSpringWritesResultsSummaryAndCharts) {
   EXPECT_NE(complex.find("rk4: every mode inside; h may grow x33.9"), std::string::npos);
   EXPECT_NE(complex.find("euler: unstable at any step"), std::string::npos);
   const std::string oscillator = read_file(dir / "stability-region-oscillator.svg");
-  EXPECT_NE(oscillator.find("symplectic-euler: every mode inside; h may grow x24"), std::string::npos);
+  EXPECT_NE(oscillator.find("symplectic-euler: every mode inside; h may grow x24"),
+            std::string::npos);
   EXPECT_TRUE(fs::exists(dir / "stability-region.png"));
   EXPECT_TRUE(fs::exists(dir / "stability-region-oscillator.png"));
   const app::Image png = app::read_png(dir / "convergence.png");
@@ -78,26 +81,36 @@ TEST(Compare, OnTheSpringWritesResultsSummaryAndCharts) {
 // now, implicit Euler's 0.03 s).
 TEST(Compare, ADiagonallyImplicitTableauIsComparedToTheEnd) {
   TempDir dir;
-  const Result r = springlab("compare spring --methods sdirk3,implicit-midpoint,trapezoidal --no-charts --points 4 --out " +
-                             dir.path.string());
+  const Result r = springlab(
+      "compare spring --methods sdirk3,implicit-midpoint,trapezoidal --no-charts --points 4 "
+      "--out " +
+      dir.path.string());
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(r.out.find("trapezoidal        2.00 (2)         always                 always"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("implicit-midpoint  2.00 (2)         always                 always"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("sdirk3             2.99 (3)         always                 always"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("trapezoidal        2.00 (2)         always                 always"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("implicit-midpoint  2.00 (2)         always                 always"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("sdirk3             2.99 (3)         always                 always"),
+            std::string::npos)
+      << r.out;
 }
 
 class EveryScene : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(EveryScene, IsChartedWithoutError) {
   const std::string name = GetParam();
-  const Scene scene = load_scene(std::string(SPRINGLAB_SOURCE_DIR) + "/assets/scenes/" + name + ".json");
+  const Scene scene =
+      load_scene(std::string(SPRINGLAB_SOURCE_DIR) + "/assets/scenes/" + name + ".json");
   std::ostringstream range;
   range.precision(17);
   range << scene.dt / 2 << ":" << scene.dt;
   TempDir dir;
-  const Result r = springlab("compare " + name + " --software --points 2 --duration " + std::to_string(20 * scene.dt) +
-                             " --drift-duration " + std::to_string(20 * scene.dt) + " --dt-range " + range.str() +
-                             " --tol-range 1e-5:1e-4 --stability-budget 1e6 --out " + dir.path.string());
+  const Result r = springlab(
+      "compare " + name + " --software --points 2 --duration " + std::to_string(20 * scene.dt) +
+      " --drift-duration " + std::to_string(20 * scene.dt) + " --dt-range " + range.str() +
+      " --tol-range 1e-5:1e-4 --stability-budget 1e6 --out " + dir.path.string());
   if (scene.ik) {  // no integrator to chart: said so, and nothing written
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.err.find("inverse-kinematics scene"), std::string::npos) << r.err;
@@ -105,7 +118,8 @@ TEST_P(EveryScene, IsChartedWithoutError) {
     return;
   }
   ASSERT_EQ(r.status, 0) << r.err;
-  for (const char* chart : {"work-precision", "work-precision-work", "convergence", "stability", "energy-drift"}) {
+  for (const char* chart :
+       {"work-precision", "work-precision-work", "convergence", "stability", "energy-drift"}) {
     EXPECT_TRUE(fs::exists(dir / (std::string(chart) + ".png"))) << chart;
     EXPECT_TRUE(fs::exists(dir / (std::string(chart) + ".svg"))) << chart;
   }
@@ -122,7 +136,6 @@ TEST_P(EveryScene, IsChartedWithoutError) {
     }
 }
 
-
 INSTANTIATE_TEST_SUITE_P(Scenes, EveryScene, ::testing::ValuesIn(shipped_scenes()),
                          [](const auto& info) { return scene_test_name(info.param); });
 
@@ -134,29 +147,38 @@ TEST(Compare, ANewLanguageIsItsCatalogAlone) {
   TempDir data;
   fs::create_directories(data / "assets" / "locale");
   for (const char* folder : {"scenes", "tableaux", "lessons", "scripts"})
-    fs::create_directory_symlink(fs::path(SPRINGLAB_SOURCE_DIR) / "assets" / folder, data / "assets" / folder);
+    fs::create_directory_symlink(fs::path(SPRINGLAB_SOURCE_DIR) / "assets" / folder,
+                                 data / "assets" / folder);
   fs::create_directory_symlink(fs::path(SPRINGLAB_SOURCE_DIR) / "shaders", data / "shaders");
-  fs::copy_file(fs::path(SPRINGLAB_SOURCE_DIR) / "assets/locale/zh-CN.po", data / "assets/locale/zh-CN.po");
-  write_file(data / "assets/locale/cs.po",
-             "msgid \"\"\nmsgstr \"\"\n\"Language: cs\\n\"\n\"X-Language-Name: \u010ce\u0161tina\\n\"\n"
-             "\"Content-Type: text/plain; charset=UTF-8\\n\"\n\n"
-             "#, c-format\nmsgid \"Convergence on %s: error against step (x = diverged)\"\n"
-             "msgstr \"Konvergence na %s: chyba podle kroku (x = divergence)\"\n\n"
-             "msgid \"step h (s)\"\nmsgstr \"krok h (s)\"\n");
+  fs::copy_file(fs::path(SPRINGLAB_SOURCE_DIR) / "assets/locale/zh-CN.po",
+                data / "assets/locale/zh-CN.po");
+  write_file(
+      data / "assets/locale/cs.po",
+      "msgid \"\"\nmsgstr \"\"\n\"Language: cs\\n\"\n\"X-Language-Name: \u010ce\u0161tina\\n\"\n"
+      "\"Content-Type: text/plain; charset=UTF-8\\n\"\n\n"
+      "#, c-format\nmsgid \"Convergence on %s: error against step (x = diverged)\"\n"
+      "msgstr \"Konvergence na %s: chyba podle kroku (x = divergence)\"\n\n"
+      "msgid \"step h (s)\"\nmsgstr \"krok h (s)\"\n");
   const std::string with = "SPRINGLAB_DATA='" + data.path.string() + "' ";
   const Result help = springlab_with(with, "compare --help");
   EXPECT_NE(help.out.find("en, cs, zh-CN"), std::string::npos) << help.out;
   TempDir out;
-  const Result r = springlab_with(with, "compare spring --methods euler,rk4 --points 3 --drift-duration 0 --software "
-                                        "--lang cs_CZ.UTF-8 --out " + out.path.string());
+  const Result r =
+      springlab_with(with,
+                     "compare spring --methods euler,rk4 --points 3 --drift-duration 0 --software "
+                     "--lang cs_CZ.UTF-8 --out " +
+                         out.path.string());
   ASSERT_EQ(r.status, 0) << r.err;
   const std::string svg = read_file(out / "convergence.svg");
   EXPECT_NE(svg.find("Konvergence na spring: chyba podle kroku"), std::string::npos);
   EXPECT_NE(svg.find("krok h (s)"), std::string::npos);
   EXPECT_NE(svg.find("error (m)"), std::string::npos);  // (untranslated: the English)
-  const Result refused = springlab_with(with, "compare spring --lang de --out " + out.path.string());
+  const Result refused =
+      springlab_with(with, "compare spring --lang de --out " + out.path.string());
   EXPECT_EQ(refused.status, 2);
-  EXPECT_NE(refused.err.find("'de' is not a language springlab speaks (en, cs, zh-CN)"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("'de' is not a language springlab speaks (en, cs, zh-CN)"),
+            std::string::npos)
+      << refused.err;
 }
 
 TEST(Compare, BadOptionsExitTwo) {
@@ -171,7 +193,8 @@ TEST(Compare, BadOptionsExitTwo) {
       {"compare spring --tol-range 1e-3" + out, "--tol-range"},
       {"compare spring --methods euler,rk5" + out, "--methods: unknown method 'rk5'"},
       {"compare spring --repeats 0" + out, "--repeats"},
-      {"compare spring --duration 0.001 --dt-range 0.001:0.01" + out, "--duration: must be at least the largest step"},
+      {"compare spring --duration 0.001 --dt-range 0.001:0.01" + out,
+       "--duration: must be at least the largest step"},
       {"compare spring --out /proc/springlab/charts", "--out: cannot create the folder"},
   };
   for (const auto& [args, expected] : cases) {

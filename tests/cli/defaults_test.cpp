@@ -14,7 +14,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-
 void expect_holds(const Result& r, const std::string& what) {
   EXPECT_EQ(r.status, 0) << what << "\n" << r.out << r.err;
   EXPECT_EQ(r.err.find("warning"), std::string::npos) << what << "\n" << r.err;
@@ -39,7 +38,8 @@ TEST(Defaults, EveryExplicitMethodHoldsOnTheRope) {
     const std::string method = m.name;
     const Result r = springlab("run rope --method " + method);
     expect_holds(r, method);
-    EXPECT_NE(r.out.find("(auto: h within 0.5 of the limit"), std::string::npos) << method << "\n" << r.out;
+    EXPECT_NE(r.out.find("(auto: h within 0.5 of the limit"), std::string::npos) << method << "\n"
+                                                                                 << r.out;
   }
 }
 
@@ -49,9 +49,12 @@ TEST(Defaults, EveryExplicitMethodHoldsOnTheRope) {
 // whole 10 s takes minutes).
 TEST(Defaults, TheFinerRopesAndClothsHold) {
   expect_holds(springlab("run rope --set rope.nodes=64"), "rope 64");
-  expect_holds(springlab("run rope --set rope.nodes=1000 --duration 0.25"), "rope 1000");  // 102 sub-steps a step
-  expect_holds(springlab("run cloth --set cloth.width=64 --set cloth.height=64 --duration 2"), "cloth 64");
-  expect_holds(springlab("run cloth --set cloth.width=128 --set cloth.height=128 --duration 0.25"), "cloth 128");
+  expect_holds(springlab("run rope --set rope.nodes=1000 --duration 0.25"),
+               "rope 1000");  // 102 sub-steps a step
+  expect_holds(springlab("run cloth --set cloth.width=64 --set cloth.height=64 --duration 2"),
+               "cloth 64");
+  expect_holds(springlab("run cloth --set cloth.width=128 --set cloth.height=128 --duration 0.25"),
+               "cloth 128");
 }
 
 // The scene made to diverge (stiff: one step a frame, fixed in its file) still diverges under an

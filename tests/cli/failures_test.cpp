@@ -40,9 +40,11 @@ TEST(Failures, InvertedCellsAreCounted) {
   for (const char* method : {"xpbd", "vbd"}) {
     const Result r = springlab("run jelly --method " + std::string(method) + kFrame);
     ASSERT_EQ(r.status, 0) << r.err;
-    EXPECT_NE(r.out.find("cells      16 of 64 inverted (turned inside out"), std::string::npos) << method << r.out;
+    EXPECT_NE(r.out.find("cells      16 of 64 inverted (turned inside out"), std::string::npos)
+        << method << r.out;
   }
-  for (const std::string& run : {"run jelly --method implicit-euler" + kFrame, std::string("run jelly --method xpbd")}) {
+  for (const std::string& run :
+       {"run jelly --method implicit-euler" + kFrame, std::string("run jelly --method xpbd")}) {
     const Result r = springlab(run);
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.out.find("cells      0 of 64 inverted\n"), std::string::npos) << run << r.out;
@@ -55,7 +57,8 @@ TEST(Failures, AnEffectiveStiffnessOnlyWhereItIsDefined) {
   const Result jelly = springlab("run jelly --method vbd" + kFrame);
   ASSERT_EQ(jelly.status, 0) << jelly.err;
   EXPECT_EQ(jelly.out.find("act as k_s"), std::string::npos) << jelly.out;
-  EXPECT_NE(jelly.out.find("damping    not stated: the colliders' contacts"), std::string::npos) << jelly.out;
+  EXPECT_NE(jelly.out.find("damping    not stated: the colliders' contacts"), std::string::npos)
+      << jelly.out;
   const Result chain = springlab("run chain --method vbd" + kFrame);
   ASSERT_EQ(chain.status, 0) << chain.err;
   EXPECT_NE(chain.out.find("act as k_s x"), std::string::npos) << chain.out;
@@ -66,7 +69,9 @@ TEST(Failures, AnEffectiveStiffnessOnlyWhereItIsDefined) {
 TEST(Failures, ChebyshevRhoPastTheMeasuredRadiusIsWarnedOf) {
   const Result past = springlab("run chain --method local-global --rho 0.999" + kFrame);
   ASSERT_EQ(past.status, 0) << past.err;
-  EXPECT_NE(past.err.find("--rho 0.999 is past local-global's spectral radius here, 0.97"), std::string::npos) << past.err;
+  EXPECT_NE(past.err.find("--rho 0.999 is past local-global's spectral radius here, 0.97"),
+            std::string::npos)
+      << past.err;
   EXPECT_GT(number_after(past.out, "energy in  "), 1e4) << past.out;  // measured 9.0e5 J
   const Result within = springlab("run chain --method local-global --rho 0.9" + kFrame);
   ASSERT_EQ(within.status, 0) << within.err;
@@ -79,9 +84,11 @@ TEST(Failures, ChebyshevRhoPastTheMeasuredRadiusIsWarnedOf) {
 // descent at one step a frame changes its angular momentum by a fifth (0.21 of sum m|x||v|), as
 // its row says it may; symplectic Euler at its stable step keeps both to rounding, as its row says.
 TEST(Failures, MomentumOnAFreeBodyIsMeasuredAndPrinted) {
-  const std::string free = " --set gravity=0,0,0 --set drag=0 --set colliders=[] --set jelly.spin=[0,0,20] "
-                           "--set jelly.velocity=[1,0,0]";
-  const Result vbd = springlab("run jelly --method vbd --dt 0.016666666666666666 --substeps 1 --steps 60" + free);
+  const std::string free =
+      " --set gravity=0,0,0 --set drag=0 --set colliders=[] --set jelly.spin=[0,0,20] "
+      "--set jelly.velocity=[1,0,0]";
+  const Result vbd =
+      springlab("run jelly --method vbd --dt 0.016666666666666666 --substeps 1 --steps 60" + free);
   ASSERT_EQ(vbd.status, 0) << vbd.err;
   EXPECT_NE(vbd.out.find("momentum   a free body"), std::string::npos) << vbd.out;
   EXPECT_NE(vbd.out.find("vbd: P not kept, L not kept"), std::string::npos) << vbd.out;

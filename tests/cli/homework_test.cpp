@@ -30,8 +30,8 @@ namespace fs = std::filesystem;
 const fs::path kHomework = fs::path(SPRINGLAB_SOURCE_DIR) / "tests" / "homework";
 
 struct Expectation {
-  fs::path path;         // a rope.cpp, or a folder holding one
-  std::string name;      // for GoogleTest
+  fs::path path;     // a rope.cpp, or a folder holding one
+  std::string name;  // for GoogleTest
   int exit = 0;
   std::vector<std::string> failed;
   std::string euler, verlet, options;
@@ -39,7 +39,9 @@ struct Expectation {
 };
 
 // Named by its path in a failure's message, not dumped as bytes.
-void PrintTo(const Expectation& e, std::ostream* os) { *os << e.path.string(); }
+void PrintTo(const Expectation& e, std::ostream* os) {
+  *os << e.path.string();
+}
 
 Expectation read_expectation(const fs::path& path) {
   Expectation e;
@@ -59,8 +61,10 @@ Expectation read_expectation(const fs::path& path) {
       std::istringstream words(*v);
       std::string kind;
       words >> kind;
-      if (kind == "pass") e.exit = 0;
-      else if (kind == "exit") words >> e.exit;
+      if (kind == "pass")
+        e.exit = 0;
+      else if (kind == "exit")
+        words >> e.exit;
       else {
         e.exit = 1;
         for (std::string key; words >> key;) e.failed.push_back(key);
@@ -80,7 +84,8 @@ std::vector<Expectation> every_solution() {
   for (const char* folder : {"ropes", "students"}) {
     std::vector<fs::path> paths;
     for (const auto& entry : fs::directory_iterator(kHomework / folder))
-      if (entry.path().extension() == ".cpp" || fs::is_regular_file(entry.path() / "rope.cpp")) paths.push_back(entry.path());
+      if (entry.path().extension() == ".cpp" || fs::is_regular_file(entry.path() / "rope.cpp"))
+        paths.push_back(entry.path());
     std::sort(paths.begin(), paths.end());
     for (const fs::path& p : paths) all.push_back(read_expectation(p));
   }
@@ -103,7 +108,8 @@ TEST_P(Solutions, AreClassifiedAsACarefulReaderWould) {
   const Expectation& e = GetParam();
   const Result r = check(e.path.string(), " --json" + e.options);
   ASSERT_EQ(r.status, e.exit) << r.out << r.err;
-  for (const std::string& text : e.err) EXPECT_NE(r.err.find(text), std::string::npos) << text << "\n" << r.err;
+  for (const std::string& text : e.err)
+    EXPECT_NE(r.err.find(text), std::string::npos) << text << "\n" << r.err;
   if (e.exit == 2) {
     EXPECT_EQ(r.out, "");
     return;
@@ -113,7 +119,8 @@ TEST_P(Solutions, AreClassifiedAsACarefulReaderWould) {
   std::string lines;
   for (const auto& section : report["sections"])
     for (const auto& line : section["lines"]) {
-      lines += line["kind"].get<std::string>() + " [" + line["key"].get<std::string>() + "] " + line["text"].get<std::string>() + "\n";
+      lines += line["kind"].get<std::string>() + " [" + line["key"].get<std::string>() + "] " +
+               line["text"].get<std::string>() + "\n";
       if (line["kind"] == "fail") failed.push_back(line["key"]);
     }
   EXPECT_EQ(failed, e.failed) << lines;
@@ -124,11 +131,14 @@ TEST_P(Solutions, AreClassifiedAsACarefulReaderWould) {
   if (!e.verlet.empty()) {
     EXPECT_EQ(found(report["steps"]["simulateVerlet"]), e.verlet) << lines;
   }
-  for (const std::string& text : e.says) EXPECT_NE(lines.find(text), std::string::npos) << text << "\n" << lines;
+  for (const std::string& text : e.says)
+    EXPECT_NE(lines.find(text), std::string::npos) << text << "\n" << lines;
 }
 
 INSTANTIATE_TEST_SUITE_P(Homework, Solutions, testing::ValuesIn(every_solution()),
-                         [](const testing::TestParamInfo<Expectation>& info) { return info.param.name; });
+                         [](const testing::TestParamInfo<Expectation>& info) {
+                           return info.param.name;
+                         });
 
 // The corpus holds what the issue asks of it: at least 15 correct solutions and a file a mistake.
 TEST(Homework, TheCorpusHasFifteenCorrectSolutionsAndAFileAMistake) {
@@ -139,8 +149,9 @@ TEST(Homework, TheCorpusHasFifteenCorrectSolutionsAndAFileAMistake) {
     mistakes.insert(e.failed.begin(), e.failed.end());
   }
   EXPECT_GE(correct, 15);
-  for (const char* key : {"accel-twice", "gravity-no-mass", "gravity-times-step", "spacing-n", "reversed", "spring-not-in-rope",
-                          "pins-before-masses", "no-gravity", "nothing-built", "forces-kept", "damping-sign", "verlet-a-h"})
+  for (const char* key : {"accel-twice", "gravity-no-mass", "gravity-times-step", "spacing-n",
+                          "reversed", "spring-not-in-rope", "pins-before-masses", "no-gravity",
+                          "nothing-built", "forces-kept", "damping-sign", "verlet-a-h"})
     EXPECT_TRUE(mistakes.count(key)) << key;
 }
 
@@ -148,15 +159,18 @@ TEST(Homework, TheCorpusHasFifteenCorrectSolutionsAndAFileAMistake) {
 TEST(Homework, TheTextReportSaysWhatWasCompiledAndCountsTheChecks) {
   const Result r = check((kHomework / "students" / "own_headers").string());
   ASSERT_EQ(r.status, 0) << r.out << r.err;
-  EXPECT_NE(r.out.find("own_headers/rope.cpp, with your rope.h, mass.h and spring.h (the exercise's for the rest)"),
-            std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("own_headers/rope.cpp, with your rope.h, mass.h and spring.h (the "
+                       "exercise's for the rest)"),
+            std::string::npos)
+      << r.out;
   EXPECT_NE(r.out.find("\n  ok    simulateEuler is Symplectic Euler"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find(" 0 failed.\n"), std::string::npos) << r.out;
 }
 
 // The report in the student's language: every line Chinese, the numbers kept.
 TEST(Homework, TheReportSpeaksChinese) {
-  const Result r = springlab("homework check '" + (kHomework / "ropes" / "uneven.cpp").string() + "' --lang zh-CN");
+  const Result r = springlab("homework check '" + (kHomework / "ropes" / "uneven.cpp").string() +
+                             "' --lang zh-CN");
   ASSERT_EQ(r.status, 1) << r.out << r.err;
   EXPECT_NE(r.out.find("7.031"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("evenly spaced"), std::string::npos) << r.out;
@@ -177,7 +191,8 @@ TEST(Homework, TheStarterKitSaysWhereToStart) {
   for (const auto& section : report["sections"])
     for (const auto& line : section["lines"])
       if (line["kind"] == "fail") failed.push_back(line["key"]);
-  EXPECT_EQ(failed, (std::vector<std::string>{"nothing-built", "not-written", "not-written"})) << r.out;
+  EXPECT_EQ(failed, (std::vector<std::string>{"nothing-built", "not-written", "not-written"}))
+      << r.out;
   EXPECT_NE(r.out.find("Start there (Part 1)"), std::string::npos) << r.out;
   const Result again = springlab("homework kit " + (dir / "hw8").string());
   EXPECT_EQ(again.status, 2);
@@ -188,7 +203,8 @@ TEST(Homework, TheStarterKitSaysWhereToStart) {
 // difference and what the exercise declares; a step declared but never written: which one.
 TEST(Homework, HeadersThatChangeWhatTheCheckerCallsAreSaid) {
   TempDir dir;
-  const std::string rope_h = read_file(fs::path(SPRINGLAB_SOURCE_DIR) / "assets" / "homework" / "include" / "rope.h");
+  const std::string rope_h =
+      read_file(fs::path(SPRINGLAB_SOURCE_DIR) / "assets" / "homework" / "include" / "rope.h");
   std::string changed = rope_h;
   changed.replace(changed.find("void simulateEuler(float delta_t, Vector2D gravity);"),
                   std::string("void simulateEuler(float delta_t, Vector2D gravity);").size(),
@@ -201,8 +217,12 @@ TEST(Homework, HeadersThatChangeWhatTheCheckerCallsAreSaid) {
   write_file(dir / "rope.cpp", source);
   const Result r = check(dir.path.string());
   EXPECT_EQ(r.status, 2) << r.out << r.err;
-  EXPECT_NE(r.err.find("compiles, but the checker cannot call it through your rope.h"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("The exercise declares void simulateEuler(float delta_t, Vector2D gravity)."), std::string::npos)
+  EXPECT_NE(r.err.find("compiles, but the checker cannot call it through your rope.h"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(
+      r.err.find("The exercise declares void simulateEuler(float delta_t, Vector2D gravity)."),
+      std::string::npos)
       << r.err;
 
   write_file(dir / "rope.h", rope_h);
@@ -211,14 +231,16 @@ TEST(Homework, HeadersThatChangeWhatTheCheckerCallsAreSaid) {
   write_file(dir / "rope.cpp", source);
   const Result missing = check(dir.path.string());
   EXPECT_EQ(missing.status, 2) << missing.out << missing.err;
-  EXPECT_NE(missing.err.find("does not define what the checker calls"), std::string::npos) << missing.err;
+  EXPECT_NE(missing.err.find("does not define what the checker calls"), std::string::npos)
+      << missing.err;
   EXPECT_NE(missing.err.find("simulateVerlet"), std::string::npos) << missing.err;
 }
 
 TEST(Homework, AMissingFileOrFolderIsBadInput) {
   const Result missing = springlab("homework check no-such-rope.cpp");
   EXPECT_EQ(missing.status, 2);
-  EXPECT_NE(missing.err.find("cannot read no-such-rope.cpp: no such file"), std::string::npos) << missing.err;
+  EXPECT_NE(missing.err.find("cannot read no-such-rope.cpp: no such file"), std::string::npos)
+      << missing.err;
   TempDir empty;
   const Result none = springlab("homework check " + empty.path.string());
   EXPECT_EQ(none.status, 2);

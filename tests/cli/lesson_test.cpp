@@ -15,10 +15,18 @@ namespace {
 namespace fs = std::filesystem;
 
 // The lecture's order (GAMES101, animation and simulation; assets/lessons/README.md).
-const std::vector<std::string> kCourse = {"hooke",       "damping-vs-drag",    "euler-explodes",
-                                          "damping-buys-a-limit", "midpoint-modified-euler", "adaptive-step",
-                                          "implicit-stiff", "rk4-work-precision", "particle-systems",
-                                          "inverse-kinematics", "what-games-use", "write-your-own-step",
+const std::vector<std::string> kCourse = {"hooke",
+                                          "damping-vs-drag",
+                                          "euler-explodes",
+                                          "damping-buys-a-limit",
+                                          "midpoint-modified-euler",
+                                          "adaptive-step",
+                                          "implicit-stiff",
+                                          "rk4-work-precision",
+                                          "particle-systems",
+                                          "inverse-kinematics",
+                                          "what-games-use",
+                                          "write-your-own-step",
                                           "homework-8"};
 
 class ShippedLesson : public ::testing::TestWithParam<std::string> {};
@@ -27,9 +35,11 @@ TEST_P(ShippedLesson, EveryClaimOfItsCaptionsHoldsWhenPlayed) {
   const Lesson lesson = app::open_lesson(GetParam());
   for (std::size_t s = 0; s < lesson.steps.size(); ++s) {
     const LessonStep& step = lesson.steps[s];
-    EXPECT_FALSE(step.claims.empty()) << lesson.name << " step " << s + 1 << " claims nothing a test can check";
+    EXPECT_FALSE(step.claims.empty())
+        << lesson.name << " step " << s + 1 << " claims nothing a test can check";
     for (const app::ClaimResult& r : app::check_step(step))
-      EXPECT_TRUE(r.passed) << lesson.name << " step " << s + 1 << ": " << r.claim.describe() << ": " << r.measured;
+      EXPECT_TRUE(r.passed) << lesson.name << " step " << s + 1 << ": " << r.claim.describe()
+                            << ": " << r.measured;
   }
 }
 
@@ -55,7 +65,10 @@ TEST(Lessons, TheCourseFollowsTheLecture) {
 TEST(Lessons, CheckPrintsEachClaimWithWhatWasMeasured) {
   const Result r = springlab("lesson check euler-explodes");
   ASSERT_EQ(r.status, 0) << r.out << r.err;
-  EXPECT_NE(r.out.find("ok    euler: energy grows by x1.027778 a step: x1.027778 a step (expected x1.027778)"), std::string::npos)
+  EXPECT_NE(
+      r.out.find(
+          "ok    euler: energy grows by x1.027778 a step: x1.027778 a step (expected x1.027778)"),
+      std::string::npos)
       << r.out;
   EXPECT_NE(r.out.find("4 of 4 claims hold"), std::string::npos) << r.out;
 }
@@ -86,7 +99,8 @@ TEST(Lessons, AClaimThatDoesNotHoldFailsTheCheck) {
 TEST(Lessons, EveryKindOfClaimCanFail) {
   TempDir dir;
   // (Two lessons: at most 12 steps each.)
-  write_file(dir / "false1.json", R"({"title": "False", "summary": "False claims, one of each kind.", "steps": [
+  write_file(dir / "false1.json",
+             R"({"title": "False", "summary": "False claims, one of each kind.", "steps": [
     {"title": "follows-exact", "scene": "spring", "method": "symplectic-euler", "dt": 0.05, "substeps": 1,
      "duration": 3, "caption": "c", "claims": [{"claim": "follows-exact", "within": 0.001}]},
     {"title": "energy-bounded", "scene": "spring", "method": "rk4", "kd": 2, "duration": 3, "caption": "c",
@@ -106,7 +120,8 @@ TEST(Lessons, EveryKindOfClaimCanFail) {
      "duration": 2, "caption": "c", "claims": [{"claim": "energy-grows", "per_step": 1.05, "to": 0.75}]},
     {"title": "diverges", "scene": "spring", "method": "symplectic-euler", "dt": 0.016666666666666666, "substeps": 1,
      "duration": 3, "caption": "c", "claims": [{"claim": "diverges", "by": 3}]}]})");
-  write_file(dir / "false2.json", R"({"title": "False too", "summary": "The other kinds.", "steps": [
+  write_file(dir / "false2.json",
+             R"({"title": "False too", "summary": "The other kinds.", "steps": [
     {"title": "holds", "scene": "spring", "method": "euler", "dt": 0.016666666666666666, "substeps": 1,
      "duration": 3, "caption": "c", "claims": [{"claim": "holds"}]},
     {"title": "limit", "scene": "damped-spring", "method": "euler", "dt": 0.015, "substeps": 1, "duration": 1,
@@ -133,10 +148,13 @@ TEST(Lessons, EveryKindOfClaimCanFail) {
                 {"t": 0.45, "release": true}],
      "claims": [{"claim": "linear-momentum-kept", "lane": "vbd", "from": 0.6},
                 {"claim": "linear-momentum-changes", "lane": "xpbd", "from": 0.6}]}]})");
-  const Result r = springlab("lesson check " + (dir / "false1.json").string() + " " + (dir / "false2.json").string());
+  const Result r = springlab("lesson check " + (dir / "false1.json").string() + " " +
+                             (dir / "false2.json").string());
   EXPECT_EQ(r.status, 1) << r.out << r.err;
   int fails = 0;
-  for (std::size_t at = r.out.find("FAIL  "); at != std::string::npos; at = r.out.find("FAIL  ", at + 1)) ++fails;
+  for (std::size_t at = r.out.find("FAIL  "); at != std::string::npos;
+       at = r.out.find("FAIL  ", at + 1))
+    ++fails;
   EXPECT_EQ(fails, 22) << r.out;
   EXPECT_EQ(r.out.find("ok  "), std::string::npos) << r.out;
 }
@@ -147,9 +165,10 @@ TEST(Lessons, ABadLessonGetsOneMessageNamingTheFileAndTheFieldAndExitsTwo) {
   write_file(file, R"({"title": "Bad", "summary": "s", "steps": [
     {"title": "t", "scene": "spring", "kd": -1, "duration": 2, "caption": "c"}]})");
   const std::string expected = "springlab: lesson '" + file.string() + "': /steps/0/kd: must be";
-  for (const std::string& command : {"lesson check " + file.string(), "render --lesson " + file.string() + " --out " +
-                                         (dir / "frames").string(),
-                                     "view --lesson " + file.string() + " --frames 1"}) {
+  for (const std::string& command :
+       {"lesson check " + file.string(),
+        "render --lesson " + file.string() + " --out " + (dir / "frames").string(),
+        "view --lesson " + file.string() + " --frames 1"}) {
     const Result r = springlab(command);
     EXPECT_EQ(r.status, 2) << command;
     EXPECT_EQ(r.err.rfind(expected, 0), 0u) << command << ": " << r.err;
@@ -162,10 +181,12 @@ TEST(Lessons, BadLessonOptionsExitTwo) {
   TempDir dir;
   const std::string out = " --out " + (dir / "f").string();
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {"render --lesson hoke" + out, "lesson 'hoke': no such file, and no shipped lesson of that name; did you mean 'hooke'?"},
+      {"render --lesson hoke" + out,
+       "lesson 'hoke': no such file, and no shipped lesson of that name; did you mean 'hooke'?"},
       {"render" + out, "render: give a SCENE or --lesson NAME"},
       {"render spring --lesson hooke" + out, "render: give a SCENE or --lesson NAME"},
-      {"render --lesson hooke --method rk4" + out, "render --lesson: a lesson is recorded with its own values"},
+      {"render --lesson hooke --method rk4" + out,
+       "render --lesson: a lesson is recorded with its own values"},
       {"view --lesson hooke --step 3 --frames 1", "--step: lesson 'hooke' has steps 1 to 2, got 3"},
       {"lesson check nope", "lesson 'nope': no such file"},
   };
@@ -180,7 +201,8 @@ TEST(Lessons, BadLessonOptionsExitTwo) {
 // each step with them instead: its scene's render command, which runs.
 TEST(Lessons, RenderWithTheClassesValuesGivesEachStepsCommand) {
   TempDir dir;
-  const Result r = springlab("render --lesson damping-buys-a-limit --dt 0.01 --kd 1 --out " + (dir / "f").string());
+  const Result r = springlab("render --lesson damping-buys-a-limit --dt 0.01 --kd 1 --out " +
+                             (dir / "f").string());
   EXPECT_EQ(r.status, 2);
   EXPECT_FALSE(std::filesystem::exists(dir / "f"));
   const std::string step = "step 1: springlab render damped-spring --method euler --dt 0.01 ";
@@ -190,7 +212,8 @@ TEST(Lessons, RenderWithTheClassesValuesGivesEachStepsCommand) {
   std::string command = r.err.substr(at + 8 + std::string("springlab ").size());
   command = command.substr(0, command.find('\n'));
   EXPECT_NE(command.find("--kd 1 "), std::string::npos) << command;
-  command.replace(command.find("--out step1"), std::string("--out step1").size(), "--frames 2 --out " + (dir / "step1").string());
+  command.replace(command.find("--out step1"), std::string("--out step1").size(),
+                  "--frames 2 --out " + (dir / "step1").string());
   const Result run = springlab(command);
   EXPECT_TRUE(run.status == 0 || run.status == 3) << command << ": " << run.err;
   EXPECT_TRUE(std::filesystem::exists(dir / "step1" / "frame_00001.png")) << command;
@@ -199,26 +222,34 @@ TEST(Lessons, RenderWithTheClassesValuesGivesEachStepsCommand) {
 TEST(Lessons, RenderPlaysEveryStepForItsDuration) {
   TempDir dir;
   // euler-explodes: one step of 6 s; hooke: two of 6 s. At 5 frames a second: 30 and 60 frames.
-  for (const auto& [lesson, frames] : std::vector<std::pair<std::string, int>>{{"euler-explodes", 30}, {"hooke", 60}}) {
+  for (const auto& [lesson, frames] :
+       std::vector<std::pair<std::string, int>>{{"euler-explodes", 30}, {"hooke", 60}}) {
     const fs::path out = dir / lesson;
-    const Result r = springlab("render --lesson " + lesson + " --fps 5 --size 320x180 --software --out " + out.string());
+    const Result r = springlab("render --lesson " + lesson +
+                               " --fps 5 --size 320x180 --software --out " + out.string());
     ASSERT_EQ(r.status, 0) << r.err;
     int count = 0;
     for (const auto& e : fs::directory_iterator(out)) count += e.path().extension() == ".png";
     EXPECT_EQ(count, frames) << lesson;
-    EXPECT_NE(r.out.find("rendered " + std::to_string(frames) + " frames of lesson " + lesson), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("rendered " + std::to_string(frames) + " frames of lesson " + lesson),
+              std::string::npos)
+        << r.out;
   }
 }
 
 TEST(Lessons, RenderWritesAVideoWithTheCaptionsBurnedIn) {
-  if (std::system("command -v ffprobe > /dev/null") != 0) GTEST_SKIP() << "ffprobe (package ffmpeg) is missing";
+  if (std::system("command -v ffprobe > /dev/null") != 0)
+    GTEST_SKIP() << "ffprobe (package ffmpeg) is missing";
   TempDir dir;
   const auto video = dir / "hooke.mp4";
-  const Result r = springlab("render --lesson hooke --duration 1 --fps 20 --size 640x360 --software --video " + video.string());
+  const Result r =
+      springlab("render --lesson hooke --duration 1 --fps 20 --size 640x360 --software --video " +
+                video.string());
   ASSERT_EQ(r.status, 0) << r.err;
-  const std::string probe = "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
-                            "stream=codec_name,width,height,nb_read_frames -of csv=p=0 '" +
-                            video.string() + "' > '" + (dir / "probe").string() + "'";
+  const std::string probe =
+      "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+      "stream=codec_name,width,height,nb_read_frames -of csv=p=0 '" +
+      video.string() + "' > '" + (dir / "probe").string() + "'";
   ASSERT_EQ(std::system(probe.c_str()), 0);
   EXPECT_EQ(read_file(dir / "probe"), "h264,640,360,20\n");
 }

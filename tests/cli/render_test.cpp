@@ -1,9 +1,8 @@
 // springlab render, as a user (or a course's CI) runs it: PNG frames and mp4 video headlessly,
 // exact frame times, and every way it can fail: no ffmpeg, no EGL, an unwritable folder, bad
 // options, an interruption; each with one message, its exit status and nothing half-written.
-#include <gtest/gtest.h>
-
 #include <fcntl.h>
+#include <gtest/gtest.h>
 #include <signal.h>
 #include <spawn.h>
 
@@ -26,7 +25,8 @@ int count_files(const fs::path& dir) {
 
 TEST(Render, WritesNumberedFramesAtExactTimes) {
   TempDir dir;
-  const Result r = springlab("render spring --frames 61 --size 320x180 --software --out " + (dir / "f").string());
+  const Result r = springlab("render spring --frames 61 --size 320x180 --software --out " +
+                             (dir / "f").string());
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(count_files(dir / "f"), 61);
   const app::Image first = app::read_png(dir / "f" / "frame_00000.png");
@@ -39,16 +39,19 @@ TEST(Render, WritesNumberedFramesAtExactTimes) {
 }
 
 TEST(Render, WritesAnH264Video) {
-  if (std::system("command -v ffprobe > /dev/null") != 0) GTEST_SKIP() << "ffprobe (package ffmpeg) is missing";
+  if (std::system("command -v ffprobe > /dev/null") != 0)
+    GTEST_SKIP() << "ffprobe (package ffmpeg) is missing";
   TempDir dir;
   const auto video = dir / "v.mp4";
-  const Result r = springlab("render cloth --frames 30 --fps 30 --size 320x180 --software --video " + video.string());
+  const Result r = springlab(
+      "render cloth --frames 30 --fps 30 --size 320x180 --software --video " + video.string());
   ASSERT_EQ(r.status, 0) << r.err;
   ASSERT_TRUE(fs::exists(video));
   EXPECT_EQ(count_files(dir.path), 1);  // no temporary file left
-  const std::string probe = "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
-                            "stream=codec_name,width,height,nb_read_frames,pix_fmt -of csv=p=0 '" +
-                            video.string() + "' > '" + (dir / "probe").string() + "'";
+  const std::string probe =
+      "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+      "stream=codec_name,width,height,nb_read_frames,pix_fmt -of csv=p=0 '" +
+      video.string() + "' > '" + (dir / "probe").string() + "'";
   ASSERT_EQ(std::system(probe.c_str()), 0);
   EXPECT_EQ(read_file(dir / "probe"), "h264,320,180,yuv420p,30\n");
 }
@@ -58,41 +61,51 @@ TEST(Render, WritesAnH264Video) {
 // lane that diverged is a render that could not show what was asked (exit 3, its reason on stderr).
 TEST(Render, SaysTheFramesAndTimesItWroteAndWhichLaneDiverged) {
   TempDir dir;
-  const std::string rope = "render rope --substeps 1 --dt 2e-4 --size 320x180 --software --select 60,300 ";
-  const Result compared = springlab(rope + "--compare euler,symplectic-euler,rk4 --out " + (dir / "c").string());
+  const std::string rope =
+      "render rope --substeps 1 --dt 2e-4 --size 320x180 --software --select 60,300 ";
+  const Result compared =
+      springlab(rope + "--compare euler,symplectic-euler,rk4 --out " + (dir / "c").string());
   EXPECT_EQ(compared.status, 0) << compared.err;
-  EXPECT_NE(compared.out.find("rendered 2 frames of rope (320x180, 60 frames/s: frames 60 to 300, t = 1 to 5 s)"),
-            std::string::npos) << compared.out;
-  EXPECT_NE(compared.out.find("diverged   euler: diverged during step"), std::string::npos) << compared.out;
-  EXPECT_NE(compared.out.find("Drawn from then on as it was at t = "), std::string::npos) << compared.out;
+  EXPECT_NE(compared.out.find(
+                "rendered 2 frames of rope (320x180, 60 frames/s: frames 60 to 300, t = 1 to 5 s)"),
+            std::string::npos)
+      << compared.out;
+  EXPECT_NE(compared.out.find("diverged   euler: diverged during step"), std::string::npos)
+      << compared.out;
+  EXPECT_NE(compared.out.find("Drawn from then on as it was at t = "), std::string::npos)
+      << compared.out;
   EXPECT_EQ(compared.out.find("diverged   rk4"), std::string::npos) << compared.out;
   EXPECT_TRUE(fs::exists(dir / "c" / "frame_00300.png"));
   const Result alone = springlab(rope + "--method euler --out " + (dir / "a").string());
   EXPECT_EQ(alone.status, 3) << alone.out;
-  EXPECT_NE(alone.err.find("springlab: rope: diverged during step"), std::string::npos) << alone.err;
+  EXPECT_NE(alone.err.find("springlab: rope: diverged during step"), std::string::npos)
+      << alone.err;
   EXPECT_NE(alone.out.find("frames 60 to 300, t = 1 to 5 s"), std::string::npos) << alone.out;
 }
 
 TEST(Render, WithoutFfmpegVideoFailsAtOnceSayingHowToInstallIt) {
   TempDir dir;
   // Run with a PATH where there is no ffmpeg.
-  const std::string command = "PATH=/nonexistent '" SPRINGLAB_EXECUTABLE "' render spring --software --video '" +
-                              (dir / "v.mp4").string() + "' > '" + (dir / "out").string() + "' 2> '" +
-                              (dir / "err").string() + "'";
+  const std::string command = "PATH=/nonexistent '" SPRINGLAB_EXECUTABLE
+                              "' render spring --software --video '" +
+                              (dir / "v.mp4").string() + "' > '" + (dir / "out").string() +
+                              "' 2> '" + (dir / "err").string() + "'";
   const int raw = std::system(command.c_str());
   EXPECT_EQ(WEXITSTATUS(raw), 1);
   const std::string err = read_file(dir / "err");
   EXPECT_NE(err.find("needs ffmpeg"), std::string::npos) << err;
   EXPECT_NE(err.find("apt-get install ffmpeg"), std::string::npos) << err;
   EXPECT_FALSE(fs::exists(dir / "v.mp4"));
-  for (const auto& e : fs::directory_iterator(dir.path)) EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos);
+  for (const auto& e : fs::directory_iterator(dir.path))
+    EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos);
 }
 
 TEST(Render, WithoutEglSaysWhatToInstall) {
   TempDir dir;
   const std::string command = "LIBGL_DRIVERS_PATH=/nonexistent '" SPRINGLAB_EXECUTABLE
-                              "' render spring --software --frames 1 --out '" + (dir / "f").string() + "' 2> '" +
-                              (dir / "err").string() + "' > /dev/null";
+                              "' render spring --software --frames 1 --out '" +
+                              (dir / "f").string() + "' 2> '" + (dir / "err").string() +
+                              "' > /dev/null";
   const int raw = std::system(command.c_str());
   EXPECT_EQ(WEXITSTATUS(raw), 1);
   const std::string err = read_file(dir / "err");
@@ -112,11 +125,13 @@ TEST(Render, BadOptionsExitTwoWithOneMessage) {
       {"render spring --fps 0" + out, "--fps"},
       {"render spring --frames 0" + out, "--frames"},
       {"render spring --size 321x180 --video " + (dir / "v.mp4").string(), "even width and height"},
-      {"render spring --frames 10 --select 10" + out, "--select: frame 10 is past the last frame (9)"},
+      {"render spring --frames 10 --select 10" + out,
+       "--select: frame 10 is past the last frame (9)"},
       {"render spring --compare euler" + out, "--compare: give 2 to 4 methods"},
       {"render spring --compare euler,rk5" + out, "--compare: unknown method 'rk5'"},
       {"render spring --script nope.json" + out, "script 'nope.json': cannot be read"},
-      {"render spring --out /proc/springlab/frames", "--out: cannot create the folder '/proc/springlab/frames'"},
+      {"render spring --out /proc/springlab/frames",
+       "--out: cannot create the folder '/proc/springlab/frames'"},
       {"render spring --video /proc/springlab/v.mp4", "cannot write in folder '/proc/springlab'"},
       {"render nope" + out, "scene 'nope'"},
       {"render spring --compare verlet,rk4 --compare-layout side" + out,
@@ -134,19 +149,27 @@ TEST(Render, BadOptionsExitTwoWithOneMessage) {
 TEST(Render, ScriptErrorsNameTheScriptAndTheField) {
   TempDir dir;
   const std::pair<std::string, std::string> cases[] = {
-      {R"({"events": [{"t": 1, "grab": "rope:99"}]})", "/events/0/grab: must be an integer in [-16, 15], got 99"},
-      {R"({"events": [{"t": 1, "grab": "cloth:0"}]})", "/events/0/grab: must be a particle index in [0, 15] or \"name:index\" with a generator of scene 'rope' (rope)"},
+      {R"({"events": [{"t": 1, "grab": "rope:99"}]})",
+       "/events/0/grab: must be an integer in [-16, 15], got 99"},
+      {R"({"events": [{"t": 1, "grab": "cloth:0"}]})",
+       "/events/0/grab: must be a particle index in [0, 15] or \"name:index\" with a generator of "
+       "scene 'rope' (rope)"},
       {R"({"events": [{"t": -1, "release": true}]})", "/events/0/t: must be in [0, 1e+07], got -1"},
-      {R"({"events": [{"t": 1, "set": {"method": "rk5"}}]})", "/events/0/set/method: must be a method name"},
-      {R"({"events": [{"t": 1, "set": {"stiffness": 5}}]})", "/events/0/set/stiffness: unknown field"},
-      {R"({"events": [{"t": 1, "grab": 3, "release": true}]})", "/events/0: must have exactly one action"},
-      {R"({"events": [{"t": 1, "path": [[1, 0, 0, 0], [0.5, 1, 1, 1]]}]})", "/events/0/path/1/0: waypoint times must increase"},
+      {R"({"events": [{"t": 1, "set": {"method": "rk5"}}]})",
+       "/events/0/set/method: must be a method name"},
+      {R"({"events": [{"t": 1, "set": {"stiffness": 5}}]})",
+       "/events/0/set/stiffness: unknown field"},
+      {R"({"events": [{"t": 1, "grab": 3, "release": true}]})",
+       "/events/0: must have exactly one action"},
+      {R"({"events": [{"t": 1, "path": [[1, 0, 0, 0], [0.5, 1, 1, 1]]}]})",
+       "/events/0/path/1/0: waypoint times must increase"},
       {R"({"events": []})", "/events: is required"},
       {"{", "not valid JSON"},
   };
   for (const auto& [text, expected] : cases) {
     write_file(dir / "s.json", text);
-    const Result r = springlab("render rope --software --frames 1 --script s.json --out f", dir.path);
+    const Result r =
+        springlab("render rope --software --frames 1 --script s.json --out f", dir.path);
     EXPECT_EQ(r.status, 2) << text << "\n" << r.err;
     EXPECT_NE(r.err.find("script 's.json': "), std::string::npos) << r.err;
     EXPECT_NE(r.err.find(expected), std::string::npos) << text << "\n" << r.err;
@@ -184,9 +207,12 @@ Interrupted interrupt(const std::vector<std::string>& args, const fs::path& dir,
   pid_t pid = 0;
   posix_spawnattr_t attributes;
   posix_spawnattr_init(&attributes);
-  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);  // its own group, like a terminal job
+  posix_spawnattr_setflags(&attributes,
+                           POSIX_SPAWN_SETPGROUP);  // its own group, like a terminal job
   posix_spawnattr_setpgroup(&attributes, 0);
-  EXPECT_EQ(posix_spawn(&pid, argv[0], &actions, &attributes, const_cast<char**>(argv.data()), environ), 0);
+  EXPECT_EQ(
+      posix_spawn(&pid, argv[0], &actions, &attributes, const_cast<char**>(argv.data()), environ),
+      0);
   posix_spawn_file_actions_destroy(&actions);
   posix_spawnattr_destroy(&attributes);
   const auto written = [&] {
@@ -194,7 +220,8 @@ Interrupted interrupt(const std::vector<std::string>& args, const fs::path& dir,
       if (size > 0) return true;
     return false;
   };
-  for (int k = 0; k < 500 && !written(); ++k) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  for (int k = 0; k < 500 && !written(); ++k)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
   std::this_thread::sleep_for(std::chrono::milliseconds(600));
   Interrupted r;
   r.before = files_and_sizes(dir);
@@ -209,7 +236,8 @@ Interrupted interrupt(const std::vector<std::string>& args, const fs::path& dir,
 ::testing::AssertionResult died_of(int status, int signal) {
   if (WIFSIGNALED(status) && WTERMSIG(status) == signal) return ::testing::AssertionSuccess();
   if (WIFEXITED(status))
-    return ::testing::AssertionFailure() << "it had exited with status " << WEXITSTATUS(status) << " before the signal";
+    return ::testing::AssertionFailure()
+           << "it had exited with status " << WEXITSTATUS(status) << " before the signal";
   return ::testing::AssertionFailure() << "wait status " << status;
 }
 
@@ -217,11 +245,13 @@ TEST(Render, InterruptedVideoLeavesNothing) {
   // Without ffmpeg the render refuses --video at once (WithoutFfmpegVideoFailsAtOnce...): there
   // would be no encoding to interrupt, and an empty folder would prove nothing.
   if (std::system("command -v ffmpeg > /dev/null") != 0)
-    GTEST_SKIP() << "ffmpeg is not installed (apt-get install ffmpeg), so no video is encoded and there is no "
+    GTEST_SKIP() << "ffmpeg is not installed (apt-get install ffmpeg), so no video is encoded and "
+                    "there is no "
                     "encoding to interrupt";
   TempDir dir;
-  const Interrupted r = interrupt({"render", "cloth", "--software", "--frames", "100000", "--size", "320x180", "--video",
-                                   (dir / "v.mp4").string()}, dir.path, SIGINT);
+  const Interrupted r = interrupt({"render", "cloth", "--software", "--frames", "100000", "--size",
+                                   "320x180", "--video", (dir / "v.mp4").string()},
+                                  dir.path, SIGINT);
   // It was encoding when the signal came: ffmpeg had written part of the video, under a
   // temporary name beside v.mp4, and the signal is what ended springlab.
   ASSERT_EQ(r.before.size(), 1u) << "the render never started writing the video";
@@ -234,13 +264,14 @@ TEST(Render, InterruptedVideoLeavesNothing) {
 
 TEST(Render, InterruptedFramesLeaveOnlyWholeFrames) {
   TempDir dir;
-  const Interrupted r = interrupt({"render", "cloth", "--software", "--frames", "100000", "--size", "320x180", "--out",
-                                   dir.path.string()}, dir.path, SIGTERM);
+  const Interrupted r = interrupt({"render", "cloth", "--software", "--frames", "100000", "--size",
+                                   "320x180", "--out", dir.path.string()},
+                                  dir.path, SIGTERM);
   EXPECT_TRUE(died_of(r.status, SIGTERM));
   EXPECT_FALSE(r.left.empty());
   for (const fs::path& p : r.left) {
     EXPECT_EQ(p.filename().string().rfind("frame_", 0), 0u) << p;  // no temporary file
-    EXPECT_NO_THROW(app::read_png(p)) << p;                       // and every frame whole
+    EXPECT_NO_THROW(app::read_png(p)) << p;                        // and every frame whole
   }
 }
 

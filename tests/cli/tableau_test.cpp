@@ -21,13 +21,15 @@ TEST(TableauCommand, ListsTheShippedTableauxWithOrderAndLimits) {
   std::string header;
   std::getline(lines, header);
   std::vector<std::size_t> starts;
-  for (const char* heading : {"tableau", "kind", "order", "embedded", "real axis", "imaginary axis"})
+  for (const char* heading :
+       {"tableau", "kind", "order", "embedded", "real axis", "imaginary axis"})
     starts.push_back(header.find(heading));
   int rows = 0;
   for (std::string line; std::getline(lines, line) && line.rfind("(order", 0) != 0; ++rows)
     for (const std::size_t at : starts) {
       ASSERT_LT(at, line.size()) << line;
-      EXPECT_TRUE(line[at - 1] == ' ' && line[at - 2] == ' ' && line[at] != ' ') << "column at " << at << ": " << line;
+      EXPECT_TRUE(line[at - 1] == ' ' && line[at - 2] == ' ' && line[at] != ' ')
+          << "column at " << at << ": " << line;
     }
   EXPECT_GE(rows, 15);
   const std::size_t sdirk2 = r.out.find("\nsdirk2 ");
@@ -40,13 +42,19 @@ TEST(TableauCommand, ListsTheShippedTableauxWithOrderAndLimits) {
 TEST(TableauCommand, ReportsAStudentsTableau) {
   TempDir dir;
   const auto file = dir.path / "heun-wrong.json";
-  std::ofstream(file) << R"({"name": "Heun, one entry wrong", "A": [[0], ["1/2"]], "b": ["1/2", "1/2"], "order": 2})";
+  std::ofstream(file)
+      << R"({"name": "Heun, one entry wrong", "A": [[0], ["1/2"]], "b": ["1/2", "1/2"], "order": 2})";
   const Result r = springlab("tableau '" + file.string() + "'");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("order       1, exactly"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("fails       order 2, tree [t]: sum b_i c_i = 1/2, but the tableau gives 1/4"), std::string::npos) << r.out;
+  EXPECT_NE(
+      r.out.find("fails       order 2, tree [t]: sum b_i c_i = 1/2, but the tableau gives 1/4"),
+      std::string::npos)
+      << r.out;
   EXPECT_NE(r.out.find("R(z)        1 + z + 1/4 z^2"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("warning     the file states order 2, the conditions give 1"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("warning     the file states order 2, the conditions give 1"),
+            std::string::npos)
+      << r.out;
 }
 
 TEST(TableauCommand, BadInputExitsTwoWithOneMessage) {
@@ -56,11 +64,15 @@ TEST(TableauCommand, BadInputExitsTwoWithOneMessage) {
   const Result r = springlab("tableau '" + file.string() + "'");
   EXPECT_EQ(r.status, 2);
   EXPECT_TRUE(r.out.empty()) << r.out;
-  EXPECT_NE(r.err.find("/A/0/1: A row 1, column 2 is 1/4, above the diagonal"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("/A/0/1: A row 1, column 2 is 1/4, above the diagonal"), std::string::npos)
+      << r.err;
   const Result missing = springlab("tableau rk5");
   EXPECT_EQ(missing.status, 2);
-  EXPECT_NE(missing.err.find("tableau 'rk5': no such file, and no shipped tableau of that name; did you mean 'rk4'?"),
-            std::string::npos) << missing.err;
+  EXPECT_NE(
+      missing.err.find(
+          "tableau 'rk5': no such file, and no shipped tableau of that name; did you mean 'rk4'?"),
+      std::string::npos)
+      << missing.err;
 }
 
 }  // namespace

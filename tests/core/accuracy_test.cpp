@@ -1,6 +1,7 @@
 // Accuracy on the reference spring against its exact solution: every fixed-step method's order
-// measured by halving the step (docs/numerics.md, "Accuracy and cost": within 0.2), and the adaptive methods' error falling
-// with their tolerance, with their step counts checked against what the controllers must do.
+// measured by halving the step (docs/numerics.md, "Accuracy and cost": within 0.2), and the
+// adaptive methods' error falling with their tolerance, with their step counts checked against what
+// the controllers must do.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -19,7 +20,8 @@ TEST(Exact, SolutionSatisfiesTheEquationOfMotion) {
     for (double t : {0.1, 0.37, 1.0, 2.5}) {
       // x'' = -100 (x - 1) - kd x', by central differences.
       const double e = 1e-4;
-      const double x0 = exact->at(t - e).x(1, 0), x1 = exact->at(t).x(1, 0), x2 = exact->at(t + e).x(1, 0);
+      const double x0 = exact->at(t - e).x(1, 0), x1 = exact->at(t).x(1, 0),
+                   x2 = exact->at(t + e).x(1, 0);
       const double acceleration = (x2 - 2 * x1 + x0) / (e * e);
       const double velocity = exact->at(t).v(1, 0);
       EXPECT_NEAR((x2 - x0) / (2 * e), velocity, 1e-6);
@@ -29,13 +31,16 @@ TEST(Exact, SolutionSatisfiesTheEquationOfMotion) {
   // The reference scene is exactly x(t) = 1 + 0.5 cos(10 t).
   const Scene spring = test::shipped("spring");
   const auto exact = ExactOscillator::detect(spring.model, spring.state);
-  for (double t : {0.0, 0.3, 1.7, 9.9}) EXPECT_NEAR(exact->at(t).x(1, 0), 1 + 0.5 * std::cos(10 * t), 1e-14);
+  for (double t : {0.0, 0.3, 1.7, 9.9})
+    EXPECT_NEAR(exact->at(t).x(1, 0), 1 + 0.5 * std::cos(10 * t), 1e-14);
 }
 
 // Every fixed-step row of the table, its order measured by halving from a step in the
 // asymptotic range and above round-off: (h w)^p = 1e-2 on the spring (w = 10), so that the
 // leading error term is the same size whatever the order (explicit Euler 1e-3 s, RK4 0.032 s).
-double coarse_step(Method method) { return std::pow(1e-2, 1.0 / method_info(method).order) / 10.0; }
+double coarse_step(Method method) {
+  return std::pow(1e-2, 1.0 / method_info(method).order) / 10.0;
+}
 
 class Order : public ::testing::TestWithParam<Method> {};
 
@@ -48,29 +53,35 @@ TEST_P(Order, MatchesTheTableWithinTwoTenths) {
   const double finer = test::error_against_exact(scene, method, h / 4, 1.0);
   const double order1 = std::log2(coarse / fine), order2 = std::log2(fine / finer);
   const int expected = method_info(method).order;
-  EXPECT_NEAR(order1, expected, 0.2) << method_info(method).name << " errors " << coarse << " " << fine;
-  EXPECT_NEAR(order2, expected, 0.2) << method_info(method).name << " errors " << fine << " " << finer;
+  EXPECT_NEAR(order1, expected, 0.2)
+      << method_info(method).name << " errors " << coarse << " " << fine;
+  EXPECT_NEAR(order2, expected, 0.2)
+      << method_info(method).name << " errors " << fine << " " << finer;
 }
 
-INSTANTIATE_TEST_SUITE_P(Methods, Order, ::testing::ValuesIn(test::fixed_step()), [](const auto& info) {
-  std::string name = method_info(info.param).name;
-  for (char& c : name)
-    if (c == '-') c = '_';
-  return name;
-});
+INSTANTIATE_TEST_SUITE_P(Methods, Order, ::testing::ValuesIn(test::fixed_step()),
+                         [](const auto& info) {
+                           std::string name = method_info(info.param).name;
+                           for (char& c : name)
+                             if (c == '-') c = '_';
+                           return name;
+                         });
 
 TEST(Order, DampedSpringToo) {
   // With damping the velocity matters in the force: every fixed-step method's order holds all the
   // same, over two halvings (each inside its damped limit: explicit Euler's is k_d / k_s = 0.02 s).
   const Scene scene = test::oscillator(100.0, 2.0);
   for (Method method : test::fixed_step()) {
-    const double h = std::min(coarse_step(method), 0.02);  // inside explicit Euler's damped limit, 0.02 s
+    const double h =
+        std::min(coarse_step(method), 0.02);  // inside explicit Euler's damped limit, 0.02 s
     const double coarse = test::error_against_exact(scene, method, h, 1.0);
     const double fine = test::error_against_exact(scene, method, h / 2, 1.0);
     const double finer = test::error_against_exact(scene, method, h / 4, 1.0);
     const int order = method_info(method).order;
-    EXPECT_NEAR(std::log2(coarse / fine), order, 0.2) << method_info(method).name << " " << coarse << " " << fine;
-    EXPECT_NEAR(std::log2(fine / finer), order, 0.2) << method_info(method).name << " " << fine << " " << finer;
+    EXPECT_NEAR(std::log2(coarse / fine), order, 0.2)
+        << method_info(method).name << " " << coarse << " " << fine;
+    EXPECT_NEAR(std::log2(fine / finer), order, 0.2)
+        << method_info(method).name << " " << fine << " " << finer;
   }
 }
 

@@ -20,7 +20,8 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// ---- The transient growth ------------------------------------------------------------------------
+// ---- The transient growth
+// ------------------------------------------------------------------------
 
 // sup_n |S^n|^2 is a property of the method's real step: the linear spring started from every
 // phase of its energy ellipse and run with Simulation (the method as it runs) never gains more
@@ -40,7 +41,8 @@ double largest_gain_by_runs(Method method, double w, double c, double h, int ste
     s.audit_fraction = 0.0;
     Simulation sim(spring.model, start, s);
     const double e0 = sim.energy().total();
-    for (int n = 0; n < steps && sim.step(); ++n) largest = std::max(largest, sim.energy().total() / e0);
+    for (int n = 0; n < steps && sim.step(); ++n)
+      largest = std::max(largest, sim.energy().total() / e0);
   }
   return largest;
 }
@@ -51,17 +53,18 @@ TEST(TransientGrowth, BoundsWhatTheMethodsOwnStepsGain) {
     double c, fraction;
   };
   // w = 10; damping ratios 0.1 and 1, near the limits where the step is least normal.
-  const Case cases[] = {{Method::Euler, 2.0, 0.98},          {Method::Euler, 20.0, 0.9},
-                        {Method::Midpoint, 2.0, 0.95},       {Method::Midpoint, 20.0, 0.98},
-                        {Method::ModifiedEuler, 2.0, 0.95},  {Method::ModifiedEuler, 8.0, 0.9},
-                        {Method::RK4, 2.0, 0.98},            {Method::RK4, 20.0, 0.98},
+  const Case cases[] = {{Method::Euler, 2.0, 0.98},         {Method::Euler, 20.0, 0.9},
+                        {Method::Midpoint, 2.0, 0.95},      {Method::Midpoint, 20.0, 0.98},
+                        {Method::ModifiedEuler, 2.0, 0.95}, {Method::ModifiedEuler, 8.0, 0.9},
+                        {Method::RK4, 2.0, 0.98},           {Method::RK4, 20.0, 0.98},
                         {Method::ImplicitEuler, 2.0, 0.0}};
   for (const Case& c : cases) {
     const double limit = stable_step(c.method, 10.0, c.c);
     const double h = std::isinf(limit) ? 0.5 : c.fraction * limit;
     const double g = transient_growth(c.method, c.c, 100.0, h);
     const double by_runs = largest_gain_by_runs(c.method, 10.0, c.c, h, 400);
-    SCOPED_TRACE(std::string(method_info(c.method).name) + " c = " + std::to_string(c.c) + " h = " + std::to_string(h));
+    SCOPED_TRACE(std::string(method_info(c.method).name) + " c = " + std::to_string(c.c) +
+                 " h = " + std::to_string(h));
     ASSERT_TRUE(std::isfinite(g));
     EXPECT_LE(by_runs, g * (1.0 + 1e-9));  // never more than the bound
     if (g > 1.01) {
@@ -72,20 +75,25 @@ TEST(TransientGrowth, BoundsWhatTheMethodsOwnStepsGain) {
   // damped mode (its linearised solve is exact on a linear spring).
   EXPECT_NEAR(transient_growth(Method::ImplicitEuler, 2.0, 100.0, 0.05), 1.0, 1e-4);
   // Critical damping near midpoint's limit: a thousandfold (a Jordan block's n rho^n).
-  EXPECT_GT(transient_growth(Method::Midpoint, 20.0, 100.0, 0.98 * stable_step(Method::Midpoint, 10.0, 20.0)), 500.0);
+  EXPECT_GT(transient_growth(Method::Midpoint, 20.0, 100.0,
+                             0.98 * stable_step(Method::Midpoint, 10.0, 20.0)),
+            500.0);
   // Past a limit the mode grows: no bound.
   EXPECT_TRUE(std::isinf(transient_growth(Method::Euler, 2.0, 100.0, 1.01 * 0.02)));
-  EXPECT_TRUE(std::isinf(transient_growth(Method::Euler, 0.0, 100.0, 1e-4)));  // undamped: never stable
-  EXPECT_EQ(transient_growth(Method::RK4, 3.0, 0.0, 0.1), 1.0);                   // a drag-only decay
+  EXPECT_TRUE(
+      std::isinf(transient_growth(Method::Euler, 0.0, 100.0, 1e-4)));  // undamped: never stable
+  EXPECT_EQ(transient_growth(Method::RK4, 3.0, 0.0, 0.1), 1.0);        // a drag-only decay
 }
 
-// ---- The energy's lower bound --------------------------------------------------------------------
+// ---- The energy's lower bound
+// --------------------------------------------------------------------
 
 TEST(LowestEnergy, IsTheBalanceForHeldPartsAndTheFloorForFreeOnes) {
   // A hanging rope: its equilibrium's energy, below every state it passes through.
   const Scene rope = test::shipped("rope");
   const StabilityAnalysis hanging(rope.model, rope.state);
-  EXPECT_NEAR(hanging.lowest_energy(), energy(rope.model, equilibrium(rope.model, rope.state)).total(), 1e-9);
+  EXPECT_NEAR(hanging.lowest_energy(),
+              energy(rope.model, equilibrium(rope.model, rope.state)).total(), 1e-9);
   Simulation sim = test::simulation(rope, Method::RK4, 1e-3);
   for (int k = 0; k < 3000; ++k) {
     sim.step();
@@ -97,7 +105,8 @@ TEST(LowestEnergy, IsTheBalanceForHeldPartsAndTheFloorForFreeOnes) {
   const StabilityAnalysis box(jelly.model, jelly.state);
   double floor = 0.0;
   for (int i = 0; i < jelly.model.particle_count(); ++i)
-    floor += jelly.model.mass[i] * 9.81 * (jelly.model.planes.front().point.y() + jelly.model.particle_radius);
+    floor += jelly.model.mass[i] * 9.81 *
+             (jelly.model.planes.front().point.y() + jelly.model.particle_radius);
   EXPECT_NEAR(box.lowest_energy(), floor, 1e-9 * std::abs(floor) + 1e-12);
   // The same box with no floor can fall forever: no bound.
   Scene falling = jelly;
@@ -105,12 +114,15 @@ TEST(LowestEnergy, IsTheBalanceForHeldPartsAndTheFloorForFreeOnes) {
   EXPECT_EQ(StabilityAnalysis(falling.model, falling.state).lowest_energy(), -kInf);
 }
 
-// ---- The rule, on made-up sequences ---------------------------------------------------------------
+// ---- The rule, on made-up sequences
+// ---------------------------------------------------------------
 
 // Feeds N(t) (and E = N + 10) at 100 checks a second for `seconds`; returns the finding.
 template <typename Net>
-std::optional<EnergyAudit::Finding> feed(EnergyAudit& audit, const EnergyAudit::Allowance& allowance, double seconds,
-                                         const Net& net, double floor = 1e-3, double* found_at = nullptr) {
+std::optional<EnergyAudit::Finding> feed(EnergyAudit& audit,
+                                         const EnergyAudit::Allowance& allowance, double seconds,
+                                         const Net& net, double floor = 1e-3,
+                                         double* found_at = nullptr) {
   for (int k = 1; k <= static_cast<int>(seconds * 100); ++k) {
     const double t = k / 100.0, n = net(t);
     audit.record(t, k, n, n + 10.0, floor);
@@ -126,7 +138,8 @@ std::optional<EnergyAudit::Finding> feed(EnergyAudit& audit, const EnergyAudit::
 TEST(EnergyAuditRule, FallingOrLevelEnergyIsNeverAsked) {
   EnergyAudit audit;
   for (int k = 1; k <= 1000; ++k) {
-    audit.record(k / 100.0, k, -0.01 * k + 0.5 * std::sin(k) * 1e-4, 10.0, 1e-3);  // falls, wobbling below the floor
+    audit.record(k / 100.0, k, -0.01 * k + 0.5 * std::sin(k) * 1e-4, 10.0,
+                 1e-3);  // falls, wobbling below the floor
     EXPECT_FALSE(audit.pending()) << k;
   }
 }
@@ -150,10 +163,12 @@ TEST(EnergyAuditRule, OneWindowOverIsNotEnoughTwoInARowAre) {
   // A single spike (a contact's push, say) in one window: silent. A rise that stays: found in
   // its second window, not its first.
   EnergyAudit once;
-  EXPECT_FALSE(feed(once, {1.0, 0.0}, 5.0, [](double t) { return t > 2.0 && t < 2.05 ? 1.0 : -t * 1e-3; }));
+  EXPECT_FALSE(
+      feed(once, {1.0, 0.0}, 5.0, [](double t) { return t > 2.0 && t < 2.05 ? 1.0 : -t * 1e-3; }));
   EnergyAudit stays;
   double at = 0.0;
-  ASSERT_TRUE(feed(stays, {1.0, 0.0}, 5.0, [](double t) { return t > 2.0 ? 1.0 : 0.0; }, 1e-3, &at));
+  ASSERT_TRUE(feed(
+      stays, {1.0, 0.0}, 5.0, [](double t) { return t > 2.0 ? 1.0 : 0.0; }, 1e-3, &at));
   EXPECT_GT(at, 2.0 + EnergyAudit::kWindow);
   EXPECT_LE(at, 2.0 + 3.0 * EnergyAudit::kWindow + 0.011);
 }
@@ -163,13 +178,16 @@ TEST(EnergyAuditRule, GrowthPastTheFloorIsFoundWhereNothingElseIsAllowed) {
   // counts; a compounding one (x1.01 a check from 1e-6) is found once past it, not before.
   EnergyAudit audit;
   double at = 0.0;
-  const auto f = feed(audit, {1.0, -kInf}, 10.0, [](double t) { return 1e-6 * std::pow(1.01, 100.0 * t); }, 1e-3, &at);
+  const auto f = feed(
+      audit, {1.0, -kInf}, 10.0, [](double t) { return 1e-6 * std::pow(1.01, 100.0 * t); }, 1e-3,
+      &at);
   ASSERT_TRUE(f);
   EXPECT_GT(f->rise, 1e-3);
   EXPECT_GT(at, std::log(1e3) / (100.0 * std::log(1.01)));  // when the rise passed the floor
   // With G > 1 and no lower bound the allowance is unbounded: never.
   EnergyAudit blind;
-  EXPECT_FALSE(feed(blind, {1.5, -kInf}, 10.0, [](double t) { return 1e-6 * std::pow(1.01, 100.0 * t); }));
+  EXPECT_FALSE(
+      feed(blind, {1.5, -kInf}, 10.0, [](double t) { return 1e-6 * std::pow(1.01, 100.0 * t); }));
 }
 
 TEST(EnergyAuditRule, ResetForgetsTheLows) {
@@ -186,7 +204,8 @@ TEST(EnergyAuditRule, ResetForgetsTheLows) {
   EXPECT_TRUE(kept.pending());  // without the reset, the old low makes it a rise
 }
 
-// ---- Runs that must stay silent --------------------------------------------------------------------
+// ---- Runs that must stay silent
+// --------------------------------------------------------------------
 
 struct Silence {
   bool held = true;
@@ -206,10 +225,11 @@ Silence run_for(const Scene& scene, Method method, double h, double duration) {
 }
 
 // Every fixed-step method on a single spring (k_s = 100, m = 1: w = 10), damping ratios from
-// 0.02 to 4 (critical at 1, overdamped past it), steps from 0.2 to 0.98 of the stated limit (those stable at any step: h w from 0.2 to 20),
-// 20 periods: none stops. The linear spring (rest length 0) and the shipped one (rest length 1,
-// 1 mm from rest: near critical damping RK4 and midpoint raise a mode's energy up to a
-// thousandfold before it decays, which from the shipped 5 cm would carry it through the anchor).
+// 0.02 to 4 (critical at 1, overdamped past it), steps from 0.2 to 0.98 of the stated limit (those
+// stable at any step: h w from 0.2 to 20), 20 periods: none stops. The linear spring (rest length
+// 0) and the shipped one (rest length 1, 1 mm from rest: near critical damping RK4 and midpoint
+// raise a mode's energy up to a thousandfold before it decays, which from the shipped 5 cm would
+// carry it through the anchor).
 TEST(AuditSilence, EveryStableSingleSpring) {
   const double ratios[] = {0.02, 0.05, 0.1, 0.2, 0.4, 0.7, 1.0, 1.5, 4.0};  // to overdamped
   const double fractions[] = {0.2, 0.5, 0.8, 0.9, 0.95, 0.98};
@@ -225,18 +245,24 @@ TEST(AuditSilence, EveryStableSingleSpring) {
         const double limit = analysis.limit(m).h;
         for (double f : fractions) {
           // Stable at any step (implicit Euler, the iterative rows): h w = 0.2, 2 and 20.
-          const double h = !std::isinf(limit) ? f * limit : f == 0.2 ? 0.02 : f == 0.5 ? 0.2 : f == 0.8 ? 2.0 : 0.0;
+          const double h = !std::isinf(limit) ? f * limit
+                           : f == 0.2         ? 0.02
+                           : f == 0.5         ? 0.2
+                           : f == 0.8         ? 2.0
+                                              : 0.0;
           if (!(h > 0.0)) continue;
           const Silence s = run_for(spring, m, h, 20 * 2.0 * M_PI / 10.0);
-          EXPECT_TRUE(s.held) << (linear ? "linear" : "rest length 1") << " spring, damping ratio " << zeta << ", "
-                              << method_info(m).name << " at " << f << " of " << limit << " s: " << s.said;
+          EXPECT_TRUE(s.held) << (linear ? "linear" : "rest length 1") << " spring, damping ratio "
+                              << zeta << ", " << method_info(m).name << " at " << f << " of "
+                              << limit << " s: " << s.said;
           ++runs;
         }
       }
     }
   }
   const int explicit_methods = static_cast<int>(test::explicit_fixed_step().size());
-  const int any_step = static_cast<int>(test::methods_where([](const MethodInfo& m) { return m.any_step(); }).size());
+  const int any_step = static_cast<int>(
+      test::methods_where([](const MethodInfo& m) { return m.any_step(); }).size());
   EXPECT_EQ(runs, 2 * static_cast<int>(std::size(ratios)) * (explicit_methods * 6 + any_step * 3));
 }
 
@@ -251,36 +277,42 @@ TEST(AuditSilence, TheRopeAndTheClothJustInsideTheirLimits) {
       if (m.kappa > 0.0) slowest = std::min(slowest, std::sqrt(m.kappa));
     const double duration = analysis.dense() ? 20.0 * 2.0 * M_PI / slowest : scene.duration;
     // The audited methods with a limit (the others are the divergence test's, or have none).
-    for (Method m : test::methods_where([](const MethodInfo& i) { return i.audited && !i.implicit(); })) {
+    for (Method m :
+         test::methods_where([](const MethodInfo& i) { return i.audited && !i.implicit(); })) {
       const double h = 0.9 * analysis.limit(m).h;
       const Silence s = run_for(scene, m, h, duration);
-      EXPECT_TRUE(s.held) << name << ", " << method_info(m).name << " at h = " << h << " for " << duration << " s: " << s.said;
+      EXPECT_TRUE(s.held) << name << ", " << method_info(m).name << " at h = " << h << " for "
+                          << duration << " s: " << s.said;
     }
   }
 }
 
-// ---- Runs that must be caught ------------------------------------------------------------------------
+// ---- Runs that must be caught
+// ------------------------------------------------------------------------
 
-// Past their limits by a quarter (the limits test's runs), runs whose growth nothing else catches within the scene's time
-// (the divergence test needs a millionfold): the audit does, and says it was the audit.
+// Past their limits by a quarter (the limits test's runs), runs whose growth nothing else catches
+// within the scene's time (the divergence test needs a millionfold): the audit does, and says it
+// was the audit.
 TEST(AuditCatches, GrowthTheDivergenceTestWouldMiss) {
   struct Case {
     const char* scene;
     std::vector<std::string> overrides;
     Method method;
   };
-  const Case cases[] = {{"spring", {"particles.1.position=[1.05,0,0]"}, Method::Midpoint},
-                        {"damped-spring", {"particles.1.position=[1.05,0,0]"}, Method::Euler},
-                        {"damped-spring", {"particles.1.position=[1.05,0,0]"}, Method::Midpoint},
-                        {"damped-spring", {"particles.1.position=[1.05,0,0]"}, Method::ModifiedEuler},
-                        {"cloth", {}, Method::Midpoint},
-                        {"cloth-sphere", {}, Method::Midpoint},
-                        {"cloth-sphere", {}, Method::ModifiedEuler}};
+  const Case cases[] = {
+      {"spring", {"particles.1.position=[1.05,0,0]"}, Method::Midpoint},
+      {"damped-spring", {"particles.1.position=[1.05,0,0]"}, Method::Euler},
+      {"damped-spring", {"particles.1.position=[1.05,0,0]"}, Method::Midpoint},
+      {"damped-spring", {"particles.1.position=[1.05,0,0]"}, Method::ModifiedEuler},
+      {"cloth", {}, Method::Midpoint},
+      {"cloth-sphere", {}, Method::Midpoint},
+      {"cloth-sphere", {}, Method::ModifiedEuler}};
   for (const Case& c : cases) {
     const auto t0 = std::chrono::steady_clock::now();
     const Scene scene = test::shipped(c.scene, c.overrides);
     const StabilityAnalysis analysis(scene.model, scene.state);
-    // (Unstable at any step, as undamped midpoint is: at h w_max = 0.5, as the limits test runs it.)
+    // (Unstable at any step, as undamped midpoint is: at h w_max = 0.5, as the limits test runs
+    // it.)
     const double limit = analysis.limit(c.method).h;
     const double h = limit > 0.0 ? 1.25 * limit : 0.5 / analysis.w_max();
     SimulationSettings s;
@@ -290,13 +322,16 @@ TEST(AuditCatches, GrowthTheDivergenceTestWouldMiss) {
     s.audit_fraction = 0.0;
     Simulation unaudited(scene.model, scene.state, s);
     unaudited.advance(steps);
-    std::printf("  unaudited %.3g s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-    EXPECT_FALSE(unaudited.diverged()) << c.scene << ", " << method_info(c.method).name << ": the divergence test "
-                                       << "alone catches it; the case proves nothing of the audit";
+    std::printf("  unaudited %.3g s\n",
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    EXPECT_FALSE(unaudited.diverged())
+        << c.scene << ", " << method_info(c.method).name << ": the divergence test "
+        << "alone catches it; the case proves nothing of the audit";
     s.audit_fraction = kAuditFraction;
     Simulation audited(scene.model, scene.state, s);
     audited.advance(steps);
-    std::printf("%s %s %.3g s\n", c.scene, method_info(c.method).name, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    std::printf("%s %s %.3g s\n", c.scene, method_info(c.method).name,
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     ASSERT_TRUE(audited.diverged()) << c.scene << ", " << method_info(c.method).name;
     EXPECT_TRUE(audited.divergence()->unstable) << audited.divergence()->message();
   }
@@ -322,7 +357,8 @@ TEST(AuditCatches, ExplicitEulerOnAnUndampedSpringAtAnyStep) {
     // The energy is exactly 12.5 (1 + (h w)^2)^n J after n steps: the rise from the low (the
     // first check) to where it stopped.
     const double q = 1.0 + hw * hw;
-    const double predicted = 12.5 * std::pow(q, d.audit.low_step) * (std::pow(q, d.step - d.audit.low_step) - 1.0);
+    const double predicted =
+        12.5 * std::pow(q, d.audit.low_step) * (std::pow(q, d.step - d.audit.low_step) - 1.0);
     EXPECT_NEAR(d.audit.rise, predicted, 1e-9 * predicted) << d.message();
     EXPECT_EQ(d.audit.low_step, 1);
   }

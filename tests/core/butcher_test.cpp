@@ -1,6 +1,8 @@
 // Tableaux as data (springlab/butcher.hpp), checked against mathematics: the number of rooted
 // trees, the orders of the classical tableaux, closed forms of their stability limits, R(z)
 // against the stability function computed numerically from the tableau, and bad input.
+#include "springlab/butcher.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,13 +10,12 @@
 #include <filesystem>
 #include <functional>
 #include <initializer_list>
+#include <string>
 #include <utility>
 #include <vector>
-#include <string>
 
 #include "methods/polynomial.hpp"
 #include "methods/rational.hpp"
-#include "springlab/butcher.hpp"
 #include "springlab/error.hpp"
 #include "springlab/methods.hpp"
 
@@ -23,8 +24,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path tableau_dir() { return fs::path(SPRINGLAB_SOURCE_DIR) / "assets" / "tableaux"; }
-ButcherTableau shipped(const std::string& name) { return load_tableau_file((tableau_dir() / (name + ".json")).string()); }
+fs::path tableau_dir() {
+  return fs::path(SPRINGLAB_SOURCE_DIR) / "assets" / "tableaux";
+}
+ButcherTableau shipped(const std::string& name) {
+  return load_tableau_file((tableau_dir() / (name + ".json")).string());
+}
 
 // Rooted trees with n nodes: 1, 1, 2, 4, 9, 20 (OEIS A000081), 37 up to order 6.
 TEST(Butcher, RootedTreesAreCountedAsCayleyCountedThem) {
@@ -50,7 +55,8 @@ TEST(Butcher, EntriesAreReadExactly) {
   EXPECT_EQ(parse_rational("-2"), Rational(-2));
   EXPECT_EQ(parse_rational("007"), Rational(7));  // not octal
   EXPECT_EQ(parse_rational("0.5/3"), Rational(1, 6));
-  for (const char* bad : {"", "abc", "1/0", "1/", "/2", "1e", "--1", "1.2.3", "0x10", "1e999", "sqrt(2)"})
+  for (const char* bad :
+       {"", "abc", "1/0", "1/", "/2", "1e", "--1", "1.2.3", "0x10", "1e999", "sqrt(2)"})
     EXPECT_FALSE(parse_rational(bad)) << bad;
   // A JSON number is read by its shortest decimal: 0.1 is 1/10, so Heun written with 0.5 is exact.
   const ButcherTableau t = parse_tableau(R"({"A": [[0], [1]], "b": [0.5, 0.5]})", "test");
@@ -86,7 +92,8 @@ TEST(Butcher, ShippedTableauxHaveTheirStatedOrders) {
 // One wrong entry drops the order, and the first failing condition is named with its two sides.
 TEST(Butcher, AWrongEntryNamesTheFirstConditionThatFails) {
   // Heun with a21 = 1/2 instead of 1: sum b_i c_i = 1/4, not 1/2.
-  const TableauAnalysis heun = analyse_tableau(parse_tableau(R"({"A": [[0], ["1/2"]], "b": ["1/2", "1/2"]})", "test"));
+  const TableauAnalysis heun =
+      analyse_tableau(parse_tableau(R"({"A": [[0], ["1/2"]], "b": ["1/2", "1/2"]})", "test"));
   EXPECT_EQ(heun.order, 1);
   ASSERT_TRUE(heun.first_failure);
   EXPECT_EQ(heun.first_failure->tree, "[t]");
@@ -95,11 +102,13 @@ TEST(Butcher, AWrongEntryNamesTheFirstConditionThatFails) {
   EXPECT_EQ(heun.first_failure->rhs, "1/2");
   // RK4 with b_4 = 1/5: even the weights' sum (the single node, order 1) fails.
   const TableauAnalysis rk4 = analyse_tableau(parse_tableau(
-      R"({"A": [[0], ["1/2"], [0, "1/2"], [0, 0, 1]], "b": ["1/6", "1/3", "1/3", "1/5"]})", "test"));
+      R"({"A": [[0], ["1/2"], [0, "1/2"], [0, 0, 1]], "b": ["1/6", "1/3", "1/3", "1/5"]})",
+      "test"));
   EXPECT_EQ(rk4.order, 0);
   EXPECT_EQ(rk4.first_failure->tree, "t");
   EXPECT_EQ(rk4.first_failure->lhs, "31/30");
-  // The classic RK4's first failure is at order 5: sum b_i a_ij a_jk a_kl c_l = 1/120 is one of them.
+  // The classic RK4's first failure is at order 5: sum b_i a_ij a_jk a_kl c_l = 1/120 is one of
+  // them.
   const TableauAnalysis classic = analyse_tableau(shipped("rk4"));
   EXPECT_EQ(classic.first_failure->order, 5);
   EXPECT_EQ(classic.first_failure->rhs, "1/5");
@@ -116,25 +125,33 @@ TEST(Butcher, AxisLimitsMatchTheirClosedForms) {
     }
     return 0.5 * (lo + hi);
   };
-  const double rk4_real = -root([](double x) { return 1.0 + x / 2 + x * x / 6 + x * x * x / 24; }, -3.0, -2.5);
-  const double ssprk3_real = -root([](double x) { return 2.0 + x + x * x / 2 + x * x * x / 6; }, -3.0, -2.0);
+  const double rk4_real =
+      -root([](double x) { return 1.0 + x / 2 + x * x / 6 + x * x * x / 24; }, -3.0, -2.5);
+  const double ssprk3_real =
+      -root([](double x) { return 2.0 + x + x * x / 2 + x * x * x / 6; }, -3.0, -2.0);
   struct Case {
     const char* name;
     double real, imaginary;
   };
   const double inf = std::numeric_limits<double>::infinity();
-  for (const Case& c : {Case{"rk4", rk4_real, 2.0 * std::sqrt(2.0)}, Case{"three-eighths", rk4_real, 2.0 * std::sqrt(2.0)},
-                        Case{"ssprk3", ssprk3_real, std::sqrt(3.0)}, Case{"kutta3", ssprk3_real, std::sqrt(3.0)},
-                        Case{"heun", 2.0, 0.0}, Case{"midpoint", 2.0, 0.0}, Case{"euler", 2.0, 0.0},
-                        Case{"implicit-euler", inf, inf}, Case{"implicit-midpoint", inf, inf},
-                        Case{"trapezoidal", inf, inf}, Case{"sdirk2", inf, inf}, Case{"sdirk3", inf, inf}}) {
+  for (const Case& c :
+       {Case{"rk4", rk4_real, 2.0 * std::sqrt(2.0)},
+        Case{"three-eighths", rk4_real, 2.0 * std::sqrt(2.0)},
+        Case{"ssprk3", ssprk3_real, std::sqrt(3.0)}, Case{"kutta3", ssprk3_real, std::sqrt(3.0)},
+        Case{"heun", 2.0, 0.0}, Case{"midpoint", 2.0, 0.0}, Case{"euler", 2.0, 0.0},
+        Case{"implicit-euler", inf, inf}, Case{"implicit-midpoint", inf, inf},
+        Case{"trapezoidal", inf, inf}, Case{"sdirk2", inf, inf}, Case{"sdirk3", inf, inf}}) {
     SCOPED_TRACE(c.name);
     const TableauAnalysis a = analyse_tableau(shipped(c.name));
     // Exact roots narrowed to 2^-64: the closed forms to their last bits.
-    if (std::isinf(c.real)) EXPECT_TRUE(std::isinf(a.real_limit));
-    else EXPECT_NEAR(a.real_limit, c.real, 4e-16 * c.real);
-    if (std::isinf(c.imaginary)) EXPECT_TRUE(std::isinf(a.imaginary_limit));
-    else EXPECT_NEAR(a.imaginary_limit, c.imaginary, 4e-16 * std::max(c.imaginary, 1.0));
+    if (std::isinf(c.real))
+      EXPECT_TRUE(std::isinf(a.real_limit));
+    else
+      EXPECT_NEAR(a.real_limit, c.real, 4e-16 * c.real);
+    if (std::isinf(c.imaginary))
+      EXPECT_TRUE(std::isinf(a.imaginary_limit));
+    else
+      EXPECT_NEAR(a.imaginary_limit, c.imaginary, 4e-16 * std::max(c.imaginary, 1.0));
   }
   EXPECT_NEAR(rk4_real, 2.785293563, 1e-8);
   EXPECT_NEAR(ssprk3_real, 2.512745327, 1e-8);
@@ -143,8 +160,8 @@ TEST(Butcher, AxisLimitsMatchTheirClosedForms) {
 // R(z) = P / Q from the exact determinants equals 1 + z b^T (I - z A)^-1 1 solved in complex
 // doubles (tableau.hpp), and R(z) - e^z = O(z^(p+1)) for a method of order p.
 TEST(Butcher, StabilityFunctionIsTheTableaus) {
-  for (const char* name : {"rk4", "dormand-prince", "fehlberg45", "implicit-midpoint", "trapezoidal", "sdirk2",
-                           "sdirk3", "bogacki-shampine"}) {
+  for (const char* name : {"rk4", "dormand-prince", "fehlberg45", "implicit-midpoint",
+                           "trapezoidal", "sdirk2", "sdirk3", "bogacki-shampine"}) {
     SCOPED_TRACE(name);
     const ButcherTableau t = shipped(name);
     const TableauAnalysis a = analyse_tableau(t);
@@ -155,23 +172,31 @@ TEST(Butcher, StabilityFunctionIsTheTableaus) {
       for (std::size_t k = a.denominator_value.size(); k-- > 0;) q = q * z + a.denominator_value[k];
       return p / q;
     };
-    for (const std::complex<double> z : {std::complex<double>(-1.3, 0.4), {0.2, -2.1}, {-3.0, 0.0}, {0.0, 1.7}})
-      EXPECT_LT(std::abs(R(z) - numeric.stability_function(z)), 1e-12 * std::max(1.0, std::abs(R(z))));
+    for (const std::complex<double> z :
+         {std::complex<double>(-1.3, 0.4), {0.2, -2.1}, {-3.0, 0.0}, {0.0, 1.7}})
+      EXPECT_LT(std::abs(R(z) - numeric.stability_function(z)),
+                1e-12 * std::max(1.0, std::abs(R(z))));
     // The local error: |R(z) - e^z| / |z|^(p+1) stays bounded as z -> 0 (ratio of two sizes ~ 1).
     const int p = a.order_to_rounding;
     const double e1 = std::abs(R(0.05) - std::exp(0.05)), e2 = std::abs(R(0.025) - std::exp(0.025));
     EXPECT_NEAR(std::log2(e1 / e2), p + 1, 0.15);
   }
-  EXPECT_EQ(stability_function_text(analyse_tableau(shipped("implicit-midpoint"))), "(1 + 1/2 z) / (1 - 1/2 z)");
-  EXPECT_EQ(stability_function_text(analyse_tableau(shipped("rk4"))), "1 + z + 1/2 z^2 + 1/6 z^3 + 1/24 z^4");
-  // The trapezoidal rule's 2 x 2 determinants share nothing to divide out, and give implicit midpoint's R.
-  EXPECT_EQ(stability_function_text(analyse_tableau(shipped("trapezoidal"))), "(1 + 1/2 z) / (1 - 1/2 z)");
+  EXPECT_EQ(stability_function_text(analyse_tableau(shipped("implicit-midpoint"))),
+            "(1 + 1/2 z) / (1 - 1/2 z)");
+  EXPECT_EQ(stability_function_text(analyse_tableau(shipped("rk4"))),
+            "1 + z + 1/2 z^2 + 1/6 z^3 + 1/24 z^4");
+  // The trapezoidal rule's 2 x 2 determinants share nothing to divide out, and give implicit
+  // midpoint's R.
+  EXPECT_EQ(stability_function_text(analyse_tableau(shipped("trapezoidal"))),
+            "(1 + 1/2 z) / (1 - 1/2 z)");
 }
 
 // The built-in methods' tableaux are the shipped data.
 TEST(Butcher, BuiltInTableauxAreTheShippedOnes) {
-  const std::pair<Method, const char*> pairs[] = {{Method::Euler, "euler"}, {Method::Midpoint, "midpoint"},
-                                                  {Method::RK4, "rk4"}, {Method::ImplicitEuler, "implicit-euler"}};
+  const std::pair<Method, const char*> pairs[] = {{Method::Euler, "euler"},
+                                                  {Method::Midpoint, "midpoint"},
+                                                  {Method::RK4, "rk4"},
+                                                  {Method::ImplicitEuler, "implicit-euler"}};
   for (const auto& [method, name] : pairs) {
     SCOPED_TRACE(name);
     const Tableau* built_in = method_info(method).tableau;
@@ -198,22 +223,28 @@ TEST(Butcher, BadInputIsNamed) {
     const char* says;
   };
   for (const Case& c : {
-           Case{R"({"A": [[0], [1, 0, 0]], "b": [0.5, 0.5]})", "/A/1: row 2 of A has 3 entries: A must be square, 2 x 2"},
+           Case{R"({"A": [[0], [1, 0, 0]], "b": [0.5, 0.5]})",
+                "/A/1: row 2 of A has 3 entries: A must be square, 2 x 2"},
            Case{R"({"A": [[0], [1]], "b": [1]})", "/b: b has 1 entries but A has 2 rows"},
-           Case{R"({"A": [[0], ["1/0"]], "b": [0.5, 0.5]})", "/A/1/0: A row 2, column 1 \"1/0\" is not a number"},
+           Case{R"({"A": [[0], ["1/0"]], "b": [0.5, 0.5]})",
+                "/A/1/0: A row 2, column 1 \"1/0\" is not a number"},
            Case{R"({"A": [[0], ["x"]], "b": [0.5, 0.5]})", "write a fraction"},
            Case{R"({"A": [["1/2", "1/2"], [0, "1/2"]], "b": [0.5, 0.5]})",
-                "/A/0/1: A row 1, column 2 is 1/2, above the diagonal: a fully implicit tableau is not supported"},
-           Case{R"({"A": [[0], [1]], "b": [0.5, null]})", "/b/1: b entry 2 must be a number, got null"},
+                "/A/0/1: A row 1, column 2 is 1/2, above the diagonal: a fully implicit tableau is "
+                "not supported"},
+           Case{R"({"A": [[0], [1]], "b": [0.5, null]})",
+                "/b/1: b entry 2 must be a number, got null"},
            Case{R"({"A": [[0], [1]]})", "/b: a tableau needs b"},
            Case{R"({"A": [], "b": []})", "/A: A must be a non-empty array"},
            Case{R"({"A": [[0], [1]], "b": [0.5, 0.5], "bhat": [1, 0]})", "did you mean \"b_hat\""},
            Case{R"({"A": [[0], [1]], "b": [0.5, 0.5], "c": [0]})", "/c: c has 1 entries"},
            Case{R"({"A": [[0], [1]], "b": ["1e999", 0.5]})", "is not a number"},
-           Case{R"({"A": [[0], [1]], "b": [0.5, 0.5], "embedded_order": 1})", "embedded_order needs b_hat"},
+           Case{R"({"A": [[0], [1]], "b": [0.5, 0.5], "embedded_order": 1})",
+                "embedded_order needs b_hat"},
            Case{R"([1, 2])", "a tableau must be a JSON object"},
            Case{R"({"A": [["1/2"], [0, "-1/2"]], "b": [0.5, 0.5]})",
-                "/A/1/1: A row 2, column 2 is -1/2: a negative diagonal entry puts a pole of R(z) at z = -2 on the "
+                "/A/1/1: A row 2, column 2 is -1/2: a negative diagonal entry puts a pole of R(z) "
+                "at z = -2 on the "
                 "negative real axis (stage 2's solve"},
        }) {
     const std::string m = message(c.json);
@@ -221,12 +252,15 @@ TEST(Butcher, BadInputIsNamed) {
     EXPECT_EQ(m.find("tableau 'mine.json'"), 0u) << m;
   }
   // c that disagrees with the row sums is a warning, not an error: the steps use A alone.
-  const TableauAnalysis shifted = analyse_tableau(parse_tableau(R"({"A": [[0], [1]], "b": [0.5, 0.5], "c": [0, "1/2"]})", "t"));
+  const TableauAnalysis shifted =
+      analyse_tableau(parse_tableau(R"({"A": [[0], [1]], "b": [0.5, 0.5], "c": [0, "1/2"]})", "t"));
   ASSERT_EQ(shifted.warnings.size(), 1u);
-  EXPECT_NE(shifted.warnings[0].find("c_2 = 1/2 is not the sum of row 2 of A (1)"), std::string::npos);
+  EXPECT_NE(shifted.warnings[0].find("c_2 = 1/2 is not the sum of row 2 of A (1)"),
+            std::string::npos);
 }
 
-// ---- Limits proven: exact roots, checked against closed forms and the numeric R ------------------
+// ---- Limits proven: exact roots, checked against closed forms and the numeric R
+// ------------------
 
 using Numeric = std::function<std::complex<double>(std::complex<double>)>;
 
@@ -249,7 +283,8 @@ TEST(Polynomial, FirstPositiveCrossingIsExact) {
   EXPECT_EQ(c.lo, Rational(4));
   EXPECT_EQ(c.hi, Rational(4));
   // (t - 1/3)^3: crosses at 1/3 (not dyadic: isolated, then narrowed).
-  c = poly::first_positive_crossing(from_roots({Rational(1, 3), Rational(1, 3), Rational(1, 3)}, 1));
+  c = poly::first_positive_crossing(
+      from_roots({Rational(1, 3), Rational(1, 3), Rational(1, 3)}, 1));
   EXPECT_LT(c.lo, Rational(1, 3));
   EXPECT_GE(c.hi, Rational(1, 3));
   EXPECT_EQ(c.at, 1.0 / 3.0);
@@ -287,7 +322,8 @@ std::string tableau_with_polynomial(const std::vector<Rational>& gamma) {
     json += "\"" + rational_text(alpha[i]) + "\"]";
   }
   json += R"(], "b": [)";
-  for (std::size_t i = 1; i <= s; ++i) json += (i > 1 ? ", \"" : "\"") + (i == s ? rational_text(gamma[1]) : "0") + "\"";
+  for (std::size_t i = 1; i <= s; ++i)
+    json += (i > 1 ? ", \"" : "\"") + (i == s ? rational_text(gamma[1]) : "0") + "\"";
   return json + "]}";
 }
 
@@ -323,13 +359,15 @@ std::vector<Rational> chebyshev_polynomial(int s, const Rational& w0, const Rati
 // complex linear solve, tableau.hpp: no part of the exact analysis), and nowhere above 1 on a dense
 // grid of the interval: an independent check that the limit is the first crossing.
 // `R` is R(z) in complex doubles (by default the tableau's, by a complex linear solve).
-void expect_limits_hold_numerically(const ButcherTableau& t, const TableauAnalysis& a, Numeric R = nullptr) {
+void expect_limits_hold_numerically(const ButcherTableau& t, const TableauAnalysis& a,
+                                    Numeric R = nullptr) {
   const Tableau numeric = t.numeric();
   if (!R) R = [&](std::complex<double> z) { return numeric.stability_function(z); };
   const auto modulus = [&](std::complex<double> z) { return std::abs(R(z)); };
   const double slack = 1e-9;  // the numeric R's rounding
-  for (const auto& [limit, direction] : {std::pair{a.real_limit, std::complex<double>(-1.0, 0.0)},
-                                         std::pair{a.imaginary_limit, std::complex<double>(0.0, 1.0)}}) {
+  for (const auto& [limit, direction] :
+       {std::pair{a.real_limit, std::complex<double>(-1.0, 0.0)},
+        std::pair{a.imaginary_limit, std::complex<double>(0.0, 1.0)}}) {
     SCOPED_TRACE(direction.real() ? "real axis" : "imaginary axis");
     if (std::isinf(limit)) {
       for (double r : {1.0, 10.0, 1e3, 1e6}) EXPECT_LE(modulus(r * direction), 1.0 + slack) << r;
@@ -339,7 +377,8 @@ void expect_limits_hold_numerically(const ButcherTableau& t, const TableauAnalys
       EXPECT_GT(modulus(0.1 * direction), 1.0);
       continue;
     }
-    for (int k = 1; k < 4000; ++k) EXPECT_LE(modulus(limit * k / 4000.0 * direction), 1.0 + slack) << k;
+    for (int k = 1; k < 4000; ++k)
+      EXPECT_LE(modulus(limit * k / 4000.0 * direction), 1.0 + slack) << k;
     EXPECT_GT(modulus(limit * (1.0 + 1e-6) * direction), 1.0);
   }
   if (t.is_explicit()) {  // a polynomial: |R| grows without bound on both axes
@@ -357,7 +396,8 @@ TEST(Butcher, ChebyshevMethodsHaveTheirDerivedRealIntervals) {
   for (int s : {10, 13, 16, 20}) {
     SCOPED_TRACE(s);
     const ButcherTableau undamped = parse_tableau(
-        tableau_with_polynomial(chebyshev_polynomial(s, Rational(1), Rational(1, s * s))), "chebyshev");
+        tableau_with_polynomial(chebyshev_polynomial(s, Rational(1), Rational(1, s * s))),
+        "chebyshev");
     const TableauAnalysis a = analyse_tableau(undamped);
     EXPECT_EQ(a.order, 1);
     EXPECT_EQ(a.real_limit, 2.0 * s * s);
@@ -368,14 +408,18 @@ TEST(Butcher, ChebyshevMethodsHaveTheirDerivedRealIntervals) {
     const Rational eps(2, 13);  // RKC's damping (Sommeijer, Shampine and Verwer 1998)
     const Rational w0 = 1 + eps / (s * s);
     // w1 = T_s(w0) / T_s'(w0), exactly from the recurrence's coefficients of T_s(w0 + z).
-    const std::vector<Rational> shifted = chebyshev_polynomial(s, w0, Rational(1));  // T_s(w0 + z) / T_s(w0)
+    const std::vector<Rational> shifted =
+        chebyshev_polynomial(s, w0, Rational(1));  // T_s(w0 + z) / T_s(w0)
     const Rational w1 = 1 / shifted[1];
-    const ButcherTableau damped = parse_tableau(tableau_with_polynomial(chebyshev_polynomial(s, w0, w1)), "rkc");
+    const ButcherTableau damped =
+        parse_tableau(tableau_with_polynomial(chebyshev_polynomial(s, w0, w1)), "rkc");
     const TableauAnalysis d = analyse_tableau(damped);
     const double x0 = static_cast<double>(w0), theta = std::acosh(x0);
-    const double closed = 2.0 * x0 * s * std::sinh(s * theta) / (std::sqrt(x0 * x0 - 1.0) * std::cosh(s * theta));
+    const double closed =
+        2.0 * x0 * s * std::sinh(s * theta) / (std::sqrt(x0 * x0 - 1.0) * std::cosh(s * theta));
     EXPECT_NEAR(d.real_limit, closed, 1e-12 * closed);
-    EXPECT_NEAR(d.real_limit, (2.0 - 4.0 / 3.0 * 2.0 / 13.0) * s * s, 0.05 * s * s);  // RKC's known (2 - 4 eps / 3) s^2
+    EXPECT_NEAR(d.real_limit, (2.0 - 4.0 / 3.0 * 2.0 / 13.0) * s * s,
+                0.05 * s * s);  // RKC's known (2 - 4 eps / 3) s^2
     EXPECT_EQ(d.imaginary_limit, 0.0);
     expect_limits_hold_numerically(damped, d, chebyshev_numeric(s, x0, static_cast<double>(w1)));
   }
@@ -385,7 +429,8 @@ TEST(Butcher, ChebyshevMethodsHaveTheirDerivedRealIntervals) {
 // order, limits finite on both axes (a polynomial R), and each the first crossing as the numeric
 // R shows; so for every shipped tableau.
 TEST(Butcher, LimitsAreTheFirstCrossingOfEveryTableau) {
-  const ButcherTableau ssp = load_tableau_file(std::string(SPRINGLAB_SOURCE_DIR) + "/tests/data/ssprk10-4.json");
+  const ButcherTableau ssp =
+      load_tableau_file(std::string(SPRINGLAB_SOURCE_DIR) + "/tests/data/ssprk10-4.json");
   const TableauAnalysis a = analyse_tableau(ssp);
   EXPECT_EQ(a.order, 4);
   EXPECT_TRUE(std::isinf(a.r_at_infinity));

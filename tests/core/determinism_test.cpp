@@ -28,7 +28,8 @@ std::uint64_t run_hash(const Scene& scene, Method method, int threads, int steps
 
 TEST(Determinism, SameRunSameBits) {
   const Scene scene = test::shipped("cloth-sphere");
-  EXPECT_EQ(run_hash(scene, Method::SymplecticEuler, 0, 300), run_hash(scene, Method::SymplecticEuler, 0, 300));
+  EXPECT_EQ(run_hash(scene, Method::SymplecticEuler, 0, 300),
+            run_hash(scene, Method::SymplecticEuler, 0, 300));
 }
 
 TEST(Determinism, ThreadCountDoesNotChangeABit) {
@@ -43,7 +44,8 @@ TEST(Determinism, ThreadCountDoesNotChangeABit) {
     EXPECT_EQ(one, three) << method_info(method).name;
   }
   // More threads than blocks (and than cores): threads with one block, or none, waiting on others.
-  EXPECT_EQ(run_hash(scene, Method::SymplecticEuler, 1, 40), run_hash(scene, Method::SymplecticEuler, 12, 40));
+  EXPECT_EQ(run_hash(scene, Method::SymplecticEuler, 1, 40),
+            run_hash(scene, Method::SymplecticEuler, 12, 40));
 }
 
 // The team hands a job only to its own helpers: after passes at 12 threads (the pool then holds 11
@@ -60,7 +62,8 @@ TEST(Determinism, AJobWakesOnlyItsOwnTeam) {
   const long team_before = threads::Team::counts().team;
   const auto two = run_hash(scene, Method::SymplecticEuler, 2, 40);
   for (int k = 0; k < 4; ++k) run_hash(large, Method::ImplicitEuler, 2, 10);
-  EXPECT_GT(threads::Team::counts().team - team_before, 100) << "the two-thread passes did not run as a team";
+  EXPECT_GT(threads::Team::counts().team - team_before, 100)
+      << "the two-thread passes did not run as a team";
   EXPECT_EQ(threads::Team::strays(), before);
   EXPECT_EQ(twelve, two);
 }
@@ -209,12 +212,14 @@ TEST(Threads, ARunWhoseOwnerStopsIsFinishedByTheOthers) {
 TEST(Threads, ARunWhoseOwnerWorksIsLeftToIt) {
   int clean = 0;
   for (int attempt = 0; attempt < 20; ++attempt) {
-    const Runs runs = run_pieces([](int p) { busy_for(std::chrono::microseconds(p < 4 ? 2000 : 3000)); });
+    const Runs runs =
+        run_pieces([](int p) { busy_for(std::chrono::microseconds(p < 4 ? 2000 : 3000)); });
     bool all_its_own = runs.helper_came;
     for (int p = 0; p < 8; ++p) all_its_own = all_its_own && runs.caller[p] == (p < 4);
     if (all_its_own && runs.stalls == 0) ++clean;
   }
-  EXPECT_GE(clean, 5) << "in 20 tries the caller took a piece of the working helper's run in " << 20 - clean;
+  EXPECT_GE(clean, 5) << "in 20 tries the caller took a piece of the working helper's run in "
+                      << 20 - clean;
 }
 
 // Called from the threads of an enclosing parallel region (each with its own buffers, as
@@ -222,10 +227,12 @@ TEST(Threads, ARunWhoseOwnerWorksIsLeftToIt) {
 // alone (a small cloth) or with a nested region of its own (a larger one).
 TEST(Determinism, ForcesInsideAnotherParallelRegionAreTheSame) {
   for (int side : {20, 48}) {
-    const Scene scene = test::shipped("cloth", {"cloth.width=" + std::to_string(side), "cloth.height=" + std::to_string(side)});
+    const Scene scene = test::shipped(
+        "cloth", {"cloth.width=" + std::to_string(side), "cloth.height=" + std::to_string(side)});
     Points expected;
     SpringForces buffer;
-    evaluate_forces(scene.model, scene.state.x, scene.state.v, expected, buffer, ForceOutput::Force);
+    evaluate_forces(scene.model, scene.state.x, scene.state.v, expected, buffer,
+                    ForceOutput::Force);
     constexpr int kThreads = 2;
     Points got[kThreads];
 #pragma omp parallel num_threads(kThreads)
@@ -266,7 +273,8 @@ TEST(Determinism, StolenBlocksGiveTheSameForces) {
   }
   set_thread_count(0);
   EXPECT_GT(buffer.plan.stolen, 0u) << "no block was stolen in " << passes << " passes";
-  EXPECT_EQ(differing, 0) << "of " << passes << " passes, " << buffer.plan.stolen << " blocks stolen";
+  EXPECT_EQ(differing, 0) << "of " << passes << " passes, " << buffer.plan.stolen
+                          << " blocks stolen";
 }
 
 TEST(Determinism, HashSeesTheSmallestChange) {

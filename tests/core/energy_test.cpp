@@ -45,7 +45,8 @@ TEST(Energy, MidpointAndRK4FollowTheirAmplification) {
   EXPECT_NEAR(energy_after(Method::RK4, h, 1000) / 12.5, rk4, 1e-9 * rk4);
   // Above RK4's limit (h w = 2.9) the same factor grows it: 1.424 a step.
   const double r4u = 1 - std::pow(2.9, 6) / 72 + std::pow(2.9, 8) / 576;
-  EXPECT_NEAR(energy_after(Method::RK4, 0.29, 20) / 12.5, std::pow(r4u, 20), 1e-9 * std::pow(r4u, 20));
+  EXPECT_NEAR(energy_after(Method::RK4, 0.29, 20) / 12.5, std::pow(r4u, 20),
+              1e-9 * std::pow(r4u, 20));
 }
 
 TEST(Energy, SymplecticEulerAndVerletStayBoundedOverAHundredThousandSteps) {
@@ -79,7 +80,8 @@ TEST(Energy, ExplicitEulerGainsAndImplicitEulerLosesOnEveryScene) {
   // grows at most 1.01^200 = 7.3 times under Euler, so nothing diverges). The change is past
   // rounding: at least 1e-12 of the energy scale.
   int scenes = 0;
-  for (const char* name : {"spring", "damped-spring", "rope", "chain", "cloth", "cloth-sphere", "jelly", "stiff"}) {
+  for (const char* name :
+       {"spring", "damped-spring", "rope", "chain", "cloth", "cloth-sphere", "jelly", "stiff"}) {
     Scene scene = test::shipped(name);
     set_damping(scene.model, 0.0);
     scene.model.drag = 0.0;
@@ -95,8 +97,10 @@ TEST(Energy, ExplicitEulerGainsAndImplicitEulerLosesOnEveryScene) {
       const double E0 = sim.energy().total();
       ASSERT_EQ(sim.advance(200), 200) << name;
       const double change = sim.energy().total() - E0, rounding = 1e-12 * sim.energy_scale();
-      if (gains) EXPECT_GT(change, rounding) << name << ", " << method_info(method).name;
-      else EXPECT_LT(change, -rounding) << name << ", " << method_info(method).name;
+      if (gains)
+        EXPECT_GT(change, rounding) << name << ", " << method_info(method).name;
+      else
+        EXPECT_LT(change, -rounding) << name << ", " << method_info(method).name;
     }
     ++scenes;
   }
@@ -195,7 +199,7 @@ TEST(Contact, SphereHoldsAParticleOnTopAndLetsItSlideOffWithoutFriction) {
   settings.dt = 1e-4;
   Simulation sim(m, pushed, settings);
   sim.advance(30000);
-  EXPECT_LT(sim.state().x(0, 1), 0.5);  // slid off round the side
+  EXPECT_LT(sim.state().x(0, 1), 0.5);                 // slid off round the side
   EXPECT_GE(sim.state().x.row(0).norm(), 1.0 - 1e-9);  // never inside
 }
 

@@ -2,11 +2,12 @@
 // (homework.hpp's OwnStep: (x, v) -> (x, v), forces from the core): each textbook step is named
 // as springlab's row, measured at its order, and its energy's rate is the row's; a step that is
 // none of them is said to be none, and never named; and a Simulation takes such a step as its own.
+#include "springlab/homework.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "springlab/homework.hpp"
 #include "springlab/simulation.hpp"
 
 namespace springlab {
@@ -22,12 +23,14 @@ Points accel(const Model& m, const Points& x, const Points& v, Workspace& ws) {
   return a;
 }
 
-const OwnStep kExplicitEuler = [](const Model& m, const State& in, State& out, double h, Workspace& ws) {
+const OwnStep kExplicitEuler = [](const Model& m, const State& in, State& out, double h,
+                                  Workspace& ws) {
   const Points a = accel(m, in.x, in.v, ws);
   out.x = in.x + h * in.v;
   out.v = in.v + h * a;
 };
-const OwnStep kVelocityVerlet = [](const Model& m, const State& in, State& out, double h, Workspace& ws) {
+const OwnStep kVelocityVerlet = [](const Model& m, const State& in, State& out, double h,
+                                   Workspace& ws) {
   const Points a = accel(m, in.x, in.v, ws);
   out.x = in.x + h * in.v + (0.5 * h * h) * a;
   const Points a1 = accel(m, out.x, in.v, ws);
@@ -51,7 +54,9 @@ const OwnStep kMadeUp = [](const Model& m, const State& in, State& out, double h
   out.x = in.x + h * in.v + (0.25 * h * h) * a;
 };
 
-std::string text(const Report& r) { return homework::format_report(r); }
+std::string text(const Report& r) {
+  return homework::format_report(r);
+}
 
 double number_after(const std::string& s, const std::string& before) {
   const std::size_t at = s.find(before);
@@ -64,7 +69,8 @@ TEST(Homework, EachTextbookStepIsNamedAsItsRowAndMeasuredAtItsOrder) {
     const char* row;
     double order;
   };
-  for (const Case& c : {Case{&kExplicitEuler, "euler", 1.0}, Case{&kVelocityVerlet, "verlet", 2.0}, Case{&kRk4, "rk4", 4.0}}) {
+  for (const Case& c : {Case{&kExplicitEuler, "euler", 1.0}, Case{&kVelocityVerlet, "verlet", 2.0},
+                        Case{&kRk4, "rk4", 4.0}}) {
     const Report r = homework::check_step(*c.step, "fn");
     const std::string t = text(r);
     EXPECT_EQ(r.euler.method, c.row) << t;
@@ -86,7 +92,8 @@ TEST(Homework, TheEnergyRateIsTheRowsOwn) {
 TEST(Homework, AStepOfNoTextbookIsNeverNamed) {
   const Report r = homework::check_step(kMadeUp, "fn");
   EXPECT_EQ(r.euler.method, "") << text(r);
-  EXPECT_NE(text(r).find("fn is none of springlab's explicit fixed-step rows"), std::string::npos) << text(r);
+  EXPECT_NE(text(r).find("fn is none of springlab's explicit fixed-step rows"), std::string::npos)
+      << text(r);
   EXPECT_GT(r.failed(), 0);
 }
 
@@ -141,7 +148,8 @@ class InProcessRope : public homework::RopeCode {
   void set_state(const homework::RopeState& state) override {
     for (std::size_t i = 0; i < state.size(); ++i) rope_.masses[i].state = state[i];
   }
-  std::vector<homework::RopeState> simulate(homework::Step step, double dt, const homework::Vec2& g, int steps) override {
+  std::vector<homework::RopeState> simulate(homework::Step step, double dt, const homework::Vec2& g,
+                                            int steps) override {
     std::vector<homework::RopeState> out;
     for (int n = 0; n < steps; ++n) {
       for (const homework::BuiltSpring& s : rope_.springs) {
@@ -180,7 +188,8 @@ class InProcessRope : public homework::RopeCode {
 };
 
 // springlab's own constructor builds the rope the construction check asks for; code that brings
-// only the steps (the browser's) has its construction said to be springlab's, and its steps checked.
+// only the steps (the browser's) has its construction said to be springlab's, and its steps
+// checked.
 TEST(Homework, TheExercisesRopeIsBuiltAsAskedAndStepsAloneAreCheckedAlone) {
   InProcessRope whole(true);
   const Report r = homework::check_rope(whole);
@@ -188,7 +197,8 @@ TEST(Homework, TheExercisesRopeIsBuiltAsAskedAndStepsAloneAreCheckedAlone) {
   EXPECT_EQ(r.euler.method, "symplectic-euler") << text(r);
   EXPECT_EQ(r.verlet.method, "verlet") << text(r);
   ASSERT_FALSE(r.sections.empty());
-  EXPECT_EQ(r.sections[0].lines.size(), 7u) << text(r);  // three checks on each of two ropes, one for the small ones
+  EXPECT_EQ(r.sections[0].lines.size(), 7u)
+      << text(r);  // three checks on each of two ropes, one for the small ones
   InProcessRope steps(false);
   const Report s = homework::check_rope(steps);
   EXPECT_EQ(s.failed(), 0) << text(s);

@@ -3,6 +3,8 @@
 // keeps link lengths exact, stretches straight towards unreachable targets and respects joint
 // limits after every iteration; the 2-link arm's two analytic solutions (elbow up, elbow down)
 // are both found; and bad chains in a scene fail with the JSON path named.
+#include "springlab/ik.hpp"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -12,7 +14,6 @@
 
 #include "loading/ik_scene.hpp"
 #include "springlab/error.hpp"
-#include "springlab/ik.hpp"
 
 namespace springlab {
 namespace {

@@ -10,8 +10,8 @@
 
 #include "methods/implicit_euler.hpp"
 #include "methods/stage_newton.hpp"
-#include "springlab/methods.hpp"
 #include "springlab/forces.hpp"
+#include "springlab/methods.hpp"
 #include "springlab/spring_kernel.hpp"
 #include "support.hpp"
 
@@ -182,7 +182,9 @@ TEST(ImplicitEuler, TheLinearisedStepIsNotTheConvergedOneWhichVbdTendsTo) {
   const Scene scene = test::shipped("chain");
   const double h = 1.0 / 30.0;
   Simulation sim = test::simulation(scene, Method::ImplicitEuler, h);
-  const auto rms = [&](const Points& a, const Points& b) { return test::rms_over_free(scene.model, a, b); };
+  const auto rms = [&](const Points& a, const Points& b) {
+    return test::rms_over_free(scene.model, a, b);
+  };
   double worst = 0.0;
   StepSettings settings;
   settings.solver_tolerance = 1e-10;
@@ -198,11 +200,14 @@ TEST(ImplicitEuler, TheLinearisedStepIsNotTheConvergedOneWhichVbdTendsTo) {
     const double residual = test::backward_euler_residual(scene.model, start, converged, h).worst;
     double scale = 0.0;
     for (int i = 0; i < scene.model.particle_count(); ++i)
-      if (!scene.model.pinned(i)) scale = std::max(scale, scene.model.mass[i] * scene.model.gravity.norm());
+      if (!scene.model.pinned(i))
+        scale = std::max(scale, scene.model.mass[i] * scene.model.gravity.norm());
     for (int s = 0; s < scene.model.spring_count(); ++s)  // the largest tension
-      scale = std::max(scale, scene.model.ks(s) * std::abs((converged.x.row(scene.model.spring_b[s]) -
-                                                             converged.x.row(scene.model.spring_a[s])).norm() -
-                                                            scene.model.rest_length[s]));
+      scale =
+          std::max(scale, scene.model.ks(s) * std::abs((converged.x.row(scene.model.spring_b[s]) -
+                                                        converged.x.row(scene.model.spring_a[s]))
+                                                           .norm() -
+                                                       scene.model.rest_length[s]));
     ASSERT_LE(residual, 1e-9 * h * scale) << "step " << k;
     worst = std::max(worst, rms(linearised.x, converged.x) / rms(converged.x, start.x));
     if (k == 100) {  // VBD to convergence from the same state: the converged step
@@ -225,8 +230,10 @@ TEST(ImplicitEuler, TheLinearisedStepIsNotTheConvergedOneWhichVbdTendsTo) {
 // springs, whose transverse stiffness is negative; damping, whose direction turns with the
 // springs) and on the vortex (an attractor's pull and swirl, not symmetric), to 1e-6 of |J e|.
 TEST(StageNewton, TheJacobianIsTheResidualsDerivative) {
-  for (const auto& [name, sets] : {std::pair<const char*, std::vector<std::string>>{"cloth", {"cloth.width=8", "cloth.height=8"}},
-                                   std::pair<const char*, std::vector<std::string>>{"vortex", {}}}) {
+  for (const auto& [name, sets] :
+       {std::pair<const char*, std::vector<std::string>>{"cloth",
+                                                         {"cloth.width=8", "cloth.height=8"}},
+        std::pair<const char*, std::vector<std::string>>{"vortex", {}}}) {
     SCOPED_TRACE(name);
     const Scene scene = test::shipped(name, sets);
     const Model& m = scene.model;
@@ -246,7 +253,9 @@ TEST(StageNewton, TheJacobianIsTheResidualsDerivative) {
       evaluate_forces(m, x + h * v, v, f, buffer, ForceOutput::Force);
       Eigen::VectorXd g(3 * n);
       for (int i = 0; i < n; ++i)
-        for (int c = 0; c < 3; ++c) g(3 * i + c) = m.pinned(i) ? 0.0 : m.mass[i] * (v(i, c) - scene.state.v(i, c)) - h * f(i, c);
+        for (int c = 0; c < 3; ++c)
+          g(3 * i + c) =
+              m.pinned(i) ? 0.0 : m.mass[i] * (v(i, c) - scene.state.v(i, c)) - h * f(i, c);
       return g;
     };
     const Eigen::SparseMatrix<double> J = steps::stage_jacobian(m, x + h * V, V, h);

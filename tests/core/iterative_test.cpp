@@ -2,13 +2,13 @@
 // they are: iterative solvers of the backward-Euler step. Converged, each step must satisfy the
 // step's own equations, m (v1 - v) / h = f(x1, v1), checked with the force pass (not with the
 // solvers' own arithmetic); cut short, each must still be bounded and lose energy.
+#include "methods/iterative.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
-#include "support.hpp"
-#include "methods/iterative.hpp"
 #include "springlab/cells.hpp"
 #include "springlab/energy.hpp"
 #include "springlab/forces.hpp"
@@ -16,6 +16,7 @@
 #include "springlab/methods.hpp"
 #include "springlab/solver_error.hpp"
 #include "springlab/stability.hpp"
+#include "support.hpp"
 
 namespace springlab {
 namespace {
@@ -75,7 +76,9 @@ TEST(Iterative, LocalGlobalConvergesGeometricallyAndChebyshevFaster) {
   const Scene s = moving_cloth();
   const double h = 1.0 / 30.0;
   const State exact = one_step(s, Method::LocalGlobal, h, 2000);
-  const auto distance = [&](int k, double rho) { return (one_step(s, Method::LocalGlobal, h, k, rho).x - exact.x).norm(); };
+  const auto distance = [&](int k, double rho) {
+    return (one_step(s, Method::LocalGlobal, h, k, rho).x - exact.x).norm();
+  };
   std::vector<double> e;
   for (int k = 1; k <= 40; ++k) e.push_back(distance(k, 0.0));
   const double rho = std::pow(e[39] / e[19], 1.0 / 20.0);
@@ -130,7 +133,8 @@ TEST(Iterative, SolverErrorIsMeasuredAgainstTheConvergedStep) {
     ASSERT_EQ(c.iterations.size(), 7u);  // 1, 2, 4, ..., 64
     EXPECT_LT(c.error.back(), c.error.front());
     if (c.method == Method::LocalGlobal) {
-      for (std::size_t k = 1; k < c.error.size(); ++k) EXPECT_LT(c.error[k], c.error[k - 1]) << c.iterations[k];
+      for (std::size_t k = 1; k < c.error.size(); ++k)
+        EXPECT_LT(c.error[k], c.error[k - 1]) << c.iterations[k];
     }
     if (c.method == Method::ImplicitEuler) {
       EXPECT_NEAR(c.error[6], c.error[5], 0.1 * c.error[5]);  // 64 against 32 iterations: level
@@ -196,7 +200,8 @@ TEST(Iterative, VertexColouringIsProper) {
 // (XPBD's chain at 1/30 s sags as if its k_s were 180 times smaller), and that stretch, counted
 // with k_s, is energy the step did not converge away. The gauge's effective stiffness shows it.
 TEST(Iterative, BoundedAtOneStepAFrameOnEveryScene) {
-  for (const char* name : {"spring", "damped-spring", "chain", "rope", "cloth", "cloth-sphere", "jelly", "stiff"}) {
+  for (const char* name :
+       {"spring", "damped-spring", "chain", "rope", "cloth", "cloth-sphere", "jelly", "stiff"}) {
     const Scene scene = test::shipped(name);
     for (double h : {1.0 / 60.0, 1.0 / 30.0})
       for (Method m : kIterative) {
@@ -228,11 +233,13 @@ TEST(Iterative, BoundedAtOneStepAFrameOnEveryScene) {
 // chain and a small cloth, so the chart agrees with the analysis. The probe fires where a run
 // does diverge: local-global over-relaxed past its own iteration's radius (Chebyshev's rho = 1.5).
 TEST(Iterative, RunsFindThemStableAtAnyStep) {
-  for (const Scene& scene : {test::shipped("chain"), test::shipped("cloth", {"cloth.width=8", "cloth.height=8"})}) {
+  for (const Scene& scene :
+       {test::shipped("chain"), test::shipped("cloth", {"cloth.width=8", "cloth.height=8"})}) {
     const StabilityAnalysis a(scene.model, scene.state);
     for (Method m : kIterative) {
       SCOPED_TRACE(method_info(m).name);
-      const MeasuredLimit measured = measured_limit(m, scene.model, scene.state, a.limit(m), a.w_max());
+      const MeasuredLimit measured =
+          measured_limit(m, scene.model, scene.state, a.limit(m), a.w_max());
       EXPECT_TRUE(std::isinf(measured.h)) << measured.h;
     }
   }
@@ -265,7 +272,7 @@ TEST(Cells, InvertedCellsAreCountedByTheirCornersJacobians) {
 TEST(Iterative, ALoadedBalanceOnlyWherePinsCarryTheLoad) {
   EXPECT_TRUE(loaded_balance(test::shipped("chain").model));
   EXPECT_TRUE(loaded_balance(test::shipped("cloth").model));
-  EXPECT_FALSE(loaded_balance(test::shipped("jelly").model));  // on its ground
+  EXPECT_FALSE(loaded_balance(test::shipped("jelly").model));                       // on its ground
   EXPECT_FALSE(loaded_balance(test::shipped("cloth", {"cloth.pinned=[]"}).model));  // falls freely
   EXPECT_FALSE(loaded_balance(test::shipped("chain", {"gravity=[0,0,0]"}).model));  // no load
 }

@@ -5,11 +5,12 @@
 //
 // Runs are as the scene ships, for its duration, within a budget of work (a 1000-node rope under
 // explicit Euler at 2e-6 s would take 5 million steps: the test runs as much of it as the budget
-// allows, and says so, the energy audit's windows shortened to look six times within it; scripts/limits.sh runs them all to the end, in about an hour). The two single springs are
-// run at a tenth of their shipped amplitude: the limit is that of small motions, and near the
-// limits of symplectic Euler and RK4 the numerical orbit of the shipped one (half the rest length)
-// passes through the anchor into the spring's other well, where RK4 even keeps up a limit cycle
-// against the damping, which the audit rightly reports (Stability.TheAuditCatches... tests).
+// allows, and says so, the energy audit's windows shortened to look six times within it;
+// scripts/limits.sh runs them all to the end, in about an hour). The two single springs are run at
+// a tenth of their shipped amplitude: the limit is that of small motions, and near the limits of
+// symplectic Euler and RK4 the numerical orbit of the shipped one (half the rest length) passes
+// through the anchor into the spring's other well, where RK4 even keeps up a limit cycle against
+// the damping, which the audit rightly reports (Stability.TheAuditCatches... tests).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -58,10 +59,10 @@ double budget() {
 }
 
 struct Outcome {
-  bool held = true;  // no divergence, no instability from the audit
-  double t = 0.0;    // simulated
-  bool whole = true;  // ran the scene's whole duration
-  std::int64_t windows = 0;  // the audit's windows in the run
+  bool held = true;           // no divergence, no instability from the audit
+  double t = 0.0;             // simulated
+  bool whole = true;          // ran the scene's whole duration
+  std::int64_t windows = 0;   // the audit's windows in the run
   std::int64_t possible = 0;  // as many as the run had room for (8 checks each at least)
   std::string said;
 };
@@ -69,7 +70,8 @@ struct Outcome {
 // A run as long as the scene's duration, or as the budget allows; the audit's windows as short as
 // needed for at least six of them in it (a run the budget cuts to 0.07 s of simulated time, shorter
 // than the audit's own 0.25 s windows, would otherwise hold without the audit ever looking).
-Outcome run(const Scene& scene, Method method, double h, const std::shared_ptr<const StabilityAnalysis>& analysis) {
+Outcome run(const Scene& scene, Method method, double h,
+            const std::shared_ptr<const StabilityAnalysis>& analysis) {
   const double evals = method == Method::Midpoint ? 2 : method == Method::RK4 ? 4 : 1;
   const double size = scene.model.particle_count() + scene.model.spring_count();
   const auto wanted = static_cast<std::int64_t>(std::ceil(scene.duration / h));
@@ -80,7 +82,8 @@ Outcome run(const Scene& scene, Method method, double h, const std::shared_ptr<c
   s.dt = h;
   s.audit_window = std::min(EnergyAudit::kWindow, steps * h / 6.0);
   Simulation sim(scene.model, scene.state, s);
-  sim.set_stability(analysis);  // the scene's, made once (the audit asks for it when a window rises)
+  sim.set_stability(
+      analysis);  // the scene's, made once (the audit asks for it when a window rises)
   Outcome o;
   o.whole = wanted <= allowed;
   sim.advance(steps);
@@ -96,7 +99,8 @@ Outcome run(const Scene& scene, Method method, double h, const std::shared_ptr<c
 // The growth of the limiting mode at h in the linear regime: the scene at its equilibrium pushed
 // a little along the mode, stepped n times; the mode's amplitude (the displacement projected on
 // the mode's shape, mass-weighted: the other modes hardly show in it) against rho^n.
-double measured_growth_rate(const Scene& scene, Method method, const LimitingMode& mode, double h, int n) {
+double measured_growth_rate(const Scene& scene, Method method, const LimitingMode& mode, double h,
+                            int n) {
   SimulationSettings s;
   s.method = method;
   s.dt = h;
@@ -107,11 +111,13 @@ double measured_growth_rate(const Scene& scene, Method method, const LimitingMod
   const State rest = equilibrium(model, scene.state);
   State pushed = rest;
   double size = 0.0;
-  for (int c = 0; c < 3; ++c) size = std::max(size, rest.x.col(c).maxCoeff() - rest.x.col(c).minCoeff());
+  for (int c = 0; c < 3; ++c)
+    size = std::max(size, rest.x.col(c).maxCoeff() - rest.x.col(c).minCoeff());
   pushed.x += (1e-6 * std::max(size, 1e-3)) * mode.shape;
   Simulation sim(model, pushed, s);
   double norm = 0.0;
-  for (int i = 0; i < model.particle_count(); ++i) norm += model.mass[i] * mode.shape.row(i).squaredNorm();
+  for (int i = 0; i < model.particle_count(); ++i)
+    norm += model.mass[i] * mode.shape.row(i).squaredNorm();
   const auto amplitude = [&] {
     double p = 0.0;
     for (int i = 0; i < model.particle_count(); ++i)
@@ -173,7 +179,8 @@ TEST_P(Limits, HoldJustInsideAndGrowAsPredictedJustOutside) {
     // regime says the same.
     ASSERT_TRUE(limit.mode);
     const double h = 1.25 * limit.h;
-    const double rho = amplification(m, limit.mode->w, limit.mode->c, h, scene.model.verlet_damping);
+    const double rho =
+        amplification(m, limit.mode->w, limit.mode->c, h, scene.model.verlet_damping);
     const double grown = 2.0 * std::log(rho) * outside.t / h;  // ln of the energy's growth
     std::printf(", 1.25: held %.3g s%s, the mode's energy growing e^%.3g there\n", outside.t,
                 outside.whole ? "" : " (budget)", grown);

@@ -77,7 +77,9 @@ TEST(MethodTable, ARungeKuttaRowsStabilityFunctionIsEToItsOrder) {
       ASSERT_EQ(P.size(), gamma.size());
       for (std::size_t j = 0; j < P.size(); ++j) EXPECT_NEAR(P[j], gamma[j], 1e-15) << j;
     }
-    const auto at = [](const std::vector<double>& v, int j) { return j < static_cast<int>(v.size()) ? v[j] : 0.0; };
+    const auto at = [](const std::vector<double>& v, int j) {
+      return j < static_cast<int>(v.size()) ? v[j] : 0.0;
+    };
     std::vector<double> r;
     double factorial = 1.0;
     for (int j = 0; j <= m.order; ++j) {
@@ -110,7 +112,8 @@ TEST(MethodTable, AnImplicitRowIsEToItsOrderAndAStable) {
     EXPECT_NEAR(std::log2(e1 / e2), m.order + 1, 0.1);
     for (double x : {-1e3, -10.0, -1.0, -1e-3, 0.0})
       for (double y : {-1e3, -3.0, -0.5, 0.0, 0.5, 3.0, 1e3})
-        EXPECT_LE(std::abs(m.tableau->stability_function(Complex(x, y))), 1.0 + 1e-12) << x << " " << y;
+        EXPECT_LE(std::abs(m.tableau->stability_function(Complex(x, y))), 1.0 + 1e-12)
+            << x << " " << y;
   }
 }
 
@@ -137,13 +140,16 @@ TEST(MethodTable, TheStatedLimitsAreTheRowsOwn) {
       EXPECT_LE(std::abs(m.tableau->stability_function(Complex(0.0, y * (1 - 1e-9)))), 1.0 + 1e-12);
     }
     // Past it (where it is 0, never stable: just off 0, |R(i y)|^2 - 1 ~ y^2 or y^4 / 4).
-    EXPECT_GT(std::abs(m.tableau->stability_function(Complex(0.0, y > 0.0 ? y * (1 + 1e-6) : 1e-3))), 1.0);
+    EXPECT_GT(
+        std::abs(m.tableau->stability_function(Complex(0.0, y > 0.0 ? y * (1 + 1e-6) : 1e-3))),
+        1.0);
     // A closed form the row gives agrees with R(z) on damped modes (under- and overdamped).
     if (!m.mode_limit) continue;
     for (double zeta : {0.01, 0.3, 0.99, 1.5, 6.0}) {
       const double w = 10.0, c = 2.0 * zeta * w;
       const Complex root = std::sqrt(Complex(0.25 * c * c - w * w, 0.0));
-      const double from_r = std::min(runge_kutta_limit(m.id, -0.5 * c + root), runge_kutta_limit(m.id, -0.5 * c - root));
+      const double from_r = std::min(runge_kutta_limit(m.id, -0.5 * c + root),
+                                     runge_kutta_limit(m.id, -0.5 * c - root));
       EXPECT_NEAR(m.mode_limit(c, w * w, 0.0), from_r, 1e-9 * from_r) << "zeta " << zeta;
     }
   }

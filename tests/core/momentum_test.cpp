@@ -1,13 +1,14 @@
 // Momentum on a free body (momentum.hpp): what each row of the method table keeps, measured, and
 // held to what the row says (MethodInfo::momentum, angular_momentum), both ways: a row that says
 // "kept" keeps it to rounding, one that says "not kept" visibly breaks it.
+#include "springlab/momentum.hpp"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
 #include "springlab/butcher.hpp"
 #include "springlab/methods.hpp"
-#include "springlab/momentum.hpp"
 #include "support.hpp"
 
 namespace springlab {
@@ -20,12 +21,14 @@ namespace {
 // (measured: rk45 3.6e-7, every other row that does not keep it above 1e-6; those that keep it
 // 1e-12 at most, P 1e-11 at most).
 Scene free_cloth() {
-  Scene s = test::shipped("cloth", {"cloth.width=8", "cloth.height=8", "cloth.pinned=[]", "gravity=[0,0,0]", "drag=0", "cloth.damping=0.5"});
+  Scene s = test::shipped("cloth", {"cloth.width=8", "cloth.height=8", "cloth.pinned=[]",
+                                    "gravity=[0,0,0]", "drag=0", "cloth.damping=0.5"});
   test::jitter(s.state, 0.02, 1.0, 7);
   return s;
 }
 
-MomentumChange change_over(const Scene& scene, Method method, int steps, int iterations = 0, double tolerance = 0.0) {
+MomentumChange change_over(const Scene& scene, Method method, int steps, int iterations = 0,
+                           double tolerance = 0.0) {
   // One analysis of the scene for every row (its equilibrium is the costly part).
   static std::shared_ptr<const StabilityAnalysis> analysis;
   SimulationSettings settings;
@@ -43,15 +46,20 @@ MomentumChange change_over(const Scene& scene, Method method, int steps, int ite
   sim.set_step_settings(step);
   const Momentum before = momentum(sim.model(), sim.state());
   for (int k = 0; k < steps && sim.step();) ++k;
-  EXPECT_FALSE(sim.diverged()) << method_info(method).name << ": " << sim.explain_divergence()->message();
+  EXPECT_FALSE(sim.diverged()) << method_info(method).name << ": "
+                               << sim.explain_divergence()->message();
   return momentum_change(before, momentum(sim.model(), sim.state()));
 }
 
 // Every row, the shipped tableaux' included.
 std::vector<Method> every_row() {
-  for (const auto& entry : std::filesystem::directory_iterator(std::string(SPRINGLAB_SOURCE_DIR) + "/assets/tableaux"))
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::string(SPRINGLAB_SOURCE_DIR) + "/assets/tableaux"))
     if (entry.path().extension() == ".json")
-      add_tableau_method(load_tableau_file(entry.path().string()), "tableau-" + entry.path().stem().string());  // (as the other tests name them: one row each)
+      add_tableau_method(
+          load_tableau_file(entry.path().string()),
+          "tableau-" +
+              entry.path().stem().string());  // (as the other tests name them: one row each)
   return test::methods_where([](const MethodInfo&) { return true; });
 }
 
@@ -67,9 +75,15 @@ double solver_tolerance(Method method) {
 // ToTheSolversToleranceIsThatTolerances below) and rounding (1e-15 a step) is far under.
 void expect(Kept said, double measured, const std::string& what, Method method) {
   switch (said) {
-    case Kept::Exactly: EXPECT_LE(measured, kMomentumKept) << what; break;
-    case Kept::ToSolverTolerance: EXPECT_LE(measured, 10.0 * solver_tolerance(method)) << what; break;
-    case Kept::No: EXPECT_GT(measured, 1e-7) << what; break;
+    case Kept::Exactly:
+      EXPECT_LE(measured, kMomentumKept) << what;
+      break;
+    case Kept::ToSolverTolerance:
+      EXPECT_LE(measured, 10.0 * solver_tolerance(method)) << what;
+      break;
+    case Kept::No:
+      EXPECT_GT(measured, 1e-7) << what;
+      break;
   }
 }
 
@@ -80,7 +94,8 @@ TEST(Momentum, EachRowKeepsWhatItSays) {
     const MethodInfo& m = method_info(method);
     const MomentumChange c = change_over(scene, method, 30);
     expect(m.momentum, c.linear, std::string(m.name) + ": P " + kept_text(m.momentum), method);
-    expect(m.angular_momentum, c.angular, std::string(m.name) + ": L " + kept_text(m.angular_momentum), method);
+    expect(m.angular_momentum, c.angular,
+           std::string(m.name) + ": L " + kept_text(m.angular_momentum), method);
     // A row with a solver that says "not kept" breaks it even solved to 1e-10: its loss is the
     // method's, not its solver's tolerance.
     if (m.implicit() && (m.momentum == Kept::No || m.angular_momentum == Kept::No)) {
@@ -129,7 +144,8 @@ TEST(Momentum, ToTheSolversToleranceIsThatTolerances) {
 // rule, RK4 and implicit Euler are not.
 TEST(Momentum, SymplecticTableauxByCoopersCondition) {
   const auto shipped = [](const std::string& name) {
-    return analyse_tableau(load_tableau_file(std::string(SPRINGLAB_SOURCE_DIR) + "/assets/tableaux/" + name + ".json"));
+    return analyse_tableau(load_tableau_file(std::string(SPRINGLAB_SOURCE_DIR) +
+                                             "/assets/tableaux/" + name + ".json"));
   };
   EXPECT_TRUE(shipped("implicit-midpoint").symplectic);
   EXPECT_FALSE(shipped("trapezoidal").symplectic);
@@ -140,10 +156,12 @@ TEST(Momentum, SymplecticTableauxByCoopersCondition) {
 
 // Where an outside force acts, momentum is no constant, and free_body() says so.
 TEST(Momentum, OnlyAFreeBodyIsFree) {
-  EXPECT_FALSE(free_body(test::shipped("cloth").model));                                    // pinned, gravity
-  EXPECT_FALSE(free_body(test::shipped("cloth", {"cloth.pinned=[]", "drag=0"}).model));     // gravity
-  EXPECT_FALSE(free_body(test::shipped("jelly", {"gravity=[0,0,0]", "drag=0"}).model));     // the ground
-  EXPECT_TRUE(free_body(test::shipped("jelly", {"gravity=[0,0,0]", "drag=0", "colliders=[]"}).model));
+  EXPECT_FALSE(free_body(test::shipped("cloth").model));  // pinned, gravity
+  EXPECT_FALSE(free_body(test::shipped("cloth", {"cloth.pinned=[]", "drag=0"}).model));  // gravity
+  EXPECT_FALSE(
+      free_body(test::shipped("jelly", {"gravity=[0,0,0]", "drag=0"}).model));  // the ground
+  EXPECT_TRUE(
+      free_body(test::shipped("jelly", {"gravity=[0,0,0]", "drag=0", "colliders=[]"}).model));
 }
 
 }  // namespace

@@ -15,8 +15,11 @@ namespace springlab {
 namespace {
 
 // A scene of one emitter (its fields as JSON text) and the rest of the top level.
-Scene emitter_scene(const std::string& emitter, const std::string& rest = R"("gravity": [0, -9.81, 0])") {
-  return parse_scene(R"({"emitters": [{"name": "e", "position": [0, 1, 0], )" + emitter + "}], " + rest + "}", "test.json");
+Scene emitter_scene(const std::string& emitter,
+                    const std::string& rest = R"("gravity": [0, -9.81, 0])") {
+  return parse_scene(
+      R"({"emitters": [{"name": "e", "position": [0, 1, 0], )" + emitter + "}], " + rest + "}",
+      "test.json");
 }
 
 Simulation run(const Scene& scene, Method method, double dt, std::int64_t steps) {
@@ -66,7 +69,8 @@ TEST(Emission, FreeFlightFollowsTheParabolaEvenWhenBornBetweenSteps) {
   // One particle, due at t_b = 0.013 s (between steps of 0.01 s), thrown at 5 m/s along
   // (1, 2, 0) / sqrt(5). Midpoint and RK4 are exact for a constant acceleration, and its birth
   // places it on the parabola at the next step, so it stays on it.
-  const Scene s = emitter_scene(R"("rate": 1e-3, "start": 0.013, "speed": 5, "direction": [1, 2, 0], "lifetime": 100, "max": 1)");
+  const Scene s = emitter_scene(
+      R"("rate": 1e-3, "start": 0.013, "speed": 5, "direction": [1, 2, 0], "lifetime": 100, "max": 1)");
   for (Method m : {Method::Midpoint, Method::RK4}) {
     const Simulation sim = run(s, m, 0.01, 100);
     ASSERT_EQ(sim.emission().alive_count(), 1);
@@ -80,8 +84,9 @@ TEST(Emission, FreeFlightFollowsTheParabolaEvenWhenBornBetweenSteps) {
 }
 
 TEST(Emission, DirectionsFillTheirConeAndSpeedsTheirRange) {
-  const Scene s = emitter_scene(R"("rate": 1000, "speed": 4, "speed_spread": 1, "direction": [0, 0, 1], "spread": 30, "lifetime": 10, "max": 1000)",
-                                R"("gravity": [0, 0, 0])");
+  const Scene s = emitter_scene(
+      R"("rate": 1000, "speed": 4, "speed_spread": 1, "direction": [0, 0, 1], "spread": 30, "lifetime": 10, "max": 1000)",
+      R"("gravity": [0, 0, 0])");
   const Simulation sim = run(s, Method::SymplecticEuler, 0.001, 999);
   ASSERT_EQ(sim.emission().alive_count(), 1000);
   double widest = 0.0, mean_cos = 0.0;
@@ -173,7 +178,8 @@ TEST(Fields, AnOrbitKeepsItsEnergyAndItsPeriod) {
   // A circular orbit of radius 1 about a pull of strength 4 (softening negligible): speed 2,
   // period pi. RK4 at h = T / 400 keeps the energy to 1e-9 and comes back to its start.
   const Scene s = parse_scene(R"({"particles": [{"position": [1, 0, 0], "velocity": [0, 0, -2]}],
-      "attractors": [{"center": [0, 0, 0], "strength": 4, "softening": 1e-9}]})", "orbit.json");
+      "attractors": [{"center": [0, 0, 0], "strength": 4, "softening": 1e-9}]})",
+                              "orbit.json");
   Simulation sim = test::simulation(s, Method::RK4, std::numbers::pi / 400);
   const double e0 = sim.energy().total();
   EXPECT_NEAR(e0, 0.5 * 4 - 4.0, 1e-9);  // m v^2 / 2 - m S / r
@@ -184,7 +190,8 @@ TEST(Fields, AnOrbitKeepsItsEnergyAndItsPeriod) {
 
 TEST(Fields, ADragInAWindTendsToTheWindsVelocity) {
   // m v' = -k (v - w): v(t) = w + (v0 - w) exp(-k t / m). m = 1, k = 2, w = (3, 0, 1), v0 = 0.
-  const Scene s = parse_scene(R"({"particles": [{"position": [0, 0, 0]}], "drag": 2, "wind": [3, 0, 1]})", "wind.json");
+  const Scene s = parse_scene(
+      R"({"particles": [{"position": [0, 0, 0]}], "drag": 2, "wind": [3, 0, 1]})", "wind.json");
   const Simulation sim = run(s, Method::RK4, 0.001, 1000);
   const Vec3 w(3, 0, 1);
   const Vec3 expected = w * (1 - std::exp(-2.0));
@@ -203,13 +210,16 @@ TEST(ParticleScenes, BadEmittersAndFieldsAreRefusedWithTheFieldNamed) {
       {e + R"(, "direction": [0, 0, 0]}]})", {"/emitters/0/direction", "must not be zero"}},
       {e + R"(, "shape": "disc"}]})", {"/emitters/0/radius", "above 0"}},
       {e + R"(, "spread": 200}]})", {"/emitters/0/spread", "[0, 180]"}},
-      {e + R"(, "lifetime": 1, "lifetime_spread": 1}]})", {"/emitters/0/lifetime_spread", "less than"}},
+      {e + R"(, "lifetime": 1, "lifetime_spread": 1}]})",
+       {"/emitters/0/lifetime_spread", "less than"}},
       {e + R"(, "colors": [[1, 2, 0]]}]})", {"/emitters/0/colors/0/1", "[0, 1]"}},
-      {e + R"(, "burst": {"count": 50, "max": 10}}]})", {"/emitters/0/burst/max", "at least one burst"}},
+      {e + R"(, "burst": {"count": 50, "max": 10}}]})",
+       {"/emitters/0/burst/max", "at least one burst"}},
       {e + R"(, "rte": 5}]})", {"/emitters/0/rte", "did you mean \"rate\""}},
       {R"({"emitters": [{"position": [0, 0, 0], "rate": -1}]})", {"/emitters/0/rate", "got -1"}},
       {R"({"particles": [{"position": [0, 0, 0]}], "wind": [1, 0, 0]})", {"/wind", "drag"}},
-      {R"({"particles": [{"position": [0, 0, 0]}], "attractors": [{"center": [0, 0, 0]}]})", {"/attractors/0", "does nothing"}},
+      {R"({"particles": [{"position": [0, 0, 0]}], "attractors": [{"center": [0, 0, 0]}]})",
+       {"/attractors/0", "does nothing"}},
       {R"({"particles": [{"position": [0, 0, 0]}], "attractors": [{"center": [0, 0, 0], "strength": 1, "softening": 0}]})",
        {"/attractors/0/softening", "got 0"}},
   };
@@ -219,7 +229,8 @@ TEST(ParticleScenes, BadEmittersAndFieldsAreRefusedWithTheFieldNamed) {
       ADD_FAILURE() << "accepted: " << c.text;
     } catch (const InputError& error) {
       for (const std::string& part : c.says)
-        EXPECT_NE(std::string(error.what()).find(part), std::string::npos) << error.what() << "\n  should say: " << part;
+        EXPECT_NE(std::string(error.what()).find(part), std::string::npos)
+            << error.what() << "\n  should say: " << part;
     }
   }
 }

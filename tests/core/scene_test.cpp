@@ -15,7 +15,8 @@ namespace {
 
 std::vector<std::string> shipped_names() {
   std::vector<std::string> names;
-  for (const auto& e : std::filesystem::directory_iterator(std::string(SPRINGLAB_SOURCE_DIR) + "/assets/scenes"))
+  for (const auto& e :
+       std::filesystem::directory_iterator(std::string(SPRINGLAB_SOURCE_DIR) + "/assets/scenes"))
     if (e.path().extension() == ".json") names.push_back(e.path().stem().string());
   std::sort(names.begin(), names.end());
   return names;
@@ -23,7 +24,8 @@ std::vector<std::string> shipped_names() {
 
 TEST(Scenes, TheShippedSetIsComplete) {
   const auto names = shipped_names();
-  for (const char* required : {"spring", "damped-spring", "rope", "chain", "cloth", "cloth-sphere", "jelly", "stiff"})
+  for (const char* required :
+       {"spring", "damped-spring", "rope", "chain", "cloth", "cloth-sphere", "jelly", "stiff"})
     EXPECT_NE(std::find(names.begin(), names.end(), required), names.end()) << required;
 }
 
@@ -33,7 +35,8 @@ TEST(Scenes, EveryShippedSceneRunsItsDefaultForThreeSeconds) {
     EXPECT_FALSE(scene.description.empty()) << name;
     Simulation sim = test::simulation(scene, scene.methods.front(), scene.dt, scene.substeps);
     const auto steps = static_cast<std::int64_t>(std::ceil(3.0 / scene.dt));
-    EXPECT_EQ(sim.advance(steps), steps) << name << ": " << (sim.diverged() ? sim.divergence()->message() : "");
+    EXPECT_EQ(sim.advance(steps), steps)
+        << name << ": " << (sim.diverged() ? sim.divergence()->message() : "");
   }
 }
 
@@ -120,7 +123,8 @@ TEST(Generators, AFinerRopeIsTheSameRope) {
 }
 
 TEST(Generators, AChainThroughAViaPointStartsAtRest) {
-  const Scene s = test::shipped("chain");  // a V: (-2, 0), (0, -1.5), (2, 0); 41 nodes, 2.5 m a side
+  const Scene s =
+      test::shipped("chain");  // a V: (-2, 0), (0, -1.5), (2, 0); 41 nodes, 2.5 m a side
   EXPECT_NEAR(s.state.x(20, 1), -1.5, 1e-12);  // the middle node is the V's corner
   EXPECT_NEAR(s.model.rest_length[0], 5.0 / 40, 1e-12);
   for (int k = 0; k < s.model.spring_count(); ++k)
@@ -138,50 +142,73 @@ std::string error_of(const std::string& text, const std::vector<std::string>& ov
 }
 
 TEST(SceneErrors, NameTheFileTheFieldAndTheAllowedRange) {
-  const std::string p = R"("particles": [{"position": [0,0,0], "pinned": true}, {"position": [1,0,0]}])";
-  struct Case { std::string text, expected; };
+  const std::string p =
+      R"("particles": [{"position": [0,0,0], "pinned": true}, {"position": [1,0,0]}])";
+  struct Case {
+    std::string text, expected;
+  };
   const Case cases[] = {
       {"{", "bad.json': not valid JSON: parse error at line 1"},
       {"[]", "bad.json': /: must be an object"},
       {R"({"particles": [{"position": [0,0,"a"]}]})", "/particles/0/position/2: must be a number"},
-      {R"({"particles": [{"position": [0,0,0], "mass": -1}]})", "/particles/0/mass: must be in [1e-09, 1e+09], got -1"},
-      {R"({"particles": [{"position": [0,0,0], "mass": 0}]})", "/particles/0/mass: must be in [1e-09, 1e+09], got 0"},
-      {R"({"particles": [{"position": [0,0,1e999]}]})", "bad.json': not valid JSON: number overflow parsing '1e999'"},
-      {"{" + p + R"(, "springs": [{"a": 0, "b": 5, "ks": 1}]})", "/springs/0/b: must be an integer in [0, 1], got 5"},
-      {"{" + p + R"(, "springs": [{"a": 1, "b": 1, "ks": 1}]})", "/springs/0/b: is the same particle as \"a\""},
+      {R"({"particles": [{"position": [0,0,0], "mass": -1}]})",
+       "/particles/0/mass: must be in [1e-09, 1e+09], got -1"},
+      {R"({"particles": [{"position": [0,0,0], "mass": 0}]})",
+       "/particles/0/mass: must be in [1e-09, 1e+09], got 0"},
+      {R"({"particles": [{"position": [0,0,1e999]}]})",
+       "bad.json': not valid JSON: number overflow parsing '1e999'"},
+      {"{" + p + R"(, "springs": [{"a": 0, "b": 5, "ks": 1}]})",
+       "/springs/0/b: must be an integer in [0, 1], got 5"},
+      {"{" + p + R"(, "springs": [{"a": 1, "b": 1, "ks": 1}]})",
+       "/springs/0/b: is the same particle as \"a\""},
       {"{" + p + R"(, "springs": [{"a": 0, "b": 1}]})", "/springs/0/ks: is required"},
-      {"{" + p + R"(, "springs": [{"a": 0, "b": 1, "ks": 1, "rest_length": -2}]})", "/springs/0/rest_length: must be in [0, 1e+09], got -2"},
+      {"{" + p + R"(, "springs": [{"a": 0, "b": 1, "ks": 1, "rest_length": -2}]})",
+       "/springs/0/rest_length: must be in [0, 1e+09], got -2"},
       {"{" + p + R"(, "dt": 0})", "/dt: must be in (0, 1], got 0"},
       {"{" + p + R"(, "dt": -0.1})", "/dt: must be in (0, 1], got -0.1"},
-      {"{" + p + R"(, "methods": ["rk5"]})", "/methods/0: unknown method \"rk5\"; did you mean \"rk4\"?"},
-      {R"({"particle": [{"position": [0,0,0]}]})", "/particle: unknown field; did you mean \"particles\"?"},
-      {"{" + p + R"(, "springs": [{"a": 0, "b": 1, "stifness": 3}]})", "/springs/0/ks: is required"},
+      {"{" + p + R"(, "methods": ["rk5"]})",
+       "/methods/0: unknown method \"rk5\"; did you mean \"rk4\"?"},
+      {R"({"particle": [{"position": [0,0,0]}]})",
+       "/particle: unknown field; did you mean \"particles\"?"},
+      {"{" + p + R"(, "springs": [{"a": 0, "b": 1, "stifness": 3}]})",
+       "/springs/0/ks: is required"},
       {"{" + p + R"(, "gravty": [0,-9.8,0]})", "/gravty: unknown field; did you mean \"gravity\"?"},
       {R"({"generators": [{"type": "rope", "start": [0,0,0], "end": [1,0,0], "nodes": 1e9, "stiffness": 1}]})",
        "/generators/0/nodes: must be an integer in [2, 4194304], got 1e+09"},
-      {"{" + p + R"(, "generators": [{"type": "cloth", "width": 2048, "height": 2048, "stretch": 1}]})",
+      {"{" + p +
+           R"(, "generators": [{"type": "cloth", "width": 2048, "height": 2048, "stretch": 1}]})",
        "/generators/0: would make the scene 4194306 particles; the limit is 4194304"},
-      {R"({"generators": [{"type": "rop"}]})", "/generators/0/type: unknown value \"rop\"; did you mean \"rope\"?"},
+      {R"({"generators": [{"type": "rop"}]})",
+       "/generators/0/type: unknown value \"rop\"; did you mean \"rope\"?"},
       {R"({"generators": [{"type": "rope", "start": [0,0,0], "end": [1,0,0], "nodes": 4, "stiffness": 1, "pinned": [7]}]})",
        "/generators/0/pinned/0: must be an integer in [-4, 3], got 7"},
-      {"{" + p + R"(, "colliders": [{"type": "plane", "normal": [0,0,0]}]})", "/colliders/0/normal: must not be zero"},
-      {"{" + p + R"(, "colliders": [{"type": "sphere", "center": [0,0,0], "radius": 0}]})", "/colliders/0/radius: must be in (0, 1e+06], got 0"},
+      {"{" + p + R"(, "colliders": [{"type": "plane", "normal": [0,0,0]}]})",
+       "/colliders/0/normal: must not be zero"},
+      {"{" + p + R"(, "colliders": [{"type": "sphere", "center": [0,0,0], "radius": 0}]})",
+       "/colliders/0/radius: must be in (0, 1e+06], got 0"},
       {R"({"particles": [{"position": [0,0,0]}, {"position": [0,0,0]}], "springs": [{"a": 0, "b": 1, "ks": 5, "rest_length": 1}]})",
        "/springs/0: its ends start at the same point"},
       {"{}", "declares no particles"},
   };
   for (const Case& c : cases) {
     const std::string message = error_of(c.text);
-    EXPECT_NE(message.find(c.expected), std::string::npos) << "expected: " << c.expected << "\n     got: " << message;
+    EXPECT_NE(message.find(c.expected), std::string::npos)
+        << "expected: " << c.expected << "\n     got: " << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << "one line: " << message;
   }
 }
 
 TEST(SceneErrors, OverridesAreCheckedLikeTheFile) {
   const std::string text = test::shipped("cloth").file;
-  EXPECT_NE(error_of(R"({"generators": [{"type": "cloth", "stretch": 1}]})", {"cloth.width=0"}).find("/generators/0/width: must be an integer in [2, 2048], got 0"), std::string::npos);
-  EXPECT_NE(error_of(R"({"generators": [{"type": "cloth", "stretch": 1}]})", {"nothing.width=3"}).find("--set nothing.width=3: scene 'bad.json' has no field 'nothing'"), std::string::npos);
-  EXPECT_NE(error_of(R"({"generators": [{"type": "cloth", "stretch": 1}]})", {"width"}).find("expected KEY=VALUE"), std::string::npos);
+  EXPECT_NE(error_of(R"({"generators": [{"type": "cloth", "stretch": 1}]})", {"cloth.width=0"})
+                .find("/generators/0/width: must be an integer in [2, 2048], got 0"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"generators": [{"type": "cloth", "stretch": 1}]})", {"nothing.width=3"})
+                .find("--set nothing.width=3: scene 'bad.json' has no field 'nothing'"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"generators": [{"type": "cloth", "stretch": 1}]})", {"width"})
+                .find("expected KEY=VALUE"),
+            std::string::npos);
   // Values: JSON, or a comma-separated list of numbers.
   const Scene s = test::shipped("rope", {"gravity=0,-1,0", "rope.nodes=5", "methods=[\"rk4\"]"});
   EXPECT_EQ(s.model.gravity, Vec3(0, -1, 0));

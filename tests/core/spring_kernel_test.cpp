@@ -1,6 +1,8 @@
 // The spring force and its Jacobians: derivatives against central finite differences, the
 // definite form's symmetry and sign, degenerate springs, and damping's indifference to rigid
 // motion.
+#include "springlab/spring_kernel.hpp"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
@@ -8,7 +10,6 @@
 #include <random>
 
 #include "springlab/forces.hpp"
-#include "springlab/spring_kernel.hpp"
 #include "support.hpp"
 
 namespace springlab {
@@ -40,10 +41,13 @@ std::vector<Config> random_configs(int count) {
 TEST(SpringKernel, ForceFollowsHookeAndDampsOnlyAlongTheSpring) {
   const Vector3d xa(0, 0, 0), xb(2, 0, 0);
   // Stretched by 1 with k_s = 10: 10 N on a towards b.
-  EXPECT_TRUE(spring_force(xa, xb, Vector3d::Zero(), Vector3d::Zero(), 10, 0, 1).isApprox(Vector3d(10, 0, 0)));
+  EXPECT_TRUE(spring_force(xa, xb, Vector3d::Zero(), Vector3d::Zero(), 10, 0, 1)
+                  .isApprox(Vector3d(10, 0, 0)));
   // b moving away at 3 m/s with k_d = 2: 6 N more on a towards b; sideways motion is not damped.
-  EXPECT_TRUE(spring_force(xa, xb, Vector3d::Zero(), Vector3d(3, 0, 0), 10, 2, 1).isApprox(Vector3d(16, 0, 0)));
-  EXPECT_TRUE(spring_force(xa, xb, Vector3d::Zero(), Vector3d(0, 3, 0), 10, 2, 1).isApprox(Vector3d(10, 0, 0)));
+  EXPECT_TRUE(spring_force(xa, xb, Vector3d::Zero(), Vector3d(3, 0, 0), 10, 2, 1)
+                  .isApprox(Vector3d(16, 0, 0)));
+  EXPECT_TRUE(spring_force(xa, xb, Vector3d::Zero(), Vector3d(0, 3, 0), 10, 2, 1)
+                  .isApprox(Vector3d(10, 0, 0)));
 }
 
 TEST(SpringKernel, JacobiansMatchFiniteDifferences) {
@@ -54,9 +58,11 @@ TEST(SpringKernel, JacobiansMatchFiniteDifferences) {
     for (int k = 0; k < 3; ++k) {
       const Vector3d e = Vector3d::Unit(k) * eps;
       fd_x.col(k) = (spring_force(c.xa, c.xb + e, c.va, c.vb, c.ks, c.kd, c.rest) -
-                     spring_force(c.xa, c.xb - e, c.va, c.vb, c.ks, c.kd, c.rest)) / (2 * eps);
+                     spring_force(c.xa, c.xb - e, c.va, c.vb, c.ks, c.kd, c.rest)) /
+                    (2 * eps);
       fd_v.col(k) = (spring_force(c.xa, c.xb, c.va, c.vb + e, c.ks, c.kd, c.rest) -
-                     spring_force(c.xa, c.xb, c.va, c.vb - e, c.ks, c.kd, c.rest)) / (2 * eps);
+                     spring_force(c.xa, c.xb, c.va, c.vb - e, c.ks, c.kd, c.rest)) /
+                    (2 * eps);
     }
     EXPECT_LT((J.dfdx - fd_x).norm(), 1e-6 * (1 + fd_x.norm())) << "rest " << c.rest;
     EXPECT_LT((J.dfdv - fd_v).norm(), 1e-6 * (1 + fd_v.norm()));
@@ -65,7 +71,8 @@ TEST(SpringKernel, JacobiansMatchFiniteDifferences) {
     for (int k = 0; k < 3; ++k) {
       const Vector3d e = Vector3d::Unit(k) * eps;
       fd_xa.col(k) = (spring_force(c.xa + e, c.xb, c.va, c.vb, c.ks, c.kd, c.rest) -
-                      spring_force(c.xa - e, c.xb, c.va, c.vb, c.ks, c.kd, c.rest)) / (2 * eps);
+                      spring_force(c.xa - e, c.xb, c.va, c.vb, c.ks, c.kd, c.rest)) /
+                     (2 * eps);
     }
     EXPECT_LT((J.dfdx + fd_xa).norm(), 1e-6 * (1 + fd_x.norm()));
   }
@@ -93,8 +100,10 @@ TEST(SpringKernel, NoStateStiffensASpringBeyondKs) {
     for (const bool definite : {false, true}) {
       const SpringJacobian J = spring_jacobian(c.xa, c.xb, c.va, c.vb, c.ks, 0.0, c.rest, definite);
       const Eigen::SelfAdjointEigenSolver<Matrix3d> eig(J.dfdx);
-      EXPECT_LE(eig.eigenvalues().maxCoeff(), c.ks * (1.0 + 1e-12)) << "rest " << c.rest << " definite " << definite;
-      EXPECT_NEAR(eig.eigenvalues().maxCoeff(), c.ks, 1e-9 * c.ks);  // along the spring: the bound is reached
+      EXPECT_LE(eig.eigenvalues().maxCoeff(), c.ks * (1.0 + 1e-12))
+          << "rest " << c.rest << " definite " << definite;
+      EXPECT_NEAR(eig.eigenvalues().maxCoeff(), c.ks,
+                  1e-9 * c.ks);  // along the spring: the bound is reached
     }
 }
 
@@ -127,7 +136,8 @@ TEST(SpringKernel, CoincidentEndsGiveNoNaN) {
     EXPECT_TRUE(J.dfdx.allFinite() && J.dfdv.allFinite());
   }
   // A zero-length spring is linear, f_a = k_s d, so its Jacobian is k_s I even at d = 0.
-  EXPECT_TRUE(spring_jacobian(p, p, v, v, 100, 0, 0.0, false).dfdx.isApprox(100 * Matrix3d::Identity()));
+  EXPECT_TRUE(
+      spring_jacobian(p, p, v, v, 100, 0, 0.0, false).dfdx.isApprox(100 * Matrix3d::Identity()));
 
   // In a simulation: two free particles on top of each other, joined by a spring.
   const Scene pair = test::coincident_pair(false, 100, 1);
@@ -143,9 +153,10 @@ TEST(SpringKernel, CoincidentEndsGiveNoNaN) {
 }
 
 // The force pass (blocks and their chunks, spans updated in place or kept for a later block,
-// neighbours as chains, partial vectors masked) against the plain sum of spring_force() over the springs, on a jelly (one block), a cloth
-// of several blocks (springs 1 to 2 x 48 particles apart), a long rope (neighbours only) and a
-// tall narrow cloth (hundreds of row spans a block, each chunk's own listed in the plan).
+// neighbours as chains, partial vectors masked) against the plain sum of spring_force() over the
+// springs, on a jelly (one block), a cloth of several blocks (springs 1 to 2 x 48 particles apart),
+// a long rope (neighbours only) and a tall narrow cloth (hundreds of row spans a block, each
+// chunk's own listed in the plan).
 TEST(SpringKernel, AssembledForcesAreTheSumOfTheKernels) {
   const Scene scenes[] = {test::shipped("jelly"),
                           test::shipped("cloth", {"cloth.width=48", "cloth.height=48"}),
@@ -163,9 +174,9 @@ TEST(SpringKernel, AssembledForcesAreTheSumOfTheKernels) {
       expected.row(i) = m.mass[i] * m.gravity.transpose() - m.drag * s.v.row(i);
     for (int k = 0; k < m.spring_count(); ++k) {
       const int a = m.spring_a[k], b = m.spring_b[k];
-      const Vector3d fa = spring_force(s.x.row(a).transpose(), s.x.row(b).transpose(),
-                                       s.v.row(a).transpose(), s.v.row(b).transpose(), m.ks(k),
-                                       m.kd(k), m.rest_length[k]);
+      const Vector3d fa =
+          spring_force(s.x.row(a).transpose(), s.x.row(b).transpose(), s.v.row(a).transpose(),
+                       s.v.row(b).transpose(), m.ks(k), m.kd(k), m.rest_length[k]);
       expected.row(a) += fa.transpose();
       expected.row(b) -= fa.transpose();
     }

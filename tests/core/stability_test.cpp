@@ -2,22 +2,23 @@
 // against each method's own step, the scene analysis against dense reference solvers built here
 // from the forces and the steps themselves, runs that hold just inside and fail just outside,
 // and the energy audit catching an instability that never blows up.
+#include "springlab/stability.hpp"
+
 #include <gtest/gtest.h>
-#include <thread>
-#include <chrono>
-#include <atomic>
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <complex>
 #include <cstdint>
 #include <string>
+#include <thread>
 #include <tuple>
 #include <vector>
 
 #include "springlab/forces.hpp"
-#include "springlab/stability.hpp"
 #include "support.hpp"
 
 namespace springlab {
@@ -36,7 +37,8 @@ TEST(ModeLimit, MatchesTheClosedForms) {
   EXPECT_TRUE(std::isinf(stable_step(Method::ImplicitEuler, w, 0.0)));
   EXPECT_TRUE(std::isnan(stable_step(Method::RK45, w, 0.0)));
   // Damped explicit Euler: stable exactly while h <= c / w^2 (k_d / k_s for a unit mass).
-  for (double c : {0.5, 2.0, 5.0}) EXPECT_NEAR(stable_step(Method::Euler, w, c), c / (w * w), 1e-12 * c / (w * w));
+  for (double c : {0.5, 2.0, 5.0})
+    EXPECT_NEAR(stable_step(Method::Euler, w, c), c / (w * w), 1e-12 * c / (w * w));
   // And the table's undamped limits agree with the computed ones.
   for (const MethodInfo& m : methods()) {
     if (!std::isfinite(m.undamped_limit)) continue;
@@ -54,13 +56,15 @@ TEST(ModeLimit, IsWhereEachMethodsOwnStepStopsBeingStable) {
       for (double d : {0.0, 0.15}) {
         if (d > 0.0 && m != Method::Verlet) continue;
         const double c = 2.0 * zeta * w, h = stable_step(m, w, c, d);
-        SCOPED_TRACE(std::string(method_info(m).name) + " zeta " + std::to_string(zeta) + " d " + std::to_string(d));
+        SCOPED_TRACE(std::string(method_info(m).name) + " zeta " + std::to_string(zeta) + " d " +
+                     std::to_string(d));
         if (h == 0.0) {
           EXPECT_GT(amplification(m, w, c, 0.1 / w, d), 1.0);
           continue;
         }
         ASSERT_TRUE(std::isfinite(h));
-        for (int k = 1; k <= 200; ++k) EXPECT_LE(amplification(m, w, c, h * k / 200.0 * (1 - 1e-9), d), 1.0 + 1e-9);
+        for (int k = 1; k <= 200; ++k)
+          EXPECT_LE(amplification(m, w, c, h * k / 200.0 * (1 - 1e-9), d), 1.0 + 1e-9);
         EXPECT_GT(amplification(m, w, c, h * (1 + 1e-5), d), 1.0);
       }
 }
@@ -71,7 +75,8 @@ TEST(ModeLimit, AmplificationFactorsAreTheKnownOnes) {
   EXPECT_NEAR(amplification(Method::Midpoint, w, 0, h), std::sqrt(1 + s * s / 4), 1e-9);
   EXPECT_NEAR(amplification(Method::ModifiedEuler, w, 0, h), std::sqrt(1 + s / 2), 1e-9);
   EXPECT_NEAR(amplification(Method::ImplicitEuler, w, 0, h), 1 / std::sqrt(1 + s), 1e-9);
-  EXPECT_NEAR(amplification(Method::RK4, w, 0, 0.29), 1.19, 0.005);  // docs/numerics.md, "The undamped oscillator"
+  EXPECT_NEAR(amplification(Method::RK4, w, 0, 0.29), 1.19,
+              0.005);  // docs/numerics.md, "The undamped oscillator"
 }
 
 // Runs `steps` steps; true if the run did not diverge (nor go numerically unstable).
@@ -175,7 +180,8 @@ TEST(Stability, TheAuditCatchesTheBuzzingRope) {
   s.dt = 9.0e-5;
   s.audit_fraction = 0.0;
   Simulation unaudited(rope.model, rope.state, s);
-  EXPECT_EQ(unaudited.advance(steps(9.0e-5)), steps(9.0e-5)) << "the divergence test catches it: no test of the audit";
+  EXPECT_EQ(unaudited.advance(steps(9.0e-5)), steps(9.0e-5))
+      << "the divergence test catches it: no test of the audit";
   Simulation past = test::simulation(rope, Method::Euler, 9.0e-5);
   past.advance(steps(9.0e-5));
   ASSERT_TRUE(past.diverged());
@@ -229,14 +235,16 @@ Eigen::MatrixXd first_order_system(const Model& model, const State& at) {
     (k < n ? m.x : m.v)(i, c) -= eps;
     accelerations(model, p.x, p.v, plus, ws);
     accelerations(model, m.x, m.v, minus, ws);
-    for (int j = 0; j < n; ++j) A(n + j, k) = (plus(q.free[j / 3], j % 3) - minus(q.free[j / 3], j % 3)) / (2 * eps);
+    for (int j = 0; j < n; ++j)
+      A(n + j, k) = (plus(q.free[j / 3], j % 3) - minus(q.free[j / 3], j % 3)) / (2 * eps);
   }
   return A;
 }
 
 std::vector<std::complex<double>> sorted(std::vector<std::complex<double>> v) {
   std::sort(v.begin(), v.end(), [](auto a, auto b) {
-    return std::abs(a.imag() - b.imag()) > 1e-9 * (std::abs(a) + 1) ? a.imag() < b.imag() : a.real() < b.real();
+    return std::abs(a.imag() - b.imag()) > 1e-9 * (std::abs(a) + 1) ? a.imag() < b.imag()
+                                                                    : a.real() < b.real();
   });
   return v;
 }
@@ -248,13 +256,18 @@ TEST(Analysis, EigenvaluesEqualADenseReferenceSolvers) {
   const StabilityAnalysis a(chain.model, chain.state);
   ASSERT_TRUE(a.dense());
   const State rest = equilibrium(chain.model, chain.state);
-  const Eigen::VectorXcd reference = Eigen::EigenSolver<Eigen::MatrixXd>(first_order_system(chain.model, rest), false).eigenvalues();
+  const Eigen::VectorXcd reference =
+      Eigen::EigenSolver<Eigen::MatrixXd>(first_order_system(chain.model, rest), false)
+          .eigenvalues();
   std::vector<std::complex<double>> ref(reference.begin(), reference.end());
-  ref.erase(std::remove_if(ref.begin(), ref.end(), [&](auto z) { return std::abs(z) <= 1e-6 * a.w_bound(); }), ref.end());
+  ref.erase(std::remove_if(ref.begin(), ref.end(),
+                           [&](auto z) { return std::abs(z) <= 1e-6 * a.w_bound(); }),
+            ref.end());
   const auto mine = sorted(a.eigenvalues());
   ref = sorted(ref);
   ASSERT_EQ(mine.size(), ref.size());
-  for (std::size_t k = 0; k < ref.size(); ++k) EXPECT_LT(std::abs(mine[k] - ref[k]), 1e-6 * std::abs(ref[k])) << k;
+  for (std::size_t k = 0; k < ref.size(); ++k)
+    EXPECT_LT(std::abs(mine[k] - ref[k]), 1e-6 * std::abs(ref[k])) << k;
 }
 
 // docs/numerics.md's oscillator, at its equilibrium (rest length): the analysis gives the closed
@@ -273,10 +286,12 @@ TEST(Analysis, TheSingleSpringHasTheClosedFormLimits) {
   const Scene damped = test::shipped("damped-spring");  // k_d = 2: c = 2
   const StabilityAnalysis a(damped.model, damped.state);
   const double c = 2.0;
-  EXPECT_NEAR(a.limit(Method::Euler).h, c / (w * w), 1e-6 * 0.02);                        // k_d / k_s
-  EXPECT_NEAR(a.limit(Method::ModifiedEuler).h, 2.0 * c / (w * w), 1e-6 * 0.04);          // 2 k_d / k_s
-  EXPECT_NEAR(a.limit(Method::SymplecticEuler).h, 4.0 / (c + std::sqrt(c * c + 4 * w * w)), 1e-6 * 0.18);
-  EXPECT_NEAR(a.limit(Method::Verlet).h, 8.0 / (4 * c + std::sqrt(16 * c * c + 16 * w * w)), 1e-6 * 0.16);
+  EXPECT_NEAR(a.limit(Method::Euler).h, c / (w * w), 1e-6 * 0.02);                // k_d / k_s
+  EXPECT_NEAR(a.limit(Method::ModifiedEuler).h, 2.0 * c / (w * w), 1e-6 * 0.04);  // 2 k_d / k_s
+  EXPECT_NEAR(a.limit(Method::SymplecticEuler).h, 4.0 / (c + std::sqrt(c * c + 4 * w * w)),
+              1e-6 * 0.18);
+  EXPECT_NEAR(a.limit(Method::Verlet).h, 8.0 / (4 * c + std::sqrt(16 * c * c + 16 * w * w)),
+              1e-6 * 0.16);
   for (Method m : kFixedStep) {
     EXPECT_TRUE(a.limit(m).exact) << method_info(m).name;
     ASSERT_TRUE(a.limit(m).mode) << method_info(m).name;
@@ -288,8 +303,9 @@ TEST(Analysis, TheSingleSpringHasTheClosedFormLimits) {
   for (Method m : {Method::Midpoint, Method::RK4}) {
     const double h = a.limit(m).h;
     const std::complex<double> z = h * lambda;
-    const std::complex<double> R = m == Method::RK4 ? 1.0 + z + z * z / 2.0 + z * z * z / 6.0 + z * z * z * z / 24.0
-                                                    : 1.0 + z + z * z / 2.0;
+    const std::complex<double> R =
+        m == Method::RK4 ? 1.0 + z + z * z / 2.0 + z * z * z / 6.0 + z * z * z * z / 24.0
+                         : 1.0 + z + z * z / 2.0;
     EXPECT_NEAR(std::abs(R), 1.0, 1e-9) << method_info(m).name;
   }
 }
@@ -297,8 +313,12 @@ TEST(Analysis, TheSingleSpringHasTheClosedFormLimits) {
 // The large scenes' path (the joint numerical range, Lanczos) on scenes small enough to solve
 // densely: equal where it says exact, never above where it gives a bound.
 TEST(Analysis, TheLargeScenePathAgreesWithTheDenseOne) {
-  for (const auto& [name, overrides] : std::vector<std::pair<std::string, std::vector<std::string>>>{
-           {"chain", {}}, {"rope", {"rope.nodes=64"}}, {"stiff", {}}, {"cloth", {"cloth.width=8", "cloth.height=8"}}}) {
+  for (const auto& [name, overrides] :
+       std::vector<std::pair<std::string, std::vector<std::string>>>{
+           {"chain", {}},
+           {"rope", {"rope.nodes=64"}},
+           {"stiff", {}},
+           {"cloth", {"cloth.width=8", "cloth.height=8"}}}) {
     const Scene s = test::shipped(name, overrides);
     const StabilityAnalysis dense(s.model, s.state), large(s.model, s.state, 0);
     ASSERT_TRUE(dense.dense() && !large.dense()) << name;
@@ -306,8 +326,10 @@ TEST(Analysis, TheLargeScenePathAgreesWithTheDenseOne) {
     for (Method m : kFixedStep) {
       const StabilityLimit &d = dense.limit(m), &l = large.limit(m);
       SCOPED_TRACE(name + " " + method_info(m).name);
-      if (d.exact && l.exact) EXPECT_NEAR(l.h, d.h, 1e-6 * d.h);
-      else EXPECT_LE(l.h, d.h * (1 + 1e-9));
+      if (d.exact && l.exact)
+        EXPECT_NEAR(l.h, d.h, 1e-6 * d.h);
+      else
+        EXPECT_LE(l.h, d.h * (1 + 1e-9));
     }
   }
 }
@@ -363,12 +385,14 @@ double step_radius(Method method, const Model& model, const State& rest, double 
   double rho = 0.0;
   const Eigen::VectorXcd mus = Eigen::EigenSolver<Eigen::MatrixXd>(J, false).eigenvalues();
   for (auto mu : mus)
-    if (std::abs(mu - 1.0) > 1e-5) rho = std::max(rho, std::abs(mu));  // neutral rigid motions sit at 1
+    if (std::abs(mu - 1.0) > 1e-5)
+      rho = std::max(rho, std::abs(mu));  // neutral rigid motions sit at 1
   return rho;
 }
 
 TEST(Analysis, PartitionedLimitsAreWhereTheStepsRadiusCrossesOne) {
-  for (const auto& [name, overrides] : std::vector<std::pair<std::string, std::vector<std::string>>>{
+  for (const auto& [name, overrides] :
+       std::vector<std::pair<std::string, std::vector<std::string>>>{
            {"rope", {"rope.nodes=8"}}, {"cloth", {"cloth.width=4", "cloth.height=4"}}}) {
     const Scene s = test::shipped(name, overrides);
     const StabilityAnalysis a(s.model, s.state);
@@ -425,7 +449,8 @@ TEST(Equilibrium, BalancesTheForcesToItsStatedTolerance) {
     const State rest = equilibrium(m, scene.state);
     ASSERT_TRUE(rest.x.allFinite());
     double strain = 0.0, weight = 0.0, total_weight = 0.0;
-    for (int s = 0; s < m.spring_count(); ++s) strain = std::max(strain, 0.01 * m.ks(s) * std::max(m.rest_length[s], 1e-3));
+    for (int s = 0; s < m.spring_count(); ++s)
+      strain = std::max(strain, 0.01 * m.ks(s) * std::max(m.rest_length[s], 1e-3));
     Points f = Points::Zero(m.particle_count(), 3);
     for (int i = 0; i < m.particle_count(); ++i) {
       f.row(i) = m.mass[i] * m.gravity.transpose();  // every particle of these is held
@@ -476,7 +501,8 @@ TEST(Equilibrium, WithNoWeightBalancesTheSpringsToTheirOwnScale) {
   const State rest = equilibrium(m, scene.state);
   ASSERT_TRUE(rest.x.allFinite());
   double strain = 0.0;
-  for (int s = 0; s < m.spring_count(); ++s) strain = std::max(strain, 0.01 * m.ks(s) * m.rest_length[s]);
+  for (int s = 0; s < m.spring_count(); ++s)
+    strain = std::max(strain, 0.01 * m.ks(s) * m.rest_length[s]);
   const auto largest_force = [&](const Points& x) {  // on a free particle, from the springs
     Points f = Points::Zero(m.particle_count(), 3);
     for (int s = 0; s < m.spring_count(); ++s) {
@@ -497,7 +523,8 @@ TEST(Equilibrium, WithNoWeightBalancesTheSpringsToTheirOwnScale) {
 }
 
 TEST(Analysis, ASceneWithNoOscillatingModesSaysSo) {
-  const StabilityAnalysis fountain(test::shipped("fountain").model, test::shipped("fountain").state);
+  const StabilityAnalysis fountain(test::shipped("fountain").model,
+                                   test::shipped("fountain").state);
   EXPECT_FALSE(fountain.oscillates());
   EXPECT_EQ(fountain.no_modes_reason(), "no springs");
   Scene pinned = test::shipped("chain");
@@ -538,7 +565,9 @@ TEST(Analysis, RunsFindTheAnalysisLimits) {
     EXPECT_LE(measured.resolution, 0.01);
     EXPECT_NEAR(measured.h, limit.h, (measured.resolution + 1e-3) * limit.h);
   }
-  EXPECT_TRUE(std::isinf(measured_limit(Method::ImplicitEuler, s.model, s.state, a.limit(Method::ImplicitEuler), a.w_max()).h));
+  EXPECT_TRUE(std::isinf(measured_limit(Method::ImplicitEuler, s.model, s.state,
+                                        a.limit(Method::ImplicitEuler), a.w_max())
+                             .h));
 }
 
 // The budget bounds the probes upwards too. Implicit Euler on a 16 x 16 cloth with a budget of
@@ -557,8 +586,8 @@ TEST(Analysis, TheBudgetBoundsTheProbesOfAMethodStableAtAnyStep) {
   // Within its budget, the same method on the damped spring: probed to h w = 1000, "always".
   const Scene spring = test::shipped("damped-spring");
   const StabilityAnalysis b(spring.model, spring.state);
-  const MeasuredLimit always =
-      measured_limit(Method::ImplicitEuler, spring.model, spring.state, b.limit(Method::ImplicitEuler), b.w_max());
+  const MeasuredLimit always = measured_limit(Method::ImplicitEuler, spring.model, spring.state,
+                                              b.limit(Method::ImplicitEuler), b.w_max());
   EXPECT_FALSE(always.at_least);
   EXPECT_TRUE(std::isinf(always.h));
 }
@@ -567,7 +596,8 @@ TEST(Analysis, TheBudgetBoundsTheProbesOfAMethodStableAtAnyStep) {
 // the exact limit on the shipped scenes with springs, for every fixed-step method; and it tells
 // (is above 0) for the methods stable without damping. How far below: printed.
 TEST(QuickLimit, IsNeverAboveTheLimit) {
-  for (const char* name : {"spring", "damped-spring", "rope", "chain", "cloth", "cloth-sphere", "jelly", "stiff"}) {
+  for (const char* name :
+       {"spring", "damped-spring", "rope", "chain", "cloth", "cloth-sphere", "jelly", "stiff"}) {
     const Scene scene = test::shipped(name);
     const StabilityAnalysis a(scene.model, scene.state);
     std::printf("  %-14s", name);
@@ -582,7 +612,8 @@ TEST(QuickLimit, IsNeverAboveTheLimit) {
       if (m == Method::SymplecticEuler || m == Method::Verlet || m == Method::RK4) {
         EXPECT_GT(quick.h, 0.0);
       }
-      if (limit.h > 0.0 && std::isfinite(limit.h)) std::printf(" %s %.2f", method_info(m).name, quick.h / limit.h);
+      if (limit.h > 0.0 && std::isfinite(limit.h))
+        std::printf(" %s %.2f", method_info(m).name, quick.h / limit.h);
     }
     std::printf("\n");
   }

@@ -5,7 +5,6 @@
 // thread count.
 #include <gtest/gtest.h>
 
-
 #include "springlab/energy.hpp"
 #include "springlab/forces.hpp"
 #include "springlab/methods.hpp"
@@ -22,7 +21,9 @@ Scene jittered(const std::string& name, const std::vector<std::string>& override
   return scene;
 }
 
-double relative(double a, double b) { return std::abs(a - b) / std::max(std::abs(b), 1e-300); }
+double relative(double a, double b) {
+  return std::abs(a - b) / std::max(std::abs(b), 1e-300);
+}
 
 TEST(StepCheck, ProbeAndPowerAreThoseOfTheStatesOnEveryBlockAndChunk) {
   const Scene scenes[] = {jittered("cloth", {"cloth.width=48", "cloth.height=48"}),

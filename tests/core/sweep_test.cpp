@@ -1,11 +1,12 @@
 // The accuracy sweep behind `springlab compare`: on the reference spring every method's measured
 // order is the table's within 0.2, its measured largest stable step the theoretical one within
 // 2 %, and the results do not depend on the number of workers.
+#include "springlab/sweep.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "springlab/sweep.hpp"
 #include "support.hpp"
 
 namespace springlab {
@@ -41,25 +42,42 @@ TEST(Sweep, TheOrderIsFittedAboveTheFloorItsErrorsShow) {
     return runs;
   };
   MethodSummary sdirk3;
-  fit_order_above_floor(runs_of({{1.996e-4, 4.93e-8}, {9.98e-5, 6.15e-9}, {6.65e-5, 1.82e-9}, {4.99e-5, 7.68e-10},
-                                 {2.85e-5, 1.44e-10}, {1.66e-5, 2.35e-11}, {9.98e-6, 9.52e-11}, {6.24e-6, 3.93e-11}}),
+  fit_order_above_floor(runs_of({{1.996e-4, 4.93e-8},
+                                 {9.98e-5, 6.15e-9},
+                                 {6.65e-5, 1.82e-9},
+                                 {4.99e-5, 7.68e-10},
+                                 {2.85e-5, 1.44e-10},
+                                 {1.66e-5, 2.35e-11},
+                                 {9.98e-6, 9.52e-11},
+                                 {6.24e-6, 3.93e-11}}),
                         Method::RK4, 1e-13, 1.0, sdirk3);
   EXPECT_NEAR(sdirk3.order, 3.0, 0.15);
   EXPECT_EQ(sdirk3.fitted_points, 6);
   EXPECT_DOUBLE_EQ(sdirk3.floor_h, 9.98e-6);
   EXPECT_DOUBLE_EQ(sdirk3.floor_error, 9.52e-11);
   MethodSummary all;
-  all.order = fitted_order(runs_of({{1.996e-4, 4.93e-8}, {9.98e-5, 6.15e-9}, {6.65e-5, 1.82e-9}, {4.99e-5, 7.68e-10},
-                                    {2.85e-5, 1.44e-10}, {1.66e-5, 2.35e-11}, {9.98e-6, 9.52e-11}, {6.24e-6, 3.93e-11}}),
+  all.order = fitted_order(runs_of({{1.996e-4, 4.93e-8},
+                                    {9.98e-5, 6.15e-9},
+                                    {6.65e-5, 1.82e-9},
+                                    {4.99e-5, 7.68e-10},
+                                    {2.85e-5, 1.44e-10},
+                                    {1.66e-5, 2.35e-11},
+                                    {9.98e-6, 9.52e-11},
+                                    {6.24e-6, 3.93e-11}}),
                            Method::RK4, 1e-13, 1.0);
   EXPECT_LT(all.order, 2.5);  // (what a fit of every point said)
   MethodSummary clean, uneven;
-  fit_order_above_floor(runs_of({{1e-2, 1e-4}, {5e-3, 2.5e-5}, {2.5e-3, 6.25e-6}, {1.25e-3, 1.5625e-6}, {6.25e-4, 3.9e-7}}),
+  fit_order_above_floor(runs_of({{1e-2, 1e-4},
+                                 {5e-3, 2.5e-5},
+                                 {2.5e-3, 6.25e-6},
+                                 {1.25e-3, 1.5625e-6},
+                                 {6.25e-4, 3.9e-7}}),
                         Method::RK4, 1e-13, 1.0, clean);
   EXPECT_NEAR(clean.order, 2.0, 1e-3);
   EXPECT_TRUE(std::isnan(clean.floor_h));
-  fit_order_above_floor(runs_of({{1e-2, 1e-4}, {5e-3, 6e-5}, {2.5e-3, 5e-6}, {1.25e-3, 3e-6}, {6.25e-4, 2e-7}}),
-                        Method::RK4, 1e-13, 1.0, uneven);
+  fit_order_above_floor(
+      runs_of({{1e-2, 1e-4}, {5e-3, 6e-5}, {2.5e-3, 5e-6}, {1.25e-3, 3e-6}, {6.25e-4, 2e-7}}),
+      Method::RK4, 1e-13, 1.0, uneven);
   EXPECT_TRUE(std::isnan(uneven.floor_h));
   EXPECT_EQ(uneven.fitted_points, 5);
 }
@@ -85,7 +103,8 @@ TEST(Sweep, OnTheSpringOrdersAndStabilityLimitsAreThoseOfNumericsMd) {
     } else if (m.theoretical_stable_h == 0.0 || std::isinf(m.theoretical_stable_h)) {
       EXPECT_EQ(m.measured_stable_h, m.theoretical_stable_h) << info.name;
     } else {
-      EXPECT_NEAR(m.measured_stable_h, m.theoretical_stable_h, 0.02 * m.theoretical_stable_h) << info.name;
+      EXPECT_NEAR(m.measured_stable_h, m.theoretical_stable_h, 0.02 * m.theoretical_stable_h)
+          << info.name;
     }
   }
   // Costs are counted: RK4 evaluates four times a step, implicit Euler solves once.
@@ -121,7 +140,8 @@ TEST(Sweep, TheNumberOfWorkersChangesNoResult) {
     EXPECT_EQ(one.runs[k].error, two.runs[k].error);
     EXPECT_EQ(one.runs[k].counters.force_evals, two.runs[k].counters.force_evals);
   }
-  for (std::size_t k = 0; k < one.drift.size(); ++k) EXPECT_EQ(one.drift[k].drift, two.drift[k].drift);
+  for (std::size_t k = 0; k < one.drift.size(); ++k)
+    EXPECT_EQ(one.drift[k].drift, two.drift[k].drift);
 }
 
 // Taken a piece at a time (SweepInSteps, the browser's app has no threads), the same sweep.
@@ -159,17 +179,21 @@ TEST(Sweep, InStepsItIsTheSameSweep) {
     EXPECT_TRUE(same(r.methods[k].order, whole.methods[k].order)) << k;
   }
   ASSERT_EQ(r.drift.size(), whole.drift.size());
-  for (std::size_t k = 0; k < r.drift.size(); ++k) EXPECT_EQ(r.drift[k].drift, whole.drift[k].drift);
+  for (std::size_t k = 0; k < r.drift.size(); ++k)
+    EXPECT_EQ(r.drift[k].drift, whole.drift[k].drift);
 }
 
 TEST(Sweep, CancelStopsItEarly) {
   const Scene spring = test::shipped("spring");
   std::atomic<bool> cancel{false};
   int seen = 0;
-  const SweepResult r = run_sweep(spring.model, spring.state, spring_settings(), [&](const SweepRun&, int done, int) {
-    seen = done;
-    if (done == 3) cancel = true;
-  }, &cancel);
+  const SweepResult r = run_sweep(
+      spring.model, spring.state, spring_settings(),
+      [&](const SweepRun&, int done, int) {
+        seen = done;
+        if (done == 3) cancel = true;
+      },
+      &cancel);
   EXPECT_TRUE(r.cancelled);
   EXPECT_LT(seen, 10);
 }

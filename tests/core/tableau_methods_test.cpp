@@ -9,11 +9,11 @@
 #include <utility>
 #include <vector>
 
-#include "support.hpp"
 #include "springlab/butcher.hpp"
 #include "springlab/energy.hpp"
 #include "springlab/error.hpp"
 #include "springlab/stability.hpp"
+#include "support.hpp"
 
 namespace springlab {
 namespace {
@@ -22,14 +22,15 @@ namespace fs = std::filesystem;
 
 // Each shipped tableau as a row of its own, named "tableau-<file>" (the built-in names are taken).
 Method row(const std::string& file) {
-  const ButcherTableau t =
-      load_tableau_file((fs::path(SPRINGLAB_SOURCE_DIR) / "assets" / "tableaux" / (file + ".json")).string());
+  const ButcherTableau t = load_tableau_file(
+      (fs::path(SPRINGLAB_SOURCE_DIR) / "assets" / "tableaux" / (file + ".json")).string());
   return add_tableau_method(t, "tableau-" + file);
 }
 
 std::vector<std::string> shipped_tableaux() {
   std::vector<std::string> names;
-  for (const auto& e : fs::directory_iterator(fs::path(SPRINGLAB_SOURCE_DIR) / "assets" / "tableaux"))
+  for (const auto& e :
+       fs::directory_iterator(fs::path(SPRINGLAB_SOURCE_DIR) / "assets" / "tableaux"))
     if (e.path().extension() == ".json") names.push_back(e.path().stem().string());
   std::sort(names.begin(), names.end());
   return names;
@@ -53,8 +54,10 @@ TEST(TableauMethods, OrderOnTheSpringIsTheConditionsOrder) {
       const double coarse = test::error_against_exact(scene, m, h, 1.0);
       const double fine = test::error_against_exact(scene, m, h / 2, 1.0);
       const double finer = test::error_against_exact(scene, m, h / 4, 1.0);
-      EXPECT_NEAR(std::log2(coarse / fine), order, 0.2) << name << " h " << h << " errors " << coarse << " " << fine;
-      EXPECT_NEAR(std::log2(fine / finer), order, 0.2) << name << " h " << h << " errors " << fine << " " << finer;
+      EXPECT_NEAR(std::log2(coarse / fine), order, 0.2)
+          << name << " h " << h << " errors " << coarse << " " << fine;
+      EXPECT_NEAR(std::log2(fine / finer), order, 0.2)
+          << name << " h " << h << " errors " << fine << " " << finer;
     }
   }
 }
@@ -89,13 +92,15 @@ TEST(TableauMethods, StatedLimitHoldsInsideAndBreaksOutside) {
       // can lie past the anchor, in the other well of k_s (|x| - 1)^2 / 2: the problem the stages
       // solve is nonlinear. The trapezoidal rule is not B-stable (Butcher's algebraic stability:
       // its M = B A + A^T B - b b^T = diag(-1/4, 1/4) is indefinite), and on this dissipative
-      // nonlinear problem it raises the energy from a low by 0.29 J in 80 s, which the audit reports;
-      // the algebraically stable ones (implicit Euler, implicit midpoint, the SDIRKs) lose it.
+      // nonlinear problem it raises the energy from a low by 0.29 J in 80 s, which the audit
+      // reports; the algebraically stable ones (implicit Euler, implicit midpoint, the SDIRKs) lose
+      // it.
       Simulation sim = test::simulation(damped, m, 100.0 / a.w_max());
       for (int k = 0; k < 2000 && !sim.diverged(); ++k) sim.advance(1);
       if (std::string(method_info(m).name) == "tableau-trapezoidal") {
         ASSERT_TRUE(sim.diverged());
-        EXPECT_NE(sim.divergence()->message().find("rose by 0.28"), std::string::npos) << sim.divergence()->message();
+        EXPECT_NE(sim.divergence()->message().find("rose by 0.28"), std::string::npos)
+            << sim.divergence()->message();
         continue;
       }
       ASSERT_FALSE(sim.diverged()) << sim.divergence()->message();
@@ -136,8 +141,9 @@ TEST(TableauMethods, ImplicitMidpointKeepsTheUndampedSpringsEnergy) {
 // DIRK stages solved to convergence (Newton's corrections, implicit_euler.hpp). With each stage
 // linearised once they would be a method of Rosenbrock type, not the tableau's.
 Scene swinging_rope(int nodes, double stiffness, double damping) {
-  return test::shipped("rope", {"rope.nodes=" + std::to_string(nodes), "rope.stiffness=" + std::to_string(stiffness),
-                                "rope.damping=" + std::to_string(damping), "drag=0"});
+  return test::shipped(
+      "rope", {"rope.nodes=" + std::to_string(nodes), "rope.stiffness=" + std::to_string(stiffness),
+               "rope.damping=" + std::to_string(damping), "drag=0"});
 }
 
 // Positions at t = T k / 8, k = 1..8, stepping h = T / steps (steps a multiple of 8).
@@ -158,7 +164,8 @@ std::vector<Points> samples(const Scene& scene, Method method, int steps, double
 
 double largest_rms(const Model& model, const std::vector<Points>& a, const std::vector<Points>& b) {
   double worst = 0.0;
-  for (std::size_t k = 0; k < a.size(); ++k) worst = std::max(worst, test::rms_over_free(model, a[k], b[k]));
+  for (std::size_t k = 0; k < a.size(); ++k)
+    worst = std::max(worst, test::rms_over_free(model, a[k], b[k]));
   return worst;
 }
 
@@ -169,8 +176,9 @@ TEST(TableauMethods, DiagonallyImplicitTableauxHaveTheirOrdersOnASwingingRope) {
   const Scene scene = swinging_rope(4, 200.0, 0.2);
   const double duration = 1.0;
   const std::vector<Points> reference = samples(scene, Method::RK4, 20000, duration);
-  for (const auto& [name, order] : {std::pair{"sdirk3", 3}, std::pair{"sdirk2", 2}, std::pair{"implicit-midpoint", 2},
-                                    std::pair{"trapezoidal", 2}, std::pair{"qin-zhang", 2}}) {
+  for (const auto& [name, order] :
+       {std::pair{"sdirk3", 3}, std::pair{"sdirk2", 2}, std::pair{"implicit-midpoint", 2},
+        std::pair{"trapezoidal", 2}, std::pair{"qin-zhang", 2}}) {
     SCOPED_TRACE(name);
     const Method m = row(name);
     std::vector<double> log_h, log_e;
@@ -185,7 +193,8 @@ TEST(TableauMethods, DiagonallyImplicitTableauxHaveTheirOrdersOnASwingingRope) {
     for (std::size_t k = 0; k < log_h.size(); ++k)
       sh += log_h[k], se += log_e[k], shh += log_h[k] * log_h[k], she += log_h[k] * log_e[k];
     const double slope = (n * she - sh * se) / (n * shh - sh * sh);
-    EXPECT_NEAR(slope, order, 0.2) << "errors " << std::exp(log_e[0]) << " .. " << std::exp(log_e.back());
+    EXPECT_NEAR(slope, order, 0.2)
+        << "errors " << std::exp(log_e[0]) << " .. " << std::exp(log_e.back());
   }
 }
 
@@ -226,10 +235,15 @@ TEST(TableauMethods, AStageThatIsNotSolvedIsSaidToBeUnsolvedNotDiverged) {
   ASSERT_TRUE(sim.diverged());
   ASSERT_TRUE(sim.divergence()->unsolved);
   const std::string message = sim.divergence()->message();
-  EXPECT_NE(message.find("stage 1 of the tableau: the equations were not solved: Newton's iteration"), std::string::npos)
+  EXPECT_NE(
+      message.find("stage 1 of the tableau: the equations were not solved: Newton's iteration"),
+      std::string::npos)
       << message;
-  EXPECT_NE(message.find("the method's own equations were not solved at this step (the state did not blow up)"),
-            std::string::npos) << message;
+  EXPECT_NE(
+      message.find(
+          "the method's own equations were not solved at this step (the state did not blow up)"),
+      std::string::npos)
+      << message;
   EXPECT_EQ(message.find("diverged"), std::string::npos) << message;
   EXPECT_GT(sim.counters().halved_steps, 0);
   EXPECT_TRUE(std::isfinite(sim.state().x.norm()));
@@ -243,13 +257,17 @@ TEST(TableauMethods, AStageThatIsNotSolvedIsSaidToBeUnsolvedNotDiverged) {
 TEST(TableauMethods, EveryImplicitTableauRunsEverySceneWhereImplicitEulerDoes) {
   std::vector<std::string> implicit;
   for (const std::string& name : shipped_tableaux())
-    if (!load_tableau_file((fs::path(SPRINGLAB_SOURCE_DIR) / "assets" / "tableaux" / (name + ".json")).string()).is_explicit())
+    if (!load_tableau_file(
+             (fs::path(SPRINGLAB_SOURCE_DIR) / "assets" / "tableaux" / (name + ".json")).string())
+             .is_explicit())
       implicit.push_back(name);
   ASSERT_GE(implicit.size(), 5u);
   // (The cloth at 8 x 8: its springs and pins as shipped, a factorisation cheap enough for a test.)
-  for (const char* scene_name : {"spring", "damped-spring", "rope", "chain", "stiff", "jelly", "cloth"}) {
-    const Scene scene = std::string(scene_name) == "cloth" ? test::shipped("cloth", {"cloth.width=8", "cloth.height=8"})
-                                                           : test::shipped(scene_name);
+  for (const char* scene_name :
+       {"spring", "damped-spring", "rope", "chain", "stiff", "jelly", "cloth"}) {
+    const Scene scene = std::string(scene_name) == "cloth"
+                            ? test::shipped("cloth", {"cloth.width=8", "cloth.height=8"})
+                            : test::shipped(scene_name);
     for (double dt : {scene.dt, 1.0 / 60.0}) {
       Simulation reference = test::simulation(scene, Method::ImplicitEuler, dt);
       const int steps = static_cast<int>(std::ceil(0.25 / dt));
@@ -257,7 +275,8 @@ TEST(TableauMethods, EveryImplicitTableauRunsEverySceneWhereImplicitEulerDoes) {
       for (const std::string& name : implicit) {
         SCOPED_TRACE(std::string(scene_name) + ", " + name + ", dt = " + std::to_string(dt));
         Simulation sim = test::simulation(scene, row(name), dt);
-        EXPECT_EQ(sim.advance(steps), steps) << (sim.divergence() ? sim.divergence()->message() : "");
+        EXPECT_EQ(sim.advance(steps), steps)
+            << (sim.divergence() ? sim.divergence()->message() : "");
         EXPECT_GT(sim.counters().linear_solves, 0);  // its stages' first guesses
         // Past the linear spring, the stages are nonlinear: solved by Newton's corrections.
         if (scene.model.spring_count() > 1) {
@@ -307,7 +326,8 @@ TEST(TableauMethods, NamesAreOneRowEach) {
   EXPECT_EQ(row("heun"), heun);
   EXPECT_EQ(find_method("tableau-heun"), heun);
   EXPECT_EQ(method_info(heun).order, 2);
-  const ButcherTableau ralston = parse_tableau(R"({"A": [[0], ["2/3"]], "b": ["1/4", "3/4"]})", "test");
+  const ButcherTableau ralston =
+      parse_tableau(R"({"A": [[0], ["2/3"]], "b": ["1/4", "3/4"]})", "test");
   EXPECT_THROW(add_tableau_method(ralston, "tableau-heun"), InputError);
   EXPECT_THROW(add_tableau_method(ralston, "rk4"), InputError);
 }

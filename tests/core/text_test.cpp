@@ -1,9 +1,10 @@
 // Translations as data (springlab/text.hpp): the PO reader against gettext's format, tr()'s
 // fallback to English, and the language tags the environment and browsers give.
+#include "springlab/text.hpp"
+
 #include <gtest/gtest.h>
 
 #include "springlab/error.hpp"
-#include "springlab/text.hpp"
 
 namespace springlab::test {
 namespace {
@@ -65,15 +66,20 @@ TEST(Text, AMalformedCatalogIsOneMessageWithItsLine) {
     }
     return std::string("no error");
   };
-  EXPECT_EQ(error("msgid \"a\"\nmsgstr \"b"), "zh-CN.po:2: a string is not closed (a \" is missing)");
+  EXPECT_EQ(error("msgid \"a\"\nmsgstr \"b"),
+            "zh-CN.po:2: a string is not closed (a \" is missing)");
   EXPECT_EQ(error("msgid \"a\"\n\nmsgstr \"b\""), "zh-CN.po:1: msgid \"a\" has no msgstr");
-  EXPECT_EQ(error("msgid \"a\"\nmsgstr \"\\q\""), "zh-CN.po:2: unknown escape \\q (use \\n, \\t, \\\" or \\\\)");
-  EXPECT_EQ(error("msgid \"a\"\nmsgtxt \"b\""), "zh-CN.po:2: unknown keyword 'msgtxt' (a PO file has msgctxt, msgid, msgid_plural and msgstr)");
+  EXPECT_EQ(error("msgid \"a\"\nmsgstr \"\\q\""),
+            "zh-CN.po:2: unknown escape \\q (use \\n, \\t, \\\" or \\\\)");
+  EXPECT_EQ(error("msgid \"a\"\nmsgtxt \"b\""),
+            "zh-CN.po:2: unknown keyword 'msgtxt' (a PO file has msgctxt, msgid, msgid_plural and "
+            "msgstr)");
   EXPECT_EQ(error("\"orphan\""), "zh-CN.po:1: a continued string with no keyword before it");
 }
 
 TEST(Text, TranslatesWhatTheCatalogHasAndLeavesTheRestInEnglish) {
-  static const Catalog c = read_po("msgid \"Energy\"\nmsgstr \"能量\"\n\nmsgid \"Language: x\"\nmsgstr \"\"\n", "t.po");
+  static const Catalog c =
+      read_po("msgid \"Energy\"\nmsgstr \"能量\"\n\nmsgid \"Language: x\"\nmsgstr \"\"\n", "t.po");
   EXPECT_STREQ(tr("Energy"), "Energy");  // no catalog: English
   EXPECT_EQ(current_language(), "en");
   set_catalog(&c);
@@ -88,7 +94,8 @@ TEST(Text, TranslatesWhatTheCatalogHasAndLeavesTheRestInEnglish) {
 
 TEST(Text, ChineseInAnyFormIsSimplifiedChineseAndTheRestEnglish) {
   const std::vector<std::string> shipped{"zh-CN"};
-  for (const char* tag : {"zh_CN.UTF-8", "zh-CN", "zh", "zh-Hans-CN", "ZH_cn", "zh_SG", "zh-TW", "zh.GB18030"})
+  for (const char* tag :
+       {"zh_CN.UTF-8", "zh-CN", "zh", "zh-Hans-CN", "ZH_cn", "zh_SG", "zh-TW", "zh.GB18030"})
     EXPECT_EQ(supported_language(tag, shipped), "zh-CN") << tag;
   for (const char* tag : {"en_US.UTF-8", "en-GB", "C", "POSIX", "", "fr_FR", "zhx"})
     EXPECT_EQ(supported_language(tag, shipped), "en") << tag;

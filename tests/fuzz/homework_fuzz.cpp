@@ -38,7 +38,8 @@ class FuzzedRope : public RopeCode {
     std::vector<RopeState> out;
     for (int n = 0; n < steps; ++n) {
       // A budget of states an input may ask for, as the real runner's time limit bounds them.
-      if (++states_ > 40000) throw CodeFailure("the step did not return within its time and was stopped");
+      if (++states_ > 40000)
+        throw CodeFailure("the step did not return within its time and was stopped");
       fail_maybe("simulate");
       switch (data_.remaining_bytes() == 0 ? 0 : data_.ConsumeIntegralInRange(0, 5)) {
         case 0:
@@ -70,19 +71,27 @@ class FuzzedRope : public RopeCode {
  private:
   double value() {
     switch (data_.ConsumeIntegralInRange(0, 6)) {
-      case 0: return std::numeric_limits<double>::quiet_NaN();
-      case 1: return std::numeric_limits<double>::infinity();
-      case 2: return -std::numeric_limits<double>::infinity();
-      case 3: return 0.0;
-      case 4: return 1e300;
-      case 5: return -1e-300;
-      default: return data_.ConsumeFloatingPointInRange(-100.0, 100.0);
+      case 0:
+        return std::numeric_limits<double>::quiet_NaN();
+      case 1:
+        return std::numeric_limits<double>::infinity();
+      case 2:
+        return -std::numeric_limits<double>::infinity();
+      case 3:
+        return 0.0;
+      case 4:
+        return 1e300;
+      case 5:
+        return -1e-300;
+      default:
+        return data_.ConsumeFloatingPointInRange(-100.0, 100.0);
     }
   }
 
   void fail_maybe(const char* what) {
     if (data_.remaining_bytes() > 0 && data_.ConsumeIntegralInRange(0, 40) == 0)
-      throw CodeFailure(std::string(what) + " was killed by signal 11 (Segmentation fault); it printed: " +
+      throw CodeFailure(std::string(what) +
+                        " was killed by signal 11 (Segmentation fault); it printed: " +
                         data_.ConsumeRandomLengthString(40));
   }
 
@@ -91,7 +100,8 @@ class FuzzedRope : public RopeCode {
     BuiltRope rope = exercise_rope(request);
     if (own && data_.remaining_bytes() > 0 && data_.ConsumeBool()) {
       // Anything a constructor might build.
-      rope.masses.resize(data_.ConsumeIntegralInRange<std::size_t>(0, static_cast<std::size_t>(request.nodes) + 2));
+      rope.masses.resize(data_.ConsumeIntegralInRange<std::size_t>(
+          0, static_cast<std::size_t>(request.nodes) + 2));
       for (BuiltMass& m : rope.masses) {
         if (data_.ConsumeBool()) m.state.x = Vec2(value(), value());
         if (data_.ConsumeBool()) m.mass = value();
@@ -99,7 +109,8 @@ class FuzzedRope : public RopeCode {
         if (data_.ConsumeBool()) m.start = Vec2(value(), value());
       }
       const int n = static_cast<int>(rope.masses.size());
-      rope.springs.resize(data_.ConsumeIntegralInRange<std::size_t>(0, static_cast<std::size_t>(n) + 2));
+      rope.springs.resize(
+          data_.ConsumeIntegralInRange<std::size_t>(0, static_cast<std::size_t>(n) + 2));
       for (BuiltSpring& s : rope.springs) {
         if (data_.ConsumeBool()) s.m1 = data_.ConsumeIntegralInRange(-2, n + 1);
         if (data_.ConsumeBool()) s.m2 = data_.ConsumeIntegralInRange(-2, n + 1);
@@ -113,7 +124,8 @@ class FuzzedRope : public RopeCode {
     return rope;
   }
 
-  // The exercise's steps on the rope held (semi-implicit Euler, Verlet), reading only what is there.
+  // The exercise's steps on the rope held (semi-implicit Euler, Verlet), reading only what is
+  // there.
   void correct_step(Step step, double dt, const Vec2& g) {
     const int n = static_cast<int>(std::min(state_.size(), rope_.masses.size()));
     for (const BuiltSpring& s : rope_.springs) {

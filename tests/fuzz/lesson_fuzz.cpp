@@ -18,14 +18,19 @@ using springlab::fuzz::require;
 
 const std::map<std::string, std::string>& scenes() {
   static const std::map<std::string, std::string> texts = {
-      {"spring", R"({"particles": [{"position": [0, 0, 0], "pinned": true}, {"position": [1.5, 0, 0]}],
+      {"spring",
+       R"({"particles": [{"position": [0, 0, 0], "pinned": true}, {"position": [1.5, 0, 0]}],
                     "springs": [{"a": 0, "b": 1, "ks": 100, "rest_length": 1}], "methods": ["rk4", "euler"]})"},
-      {"rope", R"({"generators": [{"type": "rope", "name": "rope", "start": [0, 0, 0], "end": [4, 0, 0], "nodes": 8,
+      {"rope",
+       R"({"generators": [{"type": "rope", "name": "rope", "start": [0, 0, 0], "end": [4, 0, 0], "nodes": 8,
                    "stiffness": 2000}], "gravity": [0, -9.81, 0], "drag": 0.03})"},
-      {"jelly", R"({"generators": [{"type": "box", "name": "jelly", "nodes": [2, 2, 2], "stiffness": 2000}]})"},
-      {"fountain", R"({"emitters": [{"name": "fountain", "rate": 100, "max": 50, "speed": 5, "lifetime": 1}],
+      {"jelly",
+       R"({"generators": [{"type": "box", "name": "jelly", "nodes": [2, 2, 2], "stiffness": 2000}]})"},
+      {"fountain",
+       R"({"emitters": [{"name": "fountain", "rate": 100, "max": 50, "speed": 5, "lifetime": 1}],
                        "gravity": [0, -9.81, 0]})"},
-      {"ik-arm", R"({"ik": {"links": [1.0, 0.8], "target": [1, 0.5, 0], "solvers": ["ccd", "fabrik", "dls"]}})"},
+      {"ik-arm",
+       R"({"ik": {"links": [1.0, 0.8], "target": [1, 0.5, 0], "solvers": ["ccd", "fabrik", "dls"]}})"},
   };
   return texts;
 }
@@ -43,11 +48,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     const springlab::Lesson lesson = springlab::parse_lesson(text, "fuzz-lesson.json", open);
     require(!lesson.steps.empty() && lesson.steps.size() <= 12, "1 to 12 steps");
-    require(lesson.duration() > 0.0 && std::isfinite(lesson.duration()), "a finite, positive duration");
+    require(lesson.duration() > 0.0 && std::isfinite(lesson.duration()),
+            "a finite, positive duration");
     for (const springlab::LessonStep& step : lesson.steps) {
-      require(!step.caption.empty() && step.caption.size() <= 4 * springlab::kMaxCaption, "a caption that fits");
+      require(!step.caption.empty() && step.caption.size() <= 4 * springlab::kMaxCaption,
+              "a caption that fits");
       require(!step.charts.empty() && step.charts.size() <= 2, "one or two charts");
-      require(step.compare.empty() || (step.compare.size() >= 2 && step.compare.size() <= 4), "2 to 4 lanes");
+      require(step.compare.empty() || (step.compare.size() >= 2 && step.compare.size() <= 4),
+              "2 to 4 lanes");
       for (const springlab::LessonClaim& c : step.claims) {
         require(!c.describe().empty(), "every claim describes itself");
         require(c.from >= 0.0 && c.from <= step.duration, "claims within the step");

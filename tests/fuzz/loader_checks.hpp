@@ -32,7 +32,8 @@ inline void check_scene(const Scene& s) {
   for (int k = 0; k < m.spring_count(); ++k) {
     const int a = m.spring_a[k], b = m.spring_b[k];
     require(a >= 0 && b < n && a < b, "spring ends in range, a < b");
-    require(std::isfinite(m.rest_length[k]) && m.rest_length[k] >= 0.0, "rest lengths finite, >= 0");
+    require(std::isfinite(m.rest_length[k]) && m.rest_length[k] >= 0.0,
+            "rest lengths finite, >= 0");
     require(m.spring_material[k] < m.materials.size(), "spring materials in range");
   }
   for (const SpringMaterial& mat : m.materials)

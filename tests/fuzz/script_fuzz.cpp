@@ -35,7 +35,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     require(std::isfinite(end) && end >= 0, "a finite end time");
     for (const springlab::ScriptEvent& e : script.events) {
       require(!e.describe().empty(), "every event describes itself");
-      require(e.particle >= -1 && e.particle < scene().model.particle_count(), "grabs index particles");
+      require(e.particle >= -1 && e.particle < scene().model.particle_count(),
+              "grabs index particles");
       if (e.path.empty()) continue;
       for (double t : {-1.0, 0.0, 0.5 * e.path.back().first, e.path.back().first + 1.0})
         require(springlab::path_position(e.path, t).allFinite(), "paths finite");

@@ -63,10 +63,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr int kChannel = 24;          // of 255
-constexpr double kWindow = 0.05;      // of a window's drawn pixels
-constexpr double kMinDrawn = 0.10;    // of a window's pixels: the least a window counts as drawn
-constexpr int kWindowPer270 = 24;     // a window's side, in pixels per 270 of the frame's height
+constexpr int kChannel = 24;        // of 255
+constexpr double kWindow = 0.05;    // of a window's drawn pixels
+constexpr double kMinDrawn = 0.10;  // of a window's pixels: the least a window counts as drawn
+constexpr int kWindowPer270 = 24;   // a window's side, in pixels per 270 of the frame's height
 
 struct Case {
   std::string name, args;
@@ -74,7 +74,9 @@ struct Case {
 };
 
 // CTest names each case by this, not by the struct's bytes.
-void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const Case& c, std::ostream* os) {
+  *os << c.name;
+}
 
 std::vector<Case> load_cases() {
   std::vector<Case> cases;
@@ -92,8 +94,12 @@ std::vector<Case> load_cases() {
   return cases;
 }
 
-fs::path golden_dir() { return fs::path(SPRINGLAB_SOURCE_DIR) / "tests" / "golden"; }
-fs::path failure_dir() { return fs::path(SPRINGLAB_BINARY_DIR) / "golden-failures"; }
+fs::path golden_dir() {
+  return fs::path(SPRINGLAB_SOURCE_DIR) / "tests" / "golden";
+}
+fs::path failure_dir() {
+  return fs::path(SPRINGLAB_BINARY_DIR) / "golden-failures";
+}
 
 std::string frame_file(int frame) {
   char name[32];
@@ -112,7 +118,9 @@ std::string text_faults(const std::string& out) {
 
 // Renders a case into `dir`, its text checked (ui/text_fit.hpp); returns the frame's path.
 fs::path render(const Case& c, const fs::path& dir) {
-  const Result r = springlab("render " + c.args + " --software --check-text --out '" + dir.string() + "'", SPRINGLAB_SOURCE_DIR);
+  const Result r =
+      springlab("render " + c.args + " --software --check-text --out '" + dir.string() + "'",
+                SPRINGLAB_SOURCE_DIR);
   EXPECT_TRUE(r.status == 0 || r.status == 3) << c.name << ": " << r.err;
   EXPECT_EQ(text_faults(r.out), "") << c.name << ": text that does not fit its place";
   return dir / frame_file(c.frame);
@@ -149,10 +157,12 @@ Difference compare(const app::Image& expected, const app::Image& actual) {
   int most = -1;
   for (const auto& [colour, n] : counts)
     if (n > most || (n == most && colour < mode)) mode = colour, most = n;
-  const std::uint8_t background[3] = {std::uint8_t(mode >> 16), std::uint8_t(mode >> 8), std::uint8_t(mode)};
+  const std::uint8_t background[3] = {std::uint8_t(mode >> 16), std::uint8_t(mode >> 8),
+                                      std::uint8_t(mode)};
   // Differing and drawn pixels, summed over rectangles (summed-area tables, one row and column
   // of zeros first).
-  std::vector<int> differ_sum(static_cast<std::size_t>(w + 1) * (h + 1)), drawn_sum(differ_sum.size());
+  std::vector<int> differ_sum(static_cast<std::size_t>(w + 1) * (h + 1)),
+      drawn_sum(differ_sum.size());
   const auto at = [w](int x, int y) { return static_cast<std::size_t>(y) * (w + 1) + x; };
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
@@ -160,10 +170,13 @@ Difference compare(const app::Image& expected, const app::Image& actual) {
       const std::uint8_t* e = expected.rgba.data() + 4 * p;
       const std::uint8_t* a = actual.rgba.data() + 4 * p;
       const bool differs = channel_difference(e, a) > kChannel;
-      const bool drawn = differs || channel_difference(e, background) > kChannel || channel_difference(a, background) > kChannel;
+      const bool drawn = differs || channel_difference(e, background) > kChannel ||
+                         channel_difference(a, background) > kChannel;
       d.differing += differs;
-      differ_sum[at(x + 1, y + 1)] = differs + differ_sum[at(x, y + 1)] + differ_sum[at(x + 1, y)] - differ_sum[at(x, y)];
-      drawn_sum[at(x + 1, y + 1)] = drawn + drawn_sum[at(x, y + 1)] + drawn_sum[at(x + 1, y)] - drawn_sum[at(x, y)];
+      differ_sum[at(x + 1, y + 1)] =
+          differs + differ_sum[at(x, y + 1)] + differ_sum[at(x + 1, y)] - differ_sum[at(x, y)];
+      drawn_sum[at(x + 1, y + 1)] =
+          drawn + drawn_sum[at(x, y + 1)] + drawn_sum[at(x + 1, y)] - drawn_sum[at(x, y)];
       std::uint8_t* out = d.diff.rgba.data() + 4 * p;
       if (differs) {
         out[0] = 255, out[1] = 0, out[2] = 0;
@@ -190,13 +203,14 @@ Difference compare(const app::Image& expected, const app::Image& actual) {
     for (const int x : starts(0, w)) {
       const int differing = sum(differ_sum, x, y), drawn = sum(drawn_sum, x, y);
       const double score = differing / std::max<double>(drawn, kMinDrawn * side * side);
-      if (score > d.window) d.window = score, d.wx = x, d.wy = y, d.wdiffering = differing, d.wdrawn = drawn;
+      if (score > d.window)
+        d.window = score, d.wx = x, d.wy = y, d.wdiffering = differing, d.wdrawn = drawn;
     }
   // The worst window, outlined.
   if (d.window > 0.0)
     for (int k = 0; k < side; ++k)
-      for (const auto& [x, y] : {std::pair{d.wx + k, d.wy}, std::pair{d.wx + k, d.wy + side - 1}, std::pair{d.wx, d.wy + k},
-                                 std::pair{d.wx + side - 1, d.wy + k}}) {
+      for (const auto& [x, y] : {std::pair{d.wx + k, d.wy}, std::pair{d.wx + k, d.wy + side - 1},
+                                 std::pair{d.wx, d.wy + k}, std::pair{d.wx + side - 1, d.wy + k}}) {
         std::uint8_t* out = d.diff.rgba.data() + 4 * (static_cast<std::size_t>(y) * w + x);
         out[0] = 255, out[1] = 220, out[2] = 0;
       }
@@ -207,8 +221,9 @@ Difference compare(const app::Image& expected, const app::Image& actual) {
 std::string describe(const Difference& d) {
   std::ostringstream s;
   s.precision(3);
-  s << "the worst " << d.side << "x" << d.side << " window, at (" << d.wx << ", " << d.wy << "), has " << d.wdiffering
-    << " of its " << d.wdrawn << " drawn pixels different by more than " << kChannel << " (" << 100.0 * d.window
+  s << "the worst " << d.side << "x" << d.side << " window, at (" << d.wx << ", " << d.wy
+    << "), has " << d.wdiffering << " of its " << d.wdrawn
+    << " drawn pixels different by more than " << kChannel << " (" << 100.0 * d.window
     << "%, limit " << 100.0 * kWindow << "%)";
   s << "; " << d.differing << " of " << d.total << " pixels in all";
   return s.str();
@@ -252,7 +267,8 @@ class TextFitInChinese : public ::testing::TestWithParam<Case> {};
 TEST_P(TextFitInChinese, EveryPieceOfTextFitsItsPlace) {
   const Case& c = GetParam();
   TempDir dir;
-  const Result r = springlab("render " + c.args + " --lang zh-CN --software --check-text --out '" + dir.path.string() + "'",
+  const Result r = springlab("render " + c.args + " --lang zh-CN --software --check-text --out '" +
+                                 dir.path.string() + "'",
                              SPRINGLAB_SOURCE_DIR);
   EXPECT_TRUE(r.status == 0 || r.status == 3) << c.name << ": " << r.err;
   EXPECT_EQ(text_faults(r.out), "") << c.name << " in Chinese: text that does not fit its place";
@@ -266,12 +282,13 @@ std::vector<Case> english_cases() {
   return cases;
 }
 
-INSTANTIATE_TEST_SUITE_P(Cases, TextFitInChinese, ::testing::ValuesIn(english_cases()), [](const auto& info) {
-  std::string name = info.param.name;
-  for (char& ch : name)
-    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-  return name;
-});
+INSTANTIATE_TEST_SUITE_P(Cases, TextFitInChinese, ::testing::ValuesIn(english_cases()),
+                         [](const auto& info) {
+                           std::string name = info.param.name;
+                           for (char& ch : name)
+                             if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+                           return name;
+                         });
 
 INSTANTIATE_TEST_SUITE_P(Cases, Golden, ::testing::ValuesIn(load_cases()), [](const auto& info) {
   std::string name = info.param.name;
@@ -283,9 +300,11 @@ INSTANTIATE_TEST_SUITE_P(Cases, Golden, ::testing::ValuesIn(load_cases()), [](co
 // The deterministic charts of `compare` (not work-precision against wall time): the spring's,
 // and the chain's with the iterative rows beside the lecture's methods (their solver error
 // against iterations, and their time-stepping error on the work-precision chart).
-void check_charts(const std::string& scene, const std::string& options, std::initializer_list<const char*> charts) {
+void check_charts(const std::string& scene, const std::string& options,
+                  std::initializer_list<const char*> charts) {
   TempDir dir;
-  const Result r = springlab("compare " + scene + " --software " + options + " --out '" + dir.path.string() + "'");
+  const Result r = springlab("compare " + scene + " --software " + options + " --out '" +
+                             dir.path.string() + "'");
   ASSERT_EQ(r.status, 0) << r.err;
   for (const char* chart : charts) {
     const std::string name = "charts-" + scene + "-" + chart;
@@ -316,12 +335,15 @@ TEST(GoldenCharts, OfTheSpring) {
 }
 
 TEST(GoldenCharts, OfTheChainWithWhatGamesUse) {
-  check_charts("chain", "--points 4 --duration 0.5 --drift-duration 1 "
+  check_charts("chain",
+               "--points 4 --duration 0.5 --drift-duration 1 "
                "--methods symplectic-euler,rk4,implicit-euler,xpbd,local-global,vbd",
                {"solver-convergence", "work-precision-work"});
 }
 
-std::string bytes(const fs::path& p) { return read_file(p); }
+std::string bytes(const fs::path& p) {
+  return read_file(p);
+}
 
 TEST(Deterministic, SameFrameInTwoProcessesIsTheSameBytes) {
   const Case c{"jelly", "jelly --frames 31 --select 30 --size 480x270 --ui --ui-scale 0.75", 30};
@@ -334,12 +356,16 @@ TEST(Deterministic, SameFrameInTwoProcessesIsTheSameBytes) {
 TEST(Deterministic, RasteriserAndSimulationThreadsChangeNoPixel) {
   // llvmpipe's threads, and the simulation's (a cloth big enough to run in parallel).
   // (A 48 x 48 cloth has twice the 24 x 24 one's highest frequency: two sub-steps keep it stable.)
-  const std::string args = "render cloth --set cloth.width=48 --set cloth.height=48 --substeps 2 --frames 21 --select 20 --size 480x270 --software";
+  const std::string args =
+      "render cloth --set cloth.width=48 --set cloth.height=48 --substeps 2 --frames 21 --select "
+      "20 --size 480x270 --software";
   TempDir a, b, c;
   ASSERT_EQ(springlab(args + " --threads 1 --out '" + a.path.string() + "'").status, 0);
   ASSERT_EQ(springlab(args + " --threads 2 --out '" + b.path.string() + "'").status, 0);
-  ASSERT_EQ(std::system(("LP_NUM_THREADS=1 '" SPRINGLAB_EXECUTABLE "' " + args + " --out '" + c.path.string() +
-                         "' > /dev/null 2>&1").c_str()), 0);
+  ASSERT_EQ(std::system(("LP_NUM_THREADS=1 '" SPRINGLAB_EXECUTABLE "' " + args + " --out '" +
+                         c.path.string() + "' > /dev/null 2>&1")
+                            .c_str()),
+            0);
   const auto frame = frame_file(20);
   EXPECT_EQ(bytes(a.path / frame), bytes(b.path / frame));
   EXPECT_EQ(bytes(a.path / frame), bytes(c.path / frame));

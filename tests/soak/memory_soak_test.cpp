@@ -29,7 +29,9 @@ Memory memory_now() {
   return m;
 }
 
-Scene small_cloth() { return test::shipped("cloth", {"cloth.width=8", "cloth.height=8"}); }
+Scene small_cloth() {
+  return test::shipped("cloth", {"cloth.width=8", "cloth.height=8"});
+}
 
 TEST(Soak, AMillionStepsOfTheClothKeepMemoryFlat) {
   const Scene scene = small_cloth();
@@ -52,7 +54,8 @@ TEST(Soak, EveryMethodKeepsItsHeapFlat) {
     const Memory warm = memory_now();
     ASSERT_EQ(sim.advance(10'000), 10'000) << m.name << ": " << sim.divergence()->message();
     const Memory end = memory_now();
-    EXPECT_LE(end.heap - warm.heap, 4 << 10) << m.name << ": heap grew from " << warm.heap << " to " << end.heap;
+    EXPECT_LE(end.heap - warm.heap, 4 << 10)
+        << m.name << ": heap grew from " << warm.heap << " to " << end.heap;
   }
 }
 

@@ -55,7 +55,8 @@ struct ButcherTableau {
 
 // Reads a tableau from JSON text (format: assets/tableaux/README.md). `where` names the file or
 // link in messages. Bad input throws InputError naming the field, row and column:
-//   "tableau 'my.json': /A/1/2: "1/0" is not a number: write a fraction (1/6), an integer or a decimal".
+//   "tableau 'my.json': /A/1/2: "1/0" is not a number: write a fraction (1/6), an integer or a
+//   decimal".
 ButcherTableau parse_tableau(const std::string& json_text, const std::string& where);
 ButcherTableau load_tableau_file(const std::string& path);
 // The tableau as compact JSON that parse_tableau reads back to the same entries (for a link).
@@ -67,7 +68,7 @@ struct OrderCondition {
   std::string tree;
   std::string formula;
   int order = 0;
-  std::string lhs, rhs;  // "1/8"
+  std::string lhs, rhs;   // "1/8"
   double residual = 0.0;  // lhs - rhs, in doubles
 };
 
@@ -78,7 +79,7 @@ struct TableauAnalysis {
   // The order when each condition need only hold to 1e-10 of its right side: higher than `order`
   // when entries are decimals rounded from irrational values (1 - sqrt(2) / 2 to 17 digits).
   int order_to_rounding = 0;
-  int conditions = 0;  // checked: every tree up to kMaxOrder (37)
+  int conditions = 0;                 // checked: every tree up to kMaxOrder (37)
   std::optional<int> embedded_order;  // of b_hat, the same way
   std::vector<std::string> warnings;  // c against the row sums, the stated orders
   // R(z) = P(z) / Q(z): coefficients from z^0 up, exact ("1/24") and in doubles.

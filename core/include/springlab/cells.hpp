@@ -3,7 +3,8 @@
 // pulls to its rest length whichever way it points), so a method that lets one through (a large
 // step, an unfinished iteration) leaves it inverted for good. A cell is inverted where any corner's
 // Jacobian, the three edges from that corner along the lattice's axes
-//   J_c = [s_x (x_(c^1) - x_c), s_y (x_(c^2) - x_c), s_z (x_(c^4) - x_c)],  s = -1 where c's bit is set,
+//   J_c = [s_x (x_(c^1) - x_c), s_y (x_(c^2) - x_c), s_z (x_(c^4) - x_c)],  s = -1 where c's bit is
+//   set,
 // has det J_c <= 0 (the standard validity test of a trilinear hexahedron at its corners).
 #pragma once
 

@@ -13,8 +13,8 @@
 namespace springlab {
 
 struct ContactResult {
-  int contacts = 0;            // particles moved or slowed
-  double kinetic_lost = 0.0;   // J taken by the inelastic impacts and friction
+  int contacts = 0;           // particles moved or slowed
+  double kinetic_lost = 0.0;  // J taken by the inelastic impacts and friction
   // J of gravity's potential gained by moving particles back out (the springs' change is left
   // out: the moves are small, and stretch springs to either side).
   double potential_gained = 0.0;

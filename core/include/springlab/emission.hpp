@@ -26,7 +26,9 @@ class Emission {
   bool update(Model& model, State& state);
 
   bool empty() const { return born_.empty(); }
-  bool owned(int i) const { return i < static_cast<int>(owner_.size()) && owner_[i] >= 0; }  // in a pool
+  bool owned(int i) const {
+    return i < static_cast<int>(owner_.size()) && owner_[i] >= 0;
+  }  // in a pool
   bool alive(int i) const { return i < static_cast<int>(born_.size()) && born_[i] == born_[i]; }
   double age(int i, double t) const { return t - born_[i]; }
   double lifetime(int i) const { return lifetime_[i]; }
@@ -55,8 +57,8 @@ class Emission {
   std::vector<Vec3> color_;
   std::vector<int> owner_;  // emitter index, or -1
   std::vector<bool> spark_;
-  std::vector<Stream> streams_;          // one per emitter
-  std::vector<std::int64_t> emitted_;    // births due so far, per emitter (dropped included)
+  std::vector<Stream> streams_;        // one per emitter
+  std::vector<std::int64_t> emitted_;  // births due so far, per emitter (dropped included)
   std::vector<PoolState> pools_, bursts_;
   int alive_ = 0;
   std::int64_t dropped_ = 0, births_ = 0;

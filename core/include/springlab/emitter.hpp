@@ -39,8 +39,8 @@ struct Emitter {
   std::string name;
   Vec3 position = Vec3::Zero();
   EmitterShape shape = EmitterShape::Point;
-  double radius = 0.0;  // m: of the disc (across `spawn.direction`) or of the ball
-  double rate = 0.0;    // births per second, at start + k / rate
+  double radius = 0.0;               // m: of the disc (across `spawn.direction`) or of the ball
+  double rate = 0.0;                 // births per second, at start + k / rate
   double start = 0.0, stop = 1e300;  // s: births in [start, stop]
   Spawn spawn;
   Pool pool;

@@ -51,8 +51,9 @@ T probe_term(T inv_mass, T mass, const T v[3], const T x[3]) {
 }
 
 /// Power (W) taken out by spring damping, sum k_d ((v_b - v_a) . u)^2, and by drag,
-/// sum k_drag v . (v - wind) (>= 0 in still air; a wind can put energy in). Integrated over time it is the energy the scene loses physically, as
-/// opposed to what an integrator loses or gains numerically.
+/// sum k_drag v . (v - wind) (>= 0 in still air; a wind can put energy in). Integrated over time it
+/// is the energy the scene loses physically, as opposed to what an integrator loses or gains
+/// numerically.
 double dissipation_power(const Model& model, const State& state);
 
 /// Power (W) the fields put in: sum m a_swirl . v over the free particles (a swirl is not a
@@ -63,7 +64,8 @@ double wind_power(const Model& model, const State& state);
 
 /// The force the springs exert on one particle (with their damping), from its springs' list:
 /// what a held particle's prescribed motion works against (its work is -f . v).
-Vec3 held_force(const Model& model, const State& state, int particle, const std::vector<int>& springs);
+Vec3 held_force(const Model& model, const State& state, int particle,
+                const std::vector<int>& springs);
 
 /// A scene's energy scale (J), the yardstick of divergence: the larger of |E(initial)| and a
 /// floor from the scene itself, sum k_s L^2 + sum m |g| * size (size: the diagonal of the

@@ -42,7 +42,7 @@ class EnergyAudit {
 
   // What a stable run may do, from the stability analysis.
   struct Allowance {
-    double growth = 1.0;  // G
+    double growth = 1.0;         // G
     double lowest_energy = 0.0;  // E_low
   };
 

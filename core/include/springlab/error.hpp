@@ -13,6 +13,7 @@ struct InputError : std::runtime_error {
 };
 
 /// The closest of `candidates` to `word` (edit distance), or "" when nothing is close.
-std::string closest_match(const std::string& word, const std::string* candidates, std::size_t count);
+std::string closest_match(const std::string& word, const std::string* candidates,
+                          std::size_t count);
 
 }  // namespace springlab

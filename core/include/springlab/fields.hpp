@@ -1,5 +1,5 @@
-// Force fields a particle scene may declare beside gravity and drag (docs/numerics.md, "The model": only where
-// declared): an attractor, optionally swirling (a vortex). Accelerations, so f = m a.
+// Force fields a particle scene may declare beside gravity and drag (docs/numerics.md, "The model":
+// only where declared): an attractor, optionally swirling (a vortex). Accelerations, so f = m a.
 //
 // With d = c - x and q = |d|^2 + eps^2 (eps, the softening, keeps the pull finite at the centre):
 //   pull    a = S d / q^(3/2)                         S = strength, m^3/s^2 (G M of a point mass)
@@ -42,7 +42,8 @@ inline Eigen::Matrix3d field_jacobian(const Attractor& f, const Eigen::Vector3d&
   const Eigen::Vector3d d = f.center - x;
   const double q = d.squaredNorm() + eps2;
   const double q32 = q * std::sqrt(q);
-  Eigen::Matrix3d J = f.strength * (3.0 * d * d.transpose() / (q32 * q) - Eigen::Matrix3d::Identity() / q32);
+  Eigen::Matrix3d J =
+      f.strength * (3.0 * d * d.transpose() / (q32 * q) - Eigen::Matrix3d::Identity() / q32);
   if (f.swirl != 0.0) {
     const Eigen::Vector3d p = -d - (-d).dot(f.axis) * f.axis;
     const double qp = p.squaredNorm() + eps2;

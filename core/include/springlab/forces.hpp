@@ -1,8 +1,8 @@
 // Forces on every particle: springs, gravity, drag and the fields, gathered without races.
 //
-// The pass (core/src/dynamics/force_pass.hpp) cuts the particles into fixed blocks, shared out among the
-// threads as runs of consecutive blocks; each spring belongs to the block of its a-end, and
-// the forces of springs reaching into a later block wait in a buffer until that block takes
+// The pass (core/src/dynamics/force_pass.hpp) cuts the particles into fixed blocks, shared out
+// among the threads as runs of consecutive blocks; each spring belongs to the block of its a-end,
+// and the forces of springs reaching into a later block wait in a buffer until that block takes
 // them. Every particle's sum is taken in an order fixed by the blocks alone, so results are
 // bit-identical for any thread count.
 #pragma once
@@ -24,9 +24,9 @@ struct ForcePlan {
   };
   int particles = -1, springs = -1;  // of the model it was made for
   const void* spans = nullptr;
-  int block = 0;                             // particles a block
-  int reach = 0;                             // the largest b - a of a spring (0 without springs)
-  std::vector<std::vector<Piece>> own;       // per block: springs whose a-end it holds
+  int block = 0;                        // particles a block
+  int reach = 0;                        // the largest b - a of a spring (0 without springs)
+  std::vector<std::vector<Piece>> own;  // per block: springs whose a-end it holds
   // Per chunk of a block's particles (block b's chunks from chunk_first[b] on): the pieces of
   // `own` cut to the springs whose a-ends are in the chunk, in the same order. A block of a
   // cloth holds a few spans a row, hundreds in all: a chunk finds its own without going

@@ -88,7 +88,8 @@ class RopeCode {
   /// Calls the step `steps` times with (float) dt and gravity: the state after each call.
   virtual std::vector<RopeState> simulate(Step step, double dt, const Vec2& gravity, int steps) = 0;
   /// Whether `build` runs the code's own constructor (C++), or springlab's exercise_rope (the
-  /// browser's exercise is the two steps): then the construction is not the code's, and not checked.
+  /// browser's exercise is the two steps): then the construction is not the code's, and not
+  /// checked.
   virtual bool own_constructor() const { return true; }
 };
 
@@ -135,10 +136,11 @@ std::string damping_text(const Damping& damping, Step step);
 /// What a step was found to be: a row of springlab's table (empty: none of them) and its damping.
 struct Identified {
   std::string method;
-  bool velocity_verlet = false;  ///< Verlet as a step of (x, v): x + h v + h^2/2 a, v + h/2 (a + a1)
-  bool constraints = false;      ///< position Verlet with its springs held as constraints (no row)
+  bool velocity_verlet =
+      false;                 ///< Verlet as a step of (x, v): x + h v + h^2/2 a, v + h/2 (a + a1)
+  bool constraints = false;  ///< position Verlet with its springs held as constraints (no row)
   Damping damping;
-  double deviation = 0.0;        ///< the largest difference from that row, in units of a step's motion
+  double deviation = 0.0;  ///< the largest difference from that row, in units of a step's motion
   /// Matched only to float's rounding (the code computes in float): `deviation` was within the
   /// floor float's rounding of the forces gives, `float_floor`, and above double's.
   bool in_float = false;
@@ -148,7 +150,8 @@ struct Identified {
 struct Report {
   std::vector<CheckSection> sections;
   Identified euler, verlet;
-  /// The steps were checked on springlab's rope (the constructor was not right, or is not the code's).
+  /// The steps were checked on springlab's rope (the constructor was not right, or is not the
+  /// code's).
   bool springlab_rope = false;
   /// The code's own constructor was checked and found wrong.
   bool constructor_wrong = false;
@@ -164,14 +167,16 @@ Report check_rope(RopeCode& code);
 /// A whole step of the student's own, over springlab's state (Python's fn(x, v, force, h) ->
 /// (x, v), with force(x, v) the core's accelerations): (x, v) advanced by h on `model`, the
 /// forces asked for through accelerations(model, x, v, a, ws). As SimulationSettings::own_step.
-using OwnStep = std::function<void(const Model& model, const State& in, State& out, double h, Workspace& ws)>;
+using OwnStep =
+    std::function<void(const Model& model, const State& in, State& out, double h, Workspace& ws)>;
 
 /// The same checks for such a step: which of springlab's fixed-step rows it is (on the rope
 /// falling from rest, step by step from its own states), whether it holds a pin, then its order,
 /// stability and energy on the spring against that row's. `name` names it in the report.
 /// `single_precision`, where given, says after the step's first call whether it returned its
 /// arrays in single precision (NumPy's float32): its positions are then judged to float's rounding.
-Report check_step(const OwnStep& step, const std::string& name, const bool* single_precision = nullptr);
+Report check_step(const OwnStep& step, const std::string& name,
+                  const bool* single_precision = nullptr);
 
 /// The report as `springlab homework check` prints it: a section a title, a line a check
 /// ("  ok    ...", "  FAIL  ...", "        ..."), and a last line counting them. Its words are in

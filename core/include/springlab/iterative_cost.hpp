@@ -22,7 +22,9 @@ bool at_rest(const Model& model, const State& state, double energy_scale);
 // where no collider acts. Contacts' impacts and friction take energy the account does not count
 // apart (the jelly on its ground, 8 s: symplectic Euler's remainder -11 J, VBD's -9.7 J; the
 // chain, 20 s, no collider: symplectic Euler's 8e-5 J, VBD's 0.30 J, its own damping).
-inline bool energy_account_closed(const Model& model) { return !model.has_colliders(); }
+inline bool energy_account_closed(const Model& model) {
+  return !model.has_colliders();
+}
 
 // Springs' lengths over their rest lengths, sum l / sum L over the springs with stiffness: a
 // chain's length against its own (2: it hangs at twice its length).
@@ -34,9 +36,9 @@ double length_ratio(const Model& model, const State& state);
 // springs carry no load, and "acts as k_s x" means nothing there.
 bool loaded_balance(const Model& model);
 
-// A settled state's stretch against the spring model's at the same load (loaded_balance only): its equilibrium
-// (stability.hpp) from `settled`. Under a load the stretch goes as 1 / k, so the springs act as
-// if their stiffness were k_s * ratio().
+// A settled state's stretch against the spring model's at the same load (loaded_balance only): its
+// equilibrium (stability.hpp) from `settled`. Under a load the stretch goes as 1 / k, so the
+// springs act as if their stiffness were k_s * ratio().
 struct Softness {
   double stretch = 0.0;        // m, RMS, the settled state's
   double model_stretch = 0.0;  // m, RMS, the spring model's equilibrium's

@@ -34,15 +34,16 @@ inline constexpr int kMaxTitle = 60;
 // is measured). Times are seconds into the step (presentation time).
 struct LessonClaim {
   enum class Kind {
-    EnergyGrows,      // lane's total energy rises; with per_step, by that factor a step
-    EnergyDecays,     // falls by more than 5 % of the energy scale; with per_step, by that factor a step
-    EnergyBounded,    // stays within `within` of the energy scale of its start
-    Diverges,         // the lane diverges (or goes unstable) by `by`
-    Holds,            // the lane neither diverges nor goes unstable
-    FollowsExact,     // the watched particle stays within `within` m of the exact solution
-    Limit,            // the stated stability limit is `h` to within `within` (relative)
-    StepsAdapt,       // an adaptive lane rejects tries, and its step varies by `ratio` or more
-    MomentumKept,     // the free particles' momentum and angular momentum are unchanged to `within`
+    EnergyGrows,    // lane's total energy rises; with per_step, by that factor a step
+    EnergyDecays,   // falls by more than 5 % of the energy scale; with per_step, by that factor a
+                    // step
+    EnergyBounded,  // stays within `within` of the energy scale of its start
+    Diverges,       // the lane diverges (or goes unstable) by `by`
+    Holds,          // the lane neither diverges nor goes unstable
+    FollowsExact,   // the watched particle stays within `within` m of the exact solution
+    Limit,          // the stated stability limit is `h` to within `within` (relative)
+    StepsAdapt,     // an adaptive lane rejects tries, and its step varies by `ratio` or more
+    MomentumKept,   // the free particles' momentum and angular momentum are unchanged to `within`
     LinearMomentumKept,     // the momentum P alone, to `within` of sum m |v| (momentum.hpp)
     LinearMomentumChanges,  // P changes by more than `above` of sum m |v|: the method breaks it
     DragSlows,        // the centre of mass slows as exp(-k_drag t / m), to `within` (relative)
@@ -77,17 +78,18 @@ enum class LessonChart { Energy, Position, Phase, Steps, Region, Momentum };
 
 struct LessonStep {
   std::string title;
-  std::string scene;              // as written: a shipped scene's name, or a path from the lesson's folder
+  std::string scene;  // as written: a shipped scene's name, or a path from the lesson's folder
   std::vector<std::string> sets;  // "KEY=VALUE", as --set
   std::optional<Method> method;
   std::vector<std::string> compare;  // 2 to 4 methods, or an IK scene's solvers
   std::optional<double> dt, ks, kd;
-  std::optional<int> substeps;  // 0: automatic
+  std::optional<int> substeps;    // 0: automatic
   std::optional<int> iterations;  // xpbd, local-global, vbd
-  double duration = 6.0;        // s of presentation time
+  double duration = 6.0;          // s of presentation time
   double speed = 1.0;
   std::vector<LessonChart> charts{LessonChart::Energy};  // one or two
-  bool region = false, accuracy = false, mode = false;  // the stability region, the accuracy panel, the limiting mode
+  bool region = false, accuracy = false,
+       mode = false;            // the stability region, the accuracy panel, the limiting mode
   Script script;                // may have no events
   std::string caption, prompt;  // prompt: "try this", may be empty
   std::vector<LessonClaim> claims;
@@ -103,12 +105,15 @@ struct Lesson {
 
 // Opens a step's scene: `scene` as written in the lesson, with its --set overrides. Throws
 // InputError (its message is put after the field's path).
-using LessonSceneOpener = std::function<Scene(const std::string& scene, const std::vector<std::string>& sets)>;
+using LessonSceneOpener =
+    std::function<Scene(const std::string& scene, const std::vector<std::string>& sets)>;
 
 // Finds a method a lesson names (a step's method, its lanes, its claims): the table's rows by
 // default; the app also opens tableaux by name (a shipped one, or a file), adding their rows.
 using LessonMethodFinder = std::function<std::optional<Method>(const std::string& name)>;
-inline std::optional<Method> find_table_method(const std::string& name) { return find_method(name); }
+inline std::optional<Method> find_table_method(const std::string& name) {
+  return find_method(name);
+}
 
 Lesson parse_lesson(const std::string& text, const std::string& file, const LessonSceneOpener& open,
                     const LessonMethodFinder& find = find_table_method);

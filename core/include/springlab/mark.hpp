@@ -8,9 +8,18 @@ namespace springlab {
 /// that they are told apart by more than colour: filled, hollow, or strokes.
 enum class Mark {
   None,
-  Circle, Square, Diamond, TriangleUp, TriangleDown,                       // filled
-  RingCircle, RingSquare, RingDiamond, RingTriangleUp, RingTriangleDown,  // hollow
-  Plus, Cross,                                                            // strokes
+  Circle,
+  Square,
+  Diamond,
+  TriangleUp,
+  TriangleDown,  // filled
+  RingCircle,
+  RingSquare,
+  RingDiamond,
+  RingTriangleUp,
+  RingTriangleDown,  // hollow
+  Plus,
+  Cross,  // strokes
 };
 
 }  // namespace springlab

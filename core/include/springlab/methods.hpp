@@ -3,8 +3,8 @@
 //
 // Every step function advances a state by exactly h (adaptive methods take as many internal
 // steps as their tolerance needs to get there), reading `in` and writing `out`, and counts its
-// work in the workspace. docs/numerics.md ("Integrators") gives each update; the files in src/methods/ implement
-// them, one method a file.
+// work in the workspace. docs/numerics.md ("Integrators") gives each update; the files in
+// src/methods/ implement them, one method a file.
 #pragma once
 
 #include <Eigen/Core>
@@ -17,12 +17,12 @@
 #include <string>
 #include <string_view>
 
+#include "springlab/butcher.hpp"
 #include "springlab/energy.hpp"
-#include "springlab/mark.hpp"
 #include "springlab/forces.hpp"
+#include "springlab/mark.hpp"
 #include "springlab/model.hpp"
 #include "springlab/state.hpp"
-#include "springlab/butcher.hpp"
 #include "springlab/tableau.hpp"
 
 namespace springlab {
@@ -60,7 +60,8 @@ struct StepSettings {
   /// particles (reached only when the system is ill-posed). The solver-error study sets it.
   int max_solver_iterations = 0;
   /// xpbd, local-global, vbd: iterations a step (xpbd: Gauss-Seidel passes over the springs, one
-  /// a sub-step in the small-steps form); 0: the row's own default (MethodInfo::default_iterations).
+  /// a sub-step in the small-steps form); 0: the row's own default
+  /// (MethodInfo::default_iterations).
   int iterations = 0;
   /// local-global: Chebyshev acceleration (Wang 2015) with this estimate of the plain
   /// iteration's spectral radius, in [0, 1); 0: off.
@@ -69,14 +70,15 @@ struct StepSettings {
 
 /// Work done, summed over steps. The machine-independent cost of a run.
 struct Counters {
-  std::int64_t force_evals = 0;        ///< evaluations of f(x, v) over all particles
-  std::int64_t linear_solves = 0;      ///< implicit-euler: one per step
-  std::int64_t solver_iterations = 0;  ///< conjugate-gradient iterations
-  std::int64_t unconverged_solves = 0; ///< solves stopped by the iteration cap
-  std::int64_t newton_corrections = 0; ///< a diagonally implicit tableau's stages: Newton's corrections
-  std::int64_t halved_steps = 0;       ///< its steps taken as two halves, their stages not solved whole
-  std::int64_t accepted = 0;           ///< internal steps kept (h-steps for fixed-step methods)
-  std::int64_t rejected = 0;           ///< adaptive tries thrown away
+  std::int64_t force_evals = 0;         ///< evaluations of f(x, v) over all particles
+  std::int64_t linear_solves = 0;       ///< implicit-euler: one per step
+  std::int64_t solver_iterations = 0;   ///< conjugate-gradient iterations
+  std::int64_t unconverged_solves = 0;  ///< solves stopped by the iteration cap
+  std::int64_t newton_corrections =
+      0;                          ///< a diagonally implicit tableau's stages: Newton's corrections
+  std::int64_t halved_steps = 0;  ///< its steps taken as two halves, their stages not solved whole
+  std::int64_t accepted = 0;      ///< internal steps kept (h-steps for fixed-step methods)
+  std::int64_t rejected = 0;      ///< adaptive tries thrown away
 };
 
 struct ImplicitSolver;    // implicit_euler.cpp
@@ -93,9 +95,10 @@ struct Workspace {
 
   Counters counters;
   SpringForces spring_forces;
-  std::vector<Points> stage_dx, stage_dv;  ///< Runge-Kutta stage derivatives (dx/dt, dv/dt), one a stage
-  Points stage_x, stage_v;                 ///< a stage's state (adaptive Euler: the state after half a step)
-  Points trial_x, trial_v;                 ///< a trial step's result (adaptive methods: kept if accepted)
+  std::vector<Points> stage_dx,
+      stage_dv;             ///< Runge-Kutta stage derivatives (dx/dt, dv/dt), one a stage
+  Points stage_x, stage_v;  ///< a stage's state (adaptive Euler: the state after half a step)
+  Points trial_x, trial_v;  ///< a trial step's result (adaptive methods: kept if accepted)
 
   /// Verlet: the previous positions and a(x) at the current positions, valid while `verlet_ready`.
   Points x_prev, a_now;
@@ -103,7 +106,8 @@ struct Workspace {
   double verlet_h = 0.0;
 
   /// Adaptive methods: the internal step to try next (0: start from h), and whether rk45's
-  /// first-same-as-last derivative (ws.stage_dx[0], ws.stage_dv[0]) is that of the state it is given next.
+  /// first-same-as-last derivative (ws.stage_dx[0], ws.stage_dv[0]) is that of the state it is
+  /// given next.
   double adaptive_step = 0.0;
   bool fsal_ready = false;
 
@@ -135,8 +139,9 @@ struct Workspace {
 using StepFunction = void (*)(const Model& model, const State& in, State& out, double h,
                               const StepSettings& settings, Workspace& ws);
 /// The step of a row made from a tableau (add_tableau_method): the same, given the row's tableau.
-using TableauStepFunction = void (*)(const Tableau& tableau, const Model& model, const State& in, State& out,
-                                     double h, const StepSettings& settings, Workspace& ws);
+using TableauStepFunction = void (*)(const Tableau& tableau, const Model& model, const State& in,
+                                     State& out, double h, const StepSettings& settings,
+                                     Workspace& ws);
 
 /// A step that cannot be completed (an adaptive step below its floor). The simulation reports it
 /// as a divergence.
@@ -152,7 +157,8 @@ struct SolveFailure : StepFailure {
 
 /// How a method steps, which decides how its stability is found, drawn and watched.
 enum class MethodFamily {
-  RungeKutta,   ///< explicit Runge-Kutta: its tableau gives R(z); a mode is stable while |R(h lambda)| <= 1
+  RungeKutta,   ///< explicit Runge-Kutta: its tableau gives R(z); a mode is stable while |R(h
+                ///< lambda)| <= 1
   Partitioned,  ///< x and v in turn (no R(z)): a closed form per damped mode, the oscillator plane
   Implicit,     ///< solves for the new state: A-stable, |R(z)| <= 1 on the whole left half plane
   Adaptive,     ///< chooses its own steps: no fixed-step limit
@@ -180,8 +186,8 @@ enum class Kept { Exactly, ToSolverTolerance, No };
 /// "kept", "kept to the solver's tolerance", "not kept".
 const char* kept_text(Kept kept);
 struct MethodInfo;
-/// What a row keeps, as docs/methods.md's table writes it: "P", "P, L", "P to the solver's tolerance",
-/// "neither".
+/// What a row keeps, as docs/methods.md's table writes it: "P", "P, L", "P to the solver's
+/// tolerance", "neither".
 std::string kept_summary(const MethodInfo& method);
 
 /// A row of the method table: everything a method says of itself. Its name, order, cost,
@@ -248,7 +254,9 @@ struct MethodInfo {
   bool adaptive() const { return family == MethodFamily::Adaptive; }
   bool implicit() const { return family == MethodFamily::Implicit; }
   /// Stable at any step: no limit to find, no sub-steps to choose.
-  bool any_step() const { return family == MethodFamily::Implicit || family == MethodFamily::Iterative; }
+  bool any_step() const {
+    return family == MethodFamily::Implicit || family == MethodFamily::Iterative;
+  }
   /// Never stable without damping, so damping can buy a limit.
   bool damping_helps() const { return undamped_limit == 0.0; }
 };

@@ -86,7 +86,8 @@ struct Model {
   std::vector<SphereCollider> spheres;
   double particle_radius = 0.0;  ///< m: particles touch colliders at this distance
 
-  /// The "damping" factor of position Verlet (the rope exercise): x1 = x + (1 - d)(x - x_prev) + ...
+  /// The "damping" factor of position Verlet (the rope exercise): x1 = x + (1 - d)(x - x_prev) +
+  /// ...
   double verlet_damping = 0.0;
 
   int particle_count() const { return static_cast<int>(mass.size()); }

@@ -52,7 +52,7 @@ struct IkScene {
   int target = 0;                 ///< particle
   std::vector<IkSolver> solvers;  ///< to show side by side; the first is the default
   IkSettings settings;
-  int iterations_per_frame = 1;   ///< shown one at a time, so that convergence can be watched
+  int iterations_per_frame = 1;  ///< shown one at a time, so that convergence can be watched
 };
 
 /// A loaded scene: its Model and initial State, and what the app and the renderer need (the
@@ -65,7 +65,7 @@ struct Scene {
   State state;
   std::vector<Method> methods;  ///< to show side by side; the first is the default
   double dt = 0.01;
-  int substeps = 0;  ///< 0: automatic (stability.hpp, choose_substeps)
+  int substeps = 0;     ///< 0: automatic (stability.hpp, choose_substeps)
   double safety = 0.5;  ///< the fraction of the limit automatic sub-steps keep h within
   double duration = 10.0;
   double tolerance = 1e-4;

@@ -23,23 +23,39 @@ struct [[gnu::packed]] Unaligned {
   f64x4 v;
 };
 
-inline f64x4 load(const double* p) { return reinterpret_cast<const Unaligned*>(p)->v; }
-inline void store(double* p, f64x4 v) { reinterpret_cast<Unaligned*>(p)->v = v; }
-inline void store(double* p, double v) { *p = v; }
+inline f64x4 load(const double* p) {
+  return reinterpret_cast<const Unaligned*>(p)->v;
+}
+inline void store(double* p, f64x4 v) {
+  reinterpret_cast<Unaligned*>(p)->v = v;
+}
+inline void store(double* p, double v) {
+  *p = v;
+}
 
 // load as the type T: `at<f64x4>(p)` reads p[0..3], `at<double>(p)` reads p[0].
 template <typename T>
 T at(const double* p) {
-  if constexpr (sizeof(T) == sizeof(double)) return *p;
-  else return load(p);
+  if constexpr (sizeof(T) == sizeof(double))
+    return *p;
+  else
+    return load(p);
 }
 
-inline f64x4 sqrt(f64x4 v) { return f64x4{std::sqrt(v[0]), std::sqrt(v[1]), std::sqrt(v[2]), std::sqrt(v[3])}; }
-inline double sqrt(double v) { return std::sqrt(v); }
+inline f64x4 sqrt(f64x4 v) {
+  return f64x4{std::sqrt(v[0]), std::sqrt(v[1]), std::sqrt(v[2]), std::sqrt(v[3])};
+}
+inline double sqrt(double v) {
+  return std::sqrt(v);
+}
 
 // x where a > b, else 0 (lane by lane): a compare and a mask, no branch.
-inline f64x4 where_greater(f64x4 a, double b, f64x4 x) { return a > b ? x : f64x4{}; }
-inline double where_greater(double a, double b, double x) { return a > b ? x : 0.0; }
+inline f64x4 where_greater(f64x4 a, double b, f64x4 x) {
+  return a > b ? x : f64x4{};
+}
+inline double where_greater(double a, double b, double x) {
+  return a > b ? x : 0.0;
+}
 
 // v's lanes [0, count), zeros above.
 inline f64x4 first_lanes(f64x4 v, int count) {
@@ -52,12 +68,17 @@ inline f64x4 first_lanes(f64x4 v, int count) {
 template <int K>
 f64x4 shifted_in(f64x4 prev, f64x4 cur) {
   static_assert(K >= 1 && K <= 3);
-  if constexpr (K == 1) return __builtin_shufflevector(prev, cur, 3, 4, 5, 6);
-  else if constexpr (K == 2) return __builtin_shufflevector(prev, cur, 2, 3, 4, 5);
-  else return __builtin_shufflevector(prev, cur, 1, 2, 3, 4);
+  if constexpr (K == 1)
+    return __builtin_shufflevector(prev, cur, 3, 4, 5, 6);
+  else if constexpr (K == 2)
+    return __builtin_shufflevector(prev, cur, 2, 3, 4, 5);
+  else
+    return __builtin_shufflevector(prev, cur, 1, 2, 3, 4);
 }
 
 // (v0 + v1) + (v2 + v3): a fixed order, so the same bits every time.
-inline double sum(f64x4 v) { return (v[0] + v[1]) + (v[2] + v[3]); }
+inline double sum(f64x4 v) {
+  return (v[0] + v[1]) + (v[2] + v[3]);
+}
 
 }  // namespace springlab::simd

@@ -49,7 +49,8 @@ struct SimulationSettings {
   bool analyse_when_needed = true;
   StepSettings step;
   int energy_check_interval = 16;  ///< steps between divergence checks of the total energy
-  bool track_dissipation = false;  ///< integrate the dissipated power (free with the explicit methods)
+  bool track_dissipation =
+      false;  ///< integrate the dissipated power (free with the explicit methods)
   /// The audit's floor as a fraction of the energy scale (0: no audit). Which methods it watches,
   /// and why: Simulation::audited().
   double audit_fraction = kAuditFraction;
@@ -65,7 +66,8 @@ struct SimulationSettings {
   /// that needs a row's theory reads it (no stability analysis explains its divergence, no audit
   /// watches it, sub-steps stay as set); the divergence tests watch it as any step. It counts its
   /// force evaluations through `ws` (accelerations(), methods.hpp). Named `own_step_name`.
-  std::function<void(const Model& model, const State& in, State& out, double h, Workspace& ws)> own_step;
+  std::function<void(const Model& model, const State& in, State& out, double h, Workspace& ws)>
+      own_step;
   std::string own_step_name;
 };
 
@@ -74,11 +76,11 @@ struct SimulationSettings {
 struct Scene;
 SimulationSettings settings_for(const Scene& scene);
 
-/// docs/numerics.md, "Divergence": a run has diverged when a position or velocity is not finite, or when the total
-/// energy exceeds 1e6 times the scene's energy scale; an adaptive step below its floor too. The
-/// kinetic energy is tested every step (cheap), the total every energy_check_interval steps.
-/// The audit (above) reports a run that went numerically unstable the same way, even when the
-/// growth saturates and nothing becomes infinite.
+/// docs/numerics.md, "Divergence": a run has diverged when a position or velocity is not finite, or
+/// when the total energy exceeds 1e6 times the scene's energy scale; an adaptive step below its
+/// floor too. The kinetic energy is tested every step (cheap), the total every
+/// energy_check_interval steps. The audit (above) reports a run that went numerically unstable the
+/// same way, even when the growth saturates and nothing becomes infinite.
 inline constexpr double kDivergenceFactor = 1e6;
 /// Scenes with at most this many particles and springs have their total energy checked every step.
 inline constexpr int kSmallScene = 512;
@@ -156,7 +158,9 @@ class Simulation {
   bool substeps_provisional() const { return provisional_; }
   /// Whether a step can be taken now without the analysis: false only for automatic sub-steps
   /// with neither the analysis nor a quick bound that tells (the app's lane waits).
-  bool ready() const { return !settings_.auto_substeps || stability_ || provisional_ || settings_.analyse_when_needed; }
+  bool ready() const {
+    return !settings_.auto_substeps || stability_ || provisional_ || settings_.analyse_when_needed;
+  }
   void set_analyse_when_needed(bool on);
   /// The model and state an analysis must be made from to be the one stability() would make.
   /// Changes every time the model or the pinning changes (a counter, compared by the app).
@@ -183,7 +187,9 @@ class Simulation {
   void set_method(Method method);
   /// A step of one's own (SimulationSettings::own_step) in place of the row's, from the next step;
   /// `method` stays the row that stands for it. An empty step goes back to the row.
-  void set_own_step(std::function<void(const Model&, const State&, State&, double, Workspace&)> step, std::string name);
+  void set_own_step(
+      std::function<void(const Model&, const State&, State&, double, Workspace&)> step,
+      std::string name);
   void set_dt(double dt);
   void set_substeps(int substeps);  ///< fixes them (automatic sub-steps off)
   void set_auto_substeps(double safety = kSafeFraction);
@@ -195,8 +201,8 @@ class Simulation {
   void set_gravity(const Vec3& g);
   void set_drag(double drag);
   void set_verlet_damping(double d);  ///< position Verlet's factor d (Model::verlet_damping)
-  void set_friction(double mu);  ///< every collider
-  void set_mass(double mass);    ///< every particle, and the emitters' new ones
+  void set_friction(double mu);       ///< every collider
+  void set_mass(double mass);         ///< every particle, and the emitters' new ones
 
   /// Dragging a particle: while grabbed it is pinned and moves with the velocity that brings it to
   /// the target in `over` seconds of simulated time; released, it keeps that velocity.
@@ -258,8 +264,8 @@ class Simulation {
   std::optional<Divergence> instability_;
   bool has_stiffness_ = false;
   bool substeps_capped_ = false;
-  bool provisional_ = false;   // the sub-steps come from quick_limit()
-  bool quick_tried_ = false;   // since the last change: quick_limit() could not tell
+  bool provisional_ = false;  // the sub-steps come from quick_limit()
+  bool quick_tried_ = false;  // since the last change: quick_limit() could not tell
 };
 
 }  // namespace springlab

@@ -35,7 +35,7 @@ struct SolverErrorStudy {
 };
 
 // Up to max_iterations (1, 2, 4, ... ); `settings` gives the rest (local-global's rho).
-SolverErrorStudy solver_error(const Model& model, const State& state, double h, int max_iterations = 64,
-                              const StepSettings& settings = {});
+SolverErrorStudy solver_error(const Model& model, const State& state, double h,
+                              int max_iterations = 64, const StepSettings& settings = {});
 
 }  // namespace springlab

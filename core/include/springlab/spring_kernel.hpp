@@ -22,8 +22,12 @@ namespace springlab {
 // coincident.
 inline constexpr double kCoincident = 1e-12;
 
-inline double coincident_length(double rest) { return kCoincident * (rest > 1.0 ? rest : 1.0); }
-inline bool coincident(double l, double rest) { return l <= coincident_length(rest); }
+inline double coincident_length(double rest) {
+  return kCoincident * (rest > 1.0 ? rest : 1.0);
+}
+inline bool coincident(double l, double rest) {
+  return l <= coincident_length(rest);
+}
 
 // The factor s of f_a = s d, from l2 = |d|^2 and rate = dv . d:
 //   s = (k_s (l - L) + k_d rate / l) / l
@@ -47,8 +51,8 @@ inline T spring_scale(T l2, T rate, double ks, double kd, double rest, T* power 
 
 // Force on end a.
 inline Eigen::Vector3d spring_force(const Eigen::Vector3d& xa, const Eigen::Vector3d& xb,
-                                    const Eigen::Vector3d& va, const Eigen::Vector3d& vb,
-                                    double ks, double kd, double rest) {
+                                    const Eigen::Vector3d& va, const Eigen::Vector3d& vb, double ks,
+                                    double kd, double rest) {
   // The very arithmetic of the force pass (force_pass.hpp), so both give the same bits.
   const Eigen::Vector3d d = xb - xa;
   const Eigen::Vector3d dv = vb - va;

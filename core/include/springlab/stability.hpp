@@ -36,10 +36,10 @@
 
 #include <atomic>
 #include <complex>
-#include <mutex>
 #include <deque>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -67,7 +67,8 @@ double amplification(Method method, double w, double c, double h, double verlet_
 /// |S^n|^2 in the energy norm (kappa x^2 + v^2) / 2, S that step as a matrix. 1 for a normal
 /// contraction; above 1 where S is far from normal (near critical damping, near a limit);
 /// infinity where the mode grows (and for Verlet, whose state holds a history).
-double transient_growth(Method method, double gamma, double kappa, double h, double verlet_damping = 0.0);
+double transient_growth(Method method, double gamma, double kappa, double h,
+                        double verlet_damping = 0.0);
 
 // ---- The equilibrium ----------------------------------------------------------------------------
 
@@ -88,10 +89,10 @@ double lowest_energy(const Model& model, const State& rest);
 
 /// The mode that sets a method's limit: one damped mode of the linearised scene.
 struct LimitingMode {
-  double w = 0.0;  ///< rad/s
-  double c = 0.0;  ///< 1/s, the damping rate: the mode decays as e^(-c t / 2)
+  double w = 0.0;                ///< rad/s
+  double c = 0.0;                ///< 1/s, the damping rate: the mode decays as e^(-c t / 2)
   double damping_ratio() const;  ///< c / (2 w)
-  Points shape;    ///< each particle's displacement in the mode, the largest of length 1
+  Points shape;  ///< each particle's displacement in the mode, the largest of length 1
 };
 
 /// A method's largest stable step on a scene, exact or a lower bound, and the mode that sets it.
@@ -132,10 +133,10 @@ class StabilityAnalysis {
   /// why ("no springs", "every particle is pinned"), and the limits come from the drag alone.
   bool oscillates() const { return oscillates_; }
   const std::string& no_modes_reason() const { return no_modes_; }
-  double w_max() const { return w_max_; }    // rad/s, the highest frequency (undamped)
+  double w_max() const { return w_max_; }      // rad/s, the highest frequency (undamped)
   double w_bound() const { return w_bound_; }  // rad/s, Gershgorin's bound on it
-  bool dense() const { return dense_; }      // every eigenvalue computed
-  int dofs() const { return dofs_; }         // free coordinates
+  bool dense() const { return dense_; }        // every eigenvalue computed
+  int dofs() const { return dofs_; }           // free coordinates
   double seconds() const { return seconds_; }  // what the analysis took, wall time
 
   const StabilityLimit& limit(Method method) const;
@@ -187,7 +188,8 @@ class StabilityAnalysis {
   double rest_stretch_ = 0.0;
 };
 
-// ---- A quick bound, while the analysis runs -------------------------------------------------------
+// ---- A quick bound, while the analysis runs
+// -------------------------------------------------------
 
 /// A step every mode of the scene as it is takes stably, from bounds that cost one pass over the
 /// springs (no equilibrium, no eigenvalues: milliseconds on a 128 x 128 cloth). Every mode's
@@ -244,7 +246,8 @@ struct MeasuredLimit {
   bool at_least = false;
 };
 /// `w_max` sets the scale when the expected limit has no mode (0 or infinity).
-MeasuredLimit measured_limit(Method method, const Model& model, const State& state, const StabilityLimit& expected,
-                             double w_max, const StepSettings& settings = {}, double budget = 2e8);
+MeasuredLimit measured_limit(Method method, const Model& model, const State& state,
+                             const StabilityLimit& expected, double w_max,
+                             const StepSettings& settings = {}, double budget = 2e8);
 
 }  // namespace springlab

@@ -10,7 +10,8 @@
 namespace springlab {
 
 namespace detail {
-using PointsMap = Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 3>, Eigen::Aligned64, Eigen::OuterStride<>>;
+using PointsMap =
+    Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 3>, Eigen::Aligned64, Eigen::OuterStride<>>;
 }
 
 /// N x 3 doubles (positions, velocities, forces), column-major: x | y | z. Its columns are not N

@@ -1,5 +1,5 @@
-// Accuracy against cost (docs/numerics.md, "Accuracy and cost"): every method run on one scene over a
-// range of steps (adaptive methods: of tolerances), each run's error against a reference, its
+// Accuracy against cost (docs/numerics.md, "Accuracy and cost"): every method run on one scene over
+// a range of steps (adaptive methods: of tolerances), each run's error against a reference, its
 // cost, the order fitted to its errors, its largest stable step measured and from theory, and
 // the energy each method gains or loses over a long run. What `springlab compare` and the app's
 // Compare panel chart.
@@ -15,8 +15,8 @@
 #include <functional>
 #include <limits>
 #include <memory>
-#include <utility>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "springlab/methods.hpp"
@@ -38,7 +38,8 @@ struct SweepSettings {
   int workers = 0;                         ///< threads running runs at once; 0: every core
   StepSettings step;
   bool stability = true;  ///< measure each method's largest stable step
-  double stability_budget = 2e8;  ///< particle- and spring-steps per method for that (stability.hpp)
+  double stability_budget =
+      2e8;  ///< particle- and spring-steps per method for that (stability.hpp)
   /// The energy-drift runs: each method at this step for this long (0: no drift runs), with these
   /// sub-steps (automatic, as the app and `run` choose them, or fixed).
   double drift_h = 0.0, drift_duration = 0.0;
@@ -50,7 +51,7 @@ struct SweepSettings {
 /// One run of a sweep: a method at one step (or tolerance), its error and its cost.
 struct SweepRun {
   Method method = Method::Euler;
-  double h = 0.0;          ///< the outer step: samples are every H / h of them
+  double h = 0.0;  ///< the outer step: samples are every H / h of them
   /// Adaptive methods: the tolerance; NaN for a fixed-step run (an adaptive method then accepts
   /// every try: its order is measured that way, like everyone's).
   double tolerance = std::numeric_limits<double>::quiet_NaN();
@@ -82,7 +83,8 @@ struct MethodSummary {
   /// measured_resolution (relative), and the analysis's (exact, or a lower bound).
   double measured_stable_h = std::numeric_limits<double>::quiet_NaN();
   double measured_resolution = 0.0;
-  bool measured_at_least = false;  ///< the budget ran out with every probe held: stable at least to it
+  bool measured_at_least =
+      false;  ///< the budget ran out with every probe held: stable at least to it
   double theoretical_stable_h = std::numeric_limits<double>::quiet_NaN();
   bool theory_exact = true;
 };
@@ -90,7 +92,7 @@ struct MethodSummary {
 /// A method's energy drift at the scene's own step, over time.
 struct DriftTrace {
   Method method = Method::Euler;
-  int substeps = 1;  ///< chosen, or as given
+  int substeps = 1;              ///< chosen, or as given
   std::vector<double> t, drift;  ///< drift = (E + dissipated - E0) / energy scale
   bool diverged = false;
 };
@@ -157,8 +159,8 @@ double fitted_order(const std::vector<SweepRun>& runs, Method method, double flo
 /// is no lower than half the least error of the coarser runs are the floor (at least two of them,
 /// and never so many that fewer than three are left to fit); `summary` gets the order, the points
 /// fitted and the floor's level and step.
-void fit_order_above_floor(const std::vector<SweepRun>& runs, Method method, double floor, double ceiling,
-                           MethodSummary& summary);
+void fit_order_above_floor(const std::vector<SweepRun>& runs, Method method, double floor,
+                           double ceiling, MethodSummary& summary);
 
 /// The n of the steps H / n: `count` whole numbers from 1 to about H / h_min, log-spaced,
 /// distinct.

@@ -28,7 +28,7 @@ struct Catalog {
     std::size_t operator()(std::string_view s) const { return std::hash<std::string_view>{}(s); }
   };
   std::string language;  // "zh-CN": the header's Language
-  std::string name;      // "简体中文": the header's X-Language-Name, the language's own name for itself
+  std::string name;  // "简体中文": the header's X-Language-Name, the language's own name for itself
   std::unordered_map<std::string, std::string, Hash, std::equal_to<>> entries;
 };
 

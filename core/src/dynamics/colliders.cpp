@@ -35,7 +35,8 @@ ContactResult resolve_contacts(const Model& model, State& state) {
       Vec3 v = state.v.row(i).transpose();
       x -= depth * plane.normal;
       result.potential_gained += depth * model.mass[i] * model.gravity.dot(plane.normal);
-      result.kinetic_lost += respond(v, plane.normal, plane.friction, plane.restitution, model.mass[i]);
+      result.kinetic_lost +=
+          respond(v, plane.normal, plane.friction, plane.restitution, model.mass[i]);
       state.x.row(i) = x.transpose();
       state.v.row(i) = v.transpose();
       touched = true;

@@ -41,7 +41,8 @@ Emission::Emission(Model& model, State& state) {
   emitted_.assign(emitters, 0);
   pools_.resize(emitters);
   bursts_.resize(emitters);
-  const auto prepare = [&](const Pool& pool, PoolState& free, int owner, bool spark, const Vec3& at) {
+  const auto prepare = [&](const Pool& pool, PoolState& free, int owner, bool spark,
+                           const Vec3& at) {
     for (int i = pool.first; i < pool.first + pool.capacity; ++i) {
       free.free.push_back(i);
       owner_[i] = owner;
@@ -151,7 +152,8 @@ bool Emission::update(Model& model, State& state) {
   for (std::size_t k = 0; k < model.emitters.size(); ++k) {
     const Emitter& e = model.emitters[k];
     if (!(e.rate > 0.0) || t < e.start) continue;
-    const auto due = static_cast<std::int64_t>(std::floor((std::min(t, e.stop) - e.start) * e.rate)) + 1;
+    const auto due =
+        static_cast<std::int64_t>(std::floor((std::min(t, e.stop) - e.start) * e.rate)) + 1;
     // More than the pool can hold at once would only be dropped: skip them without drawing.
     if (due - emitted_[k] > e.pool.capacity) {
       dropped_ += due - emitted_[k] - e.pool.capacity;

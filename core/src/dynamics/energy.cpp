@@ -5,9 +5,9 @@
 #include <cmath>
 #include <vector>
 
+#include "dynamics/threads.hpp"
 #include "springlab/simd.hpp"
 #include "springlab/spring_kernel.hpp"
-#include "dynamics/threads.hpp"
 
 namespace springlab {
 
@@ -41,13 +41,16 @@ constexpr int kPiece = 4096;
 template <typename Part>
 double ordered_sum(int pieces, const Part& part) {
   std::vector<double> parts(static_cast<std::size_t>(pieces));
-  threads::for_each_piece(pieces, static_cast<double>(pieces) * kPiece, [&](int p) { parts[p] = part(p); });
+  threads::for_each_piece(pieces, static_cast<double>(pieces) * kPiece,
+                          [&](int p) { parts[p] = part(p); });
   double sum = 0.0;
   for (double v : parts) sum += v;
   return sum;
 }
 
-int pieces_of(int count) { return (count + kPiece - 1) / kPiece; }
+int pieces_of(int count) {
+  return (count + kPiece - 1) / kPiece;
+}
 
 // sum k_s (l - L)^2 / 2 over springs [lo, hi) (in the order finalize() left them), span by span
 // in chunks whose terms are summed with four running sums (in a fixed order).
@@ -60,7 +63,8 @@ double spring_energy_sum(const Model& model, const State& state, int lo, int hi)
   double term[kChunk];
   // The span holding spring lo: the last whose first spring is not after it.
   auto span = std::upper_bound(model.spans.begin(), model.spans.end(), lo,
-                               [](int s, const SpringSpan& sp) { return s < sp.first; }) - 1;
+                               [](int s, const SpringSpan& sp) { return s < sp.first; }) -
+              1;
   for (; span < model.spans.end() && span->first < hi; ++span) {
     const double half_ks = 0.5 * model.materials[span->material].ks;
     const int from = std::max(lo - span->first, 0), to = std::min(hi - span->first, span->count);
@@ -91,7 +95,9 @@ double spring_energy_sum(const Model& model, const State& state) {
 // lane_sum over all particles, piece by piece.
 template <typename Term>
 double particle_sum(int n, const Term& term) {
-  return ordered_sum(pieces_of(n), [&](int p) { return lane_sum(p * kPiece, std::min(n, (p + 1) * kPiece), term); });
+  return ordered_sum(pieces_of(n), [&](int p) {
+    return lane_sum(p * kPiece, std::min(n, (p + 1) * kPiece), term);
+  });
 }
 
 }  // namespace
@@ -116,8 +122,9 @@ Energy energy(const Model& model, const State& state) {
   return e;
 }
 
-
-double kinetic_energy(const Model& model, const State& state) { return probe(model, state).kinetic; }
+double kinetic_energy(const Model& model, const State& state) {
+  return probe(model, state).kinetic;
+}
 
 StepProbe probe(const Model& model, const State& state) {
   const int n = model.particle_count();
@@ -188,12 +195,13 @@ double dissipation_power(const Model& model, const State& state) {
   if (model.drag > 0.0) {
     const double* w = model.inv_mass.data();
     const double wind[3] = {model.wind.x(), model.wind.y(), model.wind.z()};
-    power += model.drag * lane_sum(0, model.particle_count(), [&]<typename T>(int i) {
-               using simd::at;
-               const T vx = at<T>(v[0] + i), vy = at<T>(v[1] + i), vz = at<T>(v[2] + i);
-               return simd::where_greater(at<T>(w + i), 0.0,
-                                          vx * (vx - wind[0]) + vy * (vy - wind[1]) + vz * (vz - wind[2]));
-             });
+    power +=
+        model.drag * lane_sum(0, model.particle_count(), [&]<typename T>(int i) {
+          using simd::at;
+          const T vx = at<T>(v[0] + i), vy = at<T>(v[1] + i), vz = at<T>(v[2] + i);
+          return simd::where_greater(
+              at<T>(w + i), 0.0, vx * (vx - wind[0]) + vy * (vy - wind[1]) + vz * (vz - wind[2]));
+        });
   }
   return power;
 }
@@ -214,17 +222,21 @@ double field_power(const Model& model, const State& state) {
     swirl.strength = 0.0;  // the pull is conservative: only the swirl's work
     for (int i = 0; i < model.particle_count(); ++i)
       if (!model.pinned(i))
-        power += model.mass[i] * field_acceleration(swirl, state.x.row(i).transpose()).dot(state.v.row(i).transpose());
+        power +=
+            model.mass[i] *
+            field_acceleration(swirl, state.x.row(i).transpose()).dot(state.v.row(i).transpose());
   }
   return power;
 }
 
-Vec3 held_force(const Model& model, const State& state, int particle, const std::vector<int>& springs) {
+Vec3 held_force(const Model& model, const State& state, int particle,
+                const std::vector<int>& springs) {
   Vec3 f = Vec3::Zero();
   for (int s : springs) {
     const int a = model.spring_a[s], b = model.spring_b[s];
-    const Vec3 fa = spring_force(state.x.row(a).transpose(), state.x.row(b).transpose(), state.v.row(a).transpose(),
-                                 state.v.row(b).transpose(), model.ks(s), model.kd(s), model.rest_length[s]);
+    const Vec3 fa = spring_force(state.x.row(a).transpose(), state.x.row(b).transpose(),
+                                 state.v.row(a).transpose(), state.v.row(b).transpose(),
+                                 model.ks(s), model.kd(s), model.rest_length[s]);
     f += a == particle ? fa : Vec3(-fa);
   }
   return f;

@@ -37,7 +37,8 @@ std::optional<EnergyAudit::Finding> EnergyAudit::decide(const Allowance& allowan
     // The energy of motion at the low (infinite where nothing bounds the energy from below), and
     // what a stable step lets N rise to: margin (G - 1) U, nothing at all when G = 1.
     const double motion = std::max(r.before.total - allowance.lowest_energy, 0.0);
-    const double allowed = allowance.growth > 1.0 ? kMargin * (allowance.growth - 1.0) * motion : 0.0;
+    const double allowed =
+        allowance.growth > 1.0 ? kMargin * (allowance.growth - 1.0) * motion : 0.0;
     const double rise = r.high - r.before.net;
     if (!(rise > allowed + floor)) continue;
     const bool in_a_row = r.index == last_exceeded_ + 1;

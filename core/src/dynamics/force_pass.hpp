@@ -32,10 +32,10 @@
 #include <thread>
 #include <type_traits>
 
+#include "dynamics/threads.hpp"
 #include "springlab/fields.hpp"
 #include "springlab/forces.hpp"
 #include "springlab/spring_kernel.hpp"
-#include "dynamics/threads.hpp"
 
 namespace springlab {
 
@@ -65,8 +65,12 @@ struct SpanLaw {
 enum class Law { Elastic, Damped, Measured };
 
 // Power accumulated four lanes at a time; a single spring's goes into lane 0.
-inline void accumulate(f64x4& sum, f64x4 power) { sum += power; }
-inline void accumulate(f64x4& sum, double power) { sum[0] += power; }
+inline void accumulate(f64x4& sum, f64x4 power) {
+  sum += power;
+}
+inline void accumulate(f64x4& sum, double power) {
+  sum[0] += power;
+}
 
 // g, the force on the a-ends of the springs between particles a (+ lane) and b (+ lane), and
 // with Law::Measured their damping's power: one spring for T = double, four for T = f64x4.
@@ -74,7 +78,8 @@ inline void accumulate(f64x4& sum, double power) { sum[0] += power; }
 // spring_force(). Always inlined: called out of line, its vectors go through memory (measured:
 // 30 instructions a spring a step instead of 23).
 template <Law kLaw, typename T>
-[[gnu::always_inline]] inline void spring_lanes(const SpringInput& in, int a, int b, SpanLaw law, T g[3], T& power) {
+[[gnu::always_inline]] inline void spring_lanes(const SpringInput& in, int a, int b, SpanLaw law,
+                                                T g[3], T& power) {
   using simd::at;
   constexpr bool kDamped = kLaw != Law::Elastic;
   const T dx = at<T>(in.x[0] + b) - at<T>(in.x[0] + a);
@@ -83,9 +88,11 @@ template <Law kLaw, typename T>
   const T l2 = dx * dx + dy * dy + dz * dz;
   T rate{};
   if constexpr (kDamped)
-    rate = (at<T>(in.v[0] + b) - at<T>(in.v[0] + a)) * dx + (at<T>(in.v[1] + b) - at<T>(in.v[1] + a)) * dy +
+    rate = (at<T>(in.v[0] + b) - at<T>(in.v[0] + a)) * dx +
+           (at<T>(in.v[1] + b) - at<T>(in.v[1] + a)) * dy +
            (at<T>(in.v[2] + b) - at<T>(in.v[2] + a)) * dz;
-  const T s = spring_scale<kDamped>(l2, rate, law.ks, law.kd, law.rest, kLaw == Law::Measured ? &power : nullptr);
+  const T s = spring_scale<kDamped>(l2, rate, law.ks, law.kd, law.rest,
+                                    kLaw == Law::Measured ? &power : nullptr);
   g[0] = s * dx;
   g[1] = s * dy;
   g[2] = s * dz;
@@ -117,8 +124,8 @@ inline void first_lanes(double[3], double&, int) {}
 // from it at the b-ends in the same loop (four springs at once never share a particle). F may be
 // read and written below `limit`.
 template <Law kLaw>
-void springs_both(const SpringInput& in, double* const F[3], int a, int b, int count, SpanLaw law, int limit,
-                  f64x4& power) {
+void springs_both(const SpringInput& in, double* const F[3], int a, int b, int count, SpanLaw law,
+                  int limit, f64x4& power) {
   const int whole = count / kLanes * kLanes;
   four_at_a_time(count, b + whole + kLanes <= limit, [&]<typename T>(int k, int lanes) {
     T g[3], p{};
@@ -140,13 +147,14 @@ void springs_both(const SpringInput& in, double* const F[3], int a, int b, int c
 // (g is 0 outside [0, count)); g_{k - kOffset} comes from the vector before by a shuffle, so
 // every force is loaded and stored once. F may be read and written below `limit`.
 template <Law kLaw, int kOffset>
-void springs_chain(const SpringInput& in, double* const F[3], int a, int count, SpanLaw law, int limit,
-                   f64x4& power) {
+void springs_chain(const SpringInput& in, double* const F[3], int a, int count, SpanLaw law,
+                   int limit, f64x4& power) {
   static_assert(kOffset >= 1 && kOffset < kLanes);
   f64x4 before[3] = {};  // g of the four springs before (zero before the first)
   const auto particles = [&](int k, const f64x4 g[3]) {
     for (int c = 0; c < 3; ++c) {
-      simd::store(F[c] + a + k, simd::load(F[c] + a + k) + (g[c] - simd::shifted_in<kOffset>(before[c], g[c])));
+      simd::store(F[c] + a + k,
+                  simd::load(F[c] + a + k) + (g[c] - simd::shifted_in<kOffset>(before[c], g[c])));
       before[c] = g[c];
     }
   };
@@ -181,7 +189,8 @@ void springs_chain(const SpringInput& in, double* const F[3], int a, int count, 
       for (int c = 0; c < 3; ++c) window[c][kLanes + j] = g[c];
       if constexpr (kLaw == Law::Measured) accumulate(power, p);
     }
-    for (int c = 0; c < 3; ++c) F[c][a + k + j] += window[c][kLanes + j] - window[c][kLanes + j - kOffset];
+    for (int c = 0; c < 3; ++c)
+      F[c][a + k + j] += window[c][kLanes + j] - window[c][kLanes + j - kOffset];
   }
 }
 
@@ -203,23 +212,30 @@ void springs_kept(const SpringInput& in, double* const F[3], int a, int b, int c
 // Springs [lo, hi) of a span whose b-ends are all in the block being summed, which ends at
 // particle `end`.
 template <Law kLaw>
-void springs_in_block(const SpringInput& in, double* const F[3], const SpringSpan& span, int lo, int hi,
-                      SpanLaw law, int end, f64x4& power) {
+void springs_in_block(const SpringInput& in, double* const F[3], const SpringSpan& span, int lo,
+                      int hi, SpanLaw law, int end, f64x4& power) {
   const int a = span.a0 + lo, count = hi - lo;
   switch (span.b0 - span.a0) {
-    case 1: return springs_chain<kLaw, 1>(in, F, a, count, law, end, power);
-    case 2: return springs_chain<kLaw, 2>(in, F, a, count, law, end, power);
-    case 3: return springs_chain<kLaw, 3>(in, F, a, count, law, end, power);
-    default: return springs_both<kLaw>(in, F, a, span.b0 + lo, count, law, end, power);
+    case 1:
+      return springs_chain<kLaw, 1>(in, F, a, count, law, end, power);
+    case 2:
+      return springs_chain<kLaw, 2>(in, F, a, count, law, end, power);
+    case 3:
+      return springs_chain<kLaw, 3>(in, F, a, count, law, end, power);
+    default:
+      return springs_both<kLaw>(in, F, a, span.b0 + lo, count, law, end, power);
   }
 }
 
 // Calls f with std::integral_constant<Law, ...> for a span of damping kd.
 template <typename F>
 void with_law(double kd, bool measured, const F& f) {
-  if (kd == 0.0) f(std::integral_constant<Law, Law::Elastic>{});
-  else if (measured) f(std::integral_constant<Law, Law::Measured>{});
-  else f(std::integral_constant<Law, Law::Damped>{});
+  if (kd == 0.0)
+    f(std::integral_constant<Law, Law::Elastic>{});
+  else if (measured)
+    f(std::integral_constant<Law, Law::Measured>{});
+  else
+    f(std::integral_constant<Law, Law::Damped>{});
 }
 
 // Waits until `flag` holds `value` (acquire): spins briefly, as the wait is usually short, then
@@ -352,7 +368,8 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
       using simd::at;
       const int i = begin + k;
       const T m = at<T>(mass + i);
-      for (int c = 0; c < 3; ++c) simd::store(F[c] + i, (m * g[c] + blow[c]) - drag * at<T>(V[c] + i));
+      for (int c = 0; c < 3; ++c)
+        simd::store(F[c] + i, (m * g[c] + blow[c]) - drag * at<T>(V[c] + i));
     });
     for (const Attractor& field : model.attractors)
       for (int i = begin; i < end; ++i) {
@@ -385,10 +402,12 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
       const SpringSpan& span = model.spans[piece.span];
       const int from = inside(piece, span, end);
       if (from == piece.hi) continue;
-      double* const kept[3] = {SF[0] + span.first + from, SF[1] + span.first + from, SF[2] + span.first + from};
+      double* const kept[3] = {SF[0] + span.first + from, SF[1] + span.first + from,
+                               SF[2] + span.first + from};
       const SpanLaw law = law_of(span);
       with_law(law.kd, measured, [&](auto kind) {
-        springs_kept<decltype(kind)::value>(in, F, span.a0 + from, span.b0 + from, piece.hi - from, law, kept, power);
+        springs_kept<decltype(kind)::value>(in, F, span.a0 + from, span.b0 + from, piece.hi - from,
+                                            law, kept, power);
       });
     }
     if (measured) block_power[blk] = simd::sum(power);
@@ -461,7 +480,8 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
   // back). A run's unclaimed blocks are one atomic word, the pass's number (24 bits), front and
   // back (20 bits each), set for every run before the team starts.
   const bool parallel = threads::worth_threads(springs + n);
-  const int team = parallel ? std::min(threads::max_team(), blocks) : 1;  // (a thread a block at most)
+  const int team =
+      parallel ? std::min(threads::max_team(), blocks) : 1;  // (a thread a block at most)
   plan.runs.resize(team);
   const std::uint64_t tag = pass_number & 0xFFFFFFu;
   const auto word = [tag](std::uint64_t front, std::uint64_t back) {
@@ -469,8 +489,8 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
   };
   const auto first_of = [&](int thread, int threads) { return blocks * thread / threads; };
   for (int r = 0; r < team; ++r)
-    threads::atomic_ref<std::uint64_t>(plan.runs[r]).store(word(first_of(r, team), first_of(r + 1, team)),
-                                                           std::memory_order_relaxed);
+    threads::atomic_ref<std::uint64_t>(plan.runs[r])
+        .store(word(first_of(r, team), first_of(r + 1, team)), std::memory_order_relaxed);
   // Claims a block of run r, from the front (its owner) or the back; -1 when none is left.
   const auto claim = [&](int r, bool front) {
     threads::atomic_ref<std::uint64_t> run(plan.runs[r]);
@@ -479,7 +499,8 @@ void force_pass(const Model& model, const Points& x, const Points& v, double* co
       const int f = static_cast<int>(old >> 20 & 0xFFFFF), b = static_cast<int>(old & 0xFFFFF);
       if (old >> 40 != tag || f >= b) return -1;  // not this pass's yet, or all claimed
       const std::uint64_t claimed = front ? word(f + 1, b) : word(f, b - 1);
-      if (run.compare_exchange_weak(old, claimed, std::memory_order_relaxed)) return front ? f : b - 1;
+      if (run.compare_exchange_weak(old, claimed, std::memory_order_relaxed))
+        return front ? f : b - 1;
     }
   };
   // A thread's number is its run's; the runs are the team's whoever comes to do them (alone, the

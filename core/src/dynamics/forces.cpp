@@ -25,7 +25,9 @@ void set_thread_count(int threads) {
   threads::set_max_team(threads > 0 ? threads : threads::processors());
 }
 
-int thread_count() { return threads::max_team(); }
+int thread_count() {
+  return threads::max_team();
+}
 
 TeamCounts team_counts() {
   const threads::Team::Counts c = threads::Team::counts();

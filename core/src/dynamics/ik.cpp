@@ -1,9 +1,10 @@
 #include "springlab/ik.hpp"
-#include "springlab/text.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+
+#include "springlab/text.hpp"
 
 namespace springlab {
 
@@ -18,19 +19,31 @@ constexpr double kTwoPi = 2.0 * kPi;
 constexpr double kNoDirection = 1e-12;
 
 const IkSolverInfo kSolvers[] = {
-    {IkSolver::CCD, "ccd", N_("Cyclic coord. descent"), {0.90f, 0.38f, 0.00f}, Mark::TriangleUp},  // vermilion
-    {IkSolver::FABRIK, "fabrik", N_("FABRIK"), {0.34f, 0.71f, 0.91f}, Mark::Circle},               // sky blue
-    {IkSolver::DLS, "dls", N_("Damped least squares"), {0.00f, 0.66f, 0.48f}, Mark::Square},       // bluish green
+    {IkSolver::CCD,
+     "ccd",
+     N_("Cyclic coord. descent"),
+     {0.90f, 0.38f, 0.00f},
+     Mark::TriangleUp},                                                               // vermilion
+    {IkSolver::FABRIK, "fabrik", N_("FABRIK"), {0.34f, 0.71f, 0.91f}, Mark::Circle},  // sky blue
+    {IkSolver::DLS,
+     "dls",
+     N_("Damped least squares"),
+     {0.00f, 0.66f, 0.48f},
+     Mark::Square},  // bluish green
 };
 
-Eigen::Vector2d direction(double phi) { return {std::cos(phi), std::sin(phi)}; }
+Eigen::Vector2d direction(double phi) {
+  return {std::cos(phi), std::sin(phi)};
+}
 
 double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   return a.x() * b.y() - a.y() * b.x();
 }
 
 // x in [0, 2 pi).
-double wrap_positive(double x) { return x - kTwoPi * std::floor(x / kTwoPi); }
+double wrap_positive(double x) {
+  return x - kTwoPi * std::floor(x / kTwoPi);
+}
 
 void check(const IkChain& chain, const IkSettings& settings) {
   if (!chain.limits.empty() && chain.limits.size() != chain.lengths.size())
@@ -179,9 +192,13 @@ void dls(IkChain& chain, const Eigen::Vector2d& target, const IkSettings& settin
 
 }  // namespace
 
-std::span<const IkSolverInfo> ik_solvers() { return kSolvers; }
+std::span<const IkSolverInfo> ik_solvers() {
+  return kSolvers;
+}
 
-const IkSolverInfo& ik_solver_info(IkSolver solver) { return kSolvers[static_cast<int>(solver)]; }
+const IkSolverInfo& ik_solver_info(IkSolver solver) {
+  return kSolvers[static_cast<int>(solver)];
+}
 
 std::optional<IkSolver> find_ik_solver(std::string_view name) {
   for (const IkSolverInfo& s : kSolvers)
@@ -209,7 +226,9 @@ std::vector<Eigen::Vector2d> IkChain::positions() const {
   return p;
 }
 
-Eigen::Vector2d IkChain::effector() const { return positions().back(); }
+Eigen::Vector2d IkChain::effector() const {
+  return positions().back();
+}
 
 double IkChain::reach() const {
   double sum = 0.0;
@@ -222,7 +241,9 @@ double IkChain::inner_reach() const {
   return std::max(0.0, 2.0 * longest - reach());
 }
 
-double wrap_angle(double a) { return std::remainder(a, kTwoPi); }
+double wrap_angle(double a) {
+  return std::remainder(a, kTwoPi);
+}
 
 double clamp_angle(double a, const std::optional<JointLimit>& limit) {
   a = wrap_angle(a);
@@ -258,9 +279,15 @@ void ik_iterate(IkSolver solver, IkChain& chain, const Eigen::Vector2d& target,
   check(chain, settings);
   if (chain.size() == 0) return;
   switch (solver) {
-    case IkSolver::CCD: ccd(chain, target); break;
-    case IkSolver::FABRIK: fabrik(chain, target); break;
-    case IkSolver::DLS: dls(chain, target, settings); break;
+    case IkSolver::CCD:
+      ccd(chain, target);
+      break;
+    case IkSolver::FABRIK:
+      fabrik(chain, target);
+      break;
+    case IkSolver::DLS:
+      dls(chain, target, settings);
+      break;
   }
 }
 

@@ -5,8 +5,8 @@
 namespace springlab {
 
 bool free_body(const Model& model) {
-  if (model.gravity != Vec3::Zero() || model.drag != 0.0 || !model.attractors.empty() || !model.emitters.empty() ||
-      model.has_colliders())
+  if (model.gravity != Vec3::Zero() || model.drag != 0.0 || !model.attractors.empty() ||
+      !model.emitters.empty() || model.has_colliders())
     return false;
   for (int i = 0; i < model.particle_count(); ++i)
     if (model.pinned(i)) return false;
@@ -27,9 +27,12 @@ Momentum momentum(const Model& model, const State& state) {
 }
 
 MomentumChange momentum_change(const Momentum& from, const Momentum& to) {
-  const auto relative = [](double change, double scale) { return scale > 0.0 ? change / scale : 0.0; };
-  return {relative((to.linear - from.linear).norm(), std::max(from.linear_scale, to.linear_scale)),
-          relative((to.angular - from.angular).norm(), std::max(from.angular_scale, to.angular_scale))};
+  const auto relative = [](double change, double scale) {
+    return scale > 0.0 ? change / scale : 0.0;
+  };
+  return {
+      relative((to.linear - from.linear).norm(), std::max(from.linear_scale, to.linear_scale)),
+      relative((to.angular - from.angular).norm(), std::max(from.angular_scale, to.angular_scale))};
 }
 
 }  // namespace springlab

@@ -1,5 +1,4 @@
 #include "springlab/simulation.hpp"
-#include "springlab/text.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,6 +8,7 @@
 #include "springlab/colliders.hpp"
 #include "springlab/scene.hpp"
 #include "springlab/spring_kernel.hpp"
+#include "springlab/text.hpp"
 
 namespace springlab {
 
@@ -22,8 +22,8 @@ struct SpringArrays {
   std::vector<SpringSpan> spans;
 };
 SpringArrays take_springs(Model& m) {
-  return {std::move(m.spring_a), std::move(m.spring_b), std::move(m.rest_length), std::move(m.spring_material),
-          std::move(m.spans)};
+  return {std::move(m.spring_a), std::move(m.spring_b), std::move(m.rest_length),
+          std::move(m.spring_material), std::move(m.spans)};
 }
 void put_springs(Model& m, SpringArrays&& s) {
   m.spring_a = std::move(s.a);
@@ -51,31 +51,42 @@ std::string Divergence::message() const {
   const char* name = own_step.empty() ? method_info(method).name : own_step.c_str();
   if (unsolved)
     // The solver's failure, not the method's instability: no limit to state, nothing diverged.
-    return format_text(tr("stopped during step %lld (last good state at t = %.4g s): %s. Method %s, h = %.4g s: the "
-                          "method's own equations were not solved at this step (the state did not blow up). Try a "
-                          "smaller --dt or more --substeps."),
-                       static_cast<long long>(step), t, reason.c_str(), name, h);
-  std::string s = format_text(unstable ? tr("went numerically unstable during step %lld (last good state at t = %.4g s): "
-                                            "%s. Method %s, h = %.4g s")
-                                       : tr("diverged during step %lld (last good state at t = %.4g s): %s. Method %s, "
-                                            "h = %.4g s"),
-                              static_cast<long long>(step), t, reason.c_str(), name, h);
+    return format_text(
+        tr("stopped during step %lld (last good state at t = %.4g s): %s. Method %s, h = %.4g s: "
+           "the "
+           "method's own equations were not solved at this step (the state did not blow up). Try a "
+           "smaller --dt or more --substeps."),
+        static_cast<long long>(step), t, reason.c_str(), name, h);
+  std::string s = format_text(
+      unstable ? tr("went numerically unstable during step %lld (last good state at t = %.4g s): "
+                    "%s. Method %s, h = %.4g s")
+               : tr("diverged during step %lld (last good state at t = %.4g s): %s. Method %s, "
+                    "h = %.4g s"),
+      static_cast<long long>(step), t, reason.c_str(), name, h);
   if (analysed)
-    s += format_text(tr(", h w_max = %.4g (w_max = %.4g rad/s); limit: %s"), h * w_max, w_max, describe(limit).c_str());
+    s += format_text(tr(", h w_max = %.4g (w_max = %.4g rad/s); limit: %s"), h * w_max, w_max,
+                     describe(limit).c_str());
   if (analysed && limit.mode && std::isfinite(limit.h) && limit.h > 0.0)
     s += format_text(tr(", set by a mode of %.4g rad/s with damping ratio %.4g"), limit.mode->w,
                      limit.mode->damping_ratio());
-  if (!own_step.empty()) return s + tr(". A step of your own has no stated limit: try a smaller --dt or more --substeps.");
+  if (!own_step.empty())
+    return s +
+           tr(". A step of your own has no stated limit: try a smaller --dt or more --substeps.");
   if (analysed && limit.h == 0.0)
-    s += tr(". No step is small enough: try a method stable without damping (symplectic-euler, verlet, rk4, "
-            "implicit-euler), or more damping.");
+    s +=
+        tr(". No step is small enough: try a method stable without damping (symplectic-euler, "
+           "verlet, rk4, "
+           "implicit-euler), or more damping.");
   else
     s += tr(". Try a smaller --dt, more --substeps, or a more stable --method (implicit-euler).");
   return s;
 }
 
 Simulation::Simulation(Model model, State initial, SimulationSettings settings)
-    : model_(std::move(model)), initial_(std::move(initial)), settings_(settings), audit_(settings.audit_window) {
+    : model_(std::move(model)),
+      initial_(std::move(initial)),
+      settings_(settings),
+      audit_(settings.audit_window) {
   SpringArrays springs = take_springs(model_);
   initial_model_ = model_;
   put_springs(model_, std::move(springs));
@@ -126,7 +137,8 @@ void Simulation::reset() {
 // steps. A held particle is moved by the user, not the method: the audit waits for its release.
 bool Simulation::audited() const {
   const Method m = settings_.method;
-  return settings_.audit_fraction > 0.0 && method_info(m).audited && has_stiffness_ && grabbed_ < 0 && !settings_.own_step;
+  return settings_.audit_fraction > 0.0 && method_info(m).audited && has_stiffness_ &&
+         grabbed_ < 0 && !settings_.own_step;
 }
 
 void Simulation::audit_changed() {
@@ -148,8 +160,9 @@ void Simulation::from_outside(const Change& change) {
 const EnergyAudit::Allowance& Simulation::audit_allowance() {
   if (!allowance_) {
     const StabilityAnalysis& analysis = stability();
-    allowance_ = EnergyAudit::Allowance{analysis.transient_growth(settings_.method, h(), model_.verlet_damping).factor,
-                                        analysis.lowest_energy()};
+    allowance_ = EnergyAudit::Allowance{
+        analysis.transient_growth(settings_.method, h(), model_.verlet_damping).factor,
+        analysis.lowest_energy()};
   }
   return *allowance_;
 }
@@ -165,16 +178,19 @@ void Simulation::audit(double total) {
   const EnergyAudit::Allowance& allowance = audit_allowance();
   const std::optional<EnergyAudit::Finding> found = audit_.decide(allowance, floor);
   if (!found) return;
-  std::string reason = format_text(tr("the energy (less the work done on the scene) rose by %.4g J in %.4g s from its "
-                                      "low at t = %.4g s, where no stable step raises it by more than %.4g J ("),
-                                   found->rise, current_.t - found->low_t, found->low_t, found->allowed);
+  std::string reason = format_text(
+      tr("the energy (less the work done on the scene) rose by %.4g J in %.4g s from its "
+         "low at t = %.4g s, where no stable step raises it by more than %.4g J ("),
+      found->rise, current_.t - found->low_t, found->low_t, found->allowed);
   if (found->growth > 1.0)
-    reason += format_text(tr("its stable modes' energy grows at most x%.4g at this step: twice %.4g of the %.4g J of "
-                             "motion there, plus "),
-                          found->growth, found->growth - 1.0, found->motion);
+    reason += format_text(
+        tr("its stable modes' energy grows at most x%.4g at this step: twice %.4g of the %.4g J of "
+           "motion there, plus "),
+        found->growth, found->growth - 1.0, found->motion);
   else
     reason += tr("no stable mode's energy can grow at this step; only rounding, ");
-  reason += format_text(tr("%g of the scene's energy scale of %.4g J)"), settings_.audit_fraction, energy_scale_);
+  reason += format_text(tr("%g of the scene's energy scale of %.4g J)"), settings_.audit_fraction,
+                        energy_scale_);
   Divergence d = report(reason);
   d.unstable = true;
   d.audit = *found;
@@ -200,7 +216,8 @@ bool Simulation::step() {
   if (!ready_to_step()) return true;  // nothing tells a safe step yet: wait
   const double h = this->h();
   const bool audit = audited();
-  const bool outside = settings_.track_dissipation || audit;  // the work from outside, for the net energy
+  const bool outside =
+      settings_.track_dissipation || audit;  // the work from outside, for the net energy
   ws_.measure_power = settings_.track_dissipation;
   for (int k = 0; k < settings_.substeps; ++k) {
     if (!integrate(h) || !still_bounded()) return false;
@@ -217,8 +234,10 @@ bool Simulation::step() {
 
 bool Simulation::ready_to_step() {
   if (settings_.auto_substeps && !stability_) {
-    if (settings_.analyse_when_needed) stability();  // chooses them
-    else if (!provisional_) choose_substeps();       // from the quick bound, while it comes
+    if (settings_.analyse_when_needed)
+      stability();  // chooses them
+    else if (!provisional_)
+      choose_substeps();  // from the quick bound, while it comes
     return ready();
   }
   return true;
@@ -226,8 +245,10 @@ bool Simulation::ready_to_step() {
 
 bool Simulation::integrate(double h) {
   try {
-    if (settings_.own_step) settings_.own_step(model_, current_, next_, h, ws_);
-    else springlab::step(settings_.method, model_, current_, next_, h, settings_.step, ws_);
+    if (settings_.own_step)
+      settings_.own_step(model_, current_, next_, h, ws_);
+    else
+      springlab::step(settings_.method, model_, current_, next_, h, settings_.step, ws_);
   } catch (const SolveFailure& failure) {
     ++steps_;
     divergence_ = report(failure.what());
@@ -253,7 +274,8 @@ bool Simulation::still_bounded() {
   if (!(check.kinetic <= kDivergenceFactor * energy_scale_)) {
     ++steps_;
     std::swap(current_, next_);  // still finite: kept, as the state where it was caught
-    diverge(format_text(tr("the kinetic energy reached %.4g J, more than 1e6 times the scene's energy scale (%.4g J)"),
+    diverge(format_text(tr("the kinetic energy reached %.4g J, more than 1e6 times the scene's "
+                           "energy scale (%.4g J)"),
                         check.kinetic, energy_scale_));
     return false;
   }
@@ -270,7 +292,8 @@ void Simulation::count_outside_work(double h, const ContactResult& contact) {
   // swirl or a wind puts energy in (the charts count them with what damping takes), and a held
   // particle's prescribed motion does work on the rest through its springs: -f . v, f their
   // force on it.
-  const double pushed = contact.potential_gained + (model_.attractors.empty() ? 0.0 : h * field_power(model_, current_));
+  const double pushed = contact.potential_gained +
+                        (model_.attractors.empty() ? 0.0 : h * field_power(model_, current_));
   // A wind's work through the drag (which the dissipated power already nets out).
   const double blown = h * wind_power(model_, current_);
   baseline_ += pushed + blown;
@@ -281,8 +304,8 @@ void Simulation::count_outside_work(double h, const ContactResult& contact) {
     dissipated_ += h * (ws_.input_power ? *ws_.input_power : dissipation_power(model_, current_)) +
                    contact.kinetic_lost - pushed;
   if (grabbed_ >= 0) {
-    const double work =
-        -h * held_force(model_, current_, grabbed_, grabbed_springs_).dot(current_.v.row(grabbed_).transpose());
+    const double work = -h * held_force(model_, current_, grabbed_, grabbed_springs_)
+                                 .dot(current_.v.row(grabbed_).transpose());
     baseline_ += work;
     external_ += work;
   }
@@ -291,12 +314,15 @@ void Simulation::count_outside_work(double h, const ContactResult& contact) {
 void Simulation::emit(bool outside) {
   bool changed = false;
   const auto births_and_deaths = [&] { changed = emission_.update(model_, current_); };
-  if (outside) from_outside(births_and_deaths);
-  else births_and_deaths();
+  if (outside)
+    from_outside(births_and_deaths);
+  else
+    births_and_deaths();
   if (changed) {
     ws_.invalidate();
     // A held particle whose time is up is let go of: it is no longer there.
-    if (grabbed_ >= 0 && !model_.emitters.empty() && !emission_.alive(grabbed_) && emission_.owned(grabbed_))
+    if (grabbed_ >= 0 && !model_.emitters.empty() && !emission_.alive(grabbed_) &&
+        emission_.owned(grabbed_))
       grabbed_ = -1;
   }
 }
@@ -305,11 +331,14 @@ bool Simulation::check_energy(bool audit) {
   // A small scene is checked every step: a pass over it costs little, and its energy, often all
   // in one mode, oscillates within a few steps near a symplectic method's limit; the audit needs
   // those oscillations sampled to see through them.
-  const int interval = model_.particle_count() + model_.spring_count() <= kSmallScene ? 1 : settings_.energy_check_interval;
+  const int interval = model_.particle_count() + model_.spring_count() <= kSmallScene
+                           ? 1
+                           : settings_.energy_check_interval;
   if (settings_.energy_check_interval > 0 && steps_ % interval == 0) {
     const double total = energy().total();
     if (!(std::abs(total) <= kDivergenceFactor * energy_scale_)) {
-      diverge(format_text(tr("the total energy reached %.4g J, more than 1e6 times the scene's energy scale (%.4g J)"),
+      diverge(format_text(tr("the total energy reached %.4g J, more than 1e6 times the scene's "
+                             "energy scale (%.4g J)"),
                           total, energy_scale_));
       return false;
     }
@@ -416,8 +445,9 @@ void Simulation::set_analyse_when_needed(bool on) {
   choose_substeps();
 }
 
-void Simulation::set_own_step(std::function<void(const Model&, const State&, State&, double, Workspace&)> step,
-                              std::string name) {
+void Simulation::set_own_step(
+    std::function<void(const Model&, const State&, State&, double, Workspace&)> step,
+    std::string name) {
   settings_.own_step = std::move(step);
   settings_.own_step_name = settings_.own_step ? std::move(name) : std::string();
   audit_changed();
@@ -456,7 +486,9 @@ void Simulation::set_auto_substeps(double safety) {
   choose_substeps();
 }
 
-void Simulation::set_step_settings(const StepSettings& step) { settings_.step = step; }
+void Simulation::set_step_settings(const StepSettings& step) {
+  settings_.step = step;
+}
 
 // k_s and k_d of the first material; the others keep their ratio to it. Each change of the
 // model counts the jump in energy it makes as work from outside (the audit), and makes the
@@ -465,7 +497,8 @@ void Simulation::set_stiffness(double ks) {
   if (model_.materials.empty()) return;
   from_outside([&] {
     const double first = model_.materials.front().ks;
-    if (!(first > 0.0)) springlab::set_stiffness(model_, ks);
+    if (!(first > 0.0))
+      springlab::set_stiffness(model_, ks);
     else
       for (auto& m : model_.materials) m.ks *= ks / first;
   });
@@ -475,7 +508,8 @@ void Simulation::set_stiffness(double ks) {
 void Simulation::set_damping(double kd) {
   if (model_.materials.empty()) return;
   const double first = model_.materials.front().kd;
-  if (!(first > 0.0)) springlab::set_damping(model_, kd);
+  if (!(first > 0.0))
+    springlab::set_damping(model_, kd);
   else
     for (auto& m : model_.materials) m.kd *= kd / first;
   model_changed();
@@ -527,7 +561,8 @@ void Simulation::grab(int particle) {
   });
   grabbed_springs_.clear();
   for (int s = 0; s < model_.spring_count(); ++s)
-    if (model_.spring_a[s] == particle || model_.spring_b[s] == particle) grabbed_springs_.push_back(s);
+    if (model_.spring_a[s] == particle || model_.spring_b[s] == particle)
+      grabbed_springs_.push_back(s);
   model_changed();
 }
 
@@ -548,8 +583,10 @@ void Simulation::place(int particle, const Vec3& position) {
 void Simulation::release() {
   if (grabbed_ < 0) return;
   from_outside([&] {
-    if (!grabbed_was_pinned_) set_pinned(model_, grabbed_, false);
-    else current_.v.row(grabbed_).setZero();
+    if (!grabbed_was_pinned_)
+      set_pinned(model_, grabbed_, false);
+    else
+      current_.v.row(grabbed_).setZero();
   });
   grabbed_ = -1;
   grabbed_springs_.clear();

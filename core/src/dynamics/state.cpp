@@ -12,7 +12,9 @@ Eigen::Index Points::column_stride(Eigen::Index rows) {
   return lines + (168 - lines % 512 + 512) % 512;
 }
 
-void Points::Free::operator()(double* p) const { std::free(p); }
+void Points::Free::operator()(double* p) const {
+  std::free(p);
+}
 
 void Points::resize(Eigen::Index rows, Eigen::Index cols) {
   assert(cols == 3);
@@ -32,8 +34,10 @@ void Points::swap(Points& other) noexcept {
   const Eigen::Index mine = rows(), theirs = other.rows();
   const Eigen::Index my_stride = outerStride(), their_stride = other.outerStride();
   storage_.swap(other.storage_);
-  new (static_cast<Base*>(this)) Base(storage_.get(), theirs, 3, Eigen::OuterStride<>(their_stride));
-  new (static_cast<Base*>(&other)) Base(other.storage_.get(), mine, 3, Eigen::OuterStride<>(my_stride));
+  new (static_cast<Base*>(this))
+      Base(storage_.get(), theirs, 3, Eigen::OuterStride<>(their_stride));
+  new (static_cast<Base*>(&other))
+      Base(other.storage_.get(), mine, 3, Eigen::OuterStride<>(my_stride));
 }
 
 namespace {
@@ -59,6 +63,8 @@ std::uint64_t state_hash(const State& state) {
   return fnv1a(h, &state.t, sizeof state.t);
 }
 
-bool all_finite(const State& state) { return state.x.allFinite() && state.v.allFinite(); }
+bool all_finite(const State& state) {
+  return state.x.allFinite() && state.v.allFinite();
+}
 
 }  // namespace springlab

@@ -24,8 +24,8 @@ inline void pause() {
 }
 
 // Jobs are numbered (generation); the caller hands a job (its number, the job, the team's size)
-// to the helpers of this job's team alone, each in its own slot, and wakes those that sleep; runs its
-// own share, then closes it (closed = its number) and waits until no helper is inside. A helper
+// to the helpers of this job's team alone, each in its own slot, and wakes those that sleep; runs
+// its own share, then closes it (closed = its number) and waits until no helper is inside. A helper
 // enters by counting itself inside and then checking that the job is still open: either it
 // counted itself before the caller looked (the caller waits for it) or it sees the job closed and
 // leaves (sequentially consistent order on `inside` and `closed`).
@@ -57,7 +57,7 @@ struct Pool {
   std::uint64_t generation = 0;  // the last job's number (the caller's alone: `busy` is held)
   alignas(64) std::atomic<std::uint64_t> closed{0};
   alignas(64) std::atomic<int> inside{0};
-  std::atomic<long> strays{0};  // Team::strays()
+  std::atomic<long> strays{0};   // Team::strays()
   Slot slots[kMostHelpers + 1];  // slots[i]: helper i (1 to kMostHelpers)
 
   // Hands job `g` to helpers 1 to team - 1, waking those that sleep. Sequentially consistent
@@ -98,9 +98,12 @@ struct Pool {
       const Team::Job* job = slot.what.load(std::memory_order_relaxed);
       const int threads = slot.threads.load(std::memory_order_relaxed);
       inside.fetch_add(1);
-      if (static_cast<std::int32_t>(static_cast<std::uint32_t>(closed.load()) - g) < 0) {  // closed < g
-        if (index < threads) (*job)(threads, index);
-        else strays.fetch_add(1, std::memory_order_relaxed);
+      if (static_cast<std::int32_t>(static_cast<std::uint32_t>(closed.load()) - g) <
+          0) {  // closed < g
+        if (index < threads)
+          (*job)(threads, index);
+        else
+          strays.fetch_add(1, std::memory_order_relaxed);
       }
       inside.fetch_sub(1);
     }
@@ -149,8 +152,12 @@ bool Team::stalled(const std::atomic<std::uint64_t>& run, std::chrono::nanosecon
     pause();
   }
 }
-Team::Counts Team::counts() { return g_counts; }
-long Team::strays() { return pool().strays.load(); }
+Team::Counts Team::counts() {
+  return g_counts;
+}
+long Team::strays() {
+  return pool().strays.load();
+}
 
 void Team::run(int threads, const Job& job) {
   Pool& p = pool();
@@ -183,11 +190,13 @@ void Team::run(int threads, const Job& job) {
   // A helper still inside holds a piece: as long as the caller's own share took (twice, and at
   // least 20 us) it is working, not parked.
   const auto own = std::chrono::steady_clock::now() - started;
-  wait([&] { return p.inside.load() == 0; }, std::max<std::chrono::nanoseconds>(2 * own, std::chrono::microseconds(20)));
+  wait([&] { return p.inside.load() == 0; },
+       std::max<std::chrono::nanoseconds>(2 * own, std::chrono::microseconds(20)));
   p.busy.store(false, std::memory_order_release);
   // A helper that held work was not running: another program has a core. Alone for a while.
   if (g_yields > 0) {
-    g_backoff = g_backoff < kFirstBackoff ? kFirstBackoff : std::min(2 * g_backoff, kLongestBackoff);
+    g_backoff =
+        g_backoff < kFirstBackoff ? kFirstBackoff : std::min(2 * g_backoff, kLongestBackoff);
     g_alone = g_backoff;
   } else {
     g_backoff /= 2;
@@ -196,11 +205,19 @@ void Team::run(int threads, const Job& job) {
 
 #else
 
-void Team::run(int, const Job& job) { job(1, 0); }
+void Team::run(int, const Job& job) {
+  job(1, 0);
+}
 void Team::yielded() {}
-bool Team::stalled(const std::atomic<std::uint64_t>&, std::chrono::nanoseconds) { return true; }
-Team::Counts Team::counts() { return {}; }
-long Team::strays() { return 0; }
+bool Team::stalled(const std::atomic<std::uint64_t>&, std::chrono::nanoseconds) {
+  return true;
+}
+Team::Counts Team::counts() {
+  return {};
+}
+long Team::strays() {
+  return 0;
+}
 
 #endif
 

@@ -14,9 +14,9 @@
 #include <chrono>
 #include <cstdint>
 #include <functional>
+#include <thread>
 #include <type_traits>
 #include <vector>
-#include <thread>
 
 #if SPRINGLAB_OPENMP
 #include <omp.h>
@@ -40,31 +40,41 @@ template <typename T>
 class atomic_ref {
  public:
   explicit atomic_ref(T& object) : p_(&object) {}
-  T load(std::memory_order order = std::memory_order_seq_cst) const { return __atomic_load_n(p_, builtin(order)); }
+  T load(std::memory_order order = std::memory_order_seq_cst) const {
+    return __atomic_load_n(p_, builtin(order));
+  }
   void store(T value, std::memory_order order = std::memory_order_seq_cst) const {
     __atomic_store_n(p_, value, builtin(order));
   }
   T fetch_add(T value, std::memory_order order = std::memory_order_seq_cst) const {
     return __atomic_fetch_add(p_, value, builtin(order));
   }
-  bool compare_exchange_weak(T& expected, T desired, std::memory_order order = std::memory_order_seq_cst) const {
-    return __atomic_compare_exchange_n(p_, &expected, desired, true, builtin(order), builtin(failure(order)));
+  bool compare_exchange_weak(T& expected, T desired,
+                             std::memory_order order = std::memory_order_seq_cst) const {
+    return __atomic_compare_exchange_n(p_, &expected, desired, true, builtin(order),
+                                       builtin(failure(order)));
   }
 
  private:
   static constexpr int builtin(std::memory_order order) {
     switch (order) {
-      case std::memory_order_relaxed: return __ATOMIC_RELAXED;
-      case std::memory_order_consume: return __ATOMIC_CONSUME;
-      case std::memory_order_acquire: return __ATOMIC_ACQUIRE;
-      case std::memory_order_release: return __ATOMIC_RELEASE;
-      case std::memory_order_acq_rel: return __ATOMIC_ACQ_REL;
-      default: return __ATOMIC_SEQ_CST;
+      case std::memory_order_relaxed:
+        return __ATOMIC_RELAXED;
+      case std::memory_order_consume:
+        return __ATOMIC_CONSUME;
+      case std::memory_order_acquire:
+        return __ATOMIC_ACQUIRE;
+      case std::memory_order_release:
+        return __ATOMIC_RELEASE;
+      case std::memory_order_acq_rel:
+        return __ATOMIC_ACQ_REL;
+      default:
+        return __ATOMIC_SEQ_CST;
     }
   }
   // A failed exchange only loads: no release in its order.
   static constexpr std::memory_order failure(std::memory_order order) {
-    return order == std::memory_order_acq_rel ? std::memory_order_acquire
+    return order == std::memory_order_acq_rel   ? std::memory_order_acquire
            : order == std::memory_order_release ? std::memory_order_relaxed
                                                 : order;
   }
@@ -75,20 +85,35 @@ class atomic_ref {
 #if SPRINGLAB_OPENMP
 inline constexpr bool kAvailable = true;
 // Threads a parallel loop started now would have (omp_get_max_threads).
-inline int max_team() { return omp_get_max_threads(); }
-inline void set_max_team(int threads) { omp_set_num_threads(threads); }
-inline int processors() { return omp_get_num_procs(); }
+inline int max_team() {
+  return omp_get_max_threads();
+}
+inline void set_max_team(int threads) {
+  omp_set_num_threads(threads);
+}
+inline int processors() {
+  return omp_get_num_procs();
+}
 // Worker threads a sweep may run its runs on at once.
-inline int hardware_workers() { return static_cast<int>(std::thread::hardware_concurrency()); }
+inline int hardware_workers() {
+  return static_cast<int>(std::thread::hardware_concurrency());
+}
 #else
 inline constexpr bool kAvailable = false;
-inline int max_team() { return 1; }
+inline int max_team() {
+  return 1;
+}
 inline void set_max_team(int) {}
-inline int processors() { return 1; }
-inline int hardware_workers() { return 1; }
+inline int processors() {
+  return 1;
+}
+inline int hardware_workers() {
+  return 1;
+}
 #endif
 
-// ---- The team ------------------------------------------------------------------------------------
+// ---- The team
+// ------------------------------------------------------------------------------------
 //
 // Helper threads for the core's parallel passes. An OpenMP parallel region ends when every thread
 // of its team has arrived at its barrier: when another program takes a core, a helper waits a
@@ -113,13 +138,15 @@ class Team {
   // not a thread another program parked (a 128 x 128 cloth's product pieces take 100 us and more,
   // where the spins alone, 4096 pauses, last 20 to 200 us by the processor).
   template <typename Done>
-  static void wait(const Done& done, std::chrono::nanoseconds patience = std::chrono::nanoseconds(0)) {
+  static void wait(const Done& done,
+                   std::chrono::nanoseconds patience = std::chrono::nanoseconds(0)) {
     // Spins: 4096 pauses, then for `patience` more (the clock read only from then on, every 256
     // spins: most waits end within the pauses, and a clock read costs as much as 20 of them).
     std::chrono::steady_clock::time_point since;
     for (int spins = 0; !done(); ++spins) {
       if (spins == 4096) since = std::chrono::steady_clock::now();
-      if (spins >= 4096 && (spins & 255) == 0 && std::chrono::steady_clock::now() - since >= patience) {
+      if (spins >= 4096 && (spins & 255) == 0 &&
+          std::chrono::steady_clock::now() - since >= patience) {
         while (!done()) {
           yielded();
           std::this_thread::yield();
@@ -136,7 +163,10 @@ class Team {
   class Job {
    public:
     template <typename F, typename = std::enable_if_t<!std::is_same_v<std::decay_t<F>, Job>>>
-    Job(const F& f) : object_(&f), call_([](const void* o, int threads, int thread) { (*static_cast<const F*>(o))(threads, thread); }) {}
+    Job(const F& f)
+        : object_(&f), call_([](const void* o, int threads, int thread) {
+            (*static_cast<const F*>(o))(threads, thread);
+          }) {}
     void operator()(int threads, int thread) const { call_(object_, threads, thread); }
 
    private:
@@ -172,7 +202,8 @@ class Team {
   static void yielded();
 };
 
-// ---- Parallel loops ------------------------------------------------------------------------------
+// ---- Parallel loops
+// ------------------------------------------------------------------------------
 //
 // The one place that decides when a loop is worth a second thread: below kParallelWork
 // particle- and spring-visits a pass, one thread is taken to be faster than waking another. The
@@ -181,7 +212,9 @@ class Team {
 // states its work in the same units: what one force pass over the same particles and springs
 // would visit.
 inline constexpr double kParallelWork = 4096;
-inline bool worth_threads(double work) { return work >= kParallelWork && max_team() > 1; }
+inline bool worth_threads(double work) {
+  return work >= kParallelWork && max_team() > 1;
+}
 
 // Runs piece(p) for each p in [0, pieces), on the team when `work` (worth_threads) says so, and
 // returns once every piece is done. Each thread of the team has a run of consecutive pieces, the
@@ -192,11 +225,11 @@ inline bool worth_threads(double work) { return work >= kParallelWork && max_tea
 // back once it stops, or at once if its owner has not begun it: one another program has parked
 // does nothing, and its run is done by the others. Taken sooner, a piece moves its data to the
 // taker's caches and back to its owner's for the next pass (docs/decisions.md, "Taking a piece
-// from a helper's run"). The caller takes whatever the helpers leave. What a piece computes must not depend on which
-// thread runs it (each writes its own results), so that results are the same bits for any number
-// of threads.
-// `per_thread`, if given: the least work a thread is given (a pass that does not scale past a few
-// threads, as local-global's local step beside its serial solves, asks for fewer).
+// from a helper's run"). The caller takes whatever the helpers leave. What a piece computes must
+// not depend on which thread runs it (each writes its own results), so that results are the same
+// bits for any number of threads. `per_thread`, if given: the least work a thread is given (a pass
+// that does not scale past a few threads, as local-global's local step beside its serial solves,
+// asks for fewer).
 template <typename Piece>
 void for_each_piece(int pieces, double work, const Piece& piece, double per_thread = 0.0) {
   if (pieces <= 1 || !worth_threads(work)) {
@@ -213,8 +246,11 @@ void for_each_piece(int pieces, double work, const Piece& piece, double per_thre
   Run on_stack[kOnStack];
   std::vector<Run> allocated(team > kOnStack ? static_cast<std::size_t>(team) : 0);
   Run* runs = team > kOnStack ? allocated.data() : on_stack;
-  const auto first_of = [&](int t) { return static_cast<std::uint64_t>(static_cast<long>(pieces) * t / team); };
-  for (int t = 0; t < team; ++t) runs[t].word.store(first_of(t) << 32 | first_of(t + 1), std::memory_order_relaxed);
+  const auto first_of = [&](int t) {
+    return static_cast<std::uint64_t>(static_cast<long>(pieces) * t / team);
+  };
+  for (int t = 0; t < team; ++t)
+    runs[t].word.store(first_of(t) << 32 | first_of(t + 1), std::memory_order_relaxed);
   const auto claim = [&](int t, bool front) -> int {
     std::atomic<std::uint64_t>& word = runs[t].word;
     std::uint64_t old = word.load(std::memory_order_relaxed);
@@ -222,15 +258,18 @@ void for_each_piece(int pieces, double work, const Piece& piece, double per_thre
       const std::uint64_t f = old >> 32, b = old & 0xFFFFFFFFu;
       if (f >= b) return -1;
       const std::uint64_t taken = front ? (f + 1) << 32 | b : f << 32 | (b - 1);
-      if (word.compare_exchange_weak(old, taken, std::memory_order_relaxed)) return static_cast<int>(front ? f : b - 1);
+      if (word.compare_exchange_weak(old, taken, std::memory_order_relaxed))
+        return static_cast<int>(front ? f : b - 1);
     }
   };
-  Team::run(team, [&](int threads, int thread) {  // (threads 1: the caller alone, taking every run at once)
+  Team::run(team, [&](int threads,
+                      int thread) {  // (threads 1: the caller alone, taking every run at once)
     const auto start = std::chrono::steady_clock::now();
     int own = 0;
     for (int p; (p = claim(thread, true)) >= 0; ++own) piece(p);
-    const std::chrono::nanoseconds patience =
-        std::max<std::chrono::nanoseconds>(2 * (std::chrono::steady_clock::now() - start) / std::max(own, 1), std::chrono::microseconds(2));
+    const std::chrono::nanoseconds patience = std::max<std::chrono::nanoseconds>(
+        2 * (std::chrono::steady_clock::now() - start) / std::max(own, 1),
+        std::chrono::microseconds(2));
     for (int other = 1; other < team; ++other) {
       const int run = (thread + other) % team;
       // A run its owner has not begun is taken at once (the owner asleep, or not come), one it

@@ -27,13 +27,15 @@ Spawn read_spawn(ObjectReader& r, double default_spread) {
   s.speed = r.number("speed", 1.0, non_negative(1e6));
   s.speed_spread = r.number("speed_spread", 0.0, non_negative(1e6));
   if (s.speed_spread > s.speed)
-    r.fail("speed_spread", "must not exceed \"speed\" (" + json(s.speed).dump() + "): a speed is never negative");
+    r.fail("speed_spread",
+           "must not exceed \"speed\" (" + json(s.speed).dump() + "): a speed is never negative");
   s.direction = unit(r, "direction", Vec3::UnitY());
   s.cone = r.number("spread", default_spread, between(0.0, 180.0)) * kDegree;
   s.lifetime = r.number("lifetime", 1.0, positive(1e6));
   s.lifetime_spread = r.number("lifetime_spread", 0.0, non_negative(1e6));
   if (s.lifetime_spread >= s.lifetime)
-    r.fail("lifetime_spread", "must be less than \"lifetime\" (" + json(s.lifetime).dump() + "): every particle lives a while");
+    r.fail("lifetime_spread", "must be less than \"lifetime\" (" + json(s.lifetime).dump() +
+                                  "): every particle lives a while");
   s.mass = r.number("mass", 0.01, positive(1e9));
   return s;
 }
@@ -48,17 +50,20 @@ std::vector<Vec3> read_colors(ObjectReader& r) {
     const json& c = (*list)[k];
     const std::string pointer = r.path("colors") + "/" + std::to_string(k);
     if (!c.is_array() || c.size() != 3)
-      json_reader::fail_at(r.where(), pointer, "must be a colour [r, g, b], each in [0, 1], " + json_reader::describe(c));
+      json_reader::fail_at(
+          r.where(), pointer,
+          "must be a colour [r, g, b], each in [0, 1], " + json_reader::describe(c));
     Vec3 rgb;
     for (int i = 0; i < 3; ++i)
-      rgb[i] = json_reader::as_number(c[i], pointer + "/" + std::to_string(i), r.where(), between(0.0, 1.0));
+      rgb[i] = json_reader::as_number(c[i], pointer + "/" + std::to_string(i), r.where(),
+                                      between(0.0, 1.0));
     colors.push_back(rgb);
   }
   return colors;
 }
 
-Pool make_pool(ObjectReader& r, const char* key, long fallback, generators::Builder& b, const Vec3& at,
-               double mass) {
+Pool make_pool(ObjectReader& r, const char* key, long fallback, generators::Builder& b,
+               const Vec3& at, double mass) {
   const long max = r.integer(key, fallback, 1, kMaxPool);
   b.reserve(r, max, 0);
   Pool pool{b.model.particle_count(), static_cast<int>(max)};
@@ -73,14 +78,17 @@ void read_emitter(ObjectReader& r, const std::string& name, generators::Builder&
   e.name = name;
   e.position = r.vec3("position");
   const std::string shape = r.choice("shape", "point", {"point", "disc", "ball"});
-  e.shape = shape == "disc" ? EmitterShape::Disc : shape == "ball" ? EmitterShape::Ball : EmitterShape::Point;
+  e.shape = shape == "disc"   ? EmitterShape::Disc
+            : shape == "ball" ? EmitterShape::Ball
+                              : EmitterShape::Point;
   e.radius = r.number("radius", 0.0, non_negative(1e6));
   if (e.shape != EmitterShape::Point && !(e.radius > 0.0))
     r.fail("radius", "must be above 0 for a " + shape + " (in metres)");
   e.rate = r.number("rate", non_negative(kMaxRate));
   e.start = r.number("start", 0.0, non_negative(1e7));
   e.stop = r.number("stop", 1e7, non_negative(1e7));
-  if (e.stop < e.start) r.fail("stop", "must not come before \"start\" (" + json(e.start).dump() + " s)");
+  if (e.stop < e.start)
+    r.fail("stop", "must not come before \"start\" (" + json(e.start).dump() + " s)");
   e.seed = static_cast<std::uint64_t>(r.integer("seed", 1, 0, std::int64_t{1} << 53));
   e.spawn = read_spawn(r, 0.0);
   e.colors = read_colors(r);
@@ -91,7 +99,8 @@ void read_emitter(ObjectReader& r, const std::string& name, generators::Builder&
     s.count = static_cast<int>(burst->integer("count", 1, 10000));
     s.spawn = read_spawn(*burst, 180.0);
     s.colors = read_colors(*burst);
-    s.pool = make_pool(*burst, "max", std::min<long>(kMaxPool, 10L * s.count), b, e.position, s.spawn.mass);
+    s.pool = make_pool(*burst, "max", std::min<long>(kMaxPool, 10L * s.count), b, e.position,
+                       s.spawn.mass);
     if (s.pool.capacity < s.count)
       burst->fail("max", "must hold at least one burst (" + std::to_string(s.count) + " sparks)");
     burst->finish();
@@ -109,7 +118,8 @@ Attractor read_attractor(ObjectReader& r) {
   a.swirl = r.number("swirl", 0.0, between(-1e9, 1e9));
   a.axis = unit(r, "axis", Vec3::UnitY());
   if (a.strength == 0.0 && a.swirl == 0.0)
-    r.fail("does nothing: give it a \"strength\" (pull, m^3/s^2) or a \"swirl\" (m^2/s^2), or both");
+    r.fail(
+        "does nothing: give it a \"strength\" (pull, m^3/s^2) or a \"swirl\" (m^2/s^2), or both");
   return a;
 }
 

@@ -13,8 +13,8 @@ using json_reader::positive;
 void Builder::reserve(ObjectReader& r, long particles, long springs) {
   const long total_particles = static_cast<long>(x.size()) + particles;
   if (total_particles > kMaxParticles)
-    r.fail("would make the scene " + std::to_string(total_particles) +
-           " particles; the limit is " + std::to_string(kMaxParticles));
+    r.fail("would make the scene " + std::to_string(total_particles) + " particles; the limit is " +
+           std::to_string(kMaxParticles));
   springs_planned += springs;
   if (springs_planned > kMaxSprings)
     r.fail("would make the scene " + std::to_string(springs_planned) + " springs; the limit is " +
@@ -42,7 +42,8 @@ std::vector<int> pinned_nodes(ObjectReader& r, int count, const std::vector<int>
     const std::string pointer = r.path("pinned") + "/" + std::to_string(k);
     if (item.is_string() && !corners.empty()) {
       const auto it = corners.find(item.get<std::string>());
-      if (it == corners.end()) json_reader::fail_at(r.where(), pointer, "must be one of " + allowed);
+      if (it == corners.end())
+        json_reader::fail_at(r.where(), pointer, "must be one of " + allowed);
       out.push_back(it->second);
       continue;
     }
@@ -66,7 +67,8 @@ Eigen::Matrix3d rotation_degrees(const Vec3& angles) {
 // segment starts at its rest length (a chain can start as a V, at rest, and swing down).
 std::vector<Vec3> rope_nodes(const std::vector<Vec3>& corners, long nodes) {
   std::vector<double> at(corners.size(), 0.0);  // arc length at each corner
-  for (std::size_t k = 1; k < corners.size(); ++k) at[k] = at[k - 1] + (corners[k] - corners[k - 1]).norm();
+  for (std::size_t k = 1; k < corners.size(); ++k)
+    at[k] = at[k - 1] + (corners[k] - corners[k - 1]).norm();
   std::vector<Vec3> p(nodes);
   std::size_t k = 1;
   for (long i = 0; i < nodes; ++i) {
@@ -93,10 +95,12 @@ void rope(ObjectReader& r, const std::string& name, Builder& b) {
       const auto& q = (*via)[k];
       const std::string pointer = r.path("via") + "/" + std::to_string(k);
       if (!q.is_array() || q.size() != 3)
-        json_reader::fail_at(r.where(), pointer, "must be a point [x, y, z], " + json_reader::describe(q));
+        json_reader::fail_at(r.where(), pointer,
+                             "must be a point [x, y, z], " + json_reader::describe(q));
       Vec3 point;
       for (int c = 0; c < 3; ++c)
-        point[c] = json_reader::as_number(q[c], pointer + "/" + std::to_string(c), r.where(), {-1e9, 1e9});
+        point[c] =
+            json_reader::as_number(q[c], pointer + "/" + std::to_string(c), r.where(), {-1e9, 1e9});
       corners.push_back(point);
     }
   }
@@ -117,7 +121,8 @@ void rope(ObjectReader& r, const std::string& name, Builder& b) {
   for (long i = 0; i < nodes; ++i)
     b.particle(p[i], velocity, mass / static_cast<double>(nodes), pinned[i]);
   for (long i = 0; i + 1 < nodes; ++i)
-    add_spring(b.model, first + static_cast<int>(i), first + static_cast<int>(i) + 1, segment, material);
+    add_spring(b.model, first + static_cast<int>(i), first + static_cast<int>(i) + 1, segment,
+               material);
   b.named[name] = {first, static_cast<int>(nodes)};
 }
 
@@ -168,7 +173,9 @@ void cloth(ObjectReader& r, const std::string& name, Builder& b) {
   // Rest lengths from the lattice's spacing, not from the nodes' rounded positions: every spring
   // of a kind gets the very same length, so the springs group into long spans (model.hpp).
   const double sx = size[0] / double(W - 1), sy = size[1] / double(H - 1);
-  const auto spring = [&](int a, int c, double rest, int material) { add_spring(b.model, a, c, rest, material); };
+  const auto spring = [&](int a, int c, double rest, int material) {
+    add_spring(b.model, a, c, rest, material);
+  };
   const int structural = add_material(b.model, {stretch, damping});
   for (long j = 0; j < H; ++j)
     for (long i = 0; i + 1 < W; ++i) spring(node(i, j), node(i + 1, j), sx, structural);
@@ -245,13 +252,15 @@ void box(ObjectReader& r, const std::string& name, Builder& b) {
     for (long j = 0; j + 1 < n[1]; ++j)
       for (long i = 0; i + 1 < n[0]; ++i) {
         Cell cell;
-        for (int c = 0; c < 8; ++c) cell[c] = index(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2 & 1));
+        for (int c = 0; c < 8; ++c)
+          cell[c] = index(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2 & 1));
         b.cells.push_back(cell);
       }
   // Every neighbour in the 3 x 3 x 3 cell around a node: edges, face and body diagonals. The
   // 13 "forward" offsets visit each pair once. k_s = stiffness x rest length (see the header).
   // Rest lengths from the lattice's spacing (as for the cloth), one material for each length.
-  const Vec3 spacing(size.x() / double(n[0] - 1), size.y() / double(n[1] - 1), size.z() / double(n[2] - 1));
+  const Vec3 spacing(size.x() / double(n[0] - 1), size.y() / double(n[1] - 1),
+                     size.z() / double(n[2] - 1));
   std::map<double, int> material_by_length;
   for (long k = 0; k < n[2]; ++k)
     for (long j = 0; j < n[1]; ++j)
@@ -263,10 +272,14 @@ void box(ObjectReader& r, const std::string& name, Builder& b) {
               const long i2 = i + di, j2 = j + dj, k2 = k + dk;
               if (i2 < 0 || j2 < 0 || i2 >= n[0] || j2 >= n[1] || k2 >= n[2]) continue;
               const int a = index(i, j, k), c = index(i2, j2, k2);
-              const double L = Vec3(std::abs(di) * spacing.x(), std::abs(dj) * spacing.y(), dk * spacing.z()).norm();
+              const double L =
+                  Vec3(std::abs(di) * spacing.x(), std::abs(dj) * spacing.y(), dk * spacing.z())
+                      .norm();
               auto it = material_by_length.find(L);
               if (it == material_by_length.end())
-                it = material_by_length.emplace(L, add_material(b.model, {stiffness * L, damping * L})).first;
+                it = material_by_length
+                         .emplace(L, add_material(b.model, {stiffness * L, damping * L}))
+                         .first;
               add_spring(b.model, a, c, L, it->second);
             }
 

@@ -8,7 +8,8 @@
 
 namespace springlab {
 
-std::string closest_match(const std::string& word, const std::string* candidates, std::size_t count) {
+std::string closest_match(const std::string& word, const std::string* candidates,
+                          std::size_t count) {
   // Levenshtein distance; a suggestion must be within a third of the word's length.
   const auto distance = [](const std::string& a, const std::string& b) {
     std::vector<std::size_t> row(b.size() + 1);
@@ -64,7 +65,8 @@ json parse_document(const std::string& text, const std::string& where) {
     // nlohmann's message names the line and column; drop its "[json.exception...] " prefix.
     std::string what = e.what();
     const auto start = what.find("] ");
-    throw InputError(where + ": not valid JSON: " + (start == std::string::npos ? what : what.substr(start + 2)));
+    throw InputError(where + ": not valid JSON: " +
+                     (start == std::string::npos ? what : what.substr(start + 2)));
   }
 }
 
@@ -73,7 +75,8 @@ std::string read_document(const std::string& path, const std::string& what) {
   if (std::filesystem::is_directory(path, ec))
     throw InputError(what + " '" + path + "': is a folder, not a " + what + " file");
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(what + " '" + path + "': cannot be read (no such file, or no permission)");
+  if (!in)
+    throw InputError(what + " '" + path + "': cannot be read (no such file, or no permission)");
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw InputError(what + " '" + path + "': reading failed");
@@ -86,12 +89,18 @@ std::string dump(const json& value) {
 
 std::string describe(const json& value) {
   switch (value.type()) {
-    case json::value_t::null: return "got null";
-    case json::value_t::boolean: return std::string("got ") + (value.get<bool>() ? "true" : "false");
-    case json::value_t::string: return "got the string " + dump(value);
-    case json::value_t::array: return "got an array";
-    case json::value_t::object: return "got an object";
-    default: return "got " + value.dump();
+    case json::value_t::null:
+      return "got null";
+    case json::value_t::boolean:
+      return std::string("got ") + (value.get<bool>() ? "true" : "false");
+    case json::value_t::string:
+      return "got the string " + dump(value);
+    case json::value_t::array:
+      return "got an array";
+    case json::value_t::object:
+      return "got an object";
+    default:
+      return "got " + value.dump();
   }
 }
 
@@ -140,7 +149,9 @@ void ObjectReader::fail(const char* key, const std::string& what) const {
   fail_at(where_, path(key), what);
 }
 
-void ObjectReader::fail(const std::string& what) const { fail_at(where_, pointer_, what); }
+void ObjectReader::fail(const std::string& what) const {
+  fail_at(where_, pointer_, what);
+}
 
 double ObjectReader::number(const char* key, Range range) {
   if (!has(key)) fail(key, "is required: a number in " + range.text());
@@ -153,11 +164,13 @@ double ObjectReader::number(const char* key, double fallback, Range range) {
 
 std::int64_t ObjectReader::integer(const char* key, std::int64_t lo, std::int64_t hi) {
   if (!has(key))
-    fail(key, "is required: an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    fail(key,
+         "is required: an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
   return as_integer(object_[key], path(key), where_, lo, hi);
 }
 
-std::int64_t ObjectReader::integer(const char* key, std::int64_t fallback, std::int64_t lo, std::int64_t hi) {
+std::int64_t ObjectReader::integer(const char* key, std::int64_t fallback, std::int64_t lo,
+                                   std::int64_t hi) {
   return has(key) ? as_integer(object_[key], path(key), where_, lo, hi) : fallback;
 }
 
@@ -180,7 +193,8 @@ Vec3 ObjectReader::vec3(const char* key, const Vec3& fallback) {
     fail(key, "must be an array of 3 numbers [x, y, z], " + describe(v));
   const Range any{-1e9, 1e9};
   Vec3 out;
-  for (int c = 0; c < 3; ++c) out[c] = as_number(v[c], path(key) + "/" + std::to_string(c), where_, any);
+  for (int c = 0; c < 3; ++c)
+    out[c] = as_number(v[c], path(key) + "/" + std::to_string(c), where_, any);
   return out;
 }
 
@@ -204,8 +218,9 @@ std::string ObjectReader::choice(const char* key, const std::string& fallback,
   const std::string s = v.get<std::string>();
   if (std::find(options.begin(), options.end(), s) != options.end()) return s;
   const std::string near = closest_match(s, options.data(), options.size());
-  fail(key, "unknown value \"" + s + "\"" + (near.empty() ? "" : "; did you mean \"" + near + "\"?") +
-                " (one of " + list + ")");
+  fail(key, "unknown value \"" + s + "\"" +
+                (near.empty() ? "" : "; did you mean \"" + near + "\"?") + " (one of " + list +
+                ")");
 }
 
 std::optional<ObjectReader> ObjectReader::object(const char* key) {
@@ -224,7 +239,9 @@ std::vector<ObjectReader> ObjectReader::objects(const char* key) {
   return out;
 }
 
-const json* ObjectReader::raw(const char* key) { return has(key) ? &object_[key] : nullptr; }
+const json* ObjectReader::raw(const char* key) {
+  return has(key) ? &object_[key] : nullptr;
+}
 
 void ObjectReader::finish() const {
   for (const auto& [key, value] : object_.items()) {

@@ -6,9 +6,9 @@
 // read: "<file>: /generators/0/nodes: must be an integer in [2, 4194304], got 1e+09".
 #pragma once
 
-#include <nlohmann/json.hpp>
 #include <cstdint>
 #include <initializer_list>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -26,13 +26,21 @@ struct Range {
   std::string text() const;
   bool contains(double x) const;
 };
-inline Range positive(double hi = 1e12) { return {0.0, hi, true, false}; }
-inline Range non_negative(double hi = 1e12) { return {0.0, hi}; }
-inline Range between(double lo, double hi) { return {lo, hi}; }
+inline Range positive(double hi = 1e12) {
+  return {0.0, hi, true, false};
+}
+inline Range non_negative(double hi = 1e12) {
+  return {0.0, hi};
+}
+inline Range between(double lo, double hi) {
+  return {lo, hi};
+}
 // Masses, kg: a microgram to a million tonnes. The floor keeps 1 / m finite, and a generator's
 // node mass too (a total of 1e-9 kg over the most nodes a scene may have): a particle of 5e-324
 // kg, "positive", had an infinite inverse mass.
-inline Range mass_range() { return {1e-9, 1e9}; }
+inline Range mass_range() {
+  return {1e-9, 1e9};
+}
 
 class ObjectReader {
  public:

@@ -34,7 +34,8 @@ std::vector<char32_t> code_points(const std::string& text) {
     const unsigned char c = static_cast<unsigned char>(text[i]);
     const int n = c < 0x80 ? 1 : c < 0xE0 ? 2 : c < 0xF0 ? 3 : 4;
     char32_t u = n == 1 ? c : n == 2 ? (c & 0x1F) : n == 3 ? (c & 0x0F) : (c & 0x07);
-    for (int k = 1; k < n && i + k < text.size(); ++k) u = (u << 6) | (static_cast<unsigned char>(text[i + k]) & 0x3F);
+    for (int k = 1; k < n && i + k < text.size(); ++k)
+      u = (u << 6) | (static_cast<unsigned char>(text[i + k]) & 0x3F);
     out.push_back(u);
     i += n;
   }
@@ -45,26 +46,30 @@ std::vector<char32_t> code_points(const std::string& text) {
 // general punctuation (dashes, quotes), superscripts and subscripts, arrows and math operators.
 bool drawable(char32_t u) {
   return (u >= 0x20 && u <= 0x7E) || (u >= 0xA0 && u <= 0xFF) || (u >= 0x370 && u <= 0x3FF) ||
-         (u >= 0x2010 && u <= 0x205E) || (u >= 0x2070 && u <= 0x209F) || (u >= 0x2190 && u <= 0x21FF) ||
-         (u >= 0x2200 && u <= 0x22FF);
+         (u >= 0x2010 && u <= 0x205E) || (u >= 0x2070 && u <= 0x209F) ||
+         (u >= 0x2190 && u <= 0x21FF) || (u >= 0x2200 && u <= 0x22FF);
 }
 
 // Text shown to a class: required (or optional), at most `max` characters, every one drawable.
 std::string shown_text(ObjectReader& r, const char* key, int max, bool required) {
-  if (required && !r.has(key)) r.fail(key, "is required: one or two sentences, at most " + std::to_string(max) + " characters");
+  if (required && !r.has(key))
+    r.fail(key,
+           "is required: one or two sentences, at most " + std::to_string(max) + " characters");
   const std::string text = r.text(key, "");
   const std::vector<char32_t> points = code_points(text);
   if (required && std::all_of(points.begin(), points.end(), [](char32_t u) { return u == ' '; }))
     r.fail(key, "must not be empty");
   if (static_cast<int>(points.size()) > max)
-    r.fail(key, "has " + std::to_string(points.size()) + " characters; at most " + std::to_string(max) +
+    r.fail(key, "has " + std::to_string(points.size()) + " characters; at most " +
+                    std::to_string(max) +
                     " fit on a projector at 1280x720 (shorten it, or split the step in two)");
   for (char32_t u : points)
     if (!drawable(u)) {
       char code[16];
       std::snprintf(code, sizeof code, "U+%04X", static_cast<unsigned>(u));
       r.fail(key, std::string("has the character ") + code +
-                      ", which the app's font cannot draw (use Latin-1, Greek, dashes, arrows or math symbols)");
+                      ", which the app's font cannot draw (use Latin-1, Greek, dashes, arrows or "
+                      "math symbols)");
     }
   return text;
 }
@@ -76,7 +81,8 @@ std::vector<std::string> strings(ObjectReader& r, const char* key) {
   if (!v->is_array()) r.fail(key, "must be an array of names, " + json_reader::describe(*v));
   for (std::size_t i = 0; i < v->size(); ++i) {
     if (!(*v)[i].is_string())
-      json_reader::fail_at(r.where(), r.path(key) + "/" + std::to_string(i), "must be a name, " + json_reader::describe((*v)[i]));
+      json_reader::fail_at(r.where(), r.path(key) + "/" + std::to_string(i),
+                           "must be a name, " + json_reader::describe((*v)[i]));
     out.push_back((*v)[i].get<std::string>());
   }
   return out;
@@ -91,12 +97,25 @@ std::string join(const std::vector<std::string>& names) {
 const std::vector<std::pair<std::string, LessonClaim::Kind>>& claim_kinds() {
   using K = LessonClaim::Kind;
   static const std::vector<std::pair<std::string, K>> kinds = {
-      {"energy-grows", K::EnergyGrows},   {"energy-decays", K::EnergyDecays}, {"energy-bounded", K::EnergyBounded},
-      {"diverges", K::Diverges},          {"holds", K::Holds},                {"follows-exact", K::FollowsExact},
-      {"limit", K::Limit},                {"steps-adapt", K::StepsAdapt},     {"momentum-kept", K::MomentumKept},
-      {"linear-momentum-kept", K::LinearMomentumKept}, {"linear-momentum-changes", K::LinearMomentumChanges},
-      {"drag-slows", K::DragSlows},       {"internal-decays", K::InternalDecays}, {"solver-converges", K::SolverConverges}, {"acts-as", K::ActsAs}, {"out-of-reach", K::OutOfReach},
-      {"poses-differ", K::PosesDiffer},   {"orders", K::Orders},              {"particles", K::Particles},
+      {"energy-grows", K::EnergyGrows},
+      {"energy-decays", K::EnergyDecays},
+      {"energy-bounded", K::EnergyBounded},
+      {"diverges", K::Diverges},
+      {"holds", K::Holds},
+      {"follows-exact", K::FollowsExact},
+      {"limit", K::Limit},
+      {"steps-adapt", K::StepsAdapt},
+      {"momentum-kept", K::MomentumKept},
+      {"linear-momentum-kept", K::LinearMomentumKept},
+      {"linear-momentum-changes", K::LinearMomentumChanges},
+      {"drag-slows", K::DragSlows},
+      {"internal-decays", K::InternalDecays},
+      {"solver-converges", K::SolverConverges},
+      {"acts-as", K::ActsAs},
+      {"out-of-reach", K::OutOfReach},
+      {"poses-differ", K::PosesDiffer},
+      {"orders", K::Orders},
+      {"particles", K::Particles},
       {"bursts", K::Bursts}};
   return kinds;
 }
@@ -110,17 +129,19 @@ std::vector<std::string> lanes_of(const LessonStep& step, const Scene& scene) {
 }
 
 // An iterative method's claim (acts-as, solver-converges): its lane must be one, then its figures.
-void read_iterative_claim(ObjectReader& r, LessonClaim& c, const std::string& name, const std::vector<std::string>& lanes,
-                          const LessonMethodFinder& find) {
+void read_iterative_claim(ObjectReader& r, LessonClaim& c, const std::string& name,
+                          const std::vector<std::string>& lanes, const LessonMethodFinder& find) {
   using K = LessonClaim::Kind;
   const std::string lane = c.lane.empty() && !lanes.empty() ? lanes.front() : c.lane;
   const std::optional<Method> m = find(lane);
   if (!m || method_info(*m).family != MethodFamily::Iterative)
-    r.fail("lane", name + " is about an iterative method's lane (xpbd, local-global, vbd), not '" + lane + "'");
+    r.fail("lane", name + " is about an iterative method's lane (xpbd, local-global, vbd), not '" +
+                       lane + "'");
   if (c.kind == K::SolverConverges) {
     c.below = r.number("below", {0.0, 1.0, true, true});
   } else {
-    if (!r.has("below") && !r.has("above")) r.fail("claim", "acts-as needs \"below\", \"above\" or both");
+    if (!r.has("below") && !r.has("above"))
+      r.fail("claim", "acts-as needs \"below\", \"above\" or both");
     if (r.has("below")) c.below = r.number("below", json_reader::positive(1e3));
     if (r.has("above")) c.above = r.number("above", json_reader::positive(1e3));
   }
@@ -128,7 +149,8 @@ void read_iterative_claim(ObjectReader& r, LessonClaim& c, const std::string& na
 
 // orders: {"method": order, ...}, each a fixed-step method, two or more, and the best for its cost.
 void read_orders_claim(ObjectReader& r, LessonClaim& c, const LessonMethodFinder& find) {
-  if (!r.has("orders")) r.fail("orders", "is required: {\"method\": order, ...}, e.g. {\"euler\": 1, \"rk4\": 4}");
+  if (!r.has("orders"))
+    r.fail("orders", "is required: {\"method\": order, ...}, e.g. {\"euler\": 1, \"rk4\": 4}");
   ObjectReader orders = *r.object("orders");
   const json* raw = r.raw("orders");
   for (const auto& [method, value] : raw->items()) {
@@ -145,13 +167,16 @@ void read_orders_claim(ObjectReader& r, LessonClaim& c, const LessonMethodFinder
 }
 
 // The figures a claim of its kind takes, and what it needs of the step's scene.
-void read_claim_figures(ObjectReader& r, LessonClaim& c, const std::string& name, const LessonStep& step,
-                        const Scene& scene, const std::vector<std::string>& lanes, const LessonMethodFinder& find) {
+void read_claim_figures(ObjectReader& r, LessonClaim& c, const std::string& name,
+                        const LessonStep& step, const Scene& scene,
+                        const std::vector<std::string>& lanes, const LessonMethodFinder& find) {
   using K = LessonClaim::Kind;
   const json_reader::Range time = {0.0, step.duration};
   const bool ik = scene.ik.has_value();
   const auto needs_dynamics = [&] {
-    if (ik) r.fail("claim", "'" + name + "' is about a simulation; scene '" + scene.name + "' is an inverse-kinematics scene");
+    if (ik)
+      r.fail("claim", "'" + name + "' is about a simulation; scene '" + scene.name +
+                          "' is an inverse-kinematics scene");
   };
   switch (c.kind) {
     case K::EnergyGrows:
@@ -164,32 +189,54 @@ void read_claim_figures(ObjectReader& r, LessonClaim& c, const std::string& name
       if (r.has("per_step")) c.per_step = r.number("per_step", {0.0, 1.0, true, true});
       c.within = r.number("within", 0.05, {0.0, 1.0, true, false});
       break;
-    case K::Holds: needs_dynamics(); break;
-    case K::EnergyBounded: needs_dynamics(); c.within = r.number("within", {0.0, 10.0, true, false}); break;
-    case K::Diverges: needs_dynamics(); c.by = r.number("by", step.duration, time); break;
+    case K::Holds:
+      needs_dynamics();
+      break;
+    case K::EnergyBounded:
+      needs_dynamics();
+      c.within = r.number("within", {0.0, 10.0, true, false});
+      break;
+    case K::Diverges:
+      needs_dynamics();
+      c.by = r.number("by", step.duration, time);
+      break;
     case K::FollowsExact:
       needs_dynamics();
       c.within = r.number("within", json_reader::positive(1e3));
       if (!ExactOscillator::detect(scene.model, scene.state))
-        r.fail("claim", "follows-exact needs a scene with an exact solution (one free particle on a spring, as 'spring'); '" +
-                            scene.name + "' has none");
+        r.fail("claim",
+               "follows-exact needs a scene with an exact solution (one free particle on a spring, "
+               "as 'spring'); '" +
+                   scene.name + "' has none");
       break;
     case K::Limit:
       needs_dynamics();
       c.h = r.number("h", json_reader::positive(1.0));
       c.within = r.number("within", 0.01, {0.0, 1.0, true, false});
       break;
-    case K::StepsAdapt: needs_dynamics(); c.ratio = r.number("ratio", 2.0, {1.0, 1e6, true, false}); break;
+    case K::StepsAdapt:
+      needs_dynamics();
+      c.ratio = r.number("ratio", 2.0, {1.0, 1e6, true, false});
+      break;
     case K::MomentumKept:
-    case K::LinearMomentumKept: needs_dynamics(); c.within = r.number("within", 1e-9, json_reader::positive(1.0)); break;
-    case K::LinearMomentumChanges: needs_dynamics(); c.above = r.number("above", 1e-3, json_reader::positive(1.0)); break;
+    case K::LinearMomentumKept:
+      needs_dynamics();
+      c.within = r.number("within", 1e-9, json_reader::positive(1.0));
+      break;
+    case K::LinearMomentumChanges:
+      needs_dynamics();
+      c.above = r.number("above", 1e-3, json_reader::positive(1.0));
+      break;
     case K::DragSlows:
       needs_dynamics();
       c.within = r.number("within", 0.02, json_reader::positive(1.0));
       if (!(scene.model.drag > 0.0))
         r.fail("claim", "drag-slows needs drag above 0 in the step's scene (set \"drag\")");
       break;
-    case K::InternalDecays: needs_dynamics(); c.below = r.number("below", {0.0, 1.0, true, true}); break;
+    case K::InternalDecays:
+      needs_dynamics();
+      c.below = r.number("below", {0.0, 1.0, true, true});
+      break;
     case K::ActsAs:
     case K::SolverConverges:
       needs_dynamics();
@@ -197,10 +244,13 @@ void read_claim_figures(ObjectReader& r, LessonClaim& c, const std::string& name
       break;
     case K::OutOfReach:
     case K::PosesDiffer:
-      if (!ik) r.fail("claim", "'" + name + "' is about inverse kinematics; scene '" + scene.name + "' has no \"ik\" part");
+      if (!ik)
+        r.fail("claim", "'" + name + "' is about inverse kinematics; scene '" + scene.name +
+                            "' has no \"ik\" part");
       if (c.kind == K::PosesDiffer) {
         c.min = r.number("min", 0.05, json_reader::positive(100.0));
-        if (lanes.size() < 2) r.fail("claim", "poses-differ needs two or more solvers side by side (\"compare\")");
+        if (lanes.size() < 2)
+          r.fail("claim", "poses-differ needs two or more solvers side by side (\"compare\")");
       }
       break;
     case K::Orders:
@@ -209,7 +259,8 @@ void read_claim_figures(ObjectReader& r, LessonClaim& c, const std::string& name
       break;
     case K::Bursts:
       c.count = static_cast<int>(r.integer("count", 1, 10000));
-      if (scene.model.emitters.empty()) r.fail("claim", "bursts needs a scene with emitters; '" + scene.name + "' has none");
+      if (scene.model.emitters.empty())
+        r.fail("claim", "bursts needs a scene with emitters; '" + scene.name + "' has none");
       break;
     case K::Particles:
       c.about = r.number("about", json_reader::positive(kMaxParticles));
@@ -219,7 +270,8 @@ void read_claim_figures(ObjectReader& r, LessonClaim& c, const std::string& name
   }
 }
 
-LessonClaim read_claim(ObjectReader& r, const LessonStep& step, const Scene& scene, const LessonMethodFinder& find) {
+LessonClaim read_claim(ObjectReader& r, const LessonStep& step, const Scene& scene,
+                       const LessonMethodFinder& find) {
   LessonClaim c;
   std::vector<std::string> names;
   for (const auto& [name, kind] : claim_kinds()) names.push_back(name);
@@ -245,13 +297,17 @@ LessonStep read_step(ObjectReader& r, const std::string& folder, const LessonSce
                      const LessonMethodFinder& find) {
   LessonStep step;
   step.title = shown_text(r, "title", kMaxTitle, true);
-  if (!r.has("scene")) r.fail("scene", "is required: a shipped scene's name (rope, spring, ...) or a path");
+  if (!r.has("scene"))
+    r.fail("scene", "is required: a shipped scene's name (rope, spring, ...) or a path");
   step.scene = r.text("scene", "");
   if (r.object("set"))  // {"KEY": VALUE}, as --set KEY=VALUE
-    for (const auto& [key, value] : r.raw("set")->items()) step.sets.push_back(key + "=" + json_reader::dump(value));
+    for (const auto& [key, value] : r.raw("set")->items())
+      step.sets.push_back(key + "=" + json_reader::dump(value));
   if (const json* m = r.raw("method")) {
     const auto method = m->is_string() ? find(m->get<std::string>()) : std::nullopt;
-    if (!method) r.fail("method", "must be a method name (" + method_names() + "), " + json_reader::describe(*m));
+    if (!method)
+      r.fail("method",
+             "must be a method name (" + method_names() + "), " + json_reader::describe(*m));
     step.method = method;
   }
   step.compare = strings(r, "compare");
@@ -260,34 +316,48 @@ LessonStep read_step(ObjectReader& r, const std::string& folder, const LessonSce
   if (r.has("kd")) step.kd = r.number("kd", json_reader::non_negative(1e12));
   if (r.has("iterations")) step.iterations = static_cast<int>(r.integer("iterations", 1, 10000));
   if (const json* s = r.raw("substeps")) {
-    if (s->is_string() && s->get<std::string>() == "auto") step.substeps = 0;
-    else if (s->is_number()) step.substeps = static_cast<int>(r.integer("substeps", 1, 100000));
-    else r.fail("substeps", "must be \"auto\" or a whole number in [1, 100000], " + json_reader::describe(*s));
+    if (s->is_string() && s->get<std::string>() == "auto")
+      step.substeps = 0;
+    else if (s->is_number())
+      step.substeps = static_cast<int>(r.integer("substeps", 1, 100000));
+    else
+      r.fail("substeps",
+             "must be \"auto\" or a whole number in [1, 100000], " + json_reader::describe(*s));
   }
   step.duration = r.number("duration", {0.0, 600.0, true, false});
   step.speed = r.number("speed", 1.0, {1.0 / 16.0, 4.0});
   if (const json* c = r.raw("chart")) {  // a name, or one or two in an array
     const std::vector<std::pair<std::string, LessonChart>> charts = {
-        {"energy", LessonChart::Energy}, {"position", LessonChart::Position}, {"phase", LessonChart::Phase},
-        {"steps", LessonChart::Steps},   {"region", LessonChart::Region}, {"momentum", LessonChart::Momentum}};
+        {"energy", LessonChart::Energy}, {"position", LessonChart::Position},
+        {"phase", LessonChart::Phase},   {"steps", LessonChart::Steps},
+        {"region", LessonChart::Region}, {"momentum", LessonChart::Momentum}};
     std::vector<std::string> names;
-    if (c->is_string()) names = {c->get<std::string>()};
-    else if (c->is_array()) names = strings(r, "chart");
+    if (c->is_string())
+      names = {c->get<std::string>()};
+    else if (c->is_array())
+      names = strings(r, "chart");
     if (names.empty() || names.size() > 2)
-      r.fail("chart", "must be one or two of energy, position, phase, steps and region, " + json_reader::describe(*c));
+      r.fail("chart", "must be one or two of energy, position, phase, steps and region, " +
+                          json_reader::describe(*c));
     step.charts.clear();
     for (const std::string& n : names) {
-      const auto at = std::find_if(charts.begin(), charts.end(), [&](const auto& x) { return x.first == n; });
+      const auto at =
+          std::find_if(charts.begin(), charts.end(), [&](const auto& x) { return x.first == n; });
       if (at == charts.end())
-        r.fail("chart", "must be one or two of energy, position, phase, steps and region, got \"" + n + "\"");
+        r.fail("chart", "must be one or two of energy, position, phase, steps and region, got \"" +
+                            n + "\"");
       step.charts.push_back(at->second);
     }
   }
   for (const std::string& s : strings(r, "show")) {
-    if (s == "region") step.region = true;
-    else if (s == "accuracy") step.accuracy = true;
-    else if (s == "mode") step.mode = true;
-    else r.fail("show", "may hold region, accuracy and mode, got \"" + s + "\"");
+    if (s == "region")
+      step.region = true;
+    else if (s == "accuracy")
+      step.accuracy = true;
+    else if (s == "mode")
+      step.mode = true;
+    else
+      r.fail("show", "may hold region, accuracy and mode, got \"" + s + "\"");
   }
   step.caption = shown_text(r, "caption", kMaxCaption, true);
   step.prompt = shown_text(r, "try", kMaxPrompt, false);
@@ -297,7 +367,8 @@ LessonStep read_step(ObjectReader& r, const std::string& folder, const LessonSce
   // The scene, opened with the step's settings: a name or a path from the lesson's folder.
   std::string scene_path = step.scene;
   const bool path_like = scene_path.find('/') != std::string::npos || scene_path.ends_with(".json");
-  if (path_like && !scene_path.starts_with("/") && !folder.empty()) scene_path = folder + "/" + scene_path;
+  if (path_like && !scene_path.starts_with("/") && !folder.empty())
+    scene_path = folder + "/" + scene_path;
   Scene scene;
   try {
     scene = open(path_like ? scene_path : step.scene, step.sets);
@@ -307,29 +378,37 @@ LessonStep read_step(ObjectReader& r, const std::string& folder, const LessonSce
   step.scene = path_like ? scene_path : step.scene;
 
   if (scene.ik) {
-    if (step.method) r.fail("method", "scene '" + scene.name + "' is an inverse-kinematics scene: it has solvers (" +
-                                          ik_solver_names() + "), not methods; name them in \"compare\"");
+    if (step.method)
+      r.fail("method", "scene '" + scene.name +
+                           "' is an inverse-kinematics scene: it has solvers (" +
+                           ik_solver_names() + "), not methods; name them in \"compare\"");
     for (const char* key : {"dt", "ks", "kd", "substeps", "iterations"})
-      if (r.has(key)) r.fail(key, "has no meaning on inverse-kinematics scene '" + scene.name + "'");
-    if (step.accuracy || step.region) r.fail("show", "an inverse-kinematics scene has no accuracy chart nor stability region");
+      if (r.has(key))
+        r.fail(key, "has no meaning on inverse-kinematics scene '" + scene.name + "'");
+    if (step.accuracy || step.region)
+      r.fail("show", "an inverse-kinematics scene has no accuracy chart nor stability region");
   }
   if (!step.compare.empty()) {
-    if (step.compare.size() < 2 || step.compare.size() > 4) r.fail("compare", "must name 2 to 4 lanes");
+    if (step.compare.size() < 2 || step.compare.size() > 4)
+      r.fail("compare", "must name 2 to 4 lanes");
     for (std::size_t k = 0; k < step.compare.size(); ++k) {
       const std::string& n = step.compare[k];
       const bool known = scene.ik ? find_ik_solver(n).has_value() : find(n).has_value();
       if (!known)
         json_reader::fail_at(r.where(), r.path("compare") + "/" + std::to_string(k),
-                             "unknown " + std::string(scene.ik ? "solver" : "method") + " '" + n + "' (" +
-                                 (scene.ik ? ik_solver_names() : method_names()) + ")");
+                             "unknown " + std::string(scene.ik ? "solver" : "method") + " '" + n +
+                                 "' (" + (scene.ik ? ik_solver_names() : method_names()) + ")");
       if (std::count(step.compare.begin(), step.compare.end(), n) > 1)
         r.fail("compare", "names '" + n + "' twice");
     }
-    if (step.method) r.fail("method", "give either \"method\" (one lane) or \"compare\" (lanes side by side), not both");
+    if (step.method)
+      r.fail("method",
+             "give either \"method\" (one lane) or \"compare\" (lanes side by side), not both");
   }
   step.script.file = r.where();
   step.script.events = read_events(r.objects("events"), scene);
-  for (ObjectReader& c : r.objects("claims")) step.claims.push_back(read_claim(c, step, scene, find));
+  for (ObjectReader& c : r.objects("claims"))
+    step.claims.push_back(read_claim(c, step, scene, find));
   return step;
 }
 
@@ -339,38 +418,60 @@ std::string LessonClaim::describe() const {
   using K = Kind;
   const std::string who = lane.empty() ? "" : lane + ": ";
   switch (kind) {
-    case K::EnergyGrows: return who + "energy grows" + (per_step ? " by x" + precise(*per_step) + " a step" : "");
-    case K::EnergyDecays: return who + "energy decays" + (per_step ? " by x" + precise(*per_step) + " a step" : "");
-    case K::EnergyBounded: return who + "energy stays within " + four_digits(within) + " of its scale";
-    case K::Diverges: return who + "diverges by t = " + four_digits(*by) + " s";
-    case K::Holds: return who + "holds (no divergence, no instability)";
-    case K::FollowsExact: return who + "follows the exact solution within " + four_digits(within) + " m";
-    case K::Limit: return who + "stated stability limit h = " + four_digits(h) + " s";
-    case K::StepsAdapt: return who + "rejects tries, step varies x" + four_digits(ratio) + " or more";
-    case K::MomentumKept: return "momentum and angular momentum kept";
-    case K::LinearMomentumKept: return who + "momentum kept to " + four_digits(within) + " of sum m|v|";
-    case K::LinearMomentumChanges: return who + "momentum changes by more than " + four_digits(above) + " of sum m|v|";
-    case K::DragSlows: return "centre of mass slows as exp(-k_drag n t / M)";
+    case K::EnergyGrows:
+      return who + "energy grows" + (per_step ? " by x" + precise(*per_step) + " a step" : "");
+    case K::EnergyDecays:
+      return who + "energy decays" + (per_step ? " by x" + precise(*per_step) + " a step" : "");
+    case K::EnergyBounded:
+      return who + "energy stays within " + four_digits(within) + " of its scale";
+    case K::Diverges:
+      return who + "diverges by t = " + four_digits(*by) + " s";
+    case K::Holds:
+      return who + "holds (no divergence, no instability)";
+    case K::FollowsExact:
+      return who + "follows the exact solution within " + four_digits(within) + " m";
+    case K::Limit:
+      return who + "stated stability limit h = " + four_digits(h) + " s";
+    case K::StepsAdapt:
+      return who + "rejects tries, step varies x" + four_digits(ratio) + " or more";
+    case K::MomentumKept:
+      return "momentum and angular momentum kept";
+    case K::LinearMomentumKept:
+      return who + "momentum kept to " + four_digits(within) + " of sum m|v|";
+    case K::LinearMomentumChanges:
+      return who + "momentum changes by more than " + four_digits(above) + " of sum m|v|";
+    case K::DragSlows:
+      return "centre of mass slows as exp(-k_drag n t / M)";
     case K::ActsAs:
       return who + "at rest acts as k_s x" + (above > 0.0 ? four_digits(above) + " or more" : "") +
-             (above > 0.0 && below > 0.0 ? ", " : "") + (below > 0.0 ? four_digits(below) + " or less" : "");
-    case K::SolverConverges: return who + "nears the converged implicit-Euler step by x" + four_digits(below) + " or less an iteration";
-    case K::InternalDecays: return "the wiggles (motion besides the rigid one) keep under " + four_digits(below) + " of their kinetic energy";
-    case K::OutOfReach: return who + "target out of reach, chain straight towards it";
-    case K::PosesDiffer: return "solvers reach the target in poses " + four_digits(min) + " m apart or more";
+             (above > 0.0 && below > 0.0 ? ", " : "") +
+             (below > 0.0 ? four_digits(below) + " or less" : "");
+    case K::SolverConverges:
+      return who + "nears the converged implicit-Euler step by x" + four_digits(below) +
+             " or less an iteration";
+    case K::InternalDecays:
+      return "the wiggles (motion besides the rigid one) keep under " + four_digits(below) +
+             " of their kinetic energy";
+    case K::OutOfReach:
+      return who + "target out of reach, chain straight towards it";
+    case K::PosesDiffer:
+      return "solvers reach the target in poses " + four_digits(min) + " m apart or more";
     case K::Orders: {
       std::string s = "orders";
       for (const auto& [m, p] : orders) s += " " + m + " " + four_digits(p);
       return s + (best.empty() ? "" : "; most accurate for its cost: " + best);
     }
-    case K::Particles: return "about " + four_digits(about) + " particles at t = " + four_digits(*at) + " s";
-    case K::Bursts: return "bursts of " + std::to_string(count) + " particles";
+    case K::Particles:
+      return "about " + four_digits(about) + " particles at t = " + four_digits(*at) + " s";
+    case K::Bursts:
+      return "bursts of " + std::to_string(count) + " particles";
   }
   return "";
 }
 
 double Lesson::duration() const {
-  return std::accumulate(steps.begin(), steps.end(), 0.0, [](double s, const LessonStep& x) { return s + x.duration; });
+  return std::accumulate(steps.begin(), steps.end(), 0.0,
+                         [](double s, const LessonStep& x) { return s + x.duration; });
 }
 
 std::string lesson_name(const std::string& file_name) {
@@ -387,7 +488,8 @@ Lesson parse_lesson(const std::string& text, const std::string& file, const Less
                     const LessonMethodFinder& find) {
   const std::string where = "lesson '" + file + "'";
   json doc = json_reader::parse_document(text, where);
-  if (!doc.is_object()) throw InputError(where + ": must be a JSON object with title, summary and steps");
+  if (!doc.is_object())
+    throw InputError(where + ": must be a JSON object with title, summary and steps");
   Lesson lesson;
   lesson.file = file;
   lesson.name = lesson_name(file);
@@ -404,7 +506,8 @@ Lesson parse_lesson(const std::string& text, const std::string& file, const Less
   return lesson;
 }
 
-Lesson load_lesson(const std::string& path, const LessonSceneOpener& open, const LessonMethodFinder& find) {
+Lesson load_lesson(const std::string& path, const LessonSceneOpener& open,
+                   const LessonMethodFinder& find) {
   return parse_lesson(json_reader::read_document(path, "lesson"), path, open, find);
 }
 

@@ -57,7 +57,8 @@ void apply_override(json& doc, const std::string& assignment, const std::string&
       continue;
     }
     if (!node->is_object()) bad("'" + part + "' goes inside a value that has no fields");
-    if (k == 0 && !node->contains(part) && doc.contains("generators") && doc["generators"].is_array()) {
+    if (k == 0 && !node->contains(part) && doc.contains("generators") &&
+        doc["generators"].is_array()) {
       // A generator by name (its "name", or its "type" when it has no name). Either may be of
       // any type here: the loader reports that later, with its path.
       const auto is_named = [&](const json& g) {
@@ -85,8 +86,8 @@ void apply_override(json& doc, const std::string& assignment, const std::string&
 
 // A particle reference in a spring: a global index, or "name:index" into a generator's nodes
 // (negative indices count from the end).
-int particle_ref(const json& value, const std::string& pointer, const std::string& where,
-                 int total, const std::map<std::string, std::pair<int, int>>& named) {
+int particle_ref(const json& value, const std::string& pointer, const std::string& where, int total,
+                 const std::map<std::string, std::pair<int, int>>& named) {
   if (value.is_string()) {
     const std::string s = value.get<std::string>();
     const auto colon = s.rfind(':');
@@ -94,7 +95,8 @@ int particle_ref(const json& value, const std::string& pointer, const std::strin
     if (it == named.end())
       json_reader::fail_at(where, pointer,
                            "must be a particle index or \"generator:index\" with a generator "
-                           "named in this scene, got \"" + s + "\"");
+                           "named in this scene, got \"" +
+                               s + "\"");
     const auto [first, count] = it->second;
     const long i = json_reader::as_integer(json::parse(s.substr(colon + 1), nullptr, false),
                                            pointer, where, -count, count - 1);
@@ -148,8 +150,9 @@ IkScene read_ik_scene(ObjectReader& r, generators::Builder& b) {
       const json& item = (*list)[k];
       const auto solver = item.is_string() ? find_ik_solver(item.get<std::string>()) : std::nullopt;
       if (!solver)
-        json_reader::fail_at(r.where(), r.path("solvers") + "/" + std::to_string(k),
-                             "unknown solver " + item.dump() + " (solvers: " + ik_solver_names() + ")");
+        json_reader::fail_at(
+            r.where(), r.path("solvers") + "/" + std::to_string(k),
+            "unknown solver " + item.dump() + " (solvers: " + ik_solver_names() + ")");
       ik.solvers.push_back(*solver);
     }
   } else {
@@ -157,13 +160,15 @@ IkScene read_ik_scene(ObjectReader& r, generators::Builder& b) {
   }
   ik.settings.tolerance = r.number("tolerance", 1e-3, positive(1e3));
   ik.settings.damping = r.number("damping", ik.settings.damping, positive(10.0));
-  ik.settings.max_iterations = static_cast<int>(r.integer("max_iterations", ik.settings.max_iterations, 1, 1000000));
+  ik.settings.max_iterations =
+      static_cast<int>(r.integer("max_iterations", ik.settings.max_iterations, 1, 1000000));
   ik.iterations_per_frame = static_cast<int>(r.integer("iterations_per_frame", 1, 1, 10000));
 
   const std::vector<Eigen::Vector2d> joints = ik.chain.positions();
   b.reserve(r, static_cast<long>(joints.size()) + 1, static_cast<long>(joints.size()) - 1);
   ik.first_joint = b.model.particle_count();
-  for (const Eigen::Vector2d& p : joints) b.particle(Vec3(p.x(), p.y(), 0.0), Vec3::Zero(), 1.0, true);
+  for (const Eigen::Vector2d& p : joints)
+    b.particle(Vec3(p.x(), p.y(), 0.0), Vec3::Zero(), 1.0, true);
   ik.target = b.particle(target, Vec3::Zero(), 1.0, true);
   const int link = add_material(b.model, {0.0, 0.0});
   for (int i = 0; i < ik.chain.size(); ++i)
@@ -173,14 +178,14 @@ IkScene read_ik_scene(ObjectReader& r, generators::Builder& b) {
   return ik;
 }
 
-
 // The forces (gravity, drag, wind, attractors, Verlet's damping) and the colliders.
 void read_forces(ObjectReader& top, Model& model) {
   model.gravity = top.vec3("gravity", Vec3::Zero());
   model.drag = top.number("drag", 0.0, non_negative(1e9));
   model.wind = top.vec3("wind", Vec3::Zero());
   if (model.wind.norm() > 0.0 && model.drag == 0.0)
-    top.fail("wind", "needs \"drag\" above 0: the air pushes particles through drag, f = -drag (v - wind)");
+    top.fail("wind",
+             "needs \"drag\" above 0: the air pushes particles through drag, f = -drag (v - wind)");
   for (auto& a : top.objects("attractors")) {
     model.attractors.push_back(read_attractor(a));
     a.finish();
@@ -194,7 +199,8 @@ void read_forces(ObjectReader& top, Model& model) {
     if (type == "plane") {
       const Vec3 point = c.vec3("point", Vec3::Zero());
       const Vec3 normal = c.vec3("normal", Vec3::UnitY());
-      if (!(normal.norm() > 1e-12)) c.fail("normal", "must not be zero: it is the plane's direction");
+      if (!(normal.norm() > 1e-12))
+        c.fail("normal", "must not be zero: it is the plane's direction");
       model.planes.push_back({point, normal.normalized(), friction, restitution});
     } else {
       const Vec3 center = c.vec3("center");
@@ -218,16 +224,17 @@ std::vector<Method> read_methods(ObjectReader& top, const std::string& where) {
       if (!m) {
         std::vector<std::string> names;
         for (const auto& info : methods()) names.emplace_back(info.name);
-        const std::string near = item.is_string()
-                                     ? closest_match(item.get<std::string>(), names.data(), names.size())
-                                     : "";
+        const std::string near =
+            item.is_string() ? closest_match(item.get<std::string>(), names.data(), names.size())
+                             : "";
         // A value that is not a string is described, not printed: printing a deeply nested
         // array recurses as deep as it is nested.
-        json_reader::fail_at(where, pointer,
-                             (item.is_string() ? "unknown method " + json_reader::dump(item)
-                                               : "must be a method name, " + json_reader::describe(item)) +
-                                 (near.empty() ? "" : "; did you mean \"" + near + "\"?") +
-                                 " (methods: " + method_names() + ")");
+        json_reader::fail_at(
+            where, pointer,
+            (item.is_string() ? "unknown method " + json_reader::dump(item)
+                              : "must be a method name, " + json_reader::describe(item)) +
+                (near.empty() ? "" : "; did you mean \"" + near + "\"?") +
+                " (methods: " + method_names() + ")");
       }
       out.push_back(*m);
     }
@@ -243,7 +250,8 @@ int read_substeps(ObjectReader& top) {
   if (!sub) return 0;
   if (!sub->is_string()) return static_cast<int>(top.integer("substeps", 1, 1, 100000));
   if (sub->get<std::string>() != "auto")
-    top.fail("substeps", "must be \"auto\" or a whole number in [1, 100000], got " + json_reader::dump(*sub));
+    top.fail("substeps",
+             "must be \"auto\" or a whole number in [1, 100000], got " + json_reader::dump(*sub));
   return 0;
 }
 
@@ -264,7 +272,8 @@ std::vector<int> read_trails(ObjectReader& top, const std::string& where, int to
   if (const json* trails = top.raw("trails")) {
     if (!trails->is_array()) top.fail("trails", "must be an array of particle indices");
     for (std::size_t k = 0; k < trails->size(); ++k)
-      out.push_back(particle_ref((*trails)[k], top.path("trails") + "/" + std::to_string(k), where, total, named));
+      out.push_back(particle_ref((*trails)[k], top.path("trails") + "/" + std::to_string(k), where,
+                                 total, named));
   }
   return out;
 }
@@ -293,9 +302,12 @@ void read_generators(ObjectReader& top, generators::Builder& builder, Scene& sce
     const std::string type = g.choice("type", "", {"rope", "cloth", "box"});
     const std::string name = g.text("name", type);
     if (named.count(name)) g.fail("name", "\"" + name + "\" is already the name of a generator");
-    if (type == "rope") generators::rope(g, name, builder);
-    else if (type == "cloth") generators::cloth(g, name, builder);
-    else generators::box(g, name, builder);
+    if (type == "rope")
+      generators::rope(g, name, builder);
+    else if (type == "cloth")
+      generators::cloth(g, name, builder);
+    else
+      generators::box(g, name, builder);
     g.finish();
   }
   if (auto ik = top.object("ik")) {
@@ -320,7 +332,8 @@ void read_emitters(ObjectReader& top, generators::Builder& builder) {
 
 // Springs declared one by one, between particles by index or by a generator's name and index
 // (`total`: the particles before the emitters').
-void read_springs(ObjectReader& top, generators::Builder& builder, int total, const std::string& where) {
+void read_springs(ObjectReader& top, generators::Builder& builder, int total,
+                  const std::string& where) {
   Model& model = builder.model;
   const std::vector<Vec3>& x = builder.x;
   const std::map<std::string, std::pair<int, int>>& named = builder.named;
@@ -340,7 +353,8 @@ void read_springs(ObjectReader& top, generators::Builder& builder, int total, co
     if (!a_json || !b_json) s.fail("needs both ends: \"a\" and \"b\" (particle indices)");
     const int a = particle_ref(*a_json, s.path("a"), where, total, named);
     const int b = particle_ref(*b_json, s.path("b"), where, total, named);
-    if (a == b) s.fail("b", "is the same particle as \"a\" (" + std::to_string(a) + "): a spring needs two");
+    if (a == b)
+      s.fail("b", "is the same particle as \"a\" (" + std::to_string(a) + "): a spring needs two");
     const double distance = (x[b] - x[a]).norm();
     const double rest = s.number("rest_length", distance, non_negative(1e9));
     const double ks = s.number("ks", non_negative(1e12));
@@ -348,10 +362,13 @@ void read_springs(ObjectReader& top, generators::Builder& builder, int total, co
     s.finish();
     if (rest > 0.0 && distance == 0.0)
       s.fail("its ends start at the same point (particles " + std::to_string(a) + " and " +
-             std::to_string(b) + "), so the spring has no direction: move one, or give it rest_length 0");
-    const auto [material, added] = material_of.try_emplace({ks, kd}, static_cast<int>(model.materials.size()));
+             std::to_string(b) +
+             "), so the spring has no direction: move one, or give it rest_length 0");
+    const auto [material, added] =
+        material_of.try_emplace({ks, kd}, static_cast<int>(model.materials.size()));
     if (added) {
-      if (model.materials.size() == 65535) top.fail("springs", "use more than 65535 distinct (ks, kd) pairs");
+      if (model.materials.size() == 65535)
+        top.fail("springs", "use more than 65535 distinct (ks, kd) pairs");
       model.materials.push_back({ks, kd});
     }
     add_spring(model, a, b, rest, material->second);
@@ -370,9 +387,11 @@ Scene parse_scene(const std::string& text, const std::string& file,
   scene.file = file;
   scene.name = std::filesystem::path(file).stem().string();
   ObjectReader top(doc, "", where);
-  top.expect({"description", "view", "particles", "generators", "emitters", "ik", "springs", "gravity", "drag", "wind", "attractors",
-              "verlet_damping", "particle_radius", "colliders", "methods", "dt", "substeps", "safety", "duration", "tolerance",
-              "camera", "trails"});
+  top.expect({"description", "view",           "particles",       "generators", "emitters",
+              "ik",          "springs",        "gravity",         "drag",       "wind",
+              "attractors",  "verlet_damping", "particle_radius", "colliders",  "methods",
+              "dt",          "substeps",       "safety",          "duration",   "tolerance",
+              "camera",      "trails"});
   top.finish();  // a misspelt field first: it may be why something else looks missing
   scene.description = top.text("description", "");
   const View view = top.choice("view", "3d", {"2d", "3d"}) == "2d" ? View::Planar : View::Orbit;
@@ -391,7 +410,8 @@ Scene parse_scene(const std::string& text, const std::string& file,
   if (model.particle_count() == 0)
     top.fail("declares no particles: add \"particles\", \"generators\" or \"emitters\"");
   read_springs(top, builder, total, where);
-  if (model.materials.size() > 65535) top.fail("springs", "use more than 65535 distinct (ks, kd) pairs");
+  if (model.materials.size() > 65535)
+    top.fail("springs", "use more than 65535 distinct (ks, kd) pairs");
   finalize(model);
 
   read_forces(top, model);
@@ -405,7 +425,8 @@ Scene parse_scene(const std::string& text, const std::string& file,
   scene.state.resize(count);
   for (int i = 0; i < count; ++i) {
     scene.state.x.row(i) = x[i].transpose();
-    scene.state.v.row(i) = model.pinned(i) ? Eigen::RowVector3d::Zero() : Eigen::RowVector3d(v[i].transpose());
+    scene.state.v.row(i) =
+        model.pinned(i) ? Eigen::RowVector3d::Zero() : Eigen::RowVector3d(v[i].transpose());
   }
   scene.state.t = 0.0;
   scene.named.assign(named.begin(), named.end());

@@ -41,14 +41,16 @@ int particle_of(const json& value, const std::string& pointer, const std::string
     json_reader::fail_at(where, pointer,
                          "must be a particle index in [0, " + std::to_string(n - 1) +
                              "] or \"name:index\" with a generator of scene '" + scene.name +
-                             "' (" + (names.empty() ? "it has none" : names) + "), got \"" + s + "\"");
+                             "' (" + (names.empty() ? "it has none" : names) + "), got \"" + s +
+                             "\"");
   }
   return static_cast<int>(json_reader::as_integer(value, pointer, where, 0, n - 1));
 }
 
 Vec3 point(const json& value, const std::string& pointer, const std::string& where) {
   if (!value.is_array() || value.size() != 3)
-    json_reader::fail_at(where, pointer, "must be a point [x, y, z], " + json_reader::describe(value));
+    json_reader::fail_at(where, pointer,
+                         "must be a point [x, y, z], " + json_reader::describe(value));
   Vec3 p;
   for (int c = 0; c < 3; ++c)
     p[c] = json_reader::as_number(value[c], pointer + "/" + std::to_string(c), where, {-1e9, 1e9});
@@ -82,14 +84,18 @@ ScriptEvent read_event(ObjectReader& r, const Scene& scene) {
       const json& w = (*p)[k];
       const std::string pointer = r.path("path") + "/" + std::to_string(k);
       if (!w.is_array() || w.size() != 4)
-        json_reader::fail_at(r.where(), pointer, "must be a waypoint [dt, x, y, z], " + json_reader::describe(w));
+        json_reader::fail_at(r.where(), pointer,
+                             "must be a waypoint [dt, x, y, z], " + json_reader::describe(w));
       const double dt = json_reader::as_number(w[0], pointer + "/0", r.where(), {0.0, 1e7});
       if (dt <= last)
-        json_reader::fail_at(r.where(), pointer + "/0", "waypoint times must increase, got " + three_digits(dt) + " after " + three_digits(last));
+        json_reader::fail_at(r.where(), pointer + "/0",
+                             "waypoint times must increase, got " + three_digits(dt) + " after " +
+                                 three_digits(last));
       last = dt;
       Vec3 x;
       for (int c = 0; c < 3; ++c)
-        x[c] = json_reader::as_number(w[c + 1], pointer + "/" + std::to_string(c + 1), r.where(), {-1e9, 1e9});
+        x[c] = json_reader::as_number(w[c + 1], pointer + "/" + std::to_string(c + 1), r.where(),
+                                      {-1e9, 1e9});
       e.path.emplace_back(dt, x);
     }
   } else if (const json* m = r.raw("move")) {
@@ -102,7 +108,9 @@ ScriptEvent read_event(ObjectReader& r, const Scene& scene) {
     ObjectReader s = *r.object("set");
     if (const json* name = s.raw("method")) {
       const auto m = name->is_string() ? find_method(name->get<std::string>()) : std::nullopt;
-      if (!m) s.fail("method", "must be a method name (" + method_names() + "), " + json_reader::describe(*name));
+      if (!m)
+        s.fail("method",
+               "must be a method name (" + method_names() + "), " + json_reader::describe(*name));
       e.method = m;
     }
     if (s.has("ks")) e.ks = s.number("ks", json_reader::non_negative(1e12));
@@ -116,7 +124,10 @@ ScriptEvent read_event(ObjectReader& r, const Scene& scene) {
     if (s.has("speed")) e.speed = s.number("speed", {1.0 / 16.0, 4.0});
     s.finish();
   } else {
-    const char* key = r.has("release") ? "release" : r.has("pause") ? "pause" : r.has("resume") ? "resume" : "reset";
+    const char* key = r.has("release")  ? "release"
+                      : r.has("pause")  ? "pause"
+                      : r.has("resume") ? "resume"
+                                        : "reset";
     if (!r.boolean(key, false)) r.fail(key, "must be true");
     e.kind = key == std::string("release")  ? ScriptEvent::Kind::Release
              : key == std::string("pause")  ? ScriptEvent::Kind::Pause
@@ -132,20 +143,31 @@ ScriptEvent read_event(ObjectReader& r, const Scene& scene) {
 std::vector<ScriptEvent> read_events(std::vector<ObjectReader> events, const Scene& scene) {
   std::vector<ScriptEvent> out;
   for (auto& e : events) out.push_back(read_event(e, scene));
-  std::stable_sort(out.begin(), out.end(), [](const ScriptEvent& a, const ScriptEvent& b) { return a.t < b.t; });
+  std::stable_sort(out.begin(), out.end(),
+                   [](const ScriptEvent& a, const ScriptEvent& b) { return a.t < b.t; });
   return out;
 }
 
 std::string ScriptEvent::describe() const {
   std::string s = "t = " + three_digits(t) + " s: ";
   switch (kind) {
-    case Kind::Grab: return s + (near ? "grab the particle nearest (" + three_digits(near->x()) + ", " + three_digits(near->y()) + ", " + three_digits(near->z()) + ")" : "grab particle " + std::to_string(particle));
-    case Kind::Path: return s + "drag along " + std::to_string(path.size()) + " waypoints";
-    case Kind::Move: return s + "drag to (" + three_digits(path[0].second.x()) + ", " + three_digits(path[0].second.y()) + ", " + three_digits(path[0].second.z()) + ")";
-    case Kind::Release: return s + "release";
-    case Kind::Pause: return s + "pause";
-    case Kind::Resume: return s + "resume";
-    case Kind::Reset: return s + "reset";
+    case Kind::Grab:
+      return s + (near ? "grab the particle nearest (" + three_digits(near->x()) + ", " +
+                             three_digits(near->y()) + ", " + three_digits(near->z()) + ")"
+                       : "grab particle " + std::to_string(particle));
+    case Kind::Path:
+      return s + "drag along " + std::to_string(path.size()) + " waypoints";
+    case Kind::Move:
+      return s + "drag to (" + three_digits(path[0].second.x()) + ", " +
+             three_digits(path[0].second.y()) + ", " + three_digits(path[0].second.z()) + ")";
+    case Kind::Release:
+      return s + "release";
+    case Kind::Pause:
+      return s + "pause";
+    case Kind::Resume:
+      return s + "resume";
+    case Kind::Reset:
+      return s + "reset";
     case Kind::Set: {
       std::string what;
       const auto add = [&](const std::string& x) { what += (what.empty() ? "" : ", ") + x; };
@@ -167,7 +189,8 @@ std::string ScriptEvent::describe() const {
 
 double Script::end_time() const {
   double end = 0.0;
-  for (const ScriptEvent& e : events) end = std::max(end, e.t + (e.path.empty() ? 0.0 : e.path.back().first));
+  for (const ScriptEvent& e : events)
+    end = std::max(end, e.t + (e.path.empty() ? 0.0 : e.path.back().first));
   return end;
 }
 

@@ -11,6 +11,7 @@ namespace springlab {
 
 // Each event checked against the scene it will drive, then sorted by time (stable: file order
 // breaks ties).
-std::vector<ScriptEvent> read_events(std::vector<json_reader::ObjectReader> events, const Scene& scene);
+std::vector<ScriptEvent> read_events(std::vector<json_reader::ObjectReader> events,
+                                     const Scene& scene);
 
 }  // namespace springlab

@@ -36,12 +36,23 @@ struct Reader {
       }
       if (++i >= text.size()) fail("a backslash ends the line");
       switch (text[i]) {
-        case 'n': out += '\n'; break;
-        case 't': out += '\t'; break;
-        case 'r': out += '\r'; break;
-        case '"': out += '"'; break;
-        case '\\': out += '\\'; break;
-        default: fail(std::string("unknown escape \\") + text[i] + " (use \\n, \\t, \\\" or \\\\)");
+        case 'n':
+          out += '\n';
+          break;
+        case 't':
+          out += '\t';
+          break;
+        case 'r':
+          out += '\r';
+          break;
+        case '"':
+          out += '"';
+          break;
+        case '\\':
+          out += '\\';
+          break;
+        default:
+          fail(std::string("unknown escape \\") + text[i] + " (use \\n, \\t, \\\" or \\\\)");
       }
     }
     if (i >= text.size()) fail("a string is not closed (a \" is missing)");
@@ -86,7 +97,8 @@ Catalog read_po(const std::string& text, const std::string& origin) {
           if (field.rfind("X-Language-Name:", 0) == 0) catalog.name = value(field, 16);
         }
       } else if (!entry.fuzzy && !entry.str.empty()) {
-        catalog.entries[entry.has_context ? entry.context + '\x04' + entry.id : entry.id] = entry.str;
+        catalog.entries[entry.has_context ? entry.context + '\x04' + entry.id : entry.id] =
+            entry.str;
       }
     }
     entry = Entry{};
@@ -103,7 +115,8 @@ Catalog read_po(const std::string& text, const std::string& origin) {
       continue;
     }
     if (line[start] == '#') {
-      if (line.compare(start, 2, "#,") == 0 && line.find("fuzzy") != std::string::npos) entry.fuzzy = true;
+      if (line.compare(start, 2, "#,") == 0 && line.find("fuzzy") != std::string::npos)
+        entry.fuzzy = true;
       continue;
     }
     if (line[start] == '"') {
@@ -137,15 +150,20 @@ Catalog read_po(const std::string& text, const std::string& origin) {
       ignored = reader.quoted(line, end);
       target = &ignored;
     } else {
-      reader.fail("unknown keyword '" + keyword + "' (a PO file has msgctxt, msgid, msgid_plural and msgstr)");
+      reader.fail("unknown keyword '" + keyword +
+                  "' (a PO file has msgctxt, msgid, msgid_plural and msgstr)");
     }
   }
   finish();
   return catalog;
 }
 
-void set_catalog(const Catalog* catalog) { g_catalog.store(catalog, std::memory_order_release); }
-const Catalog* current_catalog() { return g_catalog.load(std::memory_order_acquire); }
+void set_catalog(const Catalog* catalog) {
+  g_catalog.store(catalog, std::memory_order_release);
+}
+const Catalog* current_catalog() {
+  return g_catalog.load(std::memory_order_acquire);
+}
 
 std::string current_language() {
   const Catalog* c = current_catalog();
@@ -155,11 +173,14 @@ std::string current_language() {
 const char* tr(const char* english) {
   const Catalog* c = current_catalog();
   if (!c || !english || !*english) return english;
-  const auto it = c->entries.find(std::string_view(english));  // (no string made: tr() runs every frame)
+  const auto it =
+      c->entries.find(std::string_view(english));  // (no string made: tr() runs every frame)
   return it == c->entries.end() ? english : it->second.c_str();
 }
 
-std::string tr(const std::string& english) { return tr(english.c_str()); }
+std::string tr(const std::string& english) {
+  return tr(english.c_str());
+}
 
 std::string format_text(const char* format, ...) {
   va_list args, again;

@@ -29,8 +29,8 @@ inline void check_floor(const char* method, double step, double h, const StepSet
 // is accepted when err <= 1, and the next try is T min(5, max(0.2, 0.9 err^(-exponent))), never
 // growing right after a rejection. With `tableau.first_same_as_last()` the last stage of an
 // accepted try is the next one's first. `name` is for the step floor's message.
-void embedded_pair_step(const Tableau& tableau, const double* error_weights, double exponent, const char* name,
-                        const Model& model, const State& in, State& out, double h, const StepSettings& settings,
-                        Workspace& ws);
+void embedded_pair_step(const Tableau& tableau, const double* error_weights, double exponent,
+                        const char* name, const Model& model, const State& in, State& out, double h,
+                        const StepSettings& settings, Workspace& ws);
 
 }  // namespace springlab::adaptive

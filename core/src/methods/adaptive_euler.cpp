@@ -32,13 +32,14 @@ void adaptive_euler(const Model& model, const State& in, State& out, double h,
     const bool last = T >= remaining * (1.0 - 1e-12);
     const double step = last ? remaining : T;
     // Whole step (positions only) and the first half step.
-    ws.trial_x = out.x + step * out.v;             // x_T
-    ws.stage_x = out.x + (0.5 * step) * out.v;     // x after the first half
-    ws.stage_v = out.v + (0.5 * step) * a0;        // v after the first half
+    ws.trial_x = out.x + step * out.v;          // x_T
+    ws.stage_x = out.x + (0.5 * step) * out.v;  // x after the first half
+    ws.stage_v = out.v + (0.5 * step) * a0;     // v after the first half
     // x_T/2 = stage_x + T/2 stage_v, compared with x_T particle by particle.
     double error = 0.0;
     for (int i = 0; i < out.x.rows(); ++i)
-      error = std::max(error, (ws.stage_x.row(i) + (0.5 * step) * ws.stage_v.row(i) - ws.trial_x.row(i)).norm());
+      error = std::max(
+          error, (ws.stage_x.row(i) + (0.5 * step) * ws.stage_v.row(i) - ws.trial_x.row(i)).norm());
     if (!(error <= settings.tolerance)) {  // also rejects NaN
       ++ws.counters.rejected;
       T = 0.5 * step;
@@ -52,8 +53,10 @@ void adaptive_euler(const Model& model, const State& in, State& out, double h,
     ++ws.counters.accepted;
     // A last step cut short to land on h says nothing against T: T never shrinks to it (a
     // remainder of 1e-14 s left by rounding used to become the next step's first try).
-    if (error < settings.tolerance / 8.0) T = std::max(T, 2.0 * step);
-    else if (!last) T = step;
+    if (error < settings.tolerance / 8.0)
+      T = std::max(T, 2.0 * step);
+    else if (!last)
+      T = step;
     if (done < h) accelerations(model, out.x, out.v, a0, ws);
   }
   ws.adaptive_step = T;

@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <map>
-#include <cstdio>
 
 #include "methods/polynomial.hpp"
 #include "methods/rational.hpp"
@@ -25,10 +25,12 @@ std::optional<Rational> parse_decimal(const std::string& s) {
   std::string digits;
   int scale = 0;  // value = digits * 10^-scale
   bool any = false;
-  while (k < s.size() && std::isdigit(static_cast<unsigned char>(s[k]))) digits += s[k++], any = true;
+  while (k < s.size() && std::isdigit(static_cast<unsigned char>(s[k])))
+    digits += s[k++], any = true;
   if (k < s.size() && s[k] == '.') {
     ++k;
-    while (k < s.size() && std::isdigit(static_cast<unsigned char>(s[k]))) digits += s[k++], ++scale, any = true;
+    while (k < s.size() && std::isdigit(static_cast<unsigned char>(s[k])))
+      digits += s[k++], ++scale, any = true;
   }
   if (!any) return std::nullopt;
   int exponent = 0;
@@ -48,7 +50,8 @@ std::optional<Rational> parse_decimal(const std::string& s) {
   digits.erase(0, std::min(digits.find_first_not_of('0'), digits.size()));
   const cpp_int mantissa(digits.empty() ? std::string("0") : digits);
   const int power = exponent - scale;
-  const cpp_int ten_power = boost::multiprecision::pow(cpp_int(10), static_cast<unsigned>(std::abs(power)));
+  const cpp_int ten_power =
+      boost::multiprecision::pow(cpp_int(10), static_cast<unsigned>(std::abs(power)));
   Rational r = power >= 0 ? Rational(mantissa * ten_power) : Rational(mantissa, ten_power);
   return negative ? Rational(-r) : r;
 }
@@ -71,7 +74,9 @@ std::optional<Rational> parse_rational(const std::string& text) {
   return Rational(*p / *q);
 }
 
-std::string rational_text(const Rational& r) { return r.str(); }
+std::string rational_text(const Rational& r) {
+  return r.str();
+}
 
 namespace {
 
@@ -197,11 +202,13 @@ Rational dot(const Vector& a, const Vector& b) {
 }
 
 struct OrderResult {
-  int order = TableauAnalysis::kMaxOrder, order_to_rounding = TableauAnalysis::kMaxOrder, conditions = 0;
+  int order = TableauAnalysis::kMaxOrder, order_to_rounding = TableauAnalysis::kMaxOrder,
+      conditions = 0;
   std::optional<OrderCondition> failure;
 };
 
-OrderResult check_order(const std::vector<Tree>& trees, const std::vector<Vector>& phi, const Vector& b) {
+OrderResult check_order(const std::vector<Tree>& trees, const std::vector<Vector>& phi,
+                        const Vector& b) {
   OrderResult out;
   bool exact = true, rounded = true;
   for (std::size_t t = 0; t < trees.size(); ++t) {
@@ -212,11 +219,15 @@ OrderResult check_order(const std::vector<Tree>& trees, const std::vector<Vector
     if (exact && lhs != rhs) {
       exact = false;
       out.order = order - 1;
-      out.failure = OrderCondition{bracket(trees, static_cast<int>(t)), formula(trees, static_cast<int>(t)), order,
-                                   readable(lhs), readable(rhs),
+      out.failure = OrderCondition{bracket(trees, static_cast<int>(t)),
+                                   formula(trees, static_cast<int>(t)),
+                                   order,
+                                   readable(lhs),
+                                   readable(rhs),
                                    static_cast<double>(Rational(lhs - rhs))};
     }
-    if (rounded && abs(static_cast<double>(Rational(lhs - rhs))) > 1e-10 * static_cast<double>(rhs)) {
+    if (rounded &&
+        abs(static_cast<double>(Rational(lhs - rhs))) > 1e-10 * static_cast<double>(rhs)) {
       rounded = false;
       out.order_to_rounding = order - 1;
     }
@@ -260,7 +271,8 @@ Poly interpolate(const Vector& values) {
   const std::size_t n = values.size();
   Vector d = values;
   for (std::size_t level = 1; level < n; ++level)
-    for (std::size_t i = n - 1; i >= level; --i) d[i] = (d[i] - d[i - 1]) / Rational(static_cast<long>(level));
+    for (std::size_t i = n - 1; i >= level; --i)
+      d[i] = (d[i] - d[i - 1]) / Rational(static_cast<long>(level));
   Poly p{d[n - 1]};
   for (std::size_t k = n - 1; k-- > 0;) {
     p = multiply(p, Poly{Rational(-static_cast<long>(k)), Rational(1)});
@@ -288,8 +300,10 @@ Poly absolute(Poly p) {
 // are (a common root would be one of P and of Q). Q has no root there: parse_tableau refuses a
 // negative diagonal entry, the only way a lower triangular A puts one there.
 AxisPolynomial real_axis(const Poly& P, const Poly& Q) {
-  const Poly size = reflected(add(absolute(P), absolute(Q)));  // (|P_k| + |Q_k|, signs as reflected)
-  return {AxisFactor{reflected(add(P, Q, -1)), absolute(size)}, AxisFactor{reflected(add(P, Q)), absolute(size)}};
+  const Poly size =
+      reflected(add(absolute(P), absolute(Q)));  // (|P_k| + |Q_k|, signs as reflected)
+  return {AxisFactor{reflected(add(P, Q, -1)), absolute(size)},
+          AxisFactor{reflected(add(P, Q)), absolute(size)}};
 }
 
 // On the imaginary axis, z = i y: |P(iy)|^2 - |Q(iy)|^2, even in y, as a polynomial in u = y^2.
@@ -298,7 +312,8 @@ AxisPolynomial imaginary_axis(const Poly& P, const Poly& Q) {
   const auto parts = [](const Poly& p, Poly& re, Poly& im) {
     re.assign(p.size(), Rational(0));
     im.assign(p.size(), Rational(0));
-    for (std::size_t k = 0; k < p.size(); ++k) (k % 2 ? im : re)[k] = (k / 2) % 2 ? Rational(-p[k]) : p[k];
+    for (std::size_t k = 0; k < p.size(); ++k)
+      (k % 2 ? im : re)[k] = (k / 2) % 2 ? Rational(-p[k]) : p[k];
     trim(re);
     trim(im);
   };
@@ -308,7 +323,8 @@ AxisPolynomial imaginary_axis(const Poly& P, const Poly& Q) {
   const auto square = [](const Poly& p) { return multiply(p, p); };
   const auto square_size = [](const Poly& p) { return multiply(absolute(p), absolute(p)); };
   const Poly s = add(add(square(pr), square(pi)), add(square(qr), square(qi)), -1);
-  const Poly terms = add(add(square_size(pr), square_size(pi)), add(square_size(qr), square_size(qi)));
+  const Poly terms =
+      add(add(square_size(pr), square_size(pi)), add(square_size(qr), square_size(qi)));
   AxisFactor a;
   for (std::size_t k = 0; k < s.size(); k += 2) a.s.push_back(s[k]);
   for (std::size_t k = 0; k < terms.size(); k += 2) a.terms.push_back(terms[k]);
@@ -330,7 +346,8 @@ void drop_rounding(AxisPolynomial& a, int vanishing) {
     Poly kept;
     for (std::size_t k = 0; k < f.s.size(); ++k) {
       const double size = k < f.terms.size() ? static_cast<double>(f.terms[k]) : 0.0;
-      const bool rounding = static_cast<int>(k) <= vanishing || std::abs(static_cast<double>(f.s[k])) <= 1e-12 * size;
+      const bool rounding =
+          static_cast<int>(k) <= vanishing || std::abs(static_cast<double>(f.s[k])) <= 1e-12 * size;
       kept.push_back(rounding ? Rational() : f.s[k]);
     }
     trim(kept);
@@ -368,7 +385,8 @@ std::vector<std::vector<std::string>> rooted_trees(int order) {
   const std::vector<Tree> trees = all_trees(order);
   std::vector<std::vector<std::string>> out(static_cast<std::size_t>(order));
   for (std::size_t t = 0; t < trees.size(); ++t)
-    out[static_cast<std::size_t>(trees[t].order - 1)].push_back(bracket(trees, static_cast<int>(t)));
+    out[static_cast<std::size_t>(trees[t].order - 1)].push_back(
+        bracket(trees, static_cast<int>(t)));
   return out;
 }
 
@@ -424,17 +442,21 @@ TableauAnalysis analyse_tableau(const ButcherTableau& tableau) {
       Rational sum = 0;
       for (const Rational& x : A[i]) sum += x;
       if (c[i] != sum)
-        out.warnings.push_back("c_" + std::to_string(i + 1) + " = " + tableau.c[i].text + " is not the sum of row " +
-                               std::to_string(i + 1) + " of A (" + rational_text(sum) +
-                               "): the order conditions use the row sums");
+        out.warnings.push_back("c_" + std::to_string(i + 1) + " = " + tableau.c[i].text +
+                               " is not the sum of row " + std::to_string(i + 1) + " of A (" +
+                               rational_text(sum) + "): the order conditions use the row sums");
     }
   }
-  if (tableau.stated_order && *tableau.stated_order != out.order && *tableau.stated_order != out.order_to_rounding &&
-      !(*tableau.stated_order > TableauAnalysis::kMaxOrder && out.order == TableauAnalysis::kMaxOrder))
-    out.warnings.push_back("the file states order " + std::to_string(*tableau.stated_order) + ", the conditions give " +
-                           std::to_string(out.order));
-  if (tableau.stated_embedded_order && out.embedded_order && *tableau.stated_embedded_order != *out.embedded_order)
-    out.warnings.push_back("the file states embedded order " + std::to_string(*tableau.stated_embedded_order) +
+  if (tableau.stated_order && *tableau.stated_order != out.order &&
+      *tableau.stated_order != out.order_to_rounding &&
+      !(*tableau.stated_order > TableauAnalysis::kMaxOrder &&
+        out.order == TableauAnalysis::kMaxOrder))
+    out.warnings.push_back("the file states order " + std::to_string(*tableau.stated_order) +
+                           ", the conditions give " + std::to_string(out.order));
+  if (tableau.stated_embedded_order && out.embedded_order &&
+      *tableau.stated_embedded_order != *out.embedded_order)
+    out.warnings.push_back("the file states embedded order " +
+                           std::to_string(*tableau.stated_embedded_order) +
                            ", the conditions give " + std::to_string(*out.embedded_order));
 
   // R(z) = P / Q, each determinant interpolated from its values at z = 0 .. s.
@@ -443,7 +465,8 @@ TableauAnalysis analyse_tableau(const ButcherTableau& tableau) {
     const Rational z(static_cast<long>(k));
     Matrix q(s, Vector(s, Rational(0))), p;
     for (std::size_t i = 0; i < s; ++i)
-      for (std::size_t j = 0; j < s; ++j) q[i][j] = (i == j ? Rational(1) : Rational(0)) - z * A[i][j];
+      for (std::size_t j = 0; j < s; ++j)
+        q[i][j] = (i == j ? Rational(1) : Rational(0)) - z * A[i][j];
     p = q;
     for (std::size_t i = 0; i < s; ++i)
       for (std::size_t j = 0; j < s; ++j) p[i][j] += z * b[j];
@@ -464,9 +487,12 @@ TableauAnalysis analyse_tableau(const ButcherTableau& tableau) {
   out.denominator = texts(Q);
   out.numerator_value = values(P);
   out.denominator_value = values(Q);
-  if (P.size() > Q.size()) out.r_at_infinity = std::numeric_limits<double>::infinity();
-  else if (P.size() == Q.size()) out.r_at_infinity = std::abs(static_cast<double>(Rational(P.back() / Q.back())));
-  else out.r_at_infinity = 0.0;
+  if (P.size() > Q.size())
+    out.r_at_infinity = std::numeric_limits<double>::infinity();
+  else if (P.size() == Q.size())
+    out.r_at_infinity = std::abs(static_cast<double>(Rational(P.back() / Q.back())));
+  else
+    out.r_at_infinity = 0.0;
 
   // The axes, exactly: where |R|^2 - 1 first turns positive (polynomial.hpp's Sturm sequences).
   AxisPolynomial real = real_axis(P, Q), imaginary = imaginary_axis(P, Q);
@@ -491,8 +517,10 @@ std::string polynomial_text(const std::vector<std::string>& coefficients) {
     if (negative) c.erase(0, 1);
     out += out.empty() ? (negative ? "-" : "") : (negative ? " - " : " + ");
     const std::string power = k == 0 ? "" : k == 1 ? "z" : "z^" + std::to_string(k);
-    if (k == 0) out += c;
-    else out += (c == "1" ? "" : c + " ") + power;
+    if (k == 0)
+      out += c;
+    else
+      out += (c == "1" ? "" : c + " ") + power;
   }
   return out.empty() ? "0" : out;
 }
@@ -508,7 +536,8 @@ std::string axis_limit_text(double limit, int digits) {
 }
 
 std::string stability_function_text(const TableauAnalysis& analysis) {
-  const std::string p = polynomial_text(analysis.numerator), q = polynomial_text(analysis.denominator);
+  const std::string p = polynomial_text(analysis.numerator),
+                    q = polynomial_text(analysis.denominator);
   if (q == "1") return p;
   return "(" + p + ") / (" + q + ")";
 }

@@ -44,10 +44,10 @@
 #include <vector>
 
 #include "dynamics/force_pass.hpp"
-#include "springlab/spring_kernel.hpp"
 #include "iterative.hpp"
-#include "tableau_steps.hpp"
+#include "springlab/spring_kernel.hpp"
 #include "steps.hpp"
+#include "tableau_steps.hpp"
 
 namespace springlab {
 
@@ -74,7 +74,7 @@ struct SymmetricBlocks {
   // Inverts blocks [begin, end) in place (each symmetric positive definite): the cofactors over
   // the determinant.
   void invert(int begin, int end) {
-SPRINGLAB_VECTORISE
+    SPRINGLAB_VECTORISE
     for (int i = begin; i < end; ++i) {
       const double a = xx[i], b = yy[i], c = zz[i], d = xy[i], e = xz[i], f = yz[i];
       const double cxx = b * c - f * f, cyy = a * c - e * e, czz = a * b - d * d;
@@ -100,7 +100,7 @@ void span_blocks(const Columns& X, const Columns& V, int a0, int b0, int count, 
                  double* __restrict across, double* __restrict kvx, double* __restrict kvy,
                  double* __restrict kvz) {
   const double h2 = h * h;
-SPRINGLAB_VECTORISE
+  SPRINGLAB_VECTORISE
   for (int k = 0; k < count; ++k) {
     const double dx = X.x[b0 + k] - X.x[a0 + k];
     const double dy = X.y[b0 + k] - X.y[a0 + k];
@@ -129,7 +129,7 @@ void add_spring_blocks(const Columns& X, int a0, int b0, int at, int count,
   double *xx = D.xx.data() + at, *yy = D.yy.data() + at, *zz = D.zz.data() + at;
   double *xy = D.xy.data() + at, *xz = D.xz.data() + at, *yz = D.yz.data() + at;
   double *bx = b.col(0).data() + at, *by = b.col(1).data() + at, *bz = b.col(2).data() + at;
-SPRINGLAB_VECTORISE
+  SPRINGLAB_VECTORISE
   for (int k = 0; k < count; ++k) {
     const double dx = X.x[b0 + k] - X.x[a0 + k];
     const double dy = X.y[b0 + k] - X.y[a0 + k];
@@ -153,7 +153,7 @@ void multiply(const SymmetricBlocks& M, const double* const P[3], double* const 
   const double *xy = M.xy.data(), *xz = M.xz.data(), *yz = M.yz.data();
   const double *px = P[0], *py = P[1], *pz = P[2];
   double *qx = Q[0], *qy = Q[1], *qz = Q[2];
-SPRINGLAB_VECTORISE
+  SPRINGLAB_VECTORISE
   for (int i = begin; i < end; ++i) {
     qx[i] = xx[i] * px[i] + xy[i] * py[i] + xz[i] * pz[i];
     qy[i] = xy[i] * px[i] + yy[i] * py[i] + yz[i] * pz[i];
@@ -215,7 +215,8 @@ double dot(const Points& a, const Points& b, int begin, int end) {
 template <typename F>
 void each_block(const ForcePlan& plan, int n, double work, const F& f) {
   const int blocks = static_cast<int>(plan.own.size());
-  threads::for_each_piece(blocks, work, [&](int k) { f(k, k * plan.block, std::min(n, (k + 1) * plan.block)); });
+  threads::for_each_piece(blocks, work,
+                          [&](int k) { f(k, k * plan.block, std::min(n, (k + 1) * plan.block)); });
 }
 
 // The diagonal block of A and the terms of b that come from forces on one particle alone, for
@@ -275,7 +276,8 @@ struct ImplicitSolver {
   std::span<const int> pinned_in(int begin, int end) const {
     const auto first = std::lower_bound(pinned.begin(), pinned.end(), begin);
     const auto last = std::lower_bound(first, pinned.end(), end);
-    return {std::to_address(first), static_cast<std::size_t>(last - first)};  // (LLVM 14's span takes no iterators)
+    return {std::to_address(first),
+            static_cast<std::size_t>(last - first)};  // (LLVM 14's span takes no iterators)
   }
 
   // The sum of the blocks' parts of a dot product, in block order: the same on every thread and
@@ -290,7 +292,8 @@ struct ImplicitSolver {
   // preconditioner, from the state `in` and its forces f.
   // With `v_start` (Newton's correction of a backward-Euler step at the iterate `in` = (X, V)):
   // the same A at (X, V), b = h f(X, V) - M (V - v_start), no K v term, and a first guess of 0.
-  void setup(const Model& model, const ForcePlan& plan, const State& in, double h, const Points* v_start = nullptr) {
+  void setup(const Model& model, const ForcePlan& plan, const State& in, double h,
+             const Points* v_start = nullptr) {
     const int n = model.particle_count();
     const Columns X(in.x), V(in.v);
     if (v_start) known = 0;
@@ -299,10 +302,11 @@ struct ImplicitSolver {
         const SpringSpan& span = model.spans[piece.span];
         const SpringMaterial& mat = model.materials[span.material];
         const int s = span.first + piece.lo, count = piece.hi - piece.lo;
-        span_blocks(X, V, span.a0 + piece.lo, span.b0 + piece.lo, count, mat.ks, mat.kd, span.rest, h,
-                    &along[s], &across[s], &kv_x[s], &kv_y[s], &kv_z[s]);
+        span_blocks(X, V, span.a0 + piece.lo, span.b0 + piece.lo, count, mat.ks, mat.kd, span.rest,
+                    h, &along[s], &across[s], &kv_x[s], &kv_y[s], &kv_z[s]);
         if (v_start)
-          for (std::vector<double>* kv : {&kv_x, &kv_y, &kv_z}) std::fill_n(kv->begin() + s, count, 0.0);
+          for (std::vector<double>* kv : {&kv_x, &kv_y, &kv_z})
+            std::fill_n(kv->begin() + s, count, 0.0);
       }
     });
     each_block(plan, n, work, [&](int block, int begin, int end) {
@@ -347,7 +351,7 @@ struct ImplicitSolver {
     const double* w = kWeights[std::min(known, 3)];
     for (int c = 0; c < 3; ++c) {
       double *d1 = dv.col(c).data(), *d2 = earlier[0].col(c).data(), *d3 = earlier[1].col(c).data();
-SPRINGLAB_VECTORISE
+      SPRINGLAB_VECTORISE
       for (int i = begin; i < end; ++i) {
         const double next = w[0] * d1[i] + w[1] * d2[i] + w[2] * d3[i];
         d3[i] = d2[i];
@@ -448,7 +452,7 @@ SPRINGLAB_VECTORISE
         for (int c = 0; c < 3; ++c) {
           double *solution = dv.col(c).data(), *residual = r.col(c).data();
           const double *direction = p.col(c).data(), *product = q.col(c).data();
-SPRINGLAB_VECTORISE
+          SPRINGLAB_VECTORISE
           for (int i = begin; i < end; ++i) {
             solution[i] += alpha * direction[i];
             residual[i] -= alpha * product[i];
@@ -467,7 +471,7 @@ SPRINGLAB_VECTORISE
         for (int c = 0; c < 3; ++c) {
           double* direction = p.col(c).data();
           const double* preconditioned = z.col(c).data();
-SPRINGLAB_VECTORISE
+          SPRINGLAB_VECTORISE
           for (int i = begin; i < end; ++i) direction[i] = preconditioned[i] + beta * direction[i];
         }
       });
@@ -499,7 +503,8 @@ void implicit_euler(const Model& model, const State& in, State& out, double h,
   S.resize(model, plan);
   out.resize(n);
   // As Eigen's conjugate gradients: twice the unknowns (never reached unless A is ill-posed).
-  const int max_iterations = settings.max_solver_iterations > 0 ? settings.max_solver_iterations : 6 * n;
+  const int max_iterations =
+      settings.max_solver_iterations > 0 ? settings.max_solver_iterations : 6 * n;
 
   S.setup(model, plan, in, h);
   S.solve(model, plan, in.x, settings.solver_tolerance, max_iterations);

@@ -5,7 +5,8 @@
 //   x1 = argmin_x  sum_i m~_i / (2 h^2) |x_i - y_i|^2  +  E(x)  +  D(x),    v1 = (x1 - x) / h
 //
 //   E = sum_s k_s (|x_b - x_a| - L)^2 / 2                  the springs' energy
-//   D = sum_s k_d / (2 h) (u_s . (dx_b - dx_a))^2           their damping, dx = x1 - x over the step,
+//   D = sum_s k_d / (2 h) (u_s . (dx_b - dx_a))^2           their damping, dx = x1 - x over the
+//   step,
 //                                                           u_s the spring's direction (lagged)
 //
 // Its stationary point is the backward-Euler step of the notes' model, f(x1, v1) with v1 =
@@ -70,21 +71,23 @@ struct VertexBlockDescent {
   std::vector<int> first, spring, other;
   // Vertices grouped by colour: colour c is order[colour_first[c] .. colour_first[c + 1]).
   std::vector<int> order, colour_first;
-  std::vector<double> colour_work;  // a colour's vertices and their springs (threads::worth_threads)
+  std::vector<double>
+      colour_work;  // a colour's vertices and their springs (threads::worth_threads)
 };
 
 // What the three keep between steps, one Workspace's worth.
 struct IterativeSolvers {
-  Points y;                       // the inertial prediction
-  std::vector<double> mass;       // m~
-  std::vector<double> lambda;     // xpbd: each spring's Lagrange multiplier in the sub-step
+  Points y;                    // the inertial prediction
+  std::vector<double> mass;    // m~
+  std::vector<double> lambda;  // xpbd: each spring's Lagrange multiplier in the sub-step
   LocalGlobalSolver local_global;
   VertexBlockDescent vbd;
 };
 
 // Greedy colouring of the particles so that no two of one colour share a spring (pinned ones
-// too: a drag pins and unpins particles, the colouring stays). Deterministic: particles in index order, each the
-// least colour its neighbours do not have. Returns the colours' first indices into `order`.
+// too: a drag pins and unpins particles, the colouring stays). Deterministic: particles in index
+// order, each the least colour its neighbours do not have. Returns the colours' first indices into
+// `order`.
 void colour_vertices(const Model& model, VertexBlockDescent& out);
 
 // Chebyshev semi-iterative acceleration (Wang 2015, "A Chebyshev semi-iterative approach for

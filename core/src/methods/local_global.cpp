@@ -20,25 +20,28 @@
 //
 // Chebyshev acceleration (Wang 2015), with rho = settings.chebyshev_rho > 0:
 //   x^(k+1) = omega_(k+1) (x^ - x^(k-1)) + x^(k-1),  x^ the plain iteration's result from x^k.
+#include "local_global.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include "dynamics/threads.hpp"
-#include "local_global.hpp"
-#include "springlab/iterative_cost.hpp"
 #include "springlab/error.hpp"
+#include "springlab/iterative_cost.hpp"
 #include "springlab/spring_kernel.hpp"
 #include "steps.hpp"
 
 namespace springlab {
 
 bool LocalGlobalSolver::Key::matches(const Model& model, double step) const {
-  if (h != step || drag != model.drag || spans != model.spans.data() || springs != model.spring_count() ||
-      mass != model.mass || inv_mass != model.inv_mass || materials.size() != model.materials.size())
+  if (h != step || drag != model.drag || spans != model.spans.data() ||
+      springs != model.spring_count() || mass != model.mass || inv_mass != model.inv_mass ||
+      materials.size() != model.materials.size())
     return false;
   for (std::size_t m = 0; m < materials.size(); ++m)
-    if (materials[m].ks != model.materials[m].ks || materials[m].kd != model.materials[m].kd) return false;
+    if (materials[m].ks != model.materials[m].ks || materials[m].kd != model.materials[m].kd)
+      return false;
   return true;
 }
 
@@ -54,13 +57,16 @@ void LocalGlobalSolver::Key::take(const Model& model, double step) {
 
 namespace {
 
-double spring_weight(const SpringMaterial& m, double h) { return h * h * m.ks + h * m.kd; }
+double spring_weight(const SpringMaterial& m, double h) {
+  return h * h * m.ks + h * m.kd;
+}
 
 }  // namespace
 
 namespace local_global_parts {
 
-void factorise(const Model& model, double h, const std::vector<double>& mass, LocalGlobalSolver& S) {
+void factorise(const Model& model, double h, const std::vector<double>& mass,
+               LocalGlobalSolver& S) {
   const int n = model.particle_count();
   std::vector<int> row(n, -1);
   int rows = 0;
@@ -85,7 +91,8 @@ void factorise(const Model& model, double h, const std::vector<double>& mass, Lo
   matrix.setFromTriplets(entries.begin(), entries.end());
   S.factor.compute(matrix);
   if (S.factor.info() != Eigen::Success)  // M~ > 0 makes it definite: only a bad mass gets here
-    throw StepFailure("local-global: the global matrix could not be factorised (a zero or negative mass?)");
+    throw StepFailure(
+        "local-global: the global matrix could not be factorised (a zero or negative mass?)");
   // Rows in the factor's own (fill-reducing) order, so that the solve needs no permutation:
   // Eigen's P b puts row r at P.indices()[r].
   const auto& order = S.factor.permutationP().indices();
@@ -103,8 +110,8 @@ void factorise(const Model& model, double h, const std::vector<double>& mass, Lo
 // (L D L^T) z = b in place, b and z in the factor's order (local_global.hpp, solve_ldlt3).
 void solve_in_place(const LocalGlobalSolver& S, std::vector<double>& z) {
   const auto& L = S.factor.matrixL().nestedExpression();
-  solve_ldlt3(static_cast<int>(L.cols()), L.outerIndexPtr(), L.innerIndexPtr(), L.valuePtr(), S.inv_d.data(),
-              z.data());
+  solve_ldlt3(static_cast<int>(L.cols()), L.outerIndexPtr(), L.innerIndexPtr(), L.valuePtr(),
+              S.inv_d.data(), z.data());
 }
 
 // The local step for `count` springs of a span (spring k joins a0 + k and b0 + k), from the
@@ -114,10 +121,12 @@ void span_targets(const double* const x[3], const double* const x0[3], int a0, i
                   double ks, double kd, double rest, double h, double* __restrict wx,
                   double* __restrict wy, double* __restrict wz) {
   const double k_s = h * h * ks, k_d = h * kd, near = coincident_length(rest);
-SPRINGLAB_VECTORISE
+  SPRINGLAB_VECTORISE
   for (int k = 0; k < count; ++k) {
-    const double ex = x[0][b0 + k] - x[0][a0 + k], ey = x[1][b0 + k] - x[1][a0 + k], ez = x[2][b0 + k] - x[2][a0 + k];
-    const double fx = x0[0][b0 + k] - x0[0][a0 + k], fy = x0[1][b0 + k] - x0[1][a0 + k], fz = x0[2][b0 + k] - x0[2][a0 + k];
+    const double ex = x[0][b0 + k] - x[0][a0 + k], ey = x[1][b0 + k] - x[1][a0 + k],
+                 ez = x[2][b0 + k] - x[2][a0 + k];
+    const double fx = x0[0][b0 + k] - x0[0][a0 + k], fy = x0[1][b0 + k] - x0[1][a0 + k],
+                 fz = x0[2][b0 + k] - x0[2][a0 + k];
     const double l = std::sqrt(ex * ex + ey * ey + ez * ez);
     // Coincident ends have no direction: no force (d = e) and no damping (P de = de).
     const bool none = l <= near;
@@ -125,7 +134,7 @@ SPRINGLAB_VECTORISE
     const double ux = ex * inv, uy = ey * inv, uz = ez * inv;
     const double along = ux * (ex - fx) + uy * (ey - fy) + uz * (ez - fz);  // u . de
     const double target = none ? 1.0 : rest * inv;                          // d = target e
-    wx[k] = k_s * target * ex + k_d * (ex - ux * along);                    // e0 + P de = e - u (u . de)
+    wx[k] = k_s * target * ex + k_d * (ex - ux * along);  // e0 + P de = e - u (u . de)
     wy[k] = k_s * target * ey + k_d * (ey - uy * along);
     wz[k] = k_s * target * ez + k_d * (ez - uz * along);
   }
@@ -154,19 +163,24 @@ void global_rhs(const Model& model, const State& in, double h, const Points& X, 
   // is mostly its serial solves, and more threads only cost (128 x 128 cloth on 16 cores, 10
   // iterations at 1/60 s: 26.6, 26.3, 27.6, 23.4 and 22.0 steps/s at 1, 2, 4, 8 and 16 threads).
   constexpr int kPiece = 2048, kPerThread = 16384;
-  threads::for_each_piece((springs + kPiece - 1) / kPiece, springs, [&](int p) {
-    const int lo = p * kPiece, hi = std::min(springs, lo + kPiece);
-    auto span = std::upper_bound(model.spans.begin(), model.spans.end(), lo,
-                                 [](int s, const SpringSpan& sp) { return s < sp.first; }) - 1;
-    for (; span < model.spans.end() && span->first < hi; ++span) {
-      const SpringMaterial& material = model.materials[span->material];
-      const int from = std::max(lo - span->first, 0), to = std::min(hi - span->first, span->count);
-      if (from >= to) continue;
-      const int at = span->first + from;
-      span_targets(x, x0, span->a0 + from, span->b0 + from, to - from, material.ks, material.kd, span->rest, h,
-                   wx + at, wy + at, wz + at);
-    }
-  }, kPerThread);
+  threads::for_each_piece(
+      (springs + kPiece - 1) / kPiece, springs,
+      [&](int p) {
+        const int lo = p * kPiece, hi = std::min(springs, lo + kPiece);
+        auto span = std::upper_bound(model.spans.begin(), model.spans.end(), lo,
+                                     [](int s, const SpringSpan& sp) { return s < sp.first; }) -
+                    1;
+        for (; span < model.spans.end() && span->first < hi; ++span) {
+          const SpringMaterial& material = model.materials[span->material];
+          const int from = std::max(lo - span->first, 0),
+                    to = std::min(hi - span->first, span->count);
+          if (from >= to) continue;
+          const int at = span->first + from;
+          span_targets(x, x0, span->a0 + from, span->b0 + from, to - from, material.ks, material.kd,
+                       span->rest, h, wx + at, wy + at, wz + at);
+        }
+      },
+      kPerThread);
   std::fill(S.rhs.begin(), S.rhs.end(), 0.0);
   for (int s = 0; s < springs; ++s) {
     const int a = model.spring_a[s], b = model.spring_b[s];
@@ -187,9 +201,8 @@ namespace steps {
 
 using namespace local_global_parts;
 
-
-void local_global(const Model& model, const State& in, State& out, double h, const StepSettings& settings,
-                  Workspace& ws) {
+void local_global(const Model& model, const State& in, State& out, double h,
+                  const StepSettings& settings, Workspace& ws) {
   if (!ws.iterative) ws.iterative = std::make_unique<IterativeSolvers>();
   IterativeSolvers& I = *ws.iterative;
   LocalGlobalSolver& S = I.local_global;
@@ -216,7 +229,8 @@ void local_global(const Model& model, const State& in, State& out, double h, con
       for (int c = 0; c < 3; ++c)
         for (int i = 0; i < n; ++i)
           if (S.row[i] >= 0)
-            out.x(i, c) = omega * (I.y(i, c) + S.rhs[3 * S.row[i] + c] - S.previous(i, c)) + S.previous(i, c);
+            out.x(i, c) =
+                omega * (I.y(i, c) + S.rhs[3 * S.row[i] + c] - S.previous(i, c)) + S.previous(i, c);
       S.previous.swap(S.current);
     } else {
       for (int c = 0; c < 3; ++c)

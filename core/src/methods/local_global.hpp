@@ -20,7 +20,8 @@ void solve_in_place(const LocalGlobalSolver& S, std::vector<double>& z);
 // `rows` compressed columns without the diagonal (SimplicialLDLT's: begin, index, value), D^-1
 // in inv_d. In T: double in the solver; the benchmark also times float.
 template <typename T>
-void solve_ldlt3(int rows, const int* begin, const int* index, const T* value, const T* inv_d, T* Z) {
+void solve_ldlt3(int rows, const int* begin, const int* index, const T* value, const T* inv_d,
+                 T* Z) {
   for (int j = 0; j < rows; ++j) {  // L y = b
     const T y0 = Z[3 * j], y1 = Z[3 * j + 1], y2 = Z[3 * j + 2];
     for (int p = begin[j]; p < begin[j + 1]; ++p) {

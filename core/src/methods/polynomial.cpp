@@ -3,8 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 #include <cstdlib>
+#include <optional>
 
 namespace springlab::poly {
 
@@ -17,9 +17,13 @@ void trim(Poly& p) {
   if (p.empty()) p.push_back(Rational(0));
 }
 
-bool is_zero(const Poly& p) { return p.size() == 1 && p[0] == 0; }
+bool is_zero(const Poly& p) {
+  return p.size() == 1 && p[0] == 0;
+}
 
-int degree(const Poly& p) { return static_cast<int>(p.size()) - 1; }
+int degree(const Poly& p) {
+  return static_cast<int>(p.size()) - 1;
+}
 
 Poly multiply(const Poly& a, const Poly& b) {
   Poly c(a.size() + b.size() - 1, Rational(0));
@@ -65,8 +69,12 @@ namespace {
 // A polynomial times a positive constant, with integer coefficients: the same sign everywhere.
 using IntPoly = std::vector<cpp_int>;
 
-int int_degree(const IntPoly& p) { return static_cast<int>(p.size()) - 1; }
-bool int_zero(const IntPoly& p) { return p.size() == 1 && p[0] == 0; }
+int int_degree(const IntPoly& p) {
+  return static_cast<int>(p.size()) - 1;
+}
+bool int_zero(const IntPoly& p) {
+  return p.size() == 1 && p[0] == 0;
+}
 void int_trim(IntPoly& p) {
   while (p.size() > 1 && p.back() == 0) p.pop_back();
   if (p.empty()) p.push_back(0);
@@ -81,7 +89,8 @@ IntPoly integral(const Poly& p) {
   IntPoly out;
   cpp_int content = 0;
   for (const Rational& c : p) {
-    out.push_back(boost::multiprecision::numerator(c) * (denominators / boost::multiprecision::denominator(c)));
+    out.push_back(boost::multiprecision::numerator(c) *
+                  (denominators / boost::multiprecision::denominator(c)));
     content = boost::multiprecision::gcd(content, cpp_int(abs(out.back())));
   }
   if (content > 1)
@@ -99,7 +108,8 @@ IntPoly pseudo_remainder(IntPoly a, const IntPoly& b) {
     const cpp_int f = a.back();
     const int shift = int_degree(a) - db;
     for (cpp_int& c : a) c *= lead;
-    for (int i = 0; i <= db; ++i) a[static_cast<std::size_t>(i + shift)] -= f * b[static_cast<std::size_t>(i)];
+    for (int i = 0; i <= db; ++i)
+      a[static_cast<std::size_t>(i + shift)] -= f * b[static_cast<std::size_t>(i)];
     a.pop_back();
     int_trim(a);
     --times;
@@ -132,7 +142,8 @@ std::vector<IntPoly> remainder_sequence(IntPoly a, IntPoly b) {
     g = a.back();
     // h <- g^delta / h^(delta - 1), exactly.
     if (delta == 0) continue;
-    h = boost::multiprecision::pow(g, static_cast<unsigned>(delta)) / boost::multiprecision::pow(h, static_cast<unsigned>(delta - 1));
+    h = boost::multiprecision::pow(g, static_cast<unsigned>(delta)) /
+        boost::multiprecision::pow(h, static_cast<unsigned>(delta - 1));
   }
   return out;
 }
@@ -201,7 +212,9 @@ Dyadic midpoint(Dyadic a, Dyadic b) {
   return Dyadic{a.n + b.n, a.k + 1};
 }
 
-Rational value(const Dyadic& x) { return Rational(x.n, cpp_int(1) << x.k); }
+Rational value(const Dyadic& x) {
+  return Rational(x.n, cpp_int(1) << x.k);
+}
 
 // The sign of p(n / 2^k): of sum c_i n^i 2^(k (d - i)), by Horner's rule.
 int sign_at(const IntPoly& p, const Dyadic& x) {
@@ -333,8 +346,8 @@ SignChange first_positive_crossing(const std::vector<Poly>& factors) {
   std::vector<Poly> reduced;
   for (Poly f : factors) {
     trim(f);
-    if (is_zero(f)) return out;                // the product is 0 everywhere
-    while (f[0] == 0) f.erase(f.begin());      // divided by t^m: the same sign for t > 0
+    if (is_zero(f)) return out;            // the product is 0 everywhere
+    while (f[0] == 0) f.erase(f.begin());  // divided by t^m: the same sign for t > 0
     if (f[0] < 0) sign_near_zero = -sign_near_zero;
     if (degree(f) > 0) reduced.push_back(std::move(f));
   }
@@ -350,13 +363,16 @@ SignChange first_positive_crossing(const std::vector<Poly>& factors) {
     // and then the sequence is the one to search); else f's odd part has a sequence of its own.
     const Sturm whole(f);
     const std::optional<SignChange> root =
-        int_degree(whole.last()) == 0 ? smallest_positive_root(whole)
-                                      : smallest_positive_root(Sturm(odd_part(f, rational(whole.last()))));
+        int_degree(whole.last()) == 0
+            ? smallest_positive_root(whole)
+            : smallest_positive_root(Sturm(odd_part(f, rational(whole.last()))));
     if (root && (!first || root->lo < first->lo)) first = root;
   }
   return first ? *first : out;
 }
 
-SignChange first_positive_crossing(const Poly& s) { return first_positive_crossing(std::vector<Poly>{s}); }
+SignChange first_positive_crossing(const Poly& s) {
+  return first_positive_crossing(std::vector<Poly>{s});
+}
 
 }  // namespace springlab::poly

@@ -28,7 +28,7 @@ int degree(const Poly& p);  // 0 for constants and the zero polynomial
 Poly multiply(const Poly& a, const Poly& b);
 Poly add(const Poly& a, const Poly& b, int sign = 1);  // a + sign b
 void divide(Poly a, const Poly& b, Poly& q, Poly& r);  // a = q b + r, deg r < deg b
-Poly gcd(Poly a, Poly b);                               // monic; gcd(0, 0) = {1}
+Poly gcd(Poly a, Poly b);                              // monic; gcd(0, 0) = {1}
 Poly derivative(const Poly& p);
 Rational evaluate(const Poly& p, const Rational& x);
 Poly reflected(Poly p);  // p(-t)

@@ -26,13 +26,14 @@ const Tableau kDormandPrince(
     {35.0 / 384.0, 0.0, 500.0 / 1113.0, 125.0 / 192.0, -2187.0 / 6784.0, 11.0 / 84.0, 0.0});
 
 // Fifth-order weights minus the embedded fourth-order ones.
-constexpr double kErrorWeights[7] = {71.0 / 57600.0,      0.0,         -71.0 / 16695.0,
-                                     71.0 / 1920.0,       -17253.0 / 339200.0,
-                                     22.0 / 525.0,        -1.0 / 40.0};
+constexpr double kErrorWeights[7] = {
+    71.0 / 57600.0,      0.0,          -71.0 / 16695.0, 71.0 / 1920.0,
+    -17253.0 / 339200.0, 22.0 / 525.0, -1.0 / 40.0};
 
 // RMS of the scaled error over the coordinates of free particles.
 double error_norm(const Model& model, const Points& x0, const Points& v0, const Points& x1,
-                  const Points& v1, double step, const Workspace& ws, double tol, const double* weights, int stages) {
+                  const Points& v1, double step, const Workspace& ws, double tol,
+                  const double* weights, int stages) {
   double sum = 0.0;
   int count = 0;
   for (int i = 0; i < x0.rows(); ++i) {
@@ -56,19 +57,21 @@ double error_norm(const Model& model, const Points& x0, const Points& v0, const 
 
 void rk45(const Model& model, const State& in, State& out, double h, const StepSettings& settings,
           Workspace& ws) {
-  adaptive::embedded_pair_step(kDormandPrince, kErrorWeights, 0.2, "rk45", model, in, out, h, settings, ws);
+  adaptive::embedded_pair_step(kDormandPrince, kErrorWeights, 0.2, "rk45", model, in, out, h,
+                               settings, ws);
 }
 
 }  // namespace springlab::steps
 
 namespace springlab::adaptive {
 
-void embedded_pair_step(const Tableau& tableau, const double* error_weights, double exponent, const char* name,
-                        const Model& model, const State& in, State& out, double h, const StepSettings& settings,
-                        Workspace& ws) {
+void embedded_pair_step(const Tableau& tableau, const double* error_weights, double exponent,
+                        const char* name, const Model& model, const State& in, State& out, double h,
+                        const StepSettings& settings, Workspace& ws) {
   const int last_stage = tableau.stages - 1;
   const bool fsal = tableau.first_same_as_last();
-  // The state walks in `out`; each try is written to (ws.trial_x, ws.trial_v) and swapped in if accepted.
+  // The state walks in `out`; each try is written to (ws.trial_x, ws.trial_v) and swapped in if
+  // accepted.
   out.x = in.x;
   out.v = in.v;
   double T = first_try(ws, h);
@@ -81,8 +84,8 @@ void embedded_pair_step(const Tableau& tableau, const double* error_weights, dou
     const double step = last ? remaining : T;
     rk::stages(model, out.x, out.v, step, tableau, ws, first_known);
     rk::combine(out.x, out.v, step, tableau.b, ws, ws.trial_x, ws.trial_v);
-    const double err = steps::error_norm(model, out.x, out.v, ws.trial_x, ws.trial_v, step, ws, settings.tolerance,
-                                         error_weights, tableau.stages);
+    const double err = steps::error_norm(model, out.x, out.v, ws.trial_x, ws.trial_v, step, ws,
+                                         settings.tolerance, error_weights, tableau.stages);
     if (!(err <= 1.0)) {  // also rejects NaN
       ++ws.counters.rejected;
       T = step * (std::isfinite(err) ? std::max(0.2, 0.9 * std::pow(err, -exponent)) : 0.2);

@@ -26,8 +26,8 @@ void stages(const Model& model, const Points& x, const Points& v, double h, cons
   }
 }
 
-void combine(const Points& x, const Points& v, double h, const std::vector<double>& weights, const Workspace& ws,
-             Points& x1, Points& v1) {
+void combine(const Points& x, const Points& v, double h, const std::vector<double>& weights,
+             const Workspace& ws, Points& x1, Points& v1) {
   x1 = x;
   v1 = v;
   for (std::size_t i = 0; i < weights.size(); ++i) {

@@ -1,4 +1,5 @@
-// Backward Euler solved to convergence by Newton's method with its true Jacobian (stage_newton.hpp).
+// Backward Euler solved to convergence by Newton's method with its true Jacobian
+// (stage_newton.hpp).
 //
 //   G(V) = M (V - v) - h f(X, V),  X = x + h V
 //   J = dG/dV = M - h df/dv - h^2 df/dx
@@ -42,7 +43,9 @@ constexpr double kNewtonTolerance = 1e-12;
 constexpr int kMaxCorrections = 50, kMaxHalvings = 30;
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
-Eigen::Vector3d row(const Points& p, int i) { return p.row(i).transpose(); }
+Eigen::Vector3d row(const Points& p, int i) {
+  return p.row(i).transpose();
+}
 
 void add_block(std::vector<Eigen::Triplet<double>>& t, int r, int c, const Eigen::Matrix3d& B) {
   for (int i = 0; i < 3; ++i)
@@ -65,14 +68,16 @@ void assemble(const Model& model, const Points& X, const Points& V, double h, bo
     }
     Eigen::Matrix3d B = (model.mass[i] + h * model.drag) * I;
     if (!definite)
-      for (const Attractor& a : model.attractors) B -= h * h * model.mass[i] * field_jacobian(a, row(X, i));
+      for (const Attractor& a : model.attractors)
+        B -= h * h * model.mass[i] * field_jacobian(a, row(X, i));
     add_block(entries, i, i, B);
   }
   const Eigen::Matrix3d Z = Eigen::Matrix3d::Zero();
   for (int s = 0; s < model.spring_count(); ++s) {
     const int a = model.spring_a[s], b = model.spring_b[s];
-    const SpringJacobian d = spring_jacobian(row(X, a), row(X, b), row(V, a), row(V, b), model.ks(s), model.kd(s),
-                                             model.rest_length[s], definite);
+    const SpringJacobian d =
+        spring_jacobian(row(X, a), row(X, b), row(V, a), row(V, b), model.ks(s), model.kd(s),
+                        model.rest_length[s], definite);
     const Eigen::Matrix3d K = h * d.dfdv + h * h * d.dfdx;
     const bool pa = model.pinned(a), pb = model.pinned(b);
     add_block(entries, a, a, pa ? Z : K);
@@ -110,7 +115,8 @@ double incremental_potential(const Model& model, const State& in, const State& o
 
 }  // namespace
 
-Eigen::SparseMatrix<double> stage_jacobian(const Model& model, const Points& X, const Points& V, double h) {
+Eigen::SparseMatrix<double> stage_jacobian(const Model& model, const Points& X, const Points& V,
+                                           double h) {
   std::vector<Eigen::Triplet<double>> entries;
   Eigen::SparseMatrix<double> J;
   assemble(model, X, V, h, false, entries, J);
@@ -121,7 +127,8 @@ namespace {
 
 // One stage's iteration: the iterate `out`, G and the merits at it, and the ways down.
 struct Iteration {
-  Iteration(const Model& m, const State& start_state, State& iterate, double step, Workspace& w, NewtonSolver& solver)
+  Iteration(const Model& m, const State& start_state, State& iterate, double step, Workspace& w,
+            NewtonSolver& solver)
       : model(m), in(start_state), out(iterate), h(step), ws(w), N(solver) {}
   const Model& model;
   const State& in;
@@ -152,7 +159,8 @@ struct Iteration {
       stiffest = std::max(stiffest, model.ks(s));
     }
     for (int i = 0; i < n; ++i)
-      if (!model.pinned(i)) scale = std::max({scale, model.mass[i] * model.gravity.norm(), N.f.row(i).norm()});
+      if (!model.pinned(i))
+        scale = std::max({scale, model.mass[i] * model.gravity.norm(), N.f.row(i).norm()});
     converged = true;
     tolerance = 0.0;
     N.g.resize(3 * n);
@@ -181,7 +189,8 @@ struct Iteration {
   [[noreturn]] void fail(const char* why) const {
     char what[320];
     std::snprintf(what, sizeof what,
-                  "the equations were not solved: Newton's iteration %s (largest residual %.3g N s against a tolerance of "
+                  "the equations were not solved: Newton's iteration %s (largest residual %.3g N s "
+                  "against a tolerance of "
                   "%.3g, h = %.3g s)",
                   why, residual, tolerance, h);
     throw SolveFailure(what);
@@ -203,14 +212,16 @@ struct Iteration {
     const double slope = N.g.dot(d);  // dPhi/dt at t = 0: G is Phi's gradient
     if (by == Merit::Potential && !(slope < 0.0)) return false;
     const double merit_start = merit;
-    const double phi_start = by == Merit::Potential ? incremental_potential(model, in, out, h) : 0.0;
+    const double phi_start =
+        by == Merit::Potential ? incremental_potential(model, in, out, h) : 0.0;
     double t = 1.0;
     for (int halving = 0; halving <= halvings; ++halving, t *= 0.5) {
       move(d, t);
       measure();
       if (converged) return true;
-      if (by == Merit::Residual ? merit <= (1.0 - 1e-4 * t) * merit_start
-                                : incremental_potential(model, in, out, h) <= phi_start + 1e-4 * t * slope)
+      if (by == Merit::Residual
+              ? merit <= (1.0 - 1e-4 * t) * merit_start
+              : incremental_potential(model, in, out, h) <= phi_start + 1e-4 * t * slope)
         return true;
     }
     move(d, 0.0);
@@ -267,22 +278,26 @@ struct Iteration {
     if (!moved) moved = descend(Eigen::VectorXd(N.dv), N.factored);
     if (!moved) {
       // No direction lowers either merit: as good as doubles make it, or stuck at a kink.
-      if (residual <= 1e3 * tolerance) converged = true;
-      else fail("found no correction that lowers the residual (a spring through zero length?)");
+      if (residual <= 1e3 * tolerance)
+        converged = true;
+      else
+        fail("found no correction that lowers the residual (a spring through zero length?)");
     }
     // A kept factorisation that no longer cuts |G| threefold is made afresh next time.
     if (!exact && !(merit <= before / 3.0)) N.factored = false;
     // An exact correction that no longer halves |G| has reached rounding (Newton's would square
     // it): where that is within a thousand times the tolerance, solved as well as doubles solve it.
-    if (exact && !converged && !(merit <= 0.5 * before) && residual <= 1e3 * tolerance) converged = true;
+    if (exact && !converged && !(merit <= 0.5 * before) && residual <= 1e3 * tolerance)
+      converged = true;
     return true;
   }
 };
 
 }  // namespace
 
-void backward_euler_converged(const Model& model, const State& in, State& out, double h, const StepSettings& settings,
-                              Workspace& ws, NewtonSolver& N, int* corrections) {
+void backward_euler_converged(const Model& model, const State& in, State& out, double h,
+                              const StepSettings& settings, Workspace& ws, NewtonSolver& N,
+                              int* corrections) {
   // The first guess: the linearised step (Baraff and Witkin's, the implicit-euler row's), its
   // conjugate gradients to 1e-4 only: the corrections take it from there.
   StepSettings guess = settings;
@@ -291,7 +306,9 @@ void backward_euler_converged(const Model& model, const State& in, State& out, d
   Iteration it(model, in, out, h, ws, N);
   it.measure();
   // A factorisation of another model or step is of no use.
-  if (N.analysed_particles != it.n || N.analysed_springs != model.spring_count() || N.factored_h != h) N.factored = false;
+  if (N.analysed_particles != it.n || N.analysed_springs != model.spring_count() ||
+      N.factored_h != h)
+    N.factored = false;
   for (int k = 0; !it.converged; ++k) {
     if (!std::isfinite(it.residual)) it.fail("met a non-finite force");
     if (k == kMaxCorrections) {

@@ -8,9 +8,9 @@
 // linear and let it stall on a compressed cloth.
 #pragma once
 
-#include <Eigen/SparseCore>
 #include <Eigen/OrderingMethods>
 #include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
 #include <cstdint>
 #include <vector>
@@ -33,7 +33,8 @@ struct NewtonSolver {
   Eigen::VectorXd g, dv;
   Points f;
   SpringForces spring_forces;
-  int analysed_particles = -1, analysed_springs = -1;  // the pattern the factorisation was analysed for
+  int analysed_particles = -1,
+      analysed_springs = -1;  // the pattern the factorisation was analysed for
   // The factorisation held: of J at some earlier iterate, for a step of `factored_h` (Hairer and
   // Wanner's simplified Newton: kept while corrections contract it well, made again when not).
   double factored_h = 0.0;
@@ -49,11 +50,13 @@ struct NewtonSolver {
 // momentum change (and above rounding). `corrections`, if given, is increased by the corrections
 // made; ws.counters.newton_corrections too. Throws SolveFailure ("the equations were not solved")
 // when 16 corrections do not converge: the method is not unstable, its equations were not solved.
-void backward_euler_converged(const Model& model, const State& in, State& out, double h, const StepSettings& settings,
-                              Workspace& ws, NewtonSolver& newton, int* corrections = nullptr);
+void backward_euler_converged(const Model& model, const State& in, State& out, double h,
+                              const StepSettings& settings, Workspace& ws, NewtonSolver& newton,
+                              int* corrections = nullptr);
 
 // J = dG/dV at the iterate (X, V) = (x + h V, V) for a step of h, as the corrections use it (for
 // the tests, against finite differences of G).
-Eigen::SparseMatrix<double> stage_jacobian(const Model& model, const Points& X, const Points& V, double h);
+Eigen::SparseMatrix<double> stage_jacobian(const Model& model, const Points& X, const Points& V,
+                                           double h);
 
 }  // namespace springlab::steps

@@ -5,7 +5,7 @@
 
 namespace springlab::steps {
 
-#define SPRINGLAB_STEP(fn)                                                                      \
+#define SPRINGLAB_STEP(fn)                                                                         \
   void fn(const Model& model, const State& in, State& out, double h, const StepSettings& settings, \
           Workspace& ws)
 
@@ -25,11 +25,11 @@ SPRINGLAB_STEP(vbd);
 #undef SPRINGLAB_STEP
 
 // The rows made from tableaux (tableau_steps.cpp).
-void explicit_tableau(const Tableau& tableau, const Model& model, const State& in, State& out, double h,
-                      const StepSettings& settings, Workspace& ws);
-void embedded_pair(const Tableau& tableau, const Model& model, const State& in, State& out, double h,
-                   const StepSettings& settings, Workspace& ws);
-void diagonally_implicit(const Tableau& tableau, const Model& model, const State& in, State& out, double h,
-                         const StepSettings& settings, Workspace& ws);
+void explicit_tableau(const Tableau& tableau, const Model& model, const State& in, State& out,
+                      double h, const StepSettings& settings, Workspace& ws);
+void embedded_pair(const Tableau& tableau, const Model& model, const State& in, State& out,
+                   double h, const StepSettings& settings, Workspace& ws);
+void diagonally_implicit(const Tableau& tableau, const Model& model, const State& in, State& out,
+                         double h, const StepSettings& settings, Workspace& ws);
 
 }  // namespace springlab::steps

@@ -1,6 +1,3 @@
-#include "springlab/methods.hpp"
-#include "springlab/text.hpp"
-
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -10,9 +7,10 @@
 #include <mutex>
 #include <sstream>
 
-#include "springlab/error.hpp"
-
 #include "methods/steps.hpp"
+#include "springlab/error.hpp"
+#include "springlab/methods.hpp"
+#include "springlab/text.hpp"
 #include "stability/mode_limits.hpp"
 
 namespace springlab {
@@ -26,11 +24,16 @@ constexpr double kControlled = std::numeric_limits<double>::quiet_NaN();
 // The Runge-Kutta rows' tableaux (defined before the table that points at them).
 const Tableau kEulerTableau({{0.0}}, {1.0});
 const Tableau kMidpointTableau({{0.0}, {0.5}}, {0.0, 1.0});
-const Tableau kRK4Tableau({{0.0}, {0.5}, {0.0, 0.5}, {0.0, 0.0, 1.0}}, {1.0 / 6.0, 1.0 / 3.0, 1.0 / 3.0, 1.0 / 6.0});
+const Tableau kRK4Tableau({{0.0}, {0.5}, {0.0, 0.5}, {0.0, 0.0, 1.0}},
+                          {1.0 / 6.0, 1.0 / 3.0, 1.0 / 3.0, 1.0 / 6.0});
 const Tableau kImplicitEulerTableau({{1.0}}, {1.0});
 
-DefiniteForm symplectic_euler_form(double) { return {1.0, 2.0, 4.0}; }
-DefiniteForm verlet_form(double d) { return {1.0, 4.0 - d, 4.0 - 2.0 * d}; }
+DefiniteForm symplectic_euler_form(double) {
+  return {1.0, 2.0, 4.0};
+}
+DefiniteForm verlet_form(double d) {
+  return {1.0, 4.0 - d, 4.0 - 2.0 * d};
+}
 
 using F = MethodFamily;
 
@@ -53,80 +56,190 @@ using F = MethodFamily;
 // constexpr: constant-initialised, so that the table (below) can copy it during other files'
 // static initialisation (a test's list of methods) whatever the order the linker gives them.
 constexpr MethodInfo kMethods[] = {
-    {.id = Method::Euler, .name = "euler", .label = N_("Explicit Euler"), .order = 1, .evaluations = "1",
+    {.id = Method::Euler,
+     .name = "euler",
+     .label = N_("Explicit Euler"),
+     .order = 1,
+     .evaluations = "1",
      .undamped_limit = kNever,
-     .stability = N_("explicit Euler gains energy at any step without damping (growth sqrt(1 + (h w)^2) a step)"),
-     .family = F::RungeKutta, .step = steps::euler, .tableau = &kEulerTableau, .mode_limit = modes::euler,
-     .corner_bound = true, .audited = true,
-     .compared_first = true, .colour = {0.90f, 0.38f, 0.00f}, .mark = Mark::TriangleUp},
-    {.id = Method::SymplecticEuler, .name = "symplectic-euler", .label = N_("Symplectic Euler"), .order = 1,
-     .evaluations = "1", .undamped_limit = 2.0,
-     .stability = N_("symplectic Euler is stable for h w < 2; its energy oscillates but does not drift"),
-     .family = F::Partitioned, .step = steps::symplectic_euler, .mode_limit = modes::symplectic_euler,
-     .definite = symplectic_euler_form, .corner_bound = true, .angular_momentum = Kept::Exactly,
-     .compared_first = true, .colour = {0.34f, 0.71f, 0.91f}, .mark = Mark::Circle},
-    {.id = Method::Midpoint, .name = "midpoint", .label = N_("Midpoint"), .order = 2, .evaluations = "2",
+     .stability = N_("explicit Euler gains energy at any step without damping (growth sqrt(1 + (h "
+                     "w)^2) a step)"),
+     .family = F::RungeKutta,
+     .step = steps::euler,
+     .tableau = &kEulerTableau,
+     .mode_limit = modes::euler,
+     .corner_bound = true,
+     .audited = true,
+     .compared_first = true,
+     .colour = {0.90f, 0.38f, 0.00f},
+     .mark = Mark::TriangleUp},
+    {.id = Method::SymplecticEuler,
+     .name = "symplectic-euler",
+     .label = N_("Symplectic Euler"),
+     .order = 1,
+     .evaluations = "1",
+     .undamped_limit = 2.0,
+     .stability =
+         N_("symplectic Euler is stable for h w < 2; its energy oscillates but does not drift"),
+     .family = F::Partitioned,
+     .step = steps::symplectic_euler,
+     .mode_limit = modes::symplectic_euler,
+     .definite = symplectic_euler_form,
+     .corner_bound = true,
+     .angular_momentum = Kept::Exactly,
+     .compared_first = true,
+     .colour = {0.34f, 0.71f, 0.91f},
+     .mark = Mark::Circle},
+    {.id = Method::Midpoint,
+     .name = "midpoint",
+     .label = N_("Midpoint"),
+     .order = 2,
+     .evaluations = "2",
      .undamped_limit = kNever,
-     .stability = N_("midpoint gains energy at any step without damping, slowly: sqrt(1 + (h w)^4 / 4) a step"),
-     .family = F::RungeKutta, .step = steps::midpoint, .tableau = &kMidpointTableau, .audited = true,
-     .colour = {0.90f, 0.62f, 0.00f}, .mark = Mark::Plus},
-    {.id = Method::ModifiedEuler, .name = "modified-euler", .label = N_("Modified Euler"), .order = 1,
-     .evaluations = "1", .undamped_limit = kNever,
-     .stability = N_("modified Euler gains energy at any step without damping (growth sqrt(1 + (h w)^2 / 2))"),
-     .family = F::Partitioned, .step = steps::modified_euler, .mode_limit = modes::modified_euler,
-     .damping_shift = 0.5, .corner_bound = true, .audited = true,
-     .colour = {0.78f, 0.78f, 0.78f}, .mark = Mark::Cross},
-    {.id = Method::RK4, .name = "rk4", .label = N_("RK4"), .order = 4, .evaluations = "4",
-     .undamped_limit = 2.8284271247461903,  // 2 sqrt(2) (a literal: std::sqrt is not constexpr in clang)
+     .stability = N_(
+         "midpoint gains energy at any step without damping, slowly: sqrt(1 + (h w)^4 / 4) a step"),
+     .family = F::RungeKutta,
+     .step = steps::midpoint,
+     .tableau = &kMidpointTableau,
+     .audited = true,
+     .colour = {0.90f, 0.62f, 0.00f},
+     .mark = Mark::Plus},
+    {.id = Method::ModifiedEuler,
+     .name = "modified-euler",
+     .label = N_("Modified Euler"),
+     .order = 1,
+     .evaluations = "1",
+     .undamped_limit = kNever,
+     .stability = N_(
+         "modified Euler gains energy at any step without damping (growth sqrt(1 + (h w)^2 / 2))"),
+     .family = F::Partitioned,
+     .step = steps::modified_euler,
+     .mode_limit = modes::modified_euler,
+     .damping_shift = 0.5,
+     .corner_bound = true,
+     .audited = true,
+     .colour = {0.78f, 0.78f, 0.78f},
+     .mark = Mark::Cross},
+    {.id = Method::RK4,
+     .name = "rk4",
+     .label = N_("RK4"),
+     .order = 4,
+     .evaluations = "4",
+     .undamped_limit =
+         2.8284271247461903,  // 2 sqrt(2) (a literal: std::sqrt is not constexpr in clang)
      .stability = N_("RK4 is stable for h w <= 2 sqrt(2) = 2.83, slightly dissipative below it"),
-     .family = F::RungeKutta, .step = steps::rk4, .tableau = &kRK4Tableau, .audited = true,
-     .compared_first = true, .colour = {0.00f, 0.66f, 0.48f}, .mark = Mark::Square},
-    {.id = Method::AdaptiveEuler, .name = "adaptive-euler", .label = N_("Adaptive Euler"), .order = 1,
-     .evaluations = "2 per accepted step (a rejected try needs none)", .undamped_limit = kControlled,
-     .stability = N_("adaptive Euler controls each step's error, not its energy: undamped, it still gains energy"),
-     .family = F::Adaptive, .step = steps::adaptive_euler,
-     .colour = {0.50f, 0.60f, 0.60f}, .mark = Mark::RingCircle},
-    {.id = Method::RK45, .name = "rk45", .label = N_("RK45 (Dormand-Prince)"), .order = 5,
-     .evaluations = "6 per accepted step (first same as last)", .undamped_limit = kControlled,
-     .stability = N_("RK45 chooses its own steps to meet the tolerance; stiff scenes make them tiny"),
-     .family = F::Adaptive, .step = steps::rk45,
-     .colour = {0.62f, 0.50f, 0.98f}, .mark = Mark::RingSquare},
-    {.id = Method::ImplicitEuler, .name = "implicit-euler", .label = N_("Implicit Euler"), .order = 1,
-     .evaluations = "1 + a linear solve", .undamped_limit = kAlways,
-     .stability = N_("implicit Euler is stable at any step; it damps: amplification 1 / sqrt(1 + (h w)^2)"),
-     .family = F::Implicit, .step = steps::implicit_euler, .tableau = &kImplicitEulerTableau, .audited = true,
+     .family = F::RungeKutta,
+     .step = steps::rk4,
+     .tableau = &kRK4Tableau,
+     .audited = true,
+     .compared_first = true,
+     .colour = {0.00f, 0.66f, 0.48f},
+     .mark = Mark::Square},
+    {.id = Method::AdaptiveEuler,
+     .name = "adaptive-euler",
+     .label = N_("Adaptive Euler"),
+     .order = 1,
+     .evaluations = "2 per accepted step (a rejected try needs none)",
+     .undamped_limit = kControlled,
+     .stability = N_("adaptive Euler controls each step's error, not its energy: undamped, it "
+                     "still gains energy"),
+     .family = F::Adaptive,
+     .step = steps::adaptive_euler,
+     .colour = {0.50f, 0.60f, 0.60f},
+     .mark = Mark::RingCircle},
+    {.id = Method::RK45,
+     .name = "rk45",
+     .label = N_("RK45 (Dormand-Prince)"),
+     .order = 5,
+     .evaluations = "6 per accepted step (first same as last)",
+     .undamped_limit = kControlled,
+     .stability =
+         N_("RK45 chooses its own steps to meet the tolerance; stiff scenes make them tiny"),
+     .family = F::Adaptive,
+     .step = steps::rk45,
+     .colour = {0.62f, 0.50f, 0.98f},
+     .mark = Mark::RingSquare},
+    {.id = Method::ImplicitEuler,
+     .name = "implicit-euler",
+     .label = N_("Implicit Euler"),
+     .order = 1,
+     .evaluations = "1 + a linear solve",
+     .undamped_limit = kAlways,
+     .stability =
+         N_("implicit Euler is stable at any step; it damps: amplification 1 / sqrt(1 + (h w)^2)"),
+     .family = F::Implicit,
+     .step = steps::implicit_euler,
+     .tableau = &kImplicitEulerTableau,
+     .audited = true,
      .momentum = Kept::ToSolverTolerance,
-     .compared_first = true, .colour = {0.85f, 0.52f, 0.78f}, .mark = Mark::TriangleDown},
-    {.id = Method::Verlet, .name = "verlet", .label = N_("Verlet"), .order = 2, .evaluations = "1",
+     .compared_first = true,
+     .colour = {0.85f, 0.52f, 0.78f},
+     .mark = Mark::TriangleDown},
+    {.id = Method::Verlet,
+     .name = "verlet",
+     .label = N_("Verlet"),
+     .order = 2,
+     .evaluations = "1",
      .undamped_limit = 2.0,
      .stability = N_("Verlet is stable for h w < 2; its energy oscillates but does not drift"),
-     .family = F::Partitioned, .step = steps::verlet, .mode_limit = modes::verlet, .definite = verlet_form,
-     .corner_bound = true, .angular_momentum = Kept::Exactly,
-     .history = true, .colour = {0.94f, 0.89f, 0.26f}, .mark = Mark::Diamond},
+     .family = F::Partitioned,
+     .step = steps::verlet,
+     .mode_limit = modes::verlet,
+     .definite = verlet_form,
+     .corner_bound = true,
+     .angular_momentum = Kept::Exactly,
+     .history = true,
+     .colour = {0.94f, 0.89f, 0.26f},
+     .mark = Mark::Diamond},
     // The iterative rows solve implicit Euler's step approximately (methods/iterative.hpp): no
     // limit; their cost at a large step is damping and stretch, which the gauge shows instead.
     // Not audited: each step only lowers the step's objective, so they cannot create energy.
-    {.id = Method::XPBD, .name = "xpbd", .label = N_("XPBD (small steps)"), .order = 1,
+    {.id = Method::XPBD,
+     .name = "xpbd",
+     .label = N_("XPBD (small steps)"),
+     .order = 1,
      .evaluations = "none: 1 pass over the springs as constraints (--iterations)",
      .undamped_limit = kAlways,
-     .stability = N_("XPBD is bounded at any step; with few passes its springs act softer than k_s, and their stretch can hold energy the physics never had"),
-     .family = F::Iterative, .step = steps::xpbd,
-     .default_iterations = 1, .iteration_unit = "passes over the springs",
-     .colour = {1.00f, 0.50f, 0.50f}, .mark = Mark::RingTriangleUp},
-    {.id = Method::LocalGlobal, .name = "local-global", .label = N_("Local-global (projective)"), .order = 1,
-     .evaluations = "none: 10 iterations (--iterations), each a pass over the springs and a prefactored solve",
+     .stability = N_("XPBD is bounded at any step; with few passes its springs act softer than "
+                     "k_s, and their stretch can hold energy the physics never had"),
+     .family = F::Iterative,
+     .step = steps::xpbd,
+     .default_iterations = 1,
+     .iteration_unit = "passes over the springs",
+     .colour = {1.00f, 0.50f, 0.50f},
+     .mark = Mark::RingTriangleUp},
+    {.id = Method::LocalGlobal,
+     .name = "local-global",
+     .label = N_("Local-global (projective)"),
+     .order = 1,
+     .evaluations =
+         "none: 10 iterations (--iterations), each a pass over the springs and a prefactored solve",
      .undamped_limit = kAlways,
-     .stability = N_("local-global is bounded at any step; each iteration moves it closer to the converged backward-Euler step"),
-     .family = F::Iterative, .step = steps::local_global,
-     .default_iterations = 10, .iteration_unit = "local steps and global solves", .reads_rho = true,
-     .colour = {0.65f, 0.85f, 0.33f}, .mark = Mark::RingDiamond},
-    {.id = Method::VBD, .name = "vbd", .label = N_("Vertex block descent"), .order = 1,
+     .stability = N_("local-global is bounded at any step; each iteration moves it closer to the "
+                     "converged backward-Euler step"),
+     .family = F::Iterative,
+     .step = steps::local_global,
+     .default_iterations = 10,
+     .iteration_unit = "local steps and global solves",
+     .reads_rho = true,
+     .colour = {0.65f, 0.85f, 0.33f},
+     .mark = Mark::RingDiamond},
+    {.id = Method::VBD,
+     .name = "vbd",
+     .label = N_("Vertex block descent"),
+     .order = 1,
      .evaluations = "none: 10 iterations (--iterations), each a 3x3 Newton step a vertex",
      .undamped_limit = kAlways,
-     .stability = N_("vertex block descent is bounded at any step; converged it damps like implicit Euler, while few iterations leave its springs soft, their stretch holding energy the physics never had"),
-     .family = F::Iterative, .step = steps::vbd, .momentum = Kept::No,
-     .default_iterations = 10, .iteration_unit = "sweeps over the vertices",
-     .colour = {0.00f, 1.00f, 0.90f}, .mark = Mark::RingTriangleDown},
+     .stability = N_("vertex block descent is bounded at any step; converged it damps like "
+                     "implicit Euler, while few iterations leave its springs soft, their stretch "
+                     "holding energy the physics never had"),
+     .family = F::Iterative,
+     .step = steps::vbd,
+     .momentum = Kept::No,
+     .default_iterations = 10,
+     .iteration_unit = "sweeps over the vertices",
+     .colour = {0.00f, 1.00f, 0.90f},
+     .mark = Mark::RingTriangleDown},
 };
 
 // Rows in the enum's order: a method's row is found by its id.
@@ -155,7 +268,9 @@ void show_added(MethodInfo& row, std::size_t index) {
       row.colour = kAddedColours[k];
     } else {
       const float hue = std::fmod(0.61803398875f * static_cast<float>(index), 1.0f);
-      const auto channel = [&](float offset) { return 0.55f + 0.35f * std::cos(6.28318530718f * (hue + offset)); };
+      const auto channel = [&](float offset) {
+        return 0.55f + 0.35f * std::cos(6.28318530718f * (hue + offset));
+      };
       row.colour = {channel(0.0f), channel(-1.0f / 3.0f), channel(1.0f / 3.0f)};
     }
   }
@@ -194,14 +309,17 @@ bool same_entries(const ButcherTableau& a, const ButcherTableau& b) {
   };
   if (a.stages != b.stages || texts(a.b) != texts(b.b)) return false;
   for (int i = 0; i < a.stages; ++i)
-    if (texts(a.a[static_cast<std::size_t>(i)]) != texts(b.a[static_cast<std::size_t>(i)])) return false;
+    if (texts(a.a[static_cast<std::size_t>(i)]) != texts(b.a[static_cast<std::size_t>(i)]))
+      return false;
   return true;
 }
 
 std::string limit_text(double limit, const char* unit) {
   std::ostringstream s;
-  if (std::isinf(limit)) s << "the whole " << unit << " axis";
-  else s << std::setprecision(4) << limit;
+  if (std::isinf(limit))
+    s << "the whole " << unit << " axis";
+  else
+    s << std::setprecision(4) << limit;
   return s.str();
 }
 
@@ -212,11 +330,17 @@ std::span<const MethodInfo> methods() {
   return {t.rows.data(), t.count.load(std::memory_order_acquire)};
 }
 
-std::span<const MethodInfo> built_in_methods() { return methods().first(std::size(kMethods)); }
+std::span<const MethodInfo> built_in_methods() {
+  return methods().first(std::size(kMethods));
+}
 
-std::span<const MethodInfo> added_methods() { return methods().subspan(std::size(kMethods)); }
+std::span<const MethodInfo> added_methods() {
+  return methods().subspan(std::size(kMethods));
+}
 
-const MethodInfo& method_info(Method method) { return table().rows[static_cast<std::size_t>(method)]; }
+const MethodInfo& method_info(Method method) {
+  return table().rows[static_cast<std::size_t>(method)];
+}
 
 std::optional<Method> find_method(std::string_view name) {
   for (const MethodInfo& m : methods())
@@ -226,7 +350,8 @@ std::optional<Method> find_method(std::string_view name) {
 
 std::string method_names() {
   std::string names;
-  for (const MethodInfo& m : built_in_methods()) names += (names.empty() ? "" : ", ") + std::string(m.name);
+  for (const MethodInfo& m : built_in_methods())
+    names += (names.empty() ? "" : ", ") + std::string(m.name);
   return names;
 }
 
@@ -235,11 +360,14 @@ Method add_method(const MethodInfo& given) {
   const std::lock_guard lock(t.adding);
   const std::string name = given.name ? given.name : "";
   if (name.empty() || !given.step || given.tableau_step)
-    throw InputError("method '" + name + "': an added row needs a name and a step function of its own");
-  if (find_method(name)) throw InputError("method '" + name + "': a row of the method table already has this name");
+    throw InputError("method '" + name +
+                     "': an added row needs a name and a step function of its own");
+  if (find_method(name))
+    throw InputError("method '" + name + "': a row of the method table already has this name");
   const std::size_t index = t.count.load(std::memory_order_relaxed);
   if (index >= t.rows.size())
-    throw InputError("method '" + name + "': at most " + std::to_string(kMaxAdded) + " added methods in one run");
+    throw InputError("method '" + name + "': at most " + std::to_string(kMaxAdded) +
+                     " added methods in one run");
   AddedRow& row = t.added.emplace_back();
   const auto text = [](const char* s) { return std::string(s ? s : ""); };
   row.name = name;
@@ -266,16 +394,21 @@ Method add_tableau_method(const ButcherTableau& tableau, const std::string& name
   for (const AddedRow& row : t.added)
     if (row.name == name && row.source.stages > 0) {
       if (!same_entries(row.source, tableau))
-        throw InputError("method '" + name + "': another tableau already has this name; give this one another file name");
+        throw InputError(
+            "method '" + name +
+            "': another tableau already has this name; give this one another file name");
       return *find_method(name);
     }
   if (const std::optional<Method> taken = find_method(name))
     throw InputError("method '" + name + "': " +
-                     (static_cast<std::size_t>(*taken) < std::size(kMethods) ? "a built-in method" : "a row added by the program") +
+                     (static_cast<std::size_t>(*taken) < std::size(kMethods)
+                          ? "a built-in method"
+                          : "a row added by the program") +
                      " has this name; give the tableau's file another name");
   const std::size_t index = t.count.load(std::memory_order_relaxed);
   if (index >= t.rows.size())
-    throw InputError("method '" + name + "': at most " + std::to_string(kMaxAdded) + " methods from tableaux in one run");
+    throw InputError("method '" + name + "': at most " + std::to_string(kMaxAdded) +
+                     " methods from tableaux in one run");
   const TableauAnalysis a = analyse_tableau(tableau);
   AddedRow& row = t.added.emplace_back();
   row.name = name;
@@ -293,11 +426,15 @@ Method add_tableau_method(const ButcherTableau& tableau, const std::string& name
                                           (*tableau.b_hat)[static_cast<std::size_t>(i)].value);
     row.tableau.error_exponent = 1.0 / (std::min(a.order_to_rounding, *a.embedded_order) + 1);
   }
-  row.evaluations = pair              ? std::to_string(tableau.stages) + " per try (" + std::to_string(tableau.stages - row.tableau.first_same_as_last()) + " once running, first same as last)"
+  row.evaluations = pair ? std::to_string(tableau.stages) + " per try (" +
+                               std::to_string(tableau.stages - row.tableau.first_same_as_last()) +
+                               " once running, first same as last)"
                     : explicit_stages ? std::to_string(tableau.stages)
-                                      : std::to_string(tableau.stages) + " stages, each solved as an implicit Euler step";
-  row.stability = "from its tableau's R(z): |R| <= 1 on the real axis to " + limit_text(a.real_limit, "real") +
-                  ", on the imaginary axis to " + limit_text(a.imaginary_limit, "imaginary");
+                                      : std::to_string(tableau.stages) +
+                                            " stages, each solved as an implicit Euler step";
+  row.stability = "from its tableau's R(z): |R| <= 1 on the real axis to " +
+                  limit_text(a.real_limit, "real") + ", on the imaginary axis to " +
+                  limit_text(a.imaginary_limit, "imaginary");
   MethodInfo info{};
   info.id = static_cast<Method>(index);
   info.name = row.name.c_str();
@@ -305,15 +442,20 @@ Method add_tableau_method(const ButcherTableau& tableau, const std::string& name
   info.order = a.order_to_rounding;
   info.evaluations = row.evaluations.c_str();
   info.undamped_limit = pair ? kControlled : a.imaginary_limit;
-  info.stability = pair ? "chooses its own steps from its embedded error estimate (--tol)" : row.stability.c_str();
+  info.stability = pair ? "chooses its own steps from its embedded error estimate (--tol)"
+                        : row.stability.c_str();
   info.family = pair ? MethodFamily::Adaptive : MethodFamily::RungeKutta;
   info.tableau = &row.tableau;
-  info.tableau_step = pair ? steps::embedded_pair : explicit_stages ? steps::explicit_tableau : steps::diagonally_implicit;
+  info.tableau_step = pair              ? steps::embedded_pair
+                      : explicit_stages ? steps::explicit_tableau
+                                        : steps::diagonally_implicit;
   info.audited = !pair;  // (as rk45: the adaptive rows are not audited)
   // An explicit tableau adds forces linearly: P to rounding; a diagonally implicit one's stages
   // are solved by Newton's method to a tolerance. L only where the tableau is symplectic.
   info.momentum = explicit_stages ? Kept::Exactly : Kept::ToSolverTolerance;
-  info.angular_momentum = !a.symplectic ? Kept::No : explicit_stages ? Kept::Exactly : Kept::ToSolverTolerance;
+  info.angular_momentum = !a.symplectic     ? Kept::No
+                          : explicit_stages ? Kept::Exactly
+                                            : Kept::ToSolverTolerance;
   show_added(info, index);
   t.rows[index] = info;
   t.count.store(index + 1, std::memory_order_release);
@@ -322,16 +464,20 @@ Method add_tableau_method(const ButcherTableau& tableau, const std::string& name
 
 const char* kept_text(Kept kept) {
   switch (kept) {
-    case Kept::Exactly: return N_("kept");
-    case Kept::ToSolverTolerance: return N_("kept to the solver's tolerance");
-    case Kept::No: return N_("not kept");
+    case Kept::Exactly:
+      return N_("kept");
+    case Kept::ToSolverTolerance:
+      return N_("kept to the solver's tolerance");
+    case Kept::No:
+      return N_("not kept");
   }
   return "";
 }
 
 std::string kept_summary(const MethodInfo& m) {
   std::string out;
-  for (const auto& [kept, name] : {std::pair{m.momentum, "P"}, std::pair{m.angular_momentum, "L"}}) {
+  for (const auto& [kept, name] :
+       {std::pair{m.momentum, "P"}, std::pair{m.angular_momentum, "L"}}) {
     if (kept == Kept::No) continue;
     if (!out.empty()) out += ", ";
     out += name;
@@ -360,8 +506,10 @@ void step(Method method, const Model& model, const State& in, State& out, double
   const MethodInfo& info = method_info(method);
   ws.step_probe.reset();
   ws.input_power.reset();
-  if (info.step) info.step(model, in, out, h, settings, ws);
-  else info.tableau_step(*info.tableau, model, in, out, h, settings, ws);
+  if (info.step)
+    info.step(model, in, out, h, settings, ws);
+  else
+    info.tableau_step(*info.tableau, model, in, out, h, settings, ws);
   if (!info.adaptive()) ++ws.counters.accepted;
 }
 

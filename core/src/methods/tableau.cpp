@@ -7,11 +7,13 @@ namespace springlab {
 
 Tableau::Tableau(std::vector<std::vector<double>> rows, std::vector<double> weights)
     : stages(static_cast<int>(weights.size())), b(std::move(weights)) {
-  if (rows.size() != b.size()) throw std::invalid_argument("a tableau needs as many rows of A as weights b");
+  if (rows.size() != b.size())
+    throw std::invalid_argument("a tableau needs as many rows of A as weights b");
   a.assign(static_cast<std::size_t>(stages * stages), 0.0);
   for (int i = 0; i < stages; ++i) {
     if (rows[i].size() > b.size()) throw std::invalid_argument("a row of A is longer than b");
-    for (std::size_t j = 0; j < rows[i].size(); ++j) a[static_cast<std::size_t>(i * stages) + j] = rows[i][j];
+    for (std::size_t j = 0; j < rows[i].size(); ++j)
+      a[static_cast<std::size_t>(i * stages) + j] = rows[i][j];
   }
   if (is_explicit()) {
     numerator = stability_polynomial();
@@ -23,14 +25,17 @@ Tableau::Tableau(std::vector<std::vector<double>> rows, std::vector<double> weig
   const auto determinant = [&](double z, bool with_b) {
     Eigen::MatrixXd m = Eigen::MatrixXd::Identity(stages, stages);
     for (int i = 0; i < stages; ++i)
-      for (int j = 0; j < stages; ++j) m(i, j) += -z * A(i, j) + (with_b ? z * b[static_cast<std::size_t>(j)] : 0.0);
+      for (int j = 0; j < stages; ++j)
+        m(i, j) += -z * A(i, j) + (with_b ? z * b[static_cast<std::size_t>(j)] : 0.0);
     return m.determinant();
   };
   const auto interpolate = [&](bool with_b) {
     std::vector<double> d;
     for (int k = 0; k <= stages; ++k) d.push_back(determinant(k, with_b));
     for (int level = 1; level <= stages; ++level)
-      for (int i = stages; i >= level; --i) d[static_cast<std::size_t>(i)] = (d[static_cast<std::size_t>(i)] - d[static_cast<std::size_t>(i - 1)]) / level;
+      for (int i = stages; i >= level; --i)
+        d[static_cast<std::size_t>(i)] =
+            (d[static_cast<std::size_t>(i)] - d[static_cast<std::size_t>(i - 1)]) / level;
     std::vector<double> p{d.back()};
     for (int k = stages - 1; k >= 0; --k) {
       std::vector<double> next(p.size() + 1, 0.0);  // p (z - k) + d_k
@@ -91,11 +96,13 @@ std::vector<double> Tableau::stability_polynomial() const {
   std::vector<double> power(static_cast<std::size_t>(stages), 1.0);  // A^{j-1} 1
   for (int j = 1; j <= stages; ++j) {
     double g = 0.0;
-    for (int i = 0; i < stages; ++i) g += b[static_cast<std::size_t>(i)] * power[static_cast<std::size_t>(i)];
+    for (int i = 0; i < stages; ++i)
+      g += b[static_cast<std::size_t>(i)] * power[static_cast<std::size_t>(i)];
     gamma.push_back(g);
     std::vector<double> next(static_cast<std::size_t>(stages), 0.0);
     for (int i = 0; i < stages; ++i)
-      for (int k = 0; k < stages; ++k) next[static_cast<std::size_t>(i)] += A(i, k) * power[static_cast<std::size_t>(k)];
+      for (int k = 0; k < stages; ++k)
+        next[static_cast<std::size_t>(i)] += A(i, k) * power[static_cast<std::size_t>(k)];
     power = std::move(next);
   }
   while (gamma.size() > 1 && gamma.back() == 0.0) gamma.pop_back();

@@ -29,23 +29,23 @@
 #include <string>
 
 #include "adaptive.hpp"
-#include "stage_newton.hpp"
 #include "runge_kutta.hpp"
+#include "stage_newton.hpp"
 #include "steps.hpp"
 
 namespace springlab::steps {
 
-void explicit_tableau(const Tableau& tableau, const Model& model, const State& in, State& out, double h,
-                      const StepSettings&, Workspace& ws) {
+void explicit_tableau(const Tableau& tableau, const Model& model, const State& in, State& out,
+                      double h, const StepSettings&, Workspace& ws) {
   rk::stages(model, in.x, in.v, h, tableau, ws);
   rk::combine(in.x, in.v, h, tableau.b, ws, out.x, out.v);
   out.t = in.t + h;
 }
 
-void embedded_pair(const Tableau& tableau, const Model& model, const State& in, State& out, double h,
-                   const StepSettings& settings, Workspace& ws) {
-  adaptive::embedded_pair_step(tableau, tableau.error_weights.data(), tableau.error_exponent, "the embedded pair",
-                               model, in, out, h, settings, ws);
+void embedded_pair(const Tableau& tableau, const Model& model, const State& in, State& out,
+                   double h, const StepSettings& settings, Workspace& ws) {
+  adaptive::embedded_pair_step(tableau, tableau.error_weights.data(), tableau.error_exponent,
+                               "the embedded pair", model, in, out, h, settings, ws);
 }
 
 namespace {
@@ -127,8 +127,8 @@ void dirk_halving(const Tableau& tableau, const Model& model, const State& in, S
 
 }  // namespace
 
-void diagonally_implicit(const Tableau& tableau, const Model& model, const State& in, State& out, double h,
-                         const StepSettings& settings, Workspace& ws) {
+void diagonally_implicit(const Tableau& tableau, const Model& model, const State& in, State& out,
+                         double h, const StepSettings& settings, Workspace& ws) {
   dirk_halving(tableau, model, in, out, h, settings, ws, 0);
 }
 

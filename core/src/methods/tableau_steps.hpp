@@ -12,8 +12,8 @@ namespace springlab {
 
 struct StageSolvers {
   std::vector<Workspace> solvers;  // one a stage
-  steps::NewtonSolver newton;      // Newton's corrections, every stage's (one sparsity: the springs')
-  State in, out;                   // a stage's start (x~, v~) and its solution (X_i, V_i)
+  steps::NewtonSolver newton;  // Newton's corrections, every stage's (one sparsity: the springs')
+  State in, out;               // a stage's start (x~, v~) and its solution (X_i, V_i)
 };
 
 }  // namespace springlab

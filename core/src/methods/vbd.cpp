@@ -58,7 +58,8 @@ void descend(const Model& model, const VertexBlockDescent& C, const IterativeSol
     for (int c = 0; c < 3; ++c) f[c] += scale * u[c];
     const double across = material.ks * std::max(0.0, 1.0 - rest * inv);
     const double along = material.ks + material.kd / h - across;
-    H[0] += along * u[0] * u[0] + across, H[1] += along * u[1] * u[1] + across, H[2] += along * u[2] * u[2] + across;
+    H[0] += along * u[0] * u[0] + across, H[1] += along * u[1] * u[1] + across,
+        H[2] += along * u[2] * u[2] + across;
     H[3] += along * u[0] * u[1], H[4] += along * u[0] * u[2], H[5] += along * u[1] * u[2];
   }
   // H^-1 f by cofactors (H >= m~ / h^2 I: definite, the determinant positive).
@@ -75,7 +76,8 @@ void descend(const Model& model, const VertexBlockDescent& C, const IterativeSol
 
 namespace steps {
 
-void vbd(const Model& model, const State& in, State& out, double h, const StepSettings& settings, Workspace& ws) {
+void vbd(const Model& model, const State& in, State& out, double h, const StepSettings& settings,
+         Workspace& ws) {
   if (!ws.iterative) ws.iterative = std::make_unique<IterativeSolvers>();
   IterativeSolvers& I = *ws.iterative;
   VertexBlockDescent& C = I.vbd;

@@ -18,7 +18,9 @@ inline thread_local const std::atomic<bool>* g_flag = nullptr;
 // Sets the calling thread's flag for the scope of an analysis.
 class CancelScope {
  public:
-  explicit CancelScope(const std::atomic<bool>* flag) : saved_(cancel_detail::g_flag) { cancel_detail::g_flag = flag; }
+  explicit CancelScope(const std::atomic<bool>* flag) : saved_(cancel_detail::g_flag) {
+    cancel_detail::g_flag = flag;
+  }
   ~CancelScope() { cancel_detail::g_flag = saved_; }
   CancelScope(const CancelScope&) = delete;
   CancelScope& operator=(const CancelScope&) = delete;
@@ -28,7 +30,8 @@ class CancelScope {
 };
 
 inline void check_cancel() {
-  if (cancel_detail::g_flag && cancel_detail::g_flag->load(std::memory_order_relaxed)) throw Cancelled{};
+  if (cancel_detail::g_flag && cancel_detail::g_flag->load(std::memory_order_relaxed))
+    throw Cancelled{};
 }
 
 }  // namespace springlab

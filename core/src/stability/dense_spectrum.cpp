@@ -4,9 +4,12 @@
 
 namespace springlab {
 
-Eigen::VectorXcd eigenvalues(const Eigen::MatrixXd& a) { return Eigen::EigenSolver<Eigen::MatrixXd>(a, false).eigenvalues(); }
+Eigen::VectorXcd eigenvalues(const Eigen::MatrixXd& a) {
+  return Eigen::EigenSolver<Eigen::MatrixXd>(a, false).eigenvalues();
+}
 
-void eigen_decomposition(const Eigen::MatrixXd& a, Eigen::VectorXcd& values, Eigen::MatrixXcd& vectors) {
+void eigen_decomposition(const Eigen::MatrixXd& a, Eigen::VectorXcd& values,
+                         Eigen::MatrixXcd& vectors) {
   const Eigen::EigenSolver<Eigen::MatrixXd> solver(a, true);
   values = solver.eigenvalues();
   vectors = solver.eigenvectors();

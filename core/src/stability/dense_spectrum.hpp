@@ -11,6 +11,7 @@ namespace springlab {
 Eigen::VectorXcd eigenvalues(const Eigen::MatrixXd& a);
 
 /// The eigenvalues of a square real matrix and its eigenvectors (unit columns, in their order).
-void eigen_decomposition(const Eigen::MatrixXd& a, Eigen::VectorXcd& values, Eigen::MatrixXcd& vectors);
+void eigen_decomposition(const Eigen::MatrixXd& a, Eigen::VectorXcd& values,
+                         Eigen::MatrixXcd& vectors);
 
 }  // namespace springlab

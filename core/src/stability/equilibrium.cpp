@@ -35,14 +35,14 @@
 #include <vector>
 
 #include "dynamics/force_pass.hpp"
-#include "stability/cancel.hpp"
-#include "stability/lanczos.hpp"
-#include "stability/linearised.hpp"
-#include "stability/parts.hpp"
 #include "springlab/forces.hpp"
 #include "springlab/simd.hpp"
 #include "springlab/spring_kernel.hpp"
 #include "springlab/stability.hpp"
+#include "stability/cancel.hpp"
+#include "stability/lanczos.hpp"
+#include "stability/linearised.hpp"
+#include "stability/parts.hpp"
 
 namespace springlab {
 
@@ -56,7 +56,8 @@ struct Balance {
   std::vector<int> index;     // free coordinate block of each particle, -1 pinned
   int free = 0;
 
-  explicit Balance(const Model& m) : model(m), weighed(m.particle_count(), 0), index(m.particle_count(), -1) {
+  explicit Balance(const Model& m)
+      : model(m), weighed(m.particle_count(), 0), index(m.particle_count(), -1) {
     const int n = m.particle_count();
     Parts parts(m);
     for (int i = 0; i < n; ++i) {
@@ -69,8 +70,8 @@ struct Balance {
   double potential(const Points& x) const {
     double e = 0.0;
     for (int s = 0; s < model.spring_count(); ++s)
-      e += spring_energy(x.row(model.spring_a[s]).transpose(), x.row(model.spring_b[s]).transpose(), model.ks(s),
-                         model.rest_length[s]);
+      e += spring_energy(x.row(model.spring_a[s]).transpose(), x.row(model.spring_b[s]).transpose(),
+                         model.ks(s), model.rest_length[s]);
     for (int i = 0; i < model.particle_count(); ++i)
       if (weighed[i]) e -= model.mass[i] * model.gravity.dot(x.row(i).transpose());
     return e;
@@ -79,8 +80,8 @@ struct Balance {
     Eigen::VectorXd f = Eigen::VectorXd::Zero(3 * free);
     for (int s = 0; s < model.spring_count(); ++s) {
       const int a = model.spring_a[s], b = model.spring_b[s];
-      const Vec3 fa = spring_force(x.row(a).transpose(), x.row(b).transpose(), Vec3::Zero(), Vec3::Zero(),
-                                   model.ks(s), 0.0, model.rest_length[s]);
+      const Vec3 fa = spring_force(x.row(a).transpose(), x.row(b).transpose(), Vec3::Zero(),
+                                   Vec3::Zero(), model.ks(s), 0.0, model.rest_length[s]);
       if (index[a] >= 0) f.segment<3>(3 * index[a]) += fa;
       if (index[b] >= 0) f.segment<3>(3 * index[b]) -= fa;
     }
@@ -99,12 +100,14 @@ struct Balance {
           if (ends[p] < 0 || ends[q] < 0) continue;
           const double sign = p == q ? 1.0 : -1.0;
           for (int r = 0; r < 3; ++r)
-            for (int c = 0; c < 3; ++c) t.emplace_back(3 * ends[p] + r, 3 * ends[q] + c, sign * k[s](r, c));
+            for (int c = 0; c < 3; ++c)
+              t.emplace_back(3 * ends[p] + r, 3 * ends[q] + c, sign * k[s](r, c));
         }
     }
     for (int i = 0; i < model.particle_count(); ++i)
       if (index[i] >= 0)
-        for (int c = 0; c < 3; ++c) t.emplace_back(3 * index[i] + c, 3 * index[i] + c, mu * model.mass[i]);
+        for (int c = 0; c < 3; ++c)
+          t.emplace_back(3 * index[i] + c, 3 * index[i] + c, mu * model.mass[i]);
     Eigen::SparseMatrix<double> A(3 * free, 3 * free);
     A.setFromTriplets(t.begin(), t.end());
     return A;
@@ -115,13 +118,15 @@ struct Balance {
   std::vector<Eigen::Matrix3d> blocks(const Points& x) const {
     std::vector<Eigen::Matrix3d> out(static_cast<std::size_t>(model.spring_count()));
     for (int s = 0; s < model.spring_count(); ++s)
-      out[s] = spring_jacobian(x.row(model.spring_a[s]).transpose(), x.row(model.spring_b[s]).transpose(),
-                               Vec3::Zero(), Vec3::Zero(), model.ks(s), 0.0, model.rest_length[s], false)
+      out[s] = spring_jacobian(x.row(model.spring_a[s]).transpose(),
+                               x.row(model.spring_b[s]).transpose(), Vec3::Zero(), Vec3::Zero(),
+                               model.ks(s), 0.0, model.rest_length[s], false)
                    .dfdx;
     return out;
   }
   // (K + mu M) v from the blocks: one pass over the springs.
-  Eigen::VectorXd product(const std::vector<Eigen::Matrix3d>& k, double mu, const Eigen::VectorXd& v) const {
+  Eigen::VectorXd product(const std::vector<Eigen::Matrix3d>& k, double mu,
+                          const Eigen::VectorXd& v) const {
     Eigen::VectorXd y = Eigen::VectorXd::Zero(v.size());
     for (int s = 0; s < model.spring_count(); ++s) {
       const int a = index[model.spring_a[s]], b = index[model.spring_b[s]];
@@ -133,7 +138,8 @@ struct Balance {
       if (b >= 0) y.segment<3>(3 * b) -= g;
     }
     for (int i = 0; i < model.particle_count(); ++i)
-      if (index[i] >= 0) y.segment<3>(3 * index[i]) += mu * model.mass[i] * v.segment<3>(3 * index[i]);
+      if (index[i] >= 0)
+        y.segment<3>(3 * index[i]) += mu * model.mass[i] * v.segment<3>(3 * index[i]);
     return y;
   }
   void move(Points& x, const Eigen::VectorXd& dx, double scale) const {
@@ -157,9 +163,9 @@ struct Balance {
 // 1.44 times w_max, h w_L 1.37). Where h w_L >= 2 the step is estimated again every kRestep
 // passes. What the step no longer follows is tension raising w_max as a scene stretches: the
 // kinetic damping is then at h w_max above 0.95, and it stalls above about 1.4 (docs/decisions.md,
-// "A larger relaxation step": a mode's speed falls on the second pass after the damping zeroes it when h w > 1,
-// h f (2 - h^2 w^2) after h f). Measured: a 64 x 64 cloth of springs 200 times softer (k_s 2)
-// stretches until w_max is a fifth higher, h w_max 1.16 at the end, and balances in 4,500
+// "A larger relaxation step": a mode's speed falls on the second pass after the damping zeroes it
+// when h w > 1, h f (2 - h^2 w^2) after h f). Measured: a 64 x 64 cloth of springs 200 times softer
+// (k_s 2) stretches until w_max is a fifth higher, h w_max 1.16 at the end, and balances in 4,500
 // passes, against 4,950 estimating again every 2,000; a 48 x 48 cloth started at h w_max 1.38
 // balances in fewer passes than at 0.95.
 struct RelaxStep {
@@ -197,7 +203,8 @@ RelaxStep relax_step(const Model& model, const State& at) {
 // (force_pass.hpp's finish), and sum the chunk's kinetic energy and largest force: no further
 // pass over memory, and the same bits on any number of threads (per-block sums, added in block
 // order).
-double relax(const Model& model, const Balance& balance, State& rest, RelaxStep& step, double tolerance, int budget) {
+double relax(const Model& model, const Balance& balance, State& rest, RelaxStep& step,
+             double tolerance, int budget) {
   Model springs = model;  // the springs alone: gravity is added where it has a balance
   springs.gravity.setZero();
   springs.drag = 0.0;
@@ -237,7 +244,8 @@ double relax(const Model& model, const Balance& balance, State& rest, RelaxStep&
         const T w = simd::at<T>(inv_mass + i);
         for (int c = 0; c < 3; ++c) {
           // A pinned particle's force is held (zero here, so that not even a NaN moves it).
-          const T force = w > 0.0 ? simd::at<T>(F[c] + i) + simd::at<T>(weight.col(c).data() + i) : T{};
+          const T force =
+              w > 0.0 ? simd::at<T>(F[c] + i) + simd::at<T>(weight.col(c).data() + i) : T{};
           const T pulled = force * force;
           m = pulled <= m ? m : pulled;  // a NaN wins: a relaxation gone wrong is never balanced
           const T vel = simd::at<T>(v.col(c).data() + i) + h * w * force;
@@ -247,7 +255,8 @@ double relax(const Model& model, const Balance& balance, State& rest, RelaxStep&
         }
       };
       int i = begin;
-      for (; i + simd::kLanes <= end; i += simd::kLanes) particles.template operator()<f64x4>(i, energy, largest);
+      for (; i + simd::kLanes <= end; i += simd::kLanes)
+        particles.template operator()<f64x4>(i, energy, largest);
       double e = 0.0, m = 0.0;
       for (; i < end; ++i) particles.template operator()<double>(i, e, m);
       block_kinetic[block] += simd::sum(energy) + e;
@@ -349,8 +358,8 @@ bool preconditioned_solve(const Balance& balance, const std::vector<Eigen::Matri
 // stiffness, accepted when the potential does not rise, until the largest force is `tolerance`
 // (force_scale its yardstick), a step moves less than 1e-13 of the scene's `size`, or the
 // budget is spent.
-void newton(const Balance& balance, State& rest, double mu, double mu_floor, double force_scale, double tolerance,
-            double size) {
+void newton(const Balance& balance, State& rest, double mu, double mu_floor, double force_scale,
+            double tolerance, double size) {
   // Newton's budget in floating-point work, known after the first factorisation from its factor
   // L: a factorisation costs about the sum over L's columns of their nonzeros squared, a
   // preconditioned iteration (two triangular solves) four times L's nonzeros. 1.5e10 is 750
@@ -363,7 +372,9 @@ void newton(const Balance& balance, State& rest, double mu, double mu_floor, dou
   bool analysed = false, factored = false;
   double energy = balance.potential(rest.x);
   int factorisations = 0, iterations = 0;
-  const auto spent = [&] { return factorisations * factorisation_work + iterations * iteration_work; };
+  const auto spent = [&] {
+    return factorisations * factorisation_work + iterations * iteration_work;
+  };
   for (int iteration = 0; iteration < 200 && spent() < kWork; ++iteration) {
     check_cancel();
     const Eigen::VectorXd f = balance.force(rest.x);
@@ -432,7 +443,8 @@ State equilibrium(const Model& model, const State& state) {
   // The force's yardstick: the largest spring force at 1 % strain, or weight.
   double strain_force = 0.0, weight = 0.0;
   for (int s = 0; s < model.spring_count(); ++s)
-    strain_force = std::max(strain_force, 0.01 * model.ks(s) * std::max(model.rest_length[s], 1e-3));
+    strain_force =
+        std::max(strain_force, 0.01 * model.ks(s) * std::max(model.rest_length[s], 1e-3));
   for (int i = 0; i < model.particle_count(); ++i)
     if (balance.weighed[i]) weight = std::max(weight, model.mass[i] * model.gravity.norm());
   const double force_scale = std::max(strain_force, weight);
@@ -440,12 +452,14 @@ State equilibrium(const Model& model, const State& state) {
   // Balanced to a millionth of that: the tension it leaves is the springs' to 1e-8 strain.
   const double tolerance = 1e-8 * force_scale;
   double size = 0.0;  // the scene's extent: steps below 1e-13 of it are rounding
-  for (int c = 0; c < 3; ++c) size = std::max(size, rest.x.col(c).maxCoeff() - rest.x.col(c).minCoeff());
+  for (int c = 0; c < 3; ++c)
+    size = std::max(size, rest.x.col(c).maxCoeff() - rest.x.col(c).minCoeff());
 
   // mu in units of k / m: start small against the stiffest spring on the lightest particle.
   double k_over_m = 0.0;
   for (int s = 0; s < model.spring_count(); ++s)
-    k_over_m = std::max(k_over_m, model.ks(s) * std::max(model.inv_mass[model.spring_a[s]], model.inv_mass[model.spring_b[s]]));
+    k_over_m = std::max(k_over_m, model.ks(s) * std::max(model.inv_mass[model.spring_a[s]],
+                                                         model.inv_mass[model.spring_b[s]]));
   const double mu_floor = 1e-12 * std::max(k_over_m, 1e-300);
   double mu = 1e-6 * k_over_m;
 
@@ -473,7 +487,8 @@ State equilibrium(const Model& model, const State& state) {
     // With no weight to hold (nothing pinned, or no gravity) the tensions are whatever pins
     // stretch the springs to, perhaps none: to a spring's force at 1e-7 strain, a hundred times
     // tighter than the relaxation before Newton (1e-5).
-    const double load = weight > 0.0 ? kLoadTolerance * std::min(weight, strain_force) : 1e-5 * strain_force;
+    const double load =
+        weight > 0.0 ? kLoadTolerance * std::min(weight, strain_force) : 1e-5 * strain_force;
     relax(model, balance, rest, step, load, kRelaxedBudget);
     return rest.x.allFinite() ? rest : unbalanced;
   }
@@ -499,7 +514,8 @@ double lowest_energy(const Model& model, const State& rest) {
   if (g > 0.0) {
     const Vec3 up = -model.gravity / g;
     for (const PlaneCollider& p : model.planes)
-      if (p.normal.dot(up) >= 1.0 - 1e-9) floor = std::min(floor, p.point.dot(up) + model.particle_radius);
+      if (p.normal.dot(up) >= 1.0 - 1e-9)
+        floor = std::min(floor, p.point.dot(up) + model.particle_radius);
   }
   std::vector<char> held(model.particle_count(), 0);
   for (int i = 0; i < model.particle_count(); ++i) held[i] = model.pinned(i) || balance.weighed[i];
@@ -507,13 +523,17 @@ double lowest_energy(const Model& model, const State& rest) {
   for (int s = 0; s < model.spring_count(); ++s) {
     const int a = model.spring_a[s], b = model.spring_b[s];
     if (held[a] && held[b])
-      e += spring_energy(rest.x.row(a).transpose(), rest.x.row(b).transpose(), model.ks(s), model.rest_length[s]);
+      e += spring_energy(rest.x.row(a).transpose(), rest.x.row(b).transpose(), model.ks(s),
+                         model.rest_length[s]);
   }
   for (int i = 0; i < model.particle_count(); ++i) {
     if (model.pinned(i) || !(g > 0.0)) continue;
-    if (held[i]) e -= model.mass[i] * model.gravity.dot(rest.x.row(i).transpose());
-    else if (std::isfinite(floor)) e += model.mass[i] * g * floor;
-    else return kMinusInf;
+    if (held[i])
+      e -= model.mass[i] * model.gravity.dot(rest.x.row(i).transpose());
+    else if (std::isfinite(floor))
+      e += model.mass[i] * g * floor;
+    else
+      return kMinusInf;
   }
   return e;
 }

@@ -24,7 +24,8 @@ double radius(const std::vector<double>& beta, int k, int i) {
 // have as many negatives as T has eigenvalues below x: all of them (T - x I negative definite)
 // exactly when x is above lambda_max. O(k) a probe, full precision in at most ~64 probes; a QR
 // sweep of T costs O(k^2) each time Lanczos asks: 1.3 s over a 1000-node rope's 1000 steps.
-double largest_eigenvalue(const std::vector<double>& alpha, const std::vector<double>& beta, int k, double floor) {
+double largest_eigenvalue(const std::vector<double>& alpha, const std::vector<double>& beta, int k,
+                          double floor) {
   double lo = floor, hi = -std::numeric_limits<double>::infinity();
   for (int i = 0; i < k; ++i) {
     lo = std::max(lo, alpha[i]);  // lambda_max >= any diagonal entry
@@ -47,8 +48,8 @@ double largest_eigenvalue(const std::vector<double>& alpha, const std::vector<do
 // T)^-1 s with sigma just above lambda. sigma I - T is then positive definite, so its LDL^T
 // factors (O(k), no pivoting) are stable, and each solve shrinks the other components by
 // delta / (lambda - lambda_j + delta). A full eigendecomposition of T costs O(k^3).
-Eigen::VectorXd top_eigenvector(const std::vector<double>& alpha, const std::vector<double>& beta, int k,
-                                double lambda) {
+Eigen::VectorXd top_eigenvector(const std::vector<double>& alpha, const std::vector<double>& beta,
+                                int k, double lambda) {
   double scale = 0.0;  // |T| (a bound)
   for (int i = 0; i < k; ++i) scale = std::max(scale, std::abs(alpha[i]) + radius(beta, k, i));
   // T = 0 (no stiffness anywhere, e.g. coincident ends): every vector is an eigenvector.
@@ -65,7 +66,7 @@ Eigen::VectorXd top_eigenvector(const std::vector<double>& alpha, const std::vec
   Eigen::VectorXd s(k);
   for (int i = 0; i < k; ++i) s[i] = (i % 2 == 0 ? 1.0 : -1.0) * (1.0 + 0.5 * std::sin(i + 1.0));
   for (int iteration = 0; iteration < 4; ++iteration) {
-    for (int i = 1; i < k; ++i) s[i] -= l[i] * s[i - 1];          // L y = s
+    for (int i = 1; i < k; ++i) s[i] -= l[i] * s[i - 1];           // L y = s
     for (int i = 0; i < k; ++i) s[i] /= d[i];                      // D z = y
     for (int i = k - 2; i >= 0; --i) s[i] -= l[i + 1] * s[i + 1];  // L^T s = z
     s /= s.cwiseAbs().maxCoeff();  // first to about 1: |s|^2 of a huge s would overflow
@@ -113,7 +114,8 @@ void release_lanczos_memory() {
 
 // Long: the run and its second pass (the vector made again where it was not kept) share the three
 // rotating vectors, the kept array and the step (lanczos_step); apart, each would take all of them.
-TopEigenpair top_eigenpair(const SymmetricOperator& apply, const Points& start, int max_steps, double tolerance) {
+TopEigenpair top_eigenpair(const SymmetricOperator& apply, const Points& start, int max_steps,
+                           double tolerance) {
   TopEigenpair result;
   const Eigen::Index n = start.rows();
   const double start_norm = start.norm();
@@ -130,8 +132,12 @@ TopEigenpair top_eigenpair(const SymmetricOperator& apply, const Points& start, 
   KeptVectors own;
   const bool nested = g_kept_in_use;
   const InUse in_use(nested);
-  double* const kept = (nested ? own : g_kept).reserve(static_cast<std::size_t>(keep) * 3 * static_cast<std::size_t>(n));
-  const auto kept_column = [&](long k, int c) { return Eigen::Map<Eigen::VectorXd>(kept + (3 * k + c) * n, n); };
+  double* const kept =
+      (nested ? own : g_kept)
+          .reserve(static_cast<std::size_t>(keep) * 3 * static_cast<std::size_t>(n));
+  const auto kept_column = [&](long k, int c) {
+    return Eigen::Map<Eigen::VectorXd>(kept + (3 * k + c) * n, n);
+  };
 
   // Three vectors in rotation: q_(k-1), q_k and y = B q_k. A step is three passes over them:
   // alpha = q_k . y; then y -= alpha q_k + beta_(k-1) q_(k-1) and beta = |y|, a column at a

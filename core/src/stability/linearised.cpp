@@ -20,7 +20,8 @@ Linearised::Linearised(const Model& model, const State& at) {
   // particles add nothing.
   spans_ = model.spans;
   const int springs = model.spring_count();
-  for (auto* v : {&dx_, &dy_, &dz_, &along_k_, &across_k_, &along_c_, &across_c_}) v->assign(springs, 0.0);
+  for (auto* v : {&dx_, &dy_, &dz_, &along_k_, &across_k_, &along_c_, &across_c_})
+    v->assign(springs, 0.0);
   std::vector<double> k_row(n, 0.0), c_row(n, 0.0);
   for (int s = 0; s < springs; ++s) {
     const int a = model.spring_a[s], b = model.spring_b[s];
@@ -28,7 +29,8 @@ Linearised::Linearised(const Model& model, const State& at) {
     const Vec3 d = (at.x.row(b) - at.x.row(a)).transpose();
     const DefiniteSpringJacobian J =
         definite_spring_jacobian(d.squaredNorm(), model.ks(s), model.kd(s), model.rest_length[s]);
-    const double across_c = model.rest_length[s] == 0.0 && coincident(d.norm(), 0.0) ? model.kd(s) : 0.0;
+    const double across_c =
+        model.rest_length[s] == 0.0 && coincident(d.norm(), 0.0) ? model.kd(s) : 0.0;
     dx_[s] = d.x();
     dy_[s] = d.y();
     dz_[s] = d.z();
@@ -112,7 +114,8 @@ void Linearised::product(const Weights& weights, double drag, const Points& x, P
   double* f[3] = {buffer[0], buffer[1], buffer[2]};
   // Springs s .. s + lanes - 1 of the chunk (T = f64x4: four of them, double: one), into f[.][k]:
   //   du = u_a - u_b,  f = along (d . du) d + across du.
-  const auto forces_at = [&]<typename T>(int s, const double* const ua[3], const double* const ub[3], int k) {
+  const auto forces_at = [&]<typename T>(int s, const double* const ua[3],
+                                         const double* const ub[3], int k) {
     using simd::at;
     const T ux = at<T>(ua[0] + k) - at<T>(ub[0] + k), uy = at<T>(ua[1] + k) - at<T>(ub[1] + k),
             uz = at<T>(ua[2] + k) - at<T>(ub[2] + k);
@@ -134,7 +137,8 @@ void Linearised::product(const Weights& weights, double drag, const Points& x, P
         ub[c] = u.col(c).data() + b0;
       }
       int k = 0;
-      for (; k + simd::kLanes <= count; k += simd::kLanes) forces_at.template operator()<simd::f64x4>(s + k, ua, ub, k);
+      for (; k + simd::kLanes <= count; k += simd::kLanes)
+        forces_at.template operator()<simd::f64x4>(s + k, ua, ub, k);
       for (; k < count; ++k) forces_at.template operator()<double>(s + k, ua, ub, k);
       for (int c = 0; c < 3; ++c) {
         accumulate(y.col(c).data() + a0, f[c], count, 1.0);
@@ -146,7 +150,8 @@ void Linearised::product(const Weights& weights, double drag, const Points& x, P
 }
 
 void Linearised::apply(double a, double b, const Points& x, Points& y) const {
-  product(Mixed{along_k_.data(), across_k_.data(), along_c_.data(), across_c_.data(), a, b}, b * drag_, x, y);
+  product(Mixed{along_k_.data(), across_k_.data(), along_c_.data(), across_c_.data(), a, b},
+          b * drag_, x, y);
 }
 
 Linearised::Combined Linearised::combined(double a, double b) const& {
@@ -191,8 +196,12 @@ Eigen::MatrixXd dense(const Linearised& lin, double a, double b) {
 }
 }  // namespace
 
-Eigen::MatrixXd Linearised::dense_stiffness() const { return dense(*this, 1.0, 0.0); }
-Eigen::MatrixXd Linearised::dense_damping() const { return dense(*this, 0.0, 1.0); }
+Eigen::MatrixXd Linearised::dense_stiffness() const {
+  return dense(*this, 1.0, 0.0);
+}
+Eigen::MatrixXd Linearised::dense_damping() const {
+  return dense(*this, 0.0, 1.0);
+}
 
 Points Linearised::points(const Eigen::VectorXd& v) const {
   Points x = Points::Zero(particles(), 3);

@@ -39,7 +39,8 @@ bool every_part_held(const Model& model) {
     while (part[i] != i) i = part[i] = part[part[i]];
     return i;
   };
-  for (int s = 0; s < model.spring_count(); ++s) part[find(model.spring_a[s])] = find(model.spring_b[s]);
+  for (int s = 0; s < model.spring_count(); ++s)
+    part[find(model.spring_a[s])] = find(model.spring_b[s]);
   std::vector<char> held(n, 0);
   for (int i = 0; i < n; ++i)
     if (model.pinned(i)) held[find(i)] = 1;
@@ -110,11 +111,14 @@ double amplification(Method method, double w, double c, double h, double verlet_
 // T = D S D^-1 with D = diag(sqrt(kappa), 1), and the growth is sup over n of |T^n|^2 (the
 // spectral norm). With T = V diag(mu) V^-1, |T^n| <= cond(V) rho^n: once that falls to the
 // largest |T^n| seen, no later power can exceed it.
-double transient_growth(Method method, double gamma, double kappa, double h, double verlet_damping) {
+double transient_growth(Method method, double gamma, double kappa, double h,
+                        double verlet_damping) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   if (!(kappa > 0.0)) return 1.0;  // a first-order decay (drag alone): its speed only falls
-  if (method_info(method).history) return kInf;  // its state holds a history: no energy norm of its own
-  const OscillatorStep s = oscillator_step(method, std::sqrt(kappa), std::max(gamma, 0.0), h, verlet_damping);
+  if (method_info(method).history)
+    return kInf;  // its state holds a history: no energy norm of its own
+  const OscillatorStep s =
+      oscillator_step(method, std::sqrt(kappa), std::max(gamma, 0.0), h, verlet_damping);
   const Eigen::Matrix2d D = Eigen::Vector2d(std::sqrt(kappa), 1.0).asDiagonal();
   const Eigen::Matrix2d T = D * s.matrix.topLeftCorner<2, 2>() * D.inverse();
   Eigen::VectorXcd mu;
@@ -169,7 +173,8 @@ struct Probe {
 };
 
 // The probe of `model` from `state`; none where nothing can move (no push gives kinetic energy).
-std::optional<Probe> make_probe(Method method, const Model& model, const State& state, const StepSettings& settings) {
+std::optional<Probe> make_probe(Method method, const Model& model, const State& state,
+                                const StepSettings& settings) {
   Probe p;
   p.method = method;
   p.settings = settings;
@@ -189,7 +194,8 @@ std::optional<Probe> make_probe(Method method, const Model& model, const State& 
   for (int i = 0; i < runs.particle_count(); ++i)
     for (int c = 0; c < 3; ++c) {
       seed = seed * 6364136223846793005ull + 1442695040888963407ull;
-      p.pushed.v(i, c) = runs.pinned(i) ? 0.0 : static_cast<double>(seed >> 11) / 9007199254740992.0 - 0.5;
+      p.pushed.v(i, c) =
+          runs.pinned(i) ? 0.0 : static_cast<double>(seed >> 11) / 9007199254740992.0 - 0.5;
     }
   const double kinetic = kinetic_energy(runs, p.pushed);
   if (!(kinetic > 0.0)) return std::nullopt;
@@ -224,15 +230,17 @@ bool Probe::holds(double h, long steps) {
     if ((k & 15) != 15 && k + 1 < steps) continue;
     const double e = energy(runs, a).total() - e_rest;
     if (!std::isfinite(e)) return false;
-    if (own_balance ? std::max(kinetic_energy(runs, a), std::abs(e)) > ceiling : e > 1e3 * start) return false;
+    if (own_balance ? std::max(kinetic_energy(runs, a), std::abs(e)) > ceiling : e > 1e3 * start)
+      return false;
   }
   return true;
 }
 
 }  // namespace
 
-MeasuredLimit measured_limit(Method method, const Model& model, const State& state, const StabilityLimit& expected,
-                             double w_max, const StepSettings& settings, double budget) {
+MeasuredLimit measured_limit(Method method, const Model& model, const State& state,
+                             const StabilityLimit& expected, double w_max,
+                             const StepSettings& settings, double budget) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   MeasuredLimit out;
   if (method_info(method).adaptive()) {
@@ -246,7 +254,8 @@ MeasuredLimit measured_limit(Method method, const Model& model, const State& sta
   }
   // The work allowed, in particle- and spring-steps: a probe is at most 200,000 steps and a
   // twentieth of it; the bisection stops when it is spent.
-  const long max_steps = std::clamp(static_cast<long>(budget / (20.0 * probe->size)), 200L, 200000L);
+  const long max_steps =
+      std::clamp(static_cast<long>(budget / (20.0 * probe->size)), 200L, 200000L);
   const double& spent = probe->spent;
 
   // The mode the analysis expects to fail first sets how long a run must be: long enough for
@@ -272,7 +281,9 @@ MeasuredLimit measured_limit(Method method, const Model& model, const State& sta
       return out;
     }
   }
-  const double guess = std::isfinite(expected.h) && expected.h > 0.0 ? expected.h : w > 0.0 ? 1.0 / w : 1.0;
+  const double guess = std::isfinite(expected.h) && expected.h > 0.0 ? expected.h
+                       : w > 0.0                                     ? 1.0 / w
+                                                                     : 1.0;
   // A probe at h runs as long as a thousandfold growth takes for the expected mode at h, or at
   // 0.5 % past its limit if h is below that (the slowest growth a run still has to see).
   // A method stable at any step (implicit Euler, the iterative rows, a tableau the analysis proves
@@ -316,7 +327,8 @@ MeasuredLimit measured_limit(Method method, const Model& model, const State& sta
   while (hi > lo * 1.001) {
     const double mid = 0.5 * (lo + hi);
     const long n = length(mid);
-    if (n >= max_steps || spent > budget) break;  // runs this long could no longer tell, or no more runs
+    if (n >= max_steps || spent > budget)
+      break;  // runs this long could no longer tell, or no more runs
     (holds(mid, n) ? lo : hi) = mid;
   }
   out.h = lo;

@@ -4,8 +4,8 @@
 // by Jury's conditions (a monic quadratic mu^2 + a1 mu + a0 has both roots in the unit disc
 // exactly when |a0| <= 1 and |a1| <= 1 + a0); the Runge-Kutta methods by the first positive root of
 // |R(h lambda)|^2 - 1, R = P / Q their tableau's stability function (tableau.hpp).
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <complex>
 #include <limits>
 #include <vector>
@@ -35,7 +35,9 @@ struct GrowthPolynomial {
     c.assign(static_cast<std::size_t>(degree + 1), 0.0);
     std::vector<Complex> powers{1.0};
     for (int j = 1; j <= n; ++j) powers.push_back(powers.back() * lambda);
-    const auto at = [](const std::vector<double>& v, int j) { return j < static_cast<int>(v.size()) ? v[static_cast<std::size_t>(j)] : 0.0; };
+    const auto at = [](const std::vector<double>& v, int j) {
+      return j < static_cast<int>(v.size()) ? v[static_cast<std::size_t>(j)] : 0.0;
+    };
     // A coefficient that is a sum of terms cancelling to rounding (on the imaginary axis RK4's
     // first five do: R is an approximation of e^z, |e^(iy)| = 1) is exactly zero.
     std::vector<double> gross(c.size(), 0.0);
@@ -99,7 +101,8 @@ double runge_kutta_exit(const Tableau& tableau, Complex lambda) {
   if (!(size > 0.0)) return kNoLimit;
   if (lambda.real() > 0.0) return 0.0;
   if (gamma.size() == 2 && tableau.denominator.size() == 1) {
-    // R(z) = 1 + gamma_1 z: |1 + h gamma_1 lambda| <= 1 up to h = -2 Re(lambda) / (gamma_1 |lambda|^2).
+    // R(z) = 1 + gamma_1 z: |1 + h gamma_1 lambda| <= 1 up to h = -2 Re(lambda) / (gamma_1
+    // |lambda|^2).
     return lambda.real() >= 0.0 ? 0.0 : -2.0 * lambda.real() / (gamma[1] * std::norm(lambda));
   }
   const GrowthPolynomial poly(gamma, tableau.denominator, lambda);

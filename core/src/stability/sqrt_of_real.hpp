@@ -10,7 +10,8 @@
 namespace springlab {
 
 inline std::complex<double> sqrt_of_real(double x) {
-  return x >= 0.0 ? std::complex<double>(std::sqrt(x), 0.0) : std::complex<double>(0.0, std::sqrt(-x));
+  return x >= 0.0 ? std::complex<double>(std::sqrt(x), 0.0)
+                  : std::complex<double>(0.0, std::sqrt(-x));
 }
 
 }  // namespace springlab

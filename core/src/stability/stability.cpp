@@ -3,21 +3,21 @@
 //   the partitioned methods       symplectic Euler and Verlet by Newton on a definiteness test
 //   the dense spectrum            every eigenvalue of a small scene, for the Runge-Kutta methods
 //   the analysis                  all of it, for every method
-#include "springlab/iterative_cost.hpp"
 #include "springlab/stability.hpp"
-#include "springlab/text.hpp"
 
 #include <Eigen/Dense>
 #include <Eigen/LU>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <stdexcept>
 #include <limits>
 #include <numbers>
 #include <sstream>
+#include <stdexcept>
 
 #include "dynamics/threads.hpp"
+#include "springlab/iterative_cost.hpp"
+#include "springlab/text.hpp"
 #include "stability/cancel.hpp"
 #include "stability/dense_spectrum.hpp"
 #include "stability/lanczos.hpp"
@@ -46,7 +46,9 @@ void each_task(int count, const Task& task) {
 
 // Lanczos steps for one eigenpair: enough to converge on the crowded top of a long chain's
 // spectrum (about its length), and about 1e8 spring products at most.
-int lanczos_cap(const Linearised& lin) { return std::clamp(lin.dofs() + 16, 32, 4000); }
+int lanczos_cap(const Linearised& lin) {
+  return std::clamp(lin.dofs() + 16, 32, 4000);
+}
 
 // A vector's damping rate and stiffness, gamma = x^T C^ x and kappa = x^T K^ x (|x| = 1).
 struct Sample {
@@ -69,7 +71,8 @@ double residual(const Linearised& lin, const Points& x, Complex lambda, double e
       const Complex r = lambda * lambda * x(i, c) + lambda * dx(i, c) + kx(i, c);
       r2 += std::norm(r);
     }
-  const double size = std::norm(lambda) + std::abs(lambda) * (lin.damping_bound() + extra * lin.stiffness_bound()) +
+  const double size = std::norm(lambda) +
+                      std::abs(lambda) * (lin.damping_bound() + extra * lin.stiffness_bound()) +
                       lin.stiffness_bound();
   return std::sqrt(r2) / size;
 }
@@ -97,7 +100,10 @@ LimitingMode mode_of(const Linearised& lin, const Points& x, double gamma, doubl
 class RangeTrace {
  public:
   explicit RangeTrace(const Linearised& lin)
-      : lin_(lin), k_(lin.stiffness_bound()), c_(lin.damping_bound()), random_(lin.random_vector(0x9E3779B97F4A7C15ull)) {}
+      : lin_(lin),
+        k_(lin.stiffness_bound()),
+        c_(lin.damping_bound()),
+        random_(lin.random_vector(0x9E3779B97F4A7C15ull)) {}
 
   // A neighbour's vector starts it (they are close), with `mix` of a fixed random vector so
   // that no direction is missing from the start: the top may have moved to another mode.
@@ -112,8 +118,8 @@ class RangeTrace {
     // third on a 1000-node rope) for the same limits to ten digits and the same eigenvector
     // verdicts (kEigenvectorResidual, 1e-6) on eight shipped scenes.
     const Linearised::Combined op = lin_.combined(a, b);
-    const TopEigenpair top =
-        top_eigenpair([&](const Points& x, Points& y) { op.apply(x, y); }, start, lanczos_cap(lin_), 1e-7);
+    const TopEigenpair top = top_eigenpair([&](const Points& x, Points& y) { op.apply(x, y); },
+                                           start, lanczos_cap(lin_), 1e-7);
     Sample s;
     s.phi = phi;
     s.x = top.vector;
@@ -150,13 +156,15 @@ class RangeTrace {
     });
     for (auto& side : sides)
       for (Sample& sample : side) samples_.push_back(std::move(sample));
-    std::sort(samples_.begin(), samples_.end(), [](const Sample& p, const Sample& q) { return p.phi < q.phi; });
+    std::sort(samples_.begin(), samples_.end(),
+              [](const Sample& p, const Sample& q) { return p.phi < q.phi; });
   }
 
   const std::vector<Sample>& samples() const { return samples_; }
   const Sample& stiffest() const {
-    return *std::min_element(samples_.begin(), samples_.end(),
-                             [](const Sample& p, const Sample& q) { return std::abs(p.phi) < std::abs(q.phi); });
+    return *std::min_element(
+        samples_.begin(), samples_.end(),
+        [](const Sample& p, const Sample& q) { return std::abs(p.phi) < std::abs(q.phi); });
   }
 
   // The least of `limit` over the boundary: the best point sampled, then Brent's search between
@@ -170,8 +178,10 @@ class RangeTrace {
     // A corner of W (one mode supports a range of directions): its neighbours are the same
     // point, and no direction between them does better.
     const auto same = [&](std::size_t j) {
-      return j < samples_.size() && std::abs(samples_[j].kappa - samples_[best].kappa) <= 1e-9 * samples_[best].kappa &&
-             std::abs(samples_[j].gamma - samples_[best].gamma) <= 1e-9 * std::max(samples_[best].gamma, 1e-300);
+      return j < samples_.size() &&
+             std::abs(samples_[j].kappa - samples_[best].kappa) <= 1e-9 * samples_[best].kappa &&
+             std::abs(samples_[j].gamma - samples_[best].gamma) <=
+                 1e-9 * std::max(samples_[best].gamma, 1e-300);
     };
     if (best > 0 && same(best - 1) && same(best + 1)) return samples_[best];
     const double edge = 0.5 * std::numbers::pi * (1.0 - 1e-9);
@@ -196,7 +206,8 @@ class RangeTrace {
   template <typename Limit>
   Sample brent(const Limit& limit, double lo, double hi, Sample x) const {
     constexpr double kGolden = 0.3819660112501051;  // (3 - sqrt 5) / 2
-    constexpr double kTolerance = 3e-5;  // in phi (radians): the limit is quadratic there, to ~1e-12
+    constexpr double kTolerance =
+        3e-5;  // in phi (radians): the limit is quadratic there, to ~1e-12
     Sample w = x, v = x;
     double fx = limit(x), fw = fx, fv = fx;
     double d = 0.0, e = 0.0;
@@ -212,7 +223,8 @@ class RangeTrace {
         if (q > 0.0) p = -p;
         q = std::abs(q);
         const double before = e;
-        if (std::abs(p) < std::abs(0.5 * q * before) && p > q * (lo - x.phi) && p < q * (hi - x.phi)) {
+        if (std::abs(p) < std::abs(0.5 * q * before) && p > q * (lo - x.phi) &&
+            p < q * (hi - x.phi)) {
           e = d;
           d = p / q;
           const double u = x.phi + d;
@@ -262,7 +274,8 @@ class RangeTrace {
 // A limit from W: the least over its boundary, exact when the vector attaining it is an
 // eigenvector of the system with the eigenvalue that sets the limit.
 // The point attaining it is `found`.
-StabilityLimit range_limit(Method method, const Linearised& lin, const RangeTrace& trace, Sample& found) {
+StabilityLimit range_limit(Method method, const Linearised& lin, const RangeTrace& trace,
+                           Sample& found) {
   StabilityLimit out;
   out.method = method;
   const auto limit = [&](const Sample& s) { return mode_limit(method, s.gamma, s.kappa); };
@@ -301,7 +314,8 @@ StabilityLimit definite_limit(Method method, double a, double b, double c, const
   for (int iteration = 0; iteration < 40; ++iteration) {
     const double ka = a * h * h / c, cb = b * h / c;
     const Linearised::Combined op = lin.combined(ka, cb);
-    const TopEigenpair top = top_eigenpair([&](const Points& v, Points& y) { op.apply(v, y); }, x, lanczos_cap(lin), 1e-13);
+    const TopEigenpair top = top_eigenpair([&](const Points& v, Points& y) { op.apply(v, y); }, x,
+                                           lanczos_cap(lin), 1e-13);
     x = top.vector;
     gamma = lin.damping(x);
     kappa = lin.stiffness(x);
@@ -323,10 +337,12 @@ StabilityLimit definite_limit(Method method, double a, double b, double c, const
 // The eigenvector of the quadratic eigenproblem (lambda^2 I + lambda C^ + K^) y = 0 for a known
 // eigenvalue, by inverse iteration with a shift a hair away from it; the real part of y turned
 // so that its largest component is real.
-Eigen::VectorXd dense_eigenvector(const Eigen::MatrixXd& K, const Eigen::MatrixXd& C, Complex lambda) {
+Eigen::VectorXd dense_eigenvector(const Eigen::MatrixXd& K, const Eigen::MatrixXd& C,
+                                  Complex lambda) {
   const Eigen::Index n = K.rows();
   const Complex shift = lambda * (1.0 + 1e-9) + 1e-12;
-  const Eigen::MatrixXcd Q = shift * shift * Eigen::MatrixXcd::Identity(n, n) + shift * C.cast<Complex>() + K.cast<Complex>();
+  const Eigen::MatrixXcd Q = shift * shift * Eigen::MatrixXcd::Identity(n, n) +
+                             shift * C.cast<Complex>() + K.cast<Complex>();
   const Eigen::PartialPivLU<Eigen::MatrixXcd> lu(Q);
   Eigen::VectorXcd y = Eigen::VectorXcd::Ones(n);
   for (int k = 0; k < 3; ++k) {
@@ -342,14 +358,20 @@ Eigen::VectorXd dense_eigenvector(const Eigen::MatrixXd& K, const Eigen::MatrixX
 
 }  // namespace
 
-double LimitingMode::damping_ratio() const { return w > 0.0 ? c / (2.0 * w) : kInf; }
+double LimitingMode::damping_ratio() const {
+  return w > 0.0 ? c / (2.0 * w) : kInf;
+}
 
 std::string describe(const StabilityLimit& limit) {
   if (std::isnan(limit.h)) return tr("the method chooses its own step sizes");
   if (std::isinf(limit.h)) return tr("stable at any step");
   if (limit.h == 0.0)
-    return tr(method_info(limit.method).damping_helps() ? "unstable at any step (not enough damping)" : "unstable at any step");
-  return format_text(limit.exact ? tr("stable up to h = %.4g s") : tr("stable at least up to h = %.4g s"), limit.h);
+    return tr(method_info(limit.method).damping_helps()
+                  ? "unstable at any step (not enough damping)"
+                  : "unstable at any step");
+  return format_text(
+      limit.exact ? tr("stable up to h = %.4g s") : tr("stable at least up to h = %.4g s"),
+      limit.h);
 }
 
 StabilityAnalysis::StabilityAnalysis(const Model& model, const State& state, int dense_dofs,
@@ -453,8 +475,8 @@ void StabilityAnalysis::analyse(const Model& model, const State& state, int dens
   if (dofs_ == 0 || !(lin.stiffness_bound() > 0.0)) {
     // (English: the app shows them through tr().)
     no_modes_ = model.spring_count() == 0 ? N_("no springs")
-                : dofs_ == 0                ? N_("every particle is pinned")
-                                            : N_("no spring with stiffness holds a free particle");
+                : dofs_ == 0              ? N_("every particle is pinned")
+                                          : N_("no spring with stiffness holds a free particle");
     const double decay = lin.damping_bound();
     for (StabilityLimit& limit : limits_)
       if (!method_info(limit.method).adaptive() && !method_info(limit.method).any_step())
@@ -467,7 +489,9 @@ void StabilityAnalysis::analyse(const Model& model, const State& state, int dens
   oscillates_ = true;
   dense_ = dofs_ <= dense_dofs;
 
-  const auto set = [&](StabilityLimit limit) { limits_[static_cast<int>(limit.method)] = std::move(limit); };
+  const auto set = [&](StabilityLimit limit) {
+    limits_[static_cast<int>(limit.method)] = std::move(limit);
+  };
   // One search per method, independent of each other, so that they run on worker threads in any
   // order with the same results. A definiteness test (the partitioned methods) needs only the
   // stiffest mode: it runs beside the grid's two sides. The searches along W's boundary (the
@@ -524,21 +548,26 @@ const StabilityLimit& StabilityAnalysis::limit(Method method) const {
   limit.h = info.adaptive() ? kNaN : kInf;
   if (!info.adaptive() && !info.any_step() && !cancelled_) {
     if (dense_ && !eigenvalues_.empty())
-      for (Complex lambda : eigenvalues_) limit.h = std::min(limit.h, runge_kutta_limit(method, lambda));
+      for (Complex lambda : eigenvalues_)
+        limit.h = std::min(limit.h, runge_kutta_limit(method, lambda));
     else
-      for (const ModePoint& p : modes_) limit.h = std::min(limit.h, mode_limit(method, p.gamma, p.kappa));
+      for (const ModePoint& p : modes_)
+        limit.h = std::min(limit.h, mode_limit(method, p.gamma, p.kappa));
     limit.exact = dense_;
   }
   late_->limits.push_back(limit);
   return late_->limits.back();
 }
 
-StabilityAnalysis::Growth StabilityAnalysis::transient_growth(Method method, double h, double verlet_damping) const {
+StabilityAnalysis::Growth StabilityAnalysis::transient_growth(Method method, double h,
+                                                              double verlet_damping) const {
   Growth g;
   for (const ModePoint& p : growth_modes_) {
     const double factor = springlab::transient_growth(method, p.gamma, p.kappa, h, verlet_damping);
-    if (std::isinf(factor)) ++g.growing;
-    else g.factor = std::max(g.factor, factor);
+    if (std::isinf(factor))
+      ++g.growing;
+    else
+      g.factor = std::max(g.factor, factor);
   }
   return g;
 }
@@ -572,7 +601,9 @@ StabilityLimit quick_limit(Method method, const Model& model, const State& state
   const double gamma_lo = heaviest > 0.0 ? std::min(model.drag / heaviest, gamma_hi) : 0.0;
   const double d = model.verlet_damping;
   limit.h = kInf;
-  const auto at = [&](double gamma, double k) { limit.h = std::min(limit.h, mode_limit(method, gamma, k, d)); };
+  const auto at = [&](double gamma, double k) {
+    limit.h = std::min(limit.h, mode_limit(method, gamma, k, d));
+  };
   if (info.corner_bound) {
     for (double g : {gamma_lo, gamma_hi})
       for (double k : {0.0, kappa}) at(g, k);
@@ -580,7 +611,8 @@ StabilityLimit quick_limit(Method method, const Model& model, const State& state
     constexpr int kGrid = 48;
     for (int i = 0; i <= kGrid; ++i)
       for (int j = 0; j <= kGrid; ++j)
-        at(gamma_lo + (gamma_hi - gamma_lo) * i / kGrid, kappa * std::pow(static_cast<double>(j) / kGrid, 2.0));
+        at(gamma_lo + (gamma_hi - gamma_lo) * i / kGrid,
+           kappa * std::pow(static_cast<double>(j) / kGrid, 2.0));
     limit.h *= 0.9;
   }
   return limit;

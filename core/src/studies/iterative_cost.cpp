@@ -32,7 +32,8 @@ double length_ratio(const Model& model, const State& state) {
 }
 
 bool loaded_balance(const Model& model) {
-  if (model.gravity == Vec3::Zero() || model.has_colliders() || !model.attractors.empty()) return false;
+  if (model.gravity == Vec3::Zero() || model.has_colliders() || !model.attractors.empty())
+    return false;
   Parts parts(model);
   bool any = false;
   for (int i = 0; i < model.particle_count(); ++i) {
@@ -50,7 +51,8 @@ bool at_rest(const Model& model, const State& state, double energy_scale) {
   double weight = 0.0;
   for (int i = 0; i < model.particle_count(); ++i)
     if (!model.pinned(i)) weight += model.mass[i] * model.gravity.norm();
-  if (state.particle_count() > 0) weight *= (state.x.colwise().maxCoeff() - state.x.colwise().minCoeff()).norm();
+  if (state.particle_count() > 0)
+    weight *= (state.x.colwise().maxCoeff() - state.x.colwise().minCoeff()).norm();
   const double scale = weight > 0.0 ? std::min(energy_scale, weight) : energy_scale;
   return kinetic_energy(model, state) <= 1e-6 * scale;
 }

@@ -23,7 +23,8 @@ double rms(const Model& model, const Points& a, const Points& b) {
   return free > 0 ? std::sqrt(sum / free) : 0.0;
 }
 
-State one_step(const Model& model, const State& state, double h, Method method, StepSettings settings) {
+State one_step(const Model& model, const State& state, double h, Method method,
+               StepSettings settings) {
   Workspace ws;
   State out;
   step(method, model, state, out, h, settings, ws);
@@ -38,7 +39,8 @@ double residual(const Model& model, const State& state, const State& out, double
   double worst = 0.0, scale = 0.0;
   for (int i = 0; i < model.particle_count(); ++i) {
     if (model.pinned(i)) continue;
-    worst = std::max(worst, (model.mass[i] * (out.v.row(i) - state.v.row(i)) / h - f.row(i)).norm());
+    worst =
+        std::max(worst, (model.mass[i] * (out.v.row(i) - state.v.row(i)) / h - f.row(i)).norm());
     scale = std::max(scale, f.row(i).norm());
   }
   return scale > 0.0 ? worst / scale : worst;

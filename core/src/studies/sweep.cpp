@@ -1,7 +1,5 @@
 #include "springlab/sweep.hpp"
 
-#include "stability/cancel.hpp"
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -10,10 +8,10 @@
 #include <sstream>
 #include <thread>
 
+#include "dynamics/threads.hpp"
 #include "springlab/energy.hpp"
 #include "springlab/exact.hpp"
 #include "springlab/simulation.hpp"
-#include "dynamics/threads.hpp"
 #include "stability/cancel.hpp"
 
 namespace springlab {
@@ -49,8 +47,9 @@ double rms(const Points& a, const Points& b) {
 // A run of `method` with outer step h, sampled every `every` steps: the error against the
 // reference, or infinity once it diverges.
 SweepRun run_one(const Model& model, const State& initial, Method method, double h, int every,
-                 int samples, double tolerance, const StepSettings& base, const Trajectory& reference,
-                 int repeats, const std::shared_ptr<const StabilityAnalysis>& analysis) {
+                 int samples, double tolerance, const StepSettings& base,
+                 const Trajectory& reference, int repeats,
+                 const std::shared_ptr<const StabilityAnalysis>& analysis) {
   SweepRun run;
   run.method = method;
   run.h = h;
@@ -66,7 +65,8 @@ SweepRun run_one(const Model& model, const State& initial, Method method, double
     s.audit_stops = false;
     // An adaptive method without a tolerance runs at fixed steps: every try accepted. (Not an
     // infinite one: times a zero coordinate in RK45's error norm it would make NaN.)
-    if (method_info(method).adaptive()) s.step.tolerance = std::isnan(tolerance) ? 1e300 : tolerance;
+    if (method_info(method).adaptive())
+      s.step.tolerance = std::isnan(tolerance) ? 1e300 : tolerance;
     Simulation sim(model, initial, s);
     if (analysis) sim.set_stability(analysis);
     double error = 0.0;
@@ -80,7 +80,9 @@ SweepRun run_one(const Model& model, const State& initial, Method method, double
       }
       error = std::max(error, rms(take(sim.state(), reference.free), reference.samples[k]));
     }
-    run.seconds = std::min(run.seconds, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    run.seconds =
+        std::min(run.seconds,
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     run.counters = sim.counters();
     run.diverged = diverged;
     run.error = diverged ? kInf : error;
@@ -94,7 +96,8 @@ SweepRun run_one(const Model& model, const State& initial, Method method, double
   return run;
 }
 
-Trajectory rk4_trajectory(const Model& model, const State& initial, double h, int every, int samples) {
+Trajectory rk4_trajectory(const Model& model, const State& initial, double h, int every,
+                          int samples) {
   Trajectory t;
   t.free = free_particles(model);
   SimulationSettings s;
@@ -113,7 +116,8 @@ Trajectory rk4_trajectory(const Model& model, const State& initial, double h, in
 // Runs jobs on `workers` threads, each of which runs its force loops on one thread (the sweep
 // is parallel across runs instead). Cancelled, each stops within a sample of the run it makes
 // (its loops call check_cancel(): stability/cancel.hpp).
-void parallel_for(int jobs, int workers, const std::function<void(int)>& job, const std::atomic<bool>* cancel) {
+void parallel_for(int jobs, int workers, const std::function<void(int)>& job,
+                  const std::atomic<bool>* cancel) {
   try {
     threads::each(jobs, workers, [&](int j) {
       const CancelScope scope(cancel);
@@ -144,7 +148,8 @@ std::vector<int> step_divisors(double h_min, double h_max, int count) {
   return n;
 }
 
-double fitted_order(const std::vector<SweepRun>& runs, Method method, double floor, double ceiling, int* points) {
+double fitted_order(const std::vector<SweepRun>& runs, Method method, double floor, double ceiling,
+                    int* points) {
   double sx = 0, sy = 0, sxx = 0, sxy = 0;
   int n = 0;
   for (const SweepRun& r : runs) {
@@ -163,13 +168,16 @@ double fitted_order(const std::vector<SweepRun>& runs, Method method, double flo
   return denom > 0 ? (n * sxy - sx * sy) / denom : std::numeric_limits<double>::quiet_NaN();
 }
 
-void fit_order_above_floor(const std::vector<SweepRun>& runs, Method method, double floor, double ceiling,
-                           MethodSummary& summary) {
+void fit_order_above_floor(const std::vector<SweepRun>& runs, Method method, double floor,
+                           double ceiling, MethodSummary& summary) {
   // The fixed-step runs that count, coarse to fine.
   std::vector<const SweepRun*> kept;
   for (const SweepRun& r : runs)
-    if (r.method == method && std::isnan(r.tolerance) && !r.diverged && r.error > floor && r.error < ceiling) kept.push_back(&r);
-  std::sort(kept.begin(), kept.end(), [](const SweepRun* a, const SweepRun* b) { return a->h > b->h; });
+    if (r.method == method && std::isnan(r.tolerance) && !r.diverged && r.error > floor &&
+        r.error < ceiling)
+      kept.push_back(&r);
+  std::sort(kept.begin(), kept.end(),
+            [](const SweepRun* a, const SweepRun* b) { return a->h > b->h; });
   // The floor: the longest tail (two runs at least, three left before it) whose every error is
   // at least half the least error before it.
   std::size_t fit = kept.size();
@@ -190,7 +198,8 @@ void fit_order_above_floor(const std::vector<SweepRun>& runs, Method method, dou
   if (fit < kept.size()) {
     summary.floor_h = kept[fit]->h;
     summary.floor_error = 0.0;
-    for (std::size_t i = fit; i < kept.size(); ++i) summary.floor_error = std::max(summary.floor_error, kept[i]->error);
+    for (std::size_t i = fit; i < kept.size(); ++i)
+      summary.floor_error = std::max(summary.floor_error, kept[i]->error);
   }
 }
 
@@ -245,7 +254,8 @@ struct SweepPlan {
   Trajectory rk4_reference(int j) const {
     const int fine = divisors.back() * 16;
     const double h_ref = H / fine;
-    return rk4_trajectory(model, initial, j == 0 ? h_ref : 2 * h_ref, j == 0 ? fine : fine / 2, result.samples);
+    return rk4_trajectory(model, initial, j == 0 ? h_ref : 2 * h_ref, j == 0 ? fine : fine / 2,
+                          result.samples);
   }
   void set_rk4_reference(Trajectory fine, const Trajectory& coarse) {
     reference = std::move(fine);
@@ -260,7 +270,8 @@ struct SweepPlan {
   // The jobs: every method at every step (or tolerance), then stability, then drift.
   void plan_jobs() {
     const Points start = take(initial, reference.free);
-    for (const Points& p : reference.samples) result.motion = std::max(result.motion, rms(p, start));
+    for (const Points& p : reference.samples)
+      result.motion = std::max(result.motion, rms(p, start));
     for (Method m : list) {
       // Every method at fixed steps (the order), and the adaptive ones over their tolerances too
       // (what they cost for the accuracy they choose).
@@ -289,8 +300,9 @@ struct SweepPlan {
   const SweepRun* run_job(int j) {
     if (j < static_cast<int>(jobs.size())) {
       const SweepJob& job = jobs[j];
-      result.runs[j] = run_one(model, initial, job.method, H / job.divisor, job.divisor, result.samples,
-                               job.tolerance, settings.step, reference, settings.repeats, analysis);
+      result.runs[j] =
+          run_one(model, initial, job.method, H / job.divisor, job.divisor, result.samples,
+                  job.tolerance, settings.step, reference, settings.repeats, analysis);
       if (!std::isnan(job.tolerance)) result.runs[j].h = H;
       return &result.runs[j];
     }
@@ -302,7 +314,8 @@ struct SweepPlan {
       s.theoretical_stable_h = limit.h;
       s.theory_exact = limit.exact;
       const MeasuredLimit measured =
-          measured_limit(list[j], model, initial, limit, analysis->w_max(), settings.step, settings.stability_budget);
+          measured_limit(list[j], model, initial, limit, analysis->w_max(), settings.step,
+                         settings.stability_budget);
       s.measured_stable_h = measured.h;
       s.measured_resolution = measured.resolution;
       s.measured_at_least = measured.at_least;
@@ -320,7 +333,8 @@ struct SweepPlan {
       s.step = settings.step;
       Simulation sim(model, initial, s);
       sim.advance(std::max<std::int64_t>(1, std::llround(settings.duration / h)));
-      result.solver = solver_error(model, sim.diverged() ? initial : sim.state(), h, 64, settings.step);
+      result.solver =
+          solver_error(model, sim.diverged() ? initial : sim.state(), h, 64, settings.step);
       return nullptr;
     }
     DriftTrace& trace = result.drift[j];
@@ -338,7 +352,8 @@ struct SweepPlan {
     sim.set_stability(analysis);  // the same scene: chooses the sub-steps
     trace.substeps = sim.settings().substeps;
     const double scale = sim.energy_scale(), e0 = sim.energy().total();
-    const auto steps = static_cast<std::int64_t>(std::llround(settings.drift_duration / settings.drift_h));
+    const auto steps =
+        static_cast<std::int64_t>(std::llround(settings.drift_duration / settings.drift_h));
     const std::int64_t every = std::max<std::int64_t>(1, steps / 400);
     trace.t.push_back(initial.t);
     trace.drift.push_back(0.0);
@@ -360,7 +375,8 @@ struct SweepPlan {
     result.cancelled = cancelled;
     for (std::size_t k = 0; k < list.size(); ++k) {
       result.methods[k].method = list[k];
-      const double floor = std::max(100.0 * result.reference_error, 1e-12 * std::max(1.0, result.motion));
+      const double floor =
+          std::max(100.0 * result.reference_error, 1e-12 * std::max(1.0, result.motion));
       result.fit_floor = floor;
       result.fit_ceiling = 0.1 * result.motion;
       fit_order_above_floor(result.runs, list[k], floor, 0.1 * result.motion, result.methods[k]);
@@ -375,10 +391,13 @@ SweepResult run_sweep(const Model& model, const State& initial, const SweepSetti
                       const std::atomic<bool>* cancel) {
   SweepPlan plan(model, initial, settings);
   // Without threads (threads.hpp) every run is made on the caller's.
-  const int workers = !threads::kAvailable ? 1 : settings.workers > 0 ? settings.workers : threads::hardware_workers();
+  const int workers = !threads::kAvailable   ? 1
+                      : settings.workers > 0 ? settings.workers
+                                             : threads::hardware_workers();
   if (!plan.exact_reference()) {
     std::vector<Trajectory> both(2);
-    parallel_for(2, std::min(2, workers), [&](int j) { both[j] = plan.rk4_reference(j); }, cancel);
+    parallel_for(
+        2, std::min(2, workers), [&](int j) { both[j] = plan.rk4_reference(j); }, cancel);
     if (cancel && cancel->load()) {
       plan.result.cancelled = true;
       return std::move(plan.result);
@@ -396,12 +415,15 @@ SweepResult run_sweep(const Model& model, const State& initial, const SweepSetti
   }
   std::mutex mutex;
   int done = 0;
-  parallel_for(plan.total, workers, [&](int j) {
-    const SweepRun* run = plan.run_job(j);
-    std::lock_guard lock(mutex);
-    ++done;
-    if (on_run) on_run(run ? *run : SweepRun{}, done, plan.total);
-  }, cancel);
+  parallel_for(
+      plan.total, workers,
+      [&](int j) {
+        const SweepRun* run = plan.run_job(j);
+        std::lock_guard lock(mutex);
+        ++done;
+        if (on_run) on_run(run ? *run : SweepRun{}, done, plan.total);
+      },
+      cancel);
   plan.finish(cancel && cancel->load());
   return std::move(plan.result);
 }
@@ -413,7 +435,8 @@ struct SweepInSteps::Impl {
   int phase = 0;  // 0: the reference, 1: its check, 2: the jobs' plan, then job (phase - 3)
   Trajectory fine;
   bool done = false;
-  Impl(const Model& m, const State& s, const SweepSettings& settings) : model(m), initial(s), plan(model, initial, settings) {}
+  Impl(const Model& m, const State& s, const SweepSettings& settings)
+      : model(m), initial(s), plan(model, initial, settings) {}
 };
 
 SweepInSteps::SweepInSteps(const Model& model, const State& initial, const SweepSettings& settings)
@@ -428,8 +451,10 @@ bool SweepInSteps::step(const std::function<void(const SweepRun&, int done, int 
   if (s.done) return false;
   switch (s.phase) {
     case 0:
-      if (plan.exact_reference()) s.phase = 1;  // nothing to check: the jobs' plan next
-      else s.fine = plan.rk4_reference(0);
+      if (plan.exact_reference())
+        s.phase = 1;  // nothing to check: the jobs' plan next
+      else
+        s.fine = plan.rk4_reference(0);
       break;
     case 1:
       plan.set_rk4_reference(std::move(s.fine), plan.rk4_reference(1));
@@ -452,8 +477,12 @@ bool SweepInSteps::step(const std::function<void(const SweepRun&, int done, int 
   return !s.done;
 }
 
-bool SweepInSteps::done() const { return impl_->done; }
-const SweepResult& SweepInSteps::result() const { return impl_->plan.result; }
+bool SweepInSteps::done() const {
+  return impl_->done;
+}
+const SweepResult& SweepInSteps::result() const {
+  return impl_->plan.result;
+}
 std::pair<int, int> SweepInSteps::progress() const {
   const int phase = impl_->phase;
   return {std::max(0, phase - 3), impl_->plan.total};

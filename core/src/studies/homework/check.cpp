@@ -19,7 +19,8 @@ void check_one_step(Bench bench, Step step, Identified& found, CheckSection& sec
       found.damping = probe_damping(bench, step, section);
       probe_constraint_step(bench, found.damping, section);
       note(section, "not-measured",
-           tr("order, stability and energy on a spring: not measured: springlab's verlet row is the force-based one, "
+           tr("order, stability and energy on a spring: not measured: springlab's verlet row is "
+              "the force-based one, "
               "and a spring held at its length does not oscillate"));
       return;
     }
@@ -29,15 +30,19 @@ void check_one_step(Bench bench, Step step, Identified& found, CheckSection& sec
     found = identify(bench, step, damping, probes_passed, section);
     if (found.method.empty()) {
       note(section, "not-measured",
-           tr("order, stability and energy: not measured, since the step is none of the textbook methods"));
+           tr("order, stability and energy: not measured, since the step is none of the textbook "
+              "methods"));
       return;
     }
     if (!probes_passed) {
-      // Its update is a row's, but with the mistake above: measuring it would only show the mistake again.
-      note(section, "not-measured", tr("order, stability and energy: not measured while the mistake above stands"));
+      // Its update is a row's, but with the mistake above: measuring it would only show the mistake
+      // again.
+      note(section, "not-measured",
+           tr("order, stability and energy: not measured while the mistake above stands"));
       return;
     }
-    check_on_a_spring([&](double h, int steps, double y_before) { return rope_swing(bench, step, h, steps, y_before); },
+    check_on_a_spring([&](double h, int steps,
+                          double y_before) { return rope_swing(bench, step, h, steps, y_before); },
                       found, section);
   } catch (const CodeFailure& e) {
     fail(section, "code-failed", e.what());
@@ -61,18 +66,22 @@ Report check_rope(RopeCode& code) {
       code.build_exercise(checked_rope());
     } catch (const CodeFailure& e) {
       note(report.sections.back(), "steps-not-checked",
-           format_text(tr("the steps cannot be checked on springlab's own rope either (%s)"), e.what()));
+           format_text(tr("the steps cannot be checked on springlab's own rope either (%s)"),
+                       e.what()));
       return report;
     }
     note(report.sections.back(), "springlab-rope",
-         tr("the steps below are checked on springlab's own rope, built as the exercise states it through Rope(masses, "
-            "springs), so that simulateEuler and simulateVerlet are told while the constructor is not yet right"));
+         tr("the steps below are checked on springlab's own rope, built as the exercise states it "
+            "through Rope(masses, "
+            "springs), so that simulateEuler and simulateVerlet are told while the constructor is "
+            "not yet right"));
     bench.springlab_rope = true;
     report.springlab_rope = true;
   }
   for (Step step : {Step::Euler, Step::Verlet}) {
     report.sections.push_back({step_name(step), {}});
-    check_one_step(bench, step, step == Step::Euler ? report.euler : report.verlet, report.sections.back());
+    check_one_step(bench, step, step == Step::Euler ? report.euler : report.verlet,
+                   report.sections.back());
   }
   return report;
 }

@@ -20,12 +20,12 @@ struct Candidate {
   Method row;
   Damping damping;
   double worst = std::numeric_limits<double>::infinity();  // the largest deviation over the steps
-  double floor = 0.0;                                       // the largest float floor over the steps
-  bool within_float = false;                                // every step within its own floor
+  double floor = 0.0;                                      // the largest float floor over the steps
+  bool within_float = false;                               // every step within its own floor
 };
 
-Candidate measure(Method row, const Damping& damping, const Model& model, const std::vector<RopeState>& run, double h,
-                  bool velocities) {
+Candidate measure(Method row, const Damping& damping, const Model& model,
+                  const std::vector<RopeState>& run, double h, bool velocities) {
   Candidate c{row, damping};
   c.worst = 0.0;
   c.within_float = true;
@@ -47,7 +47,8 @@ struct Explained {
   const char* says;
 };
 
-std::optional<Explained> explain(const Model& model, const std::vector<RopeState>& run, const Damping& damping, double h) {
+std::optional<Explained> explain(const Model& model, const std::vector<RopeState>& run,
+                                 const Damping& damping, double h) {
   // x1 = x + h v1 + h^2 a (symplectic Euler's position, with the acceleration once more), and
   // x1 = x_last + h v1 (the position stepped from where the rope began).
   double twice = 0.0, from_last = 0.0, scale_twice = 0.0, scale_last = 0.0;
@@ -66,11 +67,15 @@ std::optional<Explained> explain(const Model& model, const std::vector<RopeState
     }
   }
   if (scale_twice > 0.0 && twice <= 1e-3 * scale_twice)
-    return Explained{"accel-twice", N_("the acceleration is applied twice: after v += a h, the position moves by (v + a h) h. "
-                                       "x += v h with the new v is semi-implicit (symplectic) Euler")};
+    return Explained{
+        "accel-twice",
+        N_("the acceleration is applied twice: after v += a h, the position moves by (v + a h) h. "
+           "x += v h with the new v is semi-implicit (symplectic) Euler")};
   if (scale_last > 0.0 && from_last <= 1e-3 * scale_last)
-    return Explained{"from-last-position", N_("the position is stepped from last_position, not position: x = last_position + "
-                                              "v h starts every step from where the rope was built")};
+    return Explained{
+        "from-last-position",
+        N_("the position is stepped from last_position, not position: x = last_position + "
+           "v h starts every step from where the rope was built")};
   return std::nullopt;
 }
 
@@ -82,7 +87,8 @@ std::string rows_text(const std::vector<Method>& rows) {
 
 }  // namespace
 
-Identified identify(const Bench& bench, Step step, const Damping& damping, bool judged, CheckSection& section) {
+Identified identify(const Bench& bench, Step step, const Damping& damping, bool judged,
+                    CheckSection& section) {
   const double h = kCheckStep;
   const BuiltRope rope = bench.build(checked_rope());
   RopeState start;
@@ -115,39 +121,49 @@ Identified identify(const Bench& bench, Step step, const Damping& damping, bool 
   found.damping = best.damping;
   found.deviation = best.worst;
   found.float_floor = best.floor;
-  const std::string where = format_text(tr("%d steps of a %d-mass rope falling from rest at h = %s"), kCheckSteps,
-                                        static_cast<int>(rope.masses.size()), step_text(h).c_str());
+  const std::string where =
+      format_text(tr("%d steps of a %d-mass rope falling from rest at h = %s"), kCheckSteps,
+                  static_cast<int>(rope.masses.size()), step_text(h).c_str());
   const std::string damped = damping_text(best.damping, step);
   if (best.worst <= kMatch || best.within_float) {
     found.method = row.name;
     found.in_float = best.worst > kMatch;
-    const std::string how = found.in_float
-                                ? format_text(tr("%s of the step's motion: float's rounding (the code computes in float, and "
-                                                 "2^-24 of the forces it sums allows up to %s here)"),
-                                              num(best.worst).c_str(), num(best.floor).c_str())
-                                : format_text(tr("%s of the step's motion (double's rounding)"), num(best.worst).c_str());
+    const std::string how =
+        found.in_float
+            ? format_text(
+                  tr("%s of the step's motion: float's rounding (the code computes in float, and "
+                     "2^-24 of the forces it sums allows up to %s here)"),
+                  num(best.worst).c_str(), num(best.floor).c_str())
+            : format_text(tr("%s of the step's motion (double's rounding)"),
+                          num(best.worst).c_str());
     pass(section, "method",
-         format_text(tr("%s is %s (springlab's %s), with %s: each of %s matches it to %s"), step_name(step), tr(row.label),
-                     row.name, damped.c_str(), where.c_str(), how.c_str()));
+         format_text(tr("%s is %s (springlab's %s), with %s: each of %s matches it to %s"),
+                     step_name(step), tr(row.label), row.name, damped.c_str(), where.c_str(),
+                     how.c_str()));
     return found;
   }
-  const std::string nearest = format_text(tr("the nearest, %s with %s, is off by %s of a step's motion (double's rounding "
-                                             "allows 1e-8, float's %s)"),
-                                          tr(row.label), damped.c_str(), num(best.worst).c_str(), num(best.floor).c_str());
+  const std::string nearest =
+      format_text(tr("the nearest, %s with %s, is off by %s of a step's motion (double's rounding "
+                     "allows 1e-8, float's %s)"),
+                  tr(row.label), damped.c_str(), num(best.worst).c_str(), num(best.floor).c_str());
   if (!judged) {
     note(section, "not-compared",
-         format_text(tr("%s is compared with springlab's rows once its forces are right (above): over %s, %s"), step_name(step),
-                     where.c_str(), nearest.c_str()));
+         format_text(tr("%s is compared with springlab's rows once its forces are right (above): "
+                        "over %s, %s"),
+                     step_name(step), where.c_str(), nearest.c_str()));
     return found;
   }
   if (step == Step::Euler)
-    if (const std::optional<Explained> why = explain(built_model(rope, kCheckGravity, damping), run, damping, h)) {
-      fail(section, why->key, format_text(tr("%s: %s (over %s)"), step_name(step), tr(why->says), where.c_str()));
+    if (const std::optional<Explained> why =
+            explain(built_model(rope, kCheckGravity, damping), run, damping, h)) {
+      fail(section, why->key,
+           format_text(tr("%s: %s (over %s)"), step_name(step), tr(why->says), where.c_str()));
       return found;
     }
   fail(section, "not-textbook",
-       format_text(tr("%s is none of springlab's rows (%s), with or without its damping: over %s, %s"), step_name(step),
-                   rows_text(rows).c_str(), where.c_str(), nearest.c_str()));
+       format_text(
+           tr("%s is none of springlab's rows (%s), with or without its damping: over %s, %s"),
+           step_name(step), rows_text(rows).c_str(), where.c_str(), nearest.c_str()));
   return found;
 }
 

@@ -21,7 +21,6 @@ namespace springlab::homework {
 
 namespace {
 
-
 double largest(const std::vector<Vec2>& f) {
   double m = 0.0;
   for (const Vec2& v : f) m = std::max(m, v.norm());
@@ -44,7 +43,16 @@ std::string forces_text(const std::vector<Vec2>& f) {
 }
 
 // Spring forces by a rule: Hooke's law on both ends, or one of its usual misreadings.
-enum class Rule { Hooke, Reversed, FirstEndOnly, SecondEndOnly, NoRestLength, Twice, TimesStep, OverStep };
+enum class Rule {
+  Hooke,
+  Reversed,
+  FirstEndOnly,
+  SecondEndOnly,
+  NoRestLength,
+  Twice,
+  TimesStep,
+  OverStep
+};
 
 std::vector<Vec2> spring_forces(const BuiltRope& rope, const RopeState& s, Rule rule) {
   std::vector<Vec2> f(s.size(), Vec2::Zero());
@@ -54,7 +62,8 @@ std::vector<Vec2> spring_forces(const BuiltRope& rope, const RopeState& s, Rule 
     const Vec2 ab = s[spring.m2].x - s[spring.m1].x;
     const double len = ab.norm();
     if (len == 0.0) continue;
-    Vec2 on_a = rule == Rule::NoRestLength ? Vec2(spring.k * ab) : Vec2(spring.k * (len - spring.rest) * ab / len);
+    Vec2 on_a = rule == Rule::NoRestLength ? Vec2(spring.k * ab)
+                                           : Vec2(spring.k * (len - spring.rest) * ab / len);
     if (rule == Rule::Reversed) on_a = -on_a;
     if (rule == Rule::Twice) on_a *= 2.0;
     if (rule == Rule::TimesStep) on_a *= kProbeH;
@@ -73,16 +82,22 @@ struct Reading {
 
 const Reading kReadings[] = {
     {Rule::Hooke, "springs", ""},
-    {Rule::Reversed, "wrong-sign", N_("the spring force has the wrong sign: a stretched spring pushes its masses apart")},
-    {Rule::FirstEndOnly, "one-end", N_("the spring force acts on one end only (m1): m2 must get the opposite force")},
-    {Rule::SecondEndOnly, "one-end", N_("the spring force acts on one end only (m2): m1 must get the opposite force")},
+    {Rule::Reversed, "wrong-sign",
+     N_("the spring force has the wrong sign: a stretched spring pushes its masses apart")},
+    {Rule::FirstEndOnly, "one-end",
+     N_("the spring force acts on one end only (m1): m2 must get the opposite force")},
+    {Rule::SecondEndOnly, "one-end",
+     N_("the spring force acts on one end only (m2): m1 must get the opposite force")},
     {Rule::NoRestLength, "no-rest-length",
-     N_("the rest length is not used: f = k (b - a) pulls as if every spring's rest length were 0")},
+     N_("the rest length is not used: f = k (b - a) pulls as if every spring's rest length were "
+        "0")},
     {Rule::Twice, "spring-twice", N_("the spring force is added twice")},
     {Rule::TimesStep, "euler-a-h2",
-     N_("the velocity changes by a h^2, not a h: the acceleration is multiplied by delta_t twice (v += a delta_t)")},
+     N_("the velocity changes by a h^2, not a h: the acceleration is multiplied by delta_t twice "
+        "(v += a delta_t)")},
     {Rule::OverStep, "euler-no-dt",
-     N_("the velocity changes by a, not a h: the acceleration is not multiplied by delta_t (v += a delta_t)")},
+     N_("the velocity changes by a, not a h: the acceleration is not multiplied by delta_t (v += a "
+        "delta_t)")},
 };
 
 // Returns the rule the code's springs follow (Hooke's law when none of the readings fits).
@@ -105,18 +120,22 @@ Rule probe_springs(const Bench& bench, Step step, const Damping& damping, CheckS
     if (gap < best_gap) best_gap = gap, best = &r;
   }
   const std::vector<Vec2> hooke = spring_forces(rope, s, Rule::Hooke);
-  const std::string measured = format_text(tr("one step from springs stretched and squeezed implies forces %s N; Hooke's law gives %s"),
-                                           forces_text(got).c_str(), forces_text(hooke).c_str());
+  const std::string measured = format_text(
+      tr("one step from springs stretched and squeezed implies forces %s N; Hooke's law gives %s"),
+      forces_text(got).c_str(), forces_text(hooke).c_str());
   const Rule rule = best_gap <= 1e-3 ? best->rule : Rule::Hooke;
   if (best_gap <= 1e-3 && best->rule == Rule::Hooke)
     pass(section, "springs",
-         format_text(tr("springs: Hooke's law on both ends, with the rest length (the forces a step implies match it to %s)"),
+         format_text(tr("springs: Hooke's law on both ends, with the rest length (the forces a "
+                        "step implies match it to %s)"),
                      num(best_gap).c_str()));
   else if (best_gap <= 1e-3)
     fail(section, best->key, std::string(tr(best->says)) + " (" + measured + ")");
   else
-    fail(section, "springs-off", format_text(tr("springs: the forces are not Hooke's law nor one of its usual misreadings: %s"),
-                                             measured.c_str()));
+    fail(section, "springs-off",
+         format_text(
+             tr("springs: the forces are not Hooke's law nor one of its usual misreadings: %s"),
+             measured.c_str()));
 
   // The second step: the forces it implies are those of the first step's end state, by the
   // code's own rule and damping, or, left over, the first step's added to them.
@@ -128,16 +147,20 @@ Rule probe_springs(const Bench& bench, Step step, const Damping& damping, CheckS
     for (int i = 0; i < 3; ++i) due[i] += damped[i], kept[i] += damped[i];
   }
   for (int i = 0; i < 3; ++i) kept[i] += got[i];
-  const std::vector<Vec2> second = implied_forces(step, masses, s1, run[1], kProbeH, d, bench.h_power);
-  if (relative_gap(second, due) <= 1e-3) pass(section, "cleared", tr("forces are cleared between steps"));
+  const std::vector<Vec2> second =
+      implied_forces(step, masses, s1, run[1], kProbeH, d, bench.h_power);
+  if (relative_gap(second, due) <= 1e-3)
+    pass(section, "cleared", tr("forces are cleared between steps"));
   else if (relative_gap(second, kept) <= 1e-3)
     fail(section, "forces-kept",
-         format_text(tr("forces are not cleared between steps: the second step pushed with the first step's forces too (%s N "
+         format_text(tr("forces are not cleared between steps: the second step pushed with the "
+                        "first step's forces too (%s N "
                         "on mass 0 where %s N is due): set forces to 0 after each step"),
                      vec(second[0]).c_str(), vec(due[0]).c_str()));
   else if (rule == Rule::Hooke && best_gap <= 1e-3)
     fail(section, "second-step-off",
-         format_text(tr("the second step's forces are off: %s N on mass 0 where %s N is due (the first step's were right)"),
+         format_text(tr("the second step's forces are off: %s N on mass 0 where %s N is due (the "
+                        "first step's were right)"),
                      vec(second[0]).c_str(), vec(due[0]).c_str()));
   return rule;
 }
@@ -148,24 +171,29 @@ struct GravityReading {
   const char* says;
 };
 
-void probe_gravity(const Bench& bench, Step step, const Damping& damping, Rule rule, bool constraints, CheckSection& section) {
+void probe_gravity(const Bench& bench, Step step, const Damping& damping, Rule rule,
+                   bool constraints, CheckSection& section) {
   const BuiltRope rope = bench.build(three_masses({0}));
   const RopeState s = at_rest(rope);
   const Vec2 g(0.0, -8.0);
   const RopeState after = bench.run(s, step, kProbeH, g, 1).back();
   const std::vector<double> masses(3, kProbeMass);
 
-  const double pin_moved = (after[0].x - s[0].x).norm() + (step == Step::Euler ? after[0].v.norm() : 0.0);
+  const double pin_moved =
+      (after[0].x - s[0].x).norm() + (step == Step::Euler ? after[0].v.norm() : 0.0);
   if (!(pin_moved == 0.0))
     fail(section, "pin-moves",
-         format_text(tr("a pinned mass moves: mass 0 went from %s to %s in one step (pinned masses get no force, no gravity "
+         format_text(tr("a pinned mass moves: mass 0 went from %s to %s in one step (pinned masses "
+                        "get no force, no gravity "
                         "and no motion)"),
                      vec(s[0].x).c_str(), vec(after[0].x).c_str()));
-  else pass(section, "pins", tr("pins: the pinned mass stays where it is"));
+  else
+    pass(section, "pins", tr("pins: the pinned mass stays where it is"));
 
   // Gravity alone: what the step implies less what the code's springs give (nothing, by Hooke's
   // law, at rest length; a constraint holds a horizontal rope to within (g h^2)^2 / L).
-  std::vector<Vec2> got = implied_forces(step, masses, s, after, kProbeH, step == Step::Verlet ? damping.verlet : 0.0, bench.h_power);
+  std::vector<Vec2> got = implied_forces(
+      step, masses, s, after, kProbeH, step == Step::Verlet ? damping.verlet : 0.0, bench.h_power);
   if (!constraints) {
     const std::vector<Vec2> springs = spring_forces(rope, s, rule);
     for (int i = 1; i < 3; ++i) got[i] -= springs[i];
@@ -174,32 +202,45 @@ void probe_gravity(const Bench& bench, Step step, const Damping& damping, Rule r
   const double along = a.dot(g) / g.squaredNorm(), across = (a - along * g).norm() / g.norm();
   const GravityReading readings[] = {
       {1.0, "gravity", ""},
-      {1.0 / kProbeMass, "gravity-no-mass", N_("gravity was added as a force without its mass (the force is m g)")},
-      {2.0, "gravity-twice", N_("gravity is applied twice (added as m g to the forces and as g to the acceleration?)")},
+      {1.0 / kProbeMass, "gravity-no-mass",
+       N_("gravity was added as a force without its mass (the force is m g)")},
+      {2.0, "gravity-twice",
+       N_("gravity is applied twice (added as m g to the forces and as g to the acceleration?)")},
       {0.0, "no-gravity", N_("gravity is left out")},
       {-1.0, "gravity-sign", N_("gravity has the wrong sign")},
-      {kProbeMass, "gravity-times-mass", N_("gravity was multiplied by the mass where it is an acceleration (a = g, not m g)")},
-      {kProbeH, "gravity-times-step", N_("gravity was multiplied by the step (its force is m g, not m g h)")},
-      {1.0 / kProbeH, "verlet-a-h", N_("gravity moves a mass by g h in a step, not g h^2: the acceleration is multiplied by delta_t "
-                                  "once (x_next = x + (1 - d)(x - x_last) + a delta_t^2)")},
+      {kProbeMass, "gravity-times-mass",
+       N_("gravity was multiplied by the mass where it is an acceleration (a = g, not m g)")},
+      {kProbeH, "gravity-times-step",
+       N_("gravity was multiplied by the step (its force is m g, not m g h)")},
+      {1.0 / kProbeH, "verlet-a-h",
+       N_("gravity moves a mass by g h in a step, not g h^2: the acceleration is multiplied by "
+          "delta_t "
+          "once (x_next = x + (1 - d)(x - x_last) + a delta_t^2)")},
   };
   // The nearest reading within 1e-3 of its own size (of h's, for none: 0 and h are 1e-3 apart).
   const GravityReading* found = nullptr;
   double nearest = INFINITY;
   for (const GravityReading& r : readings) {
-    const double size = std::max(std::abs(r.factor), kProbeH), off = std::abs(along - r.factor) / size;
-    if (off <= 1e-3 && across <= 1e-3 * std::max(1.0, std::abs(r.factor)) && off < nearest) nearest = off, found = &r;
+    const double size = std::max(std::abs(r.factor), kProbeH),
+                 off = std::abs(along - r.factor) / size;
+    if (off <= 1e-3 && across <= 1e-3 * std::max(1.0, std::abs(r.factor)) && off < nearest)
+      nearest = off, found = &r;
   }
   if (found && found->factor == 1.0)
-    pass(section, "gravity", format_text(tr("gravity: each free mass falls at g = %s m/s^2 (to %s)"), vec(g).c_str(),
-                                         num(std::abs(along - 1.0) + across).c_str()));
-  else if (found && ((found->factor == kProbeH && rule == Rule::TimesStep) || (found->factor == 1.0 / kProbeH && rule == Rule::OverStep)))
+    pass(section, "gravity",
+         format_text(tr("gravity: each free mass falls at g = %s m/s^2 (to %s)"), vec(g).c_str(),
+                     num(std::abs(along - 1.0) + across).c_str()));
+  else if (found && ((found->factor == kProbeH && rule == Rule::TimesStep) ||
+                     (found->factor == 1.0 / kProbeH && rule == Rule::OverStep)))
     note(section, "gravity", tr("gravity: scaled with the springs' forces (above)"));
   else if (found && !(found->factor == 1.0 / kProbeH && step == Step::Euler))
-    fail(section, found->key, format_text(tr("%s: a free mass falls at %s m/s^2 where g = %s"), tr(found->says), vec(a).c_str(),
-                                          vec(g).c_str()));
+    fail(section, found->key,
+         format_text(tr("%s: a free mass falls at %s m/s^2 where g = %s"), tr(found->says),
+                     vec(a).c_str(), vec(g).c_str()));
   else
-    fail(section, "gravity-off", format_text(tr("gravity: a free mass falls at %s m/s^2 where g = %s"), vec(a).c_str(), vec(g).c_str()));
+    fail(section, "gravity-off",
+         format_text(tr("gravity: a free mass falls at %s m/s^2 where g = %s"), vec(a).c_str(),
+                     vec(g).c_str()));
 }
 
 }  // namespace
@@ -222,11 +263,14 @@ bool probe_moves(const Bench& bench, Step step, CheckSection& section) {
   };
   if (moved(s, kCheckGravity) || moved(moving, Vec2::Zero())) return true;
   fail(section, "not-written",
-       step == Step::Euler
-           ? tr("simulateEuler moves nothing yet: after a step every mass is where it was, under gravity or moving. "
-                "Part 2: each spring's force by Hooke's law, gravity on each free mass, then its new velocity and position")
-           : tr("simulateVerlet moves nothing yet: after a step every mass is where it was, under gravity or moving. Part "
-                "3: the springs' forces and gravity, then x_next = x + (x - x_last) + a h^2, and last_position = x"));
+       step == Step::Euler ? tr("simulateEuler moves nothing yet: after a step every mass is where "
+                                "it was, under gravity or moving. "
+                                "Part 2: each spring's force by Hooke's law, gravity on each free "
+                                "mass, then its new velocity and position")
+                           : tr("simulateVerlet moves nothing yet: after a step every mass is "
+                                "where it was, under gravity or moving. Part "
+                                "3: the springs' forces and gravity, then x_next = x + (x - "
+                                "x_last) + a h^2, and last_position = x"));
   return false;
 }
 
@@ -247,14 +291,18 @@ bool probe_verlet_kind(Bench& bench, CheckSection& section) {
     const double length = 1.25 - 0.25 * at_h;
     if (std::abs(length - 1.0) <= 1e-6)
       pass(section, "constraints",
-           format_text(tr("simulateVerlet holds its springs as constraints (position-based, as CS 184's rope and the "
-                          "exercise's \"solving constraints\" have it): a spring stretched by 25 %% is back at its rest "
+           format_text(tr("simulateVerlet holds its springs as constraints (position-based, as CS "
+                          "184's rope and the "
+                          "exercise's \"solving constraints\" have it): a spring stretched by 25 "
+                          "%% is back at its rest "
                           "length after one step (to %s m), at h and at h/2 alike"),
                        num(std::abs(length - 1.0)).c_str()));
     else
       pass(section, "constraints",
-           format_text(tr("simulateVerlet holds its springs as constraints (position-based, as CS 184's rope and the "
-                          "exercise's \"solving constraints\" have it): a spring stretched by 25 %% is pulled %s %% of the "
+           format_text(tr("simulateVerlet holds its springs as constraints (position-based, as CS "
+                          "184's rope and the "
+                          "exercise's \"solving constraints\" have it): a spring stretched by 25 "
+                          "%% is pulled %s %% of the "
                           "way back in one step, at h and at h/2 alike"),
                        num(100.0 * at_h).c_str()));
     return true;
@@ -262,8 +310,10 @@ bool probe_verlet_kind(Bench& bench, CheckSection& section) {
   if (at_h > 0.0 && std::isfinite(ratio) && std::abs(std::log2(ratio) - 1.0) <= 0.3) {
     bench.h_power = 1;
     fail(section, "verlet-a-h",
-         format_text(tr("the acceleration is multiplied by delta_t once, not by delta_t^2: a spring stretched by 25 %% is "
-                        "pulled %s %% of the way back in a step of h and %s %% at h/2, where a force's pull goes as h^2 "
+         format_text(tr("the acceleration is multiplied by delta_t once, not by delta_t^2: a "
+                        "spring stretched by 25 %% is "
+                        "pulled %s %% of the way back in a step of h and %s %% at h/2, where a "
+                        "force's pull goes as h^2 "
                         "(x_next = x + (1 - d)(x - x_last) + a delta_t^2)"),
                      num(100.0 * at_h).c_str(), num(100.0 * at_half).c_str()));
   }

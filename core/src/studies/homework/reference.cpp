@@ -13,7 +13,9 @@ namespace springlab::homework {
 
 namespace {
 
-bool listed(const std::vector<int>& list, int i) { return std::find(list.begin(), list.end(), i) != list.end(); }
+bool listed(const std::vector<int>& list, int i) {
+  return std::find(list.begin(), list.end(), i) != list.end();
+}
 
 // springlab's drag is one force coefficient for every particle: a drag rate takes the mass of the
 // rope's first particle (the exercise's ropes have one node mass).
@@ -28,8 +30,10 @@ void set_forces(Model& model, const Vec2& gravity, const Damping& damping) {
 Model rope_model(const RopeRequest& request, const Vec2& gravity, const Damping& damping) {
   Model model;
   const int material = add_material(model, {request.k, damping.along});
-  for (int i = 0; i < request.nodes; ++i) add_particle(model, request.node_mass, listed(request.pinned, i));
-  const double spacing = request.nodes > 1 ? (request.end - request.start).norm() / (request.nodes - 1) : 0.0;
+  for (int i = 0; i < request.nodes; ++i)
+    add_particle(model, request.node_mass, listed(request.pinned, i));
+  const double spacing =
+      request.nodes > 1 ? (request.end - request.start).norm() / (request.nodes - 1) : 0.0;
   for (int i = 0; i + 1 < request.nodes; ++i) add_spring(model, i, i + 1, spacing, material);
   finalize(model);
   set_forces(model, gravity, damping);
@@ -57,14 +61,16 @@ BuiltRope exercise_rope(const RopeRequest& request) {
   const int n = request.nodes;
   for (int i = 0; i < n; ++i) {
     BuiltMass m;
-    m.start = request.start + (request.end - request.start) * (n > 1 ? static_cast<double>(i) / (n - 1) : 0.0);
+    m.start = request.start +
+              (request.end - request.start) * (n > 1 ? static_cast<double>(i) / (n - 1) : 0.0);
     m.state.x = m.state.x_last = m.start;
     m.mass = request.node_mass;
     m.pinned = listed(request.pinned, i);
     rope.masses.push_back(m);
   }
   for (int i = 0; i + 1 < n; ++i)
-    rope.springs.push_back({i, i + 1, request.k, (rope.masses[i + 1].start - rope.masses[i].start).norm()});
+    rope.springs.push_back(
+        {i, i + 1, request.k, (rope.masses[i + 1].start - rope.masses[i].start).norm()});
   return rope;
 }
 
@@ -134,7 +140,8 @@ std::pair<double, double> response(Method method, double h) {
 
 }  // namespace
 
-RopeState reference_step(Method method, const Model& model, const Damping& damping, const RopeState& state, double h) {
+RopeState reference_step(Method method, const Model& model, const Damping& damping,
+                         const RopeState& state, double h) {
   const int n = static_cast<int>(state.size());
   State in, out;
   in.resize(n);
@@ -150,7 +157,8 @@ RopeState reference_step(Method method, const Model& model, const Damping& dampi
     in.v.row(i).head<2>() = v.transpose();
   }
   if (history) {
-    for (int i = 0; i < n; ++i) ws.x_prev.row(i).head<2>() = (model.pinned(i) ? state[i].x : state[i].x_last).transpose();
+    for (int i = 0; i < n; ++i)
+      ws.x_prev.row(i).head<2>() = (model.pinned(i) ? state[i].x : state[i].x_last).transpose();
     accelerations(model, in.x, in.v, ws.a_now, ws);
     ws.verlet_ready = true;
     ws.verlet_h = h;
@@ -167,7 +175,8 @@ RopeState reference_step(Method method, const Model& model, const Damping& dampi
   // x + (1 - d)(x - x_last) + h^2 a less d h^2 a.
   if (history && damping.verlet_whole && damping.verlet != 0.0)
     for (int i = 0; i < n; ++i)
-      if (!model.pinned(i)) next[i].x -= damping.verlet * h * h * a_start.row(i).head<2>().transpose();
+      if (!model.pinned(i))
+        next[i].x -= damping.verlet * h * h * a_start.row(i).head<2>().transpose();
   // Damping along the relative velocity, a force at the step's start state.
   if (!history && damping.relative != 0.0) {
     const std::vector<Vec2> f = relative_damping_forces(model, state, damping.relative);
@@ -192,7 +201,8 @@ State reference_step(Method method, const Model& model, const State& state, doub
 std::vector<Method> candidate_rows(bool history) {
   std::vector<Method> rows;
   for (const MethodInfo& row : methods()) {
-    const bool fixed_explicit = (row.family == MethodFamily::RungeKutta || row.family == MethodFamily::Partitioned);
+    const bool fixed_explicit =
+        (row.family == MethodFamily::RungeKutta || row.family == MethodFamily::Partitioned);
     if (fixed_explicit && row.history == history) rows.push_back(row.id);
   }
   return rows;
@@ -207,12 +217,14 @@ double ratio(double a, double b) {
 
 }  // namespace
 
-double step_deviation(const RopeState& before, const RopeState& after, const RopeState& reference, bool velocities) {
+double step_deviation(const RopeState& before, const RopeState& after, const RopeState& reference,
+                      bool velocities) {
   double moved = 0.0, off = 0.0, dv = 0.0, off_v = 0.0;
   for (size_t i = 0; i < after.size(); ++i) {
     moved = std::max(moved, (after[i].x - before[i].x).norm());
     off = std::max(off, (after[i].x - reference[i].x).norm());
-    if (!velocities) off = std::max(off, (after[i].x_last - reference[i].x_last).norm());  // Verlet's bookkeeping
+    if (!velocities)
+      off = std::max(off, (after[i].x_last - reference[i].x_last).norm());  // Verlet's bookkeeping
     dv = std::max(dv, (after[i].v - before[i].v).norm());
     off_v = std::max(off_v, (after[i].v - reference[i].v).norm());
   }
@@ -221,15 +233,16 @@ double step_deviation(const RopeState& before, const RopeState& after, const Rop
   return velocities ? std::max(d, ratio(off_v, dv)) : d;
 }
 
-double float_floor(const Model& model, const Damping& damping, const RopeState& before, const RopeState& after,
-                   double h, bool velocities, bool stored_in_float) {
+double float_floor(const Model& model, const Damping& damping, const RopeState& before,
+                   const RopeState& after, double h, bool velocities, bool stored_in_float) {
   const int n = static_cast<int>(before.size());
   // Each mass's force scale: what float's rounding of the terms it sums can be off by.
   std::vector<double> scale(n, 0.0);
   for (int k = 0; k < model.spring_count(); ++k) {
     const int a = model.spring_a[k], b = model.spring_b[k];
     const double length = (before[b].x - before[a].x).norm();
-    const double damping_force = (damping.along + std::abs(damping.relative)) * (before[b].v - before[a].v).norm();
+    const double damping_force =
+        (damping.along + std::abs(damping.relative)) * (before[b].v - before[a].v).norm();
     scale[a] += model.ks(k) * length + damping_force;
     scale[b] += model.ks(k) * length + damping_force;
   }
@@ -240,25 +253,34 @@ double float_floor(const Model& model, const Damping& damping, const RopeState& 
     moved = std::max(moved, (after[i].x - before[i].x).norm());
     dv = std::max(dv, (after[i].v - before[i].v).norm());
     if (model.pinned(i)) continue;
-    const double force = scale[i] + model.mass[i] * g + std::abs(damping.drag_on(model.mass[i])) * before[i].v.norm();
+    const double force = scale[i] + model.mass[i] * g +
+                         std::abs(damping.drag_on(model.mass[i])) * before[i].v.norm();
     const double da = kRoundings * force * model.inv_mass[i];
     // Verlet's (1 - d)(x - x_last) is rounded too, where the factor is a float.
     // Positions and velocities kept in float (NumPy's float32) are rounded once more each step.
     const double kept_x = stored_in_float ? 2.0 * kFloatRounding * after[i].x.norm() : 0.0;
     const double kept_v = stored_in_float ? 2.0 * kFloatRounding * after[i].v.norm() : 0.0;
-    off_x = std::max(off_x, h * h * da + kept_x + (velocities ? 0.0 : kRoundings * (before[i].x - before[i].x_last).norm()));
+    off_x = std::max(off_x,
+                     h * h * da + kept_x +
+                         (velocities ? 0.0 : kRoundings * (before[i].x - before[i].x_last).norm()));
     off_v = std::max(off_v, h * da + kept_v);
   }
   return velocities ? std::max(ratio(off_x, moved), ratio(off_v, dv)) : ratio(off_x, moved);
 }
 
-std::vector<Vec2> implied_forces(Step step, const std::vector<double>& masses, const RopeState& before,
-                                 const RopeState& after, double h, double verlet_damping, int h_power) {
+std::vector<Vec2> implied_forces(Step step, const std::vector<double>& masses,
+                                 const RopeState& before, const RopeState& after, double h,
+                                 double verlet_damping, int h_power) {
   std::vector<Vec2> f(before.size());
   const double scale = std::pow(h, h_power);
   for (size_t i = 0; i < f.size(); ++i) {
-    if (step == Step::Euler) f[i] = masses[i] * (after[i].v - before[i].v) / h;
-    else f[i] = masses[i] * (after[i].x - before[i].x - (1.0 - verlet_damping) * (before[i].x - before[i].x_last)) / scale;
+    if (step == Step::Euler)
+      f[i] = masses[i] * (after[i].v - before[i].v) / h;
+    else
+      f[i] =
+          masses[i] *
+          (after[i].x - before[i].x - (1.0 - verlet_damping) * (before[i].x - before[i].x_last)) /
+          scale;
   }
   return f;
 }

@@ -8,17 +8,24 @@
 
 namespace springlab::homework {
 
-const char* step_name(Step step) { return step == Step::Euler ? "simulateEuler" : "simulateVerlet"; }
+const char* step_name(Step step) {
+  return step == Step::Euler ? "simulateEuler" : "simulateVerlet";
+}
 
-std::string num(double value) { return format_text("%.4g", value); }
+std::string num(double value) {
+  return format_text("%.4g", value);
+}
 
-std::string vec(const Vec2& v) { return "(" + num(v.x()) + ", " + num(v.y()) + ")"; }
+std::string vec(const Vec2& v) {
+  return "(" + num(v.x()) + ", " + num(v.y()) + ")";
+}
 
 std::pair<std::string, std::string> apart(const Vec2& a, const Vec2& b) {
   // 4 significant digits, or as many more as it takes for the two to read differently.
   for (int digits = 4; digits <= 17; ++digits) {
     auto text = [digits](const Vec2& v) {
-      return "(" + format_text("%.*g", digits, v.x()) + ", " + format_text("%.*g", digits, v.y()) + ")";
+      return "(" + format_text("%.*g", digits, v.x()) + ", " + format_text("%.*g", digits, v.y()) +
+             ")";
     };
     if (text(a) != text(b) || digits == 17) return {text(a), text(b)};
   }
@@ -33,7 +40,8 @@ std::string step_text(double h) {
 }
 
 bool any_failed(const CheckSection& s) {
-  return std::any_of(s.lines.begin(), s.lines.end(), [](const CheckLine& l) { return l.kind == CheckLine::Fail; });
+  return std::any_of(s.lines.begin(), s.lines.end(),
+                     [](const CheckLine& l) { return l.kind == CheckLine::Fail; });
 }
 
 namespace {
@@ -41,7 +49,8 @@ namespace {
 int count(const Report& report, CheckLine::Kind kind) {
   int n = 0;
   for (const CheckSection& s : report.sections)
-    n += static_cast<int>(std::count_if(s.lines.begin(), s.lines.end(), [kind](const CheckLine& l) { return l.kind == kind; }));
+    n += static_cast<int>(std::count_if(s.lines.begin(), s.lines.end(),
+                                        [kind](const CheckLine& l) { return l.kind == kind; }));
   return n;
 }
 
@@ -67,8 +76,12 @@ nlohmann::json step_json(const Identified& found) {
 
 }  // namespace
 
-int Report::passed() const { return count(*this, CheckLine::Pass); }
-int Report::failed() const { return count(*this, CheckLine::Fail); }
+int Report::passed() const {
+  return count(*this, CheckLine::Pass);
+}
+int Report::failed() const {
+  return count(*this, CheckLine::Fail);
+}
 
 std::vector<std::string> Report::failed_keys() const {
   std::vector<std::string> keys;
@@ -83,7 +96,10 @@ std::string format_report(const Report& report) {
   for (const CheckSection& s : report.sections) {
     out += s.title + "\n";
     for (const CheckLine& l : s.lines)
-      out += (l.kind == CheckLine::Pass ? "  ok    " : l.kind == CheckLine::Fail ? "  FAIL  " : "        ") + l.text + "\n";
+      out += (l.kind == CheckLine::Pass   ? "  ok    "
+              : l.kind == CheckLine::Fail ? "  FAIL  "
+                                          : "        ") +
+             l.text + "\n";
   }
   return out + format_text(tr("%d checks passed, %d failed.\n"), report.passed(), report.failed());
 }
@@ -94,11 +110,13 @@ std::string report_json(const Report& report) {
   j["failed"] = report.failed();
   j["springlab_rope"] = report.springlab_rope;
   j["constructor_wrong"] = report.constructor_wrong;
-  j["steps"] = {{step_name(Step::Euler), step_json(report.euler)}, {step_name(Step::Verlet), step_json(report.verlet)}};
+  j["steps"] = {{step_name(Step::Euler), step_json(report.euler)},
+                {step_name(Step::Verlet), step_json(report.verlet)}};
   j["sections"] = nlohmann::json::array();
   for (const CheckSection& s : report.sections) {
     nlohmann::json lines = nlohmann::json::array();
-    for (const CheckLine& l : s.lines) lines.push_back({{"kind", kind_word(l.kind)}, {"key", l.key}, {"text", l.text}});
+    for (const CheckLine& l : s.lines)
+      lines.push_back({{"kind", kind_word(l.kind)}, {"key", l.key}, {"text", l.text}});
     j["sections"].push_back({{"title", s.title}, {"lines", lines}});
   }
   // Invalid UTF-8 in a student's printed output (a crash's last lines) is replaced, never thrown.

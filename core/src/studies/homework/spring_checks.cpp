@@ -40,7 +40,8 @@ struct Mode {
 // The exact y(t) of y'' = -kappa (y - y_eq) - gamma y', let go at rest from y_eq + A.
 double exact_y(const Mode& m, double t) {
   const double wd = std::sqrt(kKappa - 0.25 * m.gamma * m.gamma);
-  return kYeq + kA * std::exp(-0.5 * m.gamma * t) * (std::cos(wd * t) + 0.5 * m.gamma / wd * std::sin(wd * t));
+  return kYeq + kA * std::exp(-0.5 * m.gamma * t) *
+                    (std::cos(wd * t) + 0.5 * m.gamma / wd * std::sin(wd * t));
 }
 
 std::complex<double> largest_root(double trace, double det) {
@@ -111,7 +112,8 @@ void check_order(const SwingRunner& swing, const Mode& mode, CheckSection& secti
   const int expected = method_info(mode.row).order;
   if (mode.row == Method::Verlet && mode.d != 0.0) {
     note(section, "order",
-         tr("order: not measured: a damping factor d a step has no limit as h -> 0 (at a fixed d, halving h doubles the "
+         tr("order: not measured: a damping factor d a step has no limit as h -> 0 (at a fixed d, "
+            "halving h doubles the "
             "damping a second)"));
     return;
   }
@@ -124,20 +126,26 @@ void check_order(const SwingRunner& swing, const Mode& mode, CheckSection& secti
     list += (list.empty() ? "" : ", ") + num(errors.back());
   }
   const double slope = std::log2(errors[errors.size() - 2] / errors.back());
-  const std::string text = format_text(tr("order %s measured (%s: %d): errors at t = 1 s against the exact swing %s m at "
-                                          "h = 1/128 ... 1/1024 s"),
-                                       num(slope).c_str(), tr(method_info(mode.row).label), expected, list.c_str());
-  if (std::isfinite(slope) && std::abs(slope - expected) <= 0.15) pass(section, "order", text);
-  else fail(section, "order", text);
+  const std::string text = format_text(
+      tr("order %s measured (%s: %d): errors at t = 1 s against the exact swing %s m at "
+         "h = 1/128 ... 1/1024 s"),
+      num(slope).c_str(), tr(method_info(mode.row).label), expected, list.c_str());
+  if (std::isfinite(slope) && std::abs(slope - expected) <= 0.15)
+    pass(section, "order", text);
+  else
+    fail(section, "order", text);
 }
 
 void check_stability(const SwingRunner& swing, const Mode& mode, CheckSection& section) {
-  // Verlet's factor on the whole displacement scales a h^2 by (1 - d): its limit is 1 / sqrt(1 - d) wider.
-  const double limit = mode_limit(mode.row, mode.gamma, kKappa, mode.d) / (mode.verlet_whole ? std::sqrt(1.0 - mode.d) : 1.0);
+  // Verlet's factor on the whole displacement scales a h^2 by (1 - d): its limit is 1 / sqrt(1 - d)
+  // wider.
+  const double limit = mode_limit(mode.row, mode.gamma, kKappa, mode.d) /
+                       (mode.verlet_whole ? std::sqrt(1.0 - mode.d) : 1.0);
   const char* label = tr(method_info(mode.row).label);
   if (limit == 0.0) {
     note(section, "stability",
-         format_text(tr("stability: %s is stable at no step on an undamped spring (its limit is 0): the energy below grows "
+         format_text(tr("stability: %s is stable at no step on an undamped spring (its limit is "
+                        "0): the energy below grows "
                         "at every step"),
                      label));
     return;
@@ -147,10 +155,12 @@ void check_stability(const SwingRunner& swing, const Mode& mode, CheckSection& s
   amplification(mode, over, trace, det);
   const double growth = std::abs(largest_root(trace, det));
   const double needed = std::log(1e3) / std::log(growth);  // steps for the swing to grow 1000 times
-  const std::string stated = format_text(tr("springlab's limit for %s here: h = %s s"), label, num(limit).c_str());
+  const std::string stated =
+      format_text(tr("springlab's limit for %s here: h = %s s"), label, num(limit).c_str());
   if (!(needed <= 20000)) {
     note(section, "stability",
-         format_text(tr("stability: %s; at 1.1 of it the swing grows only x%s a step, too slowly to see in 20000 steps (the "
+         format_text(tr("stability: %s; at 1.1 of it the swing grows only x%s a step, too slowly "
+                        "to see in 20000 steps (the "
                         "energy's rate below measures it)"),
                      stated.c_str(), precise(growth).c_str()));
     return;
@@ -158,17 +168,23 @@ void check_stability(const SwingRunner& swing, const Mode& mode, CheckSection& s
   const int steps = std::max(400, static_cast<int>(std::ceil(needed)));
   auto widest = [&](double h) {
     double w = 0.0;
-    for (double y : swing(h, steps, exact_y(mode, -h)).y) w = std::isfinite(y) ? std::max(w, std::abs(y - kYeq)) : INFINITY;
+    for (double y : swing(h, steps, exact_y(mode, -h)).y)
+      w = std::isfinite(y) ? std::max(w, std::abs(y - kYeq)) : INFINITY;
     return w;
   };
   const double calm = widest(under), wild = widest(over);
   const std::string text =
-      format_text(tr("stability: %s; over %d steps the swing of %s m reaches %s m at h = %s (0.9 of it) and %s m at h = %s "
+      format_text(tr("stability: %s; over %d steps the swing of %s m reaches %s m at h = %s (0.9 "
+                     "of it) and %s m at h = %s "
                      "(1.1 of it)"),
-                  stated.c_str(), steps, num(kA).c_str(), num(calm).c_str(), step_text(under).c_str(), num(wild).c_str(),
-                  step_text(over).c_str());
-  if (calm <= 10.0 * kA && wild >= 100.0 * kA) pass(section, "stability", text);
-  else fail(section, "stability", text + (calm > 10.0 * kA ? tr(" (unstable below the limit)") : tr(" (stable past the limit)")));
+                  stated.c_str(), steps, num(kA).c_str(), num(calm).c_str(),
+                  step_text(under).c_str(), num(wild).c_str(), step_text(over).c_str());
+  if (calm <= 10.0 * kA && wild >= 100.0 * kA)
+    pass(section, "stability", text);
+  else
+    fail(section, "stability",
+         text + (calm > 10.0 * kA ? tr(" (unstable below the limit)")
+                                  : tr(" (stable past the limit)")));
 }
 
 void check_energy(const SwingRunner& swing, const Mode& mode, CheckSection& section) {
@@ -178,7 +194,8 @@ void check_energy(const SwingRunner& swing, const Mode& mode, CheckSection& sect
   std::vector<double> energy;
   for (int n = 1; n < steps; ++n) {
     const double v = s.has_velocity ? s.v[n] : (s.y[n + 1] - s.y[n - 1]) / (2.0 * h);
-    energy.push_back(0.5 * kMass * v * v + 0.5 * kKappa * kMass * (s.y[n] - kYeq) * (s.y[n] - kYeq));
+    energy.push_back(0.5 * kMass * v * v +
+                     0.5 * kKappa * kMass * (s.y[n] - kYeq) * (s.y[n] - kYeq));
   }
   // Means over a swing at each end, so that the energy's swing within a period cancels.
   const int period = static_cast<int>(std::lround(kTwoPi / (kW * h)));
@@ -189,48 +206,60 @@ void check_energy(const SwingRunner& swing, const Mode& mode, CheckSection& sect
   double trace, det;
   amplification(mode, h, trace, det);
   const double log_gap = std::abs(std::log(measured) - std::log(det));
-  const char* says = mode.row == Method::Euler                            ? "1 + (w h)^2 - (c/m) h"
+  const char* says = mode.row == Method::Euler                             ? "1 + (w h)^2 - (c/m) h"
                      : mode.row == Method::Verlet && !mode.velocity_verlet ? "1 - d"
                      : mode.row == Method::SymplecticEuler                 ? "1 - (c/m) h"
-                                                                           : tr("|lambda|^2 of its step here");
+                                                           : tr("|lambda|^2 of its step here");
   // (A determinant within rounding of 1, as a symplectic row's measured from its step, holds.)
   const bool holds = std::abs(det - 1.0) <= 1e-9, grows = !holds && det > 1.0;
-  const char* verdict = holds ? N_("energy holds: x%s a step at h = 1/256 s (%s predicts %s = %s), x%s over 16 s")
-                        : grows ? N_("energy grows: x%s a step at h = 1/256 s (%s predicts %s = %s), x%s over 16 s")
-                                : N_("energy falls: x%s a step at h = 1/256 s (%s predicts %s = %s), x%s over 16 s");
-  std::string text = format_text(tr(verdict), precise(measured).c_str(), tr(method_info(mode.row).label), says,
-                                 precise(det).c_str(), num(last / first).c_str());
+  const char* verdict =
+      holds   ? N_("energy holds: x%s a step at h = 1/256 s (%s predicts %s = %s), x%s over 16 s")
+      : grows ? N_("energy grows: x%s a step at h = 1/256 s (%s predicts %s = %s), x%s over 16 s")
+              : N_("energy falls: x%s a step at h = 1/256 s (%s predicts %s = %s), x%s over 16 s");
+  std::string text =
+      format_text(tr(verdict), precise(measured).c_str(), tr(method_info(mode.row).label), says,
+                  precise(det).c_str(), num(last / first).c_str());
   if (mode.row == Method::Verlet && mode.d != 0.0)
-    text += format_text(tr("; d is a step's loss, so it takes %s %% of the energy a second at this h and about twice that at h/2"),
+    text += format_text(tr("; d is a step's loss, so it takes %s %% of the energy a second at this "
+                           "h and about twice that at h/2"),
                         num(100.0 * (1.0 - std::pow(1.0 - mode.d, 1.0 / h))).c_str());
-  const bool as_predicted = std::isfinite(log_gap) && log_gap <= 2e-6 + 0.02 * std::abs(std::log(det));
-  if (!as_predicted) fail(section, "energy", text);
+  const bool as_predicted =
+      std::isfinite(log_gap) && log_gap <= 2e-6 + 0.02 * std::abs(std::log(det));
+  if (!as_predicted)
+    fail(section, "energy", text);
   else if (grows && mode.damps)
     // The measurement agrees with the method, but a step the exercise asks to damp must not gain:
     // here the method's own gain outruns the damping (explicit Euler), which is said, not passed.
     note(section, "energy",
-         text + tr(": the method gains energy faster than the damping takes it at this step (explicit Euler's own "
+         text + tr(": the method gains energy faster than the damping takes it at this step "
+                   "(explicit Euler's own "
                    "instability, as predicted; not a mistake in the code)"));
-  else pass(section, "energy", text);
+  else
+    pass(section, "energy", text);
 }
 
 }  // namespace
 
 void check_on_a_spring(const SwingRunner& run, const Identified& found, CheckSection& section) {
   if (found.method.empty()) {
-    note(section, "not-measured", tr("order, stability and energy: not measured, since the step is none of the textbook methods"));
+    note(section, "not-measured",
+         tr("order, stability and energy: not measured, since the step is none of the textbook "
+            "methods"));
     return;
   }
-  if (found.damping.drag < 0.0 || found.damping.along < 0.0 || found.damping.relative < 0.0 || found.damping.verlet < 0.0) {
+  if (found.damping.drag < 0.0 || found.damping.along < 0.0 || found.damping.relative < 0.0 ||
+      found.damping.verlet < 0.0) {
     note(section, "not-measured",
-         tr("order, stability and energy: not measured while the damping has the wrong sign (above): it feeds the "
+         tr("order, stability and energy: not measured while the damping has the wrong sign "
+            "(above): it feeds the "
             "oscillation instead of taking energy out"));
     return;
   }
   Mode mode;
   mode.row = *find_method(found.method);
   // On the hanging spring every damping form acts along the spring: one rate gamma = (c + k_d) / m.
-  mode.gamma = (found.damping.drag_on(kMass) + found.damping.along + found.damping.relative) / kMass;
+  mode.gamma =
+      (found.damping.drag_on(kMass) + found.damping.along + found.damping.relative) / kMass;
   mode.d = found.damping.verlet;
   mode.verlet_whole = found.damping.verlet_whole;
   mode.velocity_verlet = found.velocity_verlet;

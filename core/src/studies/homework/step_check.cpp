@@ -20,7 +20,8 @@ State rope_at_rest(const RopeRequest& r) {
   s.x.setZero();
   s.v.setZero();
   for (int i = 0; i < r.nodes; ++i)
-    s.x.row(i).head<2>() = (r.start + (r.end - r.start) * (static_cast<double>(i) / (r.nodes - 1))).transpose();
+    s.x.row(i).head<2>() =
+        (r.start + (r.end - r.start) * (static_cast<double>(i) / (r.nodes - 1))).transpose();
   return s;
 }
 
@@ -63,7 +64,8 @@ double fit_drag(const Model& undamped, const std::vector<State>& run, double h) 
   return std::abs(c) > 1e-9 ? c : 0.0;
 }
 
-Identified identify_step(const OwnStep& step, const std::string& name, const bool* single_precision, CheckSection& section) {
+Identified identify_step(const OwnStep& step, const std::string& name, const bool* single_precision,
+                         CheckSection& section) {
   const RopeRequest rope = checked_rope();
   const Model model = rope_model(rope, kCheckGravity);
   const double h = kCheckStep;
@@ -74,15 +76,19 @@ Identified identify_step(const OwnStep& step, const std::string& name, const boo
 
   double pin = 0.0;
   for (const State& s : run) pin = std::max(pin, (s.x.row(0) - run[0].x.row(0)).norm());
-  if (pin == 0.0) pass(section, "pins", tr("pins: the pinned particle stays where it is (force(x, v) gives it no acceleration)"));
+  if (pin == 0.0)
+    pass(section, "pins",
+         tr("pins: the pinned particle stays where it is (force(x, v) gives it no acceleration)"));
   else
     fail(section, "pin-moves",
-         format_text(tr("a pinned particle moves, by %s m over %d steps: take every acceleration from force(x, v), which "
+         format_text(tr("a pinned particle moves, by %s m over %d steps: take every acceleration "
+                        "from force(x, v), which "
                         "gives a pinned particle none"),
                      num(pin).c_str(), kCheckSteps));
 
   std::vector<Method> rows = candidate_rows(false);
-  for (Method verlet : candidate_rows(true)) rows.push_back(verlet);  // from (x, v): velocity Verlet
+  for (Method verlet : candidate_rows(true))
+    rows.push_back(verlet);  // from (x, v): velocity Verlet
   std::vector<Damping> variants{Damping{}};
   if (const double c = fit_drag(model, run, h); c != 0.0) {
     Damping rate;
@@ -121,28 +127,36 @@ Identified identify_step(const OwnStep& step, const std::string& name, const boo
     }
   const std::optional<Method> found = find_method(best.method);
   const MethodInfo& row = method_info(found ? *found : Method::Euler);
-  const std::string where = format_text(tr("%d steps of a %d-particle rope falling from rest at h = %s"), kCheckSteps,
-                                        rope.nodes, step_text(h).c_str());
-  const std::string form = best.velocity_verlet ? tr(" in velocity form (x + h v + h^2/2 a, v + h/2 (a + a1))") : "";
+  const std::string where =
+      format_text(tr("%d steps of a %d-particle rope falling from rest at h = %s"), kCheckSteps,
+                  rope.nodes, step_text(h).c_str());
+  const std::string form =
+      best.velocity_verlet ? tr(" in velocity form (x + h v + h^2/2 a, v + h/2 (a + a1))") : "";
   const std::string damped = damping_text(best.damping, Step::Euler);
   if (best_within) {
-    const std::string how = best.in_float
-                                ? format_text(tr("%s of the step's motion: float's rounding (the step returns float32 arrays, "
-                                                 "which hold their numbers to 2^-24: up to %s here)"),
-                                              num(best.deviation).c_str(), num(best.float_floor).c_str())
-                                : format_text(tr("%s of the step's motion (double's rounding)"), num(best.deviation).c_str());
+    const std::string how =
+        best.in_float
+            ? format_text(
+                  tr("%s of the step's motion: float's rounding (the step returns float32 arrays, "
+                     "which hold their numbers to 2^-24: up to %s here)"),
+                  num(best.deviation).c_str(), num(best.float_floor).c_str())
+            : format_text(tr("%s of the step's motion (double's rounding)"),
+                          num(best.deviation).c_str());
     pass(section, "method",
-         format_text(tr("%s is %s (springlab's %s)%s, with %s: each of %s matches it to %s"), name.c_str(), tr(row.label),
-                     row.name, form.c_str(), damped.c_str(), where.c_str(), how.c_str()));
+         format_text(tr("%s is %s (springlab's %s)%s, with %s: each of %s matches it to %s"),
+                     name.c_str(), tr(row.label), row.name, form.c_str(), damped.c_str(),
+                     where.c_str(), how.c_str()));
     if (best.damping.drag < 0.0)
       fail(section, "damping-sign",
-           format_text(tr("the drag has the wrong sign: c = %s 1/s pushes each particle along its velocity (a = force(x, v) "
+           format_text(tr("the drag has the wrong sign: c = %s 1/s pushes each particle along its "
+                          "velocity (a = force(x, v) "
                           "- c v with c > 0 opposes it)"),
                        num(best.damping.drag).c_str()));
     return best;
   }
   fail(section, "not-textbook",
-       format_text(tr("%s is none of springlab's explicit fixed-step rows: over %s, the nearest, %s, is off by %s of a step's "
+       format_text(tr("%s is none of springlab's explicit fixed-step rows: over %s, the nearest, "
+                      "%s, is off by %s of a step's "
                       "motion (double's rounding allows 1e-8)"),
                    name.c_str(), where.c_str(), tr(row.label), num(best.deviation).c_str()));
   best.method.clear();
@@ -176,7 +190,8 @@ Report check_step(const OwnStep& step, const std::string& name, const bool* sing
   CheckSection& section = report.sections.back();
   try {
     report.euler = identify_step(step, name, single_precision, section);
-    check_on_a_spring([&](double h, int steps, double) { return own_swing(step, h, steps); }, report.euler, section);
+    check_on_a_spring([&](double h, int steps, double) { return own_swing(step, h, steps); },
+                      report.euler, section);
   } catch (const CodeFailure& e) {
     fail(section, "code-failed", e.what());
   }
