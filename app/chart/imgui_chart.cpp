@@ -194,112 +194,135 @@ void draw_axes(ImDrawList* list, const Chart& chart, const Plot& p, const std::v
   list->PopClipRect();
 }
 
-// The series within the plot: lines, marks on their points or along them, crosses, an escaping
-// line's edge marker; then the end labels.
-void draw_lines(ImDrawList* list, const Chart& chart, const Plot& p) {
-  const float line_h = p.line_h, top = p.top, left = p.left, right = p.right, bottom = p.bottom;
-  const double ylo = p.ylo, yhi = p.yhi;
-  const Mapping mx{p.xlo, p.xhi, chart.x.log, left, right}, my{ylo, yhi, chart.y.log, bottom, top};
-  list->PushClipRect(ImVec2(left, top), ImVec2(right, bottom), true);
-  struct EndLabel {
-    ImVec2 at;
-    ImU32 colour;
-    const std::string* text;
-  };
-  std::vector<EndLabel> ends;
-  for (std::size_t index = 0; index < chart.series.size(); ++index) {
-    const Series& s = chart.series[index];
-    const ImU32 c = color(s.color);
-    std::vector<ImVec2> points;
-    std::vector<std::vector<Pixel>> drawn;  // (for the marks along it)
-    const auto flush = [&] {
-      if (!s.markers && s.mark != draw::Mark::None && points.size() >= 2) {
-        drawn.emplace_back();
-        for (const ImVec2& q : points) drawn.back().push_back({q.x, q.y});
-      }
-      if (points.size() >= 2) {
-        if (s.dashed) {
-          for (std::size_t k = 0; k + 1 < points.size(); k += 2)
-            list->AddLine(points[k], points[k + 1], c, s.width);
-        } else {
-          list->AddPolyline(points.data(), static_cast<int>(points.size()), c, ImDrawFlags_None,
-                            s.width);
-        }
-      }
-      points.clear();
-    };
-    for (std::size_t k = 0; k < s.x.size(); ++k) {
-      const double x = s.x[k], y = s.y[k];
-      const bool ok = std::isfinite(x) && std::isfinite(y) && (!chart.x.log || x > 0) &&
-                      (!chart.y.log || y > 0);
-      if (s.escapes && (!ok || y > yhi || y < ylo)) {
-        // Leaving the plot: the line to its edge, a marker there, and nothing after.
-        if (!points.empty() && ok) {
-          const double edge = y > yhi ? yhi : ylo;
-          const double f = (edge - s.y[k - 1]) / (y - s.y[k - 1]);
-          const ImVec2 at(mx(s.x[k - 1] + f * (x - s.x[k - 1])), my(edge));
-          points.push_back(at);
-          const float r = 5.0f + s.width, d = y > yhi ? 1.0f : -1.0f;
-          list->AddTriangleFilled(ImVec2(at.x - r, at.y + d * 1.7f * r),
-                                  ImVec2(at.x + r, at.y + d * 1.7f * r), at, c);
-        }
-        break;
-      }
-      if (!ok) {
-        flush();
-        continue;
-      }
-      const ImVec2 p(mx(x), my(y));
-      const bool crossed = k < s.crossed.size() && s.crossed[k];
-      if (crossed) {
-        flush();
-        const float r = 4.0f + s.width;
-        list->AddLine(ImVec2(p.x - r, p.y - r), ImVec2(p.x + r, p.y + r), c, 2.0f);
-        list->AddLine(ImVec2(p.x - r, p.y + r), ImVec2(p.x + r, p.y - r), c, 2.0f);
-        continue;
-      }
-      points.push_back(p);
-      if (s.markers) {
-        if (s.mark == draw::Mark::None)
-          list->AddCircleFilled(p, 2.0f + s.width, c);
-        else
-          draw_mark(list, s.mark, p, 3.0f + s.width, c);
+// A line's end label: where its line ends, its colour, its text (set in the margin by
+// draw_chart_end_labels).
+struct ChartEndLabel {
+  ImVec2 at;
+  ImU32 colour;
+  const std::string* text;
+};
+
+// One series within the plot: its line (broken where a point is not finite or not on a log
+// axis), marks on its points or along it, crosses on its crossed points, and where it escapes the
+// plot the line to the edge and a marker there. Returns the last point of its line drawn, or
+// (-1, -1) where none was.
+ImVec2 draw_chart_series(ImDrawList* list, const Chart& chart, const Plot& plot,
+                         std::size_t index) {
+  const double ylo = plot.ylo, yhi = plot.yhi;
+  const Mapping mx{plot.xlo, plot.xhi, chart.x.log, plot.left, plot.right},
+      my{ylo, yhi, chart.y.log, plot.bottom, plot.top};
+  const Series& s = chart.series[index];
+  const ImU32 c = color(s.color);
+  std::vector<ImVec2> points;
+  std::vector<std::vector<Pixel>> drawn;  // (for the marks along it)
+  const auto flush = [&] {
+    if (!s.markers && s.mark != draw::Mark::None && points.size() >= 2) {
+      drawn.emplace_back();
+      for (const ImVec2& q : points) drawn.back().push_back({q.x, q.y});
+    }
+    if (points.size() >= 2) {
+      if (s.dashed) {
+        for (std::size_t k = 0; k + 1 < points.size(); k += 2)
+          list->AddLine(points[k], points[k + 1], c, s.width);
+      } else {
+        list->AddPolyline(points.data(), static_cast<int>(points.size()), c, ImDrawFlags_None,
+                          s.width);
       }
     }
-    const ImVec2 last = points.empty() ? ImVec2(-1, -1) : points.back();
-    flush();
-    const float mark_r = 2.5f + s.width;
-    for (const Pixel& m :
-         marks_along(drawn, kMarkSpacing,
-                     0.5 * kMarkSpacing * (1.0 + 0.37 * static_cast<double>(index % 5))))
-      draw_mark(list, s.mark, ImVec2(static_cast<float>(m[0]), static_cast<float>(m[1])), mark_r,
-                c);
-    if (chart.end_labels && !s.label.empty() && last.x >= 0.0f) ends.push_back({last, c, &s.label});
+    points.clear();
+  };
+  for (std::size_t k = 0; k < s.x.size(); ++k) {
+    const double x = s.x[k], y = s.y[k];
+    const bool ok =
+        std::isfinite(x) && std::isfinite(y) && (!chart.x.log || x > 0) && (!chart.y.log || y > 0);
+    if (s.escapes && (!ok || y > yhi || y < ylo)) {
+      // Leaving the plot: the line to its edge, a marker there, and nothing after.
+      if (!points.empty() && ok) {
+        const double edge = y > yhi ? yhi : ylo;
+        const double f = (edge - s.y[k - 1]) / (y - s.y[k - 1]);
+        const ImVec2 at(mx(s.x[k - 1] + f * (x - s.x[k - 1])), my(edge));
+        points.push_back(at);
+        const float r = 5.0f + s.width, d = y > yhi ? 1.0f : -1.0f;
+        list->AddTriangleFilled(ImVec2(at.x - r, at.y + d * 1.7f * r),
+                                ImVec2(at.x + r, at.y + d * 1.7f * r), at, c);
+      }
+      break;
+    }
+    if (!ok) {
+      flush();
+      continue;
+    }
+    const ImVec2 p(mx(x), my(y));
+    const bool crossed = k < s.crossed.size() && s.crossed[k];
+    if (crossed) {
+      flush();
+      const float r = 4.0f + s.width;
+      list->AddLine(ImVec2(p.x - r, p.y - r), ImVec2(p.x + r, p.y + r), c, 2.0f);
+      list->AddLine(ImVec2(p.x - r, p.y + r), ImVec2(p.x + r, p.y - r), c, 2.0f);
+      continue;
+    }
+    points.push_back(p);
+    if (s.markers) {
+      if (s.mark == draw::Mark::None)
+        list->AddCircleFilled(p, 2.0f + s.width, c);
+      else
+        draw_mark(list, s.mark, p, 3.0f + s.width, c);
+    }
   }
-  // The notes: each ending at its point, just above it.
+  const ImVec2 last = points.empty() ? ImVec2(-1, -1) : points.back();
+  flush();
+  const float mark_r = 2.5f + s.width;
+  for (const Pixel& m : marks_along(
+           drawn, kMarkSpacing, 0.5 * kMarkSpacing * (1.0 + 0.37 * static_cast<double>(index % 5))))
+    draw_mark(list, s.mark, ImVec2(static_cast<float>(m[0]), static_cast<float>(m[1])), mark_r, c);
+  return last;
+}
+
+// The notes: each ending at its point, just above it (those off the plot not drawn).
+void draw_chart_notes(ImDrawList* list, const Chart& chart, const Plot& p) {
+  const Mapping mx{p.xlo, p.xhi, chart.x.log, p.left, p.right},
+      my{p.ylo, p.yhi, chart.y.log, p.bottom, p.top};
   for (const Note& n : chart.notes) {
     const bool ok = std::isfinite(n.x) && std::isfinite(n.y) && (!chart.x.log || n.x > 0) &&
                     (!chart.y.log || n.y > 0);
-    if (!ok || n.y < ylo || n.y > yhi) continue;
+    if (!ok || n.y < p.ylo || n.y > p.yhi) continue;
     const ImVec2 size = ImGui::CalcTextSize(n.text.c_str());
-    const ImVec2 at(std::max(left + 2.0f, mx(n.x) - size.x - 4.0f),
-                    std::max(top, my(n.y) - size.y - 2.0f));
+    const ImVec2 at(std::max(p.left + 2.0f, mx(n.x) - size.x - 4.0f),
+                    std::max(p.top, my(n.y) - size.y - 2.0f));
     list->AddText(at, color(n.color), n.text.c_str());
   }
-  list->PopClipRect();
-  // The end labels: in the margin right of the plot (draw_imgui keeps it), each at the height of
-  // its line's last point, moved apart, with a short lead from that point where it was moved.
-  if (!ends.empty()) {
-    std::vector<double> wanted;
-    for (const EndLabel& e : ends) wanted.push_back(e.at.y - 0.5f * line_h);
-    const std::vector<double> y = spread_labels(wanted, line_h, top, bottom - line_h);
-    for (std::size_t k = 0; k < ends.size(); ++k) {
-      const ImVec2 at(right + 8.0f, static_cast<float>(y[k]));
-      list->AddLine(ImVec2(right + 1.0f, ends[k].at.y), ImVec2(at.x - 2.0f, at.y + 0.5f * line_h),
-                    ends[k].colour, 1.0f);
-      list->AddText(at, ends[k].colour, ends[k].text->c_str());
-    }
+}
+
+// The end labels: in the margin right of the plot (draw_imgui keeps it), each at the height of
+// its line's last point, moved apart, with a short lead from that point where it was moved.
+void draw_chart_end_labels(ImDrawList* list, const std::vector<ChartEndLabel>& ends,
+                           const Plot& p) {
+  if (ends.empty()) return;
+  const float line_h = p.line_h, right = p.right;
+  std::vector<double> wanted;
+  for (const ChartEndLabel& e : ends) wanted.push_back(e.at.y - 0.5f * line_h);
+  const std::vector<double> y = spread_labels(wanted, line_h, p.top, p.bottom - line_h);
+  for (std::size_t k = 0; k < ends.size(); ++k) {
+    const ImVec2 at(right + 8.0f, static_cast<float>(y[k]));
+    list->AddLine(ImVec2(right + 1.0f, ends[k].at.y), ImVec2(at.x - 2.0f, at.y + 0.5f * line_h),
+                  ends[k].colour, 1.0f);
+    list->AddText(at, ends[k].colour, ends[k].text->c_str());
   }
+}
+
+// The series within the plot (draw_chart_series), the notes; then the end labels.
+void draw_lines(ImDrawList* list, const Chart& chart, const Plot& p) {
+  list->PushClipRect(ImVec2(p.left, p.top), ImVec2(p.right, p.bottom), true);
+  std::vector<ChartEndLabel> ends;
+  for (std::size_t index = 0; index < chart.series.size(); ++index) {
+    const ImVec2 last = draw_chart_series(list, chart, p, index);
+    const Series& s = chart.series[index];
+    if (chart.end_labels && !s.label.empty() && last.x >= 0.0f)
+      ends.push_back({last, color(s.color), &s.label});
+  }
+  draw_chart_notes(list, chart, p);
+  list->PopClipRect();
+  draw_chart_end_labels(list, ends, p);
 }
 
 // The legend as placed: in rows over the plot, in a column beside it, or in a box in the corner
@@ -358,6 +381,51 @@ std::optional<Corner> draw_legend(ImDrawList* list, const Chart& chart, const Pl
     }
   }
   return legend_at;
+}
+
+// One scale on both axes (a chart with equal_scale and neither axis logarithmic): the ranges
+// widened to the plot's shape as the legend left it, the plot's left edge moved where the new y
+// ticks' labels are wider than `label_w` (at most 3 passes). Returns the y ticks to draw (`yt`
+// where the scale is not equal).
+std::vector<Tick> equal_scale_ticks(const Chart& chart, Plot& p, const std::vector<Tick>& yt,
+                                    float label_w) {
+  std::vector<Tick> y_ticks = yt;
+  if (chart.equal_scale && !chart.x.log && !chart.y.log)
+    for (int pass = 0; pass < 3; ++pass) {
+      axis_range(chart, true, p.xlo, p.xhi);
+      axis_range(chart, false, p.ylo, p.yhi);
+      equal_scale(p.xlo, p.xhi, p.ylo, p.yhi, p.right - p.left, p.bottom - p.top);
+      y_ticks = ticks(p.ylo, p.yhi, false, 4);
+      float widest = 0.0f;
+      for (const Tick& t : y_ticks)
+        widest = std::max(widest, ImGui::CalcTextSize(t.label.c_str()).x);
+      if (widest <= label_w) break;
+      p.left += widest - label_w;
+      label_w = widest;
+    }
+  return y_ticks;
+}
+
+// The chart's inset (kInsetWidth x kInsetHeight of the plot): over the corner that hides the least
+// apart from the legend's, on its own backdrop; in a small chart there is no room for one worth
+// reading, and the dots stay in the main view.
+void draw_chart_inset(ImDrawList* list, const Chart& chart, const Plot& p,
+                      std::optional<Corner> legend_at) {
+  const float line_h = p.line_h;
+  const ImU32 faint = ImGui::GetColorU32(ImGuiCol_Border);
+  const float inset_w = static_cast<float>(kInsetWidth) * (p.right - p.left),
+              inset_h = static_cast<float>(kInsetHeight) * (p.bottom - p.top);
+  if (!(chart.inset && inset_w >= 12.0f * line_h && inset_h >= 7.0f * line_h)) return;
+  const Corner at = legend_corner(chart, kInsetWidth, kInsetHeight, legend_at);
+  const float w = inset_w, h = inset_h;
+  const bool on_left = at == Corner::TopLeft || at == Corner::BottomLeft;
+  const bool below = at == Corner::BottomRight || at == Corner::BottomLeft;
+  const ImVec2 o(on_left ? p.left + 4.0f : p.right - w - 4.0f,
+                 below ? p.bottom - h - 4.0f : p.top + 4.0f);
+  list->AddRectFilled(o, ImVec2(o.x + w, o.y + h), ImGui::GetColorU32(ImGuiCol_WindowBg, 0.97f),
+                      3.0f);
+  list->AddRect(o, ImVec2(o.x + w, o.y + h), faint, 3.0f);
+  draw_imgui(list, ImVec2(o.x + 4.0f, o.y + 2.0f), ImVec2(w - 8.0f, h - 4.0f), *chart.inset);
 }
 
 }  // namespace
@@ -421,44 +489,13 @@ void draw_imgui(ImDrawList* list, ImVec2 origin, ImVec2 size, const Chart& chart
   }
   Plot p{origin, size, line_h, heading, top, left, plot_right, bottom, xlo, xhi, ylo, yhi};
   const LegendLayout legend = place_legend(chart, p);
-  // One scale on both axes: the ranges widened to the plot's shape as the legend left it, the
-  // plot's left edge moved where the new y ticks' labels are wider.
-  std::vector<Tick> y_ticks = yt;
-  if (chart.equal_scale && !chart.x.log && !chart.y.log)
-    for (int pass = 0; pass < 3; ++pass) {
-      axis_range(chart, true, p.xlo, p.xhi);
-      axis_range(chart, false, p.ylo, p.yhi);
-      equal_scale(p.xlo, p.xhi, p.ylo, p.yhi, p.right - p.left, p.bottom - p.top);
-      y_ticks = ticks(p.ylo, p.yhi, false, 4);
-      float widest = 0.0f;
-      for (const Tick& t : y_ticks)
-        widest = std::max(widest, ImGui::CalcTextSize(t.label.c_str()).x);
-      if (widest <= label_w) break;
-      p.left += widest - label_w;
-      label_w = widest;
-    }
+  const std::vector<Tick> y_ticks = equal_scale_ticks(chart, p, yt, label_w);
   draw_axes(list, chart, p, y_ticks, legend.place);
   list->PushClipRect(ImVec2(origin.x, origin.y), ImVec2(origin.x + size.x, origin.y + size.y),
                      true);
   draw_lines(list, chart, p);
   const std::optional<Corner> legend_at = draw_legend(list, chart, p, legend);
-  const ImU32 faint = ImGui::GetColorU32(ImGuiCol_Border);
-  const float inset_w = static_cast<float>(kInsetWidth) * (p.right - p.left),
-              inset_h = static_cast<float>(kInsetHeight) * (p.bottom - p.top);
-  // (In a small chart there is no room for one worth reading: the dots stay in the main view.)
-  if (chart.inset && inset_w >= 12.0f * line_h && inset_h >= 7.0f * line_h) {
-    // Over the corner that hides the least apart from the legend's, on its own backdrop.
-    const Corner at = legend_corner(chart, kInsetWidth, kInsetHeight, legend_at);
-    const float w = inset_w, h = inset_h;
-    const bool on_left = at == Corner::TopLeft || at == Corner::BottomLeft;
-    const bool below = at == Corner::BottomRight || at == Corner::BottomLeft;
-    const ImVec2 o(on_left ? p.left + 4.0f : p.right - w - 4.0f,
-                   below ? p.bottom - h - 4.0f : p.top + 4.0f);
-    list->AddRectFilled(o, ImVec2(o.x + w, o.y + h), ImGui::GetColorU32(ImGuiCol_WindowBg, 0.97f),
-                        3.0f);
-    list->AddRect(o, ImVec2(o.x + w, o.y + h), faint, 3.0f);
-    draw_imgui(list, ImVec2(o.x + 4.0f, o.y + 2.0f), ImVec2(w - 8.0f, h - 4.0f), *chart.inset);
-  }
+  draw_chart_inset(list, chart, p, legend_at);
   list->PopClipRect();
 }
 

@@ -228,6 +228,45 @@ void lane_dots(std::vector<Series>& series, const std::vector<RegionLane>& shown
   for (Series& o : outsides) series.push_back(std::move(o));
 }
 
+// The dots h lambda, each lane's inside its region in its colour, outside in red (drawn last: a
+// red dot is never hidden under another lane's); never a NaN dot.
+void complex_plane_dots(Chart& chart, const std::vector<RegionLane>& shown,
+                        const std::vector<Complex>& lambdas) {
+  lane_dots(chart.series, shown, [&](const RegionLane& l, const auto& put) {
+    for (Complex lambda : lambdas) {
+      const Complex z = l.h * lambda;
+      if (!std::isfinite(z.real()) || !std::isfinite(z.imag())) continue;  // never a NaN dot
+      put(z.real(), z.imag(), stable_at(l.method, z));
+    }
+  });
+}
+
+// Dots near 0 at a small step (the farthest, `reach` = max |h lambda|, under 0.08 of the view's
+// reach `dots`), where the regions' edges decide: an inset zooming on them, with the edges there
+// (x in [-1.6, 0.6] reach, y in [-1.3, 1.3] reach). Null where the dots do not gather there.
+std::shared_ptr<Chart> near_zero_inset(const std::vector<RegionLane>& shown,
+                                       const std::vector<Complex>& lambdas, const Extent& dots) {
+  double reach = 0.0;
+  for (const RegionLane& l : shown)
+    for (Complex lambda : lambdas)
+      if (std::isfinite(std::abs(l.h * lambda))) reach = std::max(reach, std::abs(l.h * lambda));
+  if (!(reach > 0.0 && reach < 0.08 * std::max(dots.left, dots.up))) return nullptr;
+  auto zoom = std::make_shared<Chart>();
+  zoom->title = tr("near 0");
+  zoom->legend = false;
+  zoom->equal_scale = true;
+  zoom->x.min = -1.6 * reach;
+  zoom->x.max = 0.6 * reach;
+  zoom->y.min = -1.3 * reach;
+  zoom->y.max = 1.3 * reach;
+  for (const RegionLane& l : shown)
+    region([&](double x, double y) { return margin_at(l.method, Complex(x, y)); }, *zoom->x.min,
+           *zoom->x.max, *zoom->y.min, *zoom->y.max, draw::method_color(l.method), "",
+           zoom->series);
+  complex_plane_dots(*zoom, shown, lambdas);
+  return zoom;
+}
+
 // The regions of h lambda in the complex plane (the Runge-Kutta rows and tableaux), with the
 // scene's eigenvalues times h as dots; an inset on the dots near 0 when they gather there.
 Chart complex_plane(const StabilityAnalysis& analysis, const std::vector<RegionLane>& shown,
@@ -278,40 +317,8 @@ Chart complex_plane(const StabilityAnalysis& analysis, const std::vector<RegionL
            bounded ? std::max(y0, -e.up) : y0, bounded ? std::min(y1, e.up) : y1,
            draw::method_color(l.method), region_verdict(analysis, l), c.series);
   }
-  // The dots, each lane's inside its region in its colour, outside in red (drawn last: a red dot
-  // is never hidden under another lane's).
-  const auto add_dots = [&](Chart& chart) {
-    lane_dots(chart.series, shown, [&](const RegionLane& l, const auto& put) {
-      for (Complex lambda : lambdas) {
-        const Complex z = l.h * lambda;
-        if (!std::isfinite(z.real()) || !std::isfinite(z.imag())) continue;  // never a NaN dot
-        put(z.real(), z.imag(), stable_at(l.method, z));
-      }
-    });
-  };
-  add_dots(c);
-  // Dots near 0 at a small step (a hundredth of the view), where the regions' edges decide:
-  // an inset zooms on them, with the edges there.
-  double reach = 0.0;
-  for (const RegionLane& l : shown)
-    for (Complex lambda : lambdas)
-      if (std::isfinite(std::abs(l.h * lambda))) reach = std::max(reach, std::abs(l.h * lambda));
-  if (reach > 0.0 && reach < 0.08 * std::max(dots.left, dots.up)) {
-    auto zoom = std::make_shared<Chart>();
-    zoom->title = tr("near 0");
-    zoom->legend = false;
-    zoom->equal_scale = true;
-    zoom->x.min = -1.6 * reach;
-    zoom->x.max = 0.6 * reach;
-    zoom->y.min = -1.3 * reach;
-    zoom->y.max = 1.3 * reach;
-    for (const RegionLane& l : shown)
-      region([&](double x, double y) { return margin_at(l.method, Complex(x, y)); }, *zoom->x.min,
-             *zoom->x.max, *zoom->y.min, *zoom->y.max, draw::method_color(l.method), "",
-             zoom->series);
-    add_dots(*zoom);
-    c.inset = zoom;
-  }
+  complex_plane_dots(c, shown, lambdas);
+  if (std::shared_ptr<Chart> zoom = near_zero_inset(shown, lambdas, dots)) c.inset = zoom;
   return c;
 }
 

@@ -144,6 +144,58 @@ void write_charts(const std::filesystem::path& dir, const std::vector<chart::Nam
   }
 }
 
+// One method's line of the printed table: its order fitted (the table's in brackets), its stable
+// step by runs and by the analysis and their ratio; then, where it has no order, why (its stable
+// runs' errors against the fitted band), and where its errors reach a floor, that floor.
+void compare_print_method_row(const MethodSummary& m, const SweepResult& r) {
+  char order[32];
+  if (std::isnan(m.order))
+    std::snprintf(order, sizeof order, "n/a (%d)", method_info(m.method).order);
+  else
+    std::snprintf(order, sizeof order, "%.2f (%d)", m.order, method_info(m.method).order);
+  const bool finite = !m.measured_at_least && std::isfinite(m.measured_stable_h) &&
+                      std::isfinite(m.theoretical_stable_h) && m.theoretical_stable_h > 0;
+  char ratio[16] = "";
+  if (finite)
+    std::snprintf(ratio, sizeof ratio, "%.3f", m.measured_stable_h / m.theoretical_stable_h);
+  std::string measured = step_text(m.measured_stable_h), theory = step_text(m.theoretical_stable_h);
+  if (m.measured_at_least)
+    measured = ">= " + measured + " (budget)";
+  else if (finite && m.measured_resolution > 0.0) {
+    char within[32];
+    std::snprintf(within, sizeof within, " (+%.1f %%)", 100.0 * m.measured_resolution);
+    measured += within;
+  }
+  if (!m.theory_exact && finite) theory = ">= " + theory;
+  std::printf("%-18s %-16s %-22s %-16s %s\n", method_info(m.method).name, order, measured.c_str(),
+              theory.c_str(), ratio);
+  // Too few runs to fit: why, with their errors.
+  if (std::isnan(m.order)) {
+    double least = INFINITY, most = 0.0;
+    int stable = 0;
+    for (const SweepRun& run : r.runs)
+      if (run.method == m.method &&
+          std::isnan(run.tolerance) == !method_info(m.method).adaptive() && !run.diverged) {
+        ++stable;
+        least = std::min(least, run.error);
+        most = std::max(most, run.error);
+      }
+    std::printf(
+        "%-18s no order: %d of its %d stable runs fall between the reference's floor (%.2g m) "
+        "and a tenth of "
+        "the motion (%.2g m), and 3 are needed; its errors go from %.2g to %.2g m\n",
+        "", m.fitted_points, stable, r.fit_floor, r.fit_ceiling, most, least);
+  }
+  // Below the floor the error is the solvers' tolerance and rounding: the order is fitted above
+  // it.
+  if (std::isfinite(m.floor_h))
+    std::printf(
+        "%-18s order fitted above the floor its errors reach: %.2g m from h = %s down (rounding "
+        "and the "
+        "solvers' tolerances, which a smaller step does not reduce)\n",
+        "", m.floor_error, step_text(m.floor_h).c_str());
+}
+
 int compare(const CompareOptions& o) {
   PreparedSweep plan = prepare_sweep(o.scene, o.sim, o.sweep);
   const Prepared& p = plan.prepared;
@@ -181,55 +233,7 @@ int compare(const CompareOptions& o) {
               r.samples * r.sample_interval, r.reference.c_str());
   std::printf("\n%-18s %-16s %-22s %-16s %s\n", "method", "order (table)", "stable step, by runs",
               "analysis", "runs/analysis");
-  for (const MethodSummary& m : r.methods) {
-    char order[32];
-    if (std::isnan(m.order))
-      std::snprintf(order, sizeof order, "n/a (%d)", method_info(m.method).order);
-    else
-      std::snprintf(order, sizeof order, "%.2f (%d)", m.order, method_info(m.method).order);
-    const bool finite = !m.measured_at_least && std::isfinite(m.measured_stable_h) &&
-                        std::isfinite(m.theoretical_stable_h) && m.theoretical_stable_h > 0;
-    char ratio[16] = "";
-    if (finite)
-      std::snprintf(ratio, sizeof ratio, "%.3f", m.measured_stable_h / m.theoretical_stable_h);
-    std::string measured = step_text(m.measured_stable_h),
-                theory = step_text(m.theoretical_stable_h);
-    if (m.measured_at_least)
-      measured = ">= " + measured + " (budget)";
-    else if (finite && m.measured_resolution > 0.0) {
-      char within[32];
-      std::snprintf(within, sizeof within, " (+%.1f %%)", 100.0 * m.measured_resolution);
-      measured += within;
-    }
-    if (!m.theory_exact && finite) theory = ">= " + theory;
-    std::printf("%-18s %-16s %-22s %-16s %s\n", method_info(m.method).name, order, measured.c_str(),
-                theory.c_str(), ratio);
-    // Too few runs to fit: why, with their errors.
-    if (std::isnan(m.order)) {
-      double least = INFINITY, most = 0.0;
-      int stable = 0;
-      for (const SweepRun& run : r.runs)
-        if (run.method == m.method &&
-            std::isnan(run.tolerance) == !method_info(m.method).adaptive() && !run.diverged) {
-          ++stable;
-          least = std::min(least, run.error);
-          most = std::max(most, run.error);
-        }
-      std::printf(
-          "%-18s no order: %d of its %d stable runs fall between the reference's floor (%.2g m) "
-          "and a tenth of "
-          "the motion (%.2g m), and 3 are needed; its errors go from %.2g to %.2g m\n",
-          "", m.fitted_points, stable, r.fit_floor, r.fit_ceiling, most, least);
-    }
-    // Below the floor the error is the solvers' tolerance and rounding: the order is fitted above
-    // it.
-    if (std::isfinite(m.floor_h))
-      std::printf(
-          "%-18s order fitted above the floor its errors reach: %.2g m from h = %s down (rounding "
-          "and the "
-          "solvers' tolerances, which a smaller step does not reduce)\n",
-          "", m.floor_error, step_text(m.floor_h).c_str());
-  }
+  for (const MethodSummary& m : r.methods) compare_print_method_row(m, r);
   // The sweep's runs take each step as given (the step is what it varies); the drift runs, at
   // the scene's step, take the sub-steps `run` would.
   if (!r.drift.empty()) {

@@ -382,6 +382,36 @@ int with_text_faults(int verdict, std::size_t text_faults) {
   return verdict == kOk ? kFailure : verdict;
 }
 
+// Frame k drawn from `shot` (draw_shot), with --check-text's faults printed, one a line; returns
+// how many there were, and sets `draw_ms` to the time the drawing took.
+std::size_t render_draw_frame(gfx::Offscreen& offscreen, Shot& shot, const ui::FrameStats& stats,
+                              bool panels, int width, int height, float scale, bool check_text,
+                              std::int64_t k, double& draw_ms) {
+  const auto t0 = std::chrono::steady_clock::now();
+  std::vector<std::string> faults;
+  draw_shot(offscreen, shot, stats, panels, width, height, scale, check_text ? &faults : nullptr);
+  for (const std::string& fault : faults)
+    std::printf("text       frame %lld: %s\n", static_cast<long long>(k), fault.c_str());
+  draw_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return faults.size();
+}
+
+// The closing lines: the frames written, of what, at what size and rate, the times they show
+// (`span`), the wall time since `start` and the frames a second, the renderer; then the output.
+void render_print_summary(const RenderOptions& o, const std::string& name, int width, int height,
+                          std::int64_t written, const std::string& span,
+                          std::chrono::steady_clock::time_point start,
+                          const std::string& renderer) {
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf(
+      "rendered %lld frame%s of %s (%dx%d, %g frames/s: %s) in %.3g s: %.3g frames/s, on %s\n",
+      static_cast<long long>(written), written == 1 ? "" : "s", name.c_str(), width, height, o.fps,
+      span.c_str(), wall, wall > 0 ? written / wall : 0.0, renderer.c_str());
+  std::printf("output     %s\n", (o.out ? *o.out : *o.video).c_str());
+}
+
 int render(const RenderOptions& o) {
   int width = 0, height = 0;
   check_render_options(o, width, height);
@@ -441,15 +471,8 @@ int render(const RenderOptions& o) {
     if (drawn) collect();
     if (!selected.empty() && !selected.count(k)) continue;
     Session& session = *shot.session;
-    const auto t0 = std::chrono::steady_clock::now();
-    std::vector<std::string> faults;
-    draw_shot(offscreen, shot, stats, panels, width, height, scale,
-              o.check_text ? &faults : nullptr);
-    for (const std::string& fault : faults)
-      std::printf("text       frame %lld: %s\n", static_cast<long long>(k), fault.c_str());
-    text_faults += faults.size();
-    draw_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    text_faults += render_draw_frame(offscreen, shot, stats, panels, width, height, scale,
+                                     o.check_text, k, draw_ms);
     drawn = k;
     // The time the frame shows: a scene's simulated time (its caption's), a lesson's presentation
     // time.
@@ -460,14 +483,9 @@ int render(const RenderOptions& o) {
   if (drawn) collect();
   writer->finish();
   progress.finish();
-  const double wall =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf(
-      "rendered %lld frame%s of %s (%dx%d, %g frames/s: %s) in %.3g s: %.3g frames/s, on %s\n",
-      static_cast<long long>(written), written == 1 ? "" : "s", plan.name.c_str(), width, height,
-      o.fps, frames_written(first_written.value_or(0), last_written, t_first, t_last).c_str(), wall,
-      wall > 0 ? written / wall : 0.0, offscreen.renderer_name().c_str());
-  std::printf("output     %s\n", (o.out ? *o.out : *o.video).c_str());
+  render_print_summary(o, plan.name, width, height, written,
+                       frames_written(first_written.value_or(0), last_written, t_first, t_last),
+                       start, offscreen.renderer_name());
   // (a lesson's steps diverge where they mean to)
   const int verdict = lesson ? kOk : lane_verdicts(*plan.shots[current].session, plan.name);
   return o.check_text ? with_text_faults(verdict, text_faults) : verdict;

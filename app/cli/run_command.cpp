@@ -181,6 +181,41 @@ void print_cost(const Counters& c, const MethodInfo& m) {
   std::printf("\n");
 }
 
+// The method line: its name, dt, the sub-steps and how they were chosen (fixed, or auto: within
+// the safety factor of the limit, or capped), and the step h they make.
+void run_print_method(Simulation& sim, double dt, const MethodInfo& m) {
+  const int substeps = sim.settings().substeps;
+  std::string chosen = "fixed";
+  if (sim.auto_substeps())
+    chosen = !sim.substeps_capped()
+                 ? "auto: h within " + format(sim.settings().safety) + " of the limit"
+             : sim.stable_step() == 0.0
+                 ? "auto: unstable at any step, sub-steps cannot help"
+                 : "auto, capped at " + std::to_string(kMaxAutoSubsteps) + ": still past the limit";
+  std::printf("method     %s, dt = %s s, %d substep%s (%s; h = %s s)\n", m.name, format(dt).c_str(),
+              substeps, substeps == 1 ? "" : "s", chosen.c_str(), format(sim.h()).c_str());
+}
+
+// The momentum line, for a free body (no outside force: P and L are constants of the motion, and
+// any change is the method's): each kept or changed, by how much of its scale (sum m|v|,
+// sum m|x||v|), and what the method is said to keep.
+void run_print_momentum(const Simulation& sim, const Momentum& initial_momentum,
+                        const MethodInfo& m) {
+  const Momentum now = momentum(sim.model(), sim.state());
+  const MomentumChange d = momentum_change(initial_momentum, now);
+  const auto said = [](double change) {
+    return std::string(change <= kMomentumKept ? "kept (" : "changed (") + "by " + format(change) +
+           " of ";
+  };
+  std::printf(
+      "momentum   a free body (no pins, gravity, drag, fields or colliders): P %ssum m|v| = %s "
+      "kg m/s), "
+      "L %ssum m|x||v| = %s kg m^2/s); %s: P %s, L %s\n",
+      said(d.linear).c_str(), format(now.linear_scale).c_str(), said(d.angular).c_str(),
+      format(now.angular_scale).c_str(), m.name, kept_text(m.momentum),
+      kept_text(m.angular_momentum));
+}
+
 int run(const RunOptions& o) {
   Prepared p = prepare(o.scene, o.sim);
   if (p.scene.ik) return run_ik(p.scene, o.csv.has_value());
@@ -220,17 +255,7 @@ int run(const RunOptions& o) {
   const MethodInfo& m = method_info(p.settings.method);
   std::printf("scene      %s (%s): %d particles, %d springs\n", p.scene.name.c_str(),
               p.scene.file.c_str(), sim.model().particle_count(), sim.model().spring_count());
-  const int substeps = sim.settings().substeps;
-  std::string chosen = "fixed";
-  if (sim.auto_substeps())
-    chosen = !sim.substeps_capped()
-                 ? "auto: h within " + format(sim.settings().safety) + " of the limit"
-             : sim.stable_step() == 0.0
-                 ? "auto: unstable at any step, sub-steps cannot help"
-                 : "auto, capped at " + std::to_string(kMaxAutoSubsteps) + ": still past the limit";
-  std::printf("method     %s, dt = %s s, %d substep%s (%s; h = %s s)\n", m.name,
-              format(p.settings.dt).c_str(), substeps, substeps == 1 ? "" : "s", chosen.c_str(),
-              format(sim.h()).c_str());
+  run_print_method(sim, p.settings.dt, m);
   std::printf("steps      %lld of %lld, simulated %s s in %s s of wall time (%s steps/s)\n",
               static_cast<long long>(taken), static_cast<long long>(p.steps),
               format(sim.state().t).c_str(), format(wall).c_str(),
@@ -247,22 +272,7 @@ int run(const RunOptions& o) {
     std::printf("cells      %d of %zu inverted%s\n", inverted, p.scene.cells.size(),
                 inverted > 0 ? " (turned inside out: springs alone cannot turn them back)" : "");
   }
-  if (free_body(sim.model()) && !sim.diverged()) {
-    // No outside force: P and L are constants of the motion, and any change is the method's.
-    const Momentum now = momentum(sim.model(), sim.state());
-    const MomentumChange d = momentum_change(initial_momentum, now);
-    const auto said = [](double change) {
-      return std::string(change <= kMomentumKept ? "kept (" : "changed (") + "by " +
-             format(change) + " of ";
-    };
-    std::printf(
-        "momentum   a free body (no pins, gravity, drag, fields or colliders): P %ssum m|v| = %s "
-        "kg m/s), "
-        "L %ssum m|x||v| = %s kg m^2/s); %s: P %s, L %s\n",
-        said(d.linear).c_str(), format(now.linear_scale).c_str(), said(d.angular).c_str(),
-        format(now.angular_scale).c_str(), m.name, kept_text(m.momentum),
-        kept_text(m.angular_momentum));
-  }
+  if (free_body(sim.model()) && !sim.diverged()) run_print_momentum(sim, initial_momentum, m);
   if (o.csv) std::printf("trace      %s\n", o.csv->c_str());
 
   if (sim.diverged()) {

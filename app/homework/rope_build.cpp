@@ -108,6 +108,35 @@ std::string runner_key(const fs::path& compiler, const std::vector<std::string>&
   return text;
 }
 
+// The runner's object kept in the cache for the next build: written under a name of its own,
+// then renamed (atomic); the part removed where either failed.
+void keep_runner_object(const fs::path& runner_object, const fs::path& cached) {
+  std::error_code ec;
+  const fs::path part = cached.string() + "." + std::to_string(::getpid());
+  if (fs::copy_file(runner_object, part, fs::copy_options::overwrite_existing, ec))
+    fs::rename(part, cached, ec);
+  if (ec) fs::remove(part, ec);
+}
+
+// The two objects linked into `runner` (its log, link.txt, in `folder`). Throws InputError where
+// they do not link: a step declared but not defined said as such, else the linker's first error.
+void link_rope_runner(const fs::path& compiler, const fs::path& rope_object,
+                      const fs::path& runner_object, const fs::path& runner, const fs::path& folder,
+                      const fs::path& source) {
+  const std::vector<std::string> link = {compiler.string(), rope_object.string(),
+                                         runner_object.string(), "-o", runner.string()};
+  const std::string link_how =
+      ChildProcess(link, folder / "link.txt").run_to_end(std::chrono::seconds(120));
+  if (!link_how.empty()) {
+    const std::string error = first_error_in(folder / "link.txt");
+    if (error.find("undefined reference") != std::string::npos)
+      throw InputError(source.string() + " compiles, but does not define what the checker calls: " +
+                       error + " (rope.h declares it: write it in rope.cpp)");
+    throw InputError(source.string() +
+                     " does not link: " + (error.empty() ? "the linker " + link_how : error));
+  }
+}
+
 }  // namespace
 
 std::string first_error(const std::string& compiler_output) {
@@ -205,26 +234,8 @@ RopeBuild::RopeBuild(const fs::path& path) {
                      ": " + (error.empty() ? "the compiler " + runner_how : error) + "." +
                      declared(error));
   }
-  if (!cached.empty() && !have_runner) {
-    // Kept for the next build: written under a name of its own, then renamed (atomic).
-    const fs::path part = cached.string() + "." + std::to_string(::getpid());
-    if (fs::copy_file(runner_object, part, fs::copy_options::overwrite_existing, ec))
-      fs::rename(part, cached, ec);
-    if (ec) fs::remove(part, ec);
-  }
-  const std::vector<std::string> link = {compiler->string(), rope_object.string(),
-                                         runner_object.string(), "-o", runner_.string()};
-  const std::string link_how =
-      ChildProcess(link, folder_ / "link.txt").run_to_end(std::chrono::seconds(120));
-  if (!link_how.empty()) {
-    const std::string error = first_error_in(folder_ / "link.txt");
-    if (error.find("undefined reference") != std::string::npos)
-      throw InputError(source_.string() +
-                       " compiles, but does not define what the checker calls: " + error +
-                       " (rope.h declares it: write it in rope.cpp)");
-    throw InputError(source_.string() +
-                     " does not link: " + (error.empty() ? "the linker " + link_how : error));
-  }
+  if (!cached.empty() && !have_runner) keep_runner_object(runner_object, cached);
+  link_rope_runner(*compiler, rope_object, runner_object, runner_, folder_, source_);
   cleanup.release();
 }
 

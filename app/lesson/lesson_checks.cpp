@@ -331,6 +331,47 @@ void judge_momentum_and_drag(const Window& w, ClaimResult& out) {
   }
 }
 
+// ActsAs: the stiffness a row acts as at rest under load, the stretch's RMS against the spring
+// model's under the same load (their ratio: k_s x ratio), within [c.above, c.below].
+void judge_acts_as(const Lane& lane, const LessonClaim& c, ClaimResult& out) {
+  const Model& model = lane.sim.model();
+  if (!loaded_balance(model)) {  // (iterative_cost.hpp: no load, no stiffness to act as)
+    out.measured =
+        "no load carried to pins (free, or resting on a collider): no effective stiffness";
+    return;
+  }
+  if (!at_rest(model, lane.sim.state(), lane.sim.energy_scale())) {
+    out.measured = fmt("not at rest at the end (kinetic energy %.3g J)",
+                       kinetic_energy(model, lane.sim.state()));
+    return;
+  }
+  const Softness s = softness(model, lane.sim.state());
+  out.measured = fmt("stretch %.3g m RMS", s.stretch) +
+                 fmt(" against the spring model's %.3g m", s.model_stretch) +
+                 fmt(": k_s x%.3g", s.ratio());
+  out.passed = (c.below == 0.0 || s.ratio() <= c.below) && s.ratio() >= c.above;
+}
+
+// PosesDiffer: every inverse kinematics lane reached the target, and the closest two poses (the
+// largest distance between their joints) are at least c.min apart.
+void judge_poses_differ(const Session& session, const LessonClaim& c, ClaimResult& out) {
+  double closest = std::numeric_limits<double>::infinity();
+  bool converged = true;
+  const auto lanes = session.lanes();
+  for (std::size_t a = 0; a < lanes.size(); ++a) {
+    converged = converged && ik_lane(lanes[a]).status.converged;
+    for (std::size_t b = a + 1; b < lanes.size(); ++b) {
+      const auto pa = ik_lane(lanes[a]).chain.positions(), pb = ik_lane(lanes[b]).chain.positions();
+      double apart = 0.0;
+      for (std::size_t j = 0; j < pa.size(); ++j) apart = std::max(apart, (pa[j] - pb[j]).norm());
+      closest = std::min(closest, apart);
+    }
+  }
+  out.measured = std::string(converged ? "all reached the target" : "not all reached the target") +
+                 fmt(", the closest two poses %.3g m apart", closest);
+  out.passed = converged && closest >= c.min;
+}
+
 // The iterative rows, inverse kinematics and emitters: the stiffness a row acts as, its solver
 // converging, an arm out of reach, the solvers' poses apart, bursts.
 void judge_solvers_and_scenes(const Window& w, ClaimResult& out) {
@@ -340,25 +381,9 @@ void judge_solvers_and_scenes(const Window& w, ClaimResult& out) {
   const int i0 = w.i0, i1 = w.i1;
   const Session& session = w.session;
   switch (c.kind) {
-    case K::ActsAs: {
-      const Model& model = lane.sim.model();
-      if (!loaded_balance(model)) {  // (iterative_cost.hpp: no load, no stiffness to act as)
-        out.measured =
-            "no load carried to pins (free, or resting on a collider): no effective stiffness";
-        break;
-      }
-      if (!at_rest(model, lane.sim.state(), lane.sim.energy_scale())) {
-        out.measured = fmt("not at rest at the end (kinetic energy %.3g J)",
-                           kinetic_energy(model, lane.sim.state()));
-        break;
-      }
-      const Softness s = softness(model, lane.sim.state());
-      out.measured = fmt("stretch %.3g m RMS", s.stretch) +
-                     fmt(" against the spring model's %.3g m", s.model_stretch) +
-                     fmt(": k_s x%.3g", s.ratio());
-      out.passed = (c.below == 0.0 || s.ratio() <= c.below) && s.ratio() >= c.above;
+    case K::ActsAs:
+      judge_acts_as(lane, c, out);
       break;
-    }
     case K::SolverConverges: {
       // From where the lane is at the claim's end: one step at its h, 8 and 64 iterations.
       const SolverErrorStudy study = solver_error(lane.sim.model(), lane.sim.state(), lane.sim.h(),
@@ -384,27 +409,9 @@ void judge_solvers_and_scenes(const Window& w, ClaimResult& out) {
       out.passed = !ik.status.reachable && to.norm() > reach && off <= 0.01 * reach;
       break;
     }
-    case K::PosesDiffer: {
-      double closest = std::numeric_limits<double>::infinity();
-      bool converged = true;
-      const auto lanes = session.lanes();
-      for (std::size_t a = 0; a < lanes.size(); ++a) {
-        converged = converged && ik_lane(lanes[a]).status.converged;
-        for (std::size_t b = a + 1; b < lanes.size(); ++b) {
-          const auto pa = ik_lane(lanes[a]).chain.positions(),
-                     pb = ik_lane(lanes[b]).chain.positions();
-          double apart = 0.0;
-          for (std::size_t j = 0; j < pa.size(); ++j)
-            apart = std::max(apart, (pa[j] - pb[j]).norm());
-          closest = std::min(closest, apart);
-        }
-      }
-      out.measured =
-          std::string(converged ? "all reached the target" : "not all reached the target") +
-          fmt(", the closest two poses %.3g m apart", closest);
-      out.passed = converged && closest >= c.min;
+    case K::PosesDiffer:
+      judge_poses_differ(session, c, out);
       break;
-    }
     case K::Bursts: {
       // Every frame with more than half a burst's births: whole bursts of `count`, and at most a
       // shell born beside them.

@@ -306,6 +306,51 @@ void InteractiveApp::simulate() {
   }
 }
 
+namespace {
+
+// The accuracy chart (ui/compare_panel.hpp), open while ui.accuracy is: in a lesson in the scene's
+// and the charts' place (the step is about this chart), else over the scene's upper part; then the
+// tableau panel, open while ui.tableau is. Each panel's open flag goes back to `ui` as its window
+// left it.
+void draw_app_charts(ui::UiState& ui, ui::ComparePanel& accuracy, ui::TableauPanel& tableau,
+                     const std::vector<std::string>& tableaux, Session& session, bool in_lesson,
+                     float scale, int win_w, int win_h) {
+  accuracy.open = ui.accuracy;
+  accuracy.sweep.advance();  // (without threads: the sweep's next pieces; else nothing)
+  if (in_lesson) {  // the step is about this chart: it takes the scene's and the charts' place
+    const ui::Rect r =
+        ui::lesson_chart_rect(ui, ui::scene_viewport(ui, win_w, win_h), win_w, win_h, scale);
+    ImGui::SetNextWindowBgAlpha(1.0f);  // (the charts under it do not show through)
+    ui::draw_compare_panel(accuracy, session, scale, r.x, r.y, r.w, r.h);
+  } else {
+    ui::draw_compare_panel(accuracy, session, scale, 380.0f * scale, 20.0f * scale,
+                           win_w - 400.0f * scale, win_h * 0.62f);
+  }
+  ui.accuracy = accuracy.open;
+  tableau.open = ui.tableau;
+  ui::draw_tableau_panel(tableau, session, tableaux, scale);
+  ui.tableau = tableau.open;
+}
+
+// The overlay (ui/overlay.hpp) over the scene: its viewport, given in framebuffer pixels, drawn in
+// window units (to_fb framebuffer pixels a unit); the caption where the panels are hidden, and
+// larger in presentation.
+void draw_app_overlay(const Session& session, const ui::UiState& ui, const ui::FrameStats& stats,
+                      float scale, const draw::Viewport& viewport, double to_fb) {
+  ui::OverlayOptions overlay;
+  overlay.scale = scale * (ui.presentation ? ui::kPresentationScale : 1.0f);
+  overlay.caption = !ui.panels;
+  overlay.realtime = stats.realtime;
+  const draw::Viewport in_window{
+      static_cast<int>(viewport.x / to_fb), static_cast<int>(viewport.y / to_fb),
+      static_cast<int>(viewport.width / to_fb), static_cast<int>(viewport.height / to_fb)};
+  ui::draw_overlay(session,
+                   draw::lane_views(session, ui.view.camera, ui.view.compare_layout, in_window),
+                   in_window, ui.scene_name, overlay);
+}
+
+}  // namespace
+
 void InteractiveApp::frame(const FrameSize& size) {
   ImGui::NewFrame();
   const int win_w = size.win_width, win_h = size.win_height;
@@ -349,32 +394,10 @@ void InteractiveApp::frame(const FrameSize& size) {
       }
     };
   }
-  accuracy_.open = ui_.accuracy;
-  accuracy_.sweep.advance();  // (without threads: the sweep's next pieces; else nothing)
-  if (lesson_) {  // the step is about this chart: it takes the scene's and the charts' place
-    const ui::Rect r =
-        ui::lesson_chart_rect(ui_, ui::scene_viewport(ui_, win_w, win_h), win_w, win_h, scale);
-    ImGui::SetNextWindowBgAlpha(1.0f);  // (the charts under it do not show through)
-    ui::draw_compare_panel(accuracy_, session, scale, r.x, r.y, r.w, r.h);
-  } else {
-    ui::draw_compare_panel(accuracy_, session, scale, 380.0f * scale, 20.0f * scale,
-                           win_w - 400.0f * scale, win_h * 0.62f);
-  }
-  ui_.accuracy = accuracy_.open;
-  tableau_.open = ui_.tableau;
-  ui::draw_tableau_panel(tableau_, session, tableaux_, scale);
-  ui_.tableau = tableau_.open;
+  draw_app_charts(ui_, accuracy_, tableau_, tableaux_, session, lesson_.has_value(), scale, win_w,
+                  win_h);
   ui_.view.line_scale = ui_.presentation ? 1.6f : 1.0f;
-  ui::OverlayOptions overlay;
-  overlay.scale = scale * (ui_.presentation ? ui::kPresentationScale : 1.0f);
-  overlay.caption = !ui_.panels;
-  overlay.realtime = stats_.realtime;
-  const draw::Viewport in_window{
-      static_cast<int>(viewport.x / to_fb), static_cast<int>(viewport.y / to_fb),
-      static_cast<int>(viewport.width / to_fb), static_cast<int>(viewport.height / to_fb)};
-  ui::draw_overlay(session,
-                   draw::lane_views(session, ui_.view.camera, ui_.view.compare_layout, in_window),
-                   in_window, ui_.scene_name, overlay);
+  draw_app_overlay(session, ui_, stats_, scale, viewport, to_fb);
   if (requests.quit) quit_ = true;
   if (requests.language) language_ = requests.language;
   std::optional<std::string> load = requests.load;

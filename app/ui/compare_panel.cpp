@@ -49,6 +49,36 @@ float button_width(const char* label) {
   return ImGui::CalcTextSize(label).x + 2.0f * ImGui::GetStyle().FramePadding.x;
 }
 
+// The methods to sweep, ticked in their colours: none ticked means all. Five columns; where the
+// longest name does not fit five (a phone), as many as it fits, folded under a header until
+// opened: unfolded they would take the chart's room, and the chart is what the step is about.
+void compare_method_ticks(ComparePanel& panel) {
+  float name = 0.0f;
+  int ticked = 0;
+  for (const MethodInfo& m : methods()) {
+    name = std::max(name, ImGui::CalcTextSize(m.name).x);
+    ticked += panel.methods.has(m.id) ? 1 : 0;
+  }
+  const float column = ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + name +
+                       ImGui::GetStyle().CellPadding.x * 2;
+  const int columns = std::clamp(static_cast<int>(ImGui::GetContentRegionAvail().x / column), 2, 5);
+  const bool shown =
+      columns == 5 ||
+      ImGui::CollapsingHeader(
+          (format_text(tr("Methods (%d)"), ticked) + std::string("###methods")).c_str());
+  if (shown && ImGui::BeginTable("methods", columns)) {
+    for (const MethodInfo& m : methods()) {
+      ImGui::TableNextColumn();
+      const draw::Rgba c = draw::method_color(m.id);
+      ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(c.r, c.g, c.b, 1));
+      bool on = panel.methods.has(m.id);
+      if (ImGui::Checkbox(m.name, &on)) panel.methods.set(m.id, on);
+      ImGui::PopStyleColor();
+    }
+    ImGui::EndTable();
+  }
+}
+
 }  // namespace
 
 void draw_compare_panel(ComparePanel& panel, const app::Session& session, float scale, float x,
@@ -81,33 +111,7 @@ void draw_compare_panel(ComparePanel& panel, const app::Session& session, float 
                        ImVec2(160.0f * scale, 0),
                        (std::to_string(done) + " / " + std::to_string(total)).c_str());
   }
-  // Methods: none ticked means all. Five columns; where the longest name does not fit five (a
-  // phone), as many as it fits, folded under a header until opened: unfolded they would take the
-  // chart's room, and the chart is what the step is about.
-  float name = 0.0f;
-  int ticked = 0;
-  for (const MethodInfo& m : methods()) {
-    name = std::max(name, ImGui::CalcTextSize(m.name).x);
-    ticked += panel.methods.has(m.id) ? 1 : 0;
-  }
-  const float column = ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + name +
-                       ImGui::GetStyle().CellPadding.x * 2;
-  const int columns = std::clamp(static_cast<int>(ImGui::GetContentRegionAvail().x / column), 2, 5);
-  const bool shown =
-      columns == 5 ||
-      ImGui::CollapsingHeader(
-          (format_text(tr("Methods (%d)"), ticked) + std::string("###methods")).c_str());
-  if (shown && ImGui::BeginTable("methods", columns)) {
-    for (const MethodInfo& m : methods()) {
-      ImGui::TableNextColumn();
-      const draw::Rgba c = draw::method_color(m.id);
-      ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(c.r, c.g, c.b, 1));
-      bool on = panel.methods.has(m.id);
-      if (ImGui::Checkbox(m.name, &on)) panel.methods.set(m.id, on);
-      ImGui::PopStyleColor();
-    }
-    ImGui::EndTable();
-  }
+  compare_method_ticks(panel);
 
   const SweepResult result = panel.sweep.snapshot();
   if (result.runs.empty()) {

@@ -98,6 +98,33 @@ TitleRows title_rows(const LessonBand& band, float width, float scale) {
   return out;
 }
 
+// The progress bar on the band's foot: one segment a step, as long as its duration (a step's
+// segment from x0 + (start / total)(x1 - x0), with a 2 px gap before it), filled up to now: the
+// steps before whole, the current one by elapsed / its duration.
+void draw_band_progress(const LessonBand& band, float width, float height, float scale) {
+  const int steps = static_cast<int>(band.durations.size());
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  const float x0 = kBandPad * scale, x1 = width - kBandPad * scale, y1 = height - kBandPad * scale,
+              y0 = y1 - kBar * scale;
+  const double total =
+      std::max(1e-9, std::accumulate(band.durations.begin(), band.durations.end(), 0.0));
+  double start = 0.0;
+  for (int k = 0; k < steps; ++k) {
+    const float a =
+        x0 + static_cast<float>(start / total) * (x1 - x0) + (k > 0 ? 2.0f * scale : 0.0f);
+    const float b = x0 + static_cast<float>((start + band.durations[k]) / total) * (x1 - x0);
+    const double filled = k < band.step   ? 1.0
+                          : k > band.step ? 0.0
+                                          : std::clamp(band.elapsed / band.durations[k], 0.0, 1.0);
+    dl->AddRectFilled(ImVec2(a, y0), ImVec2(b, y1), IM_COL32(60, 66, 76, 255), 2.0f);
+    if (filled > 0.0)
+      dl->AddRectFilled(ImVec2(a, y0), ImVec2(a + static_cast<float>(filled) * (b - a), y1),
+                        k == band.step ? IM_COL32(90, 175, 255, 255) : IM_COL32(70, 130, 200, 255),
+                        2.0f);
+    start += band.durations[k];
+  }
+}
+
 }  // namespace
 
 // "Try this: ..." wrapped to the band's width (one line at 1280 x 720; more on a phone).
@@ -134,7 +161,6 @@ BandRequests draw_lesson_band(const LessonBand& band, float width, float scale) 
                    ImGuiWindowFlags_NoNav);
 
   // Where we are, and the way on: the buttons beside the title, or above it in a narrow window.
-  const int steps = static_cast<int>(band.durations.size());
   const TitleRows title = title_rows(band, width, scale);
   const auto buttons = [&] {
     const char* next = next_label(band);
@@ -182,27 +208,7 @@ BandRequests draw_lesson_band(const LessonBand& band, float width, float scale) 
     ImGui::PopStyleColor();
   }
 
-  // Progress: one segment a step, as long as its duration, filled up to now.
-  ImDrawList* dl = ImGui::GetWindowDrawList();
-  const float x0 = kBandPad * scale, x1 = width - kBandPad * scale, y1 = height - kBandPad * scale,
-              y0 = y1 - kBar * scale;
-  const double total =
-      std::max(1e-9, std::accumulate(band.durations.begin(), band.durations.end(), 0.0));
-  double start = 0.0;
-  for (int k = 0; k < steps; ++k) {
-    const float a =
-        x0 + static_cast<float>(start / total) * (x1 - x0) + (k > 0 ? 2.0f * scale : 0.0f);
-    const float b = x0 + static_cast<float>((start + band.durations[k]) / total) * (x1 - x0);
-    const double filled = k < band.step   ? 1.0
-                          : k > band.step ? 0.0
-                                          : std::clamp(band.elapsed / band.durations[k], 0.0, 1.0);
-    dl->AddRectFilled(ImVec2(a, y0), ImVec2(b, y1), IM_COL32(60, 66, 76, 255), 2.0f);
-    if (filled > 0.0)
-      dl->AddRectFilled(ImVec2(a, y0), ImVec2(a + static_cast<float>(filled) * (b - a), y1),
-                        k == band.step ? IM_COL32(90, 175, 255, 255) : IM_COL32(70, 130, 200, 255),
-                        2.0f);
-    start += band.durations[k];
-  }
+  draw_band_progress(band, width, height, scale);
   ImGui::End();
   ImGui::PopStyleColor();
   ImGui::PopStyleVar(2);

@@ -104,6 +104,50 @@ void draw_legend(const app::Session& session, const Legend& legend, float scale)
                 lane.sim.trouble() ? u32(draw::kDiverged) : kText, legend.rows[k].c_str());
   }
 }
+
+// A red label beside each lane that diverged, at the top of its last sane state (one under
+// another, or under the legend, where they would overlap), with the time it is drawn at; apart,
+// its view's title says it.
+void draw_diverged_labels(ImDrawList* dl, const app::Session& session,
+                          const std::vector<draw::LaneView>& views,
+                          const std::vector<Legend>& legends, float scale) {
+  const float pad = 10.0f * scale;
+  const ImU32 back = kBack, red = u32(draw::kDiverged);
+  std::vector<ImVec4> placed;
+  for (const Legend& legend : legends) placed.push_back(legend.box);
+  for (std::size_t index = 0; index < session.lanes().size() && views.size() == 1; ++index) {
+    const app::Lane& lane = session.lanes()[index];
+    const Divergence* trouble = lane.sim.trouble();
+    const draw::LaneView* view = draw::view_of(views, static_cast<int>(index));
+    if (!trouble || !view) continue;
+    char s[200];
+    std::snprintf(s, sizeof s, tr("%s %s at t = %.3g s"), app::lane_label(lane).c_str(),
+                  trouble->unstable ? tr("went unstable") : tr("diverged"), trouble->t);
+    const draw::Viewport& vp = view->viewport;
+    const std::string label = wrapped(s + drawn_as(lane), vp.width - 2.0f * pad - 10.0f);
+    const Eigen::Vector3d at =
+        draw::project(view->view, draw::label_anchor(lane), vp.width, vp.height);
+    const ImVec2 size = ImGui::CalcTextSize(label.c_str());
+    float x = vp.x + static_cast<float>(at.x()) - 0.5f * size.x;
+    float y = vp.y + static_cast<float>(at.y()) - size.y - 8.0f * scale;
+    x = std::clamp(x, vp.x + pad, std::max(vp.x + pad, vp.x + vp.width - pad - size.x));
+    y = std::clamp(y, vp.y + pad, vp.y + vp.height - pad - size.y);
+    // Its background (5 px either side, 2 above and below) clear of every one placed: moved under
+    // the one it meets, 2 px apart (each move passes one box for good, so at most one a box).
+    for (std::size_t moves = 0; moves <= placed.size(); ++moves) {
+      const auto meets = [&](const ImVec4& r) {
+        return x - 5 < r.z && x + size.x + 5 > r.x && y - 2 < r.w && y + size.y + 2 > r.y;
+      };
+      const auto hit = std::find_if(placed.begin(), placed.end(), meets);
+      if (hit == placed.end()) break;
+      y = hit->w + 4.0f;
+    }
+    placed.push_back(ImVec4(x - 5, y - 2, x + size.x + 5, y + size.y + 2));
+    dl->AddRectFilled(ImVec2(x - 5, y - 2), ImVec2(x + size.x + 5, y + size.y + 2), back, 4.0f);
+    dl->AddText(ImVec2(x, y), red, label.c_str());
+  }
+}
+
 }  // namespace
 
 // The mass-spring kind's words (kind_panels.hpp): its method and time, or where it diverged.
@@ -140,7 +184,6 @@ void draw_overlay(const app::Session& session, const std::vector<draw::LaneView>
   const float scale = options.scale;
   const float pad = 10.0f * scale;
   const ImU32 text = kText, back = kBack;
-  const ImU32 red = u32(draw::kDiverged);
 
   // Apart: a thin line between the views.
   if (views.size() > 1)
@@ -185,42 +228,7 @@ void draw_overlay(const app::Session& session, const std::vector<draw::LaneView>
   if (session.comparing())
     for (const draw::LaneView& v : views)
       legends.push_back(legend_of(session, v.lanes, v.viewport, views.size() == 1, scale));
-  // A red label beside each lane that diverged, at the top of its last sane state (one under
-  // another, or under the legend, where they would overlap), with the time it is drawn at; apart,
-  // its view's title says it.
-  std::vector<ImVec4> placed;
-  for (const Legend& legend : legends) placed.push_back(legend.box);
-  for (std::size_t index = 0; index < session.lanes().size() && views.size() == 1; ++index) {
-    const app::Lane& lane = session.lanes()[index];
-    const Divergence* trouble = lane.sim.trouble();
-    const draw::LaneView* view = draw::view_of(views, static_cast<int>(index));
-    if (!trouble || !view) continue;
-    char s[200];
-    std::snprintf(s, sizeof s, tr("%s %s at t = %.3g s"), app::lane_label(lane).c_str(),
-                  trouble->unstable ? tr("went unstable") : tr("diverged"), trouble->t);
-    const draw::Viewport& vp = view->viewport;
-    const std::string label = wrapped(s + drawn_as(lane), vp.width - 2.0f * pad - 10.0f);
-    const Eigen::Vector3d at =
-        draw::project(view->view, draw::label_anchor(lane), vp.width, vp.height);
-    const ImVec2 size = ImGui::CalcTextSize(label.c_str());
-    float x = vp.x + static_cast<float>(at.x()) - 0.5f * size.x;
-    float y = vp.y + static_cast<float>(at.y()) - size.y - 8.0f * scale;
-    x = std::clamp(x, vp.x + pad, std::max(vp.x + pad, vp.x + vp.width - pad - size.x));
-    y = std::clamp(y, vp.y + pad, vp.y + vp.height - pad - size.y);
-    // Its background (5 px either side, 2 above and below) clear of every one placed: moved under
-    // the one it meets, 2 px apart (each move passes one box for good, so at most one a box).
-    for (std::size_t moves = 0; moves <= placed.size(); ++moves) {
-      const auto meets = [&](const ImVec4& r) {
-        return x - 5 < r.z && x + size.x + 5 > r.x && y - 2 < r.w && y + size.y + 2 > r.y;
-      };
-      const auto hit = std::find_if(placed.begin(), placed.end(), meets);
-      if (hit == placed.end()) break;
-      y = hit->w + 4.0f;
-    }
-    placed.push_back(ImVec4(x - 5, y - 2, x + size.x + 5, y + size.y + 2));
-    dl->AddRectFilled(ImVec2(x - 5, y - 2), ImVec2(x + size.x + 5, y + size.y + 2), back, 4.0f);
-    dl->AddText(ImVec2(x, y), red, label.c_str());
-  }
+  draw_diverged_labels(dl, session, views, legends, scale);
 
   for (const Legend& legend : legends) draw_legend(session, legend, scale);
 }

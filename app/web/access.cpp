@@ -55,6 +55,33 @@ std::vector<chart::Chart> charts(const InteractiveApp& app) {
   return out;
 }
 
+namespace {
+
+// The words of the document's own controls and headings, in the app's language (the row's noun
+// the scene kind's: "method", or an IK scene's "solver").
+nlohmann::json describe_labels(const Session& session) {
+  return {{"pause", tr("Pause (space)")},
+          {"resume", tr("Resume (space)")},
+          {"step", tr("Step (S)")},
+          {"reset", tr("Reset (R)")},
+          {"scene", tr("scene")},
+          {"method", tr(session.kind().row_noun())},
+          {"back", tr("\u2190 Back")},
+          {"next", tr("Next \u2192")},
+          {"energy", tr("Energy")},
+          {"sound", tr("Hear the energy of")},
+          {"csv", tr("Download its data (CSV)")},
+          {"particle", tr("particle")},
+          {"hold", tr("Hold it")},
+          {"release", tr("Let go")},
+          {"left", tr("left")},
+          {"right", tr("right")},
+          {"up", tr("up")},
+          {"down", tr("down")}};
+}
+
+}  // namespace
+
 std::string describe(const InteractiveApp& app) {
   using nlohmann::json;
   const Session& session = app.session();
@@ -116,25 +143,7 @@ std::string describe(const InteractiveApp& app) {
   d["charts"] = json::array();
   for (const chart::Chart& c : charts(app))
     d["charts"].push_back({{"title", c.title}, {"summary", chart::describe_chart(c)}});
-  // The words of the document's own controls and headings, in the app's language.
-  d["labels"] = {{"pause", tr("Pause (space)")},
-                 {"resume", tr("Resume (space)")},
-                 {"step", tr("Step (S)")},
-                 {"reset", tr("Reset (R)")},
-                 {"scene", tr("scene")},
-                 {"method", tr(session.kind().row_noun())},
-                 {"back", tr("\u2190 Back")},
-                 {"next", tr("Next \u2192")},
-                 {"energy", tr("Energy")},
-                 {"sound", tr("Hear the energy of")},
-                 {"csv", tr("Download its data (CSV)")},
-                 {"particle", tr("particle")},
-                 {"hold", tr("Hold it")},
-                 {"release", tr("Let go")},
-                 {"left", tr("left")},
-                 {"right", tr("right")},
-                 {"up", tr("up")},
-                 {"down", tr("down")}};
+  d["labels"] = describe_labels(session);
   // (text that is not UTF-8, a file's, is replaced rather than thrown on)
   return d.dump(-1, ' ', false, json::error_handler_t::replace);
 }

@@ -207,6 +207,38 @@ namespace {
 std::string language_part() {
   return current_language() == "en" ? "" : "&lang=" + current_language();
 }
+
+// The link's tableau= parts: a shown lane's tableau (every lane's in compare, else the method's)
+// travels with the link unless it is a shipped one of that name, named as the lane's method.
+std::string link_tableaux(const Session& session) {
+  std::string parts;
+  std::vector<Method> shown;
+  if (session.comparing())
+    for (const Lane& l : session.lanes()) shown.push_back(l.sim.settings().method);
+  else
+    shown.push_back(session.method());
+  for (Method m : shown) {
+    const ButcherTableau* t = tableau_source(m);
+    if (!t) continue;
+    std::error_code ec;
+    const auto shipped =
+        data_dir() / "assets" / "tableaux" / (std::string(method_info(m).name) + ".json");
+    bool same = false;
+    if (std::filesystem::is_regular_file(shipped, ec)) {
+      try {
+        same = tableau_json(load_tableau_file(shipped.string())) == tableau_json(*t);
+      } catch (const InputError&) {
+      }
+    }
+    if (!same) {
+      ButcherTableau named = *t;
+      named.name = method_info(m).name;  // so that the link's tableau gets the lane's name back
+      parts += "&tableau=" + percent_encoded(tableau_json(named));
+    }
+  }
+  return parts;
+}
+
 }  // namespace
 
 std::string link_of(const InteractiveApp& app, const std::vector<std::string>& sets,
@@ -240,32 +272,7 @@ std::string link_of(const InteractiveApp& app, const std::vector<std::string>& s
   // The homework's lanes are made by its code (homework=) with the rows it puts beside them.
   const bool own = std::any_of(session.lanes().begin(), session.lanes().end(),
                                [](const Lane& l) { return !l.own.empty(); });
-  // A lane's tableau travels with the link unless it is a shipped one of that name.
-  std::vector<Method> shown;
-  if (session.comparing())
-    for (const Lane& l : session.lanes()) shown.push_back(l.sim.settings().method);
-  else
-    shown.push_back(session.method());
-  if (own) shown.clear();
-  for (Method m : shown) {
-    const ButcherTableau* t = tableau_source(m);
-    if (!t) continue;
-    std::error_code ec;
-    const auto shipped =
-        data_dir() / "assets" / "tableaux" / (std::string(method_info(m).name) + ".json");
-    bool same = false;
-    if (std::filesystem::is_regular_file(shipped, ec)) {
-      try {
-        same = tableau_json(load_tableau_file(shipped.string())) == tableau_json(*t);
-      } catch (const InputError&) {
-      }
-    }
-    if (!same) {
-      ButcherTableau named = *t;
-      named.name = method_info(m).name;  // so that the link's tableau gets the lane's name back
-      link += "&tableau=" + percent_encoded(tableau_json(named));
-    }
-  }
+  if (!own) link += link_tableaux(session);
   if (own) {
     // (no compare= nor method=: the homework's code makes its lanes and the rows beside them)
   } else if (session.comparing()) {
