@@ -1,7 +1,7 @@
 // Marks: a shape per method, drawn on a chart's points, along its lines and on its legend's
 // swatches, so that lanes are told apart by more than colour (a colour-blind student, a grey
 // print, a washed-out projector). Filled and hollow circles, squares, diamonds and triangles, a
-// plus and a cross: twelve shapes, each method's given by its row (methods/table.cpp).
+// plus and a cross: twelve shapes, each method's given by its row (draw/row_styles.cpp).
 #pragma once
 
 #include <array>
@@ -9,12 +9,11 @@
 #include <cstddef>
 #include <vector>
 
+#include "draw/row_styles.hpp"
 #include "session/session.hpp"
 #include "springlab/methods.hpp"
 
 namespace springlab::draw {
-
-using springlab::Mark;  // (a row's own, MethodInfo::mark)
 
 inline bool hollow(Mark m) {
   switch (m) {
@@ -65,16 +64,16 @@ inline std::vector<std::array<float, 2>> mark_outline(Mark m) {
   }
 }
 
-// A method's mark: its row's (methods/table.cpp).
+// A method's mark: its row's (draw/row_styles.cpp).
 inline Mark method_mark(Method m) {
-  return method_info(m).mark;
+  return method_style(m).mark;
 }
 
 // A lane's: its row's (a method's or an IK solver's), or for a lane of one's own (homework) a cross
 // or a plus (the reference lanes beside it are the Euler rows' and Verlet's).
 inline Mark lane_mark(const app::Lane& lane) {
   if (!lane.own.empty()) return lane.own_index % 2 == 0 ? Mark::Cross : Mark::Plus;
-  return app::lane_row(lane).mark;
+  return row_style(app::lane_row(lane)).mark;
 }
 
 }  // namespace springlab::draw

@@ -8,21 +8,23 @@
 #include <string>
 
 #include "draw/frame.hpp"
+#include "draw/row_styles.hpp"
 #include "session/session.hpp"
 #include "springlab/methods.hpp"
 
 namespace springlab::draw {
 
-// A method's colour: its row's (MethodInfo::colour, chosen and measured in methods/table.cpp),
-// the same in the scene, the charts, the legends and the SVG and PNG charts.
+// A method's colour: its row's (draw/row_styles.cpp, chosen and measured there), the same in
+// the scene, the charts, the legends and the SVG and PNG charts.
 inline Rgba method_color(Method m) {
-  const std::array<float, 3>& c = method_info(m).colour;
+  const std::array<float, 3> c = method_style(m).colour;
   return {c[0], c[1], c[2], 1};
 }
 
 // A lane row's colour (a method's or an IK solver's: its table's).
 inline Rgba row_color(const app::LaneRow& row) {
-  return {row.colour[0], row.colour[1], row.colour[2], 1};
+  const std::array<float, 3> c = row_style(row).colour;
+  return {c[0], c[1], c[2], 1};
 }
 
 // A lane's colour: its row's, or, for a lane of one's own (homework), one of two kept for those,

@@ -23,7 +23,7 @@ int IkKind::row_count() const {
 
 LaneRow IkKind::row(int k) const {
   const IkSolverInfo& s = ik_solvers()[static_cast<std::size_t>(k)];
-  return {s.name, s.label, s.colour, s.mark};
+  return {s.name, s.label, LaneRow::Table::IkSolver, static_cast<int>(s.id)};
 }
 
 std::string IkKind::choices() const {

@@ -23,7 +23,7 @@ class MassSpringKind final : public SceneKind {
   int row_count() const override { return static_cast<int>(methods().size()); }
   LaneRow row(int k) const override {
     const MethodInfo& m = methods()[static_cast<std::size_t>(k)];
-    return {m.name, m.label, m.colour, m.mark};
+    return {m.name, m.label, LaneRow::Table::Method, static_cast<int>(m.id)};
   }
   int row_of(const Lane& lane) const override {
     return static_cast<int>(lane.sim.settings().method);

@@ -24,7 +24,6 @@
 #include <string_view>
 #include <vector>
 
-#include "springlab/mark.hpp"
 #include "springlab/scene.hpp"
 #include "springlab/simulation.hpp"
 
@@ -32,12 +31,14 @@ namespace springlab::app {
 
 struct Lane;
 
-// A row a lane may be, as shown: a method's or an IK solver's.
+// A row a lane may be: a method's or an IK solver's. How it is shown (its colour and mark) is
+// draw's, looked up by its table and its place there (draw/row_styles.hpp).
 struct LaneRow {
-  std::string_view name;        // as typed: "rk4", "fabrik"
-  const char* label;            // as shown to people (untranslated)
-  std::array<float, 3> colour;  // sRGB
-  Mark mark;
+  enum class Table { Method, IkSolver, Own };  // Own: a kind of one's own's rows
+  std::string_view name;                       // as typed: "rk4", "fabrik"
+  const char* label;                           // as shown to people (untranslated)
+  Table table;
+  int id;  // its Method or IkSolver, or its place among its kind's rows (Own)
 };
 
 // What a lane of a kind keeps besides its simulation (an IK lane: its solver, chain and progress).

@@ -106,8 +106,8 @@ TEST(NewRow, IsFoundShownAndDescribedFromItsRowAlone) {
   EXPECT_EQ(kept_summary(row), "P");
   EXPECT_EQ(iterations_for(m, {}), 1);
   // A colour and a mark of its own: neither black nor any other row's colour.
-  EXPECT_NE(row.colour, (std::array<float, 3>{}));
-  EXPECT_NE(draw::method_mark(m), Mark::None);
+  EXPECT_NE(draw::method_style(m).colour, (std::array<float, 3>{}));
+  EXPECT_NE(draw::method_mark(m), draw::Mark::None);
   for (const MethodInfo& other : methods()) {
     if (other.id == m) continue;
     EXPECT_NE(draw::hex(draw::method_color(other.id)), draw::hex(draw::method_color(m)))
@@ -213,7 +213,7 @@ TEST(NewRow, IsALaneInTheAppsCompareMode) {
   SimulationSettings settings = settings_for(scene);
   settings.method = Method::Midpoint;
   app::Session session(std::move(scene), settings, 60.0);
-  session.set_compare({m, Method::Midpoint});
+  session.set_compare_rows(test::method_rows({m, Method::Midpoint}));
   ASSERT_EQ(session.lanes().size(), 2u);
   session.set_auto_substeps();
   session.advance_frame();

@@ -41,8 +41,8 @@ TEST(SceneKind, EachSceneHasItsKindAndItsRows) {
   for (const MethodInfo& m : methods()) {  // row k is method k, as its table says
     const LaneRow row = spring->row(static_cast<int>(m.id));
     EXPECT_EQ(row.name, m.name);
-    EXPECT_EQ(row.colour, m.colour);
-    EXPECT_EQ(row.mark, m.mark);
+    EXPECT_EQ(row.table, LaneRow::Table::Method);  // shown as the method's row (draw's table)
+    EXPECT_EQ(row.id, static_cast<int>(m.id));
   }
   EXPECT_EQ(spring->find("rk4"), static_cast<int>(Method::RK4));
   EXPECT_EQ(spring->find("ccd"), std::nullopt);
@@ -53,14 +53,16 @@ TEST(SceneKind, EachSceneHasItsKindAndItsRows) {
   EXPECT_EQ(arm->kind_name(), "inverse-kinematics");
   EXPECT_EQ(&ui::kind_panels(*arm), &ui::ik_panels());
   ASSERT_EQ(arm->row_count(), 3);
-  std::set<Mark> marks;
+  std::set<draw::Mark> marks;
   for (int k = 0; k < 3; ++k) {
     const IkSolverInfo& s = ik_solvers()[static_cast<std::size_t>(k)];
     EXPECT_EQ(arm->row(k).name, s.name);
-    EXPECT_EQ(arm->row(k).colour, s.colour);
-    marks.insert(s.mark);
+    EXPECT_EQ(arm->row(k).table, LaneRow::Table::IkSolver);
+    marks.insert(draw::row_style(arm->row(k)).mark);
     for (int j = 0; j < k; ++j)
-      EXPECT_GT(distance(arm->row(j).colour, arm->row(k).colour), 0.3) << j << " " << k;
+      EXPECT_GT(distance(draw::row_style(arm->row(j)).colour, draw::row_style(arm->row(k)).colour),
+                0.3)
+          << j << " " << k;
   }
   EXPECT_EQ(marks.size(), 3u);
   EXPECT_EQ(arm->find("fabrik"), 1);
@@ -92,7 +94,7 @@ TEST(SceneKind, TheSolversReachTheTargetThroughTheSessionsCalls) {
   ASSERT_EQ(session.lanes().size(), 3u);
   for (int frame = 0; frame < 600; ++frame) session.advance_frame();
   const Eigen::Vector2d target = session.scene().state.x.row(ik.target).head<2>().transpose();
-  std::set<Mark> marks;
+  std::set<draw::Mark> marks;
   for (const Lane& lane : session.lanes()) {
     const IkLane& part = ik_lane(lane);
     EXPECT_TRUE(part.status.converged) << lane_name(lane);
@@ -101,7 +103,7 @@ TEST(SceneKind, TheSolversReachTheTargetThroughTheSessionsCalls) {
     EXPECT_GT(lane.history.ik_error[0], 100 * ik.settings.tolerance);  // it started away from it
     const LaneRow row = lane_row(lane);
     EXPECT_EQ(lane_name(lane), row.name);
-    EXPECT_EQ(draw::lane_color(lane).r, row.colour[0]);
+    EXPECT_EQ(draw::lane_color(lane).r, draw::row_style(row).colour[0]);
     marks.insert(draw::lane_mark(lane));
   }
   EXPECT_EQ(marks.size(), 3u);
@@ -156,7 +158,7 @@ class TetheredKind : public SceneKind {
   int row_count() const override { return 2; }
   LaneRow row(int k) const override {
     const MethodInfo& m = method_info(k == 0 ? Method::Euler : Method::Verlet);
-    return {m.name, m.label, m.colour, m.mark};
+    return {m.name, m.label, LaneRow::Table::Method, static_cast<int>(m.id)};
   }
   int row_of(const Lane& lane) const override {
     return lane.sim.settings().method == Method::Verlet ? 1 : 0;
@@ -274,9 +276,9 @@ TEST(SceneKind, AKindOfOnesOwnNeedsNoOtherEdit) {
   EXPECT_EQ(guide, 128);
   EXPECT_EQ(spring_colours.size(), 1u);  // not by strain: the lane's colour
   EXPECT_EQ(*spring_colours.begin(),
-            (std::array<float, 4>{method_info(Method::Verlet).colour[0],
-                                  method_info(Method::Verlet).colour[1],
-                                  method_info(Method::Verlet).colour[2], 1.0f}));
+            (std::array<float, 4>{draw::method_style(Method::Verlet).colour[0],
+                                  draw::method_style(Method::Verlet).colour[1],
+                                  draw::method_style(Method::Verlet).colour[2], 1.0f}));
 }
 
 }  // namespace

@@ -67,7 +67,8 @@ std::vector<Method> every_row() {
 // settings' 1e-5, an implicit tableau's stages by Newton to 1e-12 (stage_newton.hpp).
 double solver_tolerance(Method method) {
   const MethodInfo& m = method_info(method);
-  return m.tableau_step ? 1e-12 : StepSettings{}.solver_tolerance;
+  return m.tableau && !m.tableau->is_explicit() && m.tableau_step ? 1e-12
+                                                                  : StepSettings{}.solver_tolerance;
 }
 
 // "Kept" to rounding; "kept to the solver's tolerance" to ten times that tolerance; "not kept"

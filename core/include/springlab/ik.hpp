@@ -23,8 +23,6 @@
 #include <string_view>
 #include <vector>
 
-#include "springlab/mark.hpp"
-
 namespace springlab {
 
 enum class IkSolver { CCD, FABRIK, DLS };
@@ -33,10 +31,6 @@ struct IkSolverInfo {
   IkSolver id;
   const char* name;   // as typed in a scene or on the command line: "ccd", "fabrik", "dls"
   const char* label;  // as shown to people
-  // How its lanes are shown, as a method row's (MethodInfo::colour, mark): Okabe-Ito hues, apart
-  // from one another, and a mark each.
-  std::array<float, 3> colour;
-  Mark mark;
 };
 
 std::span<const IkSolverInfo> ik_solvers();

@@ -20,7 +20,6 @@
 #include "springlab/butcher.hpp"
 #include "springlab/energy.hpp"
 #include "springlab/forces.hpp"
-#include "springlab/mark.hpp"
 #include "springlab/model.hpp"
 #include "springlab/state.hpp"
 #include "springlab/tableau.hpp"
@@ -192,7 +191,8 @@ std::string kept_summary(const MethodInfo& method);
 
 /// A row of the method table: everything a method says of itself. Its name, order, cost,
 /// family, what its stability needs (its tableau's R(z), a closed form, a definite form), its
-/// step function, its defaults, and how it is shown. The app, the command line, the charts, the
+/// step function and its defaults (how it is shown, its colour and mark, is the app's:
+/// app/draw/row_styles.cpp). The app, the command line, the charts, the
 /// stability analysis, the studies and the tests all read these rows (methods()) and branch on
 /// what a row says, never on which row it is: adding a method is its row and its step
 /// (tests/app/new_row_test.cpp adds one and runs it through every consumer).
@@ -244,12 +244,6 @@ struct MethodInfo {
   bool history = false;
   /// One of the rows the app compares when neither the scene nor the user chose any.
   bool compared_first = false;
-  /// How it is shown: its colour (sRGB, each channel in [0, 1]) in the scene, the charts and
-  /// the legends, and its mark. tests/app/palette_test.cpp holds the colours apart under colour
-  /// blindness and as text on the panels. An added row left black, or without a mark, is given
-  /// one (add_method, add_tableau_method).
-  std::array<float, 3> colour{};
-  Mark mark = Mark::None;
 
   bool adaptive() const { return family == MethodFamily::Adaptive; }
   bool implicit() const { return family == MethodFamily::Implicit; }

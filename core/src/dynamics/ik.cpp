@@ -18,18 +18,11 @@ constexpr double kTwoPi = 2.0 * kPi;
 // then leaves that joint as it is rather than turning it by atan2(0, 0).
 constexpr double kNoDirection = 1e-12;
 
+// (How each solver's lanes are shown, its colour and mark, is the app's: app/draw/row_styles.cpp.)
 const IkSolverInfo kSolvers[] = {
-    {IkSolver::CCD,
-     "ccd",
-     N_("Cyclic coord. descent"),
-     {0.90f, 0.38f, 0.00f},
-     Mark::TriangleUp},                                                               // vermilion
-    {IkSolver::FABRIK, "fabrik", N_("FABRIK"), {0.34f, 0.71f, 0.91f}, Mark::Circle},  // sky blue
-    {IkSolver::DLS,
-     "dls",
-     N_("Damped least squares"),
-     {0.00f, 0.66f, 0.48f},
-     Mark::Square},  // bluish green
+    {IkSolver::CCD, "ccd", N_("Cyclic coord. descent")},
+    {IkSolver::FABRIK, "fabrik", N_("FABRIK")},
+    {IkSolver::DLS, "dls", N_("Damped least squares")},
 };
 
 Eigen::Vector2d direction(double phi) {

@@ -11,9 +11,7 @@ namespace springlab::steps {
 
 SPRINGLAB_STEP(euler);
 SPRINGLAB_STEP(symplectic_euler);
-SPRINGLAB_STEP(midpoint);
 SPRINGLAB_STEP(modified_euler);
-SPRINGLAB_STEP(rk4);
 SPRINGLAB_STEP(adaptive_euler);
 SPRINGLAB_STEP(rk45);
 SPRINGLAB_STEP(implicit_euler);

@@ -40,19 +40,7 @@ using F = MethodFamily;
 // The one table. Stability limits are on the undamped oscillator (docs/numerics.md, "The
 // undamped oscillator"); with damping the limit is computed by the stability analysis from what
 // each row gives: its tableau's R(z), its closed form, its definite form.
-//
-// Colours: Okabe and Ito's palette for colour-blind viewers, on a dark background and a
-// projector. The five compared most (every shipped scene's lanes are among explicit Euler,
-// symplectic Euler, RK4, Verlet and implicit Euler) take its five most distinct hues, for
-// protanopes and deuteranopes too: vermilion #E66100, sky blue #56B4E9, bluish green #00A87A,
-// yellow #F0E442 and reddish purple #D985C7; the rest take orange #E69F00, light grey, slate
-// #80999A and a violet, and are seldom beside the ones they resemble; the iterative rows (what
-// games use) salmon #FF8080, lime #A6D854 and aquamarine #00FFE6, apart from the lecture's.
-// Measured (tests/app/palette_test.cpp): the five lecture rows stay 7.8 CIEDE2000 apart or more
-// under simulated protanopia, deuteranopia and tritanopia; the lanes a lesson shows together
-// 7.5; any two rows 4; each at least 4.5:1 as text on the panels.
-// Marks: the five compared most take the five most unlike shapes (a triangle up for the energy
-// that climbs, a circle, a square, a diamond, a triangle down); each row has its own.
+// (How each row is shown, its colour and mark, is the app's: app/draw/row_styles.cpp.)
 // constexpr: constant-initialised, so that the table (below) can copy it during other files'
 // static initialisation (a test's list of methods) whatever the order the linker gives them.
 constexpr MethodInfo kMethods[] = {
@@ -70,9 +58,7 @@ constexpr MethodInfo kMethods[] = {
      .mode_limit = modes::euler,
      .corner_bound = true,
      .audited = true,
-     .compared_first = true,
-     .colour = {0.90f, 0.38f, 0.00f},
-     .mark = Mark::TriangleUp},
+     .compared_first = true},
     {.id = Method::SymplecticEuler,
      .name = "symplectic-euler",
      .label = N_("Symplectic Euler"),
@@ -87,9 +73,7 @@ constexpr MethodInfo kMethods[] = {
      .definite = symplectic_euler_form,
      .corner_bound = true,
      .angular_momentum = Kept::Exactly,
-     .compared_first = true,
-     .colour = {0.34f, 0.71f, 0.91f},
-     .mark = Mark::Circle},
+     .compared_first = true},
     {.id = Method::Midpoint,
      .name = "midpoint",
      .label = N_("Midpoint"),
@@ -99,11 +83,9 @@ constexpr MethodInfo kMethods[] = {
      .stability = N_(
          "midpoint gains energy at any step without damping, slowly: sqrt(1 + (h w)^4 / 4) a step"),
      .family = F::RungeKutta,
-     .step = steps::midpoint,
      .tableau = &kMidpointTableau,
-     .audited = true,
-     .colour = {0.90f, 0.62f, 0.00f},
-     .mark = Mark::Plus},
+     .tableau_step = steps::explicit_tableau,
+     .audited = true},
     {.id = Method::ModifiedEuler,
      .name = "modified-euler",
      .label = N_("Modified Euler"),
@@ -117,9 +99,7 @@ constexpr MethodInfo kMethods[] = {
      .mode_limit = modes::modified_euler,
      .damping_shift = 0.5,
      .corner_bound = true,
-     .audited = true,
-     .colour = {0.78f, 0.78f, 0.78f},
-     .mark = Mark::Cross},
+     .audited = true},
     {.id = Method::RK4,
      .name = "rk4",
      .label = N_("RK4"),
@@ -129,12 +109,10 @@ constexpr MethodInfo kMethods[] = {
          2.8284271247461903,  // 2 sqrt(2) (a literal: std::sqrt is not constexpr in clang)
      .stability = N_("RK4 is stable for h w <= 2 sqrt(2) = 2.83, slightly dissipative below it"),
      .family = F::RungeKutta,
-     .step = steps::rk4,
      .tableau = &kRK4Tableau,
+     .tableau_step = steps::explicit_tableau,
      .audited = true,
-     .compared_first = true,
-     .colour = {0.00f, 0.66f, 0.48f},
-     .mark = Mark::Square},
+     .compared_first = true},
     {.id = Method::AdaptiveEuler,
      .name = "adaptive-euler",
      .label = N_("Adaptive Euler"),
@@ -144,9 +122,7 @@ constexpr MethodInfo kMethods[] = {
      .stability = N_("adaptive Euler controls each step's error, not its energy: undamped, it "
                      "still gains energy"),
      .family = F::Adaptive,
-     .step = steps::adaptive_euler,
-     .colour = {0.50f, 0.60f, 0.60f},
-     .mark = Mark::RingCircle},
+     .step = steps::adaptive_euler},
     {.id = Method::RK45,
      .name = "rk45",
      .label = N_("RK45 (Dormand-Prince)"),
@@ -156,9 +132,7 @@ constexpr MethodInfo kMethods[] = {
      .stability =
          N_("RK45 chooses its own steps to meet the tolerance; stiff scenes make them tiny"),
      .family = F::Adaptive,
-     .step = steps::rk45,
-     .colour = {0.62f, 0.50f, 0.98f},
-     .mark = Mark::RingSquare},
+     .step = steps::rk45},
     {.id = Method::ImplicitEuler,
      .name = "implicit-euler",
      .label = N_("Implicit Euler"),
@@ -172,9 +146,7 @@ constexpr MethodInfo kMethods[] = {
      .tableau = &kImplicitEulerTableau,
      .audited = true,
      .momentum = Kept::ToSolverTolerance,
-     .compared_first = true,
-     .colour = {0.85f, 0.52f, 0.78f},
-     .mark = Mark::TriangleDown},
+     .compared_first = true},
     {.id = Method::Verlet,
      .name = "verlet",
      .label = N_("Verlet"),
@@ -188,9 +160,7 @@ constexpr MethodInfo kMethods[] = {
      .definite = verlet_form,
      .corner_bound = true,
      .angular_momentum = Kept::Exactly,
-     .history = true,
-     .colour = {0.94f, 0.89f, 0.26f},
-     .mark = Mark::Diamond},
+     .history = true},
     // The iterative rows solve implicit Euler's step approximately (methods/iterative.hpp): no
     // limit; their cost at a large step is damping and stretch, which the gauge shows instead.
     // Not audited: each step only lowers the step's objective, so they cannot create energy.
@@ -205,9 +175,7 @@ constexpr MethodInfo kMethods[] = {
      .family = F::Iterative,
      .step = steps::xpbd,
      .default_iterations = 1,
-     .iteration_unit = "passes over the springs",
-     .colour = {1.00f, 0.50f, 0.50f},
-     .mark = Mark::RingTriangleUp},
+     .iteration_unit = "passes over the springs"},
     {.id = Method::LocalGlobal,
      .name = "local-global",
      .label = N_("Local-global (projective)"),
@@ -221,9 +189,7 @@ constexpr MethodInfo kMethods[] = {
      .step = steps::local_global,
      .default_iterations = 10,
      .iteration_unit = "local steps and global solves",
-     .reads_rho = true,
-     .colour = {0.65f, 0.85f, 0.33f},
-     .mark = Mark::RingDiamond},
+     .reads_rho = true},
     {.id = Method::VBD,
      .name = "vbd",
      .label = N_("Vertex block descent"),
@@ -237,9 +203,7 @@ constexpr MethodInfo kMethods[] = {
      .step = steps::vbd,
      .momentum = Kept::No,
      .default_iterations = 10,
-     .iteration_unit = "sweeps over the vertices",
-     .colour = {0.00f, 1.00f, 0.90f},
-     .mark = Mark::RingTriangleDown},
+     .iteration_unit = "sweeps over the vertices"},
 };
 
 // Rows in the enum's order: a method's row is found by its id.
@@ -249,33 +213,6 @@ constexpr bool in_enum_order() {
   return true;
 }
 static_assert(in_enum_order(), "kMethods' rows must be in the order of enum Method");
-
-// Rows added at run time (add_method, add_tableau_method) take these colours in turn, apart from
-// the built-in rows' (peach second: lesson 12 sets the second tableau beside implicit Euler's
-// purple), then hues turned by the golden angle; and the built-in rows' marks again.
-constexpr std::array<float, 3> kAddedColours[] = {
-    {0.00f, 0.85f, 0.95f},  // cyan
-    {1.00f, 0.78f, 0.55f},  // peach
-    {0.80f, 0.60f, 0.35f},  // tan
-    {0.55f, 0.62f, 1.00f},  // periwinkle
-    {0.60f, 1.00f, 0.80f},  // mint
-    {1.00f, 0.60f, 0.80f},  // pink
-};
-void show_added(MethodInfo& row, std::size_t index) {
-  const std::size_t k = index - std::size(kMethods);
-  if (row.colour == std::array<float, 3>{}) {
-    if (k < std::size(kAddedColours)) {
-      row.colour = kAddedColours[k];
-    } else {
-      const float hue = std::fmod(0.61803398875f * static_cast<float>(index), 1.0f);
-      const auto channel = [&](float offset) {
-        return 0.55f + 0.35f * std::cos(6.28318530718f * (hue + offset));
-      };
-      row.colour = {channel(0.0f), channel(-1.0f / 3.0f), channel(1.0f / 3.0f)};
-    }
-  }
-  if (row.mark == Mark::None) row.mark = kMethods[index % std::size(kMethods)].mark;
-}
 
 // The table: the built-in rows, then the rows made from tableaux (add_tableau_method), in fixed
 // storage so that a row, once counted, never moves while other threads (an analysis, a sweep)
@@ -382,7 +319,6 @@ Method add_method(const MethodInfo& given) {
   info.evaluations = row.evaluations.c_str();
   info.stability = row.stability.c_str();
   info.iteration_unit = given.iteration_unit ? row.iteration_unit.c_str() : nullptr;
-  show_added(info, index);
   t.rows[index] = info;
   t.count.store(index + 1, std::memory_order_release);
   return info.id;
@@ -456,7 +392,6 @@ Method add_tableau_method(const ButcherTableau& tableau, const std::string& name
   info.angular_momentum = !a.symplectic     ? Kept::No
                           : explicit_stages ? Kept::Exactly
                                             : Kept::ToSolverTolerance;
-  show_added(info, index);
   t.rows[index] = info;
   t.count.store(index + 1, std::memory_order_release);
   return info.id;
