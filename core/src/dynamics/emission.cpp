@@ -17,6 +17,27 @@ void basis(const Vec3& n, Vec3& u, Vec3& w) {
   w = n.cross(u);
 }
 
+// A particle's lifetime: spawn.lifetime give or take spawn.lifetime_spread, uniformly (one draw
+// from the emitter's stream `s`, an Emission::Stream), never below 0.
+template <typename Stream>
+double spawn_lifetime(const Spawn& spawn, Stream& s) {
+  return std::max(0.0, spawn.lifetime + spawn.lifetime_spread * (2.0 * s.next() - 1.0));
+}
+
+// A particle's speed: spawn.speed give or take spawn.speed_spread, uniformly (one draw).
+template <typename Stream>
+double spawn_speed(const Spawn& spawn, Stream& s) {
+  return spawn.speed + spawn.speed_spread * (2.0 * s.next() - 1.0);
+}
+
+// One of `colors`, each as likely (one draw); white where there are none.
+template <typename Stream>
+Vec3 spawn_color(const std::vector<Vec3>& colors, Stream& s) {
+  if (colors.empty()) return Vec3(Vec3::Ones());
+  const auto k = std::min(colors.size() - 1, static_cast<std::size_t>(s.next() * colors.size()));
+  return colors[k];
+}
+
 }  // namespace
 
 // SplitMix64 (Steele, Lea and Flood 2014): tiny, fast, and the same numbers on every platform,
@@ -109,18 +130,6 @@ void Emission::kill(Model& model, State& state, int i) {
 bool Emission::update(Model& model, State& state) {
   const double t = state.t;
   bool changed = false;
-  const auto lifetime = [](const Spawn& spawn, Stream& s) {
-    return std::max(0.0, spawn.lifetime + spawn.lifetime_spread * (2.0 * s.next() - 1.0));
-  };
-  const auto speed = [](const Spawn& spawn, Stream& s) {
-    return spawn.speed + spawn.speed_spread * (2.0 * s.next() - 1.0);
-  };
-  const auto pick = [](const std::vector<Vec3>& colors, Stream& s) {
-    if (colors.empty()) return Vec3(Vec3::Ones());
-    const auto k = std::min(colors.size() - 1, static_cast<std::size_t>(s.next() * colors.size()));
-    return colors[k];
-  };
-
   // Deaths, in particle order; a shell's sparks are born where and when it died.
   const int n = static_cast<int>(born_.size());
   for (int i = 0; i < n; ++i) {
@@ -134,11 +143,11 @@ bool Emission::update(Model& model, State& state) {
     if (!shell) continue;
     const Emitter::Burst& burst = *model.emitters[k].burst;
     Stream& s = streams_[k];
-    const Vec3 color = pick(burst.colors, s);
+    const Vec3 color = spawn_color(burst.colors, s);
     for (int c = 0; c < burst.count; ++c) {
       const Vec3 dir = direction(burst.spawn, s);
-      const double v0 = speed(burst.spawn, s);
-      const double life = lifetime(burst.spawn, s);
+      const double v0 = spawn_speed(burst.spawn, s);
+      const double life = spawn_lifetime(burst.spawn, s);
       const int j = take(bursts_[k]);
       if (j < 0) {
         ++dropped_;
@@ -175,9 +184,9 @@ bool Emission::update(Model& model, State& state) {
         x += e.radius * std::cbrt(s.next()) * direction(all, s);
       }
       const Vec3 dir = direction(e.spawn, s);
-      const double v0 = speed(e.spawn, s);
-      const double life = lifetime(e.spawn, s);
-      const Vec3 color = pick(e.colors, s);
+      const double v0 = spawn_speed(e.spawn, s);
+      const double life = spawn_lifetime(e.spawn, s);
+      const Vec3 color = spawn_color(e.colors, s);
       const int i = take(pools_[k]);
       if (i < 0) {
         ++dropped_;

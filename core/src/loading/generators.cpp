@@ -126,6 +126,88 @@ void rope(ObjectReader& r, const std::string& name, Builder& b) {
   b.named[name] = {first, static_cast<int>(nodes)};
 }
 
+namespace {
+
+// The cloth's surface: two triangles a square of the lattice, node (i, j) being first + j W + i.
+Surface cloth_surface(const std::string& name, int first, long W, long H) {
+  const auto node = [&](long i, long j) { return first + static_cast<int>(j * W + i); };
+  Surface surface{name, {}};
+  surface.triangles.reserve(2 * (W - 1) * (H - 1));
+  for (long j = 0; j + 1 < H; ++j)
+    for (long i = 0; i + 1 < W; ++i) {
+      surface.triangles.push_back({node(i, j), node(i, j + 1), node(i + 1, j)});
+      surface.triangles.push_back({node(i + 1, j), node(i, j + 1), node(i + 1, j + 1)});
+    }
+  return surface;
+}
+
+// Every neighbour in the 3 x 3 x 3 cell around a node: edges, face and body diagonals. The
+// 13 "forward" offsets visit each pair once. k_s = stiffness x rest length (see the header).
+// Rest lengths from the lattice's spacing (as for the cloth), one material for each length.
+// Node (i, j, k) of the n[0] x n[1] x n[2] lattice is first + (k n[1] + j) n[0] + i.
+void box_springs(Builder& b, int first, const long (&n)[3], const Vec3& size, double stiffness,
+                 double damping) {
+  const auto index = [&](long i, long j, long k) {
+    return first + static_cast<int>((k * n[1] + j) * n[0] + i);
+  };
+  const Vec3 spacing(size.x() / double(n[0] - 1), size.y() / double(n[1] - 1),
+                     size.z() / double(n[2] - 1));
+  std::map<double, int> material_by_length;
+  for (long k = 0; k < n[2]; ++k)
+    for (long j = 0; j < n[1]; ++j)
+      for (long i = 0; i < n[0]; ++i)
+        for (int dk = 0; dk <= 1; ++dk)
+          for (int dj = -1; dj <= 1; ++dj)
+            for (int di = -1; di <= 1; ++di) {
+              if (dk == 0 && (dj < 0 || (dj == 0 && di <= 0))) continue;
+              const long i2 = i + di, j2 = j + dj, k2 = k + dk;
+              if (i2 < 0 || j2 < 0 || i2 >= n[0] || j2 >= n[1] || k2 >= n[2]) continue;
+              const int a = index(i, j, k), c = index(i2, j2, k2);
+              const double L =
+                  Vec3(std::abs(di) * spacing.x(), std::abs(dj) * spacing.y(), dk * spacing.z())
+                      .norm();
+              auto it = material_by_length.find(L);
+              if (it == material_by_length.end())
+                it = material_by_length
+                         .emplace(L, add_material(b.model, {stiffness * L, damping * L}))
+                         .first;
+              add_spring(b.model, a, c, L, it->second);
+            }
+}
+
+// The box's six faces, outward: two triangles a square of the lattice on each.
+Surface box_surface(const std::string& name, int first, const long (&n)[3]) {
+  const auto index = [&](long i, long j, long k) {
+    return first + static_cast<int>((k * n[1] + j) * n[0] + i);
+  };
+  Surface surface{name, {}};
+  const auto quad = [&](int p00, int p10, int p01, int p11) {
+    surface.triangles.push_back({p00, p10, p11});
+    surface.triangles.push_back({p00, p11, p01});
+  };
+  for (long j = 0; j + 1 < n[1]; ++j)
+    for (long i = 0; i + 1 < n[0]; ++i) {
+      quad(index(i, j, 0), index(i, j + 1, 0), index(i + 1, j, 0), index(i + 1, j + 1, 0));
+      const long z = n[2] - 1;
+      quad(index(i, j, z), index(i + 1, j, z), index(i, j + 1, z), index(i + 1, j + 1, z));
+    }
+  for (long k = 0; k + 1 < n[2]; ++k)
+    for (long i = 0; i + 1 < n[0]; ++i) {
+      quad(index(i, 0, k), index(i + 1, 0, k), index(i, 0, k + 1), index(i + 1, 0, k + 1));
+      const long y = n[1] - 1;
+      quad(index(i, y, k), index(i, y, k + 1), index(i + 1, y, k), index(i + 1, y, k + 1));
+    }
+  for (long k = 0; k + 1 < n[2]; ++k)
+    for (long j = 0; j + 1 < n[1]; ++j) {
+      quad(index(0, j, k), index(0, j, k + 1), index(0, j + 1, k), index(0, j + 1, k + 1));
+      const long x = n[0] - 1;
+      quad(index(x, j, k), index(x, j + 1, k), index(x, j, k + 1), index(x, j + 1, k + 1));
+    }
+  return surface;
+}
+
+}  // namespace
+
 void cloth(ObjectReader& r, const std::string& name, Builder& b) {
   const Vec3 center = r.vec3("center", Vec3::Zero());
   const auto* size_json = r.raw("size");
@@ -198,14 +280,7 @@ void cloth(ObjectReader& r, const std::string& name, Builder& b) {
       for (long i = 0; i < W; ++i) spring(node(i, j), node(i, j + 2), 2.0 * sy, m);
   }
 
-  Surface surface{name, {}};
-  surface.triangles.reserve(2 * (W - 1) * (H - 1));
-  for (long j = 0; j + 1 < H; ++j)
-    for (long i = 0; i + 1 < W; ++i) {
-      surface.triangles.push_back({node(i, j), node(i, j + 1), node(i + 1, j)});
-      surface.triangles.push_back({node(i + 1, j), node(i, j + 1), node(i + 1, j + 1)});
-    }
-  b.surfaces.push_back(std::move(surface));
+  b.surfaces.push_back(cloth_surface(name, first, W, H));
   b.named[name] = {first, count};
 }
 
@@ -256,58 +331,9 @@ void box(ObjectReader& r, const std::string& name, Builder& b) {
           cell[c] = index(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2 & 1));
         b.cells.push_back(cell);
       }
-  // Every neighbour in the 3 x 3 x 3 cell around a node: edges, face and body diagonals. The
-  // 13 "forward" offsets visit each pair once. k_s = stiffness x rest length (see the header).
-  // Rest lengths from the lattice's spacing (as for the cloth), one material for each length.
-  const Vec3 spacing(size.x() / double(n[0] - 1), size.y() / double(n[1] - 1),
-                     size.z() / double(n[2] - 1));
-  std::map<double, int> material_by_length;
-  for (long k = 0; k < n[2]; ++k)
-    for (long j = 0; j < n[1]; ++j)
-      for (long i = 0; i < n[0]; ++i)
-        for (int dk = 0; dk <= 1; ++dk)
-          for (int dj = -1; dj <= 1; ++dj)
-            for (int di = -1; di <= 1; ++di) {
-              if (dk == 0 && (dj < 0 || (dj == 0 && di <= 0))) continue;
-              const long i2 = i + di, j2 = j + dj, k2 = k + dk;
-              if (i2 < 0 || j2 < 0 || i2 >= n[0] || j2 >= n[1] || k2 >= n[2]) continue;
-              const int a = index(i, j, k), c = index(i2, j2, k2);
-              const double L =
-                  Vec3(std::abs(di) * spacing.x(), std::abs(dj) * spacing.y(), dk * spacing.z())
-                      .norm();
-              auto it = material_by_length.find(L);
-              if (it == material_by_length.end())
-                it = material_by_length
-                         .emplace(L, add_material(b.model, {stiffness * L, damping * L}))
-                         .first;
-              add_spring(b.model, a, c, L, it->second);
-            }
+  box_springs(b, first, n, size, stiffness, damping);
 
-  // The six faces, outward.
-  Surface surface{name, {}};
-  const auto quad = [&](int p00, int p10, int p01, int p11) {
-    surface.triangles.push_back({p00, p10, p11});
-    surface.triangles.push_back({p00, p11, p01});
-  };
-  for (long j = 0; j + 1 < n[1]; ++j)
-    for (long i = 0; i + 1 < n[0]; ++i) {
-      quad(index(i, j, 0), index(i, j + 1, 0), index(i + 1, j, 0), index(i + 1, j + 1, 0));
-      const long z = n[2] - 1;
-      quad(index(i, j, z), index(i + 1, j, z), index(i, j + 1, z), index(i + 1, j + 1, z));
-    }
-  for (long k = 0; k + 1 < n[2]; ++k)
-    for (long i = 0; i + 1 < n[0]; ++i) {
-      quad(index(i, 0, k), index(i + 1, 0, k), index(i, 0, k + 1), index(i + 1, 0, k + 1));
-      const long y = n[1] - 1;
-      quad(index(i, y, k), index(i, y, k + 1), index(i + 1, y, k), index(i + 1, y, k + 1));
-    }
-  for (long k = 0; k + 1 < n[2]; ++k)
-    for (long j = 0; j + 1 < n[1]; ++j) {
-      quad(index(0, j, k), index(0, j, k + 1), index(0, j + 1, k), index(0, j + 1, k + 1));
-      const long x = n[0] - 1;
-      quad(index(x, j, k), index(x, j + 1, k), index(x, j, k + 1), index(x, j + 1, k + 1));
-    }
-  b.surfaces.push_back(std::move(surface));
+  b.surfaces.push_back(box_surface(name, first, n));
   b.named[name] = {first, static_cast<int>(count)};
 }
 

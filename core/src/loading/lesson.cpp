@@ -166,42 +166,44 @@ void read_orders_claim(ObjectReader& r, LessonClaim& c, const LessonMethodFinder
     r.fail("best", "must be one of the methods in \"orders\" (" + c.best + " is not)");
 }
 
-// The figures a claim of its kind takes, and what it needs of the step's scene.
-void read_claim_figures(ObjectReader& r, LessonClaim& c, const std::string& name,
-                        const LessonStep& step, const Scene& scene,
-                        const std::vector<std::string>& lanes, const LessonMethodFinder& find) {
+// A claim about the simulation (`name`) fails on an inverse-kinematics scene, which has none.
+void claim_needs_dynamics(ObjectReader& r, const std::string& name, const Scene& scene) {
+  if (scene.ik.has_value())
+    r.fail("claim", "'" + name + "' is about a simulation; scene '" + scene.name +
+                        "' is an inverse-kinematics scene");
+}
+
+// The figures of a claim about the simulation's motion (energy, divergence, the exact solution,
+// the stability limit, adaptive steps, momentum, drag, the wiggles): none is about an
+// inverse-kinematics scene.
+void read_motion_claim_figures(ObjectReader& r, LessonClaim& c, const std::string& name,
+                               const LessonStep& step, const Scene& scene) {
   using K = LessonClaim::Kind;
   const json_reader::Range time = {0.0, step.duration};
-  const bool ik = scene.ik.has_value();
-  const auto needs_dynamics = [&] {
-    if (ik)
-      r.fail("claim", "'" + name + "' is about a simulation; scene '" + scene.name +
-                          "' is an inverse-kinematics scene");
-  };
   switch (c.kind) {
     case K::EnergyGrows:
-      needs_dynamics();
+      claim_needs_dynamics(r, name, scene);
       if (r.has("per_step")) c.per_step = r.number("per_step", {1.0, 10.0, true, false});
       c.within = r.number("within", 0.05, {0.0, 1.0, true, false});
       break;
     case K::EnergyDecays:
-      needs_dynamics();
+      claim_needs_dynamics(r, name, scene);
       if (r.has("per_step")) c.per_step = r.number("per_step", {0.0, 1.0, true, true});
       c.within = r.number("within", 0.05, {0.0, 1.0, true, false});
       break;
     case K::Holds:
-      needs_dynamics();
+      claim_needs_dynamics(r, name, scene);
       break;
     case K::EnergyBounded:
-      needs_dynamics();
+      claim_needs_dynamics(r, name, scene);
       c.within = r.number("within", {0.0, 10.0, true, false});
       break;
     case K::Diverges:
-      needs_dynamics();
+      claim_needs_dynamics(r, name, scene);
       c.by = r.number("by", step.duration, time);
       break;
     case K::FollowsExact:
-      needs_dynamics();
+      claim_needs_dynamics(r, name, scene);
       c.within = r.number("within", json_reader::positive(1e3));
       if (!ExactOscillator::detect(scene.model, scene.state))
         r.fail("claim",
@@ -210,36 +212,64 @@ void read_claim_figures(ObjectReader& r, LessonClaim& c, const std::string& name
                    scene.name + "' has none");
       break;
     case K::Limit:
-      needs_dynamics();
+      claim_needs_dynamics(r, name, scene);
       c.h = r.number("h", json_reader::positive(1.0));
       c.within = r.number("within", 0.01, {0.0, 1.0, true, false});
       break;
     case K::StepsAdapt:
-      needs_dynamics();
+      claim_needs_dynamics(r, name, scene);
       c.ratio = r.number("ratio", 2.0, {1.0, 1e6, true, false});
       break;
     case K::MomentumKept:
     case K::LinearMomentumKept:
-      needs_dynamics();
+      claim_needs_dynamics(r, name, scene);
       c.within = r.number("within", 1e-9, json_reader::positive(1.0));
       break;
     case K::LinearMomentumChanges:
-      needs_dynamics();
+      claim_needs_dynamics(r, name, scene);
       c.above = r.number("above", 1e-3, json_reader::positive(1.0));
       break;
     case K::DragSlows:
-      needs_dynamics();
+      claim_needs_dynamics(r, name, scene);
       c.within = r.number("within", 0.02, json_reader::positive(1.0));
       if (!(scene.model.drag > 0.0))
         r.fail("claim", "drag-slows needs drag above 0 in the step's scene (set \"drag\")");
       break;
     case K::InternalDecays:
-      needs_dynamics();
+      claim_needs_dynamics(r, name, scene);
       c.below = r.number("below", {0.0, 1.0, true, true});
+      break;
+    default:
+      break;
+  }
+}
+
+// The figures a claim of its kind takes, and what it needs of the step's scene.
+void read_claim_figures(ObjectReader& r, LessonClaim& c, const std::string& name,
+                        const LessonStep& step, const Scene& scene,
+                        const std::vector<std::string>& lanes, const LessonMethodFinder& find) {
+  using K = LessonClaim::Kind;
+  const json_reader::Range time = {0.0, step.duration};
+  const bool ik = scene.ik.has_value();
+  switch (c.kind) {
+    case K::EnergyGrows:
+    case K::EnergyDecays:
+    case K::Holds:
+    case K::EnergyBounded:
+    case K::Diverges:
+    case K::FollowsExact:
+    case K::Limit:
+    case K::StepsAdapt:
+    case K::MomentumKept:
+    case K::LinearMomentumKept:
+    case K::LinearMomentumChanges:
+    case K::DragSlows:
+    case K::InternalDecays:
+      read_motion_claim_figures(r, c, name, step, scene);
       break;
     case K::ActsAs:
     case K::SolverConverges:
-      needs_dynamics();
+      claim_needs_dynamics(r, name, scene);
       read_iterative_claim(r, c, name, lanes, find);
       break;
     case K::OutOfReach:
@@ -254,7 +284,7 @@ void read_claim_figures(ObjectReader& r, LessonClaim& c, const std::string& name
       }
       break;
     case K::Orders:
-      needs_dynamics();
+      claim_needs_dynamics(r, name, scene);
       read_orders_claim(r, c, find);
       break;
     case K::Bursts:
@@ -293,6 +323,67 @@ LessonClaim read_claim(ObjectReader& r, const LessonStep& step, const Scene& sce
   return c;
 }
 
+// "chart": a name, or one or two in an array (energy, position, phase, steps, region, momentum).
+std::vector<LessonChart> read_step_charts(ObjectReader& r, const json& c) {
+  const std::vector<std::pair<std::string, LessonChart>> charts = {
+      {"energy", LessonChart::Energy}, {"position", LessonChart::Position},
+      {"phase", LessonChart::Phase},   {"steps", LessonChart::Steps},
+      {"region", LessonChart::Region}, {"momentum", LessonChart::Momentum}};
+  std::vector<std::string> names;
+  if (c.is_string())
+    names = {c.get<std::string>()};
+  else if (c.is_array())
+    names = strings(r, "chart");
+  if (names.empty() || names.size() > 2)
+    r.fail("chart", "must be one or two of energy, position, phase, steps and region, " +
+                        json_reader::describe(c));
+  std::vector<LessonChart> out;
+  for (const std::string& n : names) {
+    const auto at =
+        std::find_if(charts.begin(), charts.end(), [&](const auto& x) { return x.first == n; });
+    if (at == charts.end())
+      r.fail("chart",
+             "must be one or two of energy, position, phase, steps and region, got \"" + n + "\"");
+    out.push_back(at->second);
+  }
+  return out;
+}
+
+// The step's lanes against its scene: an inverse-kinematics scene's solvers named in "compare"
+// (no method, no dynamics' settings, no accuracy chart nor region); "compare" 2 to 4 lanes, each
+// known and named once, and not with "method".
+void check_step_lanes(ObjectReader& r, const LessonStep& step, const Scene& scene,
+                      const LessonMethodFinder& find) {
+  if (scene.ik) {
+    if (step.method)
+      r.fail("method", "scene '" + scene.name +
+                           "' is an inverse-kinematics scene: it has solvers (" +
+                           ik_solver_names() + "), not methods; name them in \"compare\"");
+    for (const char* key : {"dt", "ks", "kd", "substeps", "iterations"})
+      if (r.has(key))
+        r.fail(key, "has no meaning on inverse-kinematics scene '" + scene.name + "'");
+    if (step.accuracy || step.region)
+      r.fail("show", "an inverse-kinematics scene has no accuracy chart nor stability region");
+  }
+  if (!step.compare.empty()) {
+    if (step.compare.size() < 2 || step.compare.size() > 4)
+      r.fail("compare", "must name 2 to 4 lanes");
+    for (std::size_t k = 0; k < step.compare.size(); ++k) {
+      const std::string& n = step.compare[k];
+      const bool known = scene.ik ? find_ik_solver(n).has_value() : find(n).has_value();
+      if (!known)
+        json_reader::fail_at(r.where(), r.path("compare") + "/" + std::to_string(k),
+                             "unknown " + std::string(scene.ik ? "solver" : "method") + " '" + n +
+                                 "' (" + (scene.ik ? ik_solver_names() : method_names()) + ")");
+      if (std::count(step.compare.begin(), step.compare.end(), n) > 1)
+        r.fail("compare", "names '" + n + "' twice");
+    }
+    if (step.method)
+      r.fail("method",
+             "give either \"method\" (one lane) or \"compare\" (lanes side by side), not both");
+  }
+}
+
 LessonStep read_step(ObjectReader& r, const std::string& folder, const LessonSceneOpener& open,
                      const LessonMethodFinder& find) {
   LessonStep step;
@@ -326,29 +417,7 @@ LessonStep read_step(ObjectReader& r, const std::string& folder, const LessonSce
   }
   step.duration = r.number("duration", {0.0, 600.0, true, false});
   step.speed = r.number("speed", 1.0, {1.0 / 16.0, 4.0});
-  if (const json* c = r.raw("chart")) {  // a name, or one or two in an array
-    const std::vector<std::pair<std::string, LessonChart>> charts = {
-        {"energy", LessonChart::Energy}, {"position", LessonChart::Position},
-        {"phase", LessonChart::Phase},   {"steps", LessonChart::Steps},
-        {"region", LessonChart::Region}, {"momentum", LessonChart::Momentum}};
-    std::vector<std::string> names;
-    if (c->is_string())
-      names = {c->get<std::string>()};
-    else if (c->is_array())
-      names = strings(r, "chart");
-    if (names.empty() || names.size() > 2)
-      r.fail("chart", "must be one or two of energy, position, phase, steps and region, " +
-                          json_reader::describe(*c));
-    step.charts.clear();
-    for (const std::string& n : names) {
-      const auto at =
-          std::find_if(charts.begin(), charts.end(), [&](const auto& x) { return x.first == n; });
-      if (at == charts.end())
-        r.fail("chart", "must be one or two of energy, position, phase, steps and region, got \"" +
-                            n + "\"");
-      step.charts.push_back(at->second);
-    }
-  }
+  if (const json* c = r.raw("chart")) step.charts = read_step_charts(r, *c);
   for (const std::string& s : strings(r, "show")) {
     if (s == "region")
       step.region = true;
@@ -377,34 +446,7 @@ LessonStep read_step(ObjectReader& r, const std::string& folder, const LessonSce
   }
   step.scene = path_like ? scene_path : step.scene;
 
-  if (scene.ik) {
-    if (step.method)
-      r.fail("method", "scene '" + scene.name +
-                           "' is an inverse-kinematics scene: it has solvers (" +
-                           ik_solver_names() + "), not methods; name them in \"compare\"");
-    for (const char* key : {"dt", "ks", "kd", "substeps", "iterations"})
-      if (r.has(key))
-        r.fail(key, "has no meaning on inverse-kinematics scene '" + scene.name + "'");
-    if (step.accuracy || step.region)
-      r.fail("show", "an inverse-kinematics scene has no accuracy chart nor stability region");
-  }
-  if (!step.compare.empty()) {
-    if (step.compare.size() < 2 || step.compare.size() > 4)
-      r.fail("compare", "must name 2 to 4 lanes");
-    for (std::size_t k = 0; k < step.compare.size(); ++k) {
-      const std::string& n = step.compare[k];
-      const bool known = scene.ik ? find_ik_solver(n).has_value() : find(n).has_value();
-      if (!known)
-        json_reader::fail_at(r.where(), r.path("compare") + "/" + std::to_string(k),
-                             "unknown " + std::string(scene.ik ? "solver" : "method") + " '" + n +
-                                 "' (" + (scene.ik ? ik_solver_names() : method_names()) + ")");
-      if (std::count(step.compare.begin(), step.compare.end(), n) > 1)
-        r.fail("compare", "names '" + n + "' twice");
-    }
-    if (step.method)
-      r.fail("method",
-             "give either \"method\" (one lane) or \"compare\" (lanes side by side), not both");
-  }
+  check_step_lanes(r, step, scene, find);
   step.script.file = r.where();
   step.script.events = read_events(r.objects("events"), scene);
   for (ObjectReader& c : r.objects("claims"))

@@ -57,6 +57,55 @@ std::vector<TableauEntry> weights(const json* value, const char* key, int stages
   return out;
 }
 
+// Row i of A (`row`, i from 0, of `stages` rows): its entries, a short row padded with zeros (a
+// row may stop after its last nonzero entry); none nonzero above the diagonal (only explicit and
+// diagonally implicit tableaux), and its diagonal entry a_ii >= 0.
+std::vector<TableauEntry> tableau_row(const json& row, int i, int stages,
+                                      const std::string& where) {
+  const std::string pointer = "/A/" + std::to_string(i);
+  if (!row.is_array())
+    fail_at(
+        where, pointer,
+        "row " + std::to_string(i + 1) + " of A must be an array, " + json_reader::describe(row));
+  if (static_cast<int>(row.size()) > stages)
+    fail_at(where, pointer,
+            "row " + std::to_string(i + 1) + " of A has " + std::to_string(row.size()) +
+                " entries: A must be square, " + std::to_string(stages) + " x " +
+                std::to_string(stages) + " (a row may stop after its last nonzero entry)");
+  std::vector<TableauEntry> out;
+  for (int j = 0; j < stages; ++j) {
+    if (j >= static_cast<int>(row.size())) {
+      out.push_back({"0", 0.0});
+      continue;
+    }
+    const std::string place =
+        "A row " + std::to_string(i + 1) + ", column " + std::to_string(j + 1);
+    TableauEntry e =
+        entry(row[static_cast<std::size_t>(j)], pointer + "/" + std::to_string(j), where, place);
+    if (j > i && e.value != 0.0)
+      fail_at(where, pointer + "/" + std::to_string(j),
+              place + " is " + e.text +
+                  ", above the diagonal: a fully implicit tableau is not supported; "
+                  "only explicit (A strictly lower triangular) and diagonally implicit (A lower "
+                  "triangular) ones are");
+    out.push_back(std::move(e));
+  }
+  // Q(z) = det(I - z A) = prod (1 - a_ii z): a negative a_ii is a pole of R at z = 1 / a_ii on
+  // the negative real axis, where the stage's solve (I - h a_ii J) is singular for a decaying
+  // mode.
+  const Rational diagonal = *parse_rational(out[static_cast<std::size_t>(i)].text);
+  if (diagonal < 0)
+    fail_at(where, pointer + "/" + std::to_string(i),
+            "A row " + std::to_string(i + 1) + ", column " + std::to_string(i + 1) + " is " +
+                out[static_cast<std::size_t>(i)].text +
+                ": a negative diagonal entry puts a pole of R(z) at z = " +
+                rational_text(Rational(1 / diagonal)) + " on the negative real axis (stage " +
+                std::to_string(i + 1) +
+                "'s solve is singular where h lambda = " + rational_text(Rational(1 / diagonal)) +
+                " for a decaying mode lambda); a diagonally implicit stage needs a_ii >= 0");
+  return out;
+}
+
 }  // namespace
 
 ButcherTableau parse_tableau(const std::string& json_text, const std::string& where) {
@@ -85,50 +134,8 @@ ButcherTableau parse_tableau(const std::string& json_text, const std::string& wh
     fail_at(where, "/A",
             "A has " + std::to_string(t.stages) + " rows: at most " + std::to_string(kMaxStages) +
                 " stages");
-  for (int i = 0; i < t.stages; ++i) {
-    const json& row = (*A)[static_cast<std::size_t>(i)];
-    const std::string pointer = "/A/" + std::to_string(i);
-    if (!row.is_array())
-      fail_at(
-          where, pointer,
-          "row " + std::to_string(i + 1) + " of A must be an array, " + json_reader::describe(row));
-    if (static_cast<int>(row.size()) > t.stages)
-      fail_at(where, pointer,
-              "row " + std::to_string(i + 1) + " of A has " + std::to_string(row.size()) +
-                  " entries: A must be square, " + std::to_string(t.stages) + " x " +
-                  std::to_string(t.stages) + " (a row may stop after its last nonzero entry)");
-    t.a.emplace_back();
-    for (int j = 0; j < t.stages; ++j) {
-      if (j >= static_cast<int>(row.size())) {
-        t.a.back().push_back({"0", 0.0});
-        continue;
-      }
-      const std::string place =
-          "A row " + std::to_string(i + 1) + ", column " + std::to_string(j + 1);
-      TableauEntry e =
-          entry(row[static_cast<std::size_t>(j)], pointer + "/" + std::to_string(j), where, place);
-      if (j > i && e.value != 0.0)
-        fail_at(where, pointer + "/" + std::to_string(j),
-                place + " is " + e.text +
-                    ", above the diagonal: a fully implicit tableau is not supported; "
-                    "only explicit (A strictly lower triangular) and diagonally implicit (A lower "
-                    "triangular) ones are");
-      t.a.back().push_back(std::move(e));
-    }
-    // Q(z) = det(I - z A) = prod (1 - a_ii z): a negative a_ii is a pole of R at z = 1 / a_ii on
-    // the negative real axis, where the stage's solve (I - h a_ii J) is singular for a decaying
-    // mode.
-    const Rational diagonal = *parse_rational(t.a.back()[static_cast<std::size_t>(i)].text);
-    if (diagonal < 0)
-      fail_at(where, pointer + "/" + std::to_string(i),
-              "A row " + std::to_string(i + 1) + ", column " + std::to_string(i + 1) + " is " +
-                  t.a.back()[static_cast<std::size_t>(i)].text +
-                  ": a negative diagonal entry puts a pole of R(z) at z = " +
-                  rational_text(Rational(1 / diagonal)) + " on the negative real axis (stage " +
-                  std::to_string(i + 1) +
-                  "'s solve is singular where h lambda = " + rational_text(Rational(1 / diagonal)) +
-                  " for a decaying mode lambda); a diagonally implicit stage needs a_ii >= 0");
-  }
+  for (int i = 0; i < t.stages; ++i)
+    t.a.push_back(tableau_row((*A)[static_cast<std::size_t>(i)], i, t.stages, where));
   const json* b = r.raw("b");
   if (!b) fail_at(where, "/b", "a tableau needs b, its weights: one a stage");
   t.b = weights(b, "b", t.stages, where);

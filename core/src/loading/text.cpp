@@ -68,6 +68,39 @@ struct Entry {
   int line = 0;
 };
 
+// The header's fields (the msgstr of the entry whose msgid is empty): "Language: zh_CN" sets the
+// catalog's language, "X-Language-Name: ..." its name.
+void po_read_header(Catalog& catalog, const std::string& header) {
+  std::istringstream fields(header);
+  const auto value = [](const std::string& field, std::size_t from) {
+    const std::size_t start = field.find_first_not_of(' ', from);
+    return start == std::string::npos ? std::string() : field.substr(start);
+  };
+  for (std::string field; std::getline(fields, field);) {
+    if (field.rfind("Language:", 0) == 0) catalog.language = language_tag(value(field, 9));
+    if (field.rfind("X-Language-Name:", 0) == 0) catalog.name = value(field, 16);
+  }
+}
+
+// A whole entry into the catalog: it must have a msgid and a msgstr (else the reader fails at its
+// first line); the header read as such; a fuzzy or untranslated one left out; a msgctxt's
+// context kept before the msgid, joined by '\x04' as gettext keys it.
+void po_add_entry(Catalog& catalog, Reader& reader, const Entry& entry) {
+  if (!entry.has_id) {
+    reader.line = entry.line;
+    reader.fail("an entry has no msgid");
+  }
+  if (!entry.has_str) {
+    reader.line = entry.line;
+    reader.fail("msgid \"" + entry.id + "\" has no msgstr");
+  }
+  if (entry.id.empty()) {  // the header: "Language: zh_CN\n" among its fields
+    po_read_header(catalog, entry.str);
+  } else if (!entry.fuzzy && !entry.str.empty()) {
+    catalog.entries[entry.has_context ? entry.context + '\x04' + entry.id : entry.id] = entry.str;
+  }
+}
+
 }  // namespace
 
 Catalog read_po(const std::string& text, const std::string& origin) {
@@ -77,30 +110,7 @@ Catalog read_po(const std::string& text, const std::string& origin) {
   std::string* target = nullptr;  // the string a continuation line extends
   std::string ignored;            // msgid_plural and msgstr[1...]: one form is kept
   const auto finish = [&] {
-    if (entry.has_id || entry.has_context || entry.has_str) {
-      if (!entry.has_id) {
-        reader.line = entry.line;
-        reader.fail("an entry has no msgid");
-      }
-      if (!entry.has_str) {
-        reader.line = entry.line;
-        reader.fail("msgid \"" + entry.id + "\" has no msgstr");
-      }
-      if (entry.id.empty()) {  // the header: "Language: zh_CN\n" among its fields
-        std::istringstream fields(entry.str);
-        const auto value = [](const std::string& field, std::size_t from) {
-          const std::size_t start = field.find_first_not_of(' ', from);
-          return start == std::string::npos ? std::string() : field.substr(start);
-        };
-        for (std::string field; std::getline(fields, field);) {
-          if (field.rfind("Language:", 0) == 0) catalog.language = language_tag(value(field, 9));
-          if (field.rfind("X-Language-Name:", 0) == 0) catalog.name = value(field, 16);
-        }
-      } else if (!entry.fuzzy && !entry.str.empty()) {
-        catalog.entries[entry.has_context ? entry.context + '\x04' + entry.id : entry.id] =
-            entry.str;
-      }
-    }
+    if (entry.has_id || entry.has_context || entry.has_str) po_add_entry(catalog, reader, entry);
     entry = Entry{};
     target = nullptr;
   };

@@ -236,6 +236,77 @@ bool Probe::holds(double h, long steps) {
   return true;
 }
 
+// How long a probe at h runs (measured_limit). The mode the analysis expects to fail first
+// (w, c; the scene's Verlet damping d) sets it: long enough for that mode's energy to grow
+// 1e9-fold, ln(1e9) / (2 ln rho), so that the whole energy grows a thousandfold even if the push
+// gave the mode a millionth of it; at least 200 steps, at most max_steps.
+struct ProbeLength {
+  Method method;
+  double w, c, d;
+  long max_steps;
+  double guess = 0.0;     // the expected limit, or 1 / w
+  bool any_step = false;  // stable at any step, as the table or the analysis says
+
+  // The steps for the expected mode's energy to grow 1e9-fold at h, in [200, max_steps].
+  long to_see(double h) const {
+    const double rho = amplification(method, w, c, h, d);
+    if (!(rho > 1.0)) return max_steps;
+    const double steps = std::ceil(std::log(1e9) / (2.0 * std::log(rho)));
+    return std::clamp(static_cast<long>(std::min(steps, 1e12)), 200L, max_steps);
+  }
+  // A probe at h runs as long as a thousandfold growth takes for the expected mode at h, or at
+  // 0.5 % past its limit if h is below that (the slowest growth a run still has to see). A method
+  // stable at any step (implicit Euler, the iterative rows, a tableau the analysis proves
+  // A-stable: its limit infinite) is probed from h w = 1 up to 1000 with runs of 2000 steps: were
+  // it unstable there, a step that large would show it within them (a mode past a limit at
+  // h w >= 1 grows by at least its own factor a step), and runs of max_steps would cost the
+  // iterative rows minutes, and a diagonally implicit tableau's Newton-solved stages 14 s on the
+  // one spring (SDIRK3, whose |R| <= 1 everywhere left runs of max_steps at every probe).
+  long at(double h) const {
+    const long n = to_see(std::max(h, 1.005 * guess));
+    return any_step ? std::min(n, 2000L) : n;
+  }
+};
+
+// The bracket [lo, hi] round the limit, from the guess: up (x1.25, then doubling) while runs
+// hold, or down (/1.25, then halving) while they fail. Where that decides it, the verdict: stable
+// past 1000 times the guess (an infinite limit), unstable below a thousandth of it (0), or the
+// budget spent with every probe held (stable at least to lo).
+std::optional<MeasuredLimit> bracket_limit(Probe& probe, const ProbeLength& run, double budget,
+                                           double& lo, double& hi) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const double guess = run.guess;
+  MeasuredLimit out;
+  lo = guess;
+  hi = guess;
+  if (probe.holds(guess, run.at(guess))) {
+    for (hi = guess * 1.25;; hi *= 2.0) {
+      // Every step probed held, and no more runs: stable at least to lo.
+      if (probe.spent > budget) {
+        out.h = lo;
+        out.resolution = kInf;
+        out.at_least = true;
+        return out;
+      }
+      if (!probe.holds(hi, run.at(hi))) break;
+      lo = hi;
+      if (hi > 1e3 * guess) {
+        out.h = kInf;
+        return out;
+      }
+    }
+  } else {
+    for (lo = guess / 1.25; !probe.holds(lo, run.at(lo)); lo /= 2.0) {
+      hi = lo;
+      if (lo < 1e-3 * guess) {
+        out.h = 0.0;
+        return out;
+      }
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 MeasuredLimit measured_limit(Method method, const Model& model, const State& state,
@@ -258,75 +329,30 @@ MeasuredLimit measured_limit(Method method, const Model& model, const State& sta
       std::clamp(static_cast<long>(budget / (20.0 * probe->size)), 200L, 200000L);
   const double& spent = probe->spent;
 
-  // The mode the analysis expects to fail first sets how long a run must be: long enough for
-  // that mode's energy to grow 1e9-fold, ln(1e9) / (2 ln rho), so that the whole energy grows a
-  // thousandfold even if the push gave the mode a millionth of it. At least 200 steps.
+  // The mode the analysis expects to fail first sets how long a run must be (ProbeLength).
   const double w = expected.mode ? expected.mode->w : w_max;
   const double c = expected.mode ? expected.mode->c : 0.0;
-  const double d = model.verlet_damping;
-  const auto steps_to_see = [&](double h) -> long {
-    const double rho = amplification(method, w, c, h, d);
-    if (!(rho > 1.0)) return max_steps;
-    const double steps = std::ceil(std::log(1e9) / (2.0 * std::log(rho)));
-    return std::clamp(static_cast<long>(std::min(steps, 1e12)), 200L, max_steps);
-  };
+  ProbeLength run{method, w, c, model.verlet_damping, max_steps};
   const auto holds = [&](double h, long steps) { return probe->holds(h, steps); };
-  const auto holds_for = [&](double h) { return holds(h, steps_to_see(h)); };
 
   // Unstable at any step, says the analysis: then runs from h w = 0.3 up grow, fast enough to
   // see (midpoint's (h w)^4 / 8 a step is the slowest), and 0 is what they measure.
   if (expected.h == 0.0 && w > 0.0) {
-    if (!holds_for(0.3 / w)) {
+    if (!holds(0.3 / w, run.to_see(0.3 / w))) {
       out.h = 0.0;
       return out;
     }
   }
-  const double guess = std::isfinite(expected.h) && expected.h > 0.0 ? expected.h
-                       : w > 0.0                                     ? 1.0 / w
-                                                                     : 1.0;
-  // A probe at h runs as long as a thousandfold growth takes for the expected mode at h, or at
-  // 0.5 % past its limit if h is below that (the slowest growth a run still has to see).
-  // A method stable at any step (implicit Euler, the iterative rows, a tableau the analysis proves
-  // A-stable: its limit infinite) is probed from h w = 1 up to 1000 with runs of 2000 steps: were
-  // it unstable there, a step that large would show it within them (a mode past a limit at
-  // h w >= 1 grows by at least its own factor a step), and runs of max_steps would cost the
-  // iterative rows minutes, and a diagonally implicit tableau's Newton-solved stages 14 s on the
-  // one spring (SDIRK3, whose |R| <= 1 everywhere left runs of max_steps at every probe).
-  const bool any_step = method_info(method).any_step() || std::isinf(expected.h);
-  const auto length = [&](double h) {
-    const long n = steps_to_see(std::max(h, 1.005 * guess));
-    return any_step ? std::min(n, 2000L) : n;
-  };
-  double lo = guess, hi = guess;
-  if (holds(guess, length(guess))) {
-    for (hi = guess * 1.25;; hi *= 2.0) {
-      if (spent > budget) {  // every step probed held, and no more runs: stable at least to lo
-        out.h = lo;
-        out.resolution = kInf;
-        out.at_least = true;
-        return out;
-      }
-      if (!holds(hi, length(hi))) break;
-      lo = hi;
-      if (hi > 1e3 * guess) {
-        out.h = kInf;
-        return out;
-      }
-    }
-  } else {
-    for (lo = guess / 1.25; !holds(lo, length(lo)); lo /= 2.0) {
-      hi = lo;
-      if (lo < 1e-3 * guess) {
-        out.h = 0.0;
-        return out;
-      }
-    }
-  }
+  run.guess = std::isfinite(expected.h) && expected.h > 0.0 ? expected.h : w > 0.0 ? 1.0 / w : 1.0;
+  run.any_step = method_info(method).any_step() || std::isinf(expected.h);
+  double lo, hi;
+  if (std::optional<MeasuredLimit> decided = bracket_limit(*probe, run, budget, lo, hi))
+    return *decided;
   // Bisection, to 0.1 %, while runs of at most max_steps can still see the growth at the
   // bracket's midpoint.
   while (hi > lo * 1.001) {
     const double mid = 0.5 * (lo + hi);
-    const long n = length(mid);
+    const long n = run.at(mid);
     if (n >= max_steps || spent > budget)
       break;  // runs this long could no longer tell, or no more runs
     (holds(mid, n) ? lo : hi) = mid;
@@ -335,7 +361,7 @@ MeasuredLimit measured_limit(Method method, const Model& model, const State& sta
   // A run of max_steps steps cannot see the growth within `blind` past the expected limit: the
   // largest step that held may be that far above the true limit.
   double blind = 1e-3;
-  while (blind < 1.0 && steps_to_see(guess * (1.0 + blind)) >= max_steps) blind *= 1.25;
+  while (blind < 1.0 && run.to_see(run.guess * (1.0 + blind)) >= max_steps) blind *= 1.25;
   out.resolution = std::max(hi / lo - 1.0, blind);
   return out;
 }

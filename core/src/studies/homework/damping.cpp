@@ -174,6 +174,42 @@ std::string damping_text(const Damping& d, Step step) {
 
 namespace {
 
+// The drag `drag` (c from f = -c u on the probe masses) measured again on masses four times
+// heavier (last: the code holds the rope built last): a drag written as an acceleration
+// (a -= c v) is four times the force there; as a force, the same. Whether it is the former.
+bool euler_drag_is_a_rate(const Bench& bench, double drag) {
+  const Vec2 u(1.0, 0.5), zero = Vec2::Zero();
+  const Vec2 together[3] = {u, u, u}, none[3] = {zero, zero, zero};
+  const BuiltRope heavy = bench.build(three_heavy_masses());
+  const Motion th = move(bench, heavy, Step::Euler, together),
+               sh = move(bench, heavy, Step::Euler, none);
+  const double c_heavy = -force(th, sh, 1).dot(u) / u.squaredNorm();
+  return std::abs(c_heavy - 4.0 * drag) <= 1e-3 * std::abs(4.0 * drag);
+}
+
+// The verdict on an even damping found: a wrong sign fails, none is a note, else it passes,
+// said in its forms (damping_text).
+void euler_damping_verdict(const Damping& out, CheckSection& section) {
+  const std::string forms = damping_text(out, Step::Euler);
+  if (out.drag < 0.0 || out.along < 0.0 || out.relative < 0.0)
+    fail(section, "damping-sign",
+         format_text(tr("the damping has the wrong sign: it pushes the masses along their motion "
+                        "(%s: a damping "
+                        "coefficient must be positive, f = -c v opposes the velocity)"),
+                     forms.c_str()));
+  else if (!out.any())
+    note(section, "no-damping",
+         tr("no damping: masses moving together, or apart, keep their velocity (Part 2 adds a "
+            "global damping, a drag f "
+            "= -c v)"));
+  else
+    pass(section, "damping",
+         format_text(
+             tr("damping: %s (fitted from single steps of masses moving together, across and along "
+                "their springs)"),
+             forms.c_str()));
+}
+
 Damping euler_damping(const Bench& bench, const BuiltRope& rope, CheckSection& section) {
   Damping out;
   const Vec2 u(1.0, 0.5), across(0.0, 1.0), along(1.0, 0.0), zero = Vec2::Zero();
@@ -239,38 +275,13 @@ Damping euler_damping(const Bench& bench, const BuiltRope& rope, CheckSection& s
   }
   out.relative = present(relative) ? relative : 0.0;
   out.along = present(both - relative) ? both - relative : 0.0;
-  // The same on masses four times heavier (last: the code holds the rope built last): a drag
-  // written as an acceleration (a -= c v) is four times the force there; as a force, the same.
-  if (out.drag != 0.0 && !uneven) {
-    const BuiltRope heavy = bench.build(three_heavy_masses());
-    const Motion th = move(bench, heavy, Step::Euler, together),
-                 sh = move(bench, heavy, Step::Euler, none);
-    const double c_heavy = -force(th, sh, 1).dot(u) / u.squaredNorm();
-    if (std::abs(c_heavy - 4.0 * out.drag) <= 1e-3 * std::abs(4.0 * out.drag)) {
-      out.drag /= kProbeMass;
-      out.drag_rate = true;
-    }
+  if (out.drag != 0.0 && !uneven && euler_drag_is_a_rate(bench, out.drag)) {
+    out.drag /= kProbeMass;
+    out.drag_rate = true;
   }
 
   if (uneven) return out;
-  const std::string forms = damping_text(out, Step::Euler);
-  if (out.drag < 0.0 || out.along < 0.0 || out.relative < 0.0)
-    fail(section, "damping-sign",
-         format_text(tr("the damping has the wrong sign: it pushes the masses along their motion "
-                        "(%s: a damping "
-                        "coefficient must be positive, f = -c v opposes the velocity)"),
-                     forms.c_str()));
-  else if (!out.any())
-    note(section, "no-damping",
-         tr("no damping: masses moving together, or apart, keep their velocity (Part 2 adds a "
-            "global damping, a drag f "
-            "= -c v)"));
-  else
-    pass(section, "damping",
-         format_text(
-             tr("damping: %s (fitted from single steps of masses moving together, across and along "
-                "their springs)"),
-             forms.c_str()));
+  euler_damping_verdict(out, section);
   return out;
 }
 

@@ -64,16 +64,8 @@ double fit_drag(const Model& undamped, const std::vector<State>& run, double h) 
   return std::abs(c) > 1e-9 ? c : 0.0;
 }
 
-Identified identify_step(const OwnStep& step, const std::string& name, const bool* single_precision,
-                         CheckSection& section) {
-  const RopeRequest rope = checked_rope();
-  const Model model = rope_model(rope, kCheckGravity);
-  const double h = kCheckStep;
-  std::vector<State> run{rope_at_rest(rope)};
-  Workspace ws;
-  for (int n = 0; n < kCheckSteps; ++n) run.push_back(own_step(step, model, run.back(), h, ws));
-  const bool in_float = single_precision && *single_precision;
-
+// The pin: the pinned particle (0) must stay where it started over the whole run.
+void check_own_pin(const std::vector<State>& run, CheckSection& section) {
   double pin = 0.0;
   for (const State& s : run) pin = std::max(pin, (s.x.row(0) - run[0].x.row(0)).norm());
   if (pin == 0.0)
@@ -85,21 +77,17 @@ Identified identify_step(const OwnStep& step, const std::string& name, const boo
                         "from force(x, v), which "
                         "gives a pinned particle none"),
                      num(pin).c_str(), kCheckSteps));
+}
 
-  std::vector<Method> rows = candidate_rows(false);
-  for (Method verlet : candidate_rows(true))
-    rows.push_back(verlet);  // from (x, v): velocity Verlet
-  std::vector<Damping> variants{Damping{}};
-  if (const double c = fit_drag(model, run, h); c != 0.0) {
-    Damping rate;
-    rate.drag = c;
-    rate.drag_rate = true;
-    variants.push_back(rate);
-  }
-
+// The row, with the damping variant, that each step of the run (at kCheckStep) matches best: one
+// every step matches within kMatch (or float's rounding, in float) before any other, then the
+// smallest worst deviation. `best_within`: whether every step matched it.
+Identified nearest_own_row(const std::vector<State>& run, const RopeRequest& rope,
+                           const std::vector<Method>& rows, const std::vector<Damping>& variants,
+                           bool in_float, bool& best_within) {
+  const double h = kCheckStep;
   Identified best;
   best.deviation = std::numeric_limits<double>::infinity();
-  bool best_within = false;
   for (Method row : rows)
     for (const Damping& d : variants) {
       Model damped = rope_model(rope, kCheckGravity, d);
@@ -125,6 +113,34 @@ Identified identify_step(const OwnStep& step, const std::string& name, const boo
         best_within = within;
       }
     }
+  return best;
+}
+
+Identified identify_step(const OwnStep& step, const std::string& name, const bool* single_precision,
+                         CheckSection& section) {
+  const RopeRequest rope = checked_rope();
+  const Model model = rope_model(rope, kCheckGravity);
+  const double h = kCheckStep;
+  std::vector<State> run{rope_at_rest(rope)};
+  Workspace ws;
+  for (int n = 0; n < kCheckSteps; ++n) run.push_back(own_step(step, model, run.back(), h, ws));
+  const bool in_float = single_precision && *single_precision;
+
+  check_own_pin(run, section);
+
+  std::vector<Method> rows = candidate_rows(false);
+  for (Method verlet : candidate_rows(true))
+    rows.push_back(verlet);  // from (x, v): velocity Verlet
+  std::vector<Damping> variants{Damping{}};
+  if (const double c = fit_drag(model, run, h); c != 0.0) {
+    Damping rate;
+    rate.drag = c;
+    rate.drag_rate = true;
+    variants.push_back(rate);
+  }
+
+  bool best_within = false;
+  Identified best = nearest_own_row(run, rope, rows, variants, in_float, best_within);
   const std::optional<Method> found = find_method(best.method);
   const MethodInfo& row = method_info(found ? *found : Method::Euler);
   const std::string where =
