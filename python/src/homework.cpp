@@ -96,7 +96,11 @@ homework::OwnStep python_step(const py::object& fn, const std::string& name,
   };
 }
 
-void bind_homework(py::module_& m) {
+namespace {
+
+// The language springlab writes its words in (the homework report): set_language, language,
+// languages; at import the environment's, as the app takes it.
+void bind_languages(py::module_& m) {
   m.def(
       "set_language",
       [](const std::string& tag) {
@@ -122,7 +126,11 @@ void bind_homework(py::module_& m) {
     app::use_language(app::environment_language(), false);
   } catch (const InputError&) {
   }
+}
 
+// HomeworkReport: what springlab.homework.check found, as text and line by line, its counts and
+// the row of the table the step is.
+void bind_homework_report(py::module_& m) {
   py::class_<homework::Report>(m, "HomeworkReport",
                                "what springlab.homework.check found, line by line")
       .def_property_readonly(
@@ -158,6 +166,13 @@ void bind_homework(py::module_& m) {
         return "<springlab.HomeworkReport " + std::to_string(r.passed()) + " passed, " +
                std::to_string(r.failed()) + " failed>";
       });
+}
+
+}  // namespace
+
+void bind_homework(py::module_& m) {
+  bind_languages(m);
+  bind_homework_report(m);
 
   m.def(
       "_homework_check",

@@ -15,15 +15,12 @@ py::array_t<T> vector_view(const std::vector<T>& values, const py::handle& owner
   return a;
 }
 
-}  // namespace
+using ScenePy = py::class_<LoadedScene, std::shared_ptr<LoadedScene>>;
 
-void bind_scenes(py::module_& m) {
-  py::class_<LoadedScene, std::shared_ptr<LoadedScene>>(m, "Scene",
-                                                        R"(A scene as loaded from its JSON file.
-
-Made by springlab.load_scene(); its arrays are read-only views of the loaded scene. A Simulation,
-a sweep or a StabilityAnalysis made from it starts from this state.)")
-      .def_property_readonly("name", [](const LoadedScene& s) { return s.scene.name; })
+// Scene's name, file and overrides, its description and counts, its settings (methods, dt,
+// sub-steps, safety, duration, tolerance) and physics (gravity, drag).
+void bind_scene_settings(ScenePy& scene) {
+  scene.def_property_readonly("name", [](const LoadedScene& s) { return s.scene.name; })
       .def_property_readonly("file", [](const LoadedScene& s) { return s.scene.file; })
       .def_property_readonly(
           "overrides", [](const LoadedScene& s) { return s.sets; },
@@ -59,7 +56,13 @@ a sweep or a StabilityAnalysis made from it starts from this state.)")
                              [](const LoadedScene& s) { return s.scene.ik.has_value(); })
       .def_property_readonly("gravity",
                              [](const LoadedScene& s) { return Vec3(s.scene.model.gravity); })
-      .def_property_readonly("drag", [](const LoadedScene& s) { return s.scene.model.drag; })
+      .def_property_readonly("drag", [](const LoadedScene& s) { return s.scene.model.drag; });
+}
+
+// Scene's arrays (positions, velocities, masses, pinned, springs, rest lengths; the read-only
+// ones views of the loaded scene), its generators' particles by name, and its repr.
+void bind_scene_arrays(ScenePy& scene) {
+  scene
       .def_property_readonly(
           "positions", [](const LoadedScene& s) { return view(s.scene.state.x); },
           py::return_value_policy::reference_internal, "N x 3, m (read-only)")
@@ -115,6 +118,17 @@ a sweep or a StabilityAnalysis made from it starts from this state.)")
                "': " + std::to_string(s.scene.model.particle_count()) + " particles, " +
                std::to_string(s.scene.model.spring_count()) + " springs>";
       });
+}
+
+}  // namespace
+
+void bind_scenes(py::module_& m) {
+  ScenePy scene_class(m, "Scene", R"(A scene as loaded from its JSON file.
+
+Made by springlab.load_scene(); its arrays are read-only views of the loaded scene. A Simulation,
+a sweep or a StabilityAnalysis made from it starts from this state.)");
+  bind_scene_settings(scene_class);
+  bind_scene_arrays(scene_class);
 
   m.def(
       "load_scene",

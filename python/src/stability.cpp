@@ -20,9 +20,9 @@ std::string repr(const StabilityLimit& l) {
          describe(l) + ">";
 }
 
-}  // namespace
-
-void bind_stability(py::module_& m) {
+// LimitingMode and StabilityLimit: a method's largest stable step on a scene, and the mode that
+// sets it.
+void bind_stability_limit(py::module_& m) {
   py::class_<LimitingMode>(m, "LimitingMode", "the mode that sets a method's limit")
       .def_readonly("w", &LimitingMode::w, "its frequency, rad/s")
       .def_readonly("c", &LimitingMode::c, "its damping rate, 1/s: it decays as exp(-c t / 2)")
@@ -48,7 +48,11 @@ void bind_stability(py::module_& m) {
           "description", [](const StabilityLimit& l) { return describe(l); },
           "as `springlab run` says it: 'stable up to h = ...'")
       .def("__repr__", &repr);
+}
 
+// StabilityAnalysis: a scene linearised at its equilibrium, each method's limit on it, its
+// frequencies, eigenvalues and modes, and a stable step's transient growth.
+void bind_stability_analysis(py::module_& m) {
   py::class_<StabilityAnalysis, AnalysisPtr>(m, "StabilityAnalysis",
                                              R"(A scene's stability, for every method.
 
@@ -110,6 +114,13 @@ states, the limiting mode included.)")
           py::arg("method"), py::arg("h"), py::arg("verlet_damping") = 0.0,
           "(factor, growing): the most a stable step raises a mode's energy, and how many modes "
           "grow");
+}
+
+}  // namespace
+
+void bind_stability(py::module_& m) {
+  bind_stability_limit(m);
+  bind_stability_analysis(m);
 
   m.def(
       "equilibrium",

@@ -88,9 +88,9 @@ py::dict summary_table(const std::vector<MethodSummary>& rows) {
   return t;
 }
 
-}  // namespace
-
-void bind_sweep(py::module_& m) {
+// What a sweep's result holds besides its tables: DriftTrace (a method's energy drift at the
+// scene's step), SolverErrorCurve and SolverErrorStudy (the iterative methods' solver error).
+void bind_sweep_parts(py::module_& m) {
   py::class_<DriftTrace>(m, "DriftTrace", "a method's energy drift at the scene's step")
       .def_property_readonly(
           "method", [](const DriftTrace& d) { return std::string(method_info(d.method).name); })
@@ -115,7 +115,11 @@ void bind_sweep(py::module_& m) {
       .def_readonly("motion", &SolverErrorStudy::motion)
       .def_readonly("residual", &SolverErrorStudy::residual)
       .def_readonly("curves", &SolverErrorStudy::curves);
+}
 
+// SweepResult: the runs and the summary as tables of numpy arrays, the drift traces, the
+// reference and what the sweep measured of the scene.
+void bind_sweep_result(py::module_& m) {
   py::class_<SweepResult>(m, "SweepResult",
                           R"(Accuracy against cost, as `springlab compare` measures it.
 
@@ -135,6 +139,13 @@ fitted_points, measured_stable_h, measured_resolution, theoretical_stable_h, the
       .def_readonly("motion", &SweepResult::motion, "m: the reference's largest RMS displacement")
       .def_readonly("w_max", &SweepResult::w_max, "rad/s at the equilibrium")
       .def_readonly("solver", &SweepResult::solver);
+}
+
+}  // namespace
+
+void bind_sweep(py::module_& m) {
+  bind_sweep_parts(m);
+  bind_sweep_result(m);
 
   m.def(
       "sweep",
