@@ -1,14 +1,15 @@
 #!/usr/bin/env python3
-"""No function over 100 lines in app/, core/ or python/src/ without a reason (issue 43): a function
-that long reads as several, and its parts want names. A function may be longer where the comment
-just above its first line says why, in a line that begins "Long:" ("// Long: the table of ..." ).
-Fails naming each function over the limit, its file, first line and length; fails too when it
-reads fewer than MIN functions (default 1000; the tree has about 1,550), so that a scan that finds
-nothing cannot pass. Usage:
+"""No function over 80 lines in app/, core/ or python/src/ without a reason (issues 43 and 58): a
+function that long reads as several, and its parts want names. A function may be longer where the
+comment just above its first line says why, in a line that begins "Long:" ("// Long: the table of
+..." ). Fails naming each function over the limit (LIMIT lines, default 80), its file, first line
+and length; fails too when it reads fewer than MIN functions (default 1000; the tree has about
+1,680), so that a scan that finds nothing cannot pass. Usage:
   function_length_test.py ROOT [LIMIT] [--min-functions MIN]
-  function_length_test.py --self-test   (runs itself on tests/house/fixtures/function_length/, a
-      planted 130-line function with no reason, and expects it to fail naming it; and on the same
-      fixture with the default floor, and expects it to fail for reading too few)"""
+  function_length_test.py --self-test   (runs itself on tests/house/fixtures/function_length/,
+      planted 130- and 90-line functions with no reason, and expects it to fail naming both at the
+      default limit and only the first at a limit of 100; and on the same fixture with the default
+      floor, and expects it to fail for reading too few)"""
 import pathlib
 import re
 import subprocess
@@ -27,17 +28,25 @@ def self_test():
         print(p.stdout + p.stderr, end="")
         return p.returncode, p.stdout + p.stderr
     problems = []
-    rc, out = run("100", "--min-functions", "3")
+    long_named = "core/long_function.cpp:7: planted_long_function is 130 lines"
+    ninety_named = "core/long_function.cpp:270: planted_ninety_line_function is 90 lines"
+    rc, out = run("--min-functions", "4")  # the default limit, 80
     if rc == 0:
-        problems.append("the planted long function passed")
-    if "core/long_function.cpp:6: planted_long_function is 130 lines" not in out:
-        problems.append("planted_long_function (core/long_function.cpp:6, 130 lines) was not named")
+        problems.append("the planted long functions passed")
+    if long_named not in out:
+        problems.append("planted_long_function (core/long_function.cpp:7, 130 lines) was not named")
+    if ninety_named not in out:
+        problems.append("planted_ninety_line_function (core/long_function.cpp:270, 90 lines) was not "
+                        "named at the default limit")
     if "long_with_a_reason" in out or "short_function" in out:
         problems.append("a function with a reason, or a short one, was named")
+    rc, out = run("100", "--min-functions", "4")  # a limit given: the 90-line function is within it
+    if rc == 0 or long_named not in out or "planted_ninety_line_function" in out:
+        problems.append("at a limit of 100, not planted_long_function alone was named")
     rc, out = run()  # the default floor: the fixture's few functions are too few
     if rc == 0 or "too few" not in out:
-        problems.append("reading the fixture's 3 functions passed the default floor")
-    self_test_verdict(problems, "the check fails on the planted function and on too few read")
+        problems.append("reading the fixture's 4 functions passed the default floor")
+    self_test_verdict(problems, "the check fails on the planted functions and on too few read")
 
 
 args = sys.argv[1:]
@@ -45,7 +54,7 @@ if args == ["--self-test"]:
     self_test()
 min_functions = take_floor(args, "--min-functions", 1000)
 root = pathlib.Path(args[0] if args else ".")
-limit = int(args[1]) if len(args) > 1 else 100
+limit = int(args[1]) if len(args) > 1 else 80
 SCOPES = re.compile(r"\b(namespace|class|struct|union|enum)\b|extern\s*\"C\"")
 
 
