@@ -32,6 +32,17 @@ inline std::vector<Method> fixed_step() {
   return methods_where([](const MethodInfo& m) { return !m.adaptive(); });
 }
 
+// A mass-spring scene's rows for these methods, for Session::choose and set_compare_rows: its
+// kind's row k is Method k (app/session/mass_spring_kind.cpp).
+inline int method_row(Method method) {
+  return static_cast<int>(method);
+}
+inline std::vector<int> method_rows(const std::vector<Method>& methods) {
+  std::vector<int> rows;
+  for (Method m : methods) rows.push_back(method_row(m));
+  return rows;
+}
+
 inline std::string scene_path(const std::string& name) {
   return std::string(SPRINGLAB_SOURCE_DIR) + "/assets/scenes/" + name + ".json";
 }

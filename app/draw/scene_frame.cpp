@@ -7,6 +7,7 @@
 
 #include "draw/camera.hpp"
 #include "draw/palette.hpp"
+#include "session/mass_spring_kind.hpp"
 
 namespace springlab::draw {
 
@@ -174,8 +175,8 @@ Frame build_frame(const app::Session& session, const ViewOptions& options, const
                                line_width});  // (sane state when diverged)
       }
     }
-    if (options.trails)
-      for (const auto& trail : lane.trails)
+    if (const app::MassSpringLane* part = app::mass_spring_lane(lane); part && options.trails)
+      for (const auto& trail : part->trails)
         for (std::size_t k = 1; k < trail.size(); ++k) {
           Rgba c = compare ? tint : Rgba{1.0f, 0.78f, 0.3f, 1.0f};
           Rgba c0 = c, c1 = c;

@@ -1,5 +1,7 @@
-// What the charts plot: per lane, a few quantities sampled once a frame, the last kCapacity
-// samples kept (20 s at 60 frames a second).
+// What the charts plot: per lane, a few quantities every kind has (its simulation's), sampled once
+// a frame, the last kCapacity samples kept (20 s at 60 frames a second). What only one kind has
+// its kind samples into the lane's part (scene_kind.hpp: an IK lane's distance to the target, a
+// mass-spring lane's momentum), as long as these.
 #pragma once
 
 #include <cstddef>
@@ -34,15 +36,11 @@ struct History {
   Series net;   // E - E0 - W (Simulation::net_energy): with `dissipated`, the method's own losses
   Series x, v;  // the watched particle: its coordinate along the watched axis, and velocity
   Series exact_x;   // the exact solution there, where the scene has one (else empty)
-  Series ik_error;  // IK scenes: the distance from the chain's end to the target (m)
   Series step;      // adaptive methods: the internal step their controller chose (s)
   Series rejected;  // adaptive methods: tries thrown away so far
-  // A free body (momentum.hpp): |P - P0| and |L - L0| against their scales since it became free
-  // (NaN while it is not).
-  Series linear_change, angular_change;
   void clear() {
-    for (Series* s : {&t, &kinetic, &potential, &total, &dissipated, &net, &x, &v, &exact_x,
-                      &ik_error, &step, &rejected, &linear_change, &angular_change})
+    for (Series* s :
+         {&t, &kinetic, &potential, &total, &dissipated, &net, &x, &v, &exact_x, &step, &rejected})
       s->clear();
   }
 };

@@ -82,8 +82,8 @@ void IkKind::iterate(Lane& lane, int iterations) const {
     lane.sim.place(ik_.first_joint + static_cast<int>(j), Vec3(joints[j].x(), joints[j].y(), 0.0));
 }
 
-void IkKind::sample(Lane& lane) const {
-  lane.history.ik_error.push(part(lane).status.error);
+void IkKind::sample(Lane& lane, const Session&) const {
+  part(lane).error.push(part(lane).status.error);
 }
 
 std::vector<GuideCircle> IkKind::guides() const {

@@ -6,18 +6,23 @@
 
 #include <Eigen/Core>
 
+#include "session/history.hpp"
 #include "session/scene_kind.hpp"
 #include "springlab/ik.hpp"
 #include "springlab/text.hpp"
 
 namespace springlab::app {
 
-// An IK lane's part: its solver, its chain as the solver left it, its progress.
+// An IK lane's part: its solver, its chain as the solver left it, its progress, and the series
+// the kind samples (its chart's).
 struct IkLane : LanePart {
   IkSolver solver = IkSolver::CCD;
   IkChain chain;
   IkStatus status;  // status.iterations: since the target last moved
   Eigen::Vector2d target = Eigen::Vector2d::Zero();
+  Series error;  // the distance from the chain's end to the target (m), a frame, as History's t
+
+  void clear_samples() override { error.clear(); }
 };
 
 // A lane's IK part (throws std::bad_cast for a lane of another kind).
@@ -33,14 +38,16 @@ class IkKind final : public SceneKind {
   int row_of(const Lane& lane) const override;
   const char* row_noun() const override { return N_("solver"); }
   std::string choices() const override;
-  int initial_row(Method) const override { return static_cast<int>(ik_.solvers.front()); }
+  int initial_row(const SimulationSettings&) const override {
+    return static_cast<int>(ik_.solvers.front());
+  }
   std::vector<int> compared_first() const override;
 
   void configure(SimulationSettings&, int) const override {}
   void start(Lane& lane, int row) const override;
   void switch_to(Lane& lane, int row) const override;
   void after_steps(Lane& lane, Steps steps) const override;
-  void sample(Lane& lane) const override;
+  void sample(Lane& lane, const Session& session) const override;
 
   int handle() const override { return ik_.target; }
   std::vector<GuideCircle> guides() const override;

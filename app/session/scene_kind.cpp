@@ -5,6 +5,7 @@
 #include <string>
 
 #include "session/ik_kind.hpp"
+#include "session/mass_spring_kind.hpp"
 #include "session/session.hpp"
 #include "springlab/error.hpp"
 

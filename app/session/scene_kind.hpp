@@ -4,7 +4,8 @@
 //
 //   mass-spring          a Model stepped by a method; particles, springs, cells, emitters,
 //                        colliders and attractors are its data, not kinds of their own. A lane is
-//                        a row of the method table (methods.hpp). mass_spring_kind.cpp.
+//                        a row of the method table (methods.hpp), with its trails and momentum
+//                        (MassSpringLane). mass_spring_kind.hpp.
 //   inverse kinematics   a scene with an "ik" part: solvers placing a chain's joints, a few
 //                        iterations a frame, towards a target particle that the model moves. A lane
 //                        is a row of the IK solvers' table (ik.hpp), with its own chain (IkLane).
@@ -30,6 +31,7 @@
 namespace springlab::app {
 
 struct Lane;
+class Session;
 
 // A row a lane may be: a method's or an IK solver's. How it is shown (its colour and mark) is
 // draw's, looked up by its table and its place there (draw/row_styles.hpp).
@@ -41,9 +43,13 @@ struct LaneRow {
   int id;  // its Method or IkSolver, or its place among its kind's rows (Own)
 };
 
-// What a lane of a kind keeps besides its simulation (an IK lane: its solver, chain and progress).
+// What a lane of a kind keeps besides its simulation (an IK lane: its solver, chain and progress;
+// a mass-spring lane: its trails and momentum), and the series the kind samples into it beside
+// the lane's History (an IK lane's distance to the target).
 struct LanePart {
   virtual ~LanePart() = default;
+  // Its series cleared, as the lane's History is (Session::watch); a reset makes a new part.
+  virtual void clear_samples() {}
 };
 
 // A circle the scene view draws as a guide (an IK chain: the circles its end can reach).
@@ -76,8 +82,10 @@ class SceneKind {
   // The lanes a list such as "euler,verlet" names, 2 to Session::kMaxLanes of them; throws
   // InputError naming `option` and what this kind's rows are.
   std::vector<int> lanes_named(const std::string& list, const char* option) const;
-  // The row the session starts with (the settings' method, or the scene's first solver).
-  virtual int initial_row(Method method) const = 0;
+  // The row a session makes a lane of when none is asked for (its first lane; set_own_lanes given
+  // none): the one `settings` were configured with (configure: a mass-spring scene's method, from
+  // its options or the last chosen), or the kind's own first (an IK scene's first solver).
+  virtual int initial_row(const SimulationSettings& settings) const = 0;
   // What compare sets side by side when nothing else is chosen: the scene's own list, else the
   // rows marked to be compared first.
   virtual std::vector<int> compared_first() const = 0;
@@ -93,8 +101,10 @@ class SceneKind {
   virtual void switch_to(Lane& lane, int row) const = 0;
   // After a lane's steps: the kind's own work (an IK solver's iterations).
   virtual void after_steps(Lane& lane, Steps steps) const = 0;
-  // Samples into the lane's history what only this kind has.
-  virtual void sample(Lane& lane) const = 0;
+  // Samples what only this kind has, into the lane's part (its series, its trails, ...), once a
+  // frame after the session has sampled what every kind has into the lane's History (the scene
+  // and the frame number are the session's).
+  virtual void sample(Lane& lane, const Session& session) const = 0;
 
   // The scene.
   // A particle by which the user moves the scene (an IK target), drawn large and the only one
@@ -110,7 +120,5 @@ class SceneKind {
 // The kind of `scene`: the one place that asks (an "ik" part makes it inverse kinematics;
 // scene_kind.cpp).
 std::unique_ptr<SceneKind> make_scene_kind(const Scene& scene);
-// The mass-spring kind with these methods' rows first (mass_spring_kind.cpp).
-std::unique_ptr<SceneKind> make_mass_spring_kind(const std::vector<Method>& methods);
 
 }  // namespace springlab::app

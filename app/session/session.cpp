@@ -31,7 +31,7 @@ Session::Session(Scene scene, SimulationSettings settings, double fps,
   // An unstable lane goes on, marked (Simulation::trouble()), until it diverges or is reset: the
   // class sees where the instability leads; `run` stops there instead.
   settings_.audit_stops = false;
-  lanes_.push_back(make_lane(kind_->initial_row(settings_.method)));
+  lanes_.push_back(make_lane(kind_->initial_row(settings_)));
   // Watch the last free particle (a rope's free end, the spring's mass), along the spring of an
   // exact oscillator, else along gravity, else along x.
   for (int i = scene_.model.particle_count() - 1; i >= 0; --i)
@@ -87,7 +87,6 @@ Lane Session::make_lane(int row) const {
   kind_->configure(s, row);
   Lane lane(Simulation(scene_.model, scene_.state, s));
   lane.exact = ExactOscillator::detect(scene_.model, scene_.state);
-  lane.trails.resize(scene_.trails.size());
   lane.kind = kind_.get();
   lane.sane = scene_.state;
   kind_->start(lane, row);
@@ -114,16 +113,8 @@ void Session::set_compare_rows(const std::vector<int>& rows) {
   restart_lanes(rows.empty() ? std::vector<int>{kind_->row_of(lanes_.front())} : rows);
 }
 
-namespace {
-
-bool moving(const Momentum& m, const Model& model) {
-  double mass = 0.0;
-  for (double each : model.mass) mass += each;
-  return m.linear_scale > 1e-9 * mass;
-}
-
-}  // namespace
-
+// What every kind has (its simulation's energies, the watched particle, the adaptive step), then
+// the kind's own (SceneKind::sample).
 void Session::sample(Lane& lane) {
   const Simulation& sim = lane.sim;
   const Energy e = sim.energy();
@@ -138,35 +129,9 @@ void Session::sample(Lane& lane) {
   h.x.push(sim.state().x(watched_, watched_axis_));
   h.v.push(sim.state().v(watched_, watched_axis_));
   if (lane.exact) h.exact_x.push(lane.exact->at(t).x(watched_, watched_axis_));
-  kind_->sample(lane);
   h.step.push(sim.adaptive_step());
   h.rejected.push(static_cast<double>(sim.counters().rejected));
-  // Inverted cells: every frame, or twice a second for a box past 32768 cells (a 128^3 lattice's
-  // two million take tens of milliseconds).
-  if (!scene_.cells.empty() && (scene_.cells.size() <= 32768 || frame_ % 30 == 0))
-    lane.inverted_cells =
-        sim.diverged() ? 0 : springlab::inverted_cells(scene_.cells, sim.state().x);
-  // A free body's momentum from when it is free and moving: at rest its scale, sum m |v|, is
-  // rounding's, and a change against it noise over noise. Moving: a mean speed past 1 nm/s.
-  if (!free_body(sim.model())) {
-    lane.free_since.reset();
-  } else if (!lane.free_since || !moving(*lane.free_since, sim.model())) {
-    lane.free_since = momentum(sim.model(), sim.state());
-    if (!moving(*lane.free_since, sim.model())) lane.free_since.reset();
-  }
-  const MomentumChange change =
-      lane.free_since && !sim.diverged()
-          ? momentum_change(*lane.free_since, momentum(sim.model(), sim.state()))
-          : MomentumChange{std::nan(""), std::nan("")};
-  h.linear_change.push(change.linear);
-  h.angular_change.push(change.angular);
-  // Trails follow sane states only (a diverged lane's last good one may be far off).
-  const bool sane = !sim.diverged() && lane.sane.t == t;
-  for (std::size_t k = 0; k < lane.trails.size() && sane; ++k) {
-    auto& trail = lane.trails[k];
-    trail.push_back(sim.state().x.row(scene_.trails[k]).transpose());
-    if (trail.size() > kTrailLength) trail.erase(trail.begin());
-  }
+  kind_->sample(lane, *this);
 }
 
 void Session::advance_frame() {
@@ -293,26 +258,14 @@ void Session::set_own_lanes(const std::vector<OwnLane>& own, const std::vector<B
     model_changed(lane);
     lanes_.push_back(std::move(lane));
   }
-  if (lanes_.empty()) lanes_.push_back(make_lane(kind_->initial_row(settings_.method)));
+  if (lanes_.empty()) lanes_.push_back(make_lane(kind_->initial_row(settings_)));
   target_ = scene_.state.t;
   for (Lane& lane : lanes_) sample(lane);
-}
-
-void Session::set_compare(const std::vector<Method>& methods) {
-  std::vector<int> rows;
-  for (Method m : methods) rows.push_back(static_cast<int>(m));
-  set_compare_rows(rows);
 }
 
 void Session::model_changed(Lane& lane) {
   // The exact solution now starts from the current state, with the new constants.
   lane.exact = ExactOscillator::detect(lane.sim.model(), lane.sim.state());
-}
-
-void Session::set_method(Method method) {
-  ++edits_;
-  settings_.method = method;
-  if (!comparing()) lanes_.front().sim.set_method(method);
 }
 
 void Session::set_dt(double dt) {
@@ -401,11 +354,9 @@ void Session::reset() {
   for (Lane& l : lanes_) {
     l.sim.reset();
     l.history.clear();
-    l.free_since.reset();
-    for (auto& trail : l.trails) trail.clear();
     l.exact = ExactOscillator::detect(l.sim.model(), l.sim.state());
     l.sane = l.sim.state();
-    kind_->start(l, kind_->row_of(l));
+    kind_->start(l, kind_->row_of(l));  // a new part: its samples, trails and momentum gone
   }
   target_ = scene_.state.t;
   for (Lane& lane : lanes_) sample(lane);
@@ -488,7 +439,10 @@ void Session::release() {
 void Session::watch(int particle) {
   if (particle < 0 || particle >= scene_.model.particle_count()) return;
   watched_ = particle;
-  for (Lane& l : lanes_) l.history.clear();
+  for (Lane& l : lanes_) {
+    l.history.clear();
+    if (l.part) l.part->clear_samples();
+  }
 }
 
 void Session::play(Script script) {
@@ -530,7 +484,11 @@ void Session::apply(const ScriptEvent& e) {
       reset();
       break;
     case ScriptEvent::Kind::Set:
-      if (e.method) set_method(*e.method);  // (in compare mode the lanes keep theirs)
+      // A method is a row of a mass-spring scene's kind, found by its name; in compare mode the
+      // lanes keep theirs.
+      if (e.method)
+        if (const std::optional<int> row = kind_->find(std::string(method_info(*e.method).name)))
+          choose(*row);
       if (e.ks) set_stiffness(*e.ks);
       if (e.kd) set_damping(*e.kd);
       if (e.dt) set_dt(*e.dt);

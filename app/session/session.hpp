@@ -21,7 +21,6 @@
 #include "session/scene_kind.hpp"
 #include "session/stability_job.hpp"
 #include "springlab/exact.hpp"
-#include "springlab/momentum.hpp"
 #include "springlab/scene.hpp"
 #include "springlab/script.hpp"
 #include "springlab/simulation.hpp"
@@ -33,10 +32,10 @@ struct Lane {
 
   Simulation sim;
   History history;
-  std::optional<ExactOscillator> exact;   // from the last change of the model
-  std::vector<std::vector<Vec3>> trails;  // one per scene.trails particle, oldest first
+  std::optional<ExactOscillator> exact;  // from the last change of the model
   // Its scene's kind (the session's: scene_kind.hpp), and what the kind keeps of it besides its
-  // simulation (an IK lane's chain: ik_kind.hpp); none for a mass-spring lane.
+  // simulation and samples into it (an IK lane's chain: ik_kind.hpp; a mass-spring lane's trails,
+  // momentum and inverted cells: mass_spring_kind.hpp), made by the kind's start().
   const SceneKind* kind = nullptr;
   std::unique_ptr<LanePart> part;
   // The stability analysis shown (the latest made, which may be of the scene as it was a moment
@@ -47,12 +46,6 @@ struct Lane {
   // no spring stretched past twice its rest or starting length): what a diverged lane is drawn
   // as, never its blown-up geometry.
   State sane;
-  // A free body's momentum (momentum.hpp) since it last became free (a drag pins what it holds)
-  // and moving, against which the gauge and the momentum chart measure what the method changes
-  // of it; empty while not free, or at rest.
-  std::optional<Momentum> free_since;
-  // How many of the scene's cells are inverted now (cells.hpp), counted as the lane is sampled.
-  int inverted_cells = 0;
   // A lane of one's own (a student's step: homework, app/homework/): its label, in place of its
   // row's ("Your simulateEuler"), and whether the homework checker found the row it is (the row
   // its simulation names, whose theory the gauge then reads) or none. Empty for a row's lane.
@@ -94,7 +87,6 @@ struct BesideRow {
 class Session {
  public:
   static constexpr std::size_t kMaxLanes = 4;
-  static constexpr std::size_t kTrailLength = 240;  // frames
 
   Session(Scene scene, SimulationSettings settings, double fps = 60.0);
   // With a kind given (a test's own; none: the scene's, make_scene_kind).
@@ -122,32 +114,30 @@ class Session {
   const Lane& primary() const { return lanes_.front(); }
 
   // One frame: plays the script events due, moves what is held, steps every lane that has not
-  // diverged, samples the history.
+  // diverged, samples the history (what every kind has, then the kind's own: SceneKind::sample).
   void advance_frame();
   std::int64_t frame() const { return frame_; }
   double fps() const { return fps_; }
   double presentation_time() const { return static_cast<double>(frame_) / fps_; }
   double simulated_target() const { return target_; }
 
-  // Compare mode: the same scene with 2 to 4 methods at once; an empty list returns to one lane
-  // with the first method. Every lane restarts from the initial state.
-  void set_compare(const std::vector<Method>& methods);
+  // Compare mode: the same scene in 2 to 4 lanes at once (set_compare_rows, below).
   bool comparing() const { return lanes_.size() > 1; }
   // Lanes of one's own (homework) first, then the rows `beside` (4 lanes at most), each with its
   // own parameters. Every lane restarts from the initial state.
   void set_own_lanes(const std::vector<OwnLane>& own, const std::vector<BesideRow>& beside);
 
-  // Rows, whatever the kind (a method's, an IK solver's: kind().row(k)). choose(): the single
-  // lane becomes row k from where it is (in a mass-spring scene as set_method, whose method the
-  // session's next lanes take too); in compare mode the lanes keep theirs. chosen(): the first
-  // lane's row. set_compare_rows(): the rows side by side (empty: back to one lane, of the first
-  // lane's row); every lane restarts from the initial state.
+  // Rows, whatever the kind (a method's, an IK solver's: kind().row(k); a mass-spring scene's row
+  // k is Method k). choose(): the single lane becomes row k from where it is (a method switched
+  // mid-motion, a solver from the pose reached), and the session's next lanes are made as row k
+  // (kind().configure); in compare mode the lanes keep theirs. chosen(): the first lane's row.
+  // set_compare_rows(): the rows side by side (empty: back to one lane, of the first lane's row);
+  // every lane restarts from the initial state.
   void choose(int row);
   int chosen() const { return kind_->row_of(lanes_.front()); }
   void set_compare_rows(const std::vector<int>& rows);
 
   // Parameters, for every lane.
-  void set_method(Method method);  // one lane: switches it at once, mid-motion
   Method method() const { return lanes_.front().sim.settings().method; }
   void set_dt(double dt);
   void set_substeps(int substeps);  // fixes them

@@ -34,8 +34,8 @@ chart::Chart error_chart(const app::Session& session) {
   error.y.label = "m";
   error.y.log = true;
   for (const app::Lane& lane : session.lanes()) {
-    chart::Series s =
-        series(app::lane_name(lane), draw::lane_color(lane), lane.history.t, lane.history.ik_error);
+    chart::Series s = series(app::lane_name(lane), draw::lane_color(lane), lane.history.t,
+                             app::ik_lane(lane).error);
     for (double& y : s.y)
       y = std::max(y, 1e-9);  // a log axis needs > 0: an exact hit shows at 1e-9
     error.series.push_back(std::move(s));

@@ -6,6 +6,7 @@
 
 #include "draw/marks.hpp"
 #include "draw/palette.hpp"
+#include "session/mass_spring_kind.hpp"
 #include "springlab/momentum.hpp"
 #include "springlab/text.hpp"
 
@@ -164,10 +165,12 @@ chart::Chart momentum_chart(const app::Session& session) {
   chart.end_labels = true;
   bool any = false;
   for (const app::Lane& lane : session.lanes()) {
-    const app::History& h = lane.history;
+    const app::MassSpringLane* part = app::mass_spring_lane(lane);  // (the kind's series)
+    if (!part) continue;
     for (const bool angular : {false, true}) {
-      chart::Series s = series(angular ? "" : app::lane_name(lane), draw::lane_color(lane), h.t,
-                               angular ? h.angular_change : h.linear_change, angular);
+      chart::Series s =
+          series(angular ? "" : app::lane_name(lane), draw::lane_color(lane), lane.history.t,
+                 angular ? part->angular_change : part->linear_change, angular);
       for (double& y : s.y) y = std::isnan(y) ? y : std::max(y, kRounding);
       any = any || std::any_of(s.y.begin(), s.y.end(), [](double y) { return !std::isnan(y); });
       s.mark = draw::lane_mark(lane);

@@ -254,6 +254,13 @@ void mass_spring_controls(app::Session& session, UiState& ui, const FrameStats& 
   parameters(session, ui, layout.touch, presenting);
 }
 
+// The methods ticked to compare, as the kind's rows (row k is Method k).
+std::vector<int> ticked_rows(const UiState& ui) {
+  std::vector<int> rows;
+  for (Method m : compare_methods(ui)) rows.push_back(static_cast<int>(m));
+  return rows;
+}
+
 // The mass-spring kind's tools: the accuracy, region and tableau panels' buttons and the compare
 // choices.
 void mass_spring_tools(app::Session& session, UiState& ui, float scale) {
@@ -267,9 +274,9 @@ void mass_spring_tools(app::Session& session, UiState& ui, float scale) {
   if (ImGui::CollapsingHeader(tr("Compare methods"))) {
     if (ImGui::Button(session.comparing() ? tr("Single view (C)") : tr("Compare (C)"))) {
       if (session.comparing())
-        session.set_compare({});
-      else if (compare_methods(ui).size() >= 2)
-        session.set_compare(compare_methods(ui));
+        session.set_compare_rows({});
+      else if (ticked_rows(ui).size() >= 2)
+        session.set_compare_rows(ticked_rows(ui));
     }
     ImGui::SameLine();
     ImGui::TextDisabled(tr("tick 2 to 4:"));
@@ -298,11 +305,8 @@ std::vector<chart::Chart> mass_spring_charts_said(const app::Session& session) {
 
 // C: the methods ticked (2 to 4), else the scene's own list, else the rows compared first.
 std::vector<int> mass_spring_compare_choice(const app::Session& session, const UiState& ui) {
-  const std::vector<Method> ticked = compare_methods(ui);
-  if (ticked.size() < 2) return session.kind().compared_first();
-  std::vector<int> rows;
-  for (Method m : ticked) rows.push_back(static_cast<int>(m));
-  return rows;
+  const std::vector<int> ticked = ticked_rows(ui);
+  return ticked.size() < 2 ? session.kind().compared_first() : ticked;
 }
 
 }  // namespace

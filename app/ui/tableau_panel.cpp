@@ -99,17 +99,15 @@ std::string run_beside(const ButcherTableau& tableau, app::Session& session) {
     const std::string name =
         k == 1 ? "mine" : "mine-" + std::to_string(k);  // not shown: a method's name
     try {
-      const Method m = add_tableau_method(tableau, name);
-      std::vector<Method> lanes;
-      if (session.comparing())
-        for (const app::Lane& l : session.lanes()) lanes.push_back(l.sim.settings().method);
-      else
-        lanes.push_back(session.method());
+      // The lanes' rows and the new method's (a mass-spring scene's row k is Method k).
+      const int m = static_cast<int>(add_tableau_method(tableau, name));
+      std::vector<int> lanes;
+      for (const app::Lane& l : session.lanes()) lanes.push_back(session.kind().row_of(l));
       if (std::find(lanes.begin(), lanes.end(), m) == lanes.end()) {
         if (lanes.size() >= app::Session::kMaxLanes) lanes.pop_back();
         lanes.push_back(m);
       }
-      session.set_compare(lanes);
+      session.set_compare_rows(lanes);
       return format_text(tr("running as '%s' beside the other lanes"), name.c_str());
     } catch (const InputError& e) {
       why = e.what();  // the name is another tableau's (a row is never replaced): the next one

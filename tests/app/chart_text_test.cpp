@@ -27,7 +27,7 @@ std::unique_ptr<app::Session> compared(double dt, double seconds) {
   settings.substeps = 1;
   settings.auto_substeps = false;
   auto session = std::make_unique<app::Session>(std::move(scene), settings, 60.0);
-  session->set_compare({Method::Euler, Method::SymplecticEuler});
+  session->set_compare_rows(test::method_rows({Method::Euler, Method::SymplecticEuler}));
   for (int frame = 0; frame < static_cast<int>(seconds * 60.0); ++frame) session->advance_frame();
   return session;
 }
@@ -138,7 +138,7 @@ TEST(ChartText, TheMomentumChartShowsWhatEachLaneKeeps) {
   settings.substeps = 1;
   settings.auto_substeps = false;
   app::Session session(std::move(scene), settings, 60.0);
-  session.set_compare({Method::XPBD, Method::VBD});
+  session.set_compare_rows(test::method_rows({Method::XPBD, Method::VBD}));
   session.set_stiffness(20000.0);
   session.advance_frame();  // free, at rest: nothing to keep yet, and said so
   EXPECT_TRUE(has(ui::momentum_chart(session).title, "a free body at rest"))

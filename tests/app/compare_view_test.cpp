@@ -24,7 +24,7 @@ app::Session rope_compared(double dt, const std::vector<Method>& methods) {
   s.substeps = 1;
   s.auto_substeps = false;
   app::Session session(std::move(scene), s, 60.0);
-  session.set_compare(methods);
+  session.set_compare_rows(test::method_rows(methods));
   return session;
 }
 

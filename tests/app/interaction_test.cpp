@@ -136,7 +136,7 @@ TEST(Interaction, CameraOrbitsPansAndZooms) {
 
 TEST(Interaction, ParameterChangesReachEveryLaneAndKeepTheMaterialsInProportion) {
   app::Session session = session_of("cloth");
-  session.set_compare({Method::SymplecticEuler, Method::Verlet});
+  session.set_compare_rows(test::method_rows({Method::SymplecticEuler, Method::Verlet}));
   const auto materials = session.primary().sim.model().materials;
   session.set_stiffness(2 * session.stiffness());
   session.set_damping(0.5 * session.damping());
@@ -157,7 +157,7 @@ TEST(Interaction, SwitchingMethodMidMotionKeepsTheState) {
   app::Session session = session_of("rope");
   for (int k = 0; k < 30; ++k) session.advance_frame();
   const State before = session.primary().sim.state();
-  session.set_method(Method::RK4);
+  session.choose(test::method_row(Method::RK4));
   EXPECT_EQ(session.method(), Method::RK4);
   EXPECT_EQ(state_hash(session.primary().sim.state()), state_hash(before));
   session.advance_frame();
@@ -195,7 +195,8 @@ TEST(Interaction, KeyboardActionsDoWhatTheHelpSays) {
 
 TEST(Interaction, CompareModeMovesTheSameParticleInEveryCopyAndFreezesADivergedOne) {
   app::Session session = session_of("stiff");
-  session.set_compare({Method::ImplicitEuler, Method::SymplecticEuler, Method::RK4});
+  session.set_compare_rows(
+      test::method_rows({Method::ImplicitEuler, Method::SymplecticEuler, Method::RK4}));
   ASSERT_EQ(session.lanes().size(), 3u);
   // At the scene's one step a frame (h w_max about 90) both explicit lanes are far past their
   // limits, RK4 blowing up at its first step; with automatic sub-steps each lane steps within

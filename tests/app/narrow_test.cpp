@@ -76,7 +76,8 @@ TEST_P(NarrowScreens, EveryControlFitsItsPanel) {
   app::Session session(std::move(scene), settings, 60.0);
   for (const bool compare : {false, true}) {
     if (compare)
-      session.set_compare({Method::ImplicitEuler, Method::XPBD, Method::LocalGlobal, Method::VBD});
+      session.set_compare_rows(test::method_rows(
+          {Method::ImplicitEuler, Method::XPBD, Method::LocalGlobal, Method::VBD}));
     for (int k = 0; k < 3; ++k) session.advance_frame();
     for (const auto& [width, height] : {std::pair{390, 844}, std::pair{540, 960}}) {
       for (const bool open : {false, true}) {

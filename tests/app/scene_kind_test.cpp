@@ -12,6 +12,7 @@
 #include "draw/palette.hpp"
 #include "draw/scene_frame.hpp"
 #include "session/ik_kind.hpp"
+#include "session/mass_spring_kind.hpp"
 #include "springlab/error.hpp"
 #include "springlab/text.hpp"
 #include "support.hpp"
@@ -99,8 +100,8 @@ TEST(SceneKind, TheSolversReachTheTargetThroughTheSessionsCalls) {
     const IkLane& part = ik_lane(lane);
     EXPECT_TRUE(part.status.converged) << lane_name(lane);
     EXPECT_LE((part.chain.effector() - target).norm(), ik.settings.tolerance) << lane_name(lane);
-    EXPECT_EQ(lane.history.ik_error.back(), part.status.error);
-    EXPECT_GT(lane.history.ik_error[0], 100 * ik.settings.tolerance);  // it started away from it
+    EXPECT_EQ(part.error.back(), part.status.error);
+    EXPECT_GT(part.error[0], 100 * ik.settings.tolerance);  // it started away from it
     const LaneRow row = lane_row(lane);
     EXPECT_EQ(lane_name(lane), row.name);
     EXPECT_EQ(draw::lane_color(lane).r, draw::row_style(row).colour[0]);
@@ -118,6 +119,76 @@ TEST(SceneKind, TheSolversReachTheTargetThroughTheSessionsCalls) {
   session.step_once();  // one step: one iteration each
   for (const Lane& lane : session.lanes())
     EXPECT_EQ(ik_lane(lane).status.iterations, 1) << lane_name(lane);
+}
+
+// The distance to the target is the IK kind's series, kept in the IK lane's part, not in the
+// History every kind has: the kind samples it once a frame with the History, the session clears
+// it with the History (watching another particle), and a reset makes it again. The IK chart
+// reads it there (ui/ik_panels.cpp). An IK lane has no mass-spring part.
+TEST(SceneKind, TheDistanceToTheTargetIsTheIkKindsSeries) {
+  Session session = session_of("ik-arm");
+  for (int frame = 0; frame < 30; ++frame) session.advance_frame();
+  const Lane& lane = session.primary();
+  EXPECT_EQ(ik_lane(lane).error.size(), 31u);  // the start, and 30 frames
+  EXPECT_EQ(lane.history.t.size(), 31u);
+  EXPECT_EQ(ik_lane(lane).error.back(), ik_lane(lane).status.error);
+  EXPECT_EQ(mass_spring_lane(lane), nullptr);
+  session.kind().sample(session.lanes()[0], session);  // the kind's sample: its series alone
+  EXPECT_EQ(ik_lane(lane).error.size(), 32u);
+  EXPECT_EQ(lane.history.t.size(), 31u);
+  session.watch(session.kind().handle());
+  EXPECT_EQ(ik_lane(lane).error.size(), 0u);
+  EXPECT_EQ(lane.history.t.size(), 0u);
+  session.advance_frame();
+  session.reset();
+  EXPECT_EQ(ik_lane(lane).error.size(), 1u);
+  EXPECT_EQ(lane.history.t.size(), 1u);
+}
+
+// A mass-spring lane's trails, free-body momentum and inverted cells are its kind's, sampled by
+// it into the lane's part (mass_spring_kind.hpp) after the session's History: the rope's trail
+// grows a point a frame, the kind's own sample adds to its part alone, watching another particle
+// clears the momentum series with the History (the trail stays), a reset starts the trail again,
+// and the drawing's trails are the part's.
+TEST(SceneKind, TheMassSpringSamplesAreTheMassSpringKinds) {
+  Session session = session_of("rope");
+  ASSERT_FALSE(session.scene().trails.empty());
+  for (int frame = 0; frame < 10; ++frame) session.advance_frame();
+  const Lane& lane = session.primary();
+  const MassSpringLane* part = mass_spring_lane(lane);
+  ASSERT_NE(part, nullptr);
+  ASSERT_EQ(part->trails.size(), session.scene().trails.size());
+  const auto trail_of = [&](std::size_t k) { return mass_spring_lane(lane)->trails[k]; };
+  EXPECT_EQ(trail_of(0).size(), 11u);  // the start, and 10 frames
+  const Vec3 end = lane.sim.state().x.row(session.scene().trails[0]).transpose();
+  EXPECT_EQ(trail_of(0).back(), end);
+  EXPECT_EQ(part->linear_change.size(), lane.history.t.size());  // (NaN: the rope is pinned)
+  EXPECT_FALSE(part->free_since);
+  EXPECT_EQ(part->inverted_cells, 0);  // (a rope has no cells)
+
+  session.kind().sample(session.lanes()[0], session);
+  EXPECT_EQ(trail_of(0).size(), 12u);
+  EXPECT_EQ(part->linear_change.size(), 12u);
+  EXPECT_EQ(lane.history.t.size(), 11u);
+
+  // Drawn from the part: each trail's segments, and only with trails shown.
+  draw::ViewOptions view = draw::ViewOptions::for_scene(session.scene());
+  view.trails = true;
+  const std::size_t with =
+      draw::build_frame(session, view, draw::Viewport{0, 0, 640, 360}).lines.size();
+  view.trails = false;
+  const std::size_t without =
+      draw::build_frame(session, view, draw::Viewport{0, 0, 640, 360}).lines.size();
+  std::size_t segments = 0;
+  for (const auto& trail : part->trails) segments += trail.size() - 1;
+  EXPECT_EQ(with - without, segments);
+
+  session.watch(0);
+  EXPECT_EQ(part->linear_change.size(), 0u);
+  EXPECT_EQ(trail_of(0).size(), 12u);
+  session.reset();  // a new part
+  EXPECT_EQ(trail_of(0).size(), 1u);
+  EXPECT_EQ(mass_spring_lane(lane)->linear_change.size(), 1u);
 }
 
 // The keys ask the kind: 1 to 3 choose a solver (from the pose reached), C sets the scene's
@@ -150,7 +221,15 @@ TEST(SceneKind, KeysAndHoldingAskTheKind) {
 
 // A kind no one else names: its lanes are two methods (explicit Euler and Verlet), the rope's
 // free end is its handle, and a guide circle of 0.5 m is drawn round the anchor, its springs
-// in the lane's colour. The session, picking, the keys and the drawing take it as it is.
+// in the lane's colour. Its lanes keep a part of their own, with a series it samples (the
+// handle's height, a frame) and the frame it last sampled. The session, picking, the keys, the
+// sampling and the drawing take it as it is.
+struct TetheredLane : LanePart {
+  Series height;
+  std::int64_t frame = -1;
+  void clear_samples() override { height.clear(); }
+};
+
 class TetheredKind : public SceneKind {
  public:
   explicit TetheredKind(int handle) : handle_(handle) {}
@@ -165,19 +244,21 @@ class TetheredKind : public SceneKind {
   }
   const char* row_noun() const override { return "method"; }
   std::string choices() const override { return "euler, verlet"; }
-  int initial_row(Method) const override { return 1; }
+  int initial_row(const SimulationSettings&) const override { return 1; }
   std::vector<int> compared_first() const override { return {0, 1}; }
   void configure(SimulationSettings& s, int row) const override {
     s.method = row == 0 ? Method::Euler : Method::Verlet;
   }
-  void start(Lane& lane, int) const override {
-    ++lane.inverted_cells;
-  }  // (a mark that each lane was started)
+  void start(Lane& lane, int) const override { lane.part = std::make_unique<TetheredLane>(); }
   void switch_to(Lane& lane, int row) const override {
     lane.sim.set_method(row == 0 ? Method::Euler : Method::Verlet);
   }
   void after_steps(Lane&, Steps) const override {}
-  void sample(Lane&) const override {}
+  void sample(Lane& lane, const Session& session) const override {
+    auto& part = dynamic_cast<TetheredLane&>(*lane.part);
+    part.height.push(lane.sim.state().x(handle_, 1));
+    part.frame = session.frame();
+  }
   int handle() const override { return handle_; }
   std::vector<GuideCircle> guides() const override { return {{Vec3::Zero(), 0.5}}; }
   bool strained() const override { return false; }
@@ -239,7 +320,16 @@ TEST(SceneKind, AKindOfOnesOwnNeedsNoOtherEdit) {
   ImGui::DestroyContext();
   EXPECT_EQ(g_tethered_controls_drawn, 1);
   EXPECT_EQ(session.primary().sim.settings().method, Method::Verlet);  // its initial row
-  EXPECT_EQ(session.primary().inverted_cells, 1);                      // started by it
+  const auto* part = dynamic_cast<const TetheredLane*>(session.primary().part.get());
+  ASSERT_NE(part, nullptr);  // started by it
+  EXPECT_EQ(mass_spring_lane(session.primary()), nullptr);
+  // Sampled by it, beside the History, with no line of Session::sample its own.
+  for (int frame = 0; frame < 5; ++frame) session.advance_frame();
+  EXPECT_EQ(part->height.size(), session.primary().history.t.size());
+  EXPECT_EQ(part->height.back(), session.primary().sim.state().x(end, 1));
+  EXPECT_EQ(part->frame, 5);
+  session.watch(end);  // cleared with the History
+  EXPECT_EQ(part->height.size(), 0u);
   ui::UiState ui;
   ui::perform(ui::Action::Method1, session, ui);
   EXPECT_EQ(session.primary().sim.settings().method, Method::Euler);

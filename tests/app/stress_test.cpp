@@ -56,13 +56,13 @@ TEST(Stress, AnalysesSweepsAndLessonStepsBesideTheFrameLoop) {
         s.set_stiffness(s.stiffness() * (round % 12 ? 1.1 : 0.9));
         break;
       case 1:
-        s.set_method(round % 12 == 1 ? Method::RK4 : Method::SymplecticEuler);
+        s.choose(test::method_row(round % 12 == 1 ? Method::RK4 : Method::SymplecticEuler));
         break;
       case 2:
-        s.set_compare({Method::SymplecticEuler, Method::Verlet});
+        s.set_compare_rows(test::method_rows({Method::SymplecticEuler, Method::Verlet}));
         break;
       case 3:
-        s.set_compare({});
+        s.set_compare_rows({});
         break;
       case 4:
         s.grab(s.nearest(Vec3(0, 0, 0)));
