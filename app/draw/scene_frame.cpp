@@ -131,6 +131,84 @@ void add_mode_arrows(Frame& frame, const app::Lane& lane, const State& state,
   }
 }
 
+// A lane's springs as lines from `state` (its last sane one when it diverged): coloured by strain
+// where the kind shows strain and lanes are not compared, else in the lane's tint.
+void add_lane_springs(Frame& frame, const Model& m, const State& state, Rgba tint, bool compare,
+                      const app::SceneKind& kind, const ViewOptions& options, float line_width) {
+  for (int k = 0; k < m.spring_count(); ++k) {
+    const int a = m.spring_a[k], b = m.spring_b[k];
+    const double l = (state.x.row(b) - state.x.row(a)).norm();
+    const double rest = m.rest_length[k];
+    const double strain = rest > 0 ? (l - rest) / rest : 0.0;
+    const Rgba c = compare || !kind.strained() ? tint : strain_color(strain, options.strain_scale);
+    frame.lines.push_back(
+        {f(state.x.row(a)), f(state.x.row(b)), c, c, line_width});  // (sane state when diverged)
+  }
+}
+
+// A mass-spring lane's trails (when shown), each fading towards its oldest end; amber, or the
+// lane's tint when lanes are compared.
+void add_lane_trails(Frame& frame, const app::Lane& lane, Rgba tint, bool compare,
+                     const ViewOptions& options) {
+  if (const app::MassSpringLane* part = app::mass_spring_lane(lane); part && options.trails)
+    for (const auto& trail : part->trails)
+      for (std::size_t k = 1; k < trail.size(); ++k) {
+        Rgba c = compare ? tint : Rgba{1.0f, 0.78f, 0.3f, 1.0f};
+        Rgba c0 = c, c1 = c;
+        c0.a *= static_cast<float>(k - 1) / trail.size();
+        c1.a *= static_cast<float>(k) / trail.size();
+        frame.lines.push_back({trail[k - 1].cast<float>(), trail[k].cast<float>(), c0, c1, 2.0f});
+      }
+}
+
+// An emitted particle (particle i, owned by the lane's emission): drawn only while alive, in its
+// colour, fading out with age.
+void add_emitted_particle(Frame& frame, const app::Lane& lane, const State& state, int i, bool held,
+                          Rgba tint, bool compare, float radius) {
+  const Emission& emission = lane.sim.emission();
+  if (!emission.alive(i)) return;
+  const double life = emission.lifetime(i);
+  const float left =
+      life > 0 ? static_cast<float>(std::clamp(1.0 - emission.age(i, state.t) / life, 0.0, 1.0))
+               : 1.0f;
+  const Vec3& rgb = emission.color(i);
+  Rgba c = held      ? kGrabbed
+           : compare ? tint
+                     : Rgba{float(rgb.x()), float(rgb.y()), float(rgb.z()), 1.0f};
+  c.a *= std::sqrt(left) * (lane.sim.diverged() ? 0.35f : 1.0f);
+  frame.particles.push_back({f(state.x.row(i)), held ? 1.3f * radius : radius, c, false});
+}
+
+// A lane's particles: emitted ones (add_emitted_particle); the kind's handle, big enough to grab;
+// the rest (pinned ones marked) where particles are shown, or pinned, held or with no surface.
+void add_lane_particles(Frame& frame, const app::Session& session, const app::Lane& lane,
+                        const State& state, Rgba tint, const ViewOptions& options, float radius,
+                        float wpp) {
+  const Scene& scene = session.scene();
+  const app::SceneKind& kind = session.kind();
+  const bool compare = session.comparing();
+  const Model& m = lane.sim.model();
+  const Emission& emission = lane.sim.emission();
+  for (int i = 0; i < m.particle_count(); ++i) {
+    const bool held = i == session.grabbed();
+    if (emission.owned(i)) {
+      add_emitted_particle(frame, lane, state, i, held, tint, compare, radius);
+      continue;
+    }
+    const bool pinned = scene.model.pinned(i);
+    if (!options.particles && !pinned && !held && !(scene.surfaces.empty())) continue;
+    if (i == kind.handle()) {
+      const float size = std::max(1.4f * radius, 8.0f * wpp);  // big enough to grab
+      frame.particles.push_back(
+          {f(state.x.row(i)), held ? 1.2f * size : size, held ? kGrabbed : kTarget, false});
+      continue;
+    }
+    Rgba c = held ? kGrabbed : compare ? tint : kParticle;
+    if (lane.sim.diverged()) c.a = 0.35f;
+    frame.particles.push_back({f(state.x.row(i)), held ? 1.3f * radius : radius, c, pinned});
+  }
+}
+
 }  // namespace
 
 Frame build_frame(const app::Session& session, const ViewOptions& options, const LaneView& view) {
@@ -163,58 +241,10 @@ Frame build_frame(const app::Session& session, const ViewOptions& options, const
       for (const Surface& s : scene.surfaces)
         frame.meshes.push_back(surface_mesh(s, state, kClothFront, kClothBack));
 
-    if (options.springs || compare || scene.surfaces.empty()) {
-      for (int k = 0; k < m.spring_count(); ++k) {
-        const int a = m.spring_a[k], b = m.spring_b[k];
-        const double l = (state.x.row(b) - state.x.row(a)).norm();
-        const double rest = m.rest_length[k];
-        const double strain = rest > 0 ? (l - rest) / rest : 0.0;
-        const Rgba c =
-            compare || !kind.strained() ? tint : strain_color(strain, options.strain_scale);
-        frame.lines.push_back({f(state.x.row(a)), f(state.x.row(b)), c, c,
-                               line_width});  // (sane state when diverged)
-      }
-    }
-    if (const app::MassSpringLane* part = app::mass_spring_lane(lane); part && options.trails)
-      for (const auto& trail : part->trails)
-        for (std::size_t k = 1; k < trail.size(); ++k) {
-          Rgba c = compare ? tint : Rgba{1.0f, 0.78f, 0.3f, 1.0f};
-          Rgba c0 = c, c1 = c;
-          c0.a *= static_cast<float>(k - 1) / trail.size();
-          c1.a *= static_cast<float>(k) / trail.size();
-          frame.lines.push_back({trail[k - 1].cast<float>(), trail[k].cast<float>(), c0, c1, 2.0f});
-        }
-    const Emission& emission = lane.sim.emission();
-    for (int i = 0; i < m.particle_count(); ++i) {
-      const bool held = i == session.grabbed();
-      if (emission.owned(i)) {
-        // An emitted particle: drawn only while alive, in its colour, fading out with age.
-        if (!emission.alive(i)) continue;
-        const double life = emission.lifetime(i);
-        const float left =
-            life > 0
-                ? static_cast<float>(std::clamp(1.0 - emission.age(i, state.t) / life, 0.0, 1.0))
-                : 1.0f;
-        const Vec3& rgb = emission.color(i);
-        Rgba c = held      ? kGrabbed
-                 : compare ? tint
-                           : Rgba{float(rgb.x()), float(rgb.y()), float(rgb.z()), 1.0f};
-        c.a *= std::sqrt(left) * (lane.sim.diverged() ? 0.35f : 1.0f);
-        frame.particles.push_back({f(state.x.row(i)), held ? 1.3f * radius : radius, c, false});
-        continue;
-      }
-      const bool pinned = scene.model.pinned(i);
-      if (!options.particles && !pinned && !held && !(scene.surfaces.empty())) continue;
-      if (i == kind.handle()) {
-        const float size = std::max(1.4f * radius, 8.0f * wpp);  // big enough to grab
-        frame.particles.push_back(
-            {f(state.x.row(i)), held ? 1.2f * size : size, held ? kGrabbed : kTarget, false});
-        continue;
-      }
-      Rgba c = held ? kGrabbed : compare ? tint : kParticle;
-      if (lane.sim.diverged()) c.a = 0.35f;
-      frame.particles.push_back({f(state.x.row(i)), held ? 1.3f * radius : radius, c, pinned});
-    }
+    if (options.springs || compare || scene.surfaces.empty())
+      add_lane_springs(frame, m, state, tint, compare, kind, options, line_width);
+    add_lane_trails(frame, lane, tint, compare, options);
+    add_lane_particles(frame, session, lane, state, tint, options, radius, wpp);
     if (options.mode && lane.analysis && !lane.sim.diverged())
       add_mode_arrows(frame, lane, state, options);
   }

@@ -408,14 +408,13 @@ Tableau ButcherTableau::numeric() const {
   return Tableau(std::move(rows), std::move(weights));
 }
 
-TableauAnalysis analyse_tableau(const ButcherTableau& tableau) {
-  TableauAnalysis out;
-  const std::size_t s = static_cast<std::size_t>(tableau.stages);
-  Matrix A;
-  for (const auto& row : tableau.a) A.push_back(exact(row));
-  const Vector b = exact(tableau.b);
+namespace {
 
-  // Order conditions.
+// The order conditions, one for each rooted tree up to TableauAnalysis::kMaxOrder: the order (exact
+// and to rounding), the first condition that fails and how many were checked; and the embedded
+// weights' order where the tableau has them.
+void record_order_conditions(TableauAnalysis& out, const ButcherTableau& tableau, const Matrix& A,
+                             const Vector& b) {
   const std::vector<Tree> trees = all_trees(TableauAnalysis::kMaxOrder);
   const std::vector<Vector> phi = elementary_weights(trees, A);
   const OrderResult order = check_order(trees, phi, b);
@@ -424,9 +423,11 @@ TableauAnalysis analyse_tableau(const ButcherTableau& tableau) {
   out.first_failure = order.failure;
   out.conditions = order.conditions;
   if (tableau.b_hat) out.embedded_order = check_order(trees, phi, exact(*tableau.b_hat)).order;
+}
 
-  // Cooper's condition, b_i a_ij + b_j a_ji - b_i b_j = 0: exact, or to rounding where the
-  // entries round irrational values (as the order to rounding is found).
+// Cooper's condition, b_i a_ij + b_j a_ji - b_i b_j = 0: exact, or to rounding where the
+// entries round irrational values (as the order to rounding is found). Needs the order found.
+void check_cooper_condition(TableauAnalysis& out, const Matrix& A, const Vector& b, std::size_t s) {
   out.symplectic = true;
   for (std::size_t i = 0; i < s && out.symplectic; ++i)
     for (std::size_t j = 0; j <= i && out.symplectic; ++j) {
@@ -434,8 +435,12 @@ TableauAnalysis analyse_tableau(const ButcherTableau& tableau) {
       out.symplectic = m == 0 || (out.order_to_rounding > out.order &&
                                   std::abs(m.convert_to<double>()) <= 1e-12);
     }
+}
 
-  // c against the row sums (the scenes do not depend on time, so the steps use A alone).
+// Warnings where the file says what the tableau does not do: c against the row sums (the scenes
+// do not depend on time, so the steps use A alone), and the orders it states against those found.
+void warn_on_stated_values(TableauAnalysis& out, const ButcherTableau& tableau, const Matrix& A,
+                           std::size_t s) {
   if (tableau.c_given) {
     const Vector c = exact(tableau.c);
     for (std::size_t i = 0; i < s; ++i) {
@@ -458,8 +463,11 @@ TableauAnalysis analyse_tableau(const ButcherTableau& tableau) {
     out.warnings.push_back("the file states embedded order " +
                            std::to_string(*tableau.stated_embedded_order) +
                            ", the conditions give " + std::to_string(*out.embedded_order));
+}
 
-  // R(z) = P / Q, each determinant interpolated from its values at z = 0 .. s.
+// R(z) = P / Q, each determinant interpolated from its values at z = 0 .. s; their common factor
+// divided out and both scaled so that Q(0) = 1.
+void stability_polynomials(const Matrix& A, const Vector& b, std::size_t s, Poly& P, Poly& Q) {
   Vector p_values, q_values;
   for (std::size_t k = 0; k <= s; ++k) {
     const Rational z(static_cast<long>(k));
@@ -473,7 +481,8 @@ TableauAnalysis analyse_tableau(const ButcherTableau& tableau) {
     p_values.push_back(determinant(p));
     q_values.push_back(determinant(q));
   }
-  Poly P = interpolate(p_values), Q = interpolate(q_values);
+  P = interpolate(p_values);
+  Q = interpolate(q_values);
   const Poly common = gcd(P, Q);
   if (common.size() > 1) {
     Poly r;
@@ -483,6 +492,10 @@ TableauAnalysis analyse_tableau(const ButcherTableau& tableau) {
   const Rational q0 = Q[0];  // Q(0) = det I = 1 up to the common factor's constant
   for (Rational& x : P) x /= q0;
   for (Rational& x : Q) x /= q0;
+}
+
+// R(z)'s coefficients, as text and as doubles, and |R| at infinity.
+void record_stability_function(TableauAnalysis& out, const Poly& P, const Poly& Q) {
   out.numerator = texts(P);
   out.denominator = texts(Q);
   out.numerator_value = values(P);
@@ -493,8 +506,10 @@ TableauAnalysis analyse_tableau(const ButcherTableau& tableau) {
     out.r_at_infinity = std::abs(static_cast<double>(Rational(P.back() / Q.back())));
   else
     out.r_at_infinity = 0.0;
+}
 
-  // The axes, exactly: where |R|^2 - 1 first turns positive (polynomial.hpp's Sturm sequences).
+// The axes, exactly: where |R|^2 - 1 first turns positive (polynomial.hpp's Sturm sequences).
+void record_axis_limits(TableauAnalysis& out, const Poly& P, const Poly& Q) {
   AxisPolynomial real = real_axis(P, Q), imaginary = imaginary_axis(P, Q);
   out.rounded_limits = out.order_to_rounding > out.order;
   if (out.rounded_limits) {
@@ -503,6 +518,24 @@ TableauAnalysis analyse_tableau(const ButcherTableau& tableau) {
   }
   out.real_limit = first_crossing(real);
   out.imaginary_limit = std::sqrt(first_crossing(imaginary));  // u = y^2
+}
+
+}  // namespace
+
+TableauAnalysis analyse_tableau(const ButcherTableau& tableau) {
+  TableauAnalysis out;
+  const std::size_t s = static_cast<std::size_t>(tableau.stages);
+  Matrix A;
+  for (const auto& row : tableau.a) A.push_back(exact(row));
+  const Vector b = exact(tableau.b);
+
+  record_order_conditions(out, tableau, A, b);
+  check_cooper_condition(out, A, b, s);
+  warn_on_stated_values(out, tableau, A, s);
+  Poly P, Q;
+  stability_polynomials(A, b, s, P, Q);
+  record_stability_function(out, P, Q);
+  record_axis_limits(out, P, Q);
   return out;
 }
 
