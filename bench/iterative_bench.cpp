@@ -74,7 +74,8 @@ FloatFactor single_precision(const LocalGlobalSolver& S) {
   const auto& L = S.factor.matrixL().nestedExpression();
   FloatFactor f;
   f.value.assign(L.valuePtr(), L.valuePtr() + L.nonZeros());
-  f.inv_d.assign(S.inv_d.begin(), S.inv_d.end());
+  const Eigen::VectorXd d = S.factor.vectorD();  // (the factor's order; S.inv_d is by place)
+  for (Eigen::Index r = 0; r < d.size(); ++r) f.inv_d.push_back(static_cast<float>(1.0 / d[r]));
   return f;
 }
 void solve_in_place_float(const LocalGlobalSolver& S, const FloatFactor& f, std::vector<float>& z) {
@@ -98,15 +99,22 @@ void BM_IterativeLocalGlobalFloor(benchmark::State& state) {
   if (part == 3) {
     local_global_parts::global_rhs(s.model, s.state, h, y, y, S);
     const FloatFactor f = single_precision(S);
-    const std::vector<double> rhs = S.rhs;
+    // The right side in the factor's order (the solver keeps it by place: SolvePlan).
+    std::vector<double> rhs(S.rhs.size());
+    for (int i = 0; i < s.model.particle_count(); ++i)
+      if (const int r = S.row[i], q = S.factor_row[i]; r >= 0)
+        for (int c = 0; c < 3; ++c) rhs[3 * q + c] = S.rhs[3 * r + c];
     std::vector<float> z(rhs.begin(), rhs.end());
     for (auto _ : state) {
       std::copy(rhs.begin(), rhs.end(), z.begin());
       solve_in_place_float(S, f, z);
       benchmark::ClobberMemory();
     }
-    std::vector<double> exact = rhs;
-    local_global_parts::solve_in_place(S, exact);
+    std::vector<double> placed = S.rhs, exact(rhs.size());
+    local_global_parts::solve_in_place(S, placed);
+    for (int i = 0; i < s.model.particle_count(); ++i)
+      if (const int r = S.row[i], q = S.factor_row[i]; r >= 0)
+        for (int c = 0; c < 3; ++c) exact[3 * q + c] = placed[3 * r + c];
     double diff = 0.0, size = 0.0;
     for (std::size_t k = 0; k < exact.size(); ++k)
       diff = std::max(diff, std::abs(z[k] - exact[k])), size = std::max(size, std::abs(exact[k]));

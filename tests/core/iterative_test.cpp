@@ -9,6 +9,8 @@
 #include <cmath>
 #include <vector>
 
+#include "dynamics/threads.hpp"
+#include "methods/local_global.hpp"
 #include "springlab/cells.hpp"
 #include "springlab/energy.hpp"
 #include "springlab/forces.hpp"
@@ -179,6 +181,64 @@ TEST(Iterative, LocalGlobalFactorisesAgainWhenTheModelChanges) {
 }
 
 // The colouring: no spring joins two vertices of one colour, every vertex has one.
+// Local-global's triangular solves, cut into subtrees of the factor's elimination tree for a team
+// (local_global.cpp, plan_solves): for any team the same bits, and the solution of the global
+// matrix's system (its residual, the matrix product Eigen's factor was made from, at rounding).
+// The plans differ: one thread has no top, more threads a top and pieces.
+TEST(Iterative, LocalGlobalSolvesGiveTheSameBitsForAnyTeam) {
+  const Scene s = test::shipped("cloth", {"cloth.width=24", "cloth.height=24"});
+  const double h = 1.0 / 60.0;
+  Points y;
+  std::vector<double> mass;
+  iterative::predict(s.model, s.state, h, y, mass);
+  LocalGlobalSolver S;
+  local_global_parts::factorise(s.model, h, mass, S);
+  const int rows = static_cast<int>(S.inv_d.size());
+  std::vector<double> b(3 * static_cast<std::size_t>(rows));
+  for (std::size_t k = 0; k < b.size(); ++k) b[k] = std::sin(0.37 * static_cast<double>(k) + 1.0);
+
+  std::vector<double> first;
+  const int before = threads::max_team();
+  for (int team : {1, 2, 3, 5, 16}) {
+    threads::set_max_team(team);
+    local_global_parts::plan(s.model, S);
+    threads::set_max_team(before);
+    const LocalGlobalSolver::SolvePlan& P = S.plan;
+    ASSERT_EQ(P.team, team);
+    ASSERT_EQ(static_cast<int>(P.piece_first.size()), team + 1);
+    if (team == 1) EXPECT_EQ(P.top_first, rows) << "one thread: no top";
+    if (team > 1) {  // a top, and work for two threads at least (16 may be more than pays)
+      EXPECT_LT(P.top_first, rows) << "team " << team;
+      int working = 0;
+      for (int k = 0; k < team; ++k) working += P.piece_first[k] < P.piece_first[k + 1];
+      EXPECT_GE(working, std::min(team, 3)) << "team " << team;
+    }
+    // The right side by particle, placed as this plan places rows.
+    std::vector<double> z(b.size());
+    for (int i = 0; i < s.model.particle_count(); ++i)
+      if (const int r = S.row[i], f = S.factor_row[i]; r >= 0)
+        for (int c = 0; c < 3; ++c) z[3 * r + c] = b[3 * f + c];
+    local_global_parts::solve_in_place(S, z);
+    std::vector<double> by_factor_row(b.size());
+    for (int i = 0; i < s.model.particle_count(); ++i)
+      if (const int r = S.row[i], f = S.factor_row[i]; r >= 0)
+        for (int c = 0; c < 3; ++c) by_factor_row[3 * f + c] = z[3 * r + c];
+    if (first.empty()) {
+      first = by_factor_row;
+      // The residual of P^T L D L^T P z = b, in the factor's order (Eigen's permuted system).
+      Eigen::MatrixXd X(rows, 3), B(rows, 3);
+      for (int r = 0; r < rows; ++r)
+        for (int c = 0; c < 3; ++c) X(r, c) = first[3 * r + c], B(r, c) = b[3 * r + c];
+      const auto& L = S.factor.matrixL();
+      const Eigen::MatrixXd LtX = L.transpose() * X;
+      const Eigen::MatrixXd back = L * (S.factor.vectorD().asDiagonal() * LtX);
+      EXPECT_LE((back - B).norm(), 1e-12 * B.norm());
+    } else {
+      EXPECT_EQ(by_factor_row, first) << "team " << team;
+    }
+  }
+}
+
 TEST(Iterative, VertexColouringIsProper) {
   const Scene s = test::shipped("cloth", {"cloth.width=16", "cloth.height=12"});
   VertexBlockDescent c;

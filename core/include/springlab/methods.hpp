@@ -207,7 +207,7 @@ struct MethodInfo {
   double undamped_limit;
   const char* stability;  ///< one line: why, for the stability gauge
   MethodFamily family;
-  StepFunction step;
+  StepFunction step = nullptr;  ///< nullptr: the row steps with tableau_step
   /// Runge-Kutta and implicit rows: the tableau (R(z) in tableau.hpp, the region chart's edge).
   const Tableau* tableau = nullptr;
   /// Rows made from a tableau at run time step with this instead of `step`.

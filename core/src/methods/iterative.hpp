@@ -53,11 +53,29 @@ struct LocalGlobalSolver {
     bool matches(const Model& model, double step) const;
     void take(const Model& model, double step);
   } key;
-  std::vector<int> row;  // per particle: its row of the factor (its own order), or -1 (pinned)
+  std::vector<int> factor_row;  // per particle: its row of the factor, or -1 (pinned)
+  std::vector<int> row;         // per particle: its row's place in the solves (SolvePlan), or -1
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor;
-  std::vector<double> inv_d;  // 1 / D, D the factor's diagonal
+  std::vector<double> inv_d;  // 1 / D, D the factor's diagonal, by place (SolvePlan)
   bool factored = false;
   std::int64_t factorisations = 0;
+  // The triangular solves' schedule, made with the factor (local_global.cpp, plan_solves): the
+  // factor's rows cut into subtrees of its elimination tree, a piece a group of them of about
+  // equal work (each subtree's rows need only its own), and the rows above them all (the top),
+  // solved after the pieces (forward) or before them (backward). The solves keep each row at a
+  // place of its own (the pieces' rows in turn, then the top's: `row`, `inv_d` and `rhs` are by
+  // place), and L by rows and by columns at those places.
+  struct SolvePlan {
+    std::vector<int> row_begin, row_index, col_begin, col_index;
+    std::vector<double> row_value, col_value;
+    std::vector<int> piece_first;  // piece k: places [piece_first[k], piece_first[k + 1])
+    int top_first = 0;             // the top: places [top_first, rows)
+    double piece_work = 0.0;       // the pieces' entries, both solves
+    int team = 0;                  // the threads it was made for: a piece each
+  } plan;
+  // Each particle's springs by row of the factor (compressed): spring s and +1 if the row is its
+  // b end, -1 its a end; springs ascending, so that a row's sum takes them in the springs' order.
+  std::vector<int> row_springs_first, row_springs;
   std::vector<double> rhs;   // the right side, then the solution: x y z a row, the factor's order
   std::vector<double> wt;    // each spring's w t: all x, all y, all z
   Points previous, current;  // Chebyshev: x^(k-1), x^k

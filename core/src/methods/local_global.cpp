@@ -63,6 +63,154 @@ double spring_weight(const SpringMaterial& m, double h) {
 
 }  // namespace
 
+namespace {
+
+// The triangular solves' schedule (LocalGlobalSolver::SolvePlan) for a team of `team` threads.
+// Column j's first entry below the diagonal is j's parent in the factor's elimination tree, and
+// row i's entries are i's descendants (Liu 1990, "The role of elimination trees"): a subtree's
+// rows are solved forward from its own rows alone and backward from its own and its ancestors'.
+// Cutting the heaviest subtree (its root joins the top) frees its children to go to other
+// threads; the cut kept is the one whose time, the top's work plus the heaviest thread's (the
+// subtrees dealt heaviest first to the lightest thread, Graham's rule), is least. Measured on the
+// 128 x 128 cloth (AMD's order): on 2 threads the top keeps 38 % of the work and each thread 31 %;
+// the top's rows are the dense rows of the last separators, which one thread solves.
+struct SolveCut {
+  std::vector<char> in_top;
+  std::vector<int> subtrees;  // roots, heaviest first
+  double time = 0.0;
+};
+
+// The makespan of the subtrees dealt to `team` threads, heaviest first, and each root's thread.
+double deal_subtrees(const std::vector<int>& roots, const std::vector<double>& subtree, int team,
+                     std::vector<int>* thread_of) {
+  std::vector<double> load(static_cast<std::size_t>(team), 0.0);
+  for (int r : roots) {
+    const auto k = std::min_element(load.begin(), load.end()) - load.begin();
+    load[static_cast<std::size_t>(k)] += subtree[r];
+    if (thread_of) (*thread_of)[r] = static_cast<int>(k);
+  }
+  return *std::max_element(load.begin(), load.end());
+}
+
+SolveCut cut_tree(const std::vector<int>& roots, const std::vector<std::vector<int>>& children,
+                  const std::vector<double>& work, const std::vector<double>& subtree, int team) {
+  const auto heavier = [&](int a, int b) {  // ties: the lower row (the same plan everywhere)
+    return subtree[a] > subtree[b] || (subtree[a] == subtree[b] && a < b);
+  };
+  SolveCut cut{std::vector<char>(work.size(), 0), roots, 0.0};
+  std::sort(cut.subtrees.begin(), cut.subtrees.end(), heavier);
+  double top = 0.0;
+  cut.time = deal_subtrees(cut.subtrees, subtree, team, nullptr);
+  std::vector<int> cuts, now = cut.subtrees;
+  std::size_t best = 0;
+  while (team > 1 && !now.empty() && top < cut.time) {
+    const int r = now.front();  // the heaviest
+    now.erase(now.begin());
+    cuts.push_back(r);
+    top += work[r];
+    for (int c : children[r]) now.insert(std::lower_bound(now.begin(), now.end(), c, heavier), c);
+    const double time = top + deal_subtrees(now, subtree, team, nullptr);
+    if (time < cut.time) {
+      cut.time = time;
+      cut.subtrees = now;
+      best = cuts.size();
+    }
+  }
+  for (std::size_t k = 0; k < best; ++k) cut.in_top[cuts[k]] = 1;
+  return cut;
+}
+
+void plan_solves(LocalGlobalSolver& S, int team) {
+  const auto& L = S.factor.matrixL().nestedExpression();
+  const int rows = static_cast<int>(L.cols());
+  const int* begin = L.outerIndexPtr();
+  const int* index = L.innerIndexPtr();
+  LocalGlobalSolver::SolvePlan& P = S.plan;
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> by_rows = L;  // (columns ascending a row)
+  const int* row_begin = by_rows.outerIndexPtr();
+
+  std::vector<int> parent(rows, -1);
+  std::vector<double> work(rows), subtree(rows);
+  std::vector<std::vector<int>> children(rows);
+  std::vector<int> roots;
+  for (int j = 0; j < rows; ++j) {
+    if (begin[j] < begin[j + 1]) parent[j] = index[begin[j]];
+    work[j] = 1.0 + (begin[j + 1] - begin[j]) + (row_begin[j + 1] - row_begin[j]);
+    (parent[j] >= 0 ? children[parent[j]] : roots).push_back(j);
+  }
+  subtree = work;
+  for (int j = 0; j < rows; ++j)  // a parent's index is above its children's
+    if (parent[j] >= 0) subtree[parent[j]] += subtree[j];
+  const SolveCut cut = cut_tree(roots, children, work, subtree, team);
+  const std::vector<char>& in_top = cut.in_top;
+  std::vector<int> piece(rows, -1);
+  deal_subtrees(cut.subtrees, subtree, team, &piece);
+  for (int j = rows - 1; j >= 0; --j)  // a subtree's rows join its root's piece
+    if (!in_top[j] && piece[j] < 0) piece[j] = piece[parent[j]];
+  // Each row's place in the solves' storage: the pieces' rows in turn, each piece's ascending,
+  // then the top's. A piece's rows are then one run of memory its thread alone writes.
+  std::vector<int> place(rows), group(rows), first(team + 2, 0);
+  for (int j = 0; j < rows; ++j) {  // group team: the top
+    group[j] = in_top[j] ? team : piece[j];
+    ++first[group[j] + 1];
+  }
+  for (int k = 0; k <= team; ++k) first[k + 1] += first[k];
+  P.piece_first.assign(first.begin(), first.begin() + team + 1);
+  P.top_first = first[team];
+  P.piece_work = 0.0;
+  for (int j = 0; j < rows; ++j) {
+    place[j] = first[group[j]]++;
+    if (!in_top[j]) P.piece_work += work[j];
+  }
+  // L by rows (forward) and by columns (backward) at their places, each row's or column's
+  // entries in their own order (ascending in the factor's): the sums' order, and so their bits,
+  // are the factor's.
+  const auto copy_at_places = [&](const int* outer, const int* inner, const double* value,
+                                  std::vector<int>& first, std::vector<int>& at,
+                                  std::vector<double>& values) {
+    first.assign(rows + 1, 0);
+    for (int j = 0; j < rows; ++j) first[place[j] + 1] = outer[j + 1] - outer[j];
+    for (int q = 0; q < rows; ++q) first[q + 1] += first[q];
+    at.resize(static_cast<std::size_t>(first[rows]));
+    values.resize(at.size());
+    for (int j = 0; j < rows; ++j)
+      for (int p = outer[j], to = first[place[j]]; p < outer[j + 1]; ++p, ++to) {
+        at[to] = place[inner[p]];
+        values[to] = value[p];
+      }
+  };
+  copy_at_places(by_rows.outerIndexPtr(), by_rows.innerIndexPtr(), by_rows.valuePtr(), P.row_begin,
+                 P.row_index, P.row_value);
+  copy_at_places(begin, index, L.valuePtr(), P.col_begin, P.col_index, P.col_value);
+  const Eigen::VectorXd d = S.factor.vectorD();  // (a copy: vectorD() returns one)
+  S.inv_d.resize(rows);
+  for (int j = 0; j < rows; ++j) S.inv_d[place[j]] = 1.0 / d[j];
+  S.row.resize(S.factor_row.size());
+  for (std::size_t i = 0; i < S.row.size(); ++i)
+    S.row[i] = S.factor_row[i] >= 0 ? place[S.factor_row[i]] : -1;
+  P.team = team;
+}
+
+// Each row's springs, for the right side's sums (LocalGlobalSolver::row_springs): spring s as s
+// at its b end's row, ~s at its a end's, springs ascending.
+void plan_row_springs(const Model& model, LocalGlobalSolver& S) {
+  const int rows = static_cast<int>(S.inv_d.size());
+  S.row_springs_first.assign(rows + 1, 0);
+  for (int s = 0; s < model.spring_count(); ++s) {
+    if (const int rb = S.row[model.spring_b[s]]; rb >= 0) ++S.row_springs_first[rb + 1];
+    if (const int ra = S.row[model.spring_a[s]]; ra >= 0) ++S.row_springs_first[ra + 1];
+  }
+  for (int r = 0; r < rows; ++r) S.row_springs_first[r + 1] += S.row_springs_first[r];
+  S.row_springs.assign(S.row_springs_first[rows], 0);
+  std::vector<int> next(S.row_springs_first.begin(), S.row_springs_first.end() - 1);
+  for (int s = 0; s < model.spring_count(); ++s) {
+    if (const int rb = S.row[model.spring_b[s]]; rb >= 0) S.row_springs[next[rb]++] = s;
+    if (const int ra = S.row[model.spring_a[s]]; ra >= 0) S.row_springs[next[ra]++] = ~s;
+  }
+}
+
+}  // namespace
+
 namespace local_global_parts {
 
 void factorise(const Model& model, double h, const std::vector<double>& mass,
@@ -96,22 +244,74 @@ void factorise(const Model& model, double h, const std::vector<double>& mass,
   // Rows in the factor's own (fill-reducing) order, so that the solve needs no permutation:
   // Eigen's P b puts row r at P.indices()[r].
   const auto& order = S.factor.permutationP().indices();
-  S.row.assign(n, -1);
+  S.factor_row.assign(n, -1);
   for (int i = 0; i < n; ++i)
-    if (row[i] >= 0) S.row[i] = order.size() ? order[row[i]] : row[i];
-  const Eigen::VectorXd d = S.factor.vectorD();  // (a copy: vectorD() returns one)
-  S.inv_d.resize(rows);
-  for (int r = 0; r < rows; ++r) S.inv_d[r] = 1.0 / d[r];
+    if (row[i] >= 0) S.factor_row[i] = order.size() ? order[row[i]] : row[i];
   S.factored = true;
   ++S.factorisations;
   S.rhs.assign(3 * rows, 0.0);
+  plan(model, S);
 }
 
-// (L D L^T) z = b in place, b and z in the factor's order (local_global.hpp, solve_ldlt3).
+void plan(const Model& model, LocalGlobalSolver& S) {
+  plan_solves(S, std::max(1, threads::max_team()));
+  plan_row_springs(model, S);
+}
+
+namespace {
+
+// Forward, L y = b, for the rows at places [from, to) (ascending), each its row's sum over the
+// rows before it: y_i = b_i - sum_j L_ij y_j, j ascending (the subtractions in the order the
+// column-by-column solve makes them: the same bits).
+void forward_rows(const LocalGlobalSolver::SolvePlan& P, int from, int to, double* Z) {
+  const int* begin = P.row_begin.data();
+  const int* index = P.row_index.data();
+  const double* value = P.row_value.data();
+  for (int i = from; i < to; ++i) {
+    double s0 = Z[3 * i], s1 = Z[3 * i + 1], s2 = Z[3 * i + 2];
+    for (int p = begin[i]; p < begin[i + 1]; ++p) {
+      const double* r = Z + 3 * index[p];
+      s0 -= value[p] * r[0], s1 -= value[p] * r[1], s2 -= value[p] * r[2];
+    }
+    Z[3 * i] = s0, Z[3 * i + 1] = s1, Z[3 * i + 2] = s2;
+  }
+}
+
+// Then D w = y and L^T z = w for the rows at places [from, to), descending: z_j = y_j / D_j -
+// sum_i L_ij z_i over the rows below j in the factor (its ancestors), i ascending.
+void backward_rows(const LocalGlobalSolver& S, int from, int to, double* Z) {
+  const LocalGlobalSolver::SolvePlan& P = S.plan;
+  const int* begin = P.col_begin.data();
+  const int* index = P.col_index.data();
+  const double* value = P.col_value.data();
+  for (int j = to - 1; j >= from; --j) {
+    const double inv = S.inv_d[j];
+    double s0 = Z[3 * j] * inv, s1 = Z[3 * j + 1] * inv, s2 = Z[3 * j + 2] * inv;
+    for (int p = begin[j]; p < begin[j + 1]; ++p) {
+      const double* r = Z + 3 * index[p];
+      s0 -= value[p] * r[0], s1 -= value[p] * r[1], s2 -= value[p] * r[2];
+    }
+    Z[3 * j] = s0, Z[3 * j + 1] = s1, Z[3 * j + 2] = s2;
+  }
+}
+
+}  // namespace
+
+// The pieces in parallel, the top rows on the caller: forward the pieces then the top, backward
+// the top then the pieces. Each row's arithmetic is the same whichever thread does it.
 void solve_in_place(const LocalGlobalSolver& S, std::vector<double>& z) {
-  const auto& L = S.factor.matrixL().nestedExpression();
-  solve_ldlt3(static_cast<int>(L.cols()), L.outerIndexPtr(), L.innerIndexPtr(), L.valuePtr(),
-              S.inv_d.data(), z.data());
+  const LocalGlobalSolver::SolvePlan& P = S.plan;
+  double* Z = z.data();
+  const int pieces = static_cast<int>(P.piece_first.size()) - 1;
+  const int rows = static_cast<int>(S.inv_d.size());
+  threads::for_each_piece(pieces, P.piece_work, [&](int k) {
+    forward_rows(P, P.piece_first[k], P.piece_first[k + 1], Z);
+  });
+  forward_rows(P, P.top_first, rows, Z);
+  backward_rows(S, P.top_first, rows, Z);
+  threads::for_each_piece(pieces, P.piece_work, [&](int k) {
+    backward_rows(S, P.piece_first[k], P.piece_first[k + 1], Z);
+  });
 }
 
 // The local step for `count` springs of a span (spring k joins a0 + k and b0 + k), from the
@@ -148,8 +348,9 @@ void span_targets(const double* const x[3], const double* const x0[3], int a0, i
 // solved for x itself, a body 2 m from the origin lost 1e-8 of its momentum over a throw to the
 // solve's rounding of |x| (a free body keeps sum M~ x = sum M~ y exactly, momentum.hpp). From the
 // iterate X (pinned rows hold their positions, which are y's), into S.rhs in the factor's order:
-// each spring's w t (span by span, in parallel: each spring's own numbers), then added to its
-// ends' rows in the springs' order (the same bits for any thread count).
+// each spring's w t - w e(y) (span by span, in parallel: each spring's own numbers), then each
+// row's sum of its springs' terms, in the springs' order (rows in parallel: the same bits for any
+// thread count, and as the springs added one by one to their ends' rows).
 void global_rhs(const Model& model, const State& in, double h, const Points& X, const Points& y,
                 LocalGlobalSolver& S) {
   const int springs = model.spring_count();
@@ -159,9 +360,8 @@ void global_rhs(const Model& model, const State& in, double h, const Points& X, 
   S.wt.resize(3 * static_cast<std::size_t>(springs));
   double *wx = S.wt.data(), *wy = wx + springs, *wz = wy + springs;
   // Pieces of kPiece springs (a span cut where a piece ends), claimed by whichever thread of the
-  // team is running (dynamics/threads.hpp), at least kPerThread springs a thread: the step's time
-  // is mostly its serial solves, and more threads only cost (128 x 128 cloth on 16 cores, 10
-  // iterations at 1/60 s: 26.6, 26.3, 27.6, 23.4 and 22.0 steps/s at 1, 2, 4, 8 and 16 threads).
+  // team is running (dynamics/threads.hpp), at least kPerThread springs a thread: a pass this
+  // short (a tenth of an iteration on the 128 x 128 cloth) does not pay for waking many threads.
   constexpr int kPiece = 2048, kPerThread = 16384;
   threads::for_each_piece(
       (springs + kPiece - 1) / kPiece, springs,
@@ -179,20 +379,35 @@ void global_rhs(const Model& model, const State& in, double h, const Points& X, 
           span_targets(x, x0, span->a0 + from, span->b0 + from, to - from, material.ks, material.kd,
                        span->rest, h, wx + at, wy + at, wz + at);
         }
+        for (int s = lo; s < hi; ++s) {  // the spring's term g = w t - w e(y)
+          const int a = model.spring_a[s], b = model.spring_b[s];
+          const double w = h * h * model.ks(s) + h * model.kd(s);
+          wx[s] = wx[s] - w * (y(b, 0) - y(a, 0));
+          wy[s] = wy[s] - w * (y(b, 1) - y(a, 1));
+          wz[s] = wz[s] - w * (y(b, 2) - y(a, 2));
+        }
       },
       kPerThread);
-  std::fill(S.rhs.begin(), S.rhs.end(), 0.0);
-  for (int s = 0; s < springs; ++s) {
-    const int a = model.spring_a[s], b = model.spring_b[s];
-    const int ra = S.row[a], rb = S.row[b];
-    const double w = h * h * model.ks(s) + h * model.kd(s);
-    const double wt[3] = {wx[s], wy[s], wz[s]};
-    for (int c = 0; c < 3; ++c) {
-      const double g = wt[c] - w * (y(b, c) - y(a, c));
-      if (rb >= 0) B[3 * rb + c] += g;
-      if (ra >= 0) B[3 * ra + c] -= g;
-    }
-  }
+  // Each row its springs' terms, in the springs' order, pieces of rows in parallel.
+  const int rows = static_cast<int>(S.inv_d.size());
+  constexpr int kRowPiece = 2048;
+  threads::for_each_piece(
+      (rows + kRowPiece - 1) / kRowPiece, static_cast<double>(S.row_springs.size()),
+      [&](int p) {
+        const int lo = p * kRowPiece, hi = std::min(rows, lo + kRowPiece);
+        for (int r = lo; r < hi; ++r) {
+          double b0 = 0.0, b1 = 0.0, b2 = 0.0;
+          for (int e = S.row_springs_first[r]; e < S.row_springs_first[r + 1]; ++e) {
+            const int s = S.row_springs[e];
+            if (s >= 0)
+              b0 += wx[s], b1 += wy[s], b2 += wz[s];
+            else
+              b0 -= wx[~s], b1 -= wy[~s], b2 -= wz[~s];
+          }
+          B[3 * r] = b0, B[3 * r + 1] = b1, B[3 * r + 2] = b2;
+        }
+      },
+      kPerThread);
 }
 
 }  // namespace local_global_parts
@@ -211,6 +426,8 @@ void local_global(const Model& model, const State& in, State& out, double h,
   if (!S.factored || !S.key.matches(model, h)) {
     factorise(model, h, I.mass, S);
     S.key.take(model, h);
+  } else if (S.plan.team != std::max(1, threads::max_team())) {
+    plan(model, S);  // the team changed: the solves' pieces for the new one (the same bits)
   }
 
   out.resize(in.particle_count());

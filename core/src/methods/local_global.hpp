@@ -8,6 +8,9 @@ namespace springlab::local_global_parts {
 
 // Factorises M~ + sum_s w_s A_s A_s^T for the step h (throws StepFailure if it cannot).
 void factorise(const Model& model, double h, const std::vector<double>& mass, LocalGlobalSolver& S);
+// Plans the solves and the right side's sums for the factor and the team the threads now have
+// (LocalGlobalSolver::SolvePlan); factorise() does, and the step again when the team changes.
+void plan(const Model& model, LocalGlobalSolver& S);
 // The local pass: the right side of the global step for the correction x - y from the iterate X,
 // into S.rhs.
 void global_rhs(const Model& model, const State& in, double h, const Points& X, const Points& y,
