@@ -83,9 +83,11 @@ struct Counters {
 struct ImplicitSolver;    // implicit_euler.cpp
 struct IterativeSolvers;  // methods/iterative.hpp: xpbd, local-global, vbd
 struct StageSolvers;      // methods/tableau_steps.hpp: a diagonally implicit tableau's stages
+struct StepScratch;       // methods/step_scratch.hpp: the steps' stages, trials and blocks
 
 /// Scratch memory and the little history some methods keep between steps. Allocated on first
-/// use and reused, so a step allocates nothing once running.
+/// use and reused, so a step allocates nothing once running. What only the steps use is behind
+/// `scratch`; what the rest of the library reads is here.
 struct Workspace {
   Workspace();
   ~Workspace();
@@ -94,45 +96,37 @@ struct Workspace {
 
   Counters counters;
   SpringForces spring_forces;
-  std::vector<Points> stage_dx,
-      stage_dv;             ///< Runge-Kutta stage derivatives (dx/dt, dv/dt), one a stage
-  Points stage_x, stage_v;  ///< a stage's state (adaptive Euler: the state after half a step)
-  Points trial_x, trial_v;  ///< a trial step's result (adaptive methods: kept if accepted)
 
   /// Verlet: the previous positions and a(x) at the current positions, valid while `verlet_ready`.
   Points x_prev, a_now;
   bool verlet_ready = false;
   double verlet_h = 0.0;
 
-  /// Adaptive methods: the internal step to try next (0: start from h), and whether rk45's
-  /// first-same-as-last derivative (ws.stage_dx[0], ws.stage_dv[0]) is that of the state it is
-  /// given next.
+  /// Adaptive methods: the internal step to try next (0: start from h).
   double adaptive_step = 0.0;
-  bool fsal_ready = false;
 
   std::unique_ptr<ImplicitSolver> implicit;
   std::unique_ptr<IterativeSolvers> iterative;
   std::unique_ptr<StageSolvers> stages;
+  /// The steps' own scratch: Runge-Kutta stages, adaptive trials, rk45's first-same-as-last
+  /// derivative and the fused steps' per-block sums; null until a step needs it.
+  std::unique_ptr<StepScratch> scratch;
 
   /// The check of the state a step made (energy.hpp), when the step made it itself: the explicit
   /// methods probe each block of particles as they finish it, while it is in cache, and sum the
   /// blocks in order (the same bits for any thread count). Cleared by step() before each step.
-  std::vector<StepProbe> block_probes;
   std::optional<StepProbe> step_probe;
 
   /// Asked for (measure_power), the explicit methods measure in their force pass the power that
   /// damping and drag take out at the state they start from (dissipation_power(), energy.hpp), by
   /// blocks, summed in order. Cleared by step() before each step.
   bool measure_power = false;
-  std::vector<double> block_power;
   std::optional<double> input_power;
 
   /// The state or the model was changed from outside (contact, a drag, a parameter): forget what
-  /// was derived from the last step. Counters and the adaptive step size are kept.
-  void invalidate() {
-    verlet_ready = false;
-    fsal_ready = false;
-  }
+  /// was derived from the last step (Verlet's history, rk45's first-same-as-last derivative).
+  /// Counters and the adaptive step size are kept.
+  void invalidate();
 };
 
 using StepFunction = void (*)(const Model& model, const State& in, State& out, double h,

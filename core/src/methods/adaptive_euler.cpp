@@ -13,6 +13,7 @@
 #include <cmath>
 
 #include "adaptive.hpp"
+#include "step_scratch.hpp"
 #include "steps.hpp"
 
 namespace springlab::steps {
@@ -21,9 +22,10 @@ void adaptive_euler(const Model& model, const State& in, State& out, double h,
                     const StepSettings& settings, Workspace& ws) {
   out.x = in.x;
   out.v = in.v;
-  if (ws.stage_dv.size() < 2) ws.stage_dv.resize(2);
-  Points& a0 = ws.stage_dv[0];
-  Points& a1 = ws.stage_dv[1];
+  StepScratch& s = scratch(ws);
+  if (s.stage_dv.size() < 2) s.stage_dv.resize(2);
+  Points& a0 = s.stage_dv[0];
+  Points& a1 = s.stage_dv[1];
   double T = adaptive::first_try(ws, h);
   double done = 0.0;
   accelerations(model, out.x, out.v, a0, ws);
@@ -32,23 +34,23 @@ void adaptive_euler(const Model& model, const State& in, State& out, double h,
     const bool last = T >= remaining * (1.0 - 1e-12);
     const double step = last ? remaining : T;
     // Whole step (positions only) and the first half step.
-    ws.trial_x = out.x + step * out.v;          // x_T
-    ws.stage_x = out.x + (0.5 * step) * out.v;  // x after the first half
-    ws.stage_v = out.v + (0.5 * step) * a0;     // v after the first half
+    s.trial_x = out.x + step * out.v;          // x_T
+    s.stage_x = out.x + (0.5 * step) * out.v;  // x after the first half
+    s.stage_v = out.v + (0.5 * step) * a0;     // v after the first half
     // x_T/2 = stage_x + T/2 stage_v, compared with x_T particle by particle.
     double error = 0.0;
     for (int i = 0; i < out.x.rows(); ++i)
       error = std::max(
-          error, (ws.stage_x.row(i) + (0.5 * step) * ws.stage_v.row(i) - ws.trial_x.row(i)).norm());
+          error, (s.stage_x.row(i) + (0.5 * step) * s.stage_v.row(i) - s.trial_x.row(i)).norm());
     if (!(error <= settings.tolerance)) {  // also rejects NaN
       ++ws.counters.rejected;
       T = 0.5 * step;
       adaptive::check_floor("adaptive-euler", T, h, settings);
       continue;
     }
-    accelerations(model, ws.stage_x, ws.stage_v, a1, ws);
-    out.x = ws.stage_x + (0.5 * step) * ws.stage_v;
-    out.v = ws.stage_v + (0.5 * step) * a1;
+    accelerations(model, s.stage_x, s.stage_v, a1, ws);
+    out.x = s.stage_x + (0.5 * step) * s.stage_v;
+    out.v = s.stage_v + (0.5 * step) * a1;
     done = last ? h : done + step;
     ++ws.counters.accepted;
     // A last step cut short to land on h says nothing against T: T never shrinks to it (a

@@ -11,6 +11,7 @@
 #include "dynamics/force_pass.hpp"
 #include "springlab/methods.hpp"
 #include "springlab/simd.hpp"
+#include "step_scratch.hpp"
 
 namespace springlab::steps {
 
@@ -59,20 +60,21 @@ void fused_step(const Model& model, const State& in, State& out, double h, Works
   out.v.resize(n, 3);
   double* const F[3] = {out.v.col(0).data(), out.v.col(1).data(), out.v.col(2).data()};
   const std::size_t blocks = plan_for(model, ws.spring_forces).own.size();
-  ws.block_probes.assign(blocks, StepProbe{});
-  ws.block_power.resize(blocks);
+  StepScratch& s = scratch(ws);
+  s.block_probes.assign(blocks, StepProbe{});
+  s.block_power.resize(blocks);
   force_pass(
       model, in.x, in.v, F, ws.spring_forces,
       [&](int block, int begin, int end) {
-        ws.block_probes[block] += detail::update_block(update, model, in, out, F, begin, end);
+        s.block_probes[block] += detail::update_block(update, model, in, out, F, begin, end);
       },
-      ws.measure_power ? ws.block_power.data() : nullptr);
+      ws.measure_power ? s.block_power.data() : nullptr);
   StepProbe all;
-  for (const StepProbe& block : ws.block_probes) all += block;
+  for (const StepProbe& block : s.block_probes) all += block;
   ws.step_probe = all;
   if (ws.measure_power) {
     double power = 0.0;
-    for (double block : ws.block_power) power += block;
+    for (double block : s.block_power) power += block;
     ws.input_power = power;
   }
   ++ws.counters.force_evals;

@@ -46,6 +46,7 @@
 #include "dynamics/force_pass.hpp"
 #include "iterative.hpp"
 #include "springlab/spring_kernel.hpp"
+#include "step_scratch.hpp"
 #include "steps.hpp"
 #include "tableau_steps.hpp"
 
@@ -481,11 +482,17 @@ struct ImplicitSolver {
   }
 };
 
-// Defined here, where ImplicitSolver (and IterativeSolvers, iterative.hpp) are complete.
+// Defined here, where ImplicitSolver (and IterativeSolvers, StageSolvers and StepScratch) are
+// complete.
 Workspace::Workspace() = default;
 Workspace::~Workspace() = default;
 Workspace::Workspace(Workspace&&) noexcept = default;
 Workspace& Workspace::operator=(Workspace&&) noexcept = default;
+
+void Workspace::invalidate() {
+  verlet_ready = false;
+  if (scratch) scratch->fsal_ready = false;  // a scratch not yet made has nothing to forget
+}
 
 // ---- The step ---------------------------------------------------------------------------------
 

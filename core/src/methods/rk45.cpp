@@ -32,7 +32,7 @@ constexpr double kErrorWeights[7] = {
 
 // RMS of the scaled error over the coordinates of free particles.
 double error_norm(const Model& model, const Points& x0, const Points& v0, const Points& x1,
-                  const Points& v1, double step, const Workspace& ws, double tol,
+                  const Points& v1, double step, const StepScratch& s, double tol,
                   const double* weights, int stages) {
   double sum = 0.0;
   int count = 0;
@@ -40,9 +40,9 @@ double error_norm(const Model& model, const Points& x0, const Points& v0, const 
     if (model.pinned(i)) continue;
     for (int c = 0; c < 3; ++c) {
       double ex = 0.0, ev = 0.0;
-      for (int s = 0; s < stages; ++s) {
-        ex += weights[s] * ws.stage_dx[s](i, c);
-        ev += weights[s] * ws.stage_dv[s](i, c);
+      for (int k = 0; k < stages; ++k) {
+        ex += weights[k] * s.stage_dx[k](i, c);
+        ev += weights[k] * s.stage_dv[k](i, c);
       }
       const double sx = tol + tol * std::max(std::abs(x0(i, c)), std::abs(x1(i, c)));
       const double sv = tol + tol * std::max(std::abs(v0(i, c)), std::abs(v1(i, c)));
@@ -70,21 +70,22 @@ void embedded_pair_step(const Tableau& tableau, const double* error_weights, dou
                         const StepSettings& settings, Workspace& ws) {
   const int last_stage = tableau.stages - 1;
   const bool fsal = tableau.first_same_as_last();
-  // The state walks in `out`; each try is written to (ws.trial_x, ws.trial_v) and swapped in if
+  // The state walks in `out`; each try is written to (trial_x, trial_v) and swapped in if
   // accepted.
+  StepScratch& s = scratch(ws);
   out.x = in.x;
   out.v = in.v;
   double T = first_try(ws, h);
   double done = 0.0;
-  bool first_known = fsal && ws.fsal_ready;
+  bool first_known = fsal && s.fsal_ready;
   bool just_rejected = false;
   while (done < h) {
     const double remaining = h - done;
     const bool last = T >= remaining * (1.0 - 1e-12);
     const double step = last ? remaining : T;
     rk::stages(model, out.x, out.v, step, tableau, ws, first_known);
-    rk::combine(out.x, out.v, step, tableau.b, ws, ws.trial_x, ws.trial_v);
-    const double err = steps::error_norm(model, out.x, out.v, ws.trial_x, ws.trial_v, step, ws,
+    rk::combine(out.x, out.v, step, tableau.b, s, s.trial_x, s.trial_v);
+    const double err = steps::error_norm(model, out.x, out.v, s.trial_x, s.trial_v, step, s,
                                          settings.tolerance, error_weights, tableau.stages);
     if (!(err <= 1.0)) {  // also rejects NaN
       ++ws.counters.rejected;
@@ -95,12 +96,12 @@ void embedded_pair_step(const Tableau& tableau, const double* error_weights, dou
       continue;
     }
     ++ws.counters.accepted;
-    std::swap(out.x, ws.trial_x);
-    std::swap(out.v, ws.trial_v);
+    std::swap(out.x, s.trial_x);
+    std::swap(out.v, s.trial_v);
     done = last ? h : done + step;
     if (fsal) {  // the last stage was evaluated at the new state: the next step's first
-      std::swap(ws.stage_dx[0], ws.stage_dx[static_cast<std::size_t>(last_stage)]);
-      std::swap(ws.stage_dv[0], ws.stage_dv[static_cast<std::size_t>(last_stage)]);
+      std::swap(s.stage_dx[0], s.stage_dx[static_cast<std::size_t>(last_stage)]);
+      std::swap(s.stage_dv[0], s.stage_dv[static_cast<std::size_t>(last_stage)]);
     }
     first_known = fsal;
     const double growth = err > 0.0 ? 0.9 * std::pow(err, -exponent) : 5.0;
@@ -112,7 +113,7 @@ void embedded_pair_step(const Tableau& tableau, const double* error_weights, dou
   }
   out.t = in.t + h;
   ws.adaptive_step = T;
-  ws.fsal_ready = fsal;
+  s.fsal_ready = fsal;
 }
 
 }  // namespace springlab::adaptive

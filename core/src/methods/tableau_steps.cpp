@@ -38,7 +38,7 @@ namespace springlab::steps {
 void explicit_tableau(const Tableau& tableau, const Model& model, const State& in, State& out,
                       double h, const StepSettings&, Workspace& ws) {
   rk::stages(model, in.x, in.v, h, tableau, ws);
-  rk::combine(in.x, in.v, h, tableau.b, ws, out.x, out.v);
+  rk::combine(in.x, in.v, h, tableau.b, scratch(ws), out.x, out.v);
   out.t = in.t + h;
 }
 
@@ -65,9 +65,10 @@ void dirk_stages(const Tableau& tableau, const Model& model, const State& in, St
   if (!ws.stages) ws.stages = std::make_unique<StageSolvers>();
   StageSolvers& S = *ws.stages;
   if (S.solvers.size() < static_cast<std::size_t>(s)) S.solvers.resize(static_cast<std::size_t>(s));
-  if (ws.stage_dx.size() < static_cast<std::size_t>(s)) {
-    ws.stage_dx.resize(static_cast<std::size_t>(s));
-    ws.stage_dv.resize(static_cast<std::size_t>(s));
+  StepScratch& k = scratch(ws);  // K_i = (k.stage_dx[i], k.stage_dv[i])
+  if (k.stage_dx.size() < static_cast<std::size_t>(s)) {
+    k.stage_dx.resize(static_cast<std::size_t>(s));
+    k.stage_dv.resize(static_cast<std::size_t>(s));
   }
   for (int i = 0; i < s; ++i) {
     S.in.x = in.x;
@@ -76,13 +77,13 @@ void dirk_stages(const Tableau& tableau, const Model& model, const State& in, St
     for (int j = 0; j < i; ++j) {
       const double w = h * tableau.A(i, j);
       if (w == 0.0) continue;
-      S.in.x += w * ws.stage_dx[static_cast<std::size_t>(j)];
-      S.in.v += w * ws.stage_dv[static_cast<std::size_t>(j)];
+      S.in.x += w * k.stage_dx[static_cast<std::size_t>(j)];
+      S.in.v += w * k.stage_dv[static_cast<std::size_t>(j)];
     }
     const double g = h * tableau.A(i, i);
     if (g == 0.0) {
-      ws.stage_dx[static_cast<std::size_t>(i)] = S.in.v;
-      accelerations(model, S.in.x, S.in.v, ws.stage_dv[static_cast<std::size_t>(i)], ws);
+      k.stage_dx[static_cast<std::size_t>(i)] = S.in.v;
+      accelerations(model, S.in.x, S.in.v, k.stage_dv[static_cast<std::size_t>(i)], ws);
       continue;
     }
     Workspace& solver = S.solvers[static_cast<std::size_t>(i)];
@@ -91,8 +92,8 @@ void dirk_stages(const Tableau& tableau, const Model& model, const State& in, St
     } catch (const StepFailure& e) {
       throw SolveFailure("stage " + std::to_string(i + 1) + " of the tableau: " + e.what());
     }
-    ws.stage_dx[static_cast<std::size_t>(i)] = S.out.v;
-    ws.stage_dv[static_cast<std::size_t>(i)] = (S.out.v - S.in.v) / g;
+    k.stage_dx[static_cast<std::size_t>(i)] = S.out.v;
+    k.stage_dv[static_cast<std::size_t>(i)] = (S.out.v - S.in.v) / g;
     // The stage's work counts as the step's.
     Counters& c = solver.counters;
     ws.counters.force_evals += c.force_evals;
@@ -102,7 +103,7 @@ void dirk_stages(const Tableau& tableau, const Model& model, const State& in, St
     ws.counters.newton_corrections += c.newton_corrections;
     c = Counters{};
   }
-  rk::combine(in.x, in.v, h, tableau.b, ws, out.x, out.v);
+  rk::combine(in.x, in.v, h, tableau.b, k, out.x, out.v);
   out.t = in.t + h;
 }
 

@@ -11,6 +11,7 @@
 //   x_prev = x - h v + h^2/2 a(x, v)
 // which is second-order accurate; x_prev = x - h v would make the whole method first order.
 // Pinned particles move with their prescribed velocity: x1 = x + h v.
+#include "step_scratch.hpp"
 #include "steps.hpp"
 
 namespace springlab::steps {
@@ -27,8 +28,9 @@ void verlet(const Model& model, const State& in, State& out, double h, const Ste
   for (int i = 0; i < n; ++i)
     if (model.pinned(i)) out.x.row(i) = in.x.row(i) + h * in.v.row(i);
 
-  ws.stage_v = (out.x - in.x) / h + (0.5 * h) * ws.a_now;  // predicted v(t1)
-  accelerations(model, out.x, ws.stage_v, ws.a_now, ws);
+  Points& v_predicted = scratch(ws).stage_v;
+  v_predicted = (out.x - in.x) / h + (0.5 * h) * ws.a_now;  // predicted v(t1)
+  accelerations(model, out.x, v_predicted, ws.a_now, ws);
   out.v = ((2.0 - d) * (out.x - in.x) + (h * h) * ws.a_now) / (2.0 * h);
   for (int i = 0; i < n; ++i)
     if (model.pinned(i)) out.v.row(i) = in.v.row(i);
