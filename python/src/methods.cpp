@@ -111,14 +111,12 @@ void bind_method_info(py::module_& m) {
           "definite_form",
           [](const MethodInfo& r, double verlet_damping) -> py::object {
             if (!r.definite) return py::none();
-            const DefiniteForm f = r.definite(verlet_damping);
+            const DefiniteForm f = r.definite({.verlet_damping = verlet_damping});
             return py::make_tuple(f.a, f.b, f.c);
           },
           py::arg("verlet_damping") = 0.0,
           "(a, b, c): stable exactly while a h^2 K + b h C <= c I, for the rows that have one, "
           "else None")
-      .def_readonly("damping_shift", &MethodInfo::damping_shift)
-      .def_readonly("corner_bound", &MethodInfo::corner_bound)
       .def_readonly("audited", &MethodInfo::audited, "whether the energy audit watches it")
       .def_property_readonly(
           "built_in",
@@ -175,7 +173,7 @@ or a tableau's JSON file (which adds its row to the table). Unknown: springlab.I
   m.def(
       "mode_limit",
       [](const std::string& method, double gamma, double kappa, double verlet_damping) {
-        return mode_limit(method_named(method), gamma, kappa, verlet_damping);
+        return mode_limit(method_named(method), gamma, kappa, {.verlet_damping = verlet_damping});
       },
       py::arg("method"), py::arg("gamma"), py::arg("kappa"), py::arg("verlet_damping") = 0.0,
       "the largest stable h on one damped mode x'' = -kappa x - gamma x' (0 never, inf always, nan "

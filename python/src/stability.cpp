@@ -108,7 +108,7 @@ states, the limiting mode included.)")
           [](const StabilityAnalysis& a, const std::string& method, double h,
              double verlet_damping) {
             const StabilityAnalysis::Growth g =
-                a.transient_growth(method_named(method), h, verlet_damping);
+                a.transient_growth(method_named(method), h, {.verlet_damping = verlet_damping});
             return py::make_tuple(g.factor, g.growing);
           },
           py::arg("method"), py::arg("h"), py::arg("verlet_damping") = 0.0,

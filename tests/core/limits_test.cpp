@@ -180,7 +180,7 @@ TEST_P(Limits, HoldJustInsideAndGrowAsPredictedJustOutside) {
     ASSERT_TRUE(limit.mode);
     const double h = 1.25 * limit.h;
     const double rho =
-        amplification(m, limit.mode->w, limit.mode->c, h, scene.model.verlet_damping);
+        amplification(m, limit.mode->w, limit.mode->c, h, method_parameters(scene.model));
     const double grown = 2.0 * std::log(rho) * outside.t / h;  // ln of the energy's growth
     std::printf(", 1.25: held %.3g s%s, the mode's energy growing e^%.3g there\n", outside.t,
                 outside.whole ? "" : " (budget)", grown);

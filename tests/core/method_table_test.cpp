@@ -150,7 +150,7 @@ TEST(MethodTable, TheStatedLimitsAreTheRowsOwn) {
       const Complex root = std::sqrt(Complex(0.25 * c * c - w * w, 0.0));
       const double from_r = std::min(runge_kutta_limit(m.id, -0.5 * c + root),
                                      runge_kutta_limit(m.id, -0.5 * c - root));
-      EXPECT_NEAR(m.mode_limit(c, w * w, 0.0), from_r, 1e-9 * from_r) << "zeta " << zeta;
+      EXPECT_NEAR(m.mode_limit(c, w * w, {}), from_r, 1e-9 * from_r) << "zeta " << zeta;
     }
   }
 }

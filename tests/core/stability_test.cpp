@@ -55,17 +55,18 @@ TEST(ModeLimit, IsWhereEachMethodsOwnStepStopsBeingStable) {
     for (double zeta : {0.0, 0.001, 0.05, 0.3, 0.9, 1.5, 4.0})
       for (double d : {0.0, 0.15}) {
         if (d > 0.0 && m != Method::Verlet) continue;
-        const double c = 2.0 * zeta * w, h = stable_step(m, w, c, d);
+        const MethodParameters p{.verlet_damping = d};
+        const double c = 2.0 * zeta * w, h = stable_step(m, w, c, p);
         SCOPED_TRACE(std::string(method_info(m).name) + " zeta " + std::to_string(zeta) + " d " +
                      std::to_string(d));
         if (h == 0.0) {
-          EXPECT_GT(amplification(m, w, c, 0.1 / w, d), 1.0);
+          EXPECT_GT(amplification(m, w, c, 0.1 / w, p), 1.0);
           continue;
         }
         ASSERT_TRUE(std::isfinite(h));
         for (int k = 1; k <= 200; ++k)
-          EXPECT_LE(amplification(m, w, c, h * k / 200.0 * (1 - 1e-9), d), 1.0 + 1e-9);
-        EXPECT_GT(amplification(m, w, c, h * (1 + 1e-5), d), 1.0);
+          EXPECT_LE(amplification(m, w, c, h * k / 200.0 * (1 - 1e-9), p), 1.0 + 1e-9);
+        EXPECT_GT(amplification(m, w, c, h * (1 + 1e-5), p), 1.0);
       }
 }
 

@@ -161,15 +161,26 @@ enum class MethodFamily {
   Iterative,
 };
 
+/// A method's own parameters, for the rows that read any (Verlet's damping factor d): what the
+/// closed forms, the definite forms and the measured steps take beside the mode. A scene gives
+/// them (method_parameters); the defaults are a method without its parameters' effect (d = 0).
+struct MethodParameters {
+  double verlet_damping = 0.0;  ///< position Verlet's damping factor d (Model::verlet_damping)
+};
+/// The parameters a scene's model gives its methods.
+inline MethodParameters method_parameters(const Model& model) {
+  return {.verlet_damping = model.verlet_damping};
+}
+
 /// The largest stable h on one damped mode x'' = -kappa x - gamma x', in closed form.
-using ModeLimit = double (*)(double gamma, double kappa, double verlet_damping);
+using ModeLimit = double (*)(double gamma, double kappa, const MethodParameters& parameters);
 
 /// A partitioned method whose modes are stable exactly while a h^2 kappa + b h gamma <= c: the
 /// scene's limit is where a h^2 K^ + b h C^ first reaches c I (stability.cpp, definite_limit).
 struct DefiniteForm {
   double a, b, c;
 };
-using DefiniteRule = DefiniteForm (*)(double verlet_damping);
+using DefiniteRule = DefiniteForm (*)(const MethodParameters& parameters);
 
 /// What a method keeps of a constant of the motion on a free body (momentum.hpp): to rounding
 /// (exactly, as the update adds forces linearly or keeps x x v), only to its solver's tolerance
@@ -210,12 +221,9 @@ struct MethodInfo {
   /// Runge-Kutta row a shortcut the contract test holds to R(z)); otherwise from R(z).
   ModeLimit mode_limit = nullptr;
   /// Partitioned rows: the definite form, if the limit is one; otherwise the least over the
-  /// scene's numerical range, the damping seen as C^ + damping_shift h K^ (modified Euler: 1/2).
+  /// scene's numerical range (how the analysis searches it is its own business:
+  /// core/src/stability/analysis_rows.hpp).
   DefiniteRule definite = nullptr;
-  double damping_shift = 0.0;
-  /// Its mode limit is least at a corner of any box of (gamma, kappa) (monotone closed forms):
-  /// the quick bound takes the corners, exact; otherwise a grid, with a margin.
-  bool corner_bound = false;
   /// The energy audit watches it (simulation.cpp, audited()): not where the divergence test
   /// sees instability at once (symplectic Euler, Verlet) nor the adaptive ones.
   bool audited = false;

@@ -54,21 +54,23 @@ namespace springlab {
 
 /// The largest h such that every step up to it keeps the method's spectral radius at most 1:
 /// 0 = unstable at any step, infinity = at any step, NaN = the method chooses its own steps.
-double mode_limit(Method method, double gamma, double kappa, double verlet_damping = 0.0);
+double mode_limit(Method method, double gamma, double kappa,
+                  const MethodParameters& parameters = {});
 /// The same as a function of w = sqrt(kappa) and c = gamma.
-double stable_step(Method method, double w, double c, double verlet_damping = 0.0);
+double stable_step(Method method, double w, double c, const MethodParameters& parameters = {});
 /// The first h > 0 with |R(h lambda)| > 1, for euler, midpoint and rk4 (NaN for the others).
 double runge_kutta_limit(Method method, std::complex<double> lambda);
 /// Spectral radius of one step of size h on x'' = -w^2 x - c x', from the method's own step
 /// function applied to that oscillator as it runs (Verlet with the history it keeps): what the
 /// closed forms are checked against.
-double amplification(Method method, double w, double c, double h, double verlet_damping = 0.0);
+double amplification(Method method, double w, double c, double h,
+                     const MethodParameters& parameters = {});
 /// The most a stable step can raise the mode's energy, over any number of steps: sup over n of
 /// |S^n|^2 in the energy norm (kappa x^2 + v^2) / 2, S that step as a matrix. 1 for a normal
 /// contraction; above 1 where S is far from normal (near critical damping, near a limit);
 /// infinity where the mode grows (and for Verlet, whose state holds a history).
 double transient_growth(Method method, double gamma, double kappa, double h,
-                        double verlet_damping = 0.0);
+                        const MethodParameters& parameters = {});
 
 // ---- The equilibrium ----------------------------------------------------------------------------
 
@@ -148,7 +150,7 @@ class StabilityAnalysis {
     double factor = 1.0;
     int growing = 0;
   };
-  Growth transient_growth(Method method, double h, double verlet_damping = 0.0) const;
+  Growth transient_growth(Method method, double h, const MethodParameters& parameters = {}) const;
   /// A lower bound on the scene's total energy: the equilibrium's for the parts held by a pin (the
   /// least potential near it), springs at rest and each particle on the lowest floor for the parts
   /// that are not; -infinity when nothing bounds it (a part that can fall forever, a field).

@@ -161,7 +161,7 @@ const EnergyAudit::Allowance& Simulation::audit_allowance() {
   if (!allowance_) {
     const StabilityAnalysis& analysis = stability();
     allowance_ = EnergyAudit::Allowance{
-        analysis.transient_growth(settings_.method, h(), model_.verlet_damping).factor,
+        analysis.transient_growth(settings_.method, h(), method_parameters(model_)).factor,
         analysis.lowest_energy()};
   }
   return *allowance_;

@@ -28,10 +28,11 @@ const Tableau kRK4Tableau({{0.0}, {0.5}, {0.0, 0.5}, {0.0, 0.0, 1.0}},
                           {1.0 / 6.0, 1.0 / 3.0, 1.0 / 3.0, 1.0 / 6.0});
 const Tableau kImplicitEulerTableau({{1.0}}, {1.0});
 
-DefiniteForm symplectic_euler_form(double) {
+DefiniteForm symplectic_euler_form(const MethodParameters&) {
   return {1.0, 2.0, 4.0};
 }
-DefiniteForm verlet_form(double d) {
+DefiniteForm verlet_form(const MethodParameters& parameters) {
+  const double d = parameters.verlet_damping;
   return {1.0, 4.0 - d, 4.0 - 2.0 * d};
 }
 
@@ -56,7 +57,6 @@ constexpr MethodInfo kMethods[] = {
      .step = steps::euler,
      .tableau = &kEulerTableau,
      .mode_limit = modes::euler,
-     .corner_bound = true,
      .audited = true,
      .compared_first = true},
     {.id = Method::SymplecticEuler,
@@ -71,7 +71,6 @@ constexpr MethodInfo kMethods[] = {
      .step = steps::symplectic_euler,
      .mode_limit = modes::symplectic_euler,
      .definite = symplectic_euler_form,
-     .corner_bound = true,
      .angular_momentum = Kept::Exactly,
      .compared_first = true},
     {.id = Method::Midpoint,
@@ -97,8 +96,6 @@ constexpr MethodInfo kMethods[] = {
      .family = F::Partitioned,
      .step = steps::modified_euler,
      .mode_limit = modes::modified_euler,
-     .damping_shift = 0.5,
-     .corner_bound = true,
      .audited = true},
     {.id = Method::RK4,
      .name = "rk4",
@@ -158,7 +155,6 @@ constexpr MethodInfo kMethods[] = {
      .step = steps::verlet,
      .mode_limit = modes::verlet,
      .definite = verlet_form,
-     .corner_bound = true,
      .angular_momentum = Kept::Exactly,
      .history = true},
     // The iterative rows solve implicit Euler's step approximately (methods/iterative.hpp): no

@@ -18,12 +18,12 @@ namespace {
 
 // The oscillator: an anchor pinned at the origin, a unit mass at distance 1 along x, a spring of
 // rest length 1, k_s = w^2, k_d = c. Motion along x is exactly linear.
-Model oscillator(double w, double c, double verlet_damping) {
+Model oscillator(double w, double c, const MethodParameters& parameters) {
   Model m;
   add_particle(m, 1.0, true);
   add_particle(m, 1.0, false);
   add_spring(m, 0, 1, 1.0, add_material(m, {w * w, c}));
-  m.verlet_damping = verlet_damping;
+  m.verlet_damping = parameters.verlet_damping;
   finalize(m);
   return m;
 }
@@ -57,8 +57,9 @@ struct OscillatorStep {
   int size = 2;
 };
 
-OscillatorStep oscillator_step(Method method, double w, double c, double h, double verlet_damping) {
-  const Model model = oscillator(w, c, verlet_damping);
+OscillatorStep oscillator_step(Method method, double w, double c, double h,
+                               const MethodParameters& parameters) {
+  const Model model = oscillator(w, c, parameters);
   const StepSettings settings;
   // Motion along the spring is exactly linear whatever the offset, so the offset only has to be
   // large enough for (x - 1) / delta to keep its digits (1e-13 relative), and small enough that
@@ -99,8 +100,9 @@ OscillatorStep oscillator_step(Method method, double w, double c, double h, doub
 
 }  // namespace
 
-double amplification(Method method, double w, double c, double h, double verlet_damping) {
-  const OscillatorStep s = oscillator_step(method, w, c, h, verlet_damping);
+double amplification(Method method, double w, double c, double h,
+                     const MethodParameters& parameters) {
+  const OscillatorStep s = oscillator_step(method, w, c, h, parameters);
   double rho = 0.0;
   const Eigen::VectorXcd mu = eigenvalues(s.matrix.topLeftCorner(s.size, s.size));
   for (const auto& z : mu) rho = std::max(rho, std::abs(z));
@@ -112,13 +114,13 @@ double amplification(Method method, double w, double c, double h, double verlet_
 // spectral norm). With T = V diag(mu) V^-1, |T^n| <= cond(V) rho^n: once that falls to the
 // largest |T^n| seen, no later power can exceed it.
 double transient_growth(Method method, double gamma, double kappa, double h,
-                        double verlet_damping) {
+                        const MethodParameters& parameters) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   if (!(kappa > 0.0)) return 1.0;  // a first-order decay (drag alone): its speed only falls
   if (method_info(method).history)
     return kInf;  // its state holds a history: no energy norm of its own
   const OscillatorStep s =
-      oscillator_step(method, std::sqrt(kappa), std::max(gamma, 0.0), h, verlet_damping);
+      oscillator_step(method, std::sqrt(kappa), std::max(gamma, 0.0), h, parameters);
   const Eigen::Matrix2d D = Eigen::Vector2d(std::sqrt(kappa), 1.0).asDiagonal();
   const Eigen::Matrix2d T = D * s.matrix.topLeftCorner<2, 2>() * D.inverse();
   Eigen::VectorXcd mu;
@@ -237,19 +239,21 @@ bool Probe::holds(double h, long steps) {
 }
 
 // How long a probe at h runs (measured_limit). The mode the analysis expects to fail first
-// (w, c; the scene's Verlet damping d) sets it: long enough for that mode's energy to grow
-// 1e9-fold, ln(1e9) / (2 ln rho), so that the whole energy grows a thousandfold even if the push
-// gave the mode a millionth of it; at least 200 steps, at most max_steps.
+// (w, c; the method's parameters the scene gives, Verlet's damping d) sets it: long enough for
+// that mode's energy to grow 1e9-fold, ln(1e9) / (2 ln rho), so that the whole energy grows a
+// thousandfold even if the push gave the mode a millionth of it; at least 200 steps, at most
+// max_steps.
 struct ProbeLength {
   Method method;
-  double w, c, d;
+  double w, c;
+  MethodParameters parameters;
   long max_steps;
   double guess = 0.0;     // the expected limit, or 1 / w
   bool any_step = false;  // stable at any step, as the table or the analysis says
 
   // The steps for the expected mode's energy to grow 1e9-fold at h, in [200, max_steps].
   long to_see(double h) const {
-    const double rho = amplification(method, w, c, h, d);
+    const double rho = amplification(method, w, c, h, parameters);
     if (!(rho > 1.0)) return max_steps;
     const double steps = std::ceil(std::log(1e9) / (2.0 * std::log(rho)));
     return std::clamp(static_cast<long>(std::min(steps, 1e12)), 200L, max_steps);
@@ -332,7 +336,7 @@ MeasuredLimit measured_limit(Method method, const Model& model, const State& sta
   // The mode the analysis expects to fail first sets how long a run must be (ProbeLength).
   const double w = expected.mode ? expected.mode->w : w_max;
   const double c = expected.mode ? expected.mode->c : 0.0;
-  ProbeLength run{method, w, c, model.verlet_damping, max_steps};
+  ProbeLength run{method, w, c, method_parameters(model), max_steps};
   const auto holds = [&](double h, long steps) { return probe->holds(h, steps); };
 
   // Unstable at any step, says the analysis: then runs from h w = 0.3 up grow, fast enough to

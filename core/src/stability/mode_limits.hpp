@@ -2,11 +2,13 @@
 // rows in the method table (mode_stability.cpp derives each).
 #pragma once
 
+#include "springlab/methods.hpp"
+
 namespace springlab::modes {
 
-double euler(double gamma, double kappa, double verlet_damping);
-double modified_euler(double gamma, double kappa, double verlet_damping);
-double symplectic_euler(double gamma, double kappa, double verlet_damping);
-double verlet(double gamma, double kappa, double verlet_damping);
+double euler(double gamma, double kappa, const MethodParameters& parameters);
+double modified_euler(double gamma, double kappa, const MethodParameters& parameters);
+double symplectic_euler(double gamma, double kappa, const MethodParameters& parameters);
+double verlet(double gamma, double kappa, const MethodParameters& parameters);
 
 }  // namespace springlab::modes

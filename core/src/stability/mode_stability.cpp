@@ -137,7 +137,7 @@ void mode_eigenvalues(double gamma, double kappa, Complex& first, Complex& secon
 
 namespace modes {
 
-double euler(double gamma, double kappa, double) {
+double euler(double gamma, double kappa, const MethodParameters&) {
   // mu = 1 + h lambda: mu^2 - (2 - h gamma) mu + 1 - h gamma + h^2 kappa. Jury: a0 <= 1 is
   // h <= gamma / kappa; 1 - a1 + a0 >= 0 is h^2 kappa - 2 h gamma + 4 >= 0, which binds only
   // for an overdamped mode (real lambda): h <= 2 / |lambda|, the larger |lambda|.
@@ -147,7 +147,7 @@ double euler(double gamma, double kappa, double) {
   return 4.0 / (gamma + std::sqrt(disc));
 }
 
-double modified_euler(double gamma, double kappa, double) {
+double modified_euler(double gamma, double kappa, const MethodParameters&) {
   // With s = 1 - mu: s^2 - s (h gamma + h^2 kappa / 2) + h^2 kappa = 0 (v1 = v + h a,
   // x1 = x + h (v + v1) / 2). Jury: a0 <= 1 is h kappa / 2 <= gamma; 1 - a1 + a0 >= 0 is
   // h gamma <= 2.
@@ -156,29 +156,30 @@ double modified_euler(double gamma, double kappa, double) {
   return std::min(2.0 * gamma / kappa, 2.0 / gamma);
 }
 
-double symplectic_euler(double gamma, double kappa, double) {
+double symplectic_euler(double gamma, double kappa, const MethodParameters&) {
   // mu^2 - (2 - h gamma - h^2 kappa) mu + 1 - h gamma: a complex pair has |mu|^2 = 1 - h gamma
   // <= 1, so the roots leave the disc through -1, where 4 - 2 h gamma - h^2 kappa = 0.
   return 4.0 / (gamma + std::sqrt(gamma * gamma + 4.0 * kappa));
 }
 
-double verlet(double gamma, double kappa, double d) {
+double verlet(double gamma, double kappa, const MethodParameters& parameters) {
   // Position Verlet as verlet.cpp runs it (velocities predicted for the damping), a cubic in
   // mu whose roots leave the disc through -1 (checked against the step in the tests), where
   //   h^2 kappa + (4 - d) h gamma - (4 - 2 d) = 0.
+  const double d = parameters.verlet_damping;
   const double b = (4.0 - d) * gamma, c = 4.0 - 2.0 * d;
   return 2.0 * c / (b + std::sqrt(b * b + 4.0 * kappa * c));
 }
 
 }  // namespace modes
 
-double mode_limit(Method method, double gamma, double kappa, double verlet_damping) {
+double mode_limit(Method method, double gamma, double kappa, const MethodParameters& parameters) {
   const MethodInfo& info = method_info(method);
   if (info.adaptive()) return std::numeric_limits<double>::quiet_NaN();
   gamma = std::max(gamma, 0.0);
   kappa = std::max(kappa, 0.0);
   if (gamma == 0.0 && kappa == 0.0) return kNoLimit;  // a free motion: nothing to oscillate
-  if (info.mode_limit) return info.mode_limit(gamma, kappa, verlet_damping);
+  if (info.mode_limit) return info.mode_limit(gamma, kappa, parameters);
   if (info.any_step()) return kNoLimit;
   Complex first, second;
   mode_eigenvalues(gamma, kappa, first, second);
@@ -192,8 +193,8 @@ double runge_kutta_limit(Method method, std::complex<double> lambda) {
   return runge_kutta_exit(*info.tableau, lambda);
 }
 
-double stable_step(Method method, double w, double c, double verlet_damping) {
-  return mode_limit(method, c, w * w, verlet_damping);
+double stable_step(Method method, double w, double c, const MethodParameters& parameters) {
+  return mode_limit(method, c, w * w, parameters);
 }
 
 }  // namespace springlab

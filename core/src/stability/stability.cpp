@@ -18,6 +18,7 @@
 #include "dynamics/threads.hpp"
 #include "springlab/iterative_cost.hpp"
 #include "springlab/text.hpp"
+#include "stability/analysis_rows.hpp"
 #include "stability/cancel.hpp"
 #include "stability/dense_spectrum.hpp"
 #include "stability/lanczos.hpp"
@@ -283,7 +284,7 @@ StabilityLimit range_limit(Method method, const Linearised& lin, const RangeTrac
   const Sample& s = found;
   out.h = limit(s);
   // A method stable as explicit Euler on the damping C^ + shift h K^ (modified Euler: shift 1/2).
-  const double shift = method_info(method).damping_shift;
+  const double shift = analysis_row(method).damping_shift;
   const double extra = shift > 0.0 && std::isfinite(out.h) ? shift * out.h : 0.0;
   const double gamma = s.gamma + extra * s.kappa;
   // The root that sets the limit: either of a complex pair (conjugates), the larger of a real
@@ -480,7 +481,7 @@ void StabilityAnalysis::analyse(const Model& model, const State& state, int dens
     const double decay = lin.damping_bound();
     for (StabilityLimit& limit : limits_)
       if (!method_info(limit.method).adaptive() && !method_info(limit.method).any_step())
-        limit.h = mode_limit(limit.method, decay, 0.0, model.verlet_damping);
+        limit.h = mode_limit(limit.method, decay, 0.0, method_parameters(model));
     if (decay > 0.0) modes_.push_back({decay, 0.0});
     growth_modes_ = modes_;
     finish();
@@ -504,7 +505,7 @@ void StabilityAnalysis::analyse(const Model& model, const State& state, int dens
   std::vector<StabilityLimit> definite_limits(definite.size());
   RangeTrace trace(lin);
   trace.grid(16, static_cast<int>(definite.size()), [&](int j, const Sample& stiffest) {
-    const DefiniteForm f = definite[j]->definite(model.verlet_damping);
+    const DefiniteForm f = definite[j]->definite(method_parameters(model));
     definite_limits[j] = definite_limit(definite[j]->id, f.a, f.b, f.c, lin, stiffest);
   });
   for (StabilityLimit& limit : definite_limits) set(std::move(limit));
@@ -559,11 +560,11 @@ const StabilityLimit& StabilityAnalysis::limit(Method method) const {
   return late_->limits.back();
 }
 
-StabilityAnalysis::Growth StabilityAnalysis::transient_growth(Method method, double h,
-                                                              double verlet_damping) const {
+StabilityAnalysis::Growth StabilityAnalysis::transient_growth(
+    Method method, double h, const MethodParameters& parameters) const {
   Growth g;
   for (const ModePoint& p : growth_modes_) {
-    const double factor = springlab::transient_growth(method, p.gamma, p.kappa, h, verlet_damping);
+    const double factor = springlab::transient_growth(method, p.gamma, p.kappa, h, parameters);
     if (std::isinf(factor))
       ++g.growing;
     else
@@ -599,12 +600,12 @@ StabilityLimit quick_limit(Method method, const Model& model, const State& state
   double heaviest = 0.0;
   for (int i : lin.free_particles()) heaviest = std::max(heaviest, model.mass[i]);
   const double gamma_lo = heaviest > 0.0 ? std::min(model.drag / heaviest, gamma_hi) : 0.0;
-  const double d = model.verlet_damping;
+  const MethodParameters parameters = method_parameters(model);
   limit.h = kInf;
   const auto at = [&](double gamma, double k) {
-    limit.h = std::min(limit.h, mode_limit(method, gamma, k, d));
+    limit.h = std::min(limit.h, mode_limit(method, gamma, k, parameters));
   };
-  if (info.corner_bound) {
+  if (analysis_row(method).corner_bound) {
     for (double g : {gamma_lo, gamma_hi})
       for (double k : {0.0, kappa}) at(g, k);
   } else {

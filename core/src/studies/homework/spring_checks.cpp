@@ -139,7 +139,7 @@ void check_order(const SwingRunner& swing, const Mode& mode, CheckSection& secti
 void check_stability(const SwingRunner& swing, const Mode& mode, CheckSection& section) {
   // Verlet's factor on the whole displacement scales a h^2 by (1 - d): its limit is 1 / sqrt(1 - d)
   // wider.
-  const double limit = mode_limit(mode.row, mode.gamma, kKappa, mode.d) /
+  const double limit = mode_limit(mode.row, mode.gamma, kKappa, {.verlet_damping = mode.d}) /
                        (mode.verlet_whole ? std::sqrt(1.0 - mode.d) : 1.0);
   const char* label = tr(method_info(mode.row).label);
   if (limit == 0.0) {
