@@ -43,7 +43,7 @@ constexpr double kFrame = 1.0 / 30.0;
 TEST(Gauge, AtRestTheStiffnessAnIterativeRowActsAs) {
   auto xpbd = played(shipped("chain"), Method::XPBD, kFrame, 25.0);
   const ui::GaugeVerdict soft = verdict(*xpbd);
-  EXPECT_TRUE(says(soft, "bounded; at rest acts as k_s x0.0011")) << soft.text;  // run: 0.00106
+  EXPECT_TRUE(says(soft, "bounded; at rest acts as k_s x0.00076")) << soft.text;  // run: 0.000761
   EXPECT_EQ(soft.tone, Tone::Near);
   auto lg = played(shipped("chain"), Method::LocalGlobal, kFrame, 25.0);
   const ui::GaugeVerdict firm = verdict(*lg);

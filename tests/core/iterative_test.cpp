@@ -239,6 +239,38 @@ TEST(Iterative, LocalGlobalSolvesGiveTheSameBitsForAnyTeam) {
   }
 }
 
+// XPBD's springs by colour (colour_springs): every spring once, no two of a colour at one
+// particle (so a colour's projections are independent, and threads cannot change a bit), each
+// colour's springs ascending, and at most 2 D - 1 colours, D the most springs at a particle.
+TEST(Iterative, SpringColouringIsProper) {
+  for (const char* scene : {"cloth", "jelly", "chain"}) {
+    const Scene s = test::shipped(scene);
+    SpringColouring c;
+    colour_springs(s.model, c);
+    const int colours = static_cast<int>(c.colour_first.size()) - 1;
+    std::vector<int> colour(s.model.spring_count(), -1), degree(s.model.particle_count(), 0);
+    for (int k = 0; k < colours; ++k) {
+      std::vector<char> taken(s.model.particle_count(), 0);
+      for (int q = c.colour_first[k]; q < c.colour_first[k + 1]; ++q) {
+        const int sp = c.order[q];
+        EXPECT_EQ(colour[sp], -1) << scene << ": spring " << sp << " twice";
+        colour[sp] = k;
+        if (q > c.colour_first[k]) EXPECT_LT(c.order[q - 1], sp) << scene;
+        for (int end : {s.model.spring_a[sp], s.model.spring_b[sp]}) {
+          EXPECT_FALSE(taken[end]) << scene << ": colour " << k << " twice at particle " << end;
+          taken[end] = 1;
+        }
+      }
+    }
+    int most = 0;
+    for (int sp = 0; sp < s.model.spring_count(); ++sp) {
+      EXPECT_GE(colour[sp], 0) << scene << ": spring " << sp << " uncoloured";
+      most = std::max({most, ++degree[s.model.spring_a[sp]], ++degree[s.model.spring_b[sp]]});
+    }
+    EXPECT_LE(colours, 2 * most - 1) << scene;
+  }
+}
+
 TEST(Iterative, VertexColouringIsProper) {
   const Scene s = test::shipped("cloth", {"cloth.width=16", "cloth.height=12"});
   VertexBlockDescent c;

@@ -96,6 +96,46 @@ void colour_vertices(const Model& model, VertexBlockDescent& out) {
   out.springs = springs;
 }
 
+void colour_springs(const Model& model, SpringColouring& out) {
+  const int n = model.particle_count(), springs = model.spring_count();
+  std::vector<int> first(n + 1, 0), incident;  // each particle's springs, compressed rows
+  for (int s = 0; s < springs; ++s) {
+    ++first[model.spring_a[s] + 1];
+    ++first[model.spring_b[s] + 1];
+  }
+  for (int i = 0; i < n; ++i) first[i + 1] += first[i];
+  incident.resize(first[n]);
+  std::vector<int> fill(first.begin(), first.end() - 1);
+  for (int s = 0; s < springs; ++s) {
+    incident[fill[model.spring_a[s]]++] = s;
+    incident[fill[model.spring_b[s]]++] = s;
+  }
+  std::vector<int> colour(springs, -1);
+  std::vector<int> seen;  // seen[c] == s: colour c is taken at an end of s
+  int colours = 0;
+  for (int s = 0; s < springs; ++s) {
+    for (const int end : {model.spring_a[s], model.spring_b[s]})
+      for (int k = first[end]; k < first[end + 1]; ++k)
+        if (const int c = colour[incident[k]]; c >= 0) seen[c] = s;
+    int c = 0;
+    while (c < colours && seen[c] == s) ++c;
+    if (c == colours) {
+      ++colours;
+      seen.push_back(-1);
+    }
+    colour[s] = c;
+  }
+  out.colour_first.assign(colours + 1, 0);
+  for (int s = 0; s < springs; ++s) ++out.colour_first[colour[s] + 1];
+  for (int c = 0; c < colours; ++c) out.colour_first[c + 1] += out.colour_first[c];
+  out.order.resize(springs);
+  std::vector<int> at(out.colour_first.begin(), out.colour_first.end() - 1);
+  for (int s = 0; s < springs; ++s) out.order[at[colour[s]]++] = s;
+  out.spans = model.spans.data();
+  out.particles = n;
+  out.springs = springs;
+}
+
 double chebyshev_omega(int k, double rho, double omega_before) {
   if (k <= 1) return 1.0;
   if (k == 2) return 2.0 / (2.0 - rho * rho);

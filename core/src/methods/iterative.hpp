@@ -93,6 +93,15 @@ struct VertexBlockDescent {
       colour_work;  // a colour's vertices and their springs (threads::worth_threads)
 };
 
+// xpbd.cpp: the springs coloured so that no two of a colour share a particle, so that a colour's
+// constraints are projected side by side (Gauss-Seidel colour by colour).
+struct SpringColouring {
+  const void* spans = nullptr;  // of the model the colouring was made for
+  int particles = -1, springs = -1;
+  // Springs grouped by colour, ascending in each: colour c is order[colour_first[c], [c + 1]).
+  std::vector<int> order, colour_first;
+};
+
 // What the three keep between steps, one Workspace's worth.
 struct IterativeSolvers {
   Points y;                    // the inertial prediction
@@ -100,6 +109,7 @@ struct IterativeSolvers {
   std::vector<double> lambda;  // xpbd: each spring's Lagrange multiplier in the sub-step
   LocalGlobalSolver local_global;
   VertexBlockDescent vbd;
+  SpringColouring xpbd_colours;
 };
 
 // Greedy colouring of the particles so that no two of one colour share a spring (pinned ones
@@ -107,6 +117,11 @@ struct IterativeSolvers {
 // order, each the least colour its neighbours do not have. Returns the colours' first indices into
 // `order`.
 void colour_vertices(const Model& model, VertexBlockDescent& out);
+
+// Greedy colouring of the springs so that no two of one colour share a particle (pinned ones too,
+// as for the vertices). Deterministic: springs in index order, each the least colour neither of
+// its ends' other springs has (at most 2 D - 1 colours, D the most springs at a particle).
+void colour_springs(const Model& model, SpringColouring& out);
 
 // Chebyshev semi-iterative acceleration (Wang 2015, "A Chebyshev semi-iterative approach for
 // accelerating projective and position-based dynamics"), its weights:

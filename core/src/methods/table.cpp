@@ -164,7 +164,7 @@ constexpr MethodInfo kMethods[] = {
      .name = "xpbd",
      .label = N_("XPBD (small steps)"),
      .order = 1,
-     .evaluations = "none: 1 pass over the springs as constraints (--iterations)",
+     .evaluations = "none: 1 pass over the springs as constraints, colour by colour (--iterations)",
      .undamped_limit = kAlways,
      .stability = N_("XPBD is bounded at any step; with few passes its springs act softer than "
                      "k_s, and their stretch can hold energy the physics never had"),
