@@ -7,6 +7,8 @@
 
 namespace {
 
+// JavaScript, kept as written (clang-format would write `=>` as `= >`).
+// clang-format off
 // A JavaScript string handed to C++: malloc'ed UTF-8 that the caller frees.
 EM_JS(char*, js_location_fragment, (), {
   const text = window.location.hash || "";
@@ -36,21 +38,16 @@ EM_JS(char*, js_page_address, (), {
 // select-and-copy of a hidden text field. Neither leaves an error in the console.
 EM_JS(void, js_copy_to_clipboard, (const char* text), {
   const value = UTF8ToString(text);
-  const fallback = () = > {
+  const fallback = () => {
     const field = document.createElement("textarea");
     field.value = value;
     document.body.appendChild(field);
     field.select();
-    try {
-      document.execCommand("copy");
-    } catch (e) {
-    }
+    try { document.execCommand("copy"); } catch (e) {}
     field.remove();
   };
-  if (navigator.clipboard && window.isSecureContext)
-    navigator.clipboard.writeText(value).catch(fallback);
-  else
-    fallback();
+  if (navigator.clipboard && window.isSecureContext) navigator.clipboard.writeText(value).catch(fallback);
+  else fallback();
 });
 
 EM_JS(void, js_choose_scene_file, (), {
@@ -59,7 +56,7 @@ EM_JS(void, js_choose_scene_file, (), {
 });
 
 EM_JS(void, js_first_frame_shown, (), {
-  if (typeof window.springlabFirstFrame == = "function") window.springlabFirstFrame();
+  if (typeof window.springlabFirstFrame === "function") window.springlabFirstFrame();
 });
 
 EM_JS(void, js_set_page_link, (const char* text), { window.springlabLink = UTF8ToString(text); });
@@ -69,9 +66,9 @@ EM_JS(void, js_open_homework_panel, (), {
 });
 
 EM_JS(void, js_start_homework, (const char* code), {
-  if (window.springlabHomework && window.springlabHomework.start)
-    window.springlabHomework.start(UTF8ToString(code));
+  if (window.springlabHomework && window.springlabHomework.start) window.springlabHomework.start(UTF8ToString(code));
 });
+// clang-format on
 
 std::string taken(char* p) {
   std::unique_ptr<char, decltype(&std::free)> owned(p, &std::free);

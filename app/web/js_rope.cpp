@@ -14,36 +14,37 @@ namespace {
 // (The values of a mass travel as homework.js's kValues = 8 doubles: x, last x, v, f.)
 constexpr int kValues = 8;
 
+// JavaScript, kept as written (clang-format would write `=>` as `= >`).
+// clang-format off
 EM_JS(void, js_rope_build, (int id, const double* masses, int n, const double* springs, int s), {
   window.springlabHomework.build(id, HEAPF64.slice(masses >> 3, (masses >> 3) + 4 * n),
                                  HEAPF64.slice(springs >> 3, (springs >> 3) + 4 * s));
 });
 
-EM_JS(void, js_rope_set_state, (int id, const double* state, int n),
-      { window.springlabHomework.setState(id, HEAPF64.slice(state >> 3, (state >> 3) + 8 * n)); });
+EM_JS(void, js_rope_set_state, (int id, const double* state, int n), {
+  window.springlabHomework.setState(id, HEAPF64.slice(state >> 3, (state >> 3) + 8 * n));
+});
 
 // The states after each step into `out`; the step that failed (from 0) into *failed_at, and what
 // happened as malloc'ed UTF-8 ("time", or a sentence), or 0.
-EM_JS(char*, js_rope_simulate,
-      (int id, int which, double dt, double gx, double gy, int steps, double ms, double* out,
-       int* failed_at),
-      {
-        const r = window.springlabHomework.simulate(id, which, dt, gx, gy, steps, ms);
-        if (r.states) {
-          HEAPF64.set(r.states, out >> 3);
-          return 0;
-        }
-        HEAP32[failed_at >> 2] = r.step;
-        const size = lengthBytesUTF8(r.error) + 1;
-        const p = _malloc(size);
-        stringToUTF8(r.error, p, size);
-        return p;
-      });
+EM_JS(char*, js_rope_simulate, (int id, int which, double dt, double gx, double gy, int steps, double ms,
+                                double* out, int* failed_at), {
+  const r = window.springlabHomework.simulate(id, which, dt, gx, gy, steps, ms);
+  if (r.states) {
+    HEAPF64.set(r.states, out >> 3);
+    return 0;
+  }
+  HEAP32[failed_at >> 2] = r.step;
+  const size = lengthBytesUTF8(r.error) + 1;
+  const p = _malloc(size);
+  stringToUTF8(r.error, p, size);
+  return p;
+});
 
 EM_JS(void, js_rope_drop, (int id), { window.springlabHomework.drop(id); });
 
-EM_JS(int, js_rope_compiled, (),
-      { return window.springlabHomework && window.springlabHomework.compiled ? 1 : 0; });
+EM_JS(int, js_rope_compiled, (), { return window.springlabHomework && window.springlabHomework.compiled ? 1 : 0; });
+// clang-format on
 
 int next_id = 1;
 

@@ -4,8 +4,11 @@ examples/ is as clang-format 14 writes it with the project's .clang-format (100 
 style, includes sorted within their blocks). Code written as others write it (the exercise's
 headers, students' ropes, the house checks' planted defects) keeps its own form: a .clang-format
 with DisableFormat in its folder. Fails naming each file and its first line that differs, with the
-command that formats it; fails too when it reads fewer than MIN files (default 300; the tree has
-about 400), so that a scan that finds nothing cannot pass. Usage:
+command that formats it. JavaScript in C++ (emscripten's EM_JS and EM_ASM blocks, in app/) must sit
+between `// clang-format off` and `// clang-format on`: clang-format writes JavaScript's `=>` as
+`= >` and `===` as `== =`, and the browser's build then fails. Fails too when it reads fewer than
+MIN files (default 300; the tree has about 400), so that a scan that finds nothing cannot pass.
+Usage:
   format_test.py ROOT [--min-files MIN] [--style FILE]
   format_test.py --self-test   (runs itself on tests/house/fixtures/format/, a planted file with
       a long line and unformatted braces beside a formatted one, with the project's style, and
@@ -48,16 +51,18 @@ def self_test():
         return p.returncode, p.stdout + p.stderr
     style = str(HERE.parents[1] / ".clang-format")
     problems = []
-    rc, out = run("--min-files", "2", "--style", style)
+    rc, out = run("--min-files", "3", "--style", style)
     if rc == 0:
         problems.append("the planted file passed")
     if "core/planted.cpp:1:" not in out:
         problems.append("core/planted.cpp (its first line over 100 columns) was not named at line 1")
     if "formatted.cpp" in out:
         problems.append("the formatted file was named")
-    rc, out = run("--style", style)  # the default floor: the fixture's 2 files are too few
+    if "app/planted_js.cpp:3: JavaScript" not in out:
+        problems.append("app/planted_js.cpp:3 (EM_JS outside clang-format off) was not named")
+    rc, out = run("--style", style)  # the default floor: the fixture's 3 files are too few
     if rc == 0 or "too few" not in out:
-        problems.append("reading the fixture's 2 files passed the default floor")
+        problems.append("reading the fixture's 3 files passed the default floor")
     self_test_verdict(problems, "the check fails on the planted file and on too few read")
 
 
@@ -89,6 +94,21 @@ status = 0
 for name, line in first.items():
     print(f"{name}:{line}: not as clang-format writes it; run: {pathlib.Path(tool).name} -i {name}")
     status = 1
+# JavaScript blocks outside a clang-format off region.
+for name in files:
+    if not name.startswith("app/"):
+        continue
+    off = False
+    for number, line in enumerate((root / name).read_text(encoding="utf-8").splitlines(), 1):
+        stripped = line.strip()
+        if stripped.startswith("// clang-format off"):
+            off = True
+        elif stripped.startswith("// clang-format on"):
+            off = False
+        elif re.match(r"EM_(JS|ASM)", stripped) and not off:
+            print(f"{name}:{number}: JavaScript (EM_JS, EM_ASM) outside `// clang-format off`: "
+                  "clang-format would break it (`=>` as `= >`)")
+            status = 1
 if len(files) < min_files:
     print(f"too few files read ({len(files)}, fewer than {min_files}): is {root} the project's root?")
     status = 1
