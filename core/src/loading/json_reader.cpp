@@ -215,7 +215,7 @@ std::string ObjectReader::choice(const char* key, const std::string& fallback,
   }
   const json& v = object_[key];
   if (!v.is_string()) fail(key, "must be one of " + list + ", " + describe(v));
-  const std::string s = v.get<std::string>();
+  std::string s = v.get<std::string>();  // (not const: returned by move)
   if (std::find(options.begin(), options.end(), s) != options.end()) return s;
   const std::string near = closest_match(s, options.data(), options.size());
   fail(key, "unknown value \"" + s + "\"" +

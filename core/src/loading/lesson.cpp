@@ -55,7 +55,7 @@ std::string shown_text(ObjectReader& r, const char* key, int max, bool required)
   if (required && !r.has(key))
     r.fail(key,
            "is required: one or two sentences, at most " + std::to_string(max) + " characters");
-  const std::string text = r.text(key, "");
+  std::string text = r.text(key, "");  // (not const: returned by move)
   const std::vector<char32_t> points = code_points(text);
   if (required && std::all_of(points.begin(), points.end(), [](char32_t u) { return u == ' '; }))
     r.fail(key, "must not be empty");
