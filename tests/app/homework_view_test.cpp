@@ -98,9 +98,8 @@ TEST(HomeworkView, AWrongLaneLeavesItsRow) {
 // A crash in simulateVerlet stops that lane, with what happened and at which step; the others go
 // on to the end. (Under xvfb, as `view --frames` runs: exit 3, a lane diverged.)
 TEST(HomeworkView, ACrashStopsItsOwnLaneAndTheAppGoesOn) {
-  const Result r =
-      springlab_with("xvfb-run -a -s '-screen 0 1280x720x24' ",
-                     "view rope --homework " + (kRopes / "crash.cpp").string() + " --frames 20");
+  const Result r = springlab_under_xvfb("view rope --homework " + (kRopes / "crash.cpp").string() +
+                                        " --frames 20");
   EXPECT_EQ(r.status, 3) << r.out << r.err;
   EXPECT_NE(
       r.out.find(
@@ -117,9 +116,8 @@ TEST(HomeworkView, ACrashStopsItsOwnLaneAndTheAppGoesOn) {
 // Lesson 13 with the student's code: each of its steps shows the student's lanes beside
 // springlab's (step 4 is the spring: a rope of two masses to the student's constructor).
 TEST(HomeworkView, TheLessonShowsTheStudentsLanes) {
-  const Result r = springlab_with("xvfb-run -a -s '-screen 0 1280x720x24' ",
-                                  "view --lesson homework-8 --step 4 --homework " +
-                                      (kRopes / "correct.cpp").string() + " --frames 30");
+  const Result r = springlab_under_xvfb("view --lesson homework-8 --step 4 --homework " +
+                                        (kRopes / "correct.cpp").string() + " --frames 30");
   EXPECT_EQ(r.status, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("lane       Your simulateEuler at t = 0.5 s\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("lane       Your simulateVerlet at t = 0.5 s\n"), std::string::npos)

@@ -18,7 +18,7 @@ namespace {
 namespace fs = std::filesystem;
 
 Result view(const std::string& args, const fs::path& cwd = ".") {
-  return springlab_with("xvfb-run -a -s '-screen 0 1280x720x24' ", "view " + args, cwd);
+  return springlab_under_xvfb("view " + args, cwd);
 }
 
 // Distinct colours, and bright (text) pixels, in a rectangle of an image.
@@ -138,8 +138,8 @@ TEST(View, SpeaksTheLanguageOfTheEnvironmentOrOfLang) {
            {"LANG=zh_CN.UTF-8 LC_ALL=fr_FR.UTF-8 LC_MESSAGES= LANGUAGE=", "", "en"},
            {"LANG=zh_CN.UTF-8 LC_ALL= LC_MESSAGES= LANGUAGE=", "--lang en", "en"},
            {"LANG=C LC_ALL= LC_MESSAGES= LANGUAGE=", "--lang zh-CN", "zh-CN"}}) {
-    const Result r = springlab_with("env " + env + " xvfb-run -a -s '-screen 0 1280x720x24' ",
-                                    "view spring --frames 2 " + args);
+    const Result r =
+        springlab_under_xvfb("view spring --frames 2 " + args, ".", "env " + env + " ");
     ASSERT_EQ(r.status, 0) << env << " " << args << "\n" << r.err;
     EXPECT_NE(r.out.find("language   " + expected + "\n"), std::string::npos)
         << env << " " << args << "\n"
