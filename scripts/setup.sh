@@ -11,7 +11,7 @@ packages=(
   libgtest-dev libbenchmark-dev
   xvfb xauth ffmpeg fonts-dejavu-core
   fonts-noto-cjk python3-fonttools gettext
-  clang clang-format-14 libclang-rt-14-dev libomp-dev
+  clang clang-format-14 clang-tidy-14 libclang-rt-14-dev libomp-dev
   python3-dev python3-venv python3-pybind11 python3-numpy python3-pytest python3-pip python3-setuptools python3-wheel
   python3-nbconvert python3-ipykernel python3-matplotlib doxygen
 )

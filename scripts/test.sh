@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds, and runs every test with CTest: the normal build's suite
-# (labels core, cli, golden, app, soak, install, python, docs), then the checking build's (scripts/sanitize.sh: the core
+# (labels core, cli, golden, app, soak, install, python, docs), then clang-tidy's defect checks on
+# every source (scripts/tidy.sh), then the checking build's (scripts/sanitize.sh: the core
 # tests under AddressSanitizer and UndefinedBehaviorSanitizer, and a bounded run of each fuzz
 # target), then the browser build's (scripts/web.sh --test: the app in headless Chromium, and the
 # core's tests compiled to WebAssembly; a few minutes). CI runs this with no options.
@@ -22,6 +23,8 @@ export OMP_WAIT_POLICY="${OMP_WAIT_POLICY:-passive}"
 (cd "${SPRINGLAB_BUILD_DIR:-$root/build}" && ctest --output-on-failure --parallel "$(nproc)" --timeout 600 "$@")
 took "the normal suite"
 if [[ $# -eq 0 ]]; then
+  "$root/scripts/tidy.sh"
+  took "clang-tidy's defect checks (tidy.sh)"
   "$root/scripts/sanitize.sh"
   took "the checking build and its suite (sanitize.sh)"
   "$root/scripts/web.sh" --test

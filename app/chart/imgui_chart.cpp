@@ -300,6 +300,7 @@ void draw_chart_end_labels(ImDrawList* list, const std::vector<ChartEndLabel>& e
   if (ends.empty()) return;
   const float line_h = p.line_h, right = p.right;
   std::vector<double> wanted;
+  wanted.reserve(ends.size());
   for (const ChartEndLabel& e : ends) wanted.push_back(e.at.y - 0.5f * line_h);
   const std::vector<double> y = spread_labels(wanted, line_h, p.top, p.bottom - line_h);
   for (std::size_t k = 0; k < ends.size(); ++k) {

@@ -59,14 +59,41 @@ void write_mark(std::ostringstream& s, draw::Mark mark, double x, double y, doub
     << "/>\n";
 }
 
+// A series' label at the end of its line (chart.hpp).
+struct EndLabel {
+  double x, y;
+  std::string colour, text;
+};
+
+// The notes: each ending at its point, just above it.
+void write_notes(std::ostringstream& s, const Chart& chart, const Map& mx, const Map& my) {
+  for (const Note& n : chart.notes) {
+    const bool ok = std::isfinite(n.x) && std::isfinite(n.y) && (!chart.x.log || n.x > 0) &&
+                    (!chart.y.log || n.y > 0);
+    if (!ok) continue;
+    s << "<text x=\"" << mx(n.x) - 4.0 << "\" y=\"" << my(n.y) - 4.0 << "\" fill=\""
+      << draw::hex(n.color) << "\" text-anchor=\"end\">" << escape(n.text) << "</text>\n";
+  }
+}
+
+// The end labels, spread apart so that none covers another.
+void write_end_labels(std::ostringstream& s, const std::vector<EndLabel>& ends, double kFont,
+                      double line, double top, double bottom, double left) {
+  std::vector<double> wanted;
+  wanted.reserve(ends.size());
+  for (const EndLabel& e : ends) wanted.push_back(e.y);
+  const std::vector<double> y = spread_labels(wanted, line, top + line, bottom - 4.0);
+  for (std::size_t k = 0; k < ends.size(); ++k)
+    s << "<text x=\"" << std::max(left + 4.0, ends[k].x - 10.0) << "\" y=\"" << y[k] + kFont * 0.35
+      << "\" fill=\"" << ends[k].colour
+      << "\" text-anchor=\"end\" paint-order=\"stroke\" stroke=\"#16181c\" stroke-width=\"4\">"
+      << escape(ends[k].text) << "</text>\n";
+}
+
 // The series, clipped to the plot: lines, marks on their points or along them, crosses; then
-// the end labels (chart.hpp).
+// the notes and the end labels (chart.hpp).
 void write_series(std::ostringstream& s, const Chart& chart, const Map& mx, const Map& my,
                   double kFont, double line, double top, double bottom, double left) {
-  struct EndLabel {
-    double x, y;
-    std::string colour, text;
-  };
   std::vector<EndLabel> ends;
   for (std::size_t index = 0; index < chart.series.size(); ++index) {
     const Series& series = chart.series[index];
@@ -124,22 +151,8 @@ void write_series(std::ostringstream& s, const Chart& chart, const Map& mx, cons
     if (chart.end_labels && !series.label.empty() && last)
       ends.push_back({(*last)[0], (*last)[1], colour, series.label});
   }
-  // The notes: each ending at its point, just above it.
-  for (const Note& n : chart.notes) {
-    const bool ok = std::isfinite(n.x) && std::isfinite(n.y) && (!chart.x.log || n.x > 0) &&
-                    (!chart.y.log || n.y > 0);
-    if (!ok) continue;
-    s << "<text x=\"" << mx(n.x) - 4.0 << "\" y=\"" << my(n.y) - 4.0 << "\" fill=\""
-      << draw::hex(n.color) << "\" text-anchor=\"end\">" << escape(n.text) << "</text>\n";
-  }
-  std::vector<double> wanted;
-  for (const EndLabel& e : ends) wanted.push_back(e.y);
-  const std::vector<double> y = spread_labels(wanted, line, top + line, bottom - 4.0);
-  for (std::size_t k = 0; k < ends.size(); ++k)
-    s << "<text x=\"" << std::max(left + 4.0, ends[k].x - 10.0) << "\" y=\"" << y[k] + kFont * 0.35
-      << "\" fill=\"" << ends[k].colour
-      << "\" text-anchor=\"end\" paint-order=\"stroke\" stroke=\"#16181c\" stroke-width=\"4\">"
-      << escape(ends[k].text) << "</text>\n";
+  write_notes(s, chart, mx, my);
+  write_end_labels(s, ends, kFont, line, top, bottom, left);
 }
 
 // The chart's drawing, in a picture of width x height: the root document's or a nested <svg>'s

@@ -308,6 +308,7 @@ void draw_shot(gfx::Offscreen& offscreen, Shot& shot, const ui::FrameStats& stat
   const std::vector<draw::LaneView> views =
       draw::lane_views(session, shot.ui.view.camera, shot.ui.view.compare_layout, viewport);
   std::vector<draw::Frame> pictures;
+  pictures.reserve(views.size());
   for (const draw::LaneView& view : views)
     pictures.push_back(draw::build_frame(session, shot.ui.view, view));
   offscreen.draw(pictures, [&] {

@@ -37,7 +37,7 @@ inline constexpr Rgba kDiverged{1.0f, 0.36f, 0.32f, 1};
 inline std::string hex(const Rgba& c) {
   char s[8];
   const auto byte = [](float x) {
-    return static_cast<int>(std::clamp(x, 0.0f, 1.0f) * 255.0f + 0.5f);
+    return static_cast<int>(std::lround(std::clamp(x, 0.0f, 1.0f) * 255.0f));
   };
   std::snprintf(s, sizeof s, "#%02x%02x%02x", byte(c.r), byte(c.g), byte(c.b));
   return s;

@@ -37,6 +37,8 @@ draw::Mesh make_unit_sphere(int slices, int stacks) {
 void attribute(GLuint index, int size, int stride_floats, int offset_floats, bool instanced) {
   glEnableVertexAttribArray(index);
   glVertexAttribPointer(index, size, GL_FLOAT, GL_FALSE, stride_floats * sizeof(float),
+                        // GL takes a buffer offset as a pointer
+                        // NOLINTNEXTLINE(performance-no-int-to-ptr)
                         reinterpret_cast<void*>(offset_floats * sizeof(float)));
   glVertexAttribDivisor(index, instanced ? 1 : 0);
 }

@@ -38,6 +38,7 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv,
   if (out < 0)
     throw std::runtime_error("cannot write " + output.string() + ": " + std::strerror(errno));
   std::vector<char*> args;
+  args.reserve(argv.size() + 1);
   for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
 

@@ -236,7 +236,7 @@ RopeBuild::RopeBuild(const fs::path& path) {
   }
   if (!cached.empty() && !have_runner) keep_runner_object(runner_object, cached);
   link_rope_runner(*compiler, rope_object, runner_object, runner_, folder_, source_);
-  cleanup.release();
+  (void)cleanup.release();  // built: the folder stays
 }
 
 RopeBuild::~RopeBuild() {

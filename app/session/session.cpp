@@ -18,14 +18,14 @@ std::uint64_t next_serial() {
 }  // namespace
 
 Session::Session(Scene scene, SimulationSettings settings, double fps)
-    : Session(std::move(scene), settings, fps, nullptr) {}
+    : Session(std::move(scene), std::move(settings), fps, nullptr) {}
 
 Session::Session(Scene scene, SimulationSettings settings, double fps,
                  std::unique_ptr<SceneKind> kind)
     : serial_(next_serial()),
       scene_(std::move(scene)),
       kind_(kind ? std::move(kind) : make_scene_kind(scene_)),
-      settings_(settings),
+      settings_(std::move(settings)),
       fps_(fps) {
   settings_.track_dissipation = true;
   // An unstable lane goes on, marked (Simulation::trouble()), until it diverges or is reset: the

@@ -129,7 +129,7 @@ void draw_band_progress(const LessonBand& band, float width, float height, float
 
 // "Try this: ..." wrapped to the band's width (one line at 1280 x 720; more on a phone).
 std::string prompt_text(const LessonBand& band, float width, float scale) {
-  const std::string text = format_text(tr("Try this: %s"), band.prompt.c_str());
+  std::string text = format_text(tr("Try this: %s"), band.prompt.c_str());
   const ImGuiIO& io = ImGui::GetIO();
   if (band.prompt.empty() || io.Fonts->Fonts.Size <= kPanelFont ||
       !io.Fonts->Fonts[kPanelFont]->IsLoaded())

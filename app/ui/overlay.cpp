@@ -114,6 +114,7 @@ void draw_diverged_labels(ImDrawList* dl, const app::Session& session,
   const float pad = 10.0f * scale;
   const ImU32 back = kBack, red = u32(draw::kDiverged);
   std::vector<ImVec4> placed;
+  placed.reserve(legends.size());
   for (const Legend& legend : legends) placed.push_back(legend.box);
   for (std::size_t index = 0; index < session.lanes().size() && views.size() == 1; ++index) {
     const app::Lane& lane = session.lanes()[index];

@@ -76,7 +76,7 @@ bool needs_cjk_font(const Catalog& catalog) {
 }  // namespace
 
 std::string use_language(const std::string& tag, bool draws) {
-  const std::string lang = supported_language(tag, spoken());
+  std::string lang = supported_language(tag, spoken());
   if (lang == "en") {
     set_catalog(nullptr);
     return lang;
@@ -108,7 +108,7 @@ std::string use_language(const std::string& tag, bool draws) {
 }
 
 std::string check_language(const std::string& tag, const std::string& what) {
-  const std::string lang = supported_language(tag, spoken());
+  std::string lang = supported_language(tag, spoken());
   std::string lower;
   for (char c : tag) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (lang == "en" &&
@@ -134,7 +134,7 @@ std::string environment_language() {
   if (!list.empty() && locale != "C" && locale != "POSIX") {
     std::istringstream items(list);
     for (std::string item; std::getline(items, item, ':');) {
-      const std::string lang = supported_language(item, spoken());
+      std::string lang = supported_language(item, spoken());
       if (lang != "en" || item == "en" || item.rfind("en_", 0) == 0 || item.rfind("en-", 0) == 0)
         return lang;
     }

@@ -52,7 +52,7 @@ bool single(const py::handle& value) {
 }  // namespace
 
 homework::OwnStep python_step(const py::object& fn, const std::string& name,
-                              std::shared_ptr<bool> single_precision) {
+                              const std::shared_ptr<bool>& single_precision) {
   // The function lives as long as any copy of the step; it is let go of with the interpreter's
   // lock held, whichever thread drops the last copy.
   std::shared_ptr<py::object> held(new py::object(fn), [](py::object* o) {

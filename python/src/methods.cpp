@@ -29,6 +29,7 @@ std::vector<std::vector<std::string>> texts(const std::vector<std::vector<Tablea
 }
 std::vector<std::string> texts(const std::vector<TableauEntry>& row) {
   std::vector<std::string> out;
+  out.reserve(row.size());
   for (const TableauEntry& e : row) out.push_back(e.text);
   return out;
 }

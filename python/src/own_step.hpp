@@ -16,7 +16,7 @@ namespace springlab::python {
 /// ValueError saying what was expected. `single_precision`, where given, is set after each call to
 /// whether fn returned its arrays in single precision (NumPy's float32).
 homework::OwnStep python_step(const py::object& fn, const std::string& name,
-                              std::shared_ptr<bool> single_precision = nullptr);
+                              const std::shared_ptr<bool>& single_precision = nullptr);
 
 /// fn's name for messages: its __name__, else "fn".
 std::string step_name(const py::object& fn);

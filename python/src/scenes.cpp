@@ -71,7 +71,7 @@ void bind_scene_arrays(ScenePy& scene) {
           py::return_value_policy::reference_internal, "N x 3, m/s (read-only)")
       .def_property_readonly(
           "masses",
-          [](py::object self) {
+          [](const py::object& self) {
             return vector_view(self.cast<const LoadedScene&>().scene.model.mass, self);
           },
           "kg, each particle's (read-only)")
@@ -100,7 +100,7 @@ void bind_scene_arrays(ScenePy& scene) {
           "S x 2, the particles each spring joins")
       .def_property_readonly(
           "rest_lengths",
-          [](py::object self) {
+          [](const py::object& self) {
             return vector_view(self.cast<const LoadedScene&>().scene.model.rest_length, self);
           },
           "m, each spring's (read-only)")

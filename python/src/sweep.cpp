@@ -28,6 +28,7 @@ py::array_t<bool> array_of(const std::vector<bool>& values) {
 template <typename Row, typename F>
 auto column(const std::vector<Row>& rows, F field) {
   std::vector<decltype(field(rows.front()))> values;
+  values.reserve(rows.size());
   for (const Row& r : rows) values.push_back(field(r));
   return values;
 }

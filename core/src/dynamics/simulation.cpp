@@ -85,8 +85,8 @@ std::string Divergence::message() const {
 Simulation::Simulation(Model model, State initial, SimulationSettings settings)
     : model_(std::move(model)),
       initial_(std::move(initial)),
-      settings_(settings),
-      audit_(settings.audit_window) {
+      settings_(std::move(settings)),
+      audit_(settings_.audit_window) {
   SpringArrays springs = take_springs(model_);
   initial_model_ = model_;
   put_springs(model_, std::move(springs));

@@ -142,6 +142,7 @@ ScriptEvent read_event(ObjectReader& r, const Scene& scene) {
 
 std::vector<ScriptEvent> read_events(std::vector<ObjectReader> events, const Scene& scene) {
   std::vector<ScriptEvent> out;
+  out.reserve(events.size());
   for (auto& e : events) out.push_back(read_event(e, scene));
   std::stable_sort(out.begin(), out.end(),
                    [](const ScriptEvent& a, const ScriptEvent& b) { return a.t < b.t; });

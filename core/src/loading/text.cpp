@@ -151,12 +151,9 @@ Catalog read_po(const std::string& text, const std::string& origin) {
       take(entry.context, entry.has_context, entry.has_id || entry.has_context);
     } else if (keyword == "msgid") {
       take(entry.id, entry.has_id, entry.has_id);
-    } else if (keyword == "msgid_plural") {
-      ignored = reader.quoted(line, end);
-      target = &ignored;
     } else if (keyword == "msgstr" || keyword == "msgstr[0]") {
       take(entry.str, entry.has_str, false);
-    } else if (keyword.rfind("msgstr[", 0) == 0) {
+    } else if (keyword == "msgid_plural" || keyword.rfind("msgstr[", 0) == 0) {
       ignored = reader.quoted(line, end);
       target = &ignored;
     } else {

@@ -569,8 +569,7 @@ std::string axis_limit_text(double limit, int digits) {
 }
 
 std::string stability_function_text(const TableauAnalysis& analysis) {
-  const std::string p = polynomial_text(analysis.numerator),
-                    q = polynomial_text(analysis.denominator);
+  std::string p = polynomial_text(analysis.numerator), q = polynomial_text(analysis.denominator);
   if (q == "1") return p;
   return "(" + p + ") / (" + q + ")";
 }

@@ -237,6 +237,7 @@ Table& table() {
 bool same_entries(const ButcherTableau& a, const ButcherTableau& b) {
   const auto texts = [](const std::vector<TableauEntry>& v) {
     std::vector<std::string> out;
+    out.reserve(v.size());
     for (const TableauEntry& e : v) out.push_back(e.text);
     return out;
   };

@@ -465,7 +465,7 @@ State equilibrium(const Model& model, const State& state) {
 
   // A relaxation whose positions are no longer finite (a NaN in the scene, or a step its
   // estimate got wrong) balances nothing: the scene as it was is returned instead.
-  const State unbalanced = rest;
+  State unbalanced = rest;
   RelaxStep step = relax_step(model, rest);
 
   // Where a factorisation costs more than kNewtonWork (a cloth from 26 x 26 up; 6 ms here),

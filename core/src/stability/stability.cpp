@@ -149,8 +149,9 @@ class RangeTrace {
       if (t >= sides_count) return beside(t - sides_count, top);
       const int side = t == 0 ? -1 : 1;
       Points start = top.x;
-      for (int j = 1; j <= points / 2; ++j) {
-        const double phi = side * 0.5 * std::numbers::pi * j / (points / 2 + 0.5);
+      const int half = points / 2;
+      for (int j = 1; j <= half; ++j) {
+        const double phi = side * 0.5 * std::numbers::pi * j / (half + 0.5);
         sides[t].push_back(at(phi, start));
         start = sides[t].back().x;
       }

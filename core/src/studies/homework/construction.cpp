@@ -51,6 +51,8 @@ const Layout kLayouts[] = {
      N_("mass %d is at %s, not at %s: i / (num_nodes - 1) is divided as integers, 0 for every mass "
         "but the last (divide "
         "as double: (double)i / (num_nodes - 1))"),
+     // The student's mistake, on purpose:
+     // NOLINTNEXTLINE(bugprone-integer-division)
      [](int i, int n) { return static_cast<double>(i / (n - 1)); }},
     {"all-at-start",
      N_("mass %d is at %s, not at %s: every mass is at start (each must be moved along the rope)"),
