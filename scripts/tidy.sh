@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# clang-tidy's checks in .clang-tidy (bugprone-*, performance-*, less four) on every C++ source of
+# clang-tidy's checks in .clang-tidy (bugprone-*, performance-*, less six) on every C++ source of
 # core/, app/ and python/src/. It reads the unity build's translation units (a folder's files a few
 # to a unit, as the build compiles them), so Eigen's templates are parsed once a unit rather than
-# once a file: 29 units, 2 min 48 s on 2 cores where file by file took about 17 min. The sources a unit
-# includes are checked as the unit's own (HeaderFilterRegex). Exit 1 naming each finding once.
+# once a file: 29 units, 2 min 48 s on 2 cores where file by file took about 17 min. The sources a
+# unit includes are checked as the unit's own (HeaderFilterRegex). Exit 1 naming each finding once.
 # Usage: scripts/tidy.sh [FILE...]   (FILE: a source or a unit; default: every unit of the build)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
