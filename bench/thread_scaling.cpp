@@ -6,7 +6,7 @@
 //   springlab_threads SCENE_FILE METHOD DT STEPS THREADS... [--set KEY=VALUE]... [--analysis]
 //
 // For each thread count: a warm-up of STEPS / 10 steps, then STEPS timed steps; one line
-// "threads=T steps_per_s=S team=J alone=A yields=Y stalls=R". With --analysis, the scene's
+// "threads=T steps_per_s=S team=J alone=A yields=Y stalls=R shared=C". With --analysis, the scene's
 // stability analysis is timed instead: "threads=T analysis_s=S".
 #include <algorithm>
 #include <chrono>
@@ -81,9 +81,10 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "diverged: %s\n", sim.explain_divergence()->message().c_str());
         return 3;
       }
-      std::printf("threads=%d steps_per_s=%.5g team=%ld alone=%ld yields=%ld stalls=%ld\n", threads,
-                  taken / s, after.team - before.team, after.alone - before.alone,
-                  after.yields - before.yields, after.stalls - before.stalls);
+      std::printf(
+          "threads=%d steps_per_s=%.5g team=%ld alone=%ld yields=%ld stalls=%ld shared=%ld\n",
+          threads, taken / s, after.team - before.team, after.alone - before.alone,
+          after.yields - before.yields, after.stalls - before.stalls, after.shared - before.shared);
       std::fflush(stdout);
     }
   } catch (const std::exception& e) {

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Step throughput beside other programs, for each solver that uses threads: the 64 x 64 cloth
 # under symplectic Euler (its force pass; h = 5e-4 s, 1000 steps), implicit Euler's conjugate
-# gradients, local-global and vertex block descent (h = 1/60 s, one sub-step), alone and beside
+# gradients, local-global and vertex block descent (h = 1/60 s, one sub-step), XPBD coloured (h =
+# 2e-4 s, 1000 steps), alone and beside
 # BUSY busy processes (a shell loop each, one a core), at the default thread count and at one
 # thread, the two run alternately so that both see the same phases of the machine. Prints each
 # setting's runs (steps a second), median and worst, and the default's median and worst over one
@@ -34,7 +35,7 @@ for busy in "${loads[@]}"; do
   for ((i = 0; i < busy; i++)); do (while :; do :; done) & pids+=($!); done
   sleep 0.5
   echo "beside $busy busy ($(nproc) cores):"
-  for m in symplectic-euler:5e-4:1000 implicit-euler:0.016666666666666666:30 local-global:0.016666666666666666:60 vbd:0.016666666666666666:60; do
+  for m in symplectic-euler:5e-4:1000 implicit-euler:0.016666666666666666:30 local-global:0.016666666666666666:60 vbd:0.016666666666666666:60 xpbd:2e-4:1000; do
     IFS=: read -r method dt steps <<<"$m"
     default=() single=()
     for ((r = 0; r < runs; r++)); do

@@ -206,7 +206,9 @@ TEST(Iterative, LocalGlobalSolvesGiveTheSameBitsForAnyTeam) {
     const LocalGlobalSolver::SolvePlan& P = S.plan;
     ASSERT_EQ(P.team, team);
     ASSERT_EQ(static_cast<int>(P.piece_first.size()), team + 1);
-    if (team == 1) EXPECT_EQ(P.top_first, rows) << "one thread: no top";
+    if (team == 1) {
+      EXPECT_EQ(P.top_first, rows) << "one thread: no top";
+    }
     if (team > 1) {  // a top, and work for two threads at least (16 may be more than pays)
       EXPECT_LT(P.top_first, rows) << "team " << team;
       int working = 0;
@@ -255,7 +257,9 @@ TEST(Iterative, SpringColouringIsProper) {
         const int sp = c.order[q];
         EXPECT_EQ(colour[sp], -1) << scene << ": spring " << sp << " twice";
         colour[sp] = k;
-        if (q > c.colour_first[k]) EXPECT_LT(c.order[q - 1], sp) << scene;
+        if (q > c.colour_first[k]) {
+          EXPECT_LT(c.order[q - 1], sp) << scene;
+        }
         for (int end : {s.model.spring_a[sp], s.model.spring_b[sp]}) {
           EXPECT_FALSE(taken[end]) << scene << ": colour " << k << " twice at particle " << end;
           taken[end] = 1;

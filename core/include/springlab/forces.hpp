@@ -70,9 +70,10 @@ int thread_count();
 // The calling thread's parallel passes so far: run by the team of threads, run on it alone (after
 // a wait for a helper that another program kept off its core, the team goes without helpers for a
 // while: dynamics/threads.hpp), those waits, and the helpers' runs of work taken from them once
-// they had stopped claiming it (stalls).
+// they had stopped claiming it (stalls), and the passes run alone because the calling thread's
+// own core was shared with another program (shared, among alone too).
 struct TeamCounts {
-  long team = 0, alone = 0, yields = 0, stalls = 0;
+  long team = 0, alone = 0, yields = 0, stalls = 0, shared = 0;
 };
 TeamCounts team_counts();
 

@@ -2,6 +2,8 @@
 // waited for unless it holds work.
 #include "dynamics/threads.hpp"
 
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <chrono>
 #include <exception>
@@ -125,6 +127,35 @@ thread_local long g_alone = 0, g_backoff = 0;
 thread_local Team::Counts g_counts;
 constexpr long kFirstBackoff = 128, kLongestBackoff = 65536;
 
+// The calling thread's involuntary context switches so far: each one a time the kernel took its
+// core for another runnable thread (getrusage's ru_nivcsw, per thread).
+long involuntary_switches() {
+  rusage usage{};
+  return getrusage(RUSAGE_THREAD, &usage) == 0 ? usage.ru_nivcsw : 0;
+}
+
+// Whether the caller's own core is shared: it was taken from the caller twice or more in the last
+// window of 20 ms. The caller then runs its jobs alone until a window passes without it. A team's
+// threads that share their cores with other programs run in turns with them: each waits, spinning
+// on its own share of the core, for the other's piece, and beside two busy processes on 2 cores
+// local-global's team ran at half its speed, its waits too short to yield (its figures in
+// docs/performance.md). A quiet machine takes a thread's core seldom (kernel threads): a single
+// switch in a window is not counted. One getrusage call a window, not a job.
+bool core_shared() {
+  using Clock = std::chrono::steady_clock;
+  constexpr auto kWindow = std::chrono::milliseconds(20);
+  thread_local Clock::time_point window_start;
+  thread_local long window_switches = -1;
+  thread_local bool shared = false;
+  const Clock::time_point now = Clock::now();
+  if (window_switches >= 0 && now - window_start < kWindow) return shared;
+  const long switches = involuntary_switches();
+  shared = window_switches >= 0 && switches - window_switches >= 2;
+  window_start = now;
+  window_switches = switches;
+  return shared;
+}
+
 }  // namespace
 
 void Team::yielded() {
@@ -163,6 +194,10 @@ void Team::run(int threads, const Job& job) {
   Pool& p = pool();
   if (threads > 1 && g_alone > 0) {
     --g_alone;
+    threads = 1;
+  }
+  if (threads > 1 && core_shared()) {
+    ++g_counts.shared;
     threads = 1;
   }
   if (threads <= 1 || p.busy.exchange(true, std::memory_order_acquire)) {
