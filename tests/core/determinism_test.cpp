@@ -2,9 +2,14 @@
 // whatever the number of threads.
 #include <gtest/gtest.h>
 #include <omp.h>
+#include <sched.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <atomic>
 #include <chrono>
+#include <cstdlib>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -17,6 +22,15 @@
 
 namespace springlab {
 namespace {
+
+// A test of the team's own workings runs its jobs as a team even on a machine busy with other
+// tests: the caller does not judge its core shared (threads.hpp) while one of these lives.
+struct TeamAlways {
+  TeamAlways() { threads::Team::judge_shared_cores(false); }
+  ~TeamAlways() { threads::Team::judge_shared_cores(true); }
+  TeamAlways(const TeamAlways&) = delete;
+  TeamAlways& operator=(const TeamAlways&) = delete;
+};
 
 std::uint64_t run_hash(const Scene& scene, Method method, int threads, int steps) {
   set_thread_count(threads);
@@ -33,6 +47,7 @@ TEST(Determinism, SameRunSameBits) {
 }
 
 TEST(Determinism, ThreadCountDoesNotChangeABit) {
+  const TeamAlways team;
   // Big enough for the force loops to run in parallel.
   const Scene scene = test::shipped("cloth", {"cloth.width=48", "cloth.height=48"});
   for (const MethodInfo& m : methods()) {  // every row of the table
@@ -55,6 +70,7 @@ TEST(Determinism, ThreadCountDoesNotChangeABit) {
 // to begin with), on a cloth large enough (64 x 64, implicit Euler's CG: a pass of some hundred
 // microseconds) for a helper woken by mistake to arrive while the job is still on.
 TEST(Determinism, AJobWakesOnlyItsOwnTeam) {
+  const TeamAlways team;
   const Scene scene = test::shipped("cloth", {"cloth.width=48", "cloth.height=48"});
   const Scene large = test::shipped("cloth", {"cloth.width=64", "cloth.height=64"});
   const long before = threads::Team::strays();
@@ -154,6 +170,7 @@ struct Runs {
 };
 template <typename Piece>
 Runs run_pieces(const Piece& piece) {
+  const TeamAlways team;
   set_thread_count(2);
   const std::thread::id caller = std::this_thread::get_id();
   const long stalls = threads::Team::counts().stalls;
@@ -225,6 +242,53 @@ TEST(Threads, ARunWhoseOwnerWorksIsLeftToIt) {
 // Called from the threads of an enclosing parallel region (each with its own buffers, as
 // independent simulations would be), the force pass gives every thread the forces one call gives:
 // alone (a small cloth) or with a nested region of its own (a larger one).
+// Jobs of 8 pieces of 50 us on 2 threads for `duration`: how many ran alone because the caller's
+// core was shared.
+long shared_jobs(std::chrono::milliseconds duration) {
+  set_thread_count(2);
+  const long before = threads::Team::counts().shared;
+  const auto until = std::chrono::steady_clock::now() + duration;
+  while (std::chrono::steady_clock::now() < until)
+    threads::for_each_piece(8, 1e9, [](int) { busy_for(std::chrono::microseconds(50)); });
+  set_thread_count(0);
+  return threads::Team::counts().shared - before;
+}
+
+// The caller whose core another program shares runs its jobs alone: here the test and its
+// helper pinned to one processor with a busy process beside them, the kernel takes the caller's
+// core from it every few milliseconds, and within 300 ms jobs run alone.
+TEST(Threads, ACallerWhoseCoreIsSharedRunsAlone) {
+  cpu_set_t one;
+  CPU_ZERO(&one);
+  CPU_SET(sched_getcpu(), &one);
+  cpu_set_t all;
+  ASSERT_EQ(sched_getaffinity(0, sizeof all, &all), 0);
+  ASSERT_EQ(sched_setaffinity(0, sizeof one, &one), 0);
+  const pid_t busy = fork();
+  ASSERT_GE(busy, 0);
+  if (busy == 0) {  // the other program: a loop on the same processor until killed
+    for (;;) {
+    }
+  }
+  const long shared = shared_jobs(std::chrono::milliseconds(300));
+  kill(busy, SIGKILL);
+  waitpid(busy, nullptr, 0);
+  sched_setaffinity(0, sizeof all, &all);
+  EXPECT_GT(shared, 0) << "a caller sharing its core with a busy process kept its team";
+}
+
+// And on a quiet machine it keeps its team: no job runs alone. Only where nothing else runs
+// (ctest runs it alone, RUN_SERIAL, with SPRINGLAB_QUIET_MACHINE set: tests/CMakeLists.txt); a
+// run among other tests skips it.
+TEST(Threads, AQuietCallerKeepsItsTeam) {
+  if (!std::getenv("SPRINGLAB_QUIET_MACHINE")) GTEST_SKIP() << "run alone by ctest (RUN_SERIAL)";
+  // (The helper's start, a new thread on the caller's processor until the kernel moves it, takes
+  // the caller's core once or twice: a window's jobs, once.)
+  shared_jobs(std::chrono::milliseconds(100));
+  EXPECT_EQ(shared_jobs(std::chrono::milliseconds(300)), 0)
+      << "a caller on a quiet machine ran jobs alone";
+}
+
 TEST(Determinism, ForcesInsideAnotherParallelRegionAreTheSame) {
   for (int side : {20, 48}) {
     const Scene scene = test::shipped(
@@ -251,6 +315,7 @@ TEST(Determinism, ForcesInsideAnotherParallelRegionAreTheSame) {
 // cloth is in motion (every spring stretched and moving), so that a force summed in another
 // order would differ in its last bits.
 TEST(Determinism, StolenBlocksGiveTheSameForces) {
+  const TeamAlways team;
   const Scene scene = test::shipped("cloth", {"cloth.width=48", "cloth.height=48"});
   State moving = scene.state;
   test::jitter(moving, 0.02, 0.2, 5);

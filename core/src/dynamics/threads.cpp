@@ -2,10 +2,12 @@
 // waited for unless it holds work.
 #include "dynamics/threads.hpp"
 
-#include <sys/resource.h>
+#include <fcntl.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <exception>
 #include <memory>
 #include <mutex>
@@ -127,34 +129,45 @@ thread_local long g_alone = 0, g_backoff = 0;
 thread_local Team::Counts g_counts;
 constexpr long kFirstBackoff = 128, kLongestBackoff = 65536;
 
-// The calling thread's involuntary context switches so far: each one a time the kernel took its
-// core for another runnable thread (getrusage's ru_nivcsw, per thread).
-long involuntary_switches() {
-  rusage usage{};
-  return getrusage(RUSAGE_THREAD, &usage) == 0 ? usage.ru_nivcsw : 0;
+// The calling thread's time waiting for a processor so far, in nanoseconds: runnable, its core
+// given to another thread (the second figure of /proc/thread-self/schedstat); -1 where the kernel
+// does not say (then no core is ever judged shared).
+long long waited_for_a_core() {
+  const int fd = ::open("/proc/thread-self/schedstat", O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return -1;
+  char text[96];
+  const ssize_t n = ::read(fd, text, sizeof text - 1);
+  ::close(fd);
+  if (n <= 0) return -1;
+  text[n] = '\0';
+  unsigned long long ran = 0, waited = 0;
+  return std::sscanf(text, "%llu %llu", &ran, &waited) == 2 ? static_cast<long long>(waited) : -1;
 }
 
-// Whether the caller's own core is shared: it was taken from the caller twice or more in the last
-// window of 20 ms. The caller then runs its jobs alone until a window passes without it. A team's
-// threads that share their cores with other programs run in turns with them: each waits, spinning
-// on its own share of the core, for the other's piece, and beside two busy processes on 2 cores
-// local-global's team ran at half its speed, its waits too short to yield (its figures in
-// docs/performance.md). A quiet machine takes a thread's core seldom (kernel threads): a single
-// switch in a window is not counted. One getrusage call a window, not a job.
+// Whether the caller's own core is shared: in the last window of 20 ms, the caller waited for a
+// processor a tenth of the time or more. The caller then runs its jobs alone until a window
+// passes without. A team's threads that share their cores with other programs run in turns with
+// them: each waits, spinning on its own share of the core, for the other's piece, and beside two
+// busy processes on 2 cores local-global's team ran at half its speed, its waits too short to
+// yield (docs/performance.md). Measured on 2 cores: a busy thread beside two busy processes
+// waited 38 % of the time, alone 0.1 %. One read of the kernel's figure a window, not a job.
 bool core_shared() {
   using Clock = std::chrono::steady_clock;
   constexpr auto kWindow = std::chrono::milliseconds(20);
   thread_local Clock::time_point window_start;
-  thread_local long window_switches = -1;
+  thread_local long long window_waited = -1;
   thread_local bool shared = false;
   const Clock::time_point now = Clock::now();
-  if (window_switches >= 0 && now - window_start < kWindow) return shared;
-  const long switches = involuntary_switches();
-  shared = window_switches >= 0 && switches - window_switches >= 2;
+  if (window_waited >= 0 && now - window_start < kWindow) return shared;
+  const long long waited = waited_for_a_core();
+  const auto wall = std::chrono::duration_cast<std::chrono::nanoseconds>(now - window_start);
+  shared = window_waited >= 0 && waited >= 0 && 10 * (waited - window_waited) >= wall.count();
   window_start = now;
-  window_switches = switches;
+  window_waited = waited;
   return shared;
 }
+
+std::atomic<bool> g_judge_shared{true};  // Team::judge_shared_cores
 
 }  // namespace
 
@@ -189,6 +202,9 @@ Team::Counts Team::counts() {
 long Team::strays() {
   return pool().strays.load();
 }
+void Team::judge_shared_cores(bool on) {
+  g_judge_shared.store(on, std::memory_order_relaxed);
+}
 
 void Team::run(int threads, const Job& job) {
   Pool& p = pool();
@@ -196,7 +212,7 @@ void Team::run(int threads, const Job& job) {
     --g_alone;
     threads = 1;
   }
-  if (threads > 1 && core_shared()) {
+  if (threads > 1 && g_judge_shared.load(std::memory_order_relaxed) && core_shared()) {
     ++g_counts.shared;
     threads = 1;
   }
@@ -243,6 +259,7 @@ void Team::run(int threads, const Job& job) {
 void Team::run(int, const Job& job) {
   job(1, 0);
 }
+void Team::judge_shared_cores(bool) {}
 void Team::yielded() {}
 bool Team::stalled(const std::atomic<std::uint64_t>&, std::chrono::nanoseconds) {
   return true;

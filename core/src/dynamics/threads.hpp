@@ -133,9 +133,9 @@ class Team {
   // about a second of them each time it happens again, and halving with each job run as a team
   // without it (a core taken once for a millisecond, as a virtual machine's may be with nothing
   // else running, costs a few jobs alone; another program that keeps it, ever more). A caller
-  // whose own core is taken from it twice in 20 ms runs its jobs alone until a window passes
-  // without (threads.cpp, core_shared): its waits may be too short to yield while its team runs
-  // in turns with other programs on shared cores.
+  // that waited for a processor a tenth of the last 20 ms runs its jobs alone until a window
+  // passes without (threads.cpp, core_shared): its waits may be too short to yield while its team
+  // runs in turns with other programs on shared cores.
   // `patience`: how long a running thread may take to finish what it holds (the caller's own share
   // of the job took about that long): a wait shorter than it is a piece still being worked on,
   // not a thread another program parked (a 128 x 128 cloth's product pieces take 100 us and more,
@@ -185,8 +185,8 @@ class Team {
   // The calling thread's jobs so far: run as a team, run alone (its own choice, after a wait that
   // had to yield, or the team busy with another thread's), and the waits that yielded.
   // `stalls`: runs of pieces taken from a thread that had stopped claiming (for_each_piece).
-  // `shared`: jobs run alone because the caller's own core was shared (taken from it twice in
-  // 20 ms), counted among `alone` too.
+  // `shared`: jobs run alone because the caller's own core was shared (it waited for a processor
+  // a tenth of the last 20 ms), counted among `alone` too.
   struct Counts {
     long team = 0, alone = 0, yields = 0, stalls = 0, shared = 0;
   };
@@ -195,6 +195,10 @@ class Team {
   // handed only to its own team's helpers (a regression would have idle helpers spin on the
   // team's cores).
   static long strays();
+  // Whether a caller judges its own core shared (and then runs alone): on unless a test of the
+  // team's own workings, which needs its jobs run as a team on a machine busy with other tests,
+  // turns it off. Process-wide.
+  static void judge_shared_cores(bool on);
 
   // Waits while a run of pieces (front << 32 | back, as for_each_piece keeps them) has pieces
   // left and its owner claims one at least every `patience`. Returns whether it stopped claiming
