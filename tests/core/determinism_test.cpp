@@ -242,21 +242,27 @@ TEST(Threads, ARunWhoseOwnerWorksIsLeftToIt) {
 // Called from the threads of an enclosing parallel region (each with its own buffers, as
 // independent simulations would be), the force pass gives every thread the forces one call gives:
 // alone (a small cloth) or with a nested region of its own (a larger one).
-// Jobs of 8 pieces of 50 us on 2 threads for `duration`: how many ran alone because the caller's
-// core was shared.
-long shared_jobs(std::chrono::milliseconds duration) {
+// Jobs of 8 pieces of 50 us on 2 threads for `duration`: how many ran, and how many of them ran
+// alone because the caller's core was shared.
+struct SharedJobs {
+  long jobs = 0, alone = 0;
+};
+SharedJobs shared_jobs(std::chrono::milliseconds duration) {
   set_thread_count(2);
   const long before = threads::Team::counts().shared;
+  SharedJobs out;
   const auto until = std::chrono::steady_clock::now() + duration;
-  while (std::chrono::steady_clock::now() < until)
+  for (; std::chrono::steady_clock::now() < until; ++out.jobs)
     threads::for_each_piece(8, 1e9, [](int) { busy_for(std::chrono::microseconds(50)); });
   set_thread_count(0);
-  return threads::Team::counts().shared - before;
+  out.alone = threads::Team::counts().shared - before;
+  return out;
 }
 
 // The caller whose core another program shares runs its jobs alone: here the test and its
-// helper pinned to one processor with a busy process beside them, the kernel takes the caller's
-// core from it every few milliseconds, and within 300 ms jobs run alone.
+// helper pinned to one processor with a busy process beside them, the caller waits for its core
+// about two thirds of the time, and most jobs of 300 ms run alone (the first window's jobs, before
+// anything is known, as a team).
 TEST(Threads, ACallerWhoseCoreIsSharedRunsAlone) {
   if (!threads::kAvailable) GTEST_SKIP() << "built without threads";
   cpu_set_t one;
@@ -271,23 +277,26 @@ TEST(Threads, ACallerWhoseCoreIsSharedRunsAlone) {
     volatile unsigned long spins = 0;  // (a loop with no effect may be compiled away)
     for (;;) spins = spins + 1;
   }
-  const long shared = shared_jobs(std::chrono::milliseconds(300));
+  const SharedJobs run = shared_jobs(std::chrono::milliseconds(300));
   kill(busy, SIGKILL);
   waitpid(busy, nullptr, 0);
   sched_setaffinity(0, sizeof all, &all);
-  EXPECT_GT(shared, 0) << "a caller sharing its core with a busy process kept its team";
+  EXPECT_GT(2 * run.alone, run.jobs)
+      << "a caller sharing its core with a busy process ran " << run.jobs - run.alone << " of "
+      << run.jobs << " jobs as a team";
 }
 
-// And on a quiet machine it keeps its team: no job runs alone. Only where nothing else runs
-// (ctest runs it alone, RUN_SERIAL, with SPRINGLAB_QUIET_MACHINE set: tests/CMakeLists.txt); a
-// run among other tests skips it.
+// And on a quiet machine it keeps its team. Only where nothing else runs (ctest runs it alone,
+// RUN_SERIAL, with SPRINGLAB_QUIET_MACHINE set: tests/CMakeLists.txt); a run among other tests
+// skips it. The team's own helper, woken on the caller's processor until the kernel moves it,
+// may share the caller's core for a window now and then (once in eight runs of 300 ms): one
+// window's jobs alone, a fifteenth of them, at most.
 TEST(Threads, AQuietCallerKeepsItsTeam) {
   if (!std::getenv("SPRINGLAB_QUIET_MACHINE")) GTEST_SKIP() << "run alone by ctest (RUN_SERIAL)";
-  // (The helper's start, a new thread on the caller's processor until the kernel moves it, takes
-  // the caller's core once or twice: a window's jobs, once.)
-  shared_jobs(std::chrono::milliseconds(100));
-  EXPECT_EQ(shared_jobs(std::chrono::milliseconds(300)), 0)
-      << "a caller on a quiet machine ran jobs alone";
+  shared_jobs(std::chrono::milliseconds(100));  // (the helper's start)
+  const SharedJobs run = shared_jobs(std::chrono::milliseconds(300));
+  EXPECT_LE(15 * run.alone, run.jobs)
+      << "a caller on a quiet machine ran " << run.alone << " of " << run.jobs << " jobs alone";
 }
 
 TEST(Determinism, ForcesInsideAnotherParallelRegionAreTheSame) {

@@ -27,6 +27,52 @@ inline void pause() {
 #endif
 }
 
+// The calling thread's time waiting for a processor so far, in nanoseconds: runnable, its core
+// given to another thread (the second figure of /proc/thread-self/schedstat); -1 where the kernel
+// does not say (then no core is ever judged shared).
+long long waited_for_a_core() {
+  const int fd = ::open("/proc/thread-self/schedstat", O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return -1;
+  char text[96];
+  const ssize_t n = ::read(fd, text, sizeof text - 1);
+  ::close(fd);
+  if (n <= 0) return -1;
+  text[n] = '\0';
+  unsigned long long ran = 0, waited = 0;
+  return std::sscanf(text, "%llu %llu", &ran, &waited) == 2 ? static_cast<long long>(waited) : -1;
+}
+
+// Whether the kernel says how long a thread waited for a processor (read once).
+bool schedstat_readable() {
+  static const bool readable = waited_for_a_core() >= 0;
+  return readable;
+}
+
+// Whether the calling thread's own core is shared: in the last window of 20 ms it waited for a
+// processor a tenth of the time or more. A caller that finds its own core shared runs its jobs
+// alone until a window passes without; a helper says it in its slot, and the caller that waited
+// for it goes alone for a while (Team::run). A team's threads that share their cores with other
+// programs run in turns with them: each waits, spinning on its own share of the core, for the
+// other's piece, and beside two busy processes on 2 cores local-global's team ran at half its
+// speed, its waits too short to yield (docs/performance.md). Measured on 2 cores: a busy thread
+// beside two busy processes waited 38 % of the time, alone 0.1 %. One read of the kernel's figure
+// a window, not a job.
+bool core_shared() {
+  using Clock = std::chrono::steady_clock;
+  constexpr auto kWindow = std::chrono::milliseconds(20);
+  thread_local Clock::time_point window_start;
+  thread_local long long window_waited = -1;
+  thread_local bool shared = false;
+  const Clock::time_point now = Clock::now();
+  if (window_waited >= 0 && now - window_start < kWindow) return shared;
+  const long long waited = waited_for_a_core();
+  const auto wall = std::chrono::duration_cast<std::chrono::nanoseconds>(now - window_start);
+  shared = window_waited >= 0 && waited >= 0 && 10 * (waited - window_waited) >= wall.count();
+  window_start = now;
+  window_waited = waited;
+  return shared;
+}
+
 // Jobs are numbered (generation); the caller hands a job (its number, the job, the team's size)
 // to the helpers of this job's team alone, each in its own slot, and wakes those that sleep; runs
 // its own share, then closes it (closed = its number) and waits until no helper is inside. A helper
@@ -51,6 +97,7 @@ struct Pool {
     std::atomic<bool> asleep{false};
     std::atomic<int> threads{1};
     std::atomic<const Team::Job*> what{nullptr};
+    std::atomic<bool> shared{false};  // the helper's own core shared (core_shared), last it looked
   };
   static constexpr int kMostHelpers = 255;  // (a team of 256 threads)
 
@@ -110,7 +157,15 @@ struct Pool {
           strays.fetch_add(1, std::memory_order_relaxed);
       }
       inside.fetch_sub(1);
+      slot.shared.store(core_shared(), std::memory_order_relaxed);
     }
+  }
+
+  // Whether a helper of a team of `team` said last that its core was shared.
+  bool helper_shared(int team) const {
+    for (int i = 1; i < team; ++i)
+      if (slots[i].shared.load(std::memory_order_relaxed)) return true;
+    return false;
   }
 };
 
@@ -128,44 +183,6 @@ thread_local int g_yields = 0;
 thread_local long g_alone = 0, g_backoff = 0;
 thread_local Team::Counts g_counts;
 constexpr long kFirstBackoff = 128, kLongestBackoff = 65536;
-
-// The calling thread's time waiting for a processor so far, in nanoseconds: runnable, its core
-// given to another thread (the second figure of /proc/thread-self/schedstat); -1 where the kernel
-// does not say (then no core is ever judged shared).
-long long waited_for_a_core() {
-  const int fd = ::open("/proc/thread-self/schedstat", O_RDONLY | O_CLOEXEC);
-  if (fd < 0) return -1;
-  char text[96];
-  const ssize_t n = ::read(fd, text, sizeof text - 1);
-  ::close(fd);
-  if (n <= 0) return -1;
-  text[n] = '\0';
-  unsigned long long ran = 0, waited = 0;
-  return std::sscanf(text, "%llu %llu", &ran, &waited) == 2 ? static_cast<long long>(waited) : -1;
-}
-
-// Whether the caller's own core is shared: in the last window of 20 ms, the caller waited for a
-// processor a tenth of the time or more. The caller then runs its jobs alone until a window
-// passes without. A team's threads that share their cores with other programs run in turns with
-// them: each waits, spinning on its own share of the core, for the other's piece, and beside two
-// busy processes on 2 cores local-global's team ran at half its speed, its waits too short to
-// yield (docs/performance.md). Measured on 2 cores: a busy thread beside two busy processes
-// waited 38 % of the time, alone 0.1 %. One read of the kernel's figure a window, not a job.
-bool core_shared() {
-  using Clock = std::chrono::steady_clock;
-  constexpr auto kWindow = std::chrono::milliseconds(20);
-  thread_local Clock::time_point window_start;
-  thread_local long long window_waited = -1;
-  thread_local bool shared = false;
-  const Clock::time_point now = Clock::now();
-  if (window_waited >= 0 && now - window_start < kWindow) return shared;
-  const long long waited = waited_for_a_core();
-  const auto wall = std::chrono::duration_cast<std::chrono::nanoseconds>(now - window_start);
-  shared = window_waited >= 0 && waited >= 0 && 10 * (waited - window_waited) >= wall.count();
-  window_start = now;
-  window_waited = waited;
-  return shared;
-}
 
 std::atomic<bool> g_judge_shared{true};  // Team::judge_shared_cores
 
@@ -244,8 +261,13 @@ void Team::run(int threads, const Job& job) {
   wait([&] { return p.inside.load() == 0; },
        std::max<std::chrono::nanoseconds>(2 * own, std::chrono::microseconds(20)));
   p.busy.store(false, std::memory_order_release);
-  // A helper that held work was not running: another program has a core. Alone for a while.
-  if (g_yields > 0) {
+  // A helper that held work was late: alone for a while if another program has its core (the
+  // helper waited for a processor, core_shared). Late for another reason (woken from sleep, a
+  // slower core or its sibling thread busy), it is no reason to go alone: on a quiet 16-core
+  // machine VBD's default ran at 0.66 of 16 threads' speed for its 128 jobs alone after such
+  // waits. Where the kernel does not say (or a test turns judging off), any late helper counts.
+  const bool judging = g_judge_shared.load(std::memory_order_relaxed) && schedstat_readable();
+  if (g_yields > 0 && (!judging || p.helper_shared(threads))) {
     g_backoff =
         g_backoff < kFirstBackoff ? kFirstBackoff : std::min(2 * g_backoff, kLongestBackoff);
     g_alone = g_backoff;

@@ -128,14 +128,15 @@ inline int hardware_workers() {
 class Team {
  public:
   // Waits until `done()`: spins briefly (the wait is usually a few microseconds), then yields the
-  // core, which tells the team that a thread it waited for was not running: another program has
-  // the core, and the next jobs run on the caller alone for a while: 128 of them, doubling up to
-  // about a second of them each time it happens again, and halving with each job run as a team
-  // without it (a core taken once for a millisecond, as a virtual machine's may be with nothing
-  // else running, costs a few jobs alone; another program that keeps it, ever more). A caller
-  // that waited for a processor a tenth of the last 20 ms runs its jobs alone until a window
-  // passes without (threads.cpp, core_shared): its waits may be too short to yield while its team
-  // runs in turns with other programs on shared cores.
+  // core. A job whose wait yielded, for a helper that says its own core was shared (it waited for
+  // a processor a tenth of its last 20 ms, threads.cpp's core_shared: another program has the
+  // core), is followed by jobs on the caller alone for a while: 128 of them, doubling up to about
+  // a second of them each time it happens again, and halving with each job run as a team without
+  // it. A helper late for another reason (woken from sleep, on a slower core) is waited for
+  // without going alone. Where the kernel does not say, any yield counts. And a caller that
+  // waited for a processor a tenth of the last 20 ms itself runs its jobs alone until a window
+  // passes without: its waits may be too short to yield while its team runs in turns with other
+  // programs on shared cores.
   // `patience`: how long a running thread may take to finish what it holds (the caller's own share
   // of the job took about that long): a wait shorter than it is a piece still being worked on,
   // not a thread another program parked (a 128 x 128 cloth's product pieces take 100 us and more,

@@ -1,8 +1,10 @@
 // The parts XPBD, local-global and VBD share (iterative.hpp): the inertial prediction, the end
-// of the step, the vertex colouring and the Chebyshev weights.
+// of the step, the vertex and spring colourings and the Chebyshev weights.
 #include "iterative.hpp"
 
 #include <algorithm>
+#include <utility>
+#include <vector>
 
 #include "springlab/fields.hpp"
 
@@ -49,9 +51,17 @@ int iterations_for(Method method, const StepSettings& settings) {
   return std::max(1, method_info(method).default_iterations);
 }
 
-void colour_vertices(const Model& model, VertexBlockDescent& out) {
+namespace {
+
+// Each particle's springs, compressed rows: first[i] to first[i + 1] of `spring`, in the springs'
+// order, with the particle at each one's other end in `other`.
+struct Incidence {
+  std::vector<int> first, spring, other;
+};
+
+Incidence incidence(const Model& model) {
   const int n = model.particle_count(), springs = model.spring_count();
-  // Each vertex's springs, compressed rows.
+  Incidence out;
   out.first.assign(n + 1, 0);
   for (int s = 0; s < springs; ++s) {
     ++out.first[model.spring_a[s] + 1];
@@ -66,15 +76,21 @@ void colour_vertices(const Model& model, VertexBlockDescent& out) {
     out.spring[fill[a]] = s, out.other[fill[a]++] = b;
     out.spring[fill[b]] = s, out.other[fill[b]++] = a;
   }
-  // Greedy colours in index order.
-  std::vector<int> colour(n, -1);
+  return out;
+}
+
+// Greedy colours in index order: item i takes the least colour that none of the items
+// neighbours(i, mark) marks (mark(j) for each neighbour j) has. Each item's colour; `colours` the
+// count.
+template <typename Neighbours>
+std::vector<int> greedy_colours(int items, const Neighbours& neighbours, int& colours) {
+  std::vector<int> colour(items, -1);
   std::vector<int> seen;  // seen[c] == i: colour c is taken by a neighbour of i
-  int colours = 0;
-  for (int i = 0; i < n; ++i) {
-    for (int k = out.first[i]; k < out.first[i + 1]; ++k) {
-      const int c = colour[out.other[k]];
-      if (c >= 0) seen[c] = i;
-    }
+  colours = 0;
+  for (int i = 0; i < items; ++i) {
+    neighbours(i, [&](int j) {
+      if (const int c = colour[j]; c >= 0) seen[c] = i;
+    });
     int c = 0;
     while (c < colours && seen[c] == i) ++c;
     if (c == colours) {
@@ -83,56 +99,57 @@ void colour_vertices(const Model& model, VertexBlockDescent& out) {
     }
     colour[i] = c;
   }
-  out.colour_first.assign(colours + 1, 0);
-  for (int i = 0; i < n; ++i) ++out.colour_first[colour[i] + 1];
-  for (int c = 0; c < colours; ++c) out.colour_first[c + 1] += out.colour_first[c];
-  out.order.resize(out.colour_first[colours]);
-  std::vector<int> at(out.colour_first.begin(), out.colour_first.end() - 1);
-  for (int i = 0; i < n; ++i) out.order[at[colour[i]]++] = i;
+  return colour;
+}
+
+// The items grouped by colour, ascending in each: colour c is order[first[c], first[c + 1]).
+void group_by_colour(const std::vector<int>& colour, int colours, std::vector<int>& first,
+                     std::vector<int>& order) {
+  first.assign(colours + 1, 0);
+  for (const int c : colour) ++first[c + 1];
+  for (int c = 0; c < colours; ++c) first[c + 1] += first[c];
+  order.resize(colour.size());
+  std::vector<int> at(first.begin(), first.end() - 1);
+  for (int i = 0; i < static_cast<int>(colour.size()); ++i) order[at[colour[i]]++] = i;
+}
+
+}  // namespace
+
+void colour_vertices(const Model& model, VertexBlockDescent& out) {
+  const int n = model.particle_count();
+  Incidence springs_at = incidence(model);
+  out.first = std::move(springs_at.first);
+  out.spring = std::move(springs_at.spring);
+  out.other = std::move(springs_at.other);
+  int colours = 0;
+  const std::vector<int> colour = greedy_colours(
+      n,
+      [&](int i, const auto& mark) {
+        for (int k = out.first[i]; k < out.first[i + 1]; ++k) mark(out.other[k]);
+      },
+      colours);
+  group_by_colour(colour, colours, out.colour_first, out.order);
   out.colour_work.assign(colours, 0.0);  // a vertex and its springs: what a pass over it visits
   for (int i = 0; i < n; ++i) out.colour_work[colour[i]] += 1.0 + (out.first[i + 1] - out.first[i]);
   out.spans = model.spans.data();
   out.particles = n;
-  out.springs = springs;
+  out.springs = model.spring_count();
 }
 
 void colour_springs(const Model& model, SpringColouring& out) {
-  const int n = model.particle_count(), springs = model.spring_count();
-  std::vector<int> first(n + 1, 0), incident;  // each particle's springs, compressed rows
-  for (int s = 0; s < springs; ++s) {
-    ++first[model.spring_a[s] + 1];
-    ++first[model.spring_b[s] + 1];
-  }
-  for (int i = 0; i < n; ++i) first[i + 1] += first[i];
-  incident.resize(first[n]);
-  std::vector<int> fill(first.begin(), first.end() - 1);
-  for (int s = 0; s < springs; ++s) {
-    incident[fill[model.spring_a[s]]++] = s;
-    incident[fill[model.spring_b[s]]++] = s;
-  }
-  std::vector<int> colour(springs, -1);
-  std::vector<int> seen;  // seen[c] == s: colour c is taken at an end of s
+  const int springs = model.spring_count();
+  const Incidence at = incidence(model);
   int colours = 0;
-  for (int s = 0; s < springs; ++s) {
-    for (const int end : {model.spring_a[s], model.spring_b[s]})
-      for (int k = first[end]; k < first[end + 1]; ++k)
-        if (const int c = colour[incident[k]]; c >= 0) seen[c] = s;
-    int c = 0;
-    while (c < colours && seen[c] == s) ++c;
-    if (c == colours) {
-      ++colours;
-      seen.push_back(-1);
-    }
-    colour[s] = c;
-  }
-  out.colour_first.assign(colours + 1, 0);
-  for (int s = 0; s < springs; ++s) ++out.colour_first[colour[s] + 1];
-  for (int c = 0; c < colours; ++c) out.colour_first[c + 1] += out.colour_first[c];
-  out.order.resize(springs);
-  std::vector<int> at(out.colour_first.begin(), out.colour_first.end() - 1);
-  for (int s = 0; s < springs; ++s) out.order[at[colour[s]]++] = s;
+  const std::vector<int> colour = greedy_colours(
+      springs,
+      [&](int s, const auto& mark) {
+        for (const int end : {model.spring_a[s], model.spring_b[s]})
+          for (int k = at.first[end]; k < at.first[end + 1]; ++k) mark(at.spring[k]);
+      },
+      colours);
+  group_by_colour(colour, colours, out.colour_first, out.order);
   out.spans = model.spans.data();
-  out.particles = n;
+  out.particles = model.particle_count();
   out.springs = springs;
 }
 
