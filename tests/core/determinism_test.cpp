@@ -24,7 +24,9 @@ namespace springlab {
 namespace {
 
 // A test of the team's own workings runs its jobs as a team even on a machine busy with other
-// tests: the caller does not judge its core shared (threads.hpp) while one of these lives.
+// tests: the caller does not judge the load (threads.hpp) while one of these lives. (Without it,
+// the checking build's AJobWakesOnlyItsOwnTeam once ran 32 of its passes as a team, the rest
+// alone after late helpers.)
 struct TeamAlways {
   TeamAlways() { threads::Team::judge_shared_cores(false); }
   ~TeamAlways() { threads::Team::judge_shared_cores(true); }

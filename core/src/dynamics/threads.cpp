@@ -265,9 +265,10 @@ void Team::run(int threads, const Job& job) {
   // helper waited for a processor, core_shared). Late for another reason (woken from sleep, a
   // slower core or its sibling thread busy), it is no reason to go alone: on a quiet 16-core
   // machine VBD's default ran at 0.66 of 16 threads' speed for its 128 jobs alone after such
-  // waits. Where the kernel does not say (or a test turns judging off), any late helper counts.
-  const bool judging = g_judge_shared.load(std::memory_order_relaxed) && schedstat_readable();
-  if (g_yields > 0 && (!judging || p.helper_shared(threads))) {
+  // waits. Where the kernel does not say, any late helper counts; where a test turns judging
+  // off, none.
+  if (g_yields > 0 && g_judge_shared.load(std::memory_order_relaxed) &&
+      (!schedstat_readable() || p.helper_shared(threads))) {
     g_backoff =
         g_backoff < kFirstBackoff ? kFirstBackoff : std::min(2 * g_backoff, kLongestBackoff);
     g_alone = g_backoff;

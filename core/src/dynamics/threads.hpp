@@ -196,9 +196,9 @@ class Team {
   // handed only to its own team's helpers (a regression would have idle helpers spin on the
   // team's cores).
   static long strays();
-  // Whether a caller judges its own core shared (and then runs alone): on unless a test of the
-  // team's own workings, which needs its jobs run as a team on a machine busy with other tests,
-  // turns it off. Process-wide.
+  // Whether a caller judges the load at all (its own core shared, a late helper's): on unless a
+  // test of the team's own workings, which needs its jobs run as a team on a machine busy with
+  // other tests, turns it off; then no job runs alone for the load. Process-wide.
   static void judge_shared_cores(bool on);
 
   // Waits while a run of pieces (front << 32 | back, as for_each_piece keeps them) has pieces
