@@ -20,11 +20,13 @@
 // Colliders act after the step, as for every method (Simulation::step).
 #pragma once
 
+#include <Eigen/OrderingMethods>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <cstdint>
 #include <vector>
 
+#include "nested_dissection.hpp"
 #include "springlab/methods.hpp"
 
 namespace springlab {
@@ -55,23 +57,42 @@ struct LocalGlobalSolver {
   } key;
   std::vector<int> factor_row;  // per particle: its row of the factor, or -1 (pinned)
   std::vector<int> row;         // per particle: its row's place in the solves (SolvePlan), or -1
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor;
+  // The matrix's rows in nested dissection's order (nested_dissection.hpp): the factor's rows are
+  // the dissection's places, and `nodes` its tree.
+  std::vector<DissectionTree::Node> nodes;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>>
+      factor;
   std::vector<double> inv_d;  // 1 / D, D the factor's diagonal, by place (SolvePlan)
   bool factored = false;
   std::int64_t factorisations = 0;
-  // The triangular solves' schedule, made with the factor (local_global.cpp, plan_solves): the
-  // factor's rows cut into subtrees of its elimination tree, a piece a group of them of about
-  // equal work (each subtree's rows need only its own), and the rows above them all (the top),
-  // solved after the pieces (forward) or before them (backward). The solves keep each row at a
-  // place of its own (the pieces' rows in turn, then the top's: `row`, `inv_d` and `rhs` are by
-  // place), and L by rows and by columns at those places.
+  // One step of a row's forward sum (local_global_solves.cpp): the sum of the values of its
+  // `children` steps before it, then of the row's entries [first, last) times their solutions;
+  // or (slot >= 0) the value a piece's thread left in that slot.
+  struct SumStep {
+    int first = 0, last = 0, children = 0, slot = -1;
+  };
+  // The triangular solves' schedule, made with the factor (local_global_solves.cpp): the
+  // dissection's subtrees dealt to the team's threads, a piece each, and the separators above
+  // them (the top), solved after the pieces (forward) or before them (backward). The solves keep
+  // each row at a place of its own (the pieces' rows in turn, then the top's: `row`, `inv_d` and
+  // `rhs` are by place), and L by rows and by columns at those places.
   struct SolvePlan {
     std::vector<int> row_begin, row_index, col_begin, col_index;
     std::vector<double> row_value, col_value;
-    std::vector<int> piece_first;  // piece k: places [piece_first[k], piece_first[k + 1])
-    int top_first = 0;             // the top: places [top_first, rows)
-    double piece_work = 0.0;       // the pieces' entries, both solves
-    int team = 0;                  // the threads it was made for: a piece each
+    // Each row's forward sum, its steps [sum_first[i], sum_first[i + 1]) of `sums`; then each
+    // piece's sums for the top's rows, [job_first[k], job_first[k + 1]) of `jobs`.
+    std::vector<int> sum_first;
+    std::vector<SumStep> sums;
+    struct Job {
+      int first, last, slot;  // steps [first, last) of `sums`, their value into the slot
+    };
+    std::vector<Job> jobs;
+    std::vector<int> job_first;
+    int slots = 0, most_pending = 1;  // the partial sums' slots; the steps' most values pending
+    std::vector<int> piece_first;     // piece k: places [piece_first[k], piece_first[k + 1])
+    int top_first = 0;                // the top: places [top_first, rows)
+    double piece_work = 0.0;          // the pieces' entries, both solves
+    int team = 0;                     // the threads it was made for: a piece each
   } plan;
   // Each particle's springs by row of the factor (compressed): spring s and +1 if the row is its
   // b end, -1 its a end; springs ascending, so that a row's sum takes them in the springs' order.
