@@ -181,12 +181,11 @@ TEST(Iterative, LocalGlobalFactorisesAgainWhenTheModelChanges) {
   EXPECT_EQ(kept.iterative->local_global.factorisations, 2);
 }
 
-// Local-global's triangular solves, cut into subtrees of the nested dissection for a team
+// Local-global's triangular solves, cut into subtrees of the factor's elimination tree for a team
 // (local_global_solves.cpp): for any team the same bits, and the solution of the global matrix's
 // system (its residual, the matrix product Eigen's factor was made from, at rounding). The plans
 // differ: one thread has no top, more threads a top and pieces, and sums the pieces make for the
-// top's rows. (The 64 x 64 cloth: four leaves of the dissection; a smaller cloth is one leaf, and
-// its solves one thread's.)
+// top's rows.
 TEST(Iterative, LocalGlobalSolvesGiveTheSameBitsForAnyTeam) {
   const Scene s = test::shipped("cloth", {"cloth.width=64", "cloth.height=64"});
   const double h = 1.0 / 60.0;
@@ -211,12 +210,12 @@ TEST(Iterative, LocalGlobalSolvesGiveTheSameBitsForAnyTeam) {
     if (team == 1) {
       EXPECT_EQ(P.top_first, rows) << "one thread: no top";
     }
-    if (team > 1) {  // a top, and work for two threads at least; for five, the four leaves
+    if (team > 1) {  // a top, and work for two threads at least
       EXPECT_LT(P.top_first, rows) << "team " << team;
       EXPECT_GT(P.slots, 0) << "team " << team << ": no sum of a piece for the top's rows";
       int working = 0;
       for (int k = 0; k < team; ++k) working += P.piece_first[k] < P.piece_first[k + 1];
-      EXPECT_GE(working, team >= 5 ? 4 : 2) << "team " << team;
+      EXPECT_GE(working, std::min(team, 3)) << "team " << team;
     }
     // The right side by particle, placed as this plan places rows.
     std::vector<double> z(b.size());
@@ -245,10 +244,10 @@ TEST(Iterative, LocalGlobalSolvesGiveTheSameBitsForAnyTeam) {
 }
 
 // What the plan leaves to one thread (local_global_solves.cpp): each entry of L is used once
-// forward and once backward, by its column's piece or by the top. On the 128 x 128 cloth the top
-// (the first separators' columns) must leave room for the team: the work over the top's and the
-// heaviest piece's (the most the solves can gain) at least 1.8 for 2 threads and 2.5 for 4
-// (measured: 1.90 and 2.97; AMD's elimination tree allowed 1.57 and 2.04).
+// forward and once backward, by its column's piece or by the top. On the 128 x 128 cloth the
+// work over the top's and the heaviest piece's (the most the solves can gain) must be at least
+// 1.65 for 2 threads and 2.3 for 4 (measured: 1.72 and 2.50). The plan before the pieces summed
+// the top's rows, with AMD's top rows all on the calling thread, allowed 1.57 and 2.04.
 TEST(Iterative, LocalGlobalSolvesLeaveLittleToOneThread) {
   const Scene s = test::shipped("cloth", {"cloth.width=128", "cloth.height=128"});
   const double h = 1.0 / 60.0;
@@ -258,7 +257,7 @@ TEST(Iterative, LocalGlobalSolvesLeaveLittleToOneThread) {
   LocalGlobalSolver S;
   local_global_parts::factorise(s.model, h, mass, S);
   const int before = threads::max_team();
-  for (auto [team, least] : {std::pair{2, 1.8}, std::pair{4, 2.5}}) {
+  for (auto [team, least] : {std::pair{2, 1.65}, std::pair{4, 2.3}}) {
     threads::set_max_team(team);
     local_global_parts::plan(s.model, S);
     threads::set_max_team(before);

@@ -26,7 +26,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "nested_dissection.hpp"
+#include "solve_tree.hpp"
 #include "springlab/methods.hpp"
 
 namespace springlab {
@@ -57,11 +57,13 @@ struct LocalGlobalSolver {
   } key;
   std::vector<int> factor_row;  // per particle: its row of the factor, or -1 (pinned)
   std::vector<int> row;         // per particle: its row's place in the solves (SolvePlan), or -1
-  // The matrix's rows in nested dissection's order (nested_dissection.hpp): the factor's rows are
-  // the dissection's places, and `nodes` its tree.
-  std::vector<DissectionTree::Node> nodes;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>>
-      factor;
+  // The factor, of the matrix with its rows in a fill-reducing order of the solver's own
+  // (local_global_solves.cpp, factor_order): Eigen's own ordering would not keep subtrees' rows
+  // consecutive. `nodes`: its rows as blocks of the elimination tree (solve_tree.hpp).
+  using Factor =
+      Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>>;
+  Factor factor;
+  std::vector<SolveTree::Node> nodes;
   std::vector<double> inv_d;  // 1 / D, D the factor's diagonal, by place (SolvePlan)
   bool factored = false;
   std::int64_t factorisations = 0;
@@ -71,9 +73,9 @@ struct LocalGlobalSolver {
   struct SumStep {
     int first = 0, last = 0, children = 0, slot = -1;
   };
-  // The triangular solves' schedule, made with the factor (local_global_solves.cpp): the
-  // dissection's subtrees dealt to the team's threads, a piece each, and the separators above
-  // them (the top), solved after the pieces (forward) or before them (backward). The solves keep
+  // The triangular solves' schedule, made with the factor (local_global_solves.cpp): the factor's
+  // subtrees dealt to the team's threads, a piece each, and the blocks above them (the top),
+  // solved after the pieces (forward) or before them (backward). The solves keep
   // each row at a place of its own (the pieces' rows in turn, then the top's: `row`, `inv_d` and
   // `rhs` are by place), and L by rows and by columns at those places.
   struct SolvePlan {

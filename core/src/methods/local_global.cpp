@@ -7,9 +7,10 @@
 //            w_s t_s = h^2 k_s d_s + h k_d (e_s(x0) + P_s (e_s(x) - e_s(x0)))
 //
 // with e_s(x) = x_b - x_a, A_s the spring's +1 / -1 incidence, P_s = I - u_s u_s^T. The matrix is
-// the same for x, y and z and for every iteration: factorised once (Eigen's SimplicialLDLT, in
-// nested dissection's order, so that a team of threads shares its solves: local_global_solves.cpp)
-// and again only when h, a mass, a pin, k_s, k_d or the drag change. Iterations start from y.
+// the same for x, y and z and for every iteration: factorised once (Eigen's SimplicialLDLT, its
+// triangular solves shared by a team of threads along its elimination tree:
+// local_global_solves.cpp) and again only when h, a mass, a pin, k_s, k_d or the drag change.
+// Iterations start from y.
 //
 // The notes' damping, k_d (u . (v_b - v_a)) u with v = (x1 - x0) / h, enters as the dissipation
 // potential k_d / (2h) (u . de)^2 (iterative.hpp). Its matrix depends on u, which changes every

@@ -1,28 +1,32 @@
-// Local-global's global matrix (local_global.cpp's header): factorised in nested dissection's
-// order (nested_dissection.hpp), and its triangular solves shared by the team's threads.
+// Local-global's global matrix (local_global.cpp's header): factorised once in a fill-reducing
+// order (AMD, then a postorder of its elimination tree), and its triangular solves shared by the
+// team's threads.
 //
-// The dissection's tree says which rows are independent: a subtree's rows have entries of L only
-// in that subtree. The plan cuts the tree for the team: the separators at the top (solved by the
-// calling thread) and the subtrees below them (dealt to the threads, a piece each). Backward,
-// L^T z = w, each column's sum reads only rows above it (its ancestors): the top's columns first,
-// then the pieces', in parallel. Forward, L y = b, a top row's entries are mostly in the pieces
-// below it; so each row's sum is a tree of sums, the dissection's: a node's sum is its children's
-// sums, added in order, then its own entries, in order. The pieces' threads then sum the top's
-// rows over their own subtrees, in parallel, and the top adds what they left. The tree is the
-// dissection's, not the team's, so every sum is the same arithmetic, and the same bits, for any
+// The factor's blocks (solve_tree.hpp) say which rows are independent: a subtree's rows have
+// entries of L only in that subtree. The plan cuts the tree of blocks for the team: the blocks at
+// the top (solved by the calling thread) and the subtrees below them (dealt to the threads, a
+// piece each). Backward, L^T z = w, each column's sum reads only rows above it (its ancestors):
+// the top's columns first, then the pieces', in parallel. Forward, L y = b, a top row's entries
+// are mostly in the pieces below it (on the 128 x 128 cloth, AMD's last 671 rows hold a third of
+// the factor's entries); so each row's sum is a tree of sums, the blocks': a block's sum is its
+// children's sums, added in order, then its own entries, in order. The pieces' threads sum the
+// top's rows over their own subtrees, in parallel, and the top adds what they left. The tree is
+// the factor's, not the team's, so every sum is the same arithmetic, and the same bits, for any
 // team: one thread makes the same sums in the same order.
+#include <Eigen/OrderingMethods>
 #include <algorithm>
 #include <vector>
 
 #include "dynamics/threads.hpp"
 #include "local_global.hpp"
+#include "solve_tree.hpp"
 #include "springlab/error.hpp"
 
 namespace springlab::local_global_parts {
 
 namespace {
 
-using Node = DissectionTree::Node;
+using Node = SolveTree::Node;
 using SolvePlan = LocalGlobalSolver::SolvePlan;
 using SumStep = LocalGlobalSolver::SumStep;
 
@@ -51,8 +55,8 @@ struct Cut {
   std::vector<int> pieces;
 };
 
-Cut cut_dissection(const std::vector<Node>& nodes, const std::vector<double>& own,
-                   const std::vector<double>& subtree, int team) {
+Cut cut_tree(const std::vector<Node>& nodes, const std::vector<double>& own,
+             const std::vector<double>& subtree, int team) {
   const auto heavier = [&](int a, int b) {  // ties: the lower node (the same plan everywhere)
     return subtree[a] > subtree[b] || (subtree[a] == subtree[b] && a < b);
   };
@@ -195,7 +199,7 @@ void plan_solves(LocalGlobalSolver& S, int team) {
   std::vector<double> subtree = own;
   for (std::size_t d = 0; d < nodes.size(); ++d)  // children before parents
     if (nodes[d].parent >= 0) subtree[nodes[d].parent] += subtree[d];
-  const Cut cut = cut_dissection(nodes, own, subtree, team);
+  const Cut cut = cut_tree(nodes, own, subtree, team);
   std::vector<int> piece_of(nodes.size(), -1);
   deal_subtrees(cut.pieces, subtree, team, &piece_of);
   for (int d = static_cast<int>(nodes.size()) - 1; d >= 0; --d)  // parents before children
@@ -246,7 +250,7 @@ void plan_row_springs(const Model& model, LocalGlobalSolver& S) {
 }
 
 // The graph of the matrix's rows (the unpinned particles), an edge for each spring of nonzero
-// weight between two of them, in compressed rows: the dissection's input.
+// weight between two of them, in compressed rows: the ordering's input.
 void row_graph(const Model& model, double h, const std::vector<int>& row, int rows,
                std::vector<int>& begin, std::vector<int>& index) {
   begin.assign(rows + 1, 0);
@@ -267,6 +271,50 @@ void row_graph(const Model& model, double h, const std::vector<int>& row, int ro
 
 }  // namespace
 
+// Each row's place in the factor: Eigen's minimum degree order (AMD) of the rows' graph, then a
+// postorder of its elimination tree, which fills in the same but keeps each subtree's rows
+// consecutive (solve_tree.hpp).
+std::vector<int> factor_order(const std::vector<int>& begin, const std::vector<int>& index) {
+  const int rows = static_cast<int>(begin.size()) - 1;
+  std::vector<Eigen::Triplet<double>> pattern;
+  pattern.reserve(index.size() + rows);
+  for (int r = 0; r < rows; ++r) {
+    pattern.emplace_back(r, r, 1.0);
+    for (int p = begin[r]; p < begin[r + 1]; ++p) pattern.emplace_back(index[p], r, 1.0);
+  }
+  Eigen::SparseMatrix<double> A(rows, rows);
+  A.setFromTriplets(pattern.begin(), pattern.end());
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> amd;
+  Eigen::AMDOrdering<int>()(A, amd);  // amd.indices()[k]: the row eliminated k-th
+  std::vector<int> at_amd(rows), amd_begin(rows + 1, 0), amd_index;
+  amd_index.reserve(index.size());
+  for (int k = 0; k < rows; ++k) at_amd[amd.indices()[k]] = k;
+  for (int k = 0; k < rows; ++k) {
+    const int r = amd.indices()[k];
+    for (int p = begin[r]; p < begin[r + 1]; ++p) amd_index.push_back(at_amd[index[p]]);
+    amd_begin[k + 1] = static_cast<int>(amd_index.size());
+  }
+  const std::vector<int> post = postorder(elimination_tree(amd_begin, amd_index));
+  std::vector<int> place(rows);
+  for (int q = 0; q < rows; ++q) place[amd.indices()[post[q]]] = q;
+  return place;
+}
+
+// The factor's blocks (solve_tree.hpp): each row's parent, the first entry below its diagonal,
+// and its work, its column's entries twice (once forward, once backward) and its diagonal.
+SolveTree factor_tree(const LocalGlobalSolver::Factor& factor) {
+  const auto& L = factor.matrixL().nestedExpression();
+  const int rows = static_cast<int>(L.cols());
+  const int* begin = L.outerIndexPtr();
+  std::vector<int> parent(rows, -1);
+  std::vector<double> work(rows);
+  for (int j = 0; j < rows; ++j) {
+    if (begin[j] < begin[j + 1]) parent[j] = L.innerIndexPtr()[begin[j]];
+    work[j] = 1.0 + 2.0 * (begin[j + 1] - begin[j]);
+  }
+  return solve_tree(parent, work);
+}
+
 void factorise(const Model& model, double h, const std::vector<double>& mass,
                LocalGlobalSolver& S) {
   const int n = model.particle_count();
@@ -276,9 +324,7 @@ void factorise(const Model& model, double h, const std::vector<double>& mass,
     if (!model.pinned(i)) row[i] = rows++;
   std::vector<int> begin, index;
   row_graph(model, h, row, rows, begin, index);
-  DissectionTree tree = nested_dissection(begin, index);
-  std::vector<int> place(rows);
-  for (int k = 0; k < rows; ++k) place[tree.order[k]] = k;
+  const std::vector<int> place = factor_order(begin, index);
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(rows + 4 * model.spring_count());
   for (int i = 0; i < n; ++i)
@@ -297,11 +343,11 @@ void factorise(const Model& model, double h, const std::vector<double>& mass,
   }
   Eigen::SparseMatrix<double> matrix(rows, rows);
   matrix.setFromTriplets(entries.begin(), entries.end());
-  S.factor.compute(matrix);  // in the dissection's order (NaturalOrdering: no permutation)
+  S.factor.compute(matrix);  // in factor_order's order (NaturalOrdering: no permutation)
   if (S.factor.info() != Eigen::Success)  // M~ > 0 makes it definite: only a bad mass gets here
     throw StepFailure(
         "local-global: the global matrix could not be factorised (a zero or negative mass?)");
-  S.nodes = std::move(tree.nodes);
+  S.nodes = factor_tree(S.factor).nodes;
   S.factor_row.assign(n, -1);
   for (int i = 0; i < n; ++i)
     if (row[i] >= 0) S.factor_row[i] = place[row[i]];
@@ -318,10 +364,10 @@ void plan(const Model& model, LocalGlobalSolver& S) {
 
 namespace {
 
-// A row's sum by its steps (SumStep), x y z: each step's value pending on `stack` until its
-// parent's step adds it.
-void sum_by_steps(const SolvePlan& P, const SumStep* step, int count, const double* Z,
-                  const double* partial, double* stack, double out[3]) {
+// Steps of a sum (SumStep), x y z: each step's value left on `stack` until its parent's step
+// adds it. Returns how many values are left (the next step's children).
+int push_steps(const SolvePlan& P, const SumStep* step, int count, const double* Z,
+               const double* partial, double* stack) {
   const int* index = P.row_index.data();
   const double* value = P.row_value.data();
   int height = 0;
@@ -342,27 +388,33 @@ void sum_by_steps(const SolvePlan& P, const SumStep* step, int count, const doub
     stack[3 * height] = s0, stack[3 * height + 1] = s1, stack[3 * height + 2] = s2;
     ++height;
   }
-  out[0] = stack[0], out[1] = stack[1], out[2] = stack[2];
+  return height;
 }
 
-// Forward, L y = b, for the rows at places [from, to) (ascending): y_i = b_i - (row i's sum).
-// Most rows' sums are one step, their entries in order.
+// Forward, L y = b, for the rows at places [from, to) (ascending): y_i = b_i less its children's
+// sums (their steps), in order, less its own entries' terms, in order. Most rows have no
+// children: y_i = b_i - L_ij y_j - ..., j ascending.
 void forward_rows(const SolvePlan& P, int from, int to, double* Z, const double* partial,
                   double* stack) {
   const int* index = P.row_index.data();
   const double* value = P.row_value.data();
+  const int* sums = P.sum_first.data();
+  const int* begin = P.row_begin.data();
   for (int i = from; i < to; ++i) {
-    const int first = P.sum_first[i], count = P.sum_first[i + 1] - first;
-    double s[3] = {0.0, 0.0, 0.0};
-    if (count == 1) {
-      for (int p = P.row_begin[i]; p < P.row_begin[i + 1]; ++p) {
-        const double* r = Z + 3 * index[p];
-        s[0] += value[p] * r[0], s[1] += value[p] * r[1], s[2] += value[p] * r[2];
-      }
-    } else {
-      sum_by_steps(P, &P.sums[first], count, Z, partial, stack, s);
+    double s0 = Z[3 * i], s1 = Z[3 * i + 1], s2 = Z[3 * i + 2];
+    int first = begin[i], last = begin[i + 1];
+    if (const int steps = sums[i + 1] - sums[i]; steps > 1) {
+      const SumStep& own = P.sums[sums[i + 1] - 1];
+      const int children = push_steps(P, &P.sums[sums[i]], steps - 1, Z, partial, stack);
+      for (int c = 0; c < children; ++c)
+        s0 -= stack[3 * c], s1 -= stack[3 * c + 1], s2 -= stack[3 * c + 2];
+      first = own.first, last = own.last;
     }
-    Z[3 * i] -= s[0], Z[3 * i + 1] -= s[1], Z[3 * i + 2] -= s[2];
+    for (int p = first; p < last; ++p) {
+      const double* r = Z + 3 * index[p];
+      s0 -= value[p] * r[0], s1 -= value[p] * r[1], s2 -= value[p] * r[2];
+    }
+    Z[3 * i] = s0, Z[3 * i + 1] = s1, Z[3 * i + 2] = s2;
   }
 }
 
@@ -400,8 +452,8 @@ void solve_in_place(const LocalGlobalSolver& S, std::vector<double>& z) {
     forward_rows(P, P.piece_first[k], P.piece_first[k + 1], Z, partial.data(), stack.data());
     for (int j = P.job_first[k]; j < P.job_first[k + 1]; ++j) {
       const SolvePlan::Job& job = P.jobs[j];
-      sum_by_steps(P, &P.sums[job.first], job.last - job.first, Z, partial.data(), stack.data(),
-                   &partial[3 * static_cast<std::size_t>(job.slot)]);
+      push_steps(P, &P.sums[job.first], job.last - job.first, Z, partial.data(), stack.data());
+      std::copy(stack.begin(), stack.begin() + 3, partial.begin() + 3 * job.slot);
     }
   });
   std::vector<double> stack(stack_size);
