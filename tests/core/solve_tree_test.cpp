@@ -62,9 +62,13 @@ Eigen::SparseMatrix<double> matrix(const Graph& g, const std::vector<int>& place
   return A;
 }
 
-void expect_blocks_of_the_factor(const Graph& g, const std::string& name) {
+// At most 2 x 16 blocks not small (1/16 of the work or more) and 256 small ones not tiny (1/256),
+// and one over a forest.
+void expect_blocks_of_the_factor(const Graph& g, const std::string& name,
+                                 std::size_t most_blocks = 2 * 16 + 256 + 1) {
   const int n = g.size();
-  const std::vector<int> place = local_global_parts::factor_order(g.begin, g.index);
+  const local_global_parts::FactorOrder order = local_global_parts::factor_order(g.begin, g.index);
+  const std::vector<int>& place = order.place;
   ASSERT_EQ(static_cast<int>(place.size()), n) << name;
   std::vector<int> sorted = place;
   std::sort(sorted.begin(), sorted.end());
@@ -78,32 +82,24 @@ void expect_blocks_of_the_factor(const Graph& g, const std::string& name) {
   const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> amd(matrix(g, identity));
   EXPECT_EQ(L.nonZeros(), amd.matrixL().nestedExpression().nonZeros()) << name;
 
-  // The elimination tree from the graph is the factor's, and postordered.
-  Graph placed = g;
-  std::vector<int> at(n);
-  for (int v = 0; v < n; ++v) at[place[v]] = v;
-  placed.begin.assign(1, 0);
-  placed.index.clear();
-  for (int k = 0; k < n; ++k) {
-    for (int p = g.begin[at[k]]; p < g.begin[at[k] + 1]; ++p)
-      placed.index.push_back(place[g.index[p]]);
-    placed.begin.push_back(static_cast<int>(placed.index.size()));
-  }
-  const std::vector<int> parent = elimination_tree(placed.begin, placed.index);
+  // The tree and work the order says are the factor's, and the tree is postordered.
   std::vector<int> size(n, 1);
   for (int j = 0; j < n; ++j) {
     const int first = L.outerIndexPtr()[j], end = L.outerIndexPtr()[j + 1];
-    ASSERT_EQ(parent[j], first < end ? L.innerIndexPtr()[first] : -1) << name << ": row " << j;
-    if (parent[j] >= 0) size[parent[j]] += size[j];
+    ASSERT_EQ(order.parent[j], first < end ? L.innerIndexPtr()[first] : -1)
+        << name << ": row " << j;
+    ASSERT_EQ(order.work[j], 1.0 + 2.0 * (end - first)) << name << ": row " << j;
+    if (order.parent[j] >= 0) size[order.parent[j]] += size[j];
   }
   for (int j = 0; j < n; ++j)  // postordered: each subtree's rows the ones just before its root
-    if (const int p = parent[j]; p >= 0) {
+    if (const int p = order.parent[j]; p >= 0) {
       ASSERT_LT(j, p) << name;
       ASSERT_GE(j - size[j], p - size[p])
           << name << ": row " << j << "'s subtree outside its parent's";
     }
 
-  const SolveTree t = local_global_parts::factor_tree(factor);
+  const SolveTree t = solve_tree(order.parent, order.work);
+  EXPECT_LE(t.nodes.size(), most_blocks) << name;
   ASSERT_FALSE(t.nodes.empty()) << name;
   EXPECT_EQ(t.nodes.back().first, 0) << name;
   EXPECT_EQ(t.nodes.back().end, n) << name;
@@ -139,6 +135,11 @@ TEST(SolveTree, BlocksOfTheFactorAreIndependentSubtrees) {
   std::vector<std::pair<int, int>> path, star, clique;
   for (int i = 0; i + 1 < 3000; ++i) path.emplace_back(i, i + 1);
   expect_blocks_of_the_factor(from_edges(3000, path), "a 3000-particle rope");
+  std::vector<std::pair<int, int>> comb = path;  // a particle hanging from each of the rope's
+  for (int i = 0; i < 3000; ++i) comb.emplace_back(i, 3000 + i);
+  // Its tree has a branch at each of the rope's particles (its hanging one, eliminated first),
+  // each a tiny subtree: the rope's rows one chain, not a block each.
+  expect_blocks_of_the_factor(from_edges(6000, comb), "a rope with a particle from each", 4);
   for (int i = 1; i < 2000; ++i) star.emplace_back(0, i);
   expect_blocks_of_the_factor(from_edges(2000, star), "a star");
   for (int i = 0; i < 300; ++i)

@@ -6,11 +6,15 @@
 
 namespace springlab::local_global_parts {
 
-// Each row's place in the factor, from the rows' graph in compressed rows (vertex r's neighbours
-// index[begin[r] .. begin[r + 1])): Eigen's AMD order, then a postorder of its elimination tree.
-std::vector<int> factor_order(const std::vector<int>& begin, const std::vector<int>& index);
-// The factor's rows as blocks of its elimination tree (solve_tree.hpp).
-SolveTree factor_tree(const LocalGlobalSolver::Factor& factor);
+// The factor's order for the rows' graph in compressed rows (vertex r's neighbours
+// index[begin[r] .. begin[r + 1])): Eigen's AMD order, then a postorder of its elimination tree
+// (solve_tree.hpp). Each row's place; by place, each row's parent in the tree (or -1) and work
+// (its column's entries twice, and one).
+struct FactorOrder {
+  std::vector<int> place, parent;
+  std::vector<double> work;
+};
+FactorOrder factor_order(const std::vector<int>& begin, const std::vector<int>& index);
 // Factorises M~ + sum_s w_s A_s A_s^T for the step h (throws StepFailure if it cannot).
 void factorise(const Model& model, double h, const std::vector<double>& mass, LocalGlobalSolver& S);
 // Plans the solves and the right side's sums for the factor and the team the threads now have

@@ -271,10 +271,11 @@ void row_graph(const Model& model, double h, const std::vector<int>& row, int ro
 
 }  // namespace
 
-// Each row's place in the factor: Eigen's minimum degree order (AMD) of the rows' graph, then a
-// postorder of its elimination tree, which fills in the same but keeps each subtree's rows
-// consecutive (solve_tree.hpp).
-std::vector<int> factor_order(const std::vector<int>& begin, const std::vector<int>& index) {
+// The factor's order: Eigen's minimum degree order (AMD) of the rows' graph, then a postorder of
+// its elimination tree (its blocks' rows consecutive: solve_tree.hpp), which fills in the same and
+// keeps each block's rows consecutive; the tree and the columns' work from Eigen's symbolic
+// factorisation.
+FactorOrder factor_order(const std::vector<int>& begin, const std::vector<int>& index) {
   const int rows = static_cast<int>(begin.size()) - 1;
   std::vector<Eigen::Triplet<double>> pattern;
   pattern.reserve(index.size() + rows);
@@ -286,33 +287,28 @@ std::vector<int> factor_order(const std::vector<int>& begin, const std::vector<i
   A.setFromTriplets(pattern.begin(), pattern.end());
   Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> amd;
   Eigen::AMDOrdering<int>()(A, amd);  // amd.indices()[k]: the row eliminated k-th
-  std::vector<int> at_amd(rows), amd_begin(rows + 1, 0), amd_index;
-  amd_index.reserve(index.size());
-  for (int k = 0; k < rows; ++k) at_amd[amd.indices()[k]] = k;
-  for (int k = 0; k < rows; ++k) {
-    const int r = amd.indices()[k];
-    for (int p = begin[r]; p < begin[r + 1]; ++p) amd_index.push_back(at_amd[index[p]]);
-    amd_begin[k + 1] = static_cast<int>(amd_index.size());
-  }
-  const std::vector<int> post = postorder(elimination_tree(amd_begin, amd_index));
-  std::vector<int> place(rows);
-  for (int q = 0; q < rows; ++q) place[amd.indices()[post[q]]] = q;
-  return place;
-}
-
-// The factor's blocks (solve_tree.hpp): each row's parent, the first entry below its diagonal,
-// and its work, its column's entries twice (once forward, once backward) and its diagonal.
-SolveTree factor_tree(const LocalGlobalSolver::Factor& factor) {
-  const auto& L = factor.matrixL().nestedExpression();
-  const int rows = static_cast<int>(L.cols());
-  const int* begin = L.outerIndexPtr();
-  std::vector<int> parent(rows, -1);
+  Eigen::SparseMatrix<double> B(rows, rows);
+  B = A.twistedBy(amd.inverse());
+  struct Symbolic : LocalGlobalSolver::Factor {  // the tree and column counts, by AMD's place
+    int parent(int j) const { return m_parent[j]; }
+    double work(int j) const {
+      return 1.0 + 2.0 * (m_matrix.outerIndexPtr()[j + 1] - m_matrix.outerIndexPtr()[j]);
+    }
+  } symbolic;
+  symbolic.analyzePattern(B);
+  std::vector<int> parent(rows);
   std::vector<double> work(rows);
-  for (int j = 0; j < rows; ++j) {
-    if (begin[j] < begin[j + 1]) parent[j] = L.innerIndexPtr()[begin[j]];
-    work[j] = 1.0 + 2.0 * (begin[j + 1] - begin[j]);
+  for (int j = 0; j < rows; ++j) parent[j] = symbolic.parent(j), work[j] = symbolic.work(j);
+  const std::vector<int> post = postorder(parent, work);
+  FactorOrder out{std::vector<int>(rows), std::vector<int>(rows, -1), std::vector<double>(rows)};
+  std::vector<int> at_post(rows);
+  for (int q = 0; q < rows; ++q) at_post[post[q]] = q;
+  for (int q = 0; q < rows; ++q) {
+    out.place[amd.indices()[post[q]]] = q;
+    out.parent[q] = parent[post[q]] >= 0 ? at_post[parent[post[q]]] : -1;
+    out.work[q] = work[post[q]];
   }
-  return solve_tree(parent, work);
+  return out;
 }
 
 void factorise(const Model& model, double h, const std::vector<double>& mass,
@@ -324,7 +320,8 @@ void factorise(const Model& model, double h, const std::vector<double>& mass,
     if (!model.pinned(i)) row[i] = rows++;
   std::vector<int> begin, index;
   row_graph(model, h, row, rows, begin, index);
-  const std::vector<int> place = factor_order(begin, index);
+  const FactorOrder order = factor_order(begin, index);
+  const std::vector<int>& place = order.place;
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(rows + 4 * model.spring_count());
   for (int i = 0; i < n; ++i)
@@ -347,7 +344,7 @@ void factorise(const Model& model, double h, const std::vector<double>& mass,
   if (S.factor.info() != Eigen::Success)  // M~ > 0 makes it definite: only a bad mass gets here
     throw StepFailure(
         "local-global: the global matrix could not be factorised (a zero or negative mass?)");
-  S.nodes = factor_tree(S.factor).nodes;
+  S.nodes = solve_tree(order.parent, order.work).nodes;
   S.factor_row.assign(n, -1);
   for (int i = 0; i < n; ++i)
     if (row[i] >= 0) S.factor_row[i] = place[row[i]];

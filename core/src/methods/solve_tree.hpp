@@ -5,9 +5,13 @@
 // rows are consecutive, ending at its root; so a block that gathers whole subtrees has entries
 // only in itself and below (local_global_solves.cpp deals such blocks to threads).
 //
-// A block (a node here) is a chain of rows that each have one child (their entries nest), with
-// the blocks of its lowest row's children below it; a subtree of less than 1/kLeafShare of the
-// factor's work is one block whole (a leaf), so that the tree stays as small as a team needs.
+// The blocks (nodes here), by subtree: one of less than 1/16 of the factor's work is small, of
+// less than 1/256 tiny (solve_tree.cpp). A block is a chain of rows above the rest of their
+// subtrees, each row with one child not small and none other but tiny ones (their rows join the
+// chain's block), and below it a block for each child of its lowest row that is not tiny: a small
+// one whole, a larger one a chain again. So there are at most 31 chains and 256 small blocks,
+// whatever the tree. In postorder (below), a row's children that are not small come before its
+// small ones, then its tiny ones, and each block's own rows are consecutive.
 #pragma once
 
 #include <vector>
@@ -26,16 +30,14 @@ struct SolveTree {
   std::vector<Node> nodes;
 };
 
-// The elimination tree of a symmetric matrix's pattern (Liu's algorithm, with path compression:
-// Davis 2006, "Direct methods for sparse linear systems", cs_etree), its rows in the order to
-// factor them: vertex v's neighbours index[begin[v] .. begin[v + 1]). parent[j] > j, or -1.
-std::vector<int> elimination_tree(const std::vector<int>& begin, const std::vector<int>& index);
+// A postorder of the forest of `parent` (parent[j] > j, or -1) that visits each row's children
+// (and the roots) those not small first, then the small, then the tiny (by their rows' `work`),
+// each class in the order of their rows: order[k] is the row at place k. (Children by weight,
+// heaviest first, made local-global's solves 5 % slower on one thread, its rows further from
+// AMD's order.)
+std::vector<int> postorder(const std::vector<int>& parent, const std::vector<double>& work);
 
-// A postorder of the forest (children in ascending order, each subtree before its parent):
-// order[k] is the row at place k.
-std::vector<int> postorder(const std::vector<int>& parent);
-
-// The blocks of a postordered factor's rows: each row's parent (parent[j] > j, or -1) and work.
+// The blocks of a factor's rows in such a postorder: each row's parent and work.
 SolveTree solve_tree(const std::vector<int>& parent, const std::vector<double>& work);
 
 }  // namespace springlab
