@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -181,19 +182,26 @@ TEST(Iterative, LocalGlobalFactorisesAgainWhenTheModelChanges) {
   EXPECT_EQ(kept.iterative->local_global.factorisations, 2);
 }
 
+// The shipped cloth, side x side particles, and local-global's global matrix for it factorised
+// at h = 1/60 s (its solves planned for the team the threads have).
+Scene factorised_cloth(int side, LocalGlobalSolver& S) {
+  Scene s = test::shipped(
+      "cloth", {"cloth.width=" + std::to_string(side), "cloth.height=" + std::to_string(side)});
+  Points y;
+  std::vector<double> mass;
+  iterative::predict(s.model, s.state, 1.0 / 60.0, y, mass);
+  local_global_parts::factorise(s.model, 1.0 / 60.0, mass, S);
+  return s;
+}
+
 // Local-global's triangular solves, cut into subtrees of the factor's elimination tree for a team
 // (local_global_solves.cpp): for any team the same bits, and the solution of the global matrix's
 // system (its residual, the matrix product Eigen's factor was made from, at rounding). The plans
 // differ: one thread has no top, more threads a top and pieces, and sums the pieces make for the
 // top's rows.
 TEST(Iterative, LocalGlobalSolvesGiveTheSameBitsForAnyTeam) {
-  const Scene s = test::shipped("cloth", {"cloth.width=64", "cloth.height=64"});
-  const double h = 1.0 / 60.0;
-  Points y;
-  std::vector<double> mass;
-  iterative::predict(s.model, s.state, h, y, mass);
   LocalGlobalSolver S;
-  local_global_parts::factorise(s.model, h, mass, S);
+  const Scene s = factorised_cloth(64, S);
   const int rows = static_cast<int>(S.inv_d.size());
   std::vector<double> b(3 * static_cast<std::size_t>(rows));
   for (std::size_t k = 0; k < b.size(); ++k) b[k] = std::sin(0.37 * static_cast<double>(k) + 1.0);
@@ -249,13 +257,8 @@ TEST(Iterative, LocalGlobalSolvesGiveTheSameBitsForAnyTeam) {
 // 1.65 for 2 threads and 2.3 for 4 (measured: 1.72 and 2.50). The plan before the pieces summed
 // the top's rows, with AMD's top rows all on the calling thread, allowed 1.57 and 2.04.
 TEST(Iterative, LocalGlobalSolvesLeaveLittleToOneThread) {
-  const Scene s = test::shipped("cloth", {"cloth.width=128", "cloth.height=128"});
-  const double h = 1.0 / 60.0;
-  Points y;
-  std::vector<double> mass;
-  iterative::predict(s.model, s.state, h, y, mass);
   LocalGlobalSolver S;
-  local_global_parts::factorise(s.model, h, mass, S);
+  const Scene s = factorised_cloth(128, S);
   const int before = threads::max_team();
   for (auto [team, least] : {std::pair{2, 1.65}, std::pair{4, 2.3}}) {
     threads::set_max_team(team);
