@@ -96,6 +96,10 @@ struct LocalGlobalSolver {
     double piece_work = 0.0;          // the pieces' entries, both solves
     int team = 0;                     // the threads it was made for: a piece each
   } plan;
+  // The solves' scratch (solve_in_place sizes it to the plan, once): the pieces' sums for the top's
+  // rows (3 a slot), and a stack of pending sums for each piece and for the top, each on cache
+  // lines of its own.
+  std::vector<double> partial, stacks;
   // Each particle's springs by row of the factor (compressed): spring s and +1 if the row is its
   // b end, -1 its a end; springs ascending, so that a row's sum takes them in the springs' order.
   std::vector<int> row_springs_first, row_springs;

@@ -25,7 +25,7 @@ void plan(const Model& model, LocalGlobalSolver& S);
 void global_rhs(const Model& model, const State& in, double h, const Points& X, const Points& y,
                 LocalGlobalSolver& S);
 // The global solve: (L D L^T) z = z in place, the factor's order, x y z interleaved.
-void solve_in_place(const LocalGlobalSolver& S, std::vector<double>& z);
+void solve_in_place(LocalGlobalSolver& S, std::vector<double>& z);
 
 // (L D L^T) z = b in place, three right sides interleaved (x y z a row): each entry of L read
 // once for all three, where Eigen's solve reads L once a column. L is unit lower triangular,

@@ -438,24 +438,26 @@ void backward_rows(const LocalGlobalSolver& S, int from, int to, double* Z) {
 
 // The pieces in parallel, each its rows and then its sums for the top's rows; the top's rows on
 // the caller: forward the pieces then the top, backward the top then the pieces.
-void solve_in_place(const LocalGlobalSolver& S, std::vector<double>& z) {
+void solve_in_place(LocalGlobalSolver& S, std::vector<double>& z) {
   const SolvePlan& P = S.plan;
   double* Z = z.data();
   const int pieces = static_cast<int>(P.piece_first.size()) - 1;
   const int rows = static_cast<int>(S.inv_d.size());
-  std::vector<double> partial(3 * static_cast<std::size_t>(P.slots));
-  const std::size_t stack_size = 3 * static_cast<std::size_t>(P.most_pending);
+  // A stack's cache lines its own (8 doubles a line): the pieces' threads write them at once.
+  const std::size_t stack_size = (3 * static_cast<std::size_t>(P.most_pending) + 7) / 8 * 8;
+  S.partial.resize(3 * static_cast<std::size_t>(P.slots));
+  S.stacks.resize(stack_size * (pieces + 1));
+  double* partial = S.partial.data();
   threads::for_each_piece(pieces, P.piece_work, [&](int k) {
-    std::vector<double> stack(stack_size);
-    forward_rows(P, P.piece_first[k], P.piece_first[k + 1], Z, partial.data(), stack.data());
+    double* stack = S.stacks.data() + stack_size * k;
+    forward_rows(P, P.piece_first[k], P.piece_first[k + 1], Z, partial, stack);
     for (int j = P.job_first[k]; j < P.job_first[k + 1]; ++j) {
       const SolvePlan::Job& job = P.jobs[j];
-      push_steps(P, &P.sums[job.first], job.last - job.first, Z, partial.data(), stack.data());
-      std::copy(stack.begin(), stack.begin() + 3, partial.begin() + 3 * job.slot);
+      push_steps(P, &P.sums[job.first], job.last - job.first, Z, partial, stack);
+      std::copy_n(stack, 3, partial + 3 * job.slot);
     }
   });
-  std::vector<double> stack(stack_size);
-  forward_rows(P, P.top_first, rows, Z, partial.data(), stack.data());
+  forward_rows(P, P.top_first, rows, Z, partial, S.stacks.data() + stack_size * pieces);
   backward_rows(S, P.top_first, rows, Z);
   threads::for_each_piece(pieces, P.piece_work, [&](int k) {
     backward_rows(S, P.piece_first[k], P.piece_first[k + 1], Z);
