@@ -15,32 +15,35 @@ void predict(const Model& model, const State& in, double h, Points& y, std::vect
   const int n = in.particle_count();
   y.resize(n, 3);
   mass.resize(n);
-  for (int i = 0; i < n; ++i) {
-    const Vec3 x = in.x.row(i).transpose(), v = in.v.row(i).transpose();
-    if (model.pinned(i)) {
-      y.row(i) = (x + h * v).transpose();
-      mass[i] = model.mass[i];
-      continue;
+  each_particle_piece(n, [&](int begin, int end) {
+    for (int i = begin; i < end; ++i) {
+      const Vec3 x = in.x.row(i).transpose(), v = in.v.row(i).transpose();
+      if (model.pinned(i)) {
+        y.row(i) = (x + h * v).transpose();
+        mass[i] = model.mass[i];
+        continue;
+      }
+      Vec3 a = model.gravity;
+      for (const Attractor& field : model.attractors) a += field_acceleration(field, x);
+      const double m = model.mass[i];
+      mass[i] = m + h * model.drag;
+      const Vec3 v_tilde = (m * v + h * (m * a + model.drag * model.wind)) / mass[i];
+      y.row(i) = (x + h * v_tilde).transpose();
     }
-    Vec3 a = model.gravity;
-    for (const Attractor& field : model.attractors) a += field_acceleration(field, x);
-    const double m = model.mass[i];
-    mass[i] = m + h * model.drag;
-    const Vec3 v_tilde = (m * v + h * (m * a + model.drag * model.wind)) / mass[i];
-    y.row(i) = (x + h * v_tilde).transpose();
-  }
+  });
 }
 
 void finish(const Model& model, const State& in, State& out, double h) {
-  const int n = in.particle_count();
-  for (int i = 0; i < n; ++i) {
-    if (model.pinned(i)) {
-      out.x.row(i) = in.x.row(i) + h * in.v.row(i);
-      out.v.row(i) = in.v.row(i);
-    } else {
-      out.v.row(i) = (out.x.row(i) - in.x.row(i)) / h;
+  each_particle_piece(in.particle_count(), [&](int begin, int end) {
+    for (int i = begin; i < end; ++i) {
+      if (model.pinned(i)) {
+        out.x.row(i) = in.x.row(i) + h * in.v.row(i);
+        out.v.row(i) = in.v.row(i);
+      } else {
+        out.v.row(i) = (out.x.row(i) - in.x.row(i)) / h;
+      }
     }
-  }
+  });
   out.t = in.t + h;
 }
 

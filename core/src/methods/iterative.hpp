@@ -23,15 +23,27 @@
 #include <Eigen/OrderingMethods>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
+#include "dynamics/threads.hpp"
 #include "solve_tree.hpp"
 #include "springlab/methods.hpp"
 
 namespace springlab {
 
 namespace iterative {
+
+// f(begin, end) for the particles [begin, end) of n, in pieces of kPiece on the team
+// (threads.hpp) where n is worth it: each particle's result its own, so the same bits for any
+// thread count.
+template <typename F>
+void each_particle_piece(int n, const F& f) {
+  constexpr int kPiece = 1024;
+  threads::for_each_piece((n + kPiece - 1) / kPiece, n,
+                          [&](int p) { f(p * kPiece, std::min(n, (p + 1) * kPiece)); });
+}
 
 // y and m~ above, for every particle (pinned ones: y = x + h v).
 void predict(const Model& model, const State& in, double h, Points& y, std::vector<double>& mass);
@@ -134,6 +146,9 @@ struct IterativeSolvers {
   Points y;                    // the inertial prediction
   std::vector<double> mass;    // m~
   std::vector<double> lambda;  // xpbd: each spring's Lagrange multiplier in the sub-step
+  std::vector<double> w;       // xpbd: each particle's 1 / m~, 0 if pinned
+  // xpbd: each material's compliance a~ = 1 / (k_s h^2) and damping gamma = k_d / (k_s h)
+  std::vector<double> compliance, gamma;
   LocalGlobalSolver local_global;
   VertexBlockDescent vbd;
   SpringColouring xpbd_colours;

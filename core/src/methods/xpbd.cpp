@@ -44,20 +44,34 @@ void xpbd(const Model& model, const State& in, State& out, double h, const StepS
   if (!ws.iterative) ws.iterative = std::make_unique<IterativeSolvers>();
   IterativeSolvers& S = *ws.iterative;
   iterative::predict(model, in, h, S.y, S.mass);
-  out.resize(in.particle_count());
-  out.x = S.y;
-  const int springs = model.spring_count();
+  const int n = in.particle_count(), springs = model.spring_count();
+  out.resize(n);
+  S.w.resize(n);
+  iterative::each_particle_piece(n, [&](int begin, int end) {
+    for (int c = 0; c < 3; ++c)
+      out.x.col(c).segment(begin, end - begin) = S.y.col(c).segment(begin, end - begin);
+    for (int i = begin; i < end; ++i) S.w[i] = model.pinned(i) ? 0.0 : 1.0 / S.mass[i];
+  });
   S.lambda.assign(springs, 0.0);
+  // The constants of the projection below, once a material rather than once a spring (a spring
+  // with k_s = 0 is not projected).
+  S.compliance.assign(model.materials.size(), 0.0);
+  S.gamma.assign(model.materials.size(), 0.0);
+  for (std::size_t m = 0; m < model.materials.size(); ++m)
+    if (const SpringMaterial& material = model.materials[m]; material.ks > 0.0) {
+      S.compliance[m] = 1.0 / (material.ks * h * h);
+      S.gamma[m] = material.kd / (material.ks * h);
+    }
 
   double* X[3] = {out.x.col(0).data(), out.x.col(1).data(), out.x.col(2).data()};
   const double* X0[3] = {in.x.col(0).data(), in.x.col(1).data(), in.x.col(2).data()};
-  const auto w = [&](int i) { return model.pinned(i) ? 0.0 : 1.0 / S.mass[i]; };
+  const double* w = S.w.data();
   // One spring's projection (the file's header).
   const auto project = [&](int s) {
-    const SpringMaterial& material = model.materials[model.spring_material[s]];
-    if (material.ks <= 0.0) return;
+    const int m = model.spring_material[s];
+    if (model.materials[m].ks <= 0.0) return;
     const int a = model.spring_a[s], b = model.spring_b[s];
-    const double wa = w(a), wb = w(b);
+    const double wa = w[a], wb = w[b];
     if (wa + wb == 0.0) return;
     double d[3], l2 = 0.0;
     for (int c = 0; c < 3; ++c) d[c] = X[c][b] - X[c][a], l2 += d[c] * d[c];
@@ -69,8 +83,7 @@ void xpbd(const Model& model, const State& in, State& out, double h, const StepS
       u[c] = d[c] / l;
       rate += u[c] * ((X[c][b] - X0[c][b]) - (X[c][a] - X0[c][a]));
     }
-    const double compliance = 1.0 / (material.ks * h * h);
-    const double gamma = material.kd / (material.ks * h);
+    const double compliance = S.compliance[m], gamma = S.gamma[m];
     const double dlambda = (-(l - rest) - compliance * S.lambda[s] - gamma * rate) /
                            ((1.0 + gamma) * (wa + wb) + compliance);
     S.lambda[s] += dlambda;
