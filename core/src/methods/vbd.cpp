@@ -102,13 +102,18 @@ void vbd(const Model& model, const State& in, State& out, double h, const StepSe
       // 37 of 16 (2 threads, 10 alternations, medians: 4.60 ms a step with 64, 4.47 with 32,
       // 4.41 with 16; the OpenMP build's static halves, 4.28).
       constexpr int kPiece = 16;
+      // A vertex's descent in the force pass's units (threads::worth_threads): its springs'
+      // Hessians and a 3 x 3 solve cost about five force-pass visits a spring end (the 32 x 32
+      // cloth on one thread: 15.5 ns a visit against the force pass's 2.7).
+      constexpr double kDescentWork = 5.0;
       const int begin = C.colour_first[c], end = C.colour_first[c + 1];
-      threads::for_each_piece((end - begin + kPiece - 1) / kPiece, C.colour_work[c], [&](int p) {
-        for (int q = begin + p * kPiece; q < std::min(end, begin + (p + 1) * kPiece); ++q) {
-          const int i = C.order[q];
-          if (!model.pinned(i)) descend(model, C, I, h, i, X, X0);
-        }
-      });
+      threads::for_each_piece(
+          (end - begin + kPiece - 1) / kPiece, kDescentWork * C.colour_work[c], [&](int p) {
+            for (int q = begin + p * kPiece; q < std::min(end, begin + (p + 1) * kPiece); ++q) {
+              const int i = C.order[q];
+              if (!model.pinned(i)) descend(model, C, I, h, i, X, X0);
+            }
+          });
     }
   ws.counters.solver_iterations += iterations;
   iterative::finish(model, in, out, h);
