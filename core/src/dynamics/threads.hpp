@@ -217,10 +217,11 @@ class Team {
 //
 // The one place that decides when a loop is worth a second thread: below kParallelWork
 // particle- and spring-visits a pass, one thread is taken to be faster than waking another. The
-// figure is the force pass's threshold carried over to every pass, not yet measured for each
-// solver's. A solver's pass (implicit Euler's products, local-global's local step, a VBD colour)
-// states its work in the same units: what one force pass over the same particles and springs
-// would visit.
+// figure is the force pass's threshold carried over to every pass. A solver's pass (implicit
+// Euler's products, local-global's local step, a VBD colour, an XPBD colour) states its work in
+// the same units: what one force pass over the same particles and springs would visit, times
+// what a visit of its own costs against one of the force pass's where that is measured (XPBD's
+// projections and VBD's descents: five each).
 inline constexpr double kParallelWork = 4096;
 inline bool worth_threads(double work) {
   return work >= kParallelWork && max_team() > 1;
