@@ -213,8 +213,9 @@ TEST(Iterative, LocalGlobalSolvesGiveTheSameBitsForAnyTeam) {
     local_global_parts::plan(s.model, S);
     threads::set_max_team(before);
     const LocalGlobalSolver::SolvePlan& P = S.plan;
-    ASSERT_EQ(P.team, team);
-    ASSERT_EQ(static_cast<int>(P.piece_first.size()), team + 1);
+    ASSERT_EQ(P.asked, team);
+    ASSERT_LE(P.team, team);
+    ASSERT_EQ(static_cast<int>(P.piece_first.size()), P.team + 1);
     if (team == 1) {
       EXPECT_EQ(P.top_first, rows) << "one thread: no top";
     }
@@ -222,7 +223,7 @@ TEST(Iterative, LocalGlobalSolvesGiveTheSameBitsForAnyTeam) {
       EXPECT_LT(P.top_first, rows) << "team " << team;
       EXPECT_GT(P.slots, 0) << "team " << team << ": no sum of a piece for the top's rows";
       int working = 0;
-      for (int k = 0; k < team; ++k) working += P.piece_first[k] < P.piece_first[k + 1];
+      for (int k = 0; k < P.team; ++k) working += P.piece_first[k] < P.piece_first[k + 1];
       EXPECT_GE(working, std::min(team, 3)) << "team " << team;
     }
     // The right side by particle, placed as this plan places rows.
@@ -255,13 +256,15 @@ TEST(Iterative, LocalGlobalSolvesGiveTheSameBitsForAnyTeam) {
 // forward and once backward, by its column's piece or by the top. On the 128 x 128 cloth the
 // work over the top's and the heaviest piece's (the most the solves can gain) must be at least
 // 1.65 for 2 threads and 2.3 for 4 (measured: 1.72 and 2.50). The plan before the pieces summed
-// the top's rows, with AMD's top rows all on the calling thread, allowed 1.57 and 2.04.
+// the top's rows, with AMD's top rows all on the calling thread, allowed 1.57 and 2.04. Asked for
+// 16 threads, the plan takes as many as pay: at most 8 on this cloth (its top and its heaviest
+// subtree set the time from 5 threads on: 2.61), and none fewer within 3 % of its gain.
 TEST(Iterative, LocalGlobalSolvesLeaveLittleToOneThread) {
   LocalGlobalSolver S;
   const Scene s = factorised_cloth(128, S);
   const int before = threads::max_team();
-  for (auto [team, least] : {std::pair{2, 1.65}, std::pair{4, 2.3}}) {
-    threads::set_max_team(team);
+  const auto gain_for = [&](int asked) {
+    threads::set_max_team(asked);
     local_global_parts::plan(s.model, S);
     threads::set_max_team(before);
     const LocalGlobalSolver::SolvePlan& P = S.plan;
@@ -272,10 +275,20 @@ TEST(Iterative, LocalGlobalSolvesLeaveLittleToOneThread) {
     };
     const int rows = static_cast<int>(S.inv_d.size());
     double heaviest = 0.0;
-    for (int k = 0; k < team; ++k)
+    for (int k = 0; k < P.team; ++k)
       heaviest = std::max(heaviest, work(P.piece_first[k], P.piece_first[k + 1]));
-    const double gain = work(0, rows) / (work(P.top_first, rows) + heaviest);
+    return work(0, rows) / (work(P.top_first, rows) + heaviest);
+  };
+  for (auto [team, least] : {std::pair{2, 1.65}, std::pair{4, 2.3}, std::pair{16, 2.5}}) {
+    const double gain = gain_for(team);
     EXPECT_GE(gain, least) << "team " << team;
+    const int used = S.plan.team;
+    if (team == 16) {
+      EXPECT_LE(used, 8) << "threads that gain nothing woken for the solves";
+    }
+    if (used > 1) {
+      EXPECT_LT(gain_for(used - 1), gain / 1.03) << used - 1 << " threads would do";
+    }
   }
 }
 

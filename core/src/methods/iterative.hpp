@@ -106,7 +106,8 @@ struct LocalGlobalSolver {
     std::vector<int> piece_first;     // piece k: places [piece_first[k], piece_first[k + 1])
     int top_first = 0;                // the top: places [top_first, rows)
     double piece_work = 0.0;          // the pieces' entries, both solves
-    int team = 0;                     // the threads it was made for: a piece each
+    int asked = 0;                    // the threads it was made for (threads::max_team)
+    int team = 0;                     // the threads it uses, as many as pay: a piece each
   } plan;
   // The solves' scratch (solve_in_place sizes it to the plan, once): the pieces' sums for the top's
   // rows (3 a slot), and a stack of pending sums for each piece and for the top, each on cache

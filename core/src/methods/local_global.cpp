@@ -171,7 +171,7 @@ void local_global(const Model& model, const State& in, State& out, double h,
   if (!S.factored || !S.key.matches(model, h)) {
     factorise(model, h, I.mass, S);
     S.key.take(model, h);
-  } else if (S.plan.team != std::max(1, threads::max_team())) {
+  } else if (S.plan.asked != std::max(1, threads::max_team())) {
     plan(model, S);  // the team changed: the solves' pieces for the new one (the same bits)
   }
 
