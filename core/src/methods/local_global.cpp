@@ -185,19 +185,26 @@ void local_global(const Model& model, const State& in, State& out, double h,
   for (int k = 1; k <= iterations; ++k) {
     global_rhs(model, in, h, out.x, I.y, S);
     solve_in_place(S, S.rhs);  // the correction z from y
+    // x = y + z, each particle's own (on the team: the same bits for any thread count).
     if (rho > 0.0) {
       omega = chebyshev_omega(k, rho, omega);
-      S.current = out.x;
-      for (int c = 0; c < 3; ++c)
-        for (int i = 0; i < n; ++i)
-          if (S.row[i] >= 0)
-            out.x(i, c) =
-                omega * (I.y(i, c) + S.rhs[3 * S.row[i] + c] - S.previous(i, c)) + S.previous(i, c);
+      S.current.resize(n, 3);
+      iterative::each_particle_piece(n, [&](int begin, int end) {
+        for (int c = 0; c < 3; ++c)
+          for (int i = begin; i < end; ++i) {
+            S.current(i, c) = out.x(i, c);
+            if (S.row[i] >= 0)
+              out.x(i, c) = omega * (I.y(i, c) + S.rhs[3 * S.row[i] + c] - S.previous(i, c)) +
+                            S.previous(i, c);
+          }
+      });
       S.previous.swap(S.current);
     } else {
-      for (int c = 0; c < 3; ++c)
-        for (int i = 0; i < n; ++i)
-          if (S.row[i] >= 0) out.x(i, c) = I.y(i, c) + S.rhs[3 * S.row[i] + c];
+      iterative::each_particle_piece(n, [&](int begin, int end) {
+        for (int c = 0; c < 3; ++c)
+          for (int i = begin; i < end; ++i)
+            if (S.row[i] >= 0) out.x(i, c) = I.y(i, c) + S.rhs[3 * S.row[i] + c];
+      });
     }
   }
   ws.counters.solver_iterations += iterations;
