@@ -95,8 +95,8 @@ double solve_time(const std::vector<Node>& nodes, const std::vector<double>& own
 
 // The fewest threads whose solves take at most kSlack longer, by the work model, than `asked`
 // threads': a thread that gains nothing (the top and the heaviest piece left as they were) is
-// only one more to wake and to wait for. The 128 x 128 cloth gains 2.61 times at 8 threads and
-// at 16 (its top and its heaviest subtree set the time), so 16 ask for fewer.
+// only one more to wake and to wait for. The 128 x 128 cloth gains 2.61 times from 5 threads on
+// (its top and its heaviest subtree set the time), so 16 asked use 5.
 int useful_team(const std::vector<Node>& nodes, const std::vector<double>& own,
                 const std::vector<double>& subtree, int asked) {
   constexpr double kSlack = 0.03;
