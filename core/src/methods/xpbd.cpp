@@ -37,14 +37,16 @@
 #include "springlab/spring_kernel.hpp"
 #include "steps.hpp"
 
-namespace springlab::steps {
+namespace springlab {
 
-void xpbd(const Model& model, const State& in, State& out, double h, const StepSettings& settings,
-          Workspace& ws) {
-  if (!ws.iterative) ws.iterative = std::make_unique<IterativeSolvers>();
-  IterativeSolvers& S = *ws.iterative;
+namespace {
+
+// The step's start: the first iterate x = y, each particle's 1 / m~ (0 if pinned) and each
+// material's compliance and damping, once a step rather than once a spring (a spring with k_s = 0
+// is not projected).
+void begin_step(const Model& model, const State& in, double h, IterativeSolvers& S, State& out) {
   iterative::predict(model, in, h, S.y, S.mass);
-  const int n = in.particle_count(), springs = model.spring_count();
+  const int n = in.particle_count();
   out.resize(n);
   S.w.resize(n);
   iterative::each_particle_piece(n, [&](int begin, int end) {
@@ -52,13 +54,6 @@ void xpbd(const Model& model, const State& in, State& out, double h, const StepS
       out.x.col(c).segment(begin, end - begin) = S.y.col(c).segment(begin, end - begin);
     for (int i = begin; i < end; ++i) S.w[i] = model.pinned(i) ? 0.0 : 1.0 / S.mass[i];
   });
-  // lambda_s = 0 at the step's start: read as 0 in the first pass rather than cleared first (a
-  // serial pass over every spring's lambda: 1.3 % of the 128 x 128 cloth's step at 2 threads, and
-  // a larger share the more threads share the rest).
-  S.lambda.resize(springs);
-  bool first_pass = true;
-  // The constants of the projection below, once a material rather than once a spring (a spring
-  // with k_s = 0 is not projected).
   S.compliance.assign(model.materials.size(), 0.0);
   S.gamma.assign(model.materials.size(), 0.0);
   for (std::size_t m = 0; m < model.materials.size(); ++m)
@@ -66,6 +61,23 @@ void xpbd(const Model& model, const State& in, State& out, double h, const StepS
       S.compliance[m] = 1.0 / (material.ks * h * h);
       S.gamma[m] = material.kd / (material.ks * h);
     }
+}
+
+}  // namespace
+
+namespace steps {
+
+void xpbd(const Model& model, const State& in, State& out, double h, const StepSettings& settings,
+          Workspace& ws) {
+  if (!ws.iterative) ws.iterative = std::make_unique<IterativeSolvers>();
+  IterativeSolvers& S = *ws.iterative;
+  begin_step(model, in, h, S, out);
+  const int springs = model.spring_count();
+  // lambda_s = 0 at the step's start: read as 0 in the first pass rather than cleared first (a
+  // serial pass over every spring's lambda: 1.3 % of the 128 x 128 cloth's step at 2 threads, and
+  // a larger share the more threads share the rest).
+  S.lambda.resize(springs);
+  bool first_pass = true;
 
   double* X[3] = {out.x.col(0).data(), out.x.col(1).data(), out.x.col(2).data()};
   const double* X0[3] = {in.x.col(0).data(), in.x.col(1).data(), in.x.col(2).data()};
@@ -128,4 +140,5 @@ void xpbd(const Model& model, const State& in, State& out, double h, const StepS
   iterative::finish(model, in, out, h);
 }
 
-}  // namespace springlab::steps
+}  // namespace steps
+}  // namespace springlab
