@@ -10,10 +10,12 @@
 // stability analysis is timed instead: "threads=T analysis_s=S".
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -23,6 +25,23 @@
 #include "springlab/stability.hpp"
 
 using namespace springlab;
+
+namespace {
+
+// The whole argument as a number in [lo, hi] (a whole one if `whole`), or an error naming it:
+// atof would read "1/60" as 1 and time the wrong step without a word.
+double number(const char* what, const char* text, double lo, double hi, bool whole,
+              const char* hint = "") {
+  char* end = nullptr;
+  const double x = std::strtod(text, &end);
+  if (end != text && *end == '\0' && x >= lo && x <= hi && (!whole || x == std::floor(x))) return x;
+  char message[256];
+  std::snprintf(message, sizeof message, "%s must be a %s in [%g, %g], got '%s'%s", what,
+                whole ? "whole number" : "number", lo, hi, text, hint);
+  throw std::invalid_argument(message);
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   if (argc < 6) {
@@ -43,7 +62,8 @@ int main(int argc, char** argv) {
       else if (arg == "--analysis")
         analysis = true;
       else
-        thread_counts.push_back(std::atoi(argv[a]));
+        thread_counts.push_back(
+            static_cast<int>(number("THREADS", argv[a], 0, 4096, true, " (0: the default)")));
     }
     const Scene scene = load_scene(argv[1], overrides);
     const std::optional<Method> method = find_method(argv[2]);
@@ -51,8 +71,9 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "unknown method '%s'\n", argv[2]);
       return 2;
     }
-    const double dt = std::atof(argv[3]);
-    const long steps = std::atol(argv[4]);
+    const double dt =
+        number("DT", argv[3], 1e-12, 1e6, false, " (seconds: 1/60 s is 0.016666666666666666)");
+    const long steps = static_cast<long>(number("STEPS", argv[4], 1, 1e12, true));
     for (int threads : thread_counts) {
       set_thread_count(threads);
       if (analysis) {
