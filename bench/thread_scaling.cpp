@@ -6,8 +6,8 @@
 //   springlab_threads SCENE_FILE METHOD DT STEPS THREADS... [--set KEY=VALUE]... [--analysis]
 //
 // For each thread count: a warm-up of STEPS / 10 steps, then STEPS timed steps; one line
-// "threads=T steps_per_s=S team=J alone=A yields=Y stalls=R shared=C". With --analysis, the scene's
-// stability analysis is timed instead: "threads=T analysis_s=S".
+// "threads=T steps_per_s=S team=J alone=A yields=Y stalls=R shared=C sleeps=Z". With --analysis,
+// the scene's stability analysis is timed instead: "threads=T analysis_s=S".
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -103,9 +103,11 @@ int main(int argc, char** argv) {
         return 3;
       }
       std::printf(
-          "threads=%d steps_per_s=%.5g team=%ld alone=%ld yields=%ld stalls=%ld shared=%ld\n",
+          "threads=%d steps_per_s=%.5g team=%ld alone=%ld yields=%ld stalls=%ld shared=%ld "
+          "sleeps=%ld\n",
           threads, taken / s, after.team - before.team, after.alone - before.alone,
-          after.yields - before.yields, after.stalls - before.stalls, after.shared - before.shared);
+          after.yields - before.yields, after.stalls - before.stalls, after.shared - before.shared,
+          after.sleeps - before.sleeps);
       std::fflush(stdout);
     }
   } catch (const std::exception& e) {

@@ -71,9 +71,11 @@ int thread_count();
 // a wait for a helper that another program kept off its core, the team goes without helpers for a
 // while: dynamics/threads.hpp), those waits, and the helpers' runs of work taken from them once
 // they had stopped claiming it (stalls), and the passes run alone because the calling thread's
-// own core was shared with another program (shared, among alone too).
+// own core was shared with another program (shared, among alone too); and, in the whole process,
+// the times a helper found no pass to join within its spin and slept (sleeps: the next pass wakes
+// it, tens of microseconds late).
 struct TeamCounts {
-  long team = 0, alone = 0, yields = 0, stalls = 0, shared = 0;
+  long team = 0, alone = 0, yields = 0, stalls = 0, shared = 0, sleeps = 0;
 };
 TeamCounts team_counts();
 

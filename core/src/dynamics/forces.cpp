@@ -31,7 +31,7 @@ int thread_count() {
 
 TeamCounts team_counts() {
   const threads::Team::Counts c = threads::Team::counts();
-  return {c.team, c.alone, c.yields, c.stalls, c.shared};
+  return {c.team, c.alone, c.yields, c.stalls, c.shared, c.sleeps};
 }
 
 }  // namespace springlab

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <memory>
 #include <mutex>
@@ -73,6 +75,25 @@ bool core_shared() {
   return shared;
 }
 
+// How long a helper spins for its next job before it sleeps: `team` the size of its last job's
+// team, `shared` whether its own core was shared then (core_shared). A solver's serial parts
+// between its passes (local-global's top solves, 200 to 500 us on the 128 x 128 cloth) are short
+// against what a sleep costs the pass after them: woken, a helper came 34 to 55 us late to a pass
+// after a 150 us pause (10th to 90th percentile, these 2 cores), and for a team of 16 the caller
+// wakes each sleeper in turn. So on a quiet machine a helper spins about a millisecond (OpenMP's
+// runtimes spin as long or longer). It spins 50 us where its spin takes a core something else
+// needs: its own core shared with other programs (beside two busy loops a millisecond's spin made
+// XPBD's default 1.30 times slower than one thread, against 0.98 times with 50 us), a team larger
+// than the processors, or OMP_WAIT_POLICY=passive (tests run two at a time: scripts/test.sh).
+std::chrono::microseconds spin_window(int team, bool shared) {
+  static const bool passive = [] {
+    const char* policy = std::getenv("OMP_WAIT_POLICY");
+    return policy && (std::strcmp(policy, "passive") == 0 || std::strcmp(policy, "PASSIVE") == 0);
+  }();
+  const bool spare = !passive && !shared && team <= processors();
+  return std::chrono::microseconds(spare ? 1000 : 50);
+}
+
 // Jobs are numbered (generation); the caller hands a job (its number, the job, the team's size)
 // to the helpers of this job's team alone, each in its own slot, and wakes those that sleep; runs
 // its own share, then closes it (closed = its number) and waits until no helper is inside. A helper
@@ -109,6 +130,7 @@ struct Pool {
   alignas(64) std::atomic<std::uint64_t> closed{0};
   alignas(64) std::atomic<int> inside{0};
   std::atomic<long> strays{0};   // Team::strays()
+  std::atomic<long> sleeps{0};   // Team::Counts::sleeps
   Slot slots[kMostHelpers + 1];  // slots[i]: helper i (1 to kMostHelpers)
 
   // Hands job `g` to helpers 1 to team - 1, waking those that sleep. Sequentially consistent
@@ -133,13 +155,16 @@ struct Pool {
     for (;;) {
       // A new job soon (a step's next pass): spin; none for a while: sleep until one.
       const auto since = Clock::now();
+      const auto window = spin_window(slot.threads.load(std::memory_order_relaxed),
+                                      slot.shared.load(std::memory_order_relaxed));
       std::uint32_t g;
       for (int spins = 0; (g = slot.job.load(std::memory_order_acquire)) == seen; ++spins) {
-        if (spins < 64 || (spins & 63) || Clock::now() - since < std::chrono::microseconds(50)) {
+        if (spins < 64 || (spins & 63) || Clock::now() - since < window) {
           pause();
           continue;
         }
         slot.asleep.store(true);
+        sleeps.fetch_add(1, std::memory_order_relaxed);
         slot.job.wait(seen);  // (returns at once if the number has changed since)
         slot.asleep.store(false);
       }
@@ -214,7 +239,9 @@ bool Team::stalled(const std::atomic<std::uint64_t>& run, std::chrono::nanosecon
   }
 }
 Team::Counts Team::counts() {
-  return g_counts;
+  Counts c = g_counts;
+  c.sleeps = pool().sleeps.load(std::memory_order_relaxed);
+  return c;
 }
 long Team::strays() {
   return pool().strays.load();

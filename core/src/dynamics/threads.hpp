@@ -122,9 +122,11 @@ inline int hardware_workers() {
 // its work is: a helper joins only while the job is open, the work is claimed piece by piece by
 // whoever is running (the job's own claims), and the caller takes every piece a helper has not
 // claimed. The caller waits only for a helper that joined and holds a piece (a window of a few
-// microseconds). Between jobs a helper spins for about 50 us (a step's next pass comes sooner),
-// then sleeps until the next one. A job is handed only to the helpers of its own team (a pass
-// that asks for fewer threads than the pool has leaves the others asleep).
+// microseconds). Between jobs a helper spins, about a millisecond on a quiet machine (a step's
+// next pass, after a solver's serial part, comes sooner) and 50 us where its core is wanted
+// elsewhere (threads.cpp, spin_window), then sleeps until the next one. A job is handed only to
+// the helpers of its own team (a pass that asks for fewer threads than the pool has leaves the
+// others asleep).
 class Team {
  public:
   // Waits until `done()`: spins briefly (the wait is usually a few microseconds), then yields the
@@ -187,9 +189,11 @@ class Team {
   // had to yield, or the team busy with another thread's), and the waits that yielded.
   // `stalls`: runs of pieces taken from a thread that had stopped claiming (for_each_piece).
   // `shared`: jobs run alone because the caller's own core was shared (it waited for a processor
-  // a tenth of the last 20 ms), counted among `alone` too.
+  // a tenth of the last 20 ms), counted among `alone` too. `sleeps`: the times a helper found no
+  // job within its spin and slept, in this process (the next job wakes it, tens of microseconds
+  // late).
   struct Counts {
-    long team = 0, alone = 0, yields = 0, stalls = 0, shared = 0;
+    long team = 0, alone = 0, yields = 0, stalls = 0, shared = 0, sleeps = 0;
   };
   static Counts counts();
   // Jobs a helper came to that its team did not include, in this process: none, as each job is
