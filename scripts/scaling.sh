@@ -19,11 +19,18 @@ small=(--set cloth.width=64 --set cloth.height=64)
 counts=(1 2 4 8 16 0)
 
 echo "# $(nproc) cores; threads 0 = the default (every core)"
+# The machine: hardware threads a core (a second one gains little), caches and NUMA nodes.
+lscpu | grep -E "^(Model name|Thread\(s\) per core|Core\(s\) per socket|Socket\(s\)|L2 cache|L3 cache|NUMA node\(s\))" || true
 echo "## scaling: 128 x 128 cloth, h = 1/60 (symplectic Euler and XPBD 2e-4), steps/s"
 for m in symplectic-euler:2e-4:400 xpbd:2e-4:400 implicit-euler:0.016666666666666666:12 local-global:0.016666666666666666:20 vbd:0.016666666666666666:30; do
   IFS=: read -r method dt steps <<<"$m"
   echo "### $method"
   "$tool" "$cloth" "$method" "$dt" "$steps" "${counts[@]}" "${big[@]}"
+done
+echo "## the helpers' spin between passes: local-global, 128 x 128 cloth, 4 and 16 threads, with"
+echo "## OMP_WAIT_POLICY=passive (helpers sleep after 50 us: sleeps= counts it) and without (about 1 ms)"
+for policy in passive ""; do
+  OMP_WAIT_POLICY="$policy" "$tool" "$cloth" local-global 0.016666666666666666 20 4 16 "${big[@]}"
 done
 echo "## analysis: 128 x 128 cloth, seconds"
 "$tool" "$cloth" symplectic-euler 1e-3 1 1 4 16 0 "${big[@]}" --analysis
