@@ -75,23 +75,13 @@ bool core_shared() {
   return shared;
 }
 
-// How long a helper spins for its next job before it sleeps: `team` the size of its last job's
-// team, `shared` whether its own core was shared then (core_shared). A solver's serial parts
-// between its passes (local-global's top solves, 200 to 500 us on the 128 x 128 cloth) are short
-// against what a sleep costs the pass after them: woken, a helper came 34 to 55 us late to a pass
-// after a 150 us pause (10th to 90th percentile, these 2 cores), and for a team of 16 the caller
-// wakes each sleeper in turn. So on a quiet machine a helper spins about a millisecond (OpenMP's
-// runtimes spin as long or longer). It spins 50 us where its spin takes a core something else
-// needs: its own core shared with other programs (beside two busy loops a millisecond's spin made
-// XPBD's default 1.30 times slower than one thread, against 0.98 times with 50 us), a team larger
-// than the processors, or OMP_WAIT_POLICY=passive (tests run two at a time: scripts/test.sh).
-std::chrono::microseconds spin_window(int team, bool shared) {
+// Whether OMP_WAIT_POLICY asks waiting threads not to spin (read once).
+bool passive_wait() {
   static const bool passive = [] {
     const char* policy = std::getenv("OMP_WAIT_POLICY");
     return policy && (std::strcmp(policy, "passive") == 0 || std::strcmp(policy, "PASSIVE") == 0);
   }();
-  const bool spare = !passive && !shared && team <= processors();
-  return std::chrono::microseconds(spare ? 1000 : 50);
+  return passive;
 }
 
 // Jobs are numbered (generation); the caller hands a job (its number, the job, the team's size)
@@ -155,8 +145,9 @@ struct Pool {
     for (;;) {
       // A new job soon (a step's next pass): spin; none for a while: sleep until one.
       const auto since = Clock::now();
-      const auto window = spin_window(slot.threads.load(std::memory_order_relaxed),
-                                      slot.shared.load(std::memory_order_relaxed));
+      const auto window =
+          Team::spin_window(slot.threads.load(std::memory_order_relaxed),
+                            slot.shared.load(std::memory_order_relaxed), passive_wait());
       std::uint32_t g;
       for (int spins = 0; (g = slot.job.load(std::memory_order_acquire)) == seen; ++spins) {
         if (spins < 64 || (spins & 63) || Clock::now() - since < window) {
@@ -238,6 +229,10 @@ bool Team::stalled(const std::atomic<std::uint64_t>& run, std::chrono::nanosecon
     pause();
   }
 }
+std::chrono::microseconds Team::spin_window(int team, bool shared, bool passive) {
+  const bool spare = !passive && !shared && team <= processors();
+  return std::chrono::microseconds(spare ? 1000 : 50);
+}
 Team::Counts Team::counts() {
   Counts c = g_counts;
   c.sleeps = pool().sleeps.load(std::memory_order_relaxed);
@@ -308,6 +303,9 @@ void Team::run(int threads, const Job& job) {
 
 void Team::run(int, const Job& job) {
   job(1, 0);
+}
+std::chrono::microseconds Team::spin_window(int, bool, bool) {
+  return std::chrono::microseconds(0);  // (no helpers)
 }
 void Team::judge_shared_cores(bool) {}
 void Team::yielded() {}

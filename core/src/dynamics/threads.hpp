@@ -124,7 +124,7 @@ inline int hardware_workers() {
 // claimed. The caller waits only for a helper that joined and holds a piece (a window of a few
 // microseconds). Between jobs a helper spins, about a millisecond on a quiet machine (a step's
 // next pass, after a solver's serial part, comes sooner) and 50 us where its core is wanted
-// elsewhere (threads.cpp, spin_window), then sleeps until the next one. A job is handed only to
+// elsewhere (spin_window, below), then sleeps until the next one. A job is handed only to
 // the helpers of its own team (a pass that asks for fewer threads than the pool has leaves the
 // others asleep).
 class Team {
@@ -196,6 +196,18 @@ class Team {
     long team = 0, alone = 0, yields = 0, stalls = 0, shared = 0, sleeps = 0;
   };
   static Counts counts();
+  // How long a helper spins for its next job before it sleeps: `team` the size of its last job's
+  // team, `shared` whether its own core was shared then (core_shared, threads.cpp), `passive`
+  // whether OMP_WAIT_POLICY=passive. A solver's serial parts between its passes (local-global's top
+  // solves, 200 to 500 us on the 128 x 128 cloth) are short against what a sleep costs the pass
+  // after them: woken, a helper came 34 to 55 us late to a pass after a 150 us pause (10th to
+  // 90th percentile, 2 cores), and for a team of 16 the caller wakes each sleeper in turn. So a
+  // helper whose core is spare spins about a millisecond (OpenMP's runtimes spin as long or
+  // longer); one whose spin takes a core something else needs spins 50 us: its core shared with
+  // other programs (beside two busy loops a millisecond's spin made XPBD's default 1.30 times
+  // slower than one thread, against 0.86 times with 50 us), a team larger than the processors, or
+  // a passive wait asked for (scripts/test.sh runs two tests at once so).
+  static std::chrono::microseconds spin_window(int team, bool shared, bool passive);
   // Jobs a helper came to that its team did not include, in this process: none, as each job is
   // handed only to its own team's helpers (a regression would have idle helpers spin on the
   // team's cores).
