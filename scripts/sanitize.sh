@@ -42,6 +42,9 @@ export OMP_WAIT_POLICY="${OMP_WAIT_POLICY:-passive}"
 # the balance runs in Equilibrium.WithNoWeight... and every analysis), implicit midpoint's energy
 # over a long swing (TableauMethods.ImplicitMidpointsEnergy...; the DIRK stages run in the other
 # TableauMethods tests) and a sweep taken in steps (Sweep.InSteps...; the sweep with its workers
-# runs in Sweep.TheNumberOfWorkersChangesNoResult).
+# runs in Sweep.TheNumberOfWorkersChangesNoResult). And every implicit tableau on every scene
+# (TableauMethods.EveryImplicitTableauRuns...: 40 s here on 2026-11-29, the longest test left, a
+# 1.5 s in Release): the stages' Newton solves run here on a free cloth for every row
+# (Momentum.EachRowKeepsWhatItSays) and on a pinned rope (TableauMethods.DiagonallyImplicit...).
 ctest --output-on-failure --parallel "$(nproc)" --timeout 600 -L 'core|fuzz' \
-  -E '^Determinism\.ThreadCountDoesNotChangeABit$|^Scenes/Limits\.|^Analysis\.RunsFindTheAnalysisLimits$|^Sweep\.OnTheSpringOrdersAndStabilityLimitsAreThoseOfNumericsMd$|^Audit(Silence|Catches)\.|^Iterative\.(BoundedAtOneStepAFrameOnEveryScene|RunsFindThemStableAtAnyStep)$|^Equilibrium\.BalancesTheForcesToItsStatedTolerance$|^TableauMethods\.ImplicitMidpointsEnergyErrorStaysBoundedOnASwingingRope$|^Sweep\.InStepsItIsTheSameSweep$' "$@"
+  -E '^Determinism\.ThreadCountDoesNotChangeABit$|^Scenes/Limits\.|^Analysis\.RunsFindTheAnalysisLimits$|^Sweep\.OnTheSpringOrdersAndStabilityLimitsAreThoseOfNumericsMd$|^Audit(Silence|Catches)\.|^Iterative\.(BoundedAtOneStepAFrameOnEveryScene|RunsFindThemStableAtAnyStep)$|^Equilibrium\.BalancesTheForcesToItsStatedTolerance$|^TableauMethods\.ImplicitMidpointsEnergyErrorStaysBoundedOnASwingingRope$|^Sweep\.InStepsItIsTheSameSweep$|^TableauMethods\.EveryImplicitTableauRunsEverySceneWhereImplicitEulerDoes$' "$@"

@@ -60,12 +60,13 @@ void LocalGlobalSolver::Key::take(const Model& model, double step) {
 namespace local_global_parts {
 
 // The local step for `count` springs of a span (spring k joins a0 + k and b0 + k), from the
-// iterate x and the start x0: each spring's w t (the file's header), x y z in wx, wy, wz. Plain
-// arrays along the span, without branches, so that it vectorises.
-void span_targets(const double* const x[3], const double* const x0[3], int a0, int b0, int count,
-                  double ks, double kd, double rest, double h, double* __restrict wx,
-                  double* __restrict wy, double* __restrict wz) {
-  const double k_s = h * h * ks, k_d = h * kd, near = coincident_length(rest);
+// iterate x, the start x0 and the prediction y: each spring's term of the right side, w t - w e(y)
+// (global_rhs), x y z in wx, wy, wz. Plain arrays along the span, without branches, so that it
+// vectorises (y's differences read along the span too, not gathered spring by spring).
+void span_targets(const double* const x[3], const double* const x0[3], const double* const y[3],
+                  int a0, int b0, int count, double ks, double kd, double rest, double h,
+                  double* __restrict wx, double* __restrict wy, double* __restrict wz) {
+  const double k_s = h * h * ks, k_d = h * kd, w = k_s + k_d, near = coincident_length(rest);
   SPRINGLAB_VECTORISE
   for (int k = 0; k < count; ++k) {
     const double ex = x[0][b0 + k] - x[0][a0 + k], ey = x[1][b0 + k] - x[1][a0 + k],
@@ -79,9 +80,13 @@ void span_targets(const double* const x[3], const double* const x0[3], int a0, i
     const double ux = ex * inv, uy = ey * inv, uz = ez * inv;
     const double along = ux * (ex - fx) + uy * (ey - fy) + uz * (ez - fz);  // u . de
     const double target = none ? 1.0 : rest * inv;                          // d = target e
-    wx[k] = k_s * target * ex + k_d * (ex - ux * along);  // e0 + P de = e - u (u . de)
-    wy[k] = k_s * target * ey + k_d * (ey - uy * along);
-    wz[k] = k_s * target * ez + k_d * (ez - uz * along);
+    // w t = k_s d + k_d (e0 + P de), e0 + P de = e - u (u . de); then less w e(y)
+    const double tx = k_s * target * ex + k_d * (ex - ux * along);
+    const double ty = k_s * target * ey + k_d * (ey - uy * along);
+    const double tz = k_s * target * ez + k_d * (ez - uz * along);
+    wx[k] = tx - w * (y[0][b0 + k] - y[0][a0 + k]);
+    wy[k] = ty - w * (y[1][b0 + k] - y[1][a0 + k]);
+    wz[k] = tz - w * (y[2][b0 + k] - y[2][a0 + k]);
   }
 }
 
@@ -102,6 +107,7 @@ void global_rhs(const Model& model, const State& in, double h, const Points& X, 
   double* B = S.rhs.data();
   const double* x[3] = {X.col(0).data(), X.col(1).data(), X.col(2).data()};
   const double* x0[3] = {in.x.col(0).data(), in.x.col(1).data(), in.x.col(2).data()};
+  const double* Y[3] = {y.col(0).data(), y.col(1).data(), y.col(2).data()};
   S.wt.resize(3 * static_cast<std::size_t>(springs));
   double *wx = S.wt.data(), *wy = wx + springs, *wz = wy + springs;
   // Pieces of kPiece springs (a span cut where a piece ends), claimed by whichever thread of the
@@ -121,15 +127,8 @@ void global_rhs(const Model& model, const State& in, double h, const Points& X, 
                     to = std::min(hi - span->first, span->count);
           if (from >= to) continue;
           const int at = span->first + from;
-          span_targets(x, x0, span->a0 + from, span->b0 + from, to - from, material.ks, material.kd,
-                       span->rest, h, wx + at, wy + at, wz + at);
-        }
-        for (int s = lo; s < hi; ++s) {  // the spring's term g = w t - w e(y)
-          const int a = model.spring_a[s], b = model.spring_b[s];
-          const double w = h * h * model.ks(s) + h * model.kd(s);
-          wx[s] = wx[s] - w * (y(b, 0) - y(a, 0));
-          wy[s] = wy[s] - w * (y(b, 1) - y(a, 1));
-          wz[s] = wz[s] - w * (y(b, 2) - y(a, 2));
+          span_targets(x, x0, Y, span->a0 + from, span->b0 + from, to - from, material.ks,
+                       material.kd, span->rest, h, wx + at, wy + at, wz + at);
         }
       },
       kPerThread);
