@@ -151,6 +151,12 @@ void colour_springs(const Model& model, SpringColouring& out) {
       },
       colours);
   group_by_colour(colour, colours, out.colour_first, out.order);
+  out.springs_in_order.resize(out.order.size());
+  for (std::size_t k = 0; k < out.order.size(); ++k) {
+    const int sp = out.order[k];
+    out.springs_in_order[k] = {model.spring_a[sp], model.spring_b[sp], model.spring_material[sp],
+                               model.rest_length[sp]};
+  }
   out.spans = model.spans.data();
   out.particles = model.particle_count();
   out.springs = springs;

@@ -140,14 +140,23 @@ struct SpringColouring {
   int particles = -1, springs = -1;
   // Springs grouped by colour, ascending in each: colour c is order[colour_first[c], [c + 1]).
   std::vector<int> order, colour_first;
+  // What a projection reads of spring order[k], at k: its ends, material and rest length, in the
+  // order a pass reads them (a colour's springs are every other one or sparser in the model's
+  // arrays: read through `order`, each cache line brought half used or less).
+  struct Spring {
+    std::int32_t a, b, material;
+    double rest;
+  };
+  std::vector<Spring> springs_in_order;
 };
 
 // What the three keep between steps, one Workspace's worth.
 struct IterativeSolvers {
-  Points y;                    // the inertial prediction
-  std::vector<double> mass;    // m~
-  std::vector<double> lambda;  // xpbd: each spring's Lagrange multiplier in the sub-step
-  std::vector<double> w;       // xpbd: each particle's 1 / m~, 0 if pinned
+  Points y;                  // the inertial prediction
+  std::vector<double> mass;  // m~
+  std::vector<double>
+      lambda;             // xpbd: each spring's Lagrange multiplier, at its place in the colouring
+  std::vector<double> w;  // xpbd: each particle's 1 / m~, 0 if pinned
   // xpbd: each material's compliance a~ = 1 / (k_s h^2) and damping gamma = k_d / (k_s h)
   std::vector<double> compliance, gamma;
   LocalGlobalSolver local_global;

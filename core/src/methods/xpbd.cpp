@@ -82,19 +82,24 @@ void xpbd(const Model& model, const State& in, State& out, double h, const StepS
   double* X[3] = {out.x.col(0).data(), out.x.col(1).data(), out.x.col(2).data()};
   const double* X0[3] = {in.x.col(0).data(), in.x.col(1).data(), in.x.col(2).data()};
   const double* w = S.w.data();
-  // One spring's projection (the file's header).
-  const auto project = [&](int s) {
-    const int m = model.spring_material[s];
+  SpringColouring& C = S.xpbd_colours;
+  if (C.spans != model.spans.data() || C.particles != in.particle_count() || C.springs != springs)
+    colour_springs(model, C);
+  // One spring's projection (the file's header): the spring at place k of the colouring, its
+  // lambda at the same place.
+  const auto project = [&](int k) {
+    const SpringColouring::Spring& spring = C.springs_in_order[k];
+    const int m = spring.material;
     if (model.materials[m].ks <= 0.0) return;
-    const int a = model.spring_a[s], b = model.spring_b[s];
+    const int a = spring.a, b = spring.b;
     const double wa = w[a], wb = w[b];
     if (wa + wb == 0.0) return;
     double d[3], l2 = 0.0;
     for (int c = 0; c < 3; ++c) d[c] = X[c][b] - X[c][a], l2 += d[c] * d[c];
     const double l = std::sqrt(l2);
-    const double rest = model.rest_length[s];
+    const double rest = spring.rest;
     if (coincident(l, rest)) {  // not moved: its lambda stays as it was, 0 in the first pass
-      if (first_pass) S.lambda[s] = 0.0;
+      if (first_pass) S.lambda[k] = 0.0;
       return;
     }
     double u[3], rate = 0.0;
@@ -103,18 +108,15 @@ void xpbd(const Model& model, const State& in, State& out, double h, const StepS
       rate += u[c] * ((X[c][b] - X0[c][b]) - (X[c][a] - X0[c][a]));
     }
     const double compliance = S.compliance[m], gamma = S.gamma[m];
-    const double lambda = first_pass ? 0.0 : S.lambda[s];
+    const double lambda = first_pass ? 0.0 : S.lambda[k];
     const double dlambda = (-(l - rest) - compliance * lambda - gamma * rate) /
                            ((1.0 + gamma) * (wa + wb) + compliance);
-    S.lambda[s] = lambda + dlambda;
+    S.lambda[k] = lambda + dlambda;
     for (int c = 0; c < 3; ++c) {
       X[c][a] -= wa * dlambda * u[c];
       X[c][b] += wb * dlambda * u[c];
     }
   };
-  SpringColouring& C = S.xpbd_colours;
-  if (C.spans != model.spans.data() || C.particles != in.particle_count() || C.springs != springs)
-    colour_springs(model, C);
   const int passes = iterations_for(Method::XPBD, settings);
   // A colour's springs in pieces of kPiece: a thread another program has parked holds up only the
   // piece it has begun, the rest of its run taken by the others (threads::for_each_piece). Measured
@@ -132,7 +134,7 @@ void xpbd(const Model& model, const State& in, State& out, double h, const StepS
       const int first = C.colour_first[c], count = C.colour_first[c + 1] - first;
       threads::for_each_piece((count + kPiece - 1) / kPiece, kProjectionWork * count, [&](int p) {
         const int to = std::min(count, (p + 1) * kPiece);
-        for (int k = p * kPiece; k < to; ++k) project(C.order[first + k]);
+        for (int k = p * kPiece; k < to; ++k) project(first + k);
       });
     }
   }
