@@ -44,6 +44,7 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv,
 
   pid_ = fork();
   if (pid_ == 0) {  // the child: only async-signal-safe calls until exec
+    setpgid(0, 0);  // a group of its own, killed whole (kill_group)
     dup2(in[0], 0);
     dup2(out, 1);
     dup2(out, 2);
@@ -63,6 +64,7 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv,
     close(reply[0]);
     throw std::runtime_error(std::string("cannot start a process: ") + std::strerror(errno));
   }
+  setpgid(pid_, pid_);  // as the child does: whichever runs first, the group exists before a kill
   to_child_ = in[1];
   from_child_ = reply[0];
 }
@@ -125,7 +127,16 @@ std::optional<std::string> ChildProcess::read_line(std::chrono::steady_clock::ti
 }
 
 void ChildProcess::kill_now() {
-  if (pid_ > 0 && !ended_) ::kill(pid_, SIGKILL);
+  if (pid_ > 0 && !ended_) {
+    ::kill(pid_, SIGKILL);
+    kill_group();
+  }
+}
+
+// Whatever the child started and left running (it may have blocked every signal but SIGKILL).
+// Called only while the child is unreaped, so its group's id is still its own.
+void ChildProcess::kill_group() {
+  if (pid_ > 0) ::kill(-pid_, SIGKILL);
 }
 
 std::string ChildProcess::wait(std::chrono::milliseconds grace) {
@@ -134,16 +145,22 @@ std::string ChildProcess::wait(std::chrono::milliseconds grace) {
     close(to_child_);  // end of input: a runner that is waiting for a command exits
     to_child_ = -1;
   }
-  int status = 0;
+  // Ended (seen without reaping it: a zombie keeps its pid and group), or killed after the grace;
+  // then the group, and only then the child is reaped.
   const auto until = std::chrono::steady_clock::now() + grace;
-  pid_t done = 0;
-  while ((done = waitpid(pid_, &status, WNOHANG)) == 0) {
+  siginfo_t info{};
+  while (waitid(P_PID, static_cast<id_t>(pid_), &info, WEXITED | WNOHANG | WNOWAIT) == 0 &&
+         info.si_pid == 0) {
     if (std::chrono::steady_clock::now() >= until) {
       ::kill(pid_, SIGKILL);
-      done = waitpid(pid_, &status, 0);
       break;
     }
     poll(nullptr, 0, 2);  // 2 ms
+  }
+  kill_group();
+  int status = 0;
+  pid_t done = 0;
+  while ((done = waitpid(pid_, &status, 0)) < 0 && errno == EINTR) {
   }
   std::string how;
   if (done < 0)

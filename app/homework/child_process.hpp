@@ -3,7 +3,9 @@
 // replies on the child's descriptor 3, each read with a deadline; the child's own standard output
 // and error go to a file, so nothing it prints can be mistaken for a reply. Limits set in the
 // child (memory, file size, CPU time) keep a runaway child from taking the machine with it.
-// When the child dies, how it died (a signal, an exit status) is said in words.
+// When the child dies, how it died (a signal, an exit status) is said in words. The child leads a
+// process group of its own, and the whole group is killed when the child ends or is given up:
+// nothing the child starts (a student's fork() in a step, the compiler's own programs) outlives it.
 #pragma once
 
 #include <sys/types.h>
@@ -39,6 +41,7 @@ class ChildProcess {
 
  private:
   void kill_now();
+  void kill_group();
 
   pid_t pid_ = -1;
   int to_child_ = -1, from_child_ = -1;

@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
+#include <thread>
 
 #include "cli/cli_support.hpp"
 
@@ -149,9 +150,11 @@ TEST(Homework, TheCorpusHasFifteenCorrectSolutionsAndAFileAMistake) {
     mistakes.insert(e.failed.begin(), e.failed.end());
   }
   EXPECT_GE(correct, 15);
-  for (const char* key : {"accel-twice", "gravity-no-mass", "gravity-times-step", "spacing-n",
-                          "reversed", "spring-not-in-rope", "pins-before-masses", "no-gravity",
-                          "nothing-built", "forces-kept", "damping-sign", "verlet-a-h"})
+  for (const char* key :
+       {"accel-twice", "gravity-no-mass", "gravity-times-step", "spacing-n", "reversed",
+        "spring-not-in-rope", "pins-before-masses", "no-gravity", "nothing-built", "forces-kept",
+        "damping-sign", "verlet-a-h", "velocity-not-stored", "spring-no-mass", "forces-assigned",
+        "verlet-half", "last-overwritten"})
     EXPECT_TRUE(mistakes.count(key)) << key;
 }
 
@@ -234,6 +237,44 @@ TEST(Homework, HeadersThatChangeWhatTheCheckerCallsAreSaid) {
   EXPECT_NE(missing.err.find("does not define what the checker calls"), std::string::npos)
       << missing.err;
   EXPECT_NE(missing.err.find("simulateVerlet"), std::string::npos) << missing.err;
+}
+
+// A step that starts a process of its own (one that ignores every signal it can) does not leave
+// it running: the runner's whole process group ends with it.
+TEST(Homework, NothingAStepStartsOutlivesTheCheck) {
+  TempDir dir;
+  const fs::path pids = dir / "pids";
+  std::string source = read_file(kHomework / "students" / "games101_typical.cpp");
+  const size_t verlet = source.find("void Rope::simulateVerlet(float delta_t, Vector2D gravity)");
+  ASSERT_NE(verlet, std::string::npos);
+  source.insert(source.find('{', verlet) + 1,
+                "\n  static bool forked = false;\n"
+                "  if (!forked && (forked = true) && fork() == 0) {\n"
+                "    sigset_t all;\n    sigfillset(&all);\n"
+                "    sigprocmask(SIG_BLOCK, &all, nullptr);\n"
+                "    FILE* f = std::fopen(\"" +
+                    pids.string() +
+                    "\", \"a\");\n"
+                    "    std::fprintf(f, \"%d\\n\", int(getpid()));\n    std::fclose(f);\n"
+                    "    sleep(60);\n    _exit(0);\n  }\n");
+  write_file(dir / "rope.cpp",
+             "#include <csignal>\n#include <cstdio>\n#include <unistd.h>\n" + source);
+  const Result r = check(dir.path.string());
+  EXPECT_EQ(r.status, 0) << r.out << r.err;
+  std::ifstream in(pids);
+  int count = 0;
+  for (int pid; in >> pid; ++count) {
+    // Gone, or a zombie waiting for its new parent: SIGKILL is sent, not waited for.
+    const fs::path stat = "/proc/" + std::to_string(pid) + "/stat";
+    bool running = true;
+    for (int tries = 0; tries < 100 && running; ++tries) {
+      const std::string text = fs::exists(stat) ? read_file(stat) : "";
+      running = !text.empty() && text.find(") Z") == std::string::npos;
+      if (running) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    EXPECT_FALSE(running) << "process " << pid << " started by simulateVerlet still runs";
+  }
+  EXPECT_GE(count, 1) << "the step's fork() did not run";
 }
 
 TEST(Homework, AMissingFileOrFolderIsBadInput) {

@@ -120,13 +120,34 @@ struct CheckSection {
 ///              it damps the rope's bending and spinning too;
 ///   verlet:    Verlet's factor d, on (x - x_last) (x1 = x + (1 - d)(x - x_last) + a h^2) or, with
 ///              `verlet_whole`, on the whole displacement (x1 = x + (1 - d)((x - x_last) + a h^2)).
+///   drag_step: Euler's drag as a factor a step, v = (1 - d) v whatever h (`drag` is then 0): a
+///              drag of rate d / h, which at_step() turns into for a step of h;
+///   drag_at:   where Euler's drag (or that factor) is taken: with the forces, v1 = v + (a - c v)
+///   h;
+///              from the new velocity, v1 = (1 - c h)(v + a h) (symplectic Euler's position then
+///              moves by it); or from it after the position has moved by the undamped one.
+enum class DragAt { Forces, NewVelocity, AfterPosition };
 struct Damping {
-  double drag = 0.0, along = 0.0, relative = 0.0, verlet = 0.0;
+  double drag = 0.0, along = 0.0, relative = 0.0, verlet = 0.0, drag_step = 0.0;
   bool drag_rate = false;
   bool verlet_whole = false;
-  /// The drag's force coefficient on a mass of `mass` kg: c, or c m for a rate.
+  DragAt drag_at = DragAt::Forces;
+  /// The drag's force coefficient on a mass of `mass` kg: c, or c m for a rate (drag_step:
+  /// at_step).
   double drag_on(double mass) const { return drag_rate ? drag * mass : drag; }
-  bool any() const { return drag != 0.0 || along != 0.0 || relative != 0.0 || verlet != 0.0; }
+  /// The same damping for a step of h: a factor a step as the rate it is there, d / h.
+  Damping at_step(double h) const {
+    Damping d = *this;
+    if (drag_step != 0.0) {
+      d.drag = drag_step / h;
+      d.drag_rate = true;
+      d.drag_step = 0.0;
+    }
+    return d;
+  }
+  bool any() const {
+    return drag != 0.0 || along != 0.0 || relative != 0.0 || verlet != 0.0 || drag_step != 0.0;
+  }
 };
 
 /// The damping in words, in the current language: "a global drag f = -c v, c = 0.01 N s/m; ...",

@@ -5,6 +5,9 @@
 //   EXPLICIT              simulateEuler is explicit Euler (correct too: the exercise asks for both)
 //   NO_DAMPING            neither step damps (correct)
 //   PRINTS                both steps print to standard output (correct: the checker's replies are elsewhere)
+//   FACTOR_BEFORE         Euler damped by a factor a step, v = (1 - d) v + a h (correct)
+//   FACTOR_NEW            v = (1 - d)(v + a h), then x += v h (correct)
+//   FACTOR_AFTER          v += a h, x += v h, then v *= 1 - d (correct)
 //   CONSTRAINTS           simulateVerlet holds the springs as constraints, CS 184's way (correct too)
 // The constructor:
 //   UNEVEN                masses spaced by i / num_nodes instead of i / (num_nodes - 1)
@@ -32,6 +35,11 @@
 //   VERLET_D_SWAPPED      Verlet's (x - x_last) times d instead of (1 - d)
 //   CONSTRAINT_NO_GRAVITY the constraint Verlet forgets gravity
 //   EULER_NO_DT           v += a, the step left out
+//   VELOCITY_NOT_STORED   Euler's new velocity kept in a local, never in the mass
+//   SPRING_NO_MASS        the spring force used as an acceleration (gravity and drag right)
+//   FORCES_ASSIGNED       forces = f in the springs' loop, not +=
+//   VERLET_HALF           Verlet's a h^2 / 2
+//   LAST_OVERWRITTEN      Verlet's last_position = position before x_next is computed
 // Failures of the code itself:
 //   CRASH                 simulateVerlet reads past the end of the masses
 //   ENDLESS               simulateVerlet loops forever
@@ -113,6 +121,11 @@ void spring_forces(vector<Spring*>& springs) {
 #ifdef WRONG_SIGN
     f = -f;
 #endif
+#ifdef FORCES_ASSIGNED
+    s->m1->forces = f;
+    s->m2->forces = -f;
+    continue;
+#endif
     s->m1->forces += f;
 #ifndef ONE_END
     s->m2->forces -= f;
@@ -153,9 +166,15 @@ void Rope::simulateEuler(float delta_t, Vector2D gravity) {
   spring_forces(springs);
   for (auto& m : masses) {
     if (moves(m)) {
+#ifdef SPRING_NO_MASS
+      Vector2D a = m->forces + gravity - kd * m->velocity / m->mass;
+#elif defined(FACTOR_BEFORE) || defined(FACTOR_NEW) || defined(FACTOR_AFTER)
+      Vector2D a = m->forces / m->mass + gravity;
+#else
       m->forces += weight(m, gravity, delta_t);
       m->forces += -kd * m->velocity;
       Vector2D a = m->forces / m->mass;
+#endif
 #if defined(EXPLICIT)
       m->position += m->velocity * delta_t;
       m->velocity += a * delta_t;
@@ -165,6 +184,19 @@ void Rope::simulateEuler(float delta_t, Vector2D gravity) {
 #elif defined(EULER_NO_DT)
       m->velocity += a;
       m->position += m->velocity * delta_t;
+#elif defined(VELOCITY_NOT_STORED)
+      Vector2D v = m->velocity + a * delta_t;
+      m->position += v * delta_t;
+#elif defined(FACTOR_BEFORE)
+      m->velocity = (1 - damping_factor) * m->velocity + a * delta_t;
+      m->position += m->velocity * delta_t;
+#elif defined(FACTOR_NEW)
+      m->velocity = (1 - damping_factor) * (m->velocity + a * delta_t);
+      m->position += m->velocity * delta_t;
+#elif defined(FACTOR_AFTER)
+      m->velocity += a * delta_t;
+      m->position += m->velocity * delta_t;
+      m->velocity *= 1 - damping_factor;
 #else
       m->velocity += a * delta_t;
       m->position += m->velocity * delta_t;
@@ -204,6 +236,8 @@ void Rope::simulateVerlet(float delta_t, Vector2D gravity) {
       Vector2D temp_position = m->position;
 #ifdef CONSTRAINT_NO_GRAVITY
       Vector2D a = m->forces / m->mass;
+#elif defined(SPRING_NO_MASS)
+      Vector2D a = m->forces + gravity;
 #else
       Vector2D a = m->forces / m->mass + weight(m, gravity, delta_t) / m->mass;
 #endif
@@ -211,8 +245,13 @@ void Rope::simulateVerlet(float delta_t, Vector2D gravity) {
 #ifdef DAMPING_PER_SPRING
       d = damping_factor * count[i];
 #endif
+#ifdef LAST_OVERWRITTEN
+      m->last_position = m->position;
+#endif
 #ifdef VERLET_A_H
       m->position = m->position + (1 - d) * (m->position - m->last_position) + a * delta_t;
+#elif defined(VERLET_HALF)
+      m->position = m->position + (1 - d) * (m->position - m->last_position) + 0.5 * a * delta_t * delta_t;
 #else
       m->position = m->position + (1 - d) * (m->position - m->last_position) + a * delta_t * delta_t;
 #endif

@@ -25,10 +25,10 @@ void check_one_step(Bench bench, Step step, Identified& found, CheckSection& sec
       return;
     }
     const Damping damping = probe_damping(bench, step, section);
-    probe_forces(bench, step, damping, section);
+    probe_forces(bench, step, damping.at_step(kProbeH), section);
     const bool probes_passed = !any_failed(section);
     found = identify(bench, step, damping, probes_passed, section);
-    if (found.method.empty()) {
+    if (found.method.empty() && probes_passed) {
       note(section, "not-measured",
            tr("order, stability and energy: not measured, since the step is none of the textbook "
               "methods"));

@@ -23,10 +23,13 @@ namespace {
 struct Motion {
   RopeState before, after;
   double mass = kProbeMass;  // each mass's, kg
+  double h = kProbeH;        // the step, s
 };
 
-Motion move(const Bench& bench, const BuiltRope& rope, Step step, const Vec2 velocity[3]) {
+Motion move(const Bench& bench, const BuiltRope& rope, Step step, const Vec2 velocity[3],
+            double h = kProbeH) {
   Motion m;
+  m.h = h;
   m.mass = rope.masses[0].mass;
   m.before = at_rest(rope);
   for (int i = 0; i < 3; ++i) {
@@ -35,15 +38,14 @@ Motion move(const Bench& bench, const BuiltRope& rope, Step step, const Vec2 vel
     else
       m.before[i].x_last = m.before[i].x - kProbeH * velocity[i];
   }
-  m.after = bench.run(m.before, step, kProbeH, Vec2::Zero(), 1).back();
+  m.after = bench.run(m.before, step, h, Vec2::Zero(), 1).back();
   return m;
 }
 
 // The force a motion's step implies on mass i, less what the same step gives masses at rest there
 // (`still`: the springs' own forces, whatever rule the code has for them), so damping alone.
 Vec2 force(const Motion& m, const Motion& still, int i) {
-  return m.mass * ((m.after[i].v - m.before[i].v) - (still.after[i].v - still.before[i].v)) /
-         kProbeH;
+  return m.mass * ((m.after[i].v - m.before[i].v) - (still.after[i].v - still.before[i].v)) / m.h;
 }
 
 // A coefficient worth naming: beyond rounding of the probe's own scale (m / h = 256 N s/m).
@@ -115,7 +117,14 @@ Damping verlet_damping(const Bench& bench, const BuiltRope& rope, CheckSection& 
                           "speeds the masses up (x_next = x + (1 - d)(x - x_last) + a h^2, with a "
                           "small d > 0)"),
                        num(1.0 - out.verlet).c_str()));
-    else if (out.verlet > 0.5)
+    else if (std::abs(1.0 - out.verlet) <= 1e-6 &&
+             (m.after[1].x_last - m.before[1].x).norm() <= 1e-12) {
+      fail(section, "last-overwritten",
+           tr("the step moves masses as if x - x_last were 0: last_position is set to position "
+              "before x_next is computed from it, so every step forgets the velocity (compute "
+              "x_next from the old last_position first, keeping position in temp_position, then "
+              "store temp_position in last_position)"));
+    } else if (out.verlet > 0.5)
       fail(section, "verlet-d-swapped",
            format_text(tr("(x - x_last) is multiplied by %s, so a mass keeps only that much of its "
                           "velocity each step: "
@@ -153,13 +162,28 @@ std::string damping_text(const Damping& d, Step step) {
   if (!d.any()) return tr("no damping");
   std::string t;
   auto add = [&t](const std::string& part) { t += (t.empty() ? "" : tr("; ")) + part; };
-  if (d.drag != 0.0 && d.drag_rate)
+  if (d.drag_step != 0.0)
+    add(format_text(tr("a global damping factor on the velocity, v = (1 - d) v each step, d = %s "
+                       "(a drag of rate d / h: halving h doubles the damping a second)"),
+                    num(d.drag_step).c_str()));
+  else if (d.drag != 0.0 && d.drag_rate)
     add(format_text(tr("a global drag on the velocity, a = f / m - c v, c = %s 1/s (the same rate "
                        "for any mass: a force "
                        "of c m v)"),
                     num(d.drag).c_str()));
   else if (d.drag != 0.0)
     add(format_text(tr("a global drag f = -c v, c = %s N s/m"), num(d.drag).c_str()));
+  // Where the drag is taken, in the symbols of its form: (1 - d) a step, or (1 - c h).
+  const bool factor = d.drag_step != 0.0;
+  // (Explicit Euler's position moves by the old velocity either way: there the two are one.)
+  if (d.drag_at == DragAt::NewVelocity && (d.drag != 0.0 || factor))
+    t += factor ? tr(", taken from the new velocity: v = (1 - d)(v + a h)")
+                : tr(", taken from the new velocity: v = (1 - c h)(v + a h)");
+  if (d.drag_at == DragAt::AfterPosition && (d.drag != 0.0 || factor))
+    t += factor ? tr(", taken from the new velocity after the position has moved by the undamped "
+                     "one: x += (v + a h) h, then v = (1 - d)(v + a h)")
+                : tr(", taken from the new velocity after the position has moved by the undamped "
+                     "one: x += (v + a h) h, then v = (1 - c h)(v + a h)");
   if (d.along != 0.0)
     add(format_text(tr("the lecture's spring damping, along the spring, f_b = -k_d ((v_b - v_a) . "
                        "u) u, k_d = %s N s/m"),
@@ -174,24 +198,36 @@ std::string damping_text(const Damping& d, Step step) {
 
 namespace {
 
+// The drag c (from f = -c u) that masses moving together feel in one step of h.
+double drag_felt(const Bench& bench, const BuiltRope& rope, double h) {
+  const Vec2 u(1.0, 0.5), zero = Vec2::Zero();
+  const Vec2 together[3] = {u, u, u}, none[3] = {zero, zero, zero};
+  const Motion t = move(bench, rope, Step::Euler, together, h),
+               still = move(bench, rope, Step::Euler, none, h);
+  return -force(t, still, 1).dot(u) / u.squaredNorm();
+}
+
 // The drag `drag` (c from f = -c u on the probe masses) measured again on masses four times
 // heavier (last: the code holds the rope built last): a drag written as an acceleration
 // (a -= c v) is four times the force there; as a force, the same. Whether it is the former.
 bool euler_drag_is_a_rate(const Bench& bench, double drag) {
-  const Vec2 u(1.0, 0.5), zero = Vec2::Zero();
-  const Vec2 together[3] = {u, u, u}, none[3] = {zero, zero, zero};
-  const BuiltRope heavy = bench.build(three_heavy_masses());
-  const Motion th = move(bench, heavy, Step::Euler, together),
-               sh = move(bench, heavy, Step::Euler, none);
-  const double c_heavy = -force(th, sh, 1).dot(u) / u.squaredNorm();
+  const double c_heavy = drag_felt(bench, bench.build(three_heavy_masses()), kProbeH);
   return std::abs(c_heavy - 4.0 * drag) <= 1e-3 * std::abs(4.0 * drag);
+}
+
+// Whether the drag `drag` (c at kProbeH) is a factor a step, v = (1 - d) v: at twice the step
+// such a drag takes the same d, so the force it implies, m d / h, is half as large; a drag written
+// with h (v -= c v h, or a force) is the same at any step.
+bool euler_drag_is_per_step(const Bench& bench, double drag) {
+  const double c_double = drag_felt(bench, bench.build(three_masses({})), 2.0 * kProbeH);
+  return std::abs(c_double - 0.5 * drag) <= 1e-3 * std::abs(0.5 * drag);
 }
 
 // The verdict on an even damping found: a wrong sign fails, none is a note, else it passes,
 // said in its forms (damping_text).
 void euler_damping_verdict(const Damping& out, CheckSection& section) {
   const std::string forms = damping_text(out, Step::Euler);
-  if (out.drag < 0.0 || out.along < 0.0 || out.relative < 0.0)
+  if (out.drag < 0.0 || out.drag_step < 0.0 || out.along < 0.0 || out.relative < 0.0)
     fail(section, "damping-sign",
          format_text(tr("the damping has the wrong sign: it pushes the masses along their motion "
                         "(%s: a damping "
@@ -278,6 +314,10 @@ Damping euler_damping(const Bench& bench, const BuiltRope& rope, CheckSection& s
   if (out.drag != 0.0 && !uneven && euler_drag_is_a_rate(bench, out.drag)) {
     out.drag /= kProbeMass;
     out.drag_rate = true;
+    if (euler_drag_is_per_step(bench, out.drag * kProbeMass)) {
+      out.drag_step = out.drag * kProbeH;  // d = c h
+      out.drag = 0.0;
+    }
   }
 
   if (uneven) return out;

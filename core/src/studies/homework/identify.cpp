@@ -35,7 +35,8 @@ Candidate measure(Method row, const Damping& damping, const Model& model,
     const double f = float_floor(model, damping, run[n], run[n + 1], h, velocities);
     c.worst = std::max(c.worst, d);
     c.floor = std::max(c.floor, f);
-    c.within_float = c.within_float && d <= std::max(kMatch, f);
+    // (A step whose motion cannot be measured, a velocity never changed, matches nothing.)
+    c.within_float = c.within_float && std::isfinite(d) && d <= std::max(kMatch, f);
   }
   return c;
 }
@@ -98,21 +99,30 @@ Identified identify(const Bench& bench, Step step, const Damping& damping, bool 
   const bool velocities = step == Step::Euler;
 
   // The damping's variants: none, and what the probes fitted (Verlet's on either part).
+  // Euler's drag (or factor a step) taken with the forces, from the new velocity, or from it
+  // after the position has moved.
   std::vector<Damping> variants{Damping{}};
   if (damping.any()) {
     variants.push_back(damping);
+    Damping other = damping;
     if (step == Step::Verlet) {
-      Damping whole = damping;
-      whole.verlet_whole = true;
-      variants.push_back(whole);
+      other.verlet_whole = true;
+      variants.push_back(other);
+    } else if (damping.drag != 0.0 || damping.drag_step != 0.0) {
+      for (DragAt at : {DragAt::NewVelocity, DragAt::AfterPosition}) {
+        other.drag_at = at;
+        variants.push_back(other);
+      }
     }
   }
   const std::vector<Method> rows = candidate_rows(step == Step::Verlet);
   Candidate best;
   for (Method row : rows)
     for (const Damping& d : variants) {
-      Model damped = built_model(rope, kCheckGravity, d);
-      const Candidate c = measure(row, d, damped, run, h, velocities);
+      const Damping here = d.at_step(h);
+      Model damped = built_model(rope, kCheckGravity, here);
+      Candidate c = measure(row, here, damped, run, h, velocities);
+      c.damping = d;
       // Within float's floor first, then the nearest.
       if (c.within_float != best.within_float ? c.within_float : c.worst < best.worst) best = c;
     }
@@ -125,7 +135,9 @@ Identified identify(const Bench& bench, Step step, const Damping& damping, bool 
       format_text(tr("%d steps of a %d-mass rope falling from rest at h = %s"), kCheckSteps,
                   static_cast<int>(rope.masses.size()), step_text(h).c_str());
   const std::string damped = damping_text(best.damping, step);
-  if (best.worst <= kMatch || best.within_float) {
+  // (A Verlet step that keeps none of the velocity, d = 1, is no row: last_position overwritten.)
+  const bool keeps_nothing = step == Step::Verlet && best.damping.verlet >= 1.0 - 1e-6;
+  if ((best.worst <= kMatch || best.within_float) && !keeps_nothing) {
     found.method = row.name;
     found.in_float = best.worst > kMatch;
     const std::string how =
@@ -154,8 +166,8 @@ Identified identify(const Bench& bench, Step step, const Damping& damping, bool 
     return found;
   }
   if (step == Step::Euler)
-    if (const std::optional<Explained> why =
-            explain(built_model(rope, kCheckGravity, damping), run, damping, h)) {
+    if (const std::optional<Explained> why = explain(
+            built_model(rope, kCheckGravity, damping.at_step(h)), run, damping.at_step(h), h)) {
       fail(section, why->key,
            format_text(tr("%s: %s (over %s)"), step_name(step), tr(why->says), where.c_str()));
       return found;

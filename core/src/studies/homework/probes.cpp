@@ -51,7 +51,10 @@ enum class Rule {
   NoRestLength,
   Twice,
   TimesStep,
-  OverStep
+  OverStep,
+  TimesMass,  // used as the acceleration: the force a step implies is m f
+  Assigned,   // forces = f, each spring's replacing what its ends had
+  Half        // Verlet's a h^2 / 2
 };
 
 std::vector<Vec2> spring_forces(const BuiltRope& rope, const RopeState& s, Rule rule) {
@@ -68,6 +71,13 @@ std::vector<Vec2> spring_forces(const BuiltRope& rope, const RopeState& s, Rule 
     if (rule == Rule::Twice) on_a *= 2.0;
     if (rule == Rule::TimesStep) on_a *= kProbeH;
     if (rule == Rule::OverStep) on_a /= kProbeH;
+    if (rule == Rule::TimesMass) on_a *= kProbeMass;
+    if (rule == Rule::Half) on_a *= 0.5;
+    if (rule == Rule::Assigned) {
+      f[spring.m1] = on_a;
+      f[spring.m2] = -on_a;
+      continue;
+    }
     if (rule != Rule::SecondEndOnly) f[spring.m1] += on_a;
     if (rule != Rule::FirstEndOnly) f[spring.m2] -= on_a;
   }
@@ -98,6 +108,16 @@ const Reading kReadings[] = {
     {Rule::OverStep, "euler-no-dt",
      N_("the velocity changes by a, not a h: the acceleration is not multiplied by delta_t (v += a "
         "delta_t)")},
+    {Rule::TimesMass, "spring-no-mass",
+     N_("the spring force is used as the acceleration without dividing it by the mass (a = f / m; "
+        "with the exercise's masses of 1 kg the slip does not show)")},
+    {Rule::Assigned, "forces-assigned",
+     N_("each spring's force replaces what its masses had (forces = f instead of forces += f): a "
+        "mass with two springs keeps only the last one's")},
+    {Rule::Half, "verlet-half",
+     N_("the acceleration moves a mass by a h^2 / 2, not a h^2: position Verlet is x_next = x + "
+        "(1 - d)(x - x_last) + a delta_t^2 (the 1/2 belongs to x + v h + a h^2 / 2, a step from a "
+        "velocity)")},
 };
 
 // Returns the rule the code's springs follow (Hooke's law when none of the readings fits).
@@ -116,6 +136,7 @@ Rule probe_springs(const Bench& bench, Step step, const Damping& damping, CheckS
   double best_gap = INFINITY;
   for (const Reading& r : kReadings) {
     if ((r.rule == Rule::TimesStep || r.rule == Rule::OverStep) && step != Step::Euler) continue;
+    if (r.rule == Rule::Half && step != Step::Verlet) continue;
     const double gap = relative_gap(got, spring_forces(rope, s, r.rule));
     if (gap < best_gap) best_gap = gap, best = &r;
   }
@@ -212,6 +233,9 @@ void probe_gravity(const Bench& bench, Step step, const Damping& damping, Rule r
        N_("gravity was multiplied by the mass where it is an acceleration (a = g, not m g)")},
       {kProbeH, "gravity-times-step",
        N_("gravity was multiplied by the step (its force is m g, not m g h)")},
+      {0.5, "verlet-half",
+       N_("gravity moves a mass by g h^2 / 2 in a step, not g h^2: position Verlet is x_next = x + "
+          "(1 - d)(x - x_last) + a delta_t^2")},
       {1.0 / kProbeH, "verlet-a-h",
        N_("gravity moves a mass by g h in a step, not g h^2: the acceleration is multiplied by "
           "delta_t "
@@ -231,9 +255,11 @@ void probe_gravity(const Bench& bench, Step step, const Damping& damping, Rule r
          format_text(tr("gravity: each free mass falls at g = %s m/s^2 (to %s)"), vec(g).c_str(),
                      num(std::abs(along - 1.0) + across).c_str()));
   else if (found && ((found->factor == kProbeH && rule == Rule::TimesStep) ||
-                     (found->factor == 1.0 / kProbeH && rule == Rule::OverStep)))
+                     (found->factor == 1.0 / kProbeH && rule == Rule::OverStep) ||
+                     (found->factor == 0.5 && rule == Rule::Half)))
     note(section, "gravity", tr("gravity: scaled with the springs' forces (above)"));
-  else if (found && !(found->factor == 1.0 / kProbeH && step == Step::Euler))
+  else if (found &&
+           !((found->factor == 1.0 / kProbeH || found->factor == 0.5) && step == Step::Euler))
     fail(section, found->key,
          format_text(tr("%s: a free mass falls at %s m/s^2 where g = %s"), tr(found->says),
                      vec(a).c_str(), vec(g).c_str()));
@@ -255,13 +281,28 @@ bool probe_moves(const Bench& bench, Step step, CheckSection& section) {
     m.v = Vec2(1.0, 0.5);
     m.x_last = m.x - kCheckStep * m.v;
   }
+  bool positions = false, velocities = false;  // under gravity from rest: what changed
   auto moved = [&](const RopeState& from, const Vec2& g) {
     const RopeState after = bench.run(from, step, kCheckStep, g, 1).back();
-    for (size_t i = 0; i < from.size(); ++i)
-      if (!(after[i].x == from[i].x) || !(after[i].v == from[i].v)) return true;
-    return false;
+    for (size_t i = 0; i < from.size(); ++i) {
+      positions = positions || !(after[i].x == from[i].x);
+      velocities = velocities || !(after[i].v == from[i].v);
+    }
+    return positions || velocities;
   };
-  if (moved(s, kCheckGravity) || moved(moving, Vec2::Zero())) return true;
+  if (moved(s, kCheckGravity)) {
+    // Every other probe reads the velocities a step leaves: one that never stores them is said
+    // alone (its forces would read as none, its row as none).
+    if (step == Step::Euler && positions && !velocities) {
+      fail(section, "velocity-not-stored",
+           tr("simulateEuler never stores the new velocity: under gravity the masses move, but "
+              "every mass's velocity is still what it was after the step (m->velocity += a "
+              "delta_t, or assign the new velocity to m->velocity)"));
+      return false;
+    }
+    return true;
+  }
+  if (moved(moving, Vec2::Zero())) return true;
   fail(section, "not-written",
        step == Step::Euler ? tr("simulateEuler moves nothing yet: after a step every mass is where "
                                 "it was, under gravity or moving. "

@@ -164,7 +164,15 @@ RopeState reference_step(Method method, const Model& model, const Damping& dampi
     ws.verlet_h = h;
   }
   const Points a_start = history ? ws.a_now : Points();
-  step(method, model, in, out, h, StepSettings{}, ws);
+  // A drag taken from the new velocity: the row's step without it, then v (1 - c h) below.
+  const bool drag_after = !history && damping.drag_at != DragAt::Forces && model.drag != 0.0;
+  if (drag_after) {
+    Model undragged = model;
+    undragged.drag = 0.0;
+    step(method, undragged, in, out, h, StepSettings{}, ws);
+  } else {
+    step(method, model, in, out, h, StepSettings{}, ws);
+  }
   RopeState next = state;
   for (int i = 0; i < n; ++i) {
     next[i].x = out.x.row(i).head<2>().transpose();
@@ -188,6 +196,17 @@ RopeState reference_step(Method method, const Model& model, const Damping& dampi
       next[i].v += cv * a;
     }
   }
+  // Before the position moves by it (symplectic Euler's x + h v1: the rest of the rows step x
+  // from the old velocity, or their own stages), or after.
+  const bool moves_by_it =
+      damping.drag_at == DragAt::NewVelocity && method == Method::SymplecticEuler;
+  if (drag_after)
+    for (int i = 0; i < n; ++i) {
+      if (model.pinned(i)) continue;
+      const Vec2 taken = model.drag * model.inv_mass[i] * h * next[i].v;
+      next[i].v -= taken;
+      if (moves_by_it) next[i].x -= h * taken;
+    }
   return next;
 }
 

@@ -65,6 +65,10 @@ nlohmann::json step_json(const Identified& found) {
   j["constraints"] = found.constraints;
   j["damping"] = {{"drag", found.damping.drag},
                   {"drag_is_rate", found.damping.drag_rate},
+                  {"drag_per_step", found.damping.drag_step},
+                  {"drag_taken", found.damping.drag_at == DragAt::Forces        ? "with_forces"
+                                 : found.damping.drag_at == DragAt::NewVelocity ? "new_velocity"
+                                                                                : "after_position"},
                   {"along_spring", found.damping.along},
                   {"relative_velocity", found.damping.relative},
                   {"verlet", found.damping.verlet},

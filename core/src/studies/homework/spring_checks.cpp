@@ -31,6 +31,10 @@ const double kTwoPi = 2.0 * std::acos(-1.0);
 
 struct Mode {
   double gamma = 0.0, d = 0.0;
+  // Euler's drag, apart from gamma's other forms: its rate (1/s), or a factor a step (a rate of
+  // per_step / h), taken with the forces or, `after`, from the velocity once the position moved.
+  double drag = 0.0, per_step = 0.0;
+  DragAt drag_at = DragAt::Forces;
   bool verlet_whole = false;  // d on the whole displacement, x + (1 - d)((x - x_last) + a h^2)
   Method row = Method::SymplecticEuler;
   bool velocity_verlet = false;
@@ -39,9 +43,10 @@ struct Mode {
 
 // The exact y(t) of y'' = -kappa (y - y_eq) - gamma y', let go at rest from y_eq + A.
 double exact_y(const Mode& m, double t) {
-  const double wd = std::sqrt(kKappa - 0.25 * m.gamma * m.gamma);
-  return kYeq + kA * std::exp(-0.5 * m.gamma * t) *
-                    (std::cos(wd * t) + 0.5 * m.gamma / wd * std::sin(wd * t));
+  const double gamma = m.gamma + m.drag;  // (a factor a step has no limit: not measured then)
+  const double wd = std::sqrt(kKappa - 0.25 * gamma * gamma);
+  return kYeq +
+         kA * std::exp(-0.5 * gamma * t) * (std::cos(wd * t) + 0.5 * gamma / wd * std::sin(wd * t));
 }
 
 std::complex<double> largest_root(double trace, double det) {
@@ -50,21 +55,31 @@ std::complex<double> largest_root(double trace, double det) {
   return std::abs(a) > std::abs(b) ? a : b;
 }
 
-// The row's amplification matrix on the mode at step h: its trace and determinant. The three
-// rows of the rope exercise in closed form; any other from springlab's own row, stepped from
-// (y, v) = (e, 0) and (0, e) on the spring without gravity (linear along its axis).
-void amplification(const Mode& m, double h, double& trace, double& det) {
-  const double kh2 = kKappa * h * h, gh = m.gamma * h;
+// The drag's share of the rate at step h.
+double drag_rate(const Mode& m, double h) {
+  return m.drag + m.per_step / h;
+}
+
+// The row's amplification matrix on the mode at step h. The three rows of the rope exercise in
+// closed form: on (y, v) explicit Euler [1, h; -k h, 1 - g h], symplectic Euler
+// [1 - k h^2, h (1 - g h); -k h, 1 - g h], on (y, y_last) Verlet [2 - d - k h^2, -(1 - d); 1, 0];
+// any other from springlab's own row, stepped from (y, v) = (e, 0) and (0, e) on the spring
+// without gravity (linear along its axis). A drag taken after the position moved scales the
+// velocity's row of the undragged matrix by 1 - c h.
+Eigen::Matrix2d amplification(const Mode& m, double h) {
+  const double kh2 = kKappa * h * h;
+  const bool later = m.drag_at != DragAt::Forces;
+  const double gh = (m.gamma + (later ? 0.0 : drag_rate(m, h))) * h;
+  Eigen::Matrix2d a;
   if (m.row == Method::Euler) {
-    trace = 2.0 - gh, det = 1.0 - gh + kh2;
+    a << 1.0, h, -kKappa * h, 1.0 - gh;
   } else if (m.row == Method::SymplecticEuler) {
-    trace = 2.0 - kh2 - gh, det = 1.0 - gh;
+    a << 1.0 - kh2, h * (1.0 - gh), -kKappa * h, 1.0 - gh;
   } else if (m.row == Method::Verlet && !m.velocity_verlet) {
-    trace = 2.0 - m.d - (m.verlet_whole ? 1.0 - m.d : 1.0) * kh2, det = 1.0 - m.d;
+    a << 2.0 - m.d - (m.verlet_whole ? 1.0 - m.d : 1.0) * kh2, -(1.0 - m.d), 1.0, 0.0;
   } else {
-    const Model model = rope_model(hanging_spring(), Vec2::Zero(), Damping{m.gamma * kMass});
+    const Model model = rope_model(hanging_spring(), Vec2::Zero(), Damping{gh / h * kMass});
     const double e = 1e-3 * kRest;
-    Eigen::Matrix2d a;
     for (int column = 0; column < 2; ++column) {
       State s;
       s.resize(2);
@@ -76,8 +91,38 @@ void amplification(const Mode& m, double h, double& trace, double& det) {
       a(0, column) = (next.x(1, 1) + kRest) / e;
       a(1, column) = next.v(1, 1) / e;
     }
-    trace = a.trace(), det = a.determinant();
   }
+  if (later) {
+    a.row(1) *= 1.0 - drag_rate(m, h) * h;
+    // Symplectic Euler's position moves by the damped velocity: y1 = y + h v1.
+    if (m.drag_at == DragAt::NewVelocity && m.row == Method::SymplecticEuler)
+      a.row(0) = Eigen::RowVector2d(1.0, 0.0) + h * a.row(1);
+  }
+  return a;
+}
+
+void amplification(const Mode& m, double h, double& trace, double& det) {
+  const Eigen::Matrix2d a = amplification(m, h);
+  trace = a.trace(), det = a.determinant();
+}
+
+// The largest step at which the mode's amplification has no root beyond 1, by bisection: for a
+// drag that depends on h (a factor a step) or is taken after the position moved, where springlab's
+// limit (mode_limit: a fixed rate, with the forces) does not say it.
+double limit_by_roots(const Mode& m) {
+  const auto grows = [&](double h) {
+    double trace, det;
+    amplification(m, h, trace, det);
+    return std::abs(largest_root(trace, det)) > 1.0 + 1e-12;
+  };
+  double lo = 1e-9, hi = 1.0;
+  while (!grows(hi) && hi < 1e3) hi *= 2.0;
+  if (!grows(hi)) return 0.0;  // (never: the spring's k h^2 outgrows every damping)
+  for (int k = 0; k < 80; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (grows(mid) ? hi : lo) = mid;
+  }
+  return lo;
 }
 
 std::string precise(double factor) {
@@ -110,7 +155,7 @@ namespace {
 
 void check_order(const SwingRunner& swing, const Mode& mode, CheckSection& section) {
   const int expected = method_info(mode.row).order;
-  if (mode.row == Method::Verlet && mode.d != 0.0) {
+  if ((mode.row == Method::Verlet && mode.d != 0.0) || mode.per_step != 0.0) {
     note(section, "order",
          tr("order: not measured: a damping factor d a step has no limit as h -> 0 (at a fixed d, "
             "halving h doubles the "
@@ -139,8 +184,12 @@ void check_order(const SwingRunner& swing, const Mode& mode, CheckSection& secti
 void check_stability(const SwingRunner& swing, const Mode& mode, CheckSection& section) {
   // Verlet's factor on the whole displacement scales a h^2 by (1 - d): its limit is 1 / sqrt(1 - d)
   // wider.
-  const double limit = mode_limit(mode.row, mode.gamma, kKappa, {.verlet_damping = mode.d}) /
-                       (mode.verlet_whole ? std::sqrt(1.0 - mode.d) : 1.0);
+  const bool by_roots =
+      mode.per_step != 0.0 || (mode.drag_at != DragAt::Forces && mode.drag != 0.0);
+  const double limit =
+      by_roots ? limit_by_roots(mode)
+               : mode_limit(mode.row, mode.gamma + mode.drag, kKappa, {.verlet_damping = mode.d}) /
+                     (mode.verlet_whole ? std::sqrt(1.0 - mode.d) : 1.0);
   const char* label = tr(method_info(mode.row).label);
   if (limit == 0.0) {
     note(section, "stability",
@@ -156,7 +205,11 @@ void check_stability(const SwingRunner& swing, const Mode& mode, CheckSection& s
   const double growth = std::abs(largest_root(trace, det));
   const double needed = std::log(1e3) / std::log(growth);  // steps for the swing to grow 1000 times
   const std::string stated =
-      format_text(tr("springlab's limit for %s here: h = %s s"), label, num(limit).c_str());
+      by_roots
+          ? format_text(tr("the limit of %s with this damping here, where its step's "
+                           "amplification first has a root beyond 1: h = %s s"),
+                        label, num(limit).c_str())
+          : format_text(tr("springlab's limit for %s here: h = %s s"), label, num(limit).c_str());
   if (!(needed <= 20000)) {
     note(section, "stability",
          format_text(tr("stability: %s; at 1.1 of it the swing grows only x%s a step, too slowly "
@@ -219,10 +272,11 @@ void check_energy(const SwingRunner& swing, const Mode& mode, CheckSection& sect
   std::string text =
       format_text(tr(verdict), precise(measured).c_str(), tr(method_info(mode.row).label), says,
                   precise(det).c_str(), num(last / first).c_str());
-  if (mode.row == Method::Verlet && mode.d != 0.0)
+  const double loss = mode.row == Method::Verlet ? mode.d : mode.per_step;
+  if (loss != 0.0 && (mode.row == Method::Verlet || mode.per_step != 0.0))
     text += format_text(tr("; d is a step's loss, so it takes %s %% of the energy a second at this "
                            "h and about twice that at h/2"),
-                        num(100.0 * (1.0 - std::pow(1.0 - mode.d, 1.0 / h))).c_str());
+                        num(100.0 * (1.0 - std::pow(1.0 - loss, 1.0 / h))).c_str());
   const bool as_predicted =
       std::isfinite(log_gap) && log_gap <= 2e-6 + 0.02 * std::abs(std::log(det));
   if (!as_predicted)
@@ -247,8 +301,8 @@ void check_on_a_spring(const SwingRunner& run, const Identified& found, CheckSec
             "methods"));
     return;
   }
-  if (found.damping.drag < 0.0 || found.damping.along < 0.0 || found.damping.relative < 0.0 ||
-      found.damping.verlet < 0.0) {
+  if (found.damping.drag < 0.0 || found.damping.drag_step < 0.0 || found.damping.along < 0.0 ||
+      found.damping.relative < 0.0 || found.damping.verlet < 0.0) {
     note(section, "not-measured",
          tr("order, stability and energy: not measured while the damping has the wrong sign "
             "(above): it feeds the "
@@ -257,9 +311,12 @@ void check_on_a_spring(const SwingRunner& run, const Identified& found, CheckSec
   }
   Mode mode;
   mode.row = *find_method(found.method);
-  // On the hanging spring every damping form acts along the spring: one rate gamma = (c + k_d) / m.
-  mode.gamma =
-      (found.damping.drag_on(kMass) + found.damping.along + found.damping.relative) / kMass;
+  // On the hanging spring every damping form acts along the spring: one rate (c + k_d) / m, the
+  // drag's share apart (drag, per_step), as it may depend on h or come after the position moved.
+  mode.gamma = (found.damping.along + found.damping.relative) / kMass;
+  mode.drag = found.damping.drag_on(kMass) / kMass;
+  mode.per_step = found.damping.drag_step;
+  mode.drag_at = found.damping.drag_at;
   mode.d = found.damping.verlet;
   mode.verlet_whole = found.damping.verlet_whole;
   mode.velocity_verlet = found.velocity_verlet;
