@@ -13,6 +13,8 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "springlab/text.hpp"
+
 namespace springlab::app {
 
 namespace {
@@ -164,14 +166,14 @@ std::string ChildProcess::wait(std::chrono::milliseconds grace) {
   }
   std::string how;
   if (done < 0)
-    how = "could not be waited for";
+    how = tr("could not be waited for");
   else if (WIFSIGNALED(status)) {
     const int sig = WTERMSIG(status);
-    how = "was killed by signal " + std::to_string(sig) + " (" + strsignal(sig) + ")";
-    if (sig == SIGXCPU) how += ": it ran past its CPU time";
-    if (sig == SIGXFSZ) how += ": it wrote more than 64 MiB of output";
+    how = format_text(tr("was killed by signal %d (%s)"), sig, strsignal(sig));
+    if (sig == SIGXCPU) how += tr(": it ran past its CPU time");
+    if (sig == SIGXFSZ) how += tr(": it wrote more than 64 MiB of output");
   } else if (WIFEXITED(status) && WEXITSTATUS(status) != 0)
-    how = "exited with status " + std::to_string(WEXITSTATUS(status));
+    how = format_text(tr("exited with status %d"), WEXITSTATUS(status));
   ended_ = how;
   return how;
 }

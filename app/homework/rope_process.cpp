@@ -6,6 +6,8 @@
 #include <optional>
 #include <sstream>
 
+#include "springlab/text.hpp"
+
 namespace springlab::app {
 
 using namespace homework;
@@ -18,17 +20,30 @@ std::string hex(double v) {
   return text;
 }
 
-// "0.5 s", "3 s": a limit as the report writes it.
-std::string step_text_seconds(std::chrono::milliseconds limit) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g s", static_cast<double>(limit.count()) / 1000.0);
-  return text;
-}
-
 double number(std::istringstream& in) {
   std::string word;
   in >> word;
   return std::strtod(word.c_str(), nullptr);
+}
+
+// What the runner could not go on with (runner.cpp's Fault), in words.
+std::string fault_text(const std::string& fault) {
+  std::istringstream in(fault);
+  std::string kind;
+  in >> kind;
+  if (kind == "null-mass") {
+    int i = -1;
+    in >> i;
+    return format_text(tr("left masses[%d] a null pointer (push_back a new Mass for each node)"),
+                       i);
+  }
+  if (kind == "no-exercise-constructors")
+    return tr(
+        "springlab cannot build its own rope with these headers: the exercise's "
+        "Rope(vector<Mass *> &, vector<Spring *> &), Mass(Vector2D, float, bool) and "
+        "Spring(Mass *, Mass *, float) are needed");
+  if (kind == "no-rope") return tr("was asked to step before a rope was built");
+  return fault;
 }
 
 MassState parse_state(std::istringstream& in) {
@@ -60,18 +75,15 @@ void RopeProcess::failed(const std::string& doing, const std::string& error,
                          const std::string& fault) {
   std::string what;
   if (!fault.empty())
-    what = doing + " " + fault;
+    what = doing + " " + fault_text(fault);
   else if (!error.empty())
-    what = doing + " threw an exception: " + error;
+    what = threw_text(doing, error);
   else if (child_ && child_->timed_out())
-    what = doing + " did not return within " + step_text_seconds(limit_) +
-           " and was stopped (an endless loop?)";
-  else {
-    const std::string how = child_ ? child_->wait() : "";
-    what = doing + (how.empty() ? " ended the program" : " " + how);
-  }
+    what = timed_out_text(doing, static_cast<double>(limit_.count()) / 1000.0);
+  else
+    what = ended_text(doing, child_ ? child_->wait() : "");
   const std::string printed = last_lines(output_, 3);
-  if (!printed.empty()) what += "; it printed: " + printed;
+  if (!printed.empty()) what += printed_text(printed);
   child_.reset();  // the next call starts afresh
   throw CodeFailure(what);
 }
@@ -81,17 +93,18 @@ std::string RopeProcess::next(const std::string& doing,
   std::optional<std::string> line = child_->read_line(deadline);
   if (!line) failed(doing);
   if (line->rfind("error ", 0) == 0) failed(doing, line->substr(6));
+  if (*line == "error") failed(doing, tr("an exception that is not a std::exception"));
   if (line->rfind("fault ", 0) == 0) failed(doing, {}, line->substr(6));
   return *line;
 }
 
 BuiltRope RopeProcess::build(const RopeRequest& r) {
-  return construct("build",
-                   "the constructor, Rope(..., " + std::to_string(r.nodes) + " nodes, ...),", r);
+  return construct("build", format_text(tr("the constructor, Rope(..., %d nodes, ...),"), r.nodes),
+                   r);
 }
 
 BuiltRope RopeProcess::build_exercise(const RopeRequest& r) {
-  return construct("make", "building springlab's rope through Rope(masses, springs)", r);
+  return construct("make", tr("building springlab's rope through Rope(masses, springs)"), r);
 }
 
 BuiltRope RopeProcess::construct(const std::string& verb, const std::string& doing,
@@ -140,8 +153,9 @@ void RopeProcess::set_state(const RopeState& state) {
     command += "\n" + hex(m.x.x()) + " " + hex(m.x.y()) + " " + hex(m.x_last.x()) + " " +
                hex(m.x_last.y()) + " " + hex(m.v.x()) + " " + hex(m.v.y()) + " " + hex(m.f.x()) +
                " " + hex(m.f.y());
-  if (!child().write_line(command)) failed("setting the masses' state");
-  next("setting the masses' state", std::chrono::steady_clock::now() + limit_);
+  const std::string doing = tr("setting the masses' state");
+  if (!child().write_line(command)) failed(doing);
+  next(doing, std::chrono::steady_clock::now() + limit_);
 }
 
 std::vector<RopeState> RopeProcess::simulate(Step step, double dt, const Vec2& gravity, int steps) {
@@ -155,8 +169,7 @@ std::vector<RopeState> RopeProcess::simulate(Step step, double dt, const Vec2& g
       std::chrono::steady_clock::now() + limit_ + std::chrono::microseconds(200) * steps;
   std::vector<RopeState> states;
   for (int n = 1; n <= steps; ++n) {
-    const std::string doing = name + " (step " + std::to_string(n) + " of " +
-                              std::to_string(steps) + ", h = " + step_text(dt) + ")";
+    const std::string doing = call_text(step, n, steps, dt);
     next(doing, deadline);  // state n
     RopeState s;
     for (int i = 0; i < masses_; ++i) {

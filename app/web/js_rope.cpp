@@ -98,15 +98,10 @@ std::vector<RopeState> JsRope::simulate(Step step, double dt, const Vec2& gravit
       &std::free);
   if (error) {
     const std::string what = error.get();
-    const std::string call = format_text("%s (step %d of %d, h = %s)", step_name(step),
-                                         failed_at + 1, steps, step_text(dt).c_str());
-    // (worded as the desktop's runner words them: homework/rope_process.cpp)
-    if (what == "time")
-      throw CodeFailure(
-          format_text("%s did not return within %.3g s and was stopped (an endless loop?)",
-                      call.c_str(), ms / 1000.0));
+    const std::string call = call_text(step, failed_at + 1, steps, dt);
+    if (what == "time") throw CodeFailure(timed_out_text(call, ms / 1000.0));
     if (what.starts_with("it ")) throw CodeFailure(call + ": " + what);
-    throw CodeFailure(call + " threw an exception: " + what);
+    throw CodeFailure(threw_text(call, what));
   }
   std::vector<RopeState> states(steps, RopeState(masses_));
   for (int n = 0; n < steps; ++n)

@@ -72,6 +72,16 @@ struct CodeFailure : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// A CodeFailure's words, the same wherever the code runs (a child process, the browser), in the
+/// current language: the call, "simulateEuler (step 3 of 128, h = 1/128 s)", then what it did.
+std::string call_text(Step step, int step_number, int steps, double h);
+std::string threw_text(const std::string& call, const std::string& what);
+std::string timed_out_text(const std::string& call, double seconds);
+/// `how` it ended ("was killed by signal 11 (...)"); empty: it ended the program itself.
+std::string ended_text(const std::string& call, const std::string& how);
+/// "; it printed: ..." after any of them, where the code printed something.
+std::string printed_text(const std::string& printed);
+
 /// The student's code, wherever it runs. Every call may throw CodeFailure.
 class RopeCode {
  public:

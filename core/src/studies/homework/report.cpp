@@ -32,6 +32,28 @@ std::pair<std::string, std::string> apart(const Vec2& a, const Vec2& b) {
   return {vec(a), vec(b)};
 }
 
+std::string call_text(Step step, int step_number, int steps, double h) {
+  return format_text(tr("%s (step %d of %d, h = %s)"), step_name(step), step_number, steps,
+                     step_text(h).c_str());
+}
+
+std::string threw_text(const std::string& call, const std::string& what) {
+  return format_text(tr("%s threw an exception: %s"), call.c_str(), what.c_str());
+}
+
+std::string timed_out_text(const std::string& call, double seconds) {
+  return format_text(tr("%s did not return within %s s and was stopped (an endless loop?)"),
+                     call.c_str(), format_text("%.3g", seconds).c_str());
+}
+
+std::string ended_text(const std::string& call, const std::string& how) {
+  return how.empty() ? format_text(tr("%s ended the program"), call.c_str()) : call + " " + how;
+}
+
+std::string printed_text(const std::string& printed) {
+  return format_text(tr("; it printed: %s"), printed.c_str());
+}
+
 std::string step_text(double h) {
   const double inverse = 1.0 / h;
   if (inverse >= 2.0 && inverse == std::round(inverse) && inverse < 1e9)
