@@ -24,11 +24,12 @@ std::string identified(const char* step, const Identified& found) {
 }
 
 // The row beside a lane of one's own, with the student's damping: an Euler row takes the drag and
-// the spring damping (along the spring, springlab's only form), a Verlet row the factor d.
-BesideRow beside_row(Method like, Step step, const Identified& found, double node_mass) {
+// the spring damping (along the spring, springlab's only form), a Verlet row the factor d. A drag
+// written as a factor a step is the drag it is at the session's step h.
+BesideRow beside_row(Method like, Step step, const Identified& found, double node_mass, double h) {
   BesideRow row;
   row.method = like;
-  const Damping& d = found.damping;
+  const Damping d = found.damping.at_step(h);
   row.drag = step == Step::Euler ? d.drag_on(node_mass) : 0.0;
   row.kd = step == Step::Euler ? d.along + d.relative : 0.0;
   row.verlet_damping = step == Step::Verlet ? d.verlet : 0.0;
@@ -76,13 +77,19 @@ void HomeworkLanes::install(Session& session, ui::HomeworkStatus& status) {
     if (known) like = method_info(*find_method(found.method)).id;
     own.push_back({rope_lane_step(make_(), step, r.springlab_rope), label, like, known});
     const Model& model = session.scene().model;
-    beside.push_back(beside_row(like, step, found, model.mass.empty() ? 0.0 : model.mass[0]));
+    const double h = session.primary().sim.h();
+    beside.push_back(beside_row(like, step, found, model.mass.empty() ? 0.0 : model.mass[0], h));
     status.lines.push_back(identified(step_name(step), found));
     status.lines.push_back("  " + row_words(beside.back()));
     if (step == Step::Euler && found.damping.relative != 0.0)
       status.lines.push_back(
           tr("  (its k_d is your damping along the relative velocity, run along the spring: yours "
              "also damps the rope's bending, the row's does not)"));
+    if (step == Step::Euler && found.damping.drag_step != 0.0)
+      status.lines.push_back(format_text(
+          tr("  (your damping is a factor a step, d = %s: the row's drag is its rate at h = %s, "
+             "d m / h; at another h yours damps more or less a second, the row's the same)"),
+          format_text("%.3g", found.damping.drag_step).c_str(), step_text(h).c_str()));
     if (step == Step::Verlet && found.damping.verlet_whole)
       status.lines.push_back(
           tr("  (the row takes d on (x - x_last); yours takes it on the whole displacement, a "

@@ -157,9 +157,22 @@ std::string first_error(const std::string& compiler_output) {
 
 fs::path find_rope_source(const fs::path& path) {
   std::error_code ec;
-  if (fs::is_regular_file(path, ec)) return path;
+  if (fs::is_regular_file(path, ec)) {
+    const std::string ext = path.extension().string();
+    if (ext == ".h" || ext == ".hpp" || ext == ".hh")
+      throw InputError(path.string() + " is a header: give your rope.cpp (its headers beside it " +
+                       "are used with it), or the folder that holds it");
+    return path;
+  }
   if (fs::is_directory(path, ec)) {
-    for (const fs::path& candidate : {path / "rope.cpp", path / "src" / "rope.cpp"})
+    // A rope.cpp at the top and another in its src folder, not the same: which one is the work is
+    // not ours to guess.
+    const fs::path top = path / "rope.cpp", src = path / "src" / "rope.cpp";
+    if (fs::is_regular_file(top, ec) && fs::is_regular_file(src, ec) &&
+        read_text(top) != read_text(src))
+      throw InputError("two different rope.cpp: " + top.string() + " and " + src.string() +
+                       " (give the path to the one to check)");
+    for (const fs::path& candidate : {top, src})
       if (fs::is_regular_file(candidate, ec)) return candidate;
     throw InputError("no rope.cpp in " + path.string() + " nor in " + (path / "src").string() +
                      " (give the path to your rope.cpp, or the folder that holds it)");

@@ -112,7 +112,10 @@ TEST_P(Solutions, AreClassifiedAsACarefulReaderWould) {
   for (const std::string& text : e.err)
     EXPECT_NE(r.err.find(text), std::string::npos) << text << "\n" << r.err;
   if (e.exit == 2) {
-    EXPECT_EQ(r.out, "");
+    // The same sentence on standard output, as JSON, for a grader that reads only that.
+    const nlohmann::json bad = nlohmann::json::parse(r.out);
+    EXPECT_TRUE(bad["bad_input"].get<bool>());
+    EXPECT_EQ("springlab: " + bad["error"].get<std::string>() + "\n", r.err);
     return;
   }
   const nlohmann::json report = nlohmann::json::parse(r.out);
@@ -275,6 +278,26 @@ TEST(Homework, NothingAStepStartsOutlivesTheCheck) {
     EXPECT_FALSE(running) << "process " << pid << " started by simulateVerlet still runs";
   }
   EXPECT_GE(count, 1) << "the step's fork() did not run";
+}
+
+// A header given for rope.cpp, and a folder with two different rope.cpp: said, not guessed.
+TEST(Homework, AHeaderOrTwoRopesAreBadInput) {
+  TempDir dir;
+  fs::create_directory(dir / "header");
+  write_file(dir / "header" / "rope.h", "#pragma once\n");
+  const Result header = check((dir / "header" / "rope.h").string());
+  EXPECT_EQ(header.status, 2);
+  EXPECT_NE(header.err.find("rope.h is a header: give your rope.cpp"), std::string::npos)
+      << header.err;
+  const std::string source = read_file(kHomework / "students" / "games101_typical.cpp");
+  write_file(dir / "rope.cpp", source);
+  fs::create_directory(dir / "src");
+  write_file(dir / "src" / "rope.cpp", source + "\n// a later version\n");
+  const Result two = check(dir.path.string());
+  EXPECT_EQ(two.status, 2);
+  EXPECT_NE(two.err.find("two different rope.cpp"), std::string::npos) << two.err;
+  write_file(dir / "src" / "rope.cpp", source);  // a copy: either is the work
+  EXPECT_EQ(check(dir.path.string()).status, 0);
 }
 
 TEST(Homework, AMissingFileOrFolderIsBadInput) {
