@@ -86,6 +86,43 @@ std::string rows_text(const std::vector<Method>& rows) {
   return names;
 }
 
+// The damping's variants: none, and what the probes fitted (Verlet's on either part). Euler's
+// drag (or factor a step) taken with the forces, from the new velocity, or from it after the
+// position has moved.
+std::vector<Damping> damping_variants(Step step, const Damping& damping) {
+  std::vector<Damping> variants{Damping{}};
+  if (!damping.any()) return variants;
+  variants.push_back(damping);
+  Damping other = damping;
+  if (step == Step::Verlet) {
+    other.verlet_whole = true;
+    variants.push_back(other);
+  } else if (damping.drag != 0.0 || damping.drag_step != 0.0) {
+    for (DragAt at : {DragAt::NewVelocity, DragAt::AfterPosition}) {
+      other.drag_at = at;
+      variants.push_back(other);
+    }
+  }
+  return variants;
+}
+
+// The row and damping variant nearest the code's run: within float's floor first, then the
+// nearest (its damping as fitted, a factor a step not yet turned into its rate at h).
+Candidate nearest_row(const std::vector<Method>& rows, const std::vector<Damping>& variants,
+                      const BuiltRope& rope, const std::vector<RopeState>& run, bool velocities) {
+  const double h = kCheckStep;
+  Candidate best;
+  for (Method row : rows)
+    for (const Damping& d : variants) {
+      const Damping here = d.at_step(h);
+      Model damped = built_model(rope, kCheckGravity, here);
+      Candidate c = measure(row, here, damped, run, h, velocities);
+      c.damping = d;
+      if (c.within_float != best.within_float ? c.within_float : c.worst < best.worst) best = c;
+    }
+  return best;
+}
+
 }  // namespace
 
 Identified identify(const Bench& bench, Step step, const Damping& damping, bool judged,
@@ -98,34 +135,8 @@ Identified identify(const Bench& bench, Step step, const Damping& damping, bool 
   run.insert(run.begin(), start);
   const bool velocities = step == Step::Euler;
 
-  // The damping's variants: none, and what the probes fitted (Verlet's on either part).
-  // Euler's drag (or factor a step) taken with the forces, from the new velocity, or from it
-  // after the position has moved.
-  std::vector<Damping> variants{Damping{}};
-  if (damping.any()) {
-    variants.push_back(damping);
-    Damping other = damping;
-    if (step == Step::Verlet) {
-      other.verlet_whole = true;
-      variants.push_back(other);
-    } else if (damping.drag != 0.0 || damping.drag_step != 0.0) {
-      for (DragAt at : {DragAt::NewVelocity, DragAt::AfterPosition}) {
-        other.drag_at = at;
-        variants.push_back(other);
-      }
-    }
-  }
   const std::vector<Method> rows = candidate_rows(step == Step::Verlet);
-  Candidate best;
-  for (Method row : rows)
-    for (const Damping& d : variants) {
-      const Damping here = d.at_step(h);
-      Model damped = built_model(rope, kCheckGravity, here);
-      Candidate c = measure(row, here, damped, run, h, velocities);
-      c.damping = d;
-      // Within float's floor first, then the nearest.
-      if (c.within_float != best.within_float ? c.within_float : c.worst < best.worst) best = c;
-    }
+  const Candidate best = nearest_row(rows, damping_variants(step, damping), rope, run, velocities);
   const MethodInfo& row = method_info(best.row);
   Identified found;
   found.damping = best.damping;
