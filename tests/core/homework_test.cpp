@@ -89,6 +89,39 @@ TEST(Homework, TheEnergyRateIsTheRowsOwn) {
   EXPECT_NE(verlet.find("energy holds"), std::string::npos) << verlet;
 }
 
+// A global damping written as a factor a step, as students write it: v = (1 - d) v + a h, then
+// x += v h; v = (1 - d)(v + a h), then x += v h; or x += (v + a h) h, then v = (1 - d)(v + a h).
+// Each is symplectic Euler with that factor, named as one (it implies half the rate at 2h), its
+// order not measured (no limit as h -> 0) and its energy's rate 1 - d.
+TEST(Homework, ADampingFactorAStepIsNamedInEachPlaceItIsTaken) {
+  constexpr double d = 5e-5;
+  const OwnStep before = [](const Model& m, const State& in, State& out, double h, Workspace& ws) {
+    out.v = (1.0 - d) * in.v + h * accel(m, in.x, in.v, ws);
+    out.x = in.x + h * out.v;
+  };
+  const OwnStep on_new = [](const Model& m, const State& in, State& out, double h, Workspace& ws) {
+    out.v = (1.0 - d) * (in.v + h * accel(m, in.x, in.v, ws));
+    out.x = in.x + h * out.v;
+  };
+  const OwnStep after = [](const Model& m, const State& in, State& out, double h, Workspace& ws) {
+    const Points v = in.v + h * accel(m, in.x, in.v, ws);
+    out.x = in.x + h * v;
+    out.v = (1.0 - d) * v;
+  };
+  for (const auto& [step, at] : {std::pair{&before, homework::DragAt::Forces},
+                                 std::pair{&on_new, homework::DragAt::NewVelocity},
+                                 std::pair{&after, homework::DragAt::AfterPosition}}) {
+    const Report r = homework::check_step(*step, "fn");
+    const std::string t = text(r);
+    EXPECT_EQ(r.euler.method, "symplectic-euler") << t;
+    EXPECT_NEAR(r.euler.damping.drag_step, d, 1e-9) << t;
+    EXPECT_EQ(r.euler.damping.drag_at, at) << t;
+    EXPECT_EQ(r.failed(), 0) << t;
+    EXPECT_NE(t.find("order: not measured"), std::string::npos) << t;
+    EXPECT_NE(t.find("= 0.999950000"), std::string::npos) << t;  // 1 - d, the energy's rate
+  }
+}
+
 TEST(Homework, AStepOfNoTextbookIsNeverNamed) {
   const Report r = homework::check_step(kMadeUp, "fn");
   EXPECT_EQ(r.euler.method, "") << text(r);

@@ -64,6 +64,22 @@ double fit_drag(const Model& undamped, const std::vector<State>& run, double h) 
   return std::abs(c) > 1e-9 ? c : 0.0;
 }
 
+// The drag rate one step of h takes from the rope's particles all moving at u = (1, 0.5) m/s with
+// no gravity, its springs at rest length (no force acts: only damping changes a velocity), read on
+// the middle particle: c from v1 = (1 - c h) u. A factor a step, v = (1 - d) v, reads d / h.
+double drag_felt(const OwnStep& step, const RopeRequest& rope, double h) {
+  const Model still = rope_model(rope, Vec2::Zero());
+  State s = rope_at_rest(rope);
+  const Vec2 u(1.0, 0.5);
+  for (int i = 0; i < rope.nodes; ++i)
+    if (!still.pinned(i)) s.v.row(i).head<2>() = u.transpose();
+  Workspace ws;
+  const State next = own_step(step, still, s, h, ws);
+  const int middle = rope.nodes / 2;
+  const Vec2 v1 = next.v.row(middle).head<2>().transpose();
+  return -(v1 - u).dot(u) / (h * u.squaredNorm());
+}
+
 // The pin: the pinned particle (0) must stay where it started over the whole run.
 void check_own_pin(const std::vector<State>& run, CheckSection& section) {
   double pin = 0.0;
@@ -90,12 +106,16 @@ Identified nearest_own_row(const std::vector<State>& run, const RopeRequest& rop
   best.deviation = std::numeric_limits<double>::infinity();
   for (Method row : rows)
     for (const Damping& d : variants) {
-      Model damped = rope_model(rope, kCheckGravity, d);
+      Model damped = rope_model(rope, kCheckGravity, d.at_step(h));
       double worst = 0.0, floor = 0.0;
       bool within = true;
       for (size_t n = 0; n + 1 < run.size(); ++n) {
         const RopeState before = as_rope_state(run[n]), after = as_rope_state(run[n + 1]);
-        const RopeState reference = as_rope_state(reference_step(row, damped, run[n], h));
+        // (A drag taken from the new velocity: the rope's reference step, which takes it so; the
+        // rows with a history start from (x, v) here, as velocity Verlet, through State's.)
+        const RopeState reference = d.drag_at != DragAt::Forces && !method_info(row).history
+                                        ? reference_step(row, damped, d, before, h)
+                                        : as_rope_state(reference_step(row, damped, run[n], h));
         const double dev = step_deviation(before, after, reference, true);
         const double f = float_floor(damped, d, before, after, h, true, in_float);
         worst = std::max(worst, dev);
@@ -133,10 +153,20 @@ Identified identify_step(const OwnStep& step, const std::string& name, const boo
     rows.push_back(verlet);  // from (x, v): velocity Verlet
   std::vector<Damping> variants{Damping{}};
   if (const double c = fit_drag(model, run, h); c != 0.0) {
+    // A drag of rate c, or a factor a step, v = (1 - d) v: from the same state at twice the step
+    // that implies half the rate, d / 2h. Each taken with the forces or from the new velocity.
     Damping rate;
     rate.drag = c;
     rate.drag_rate = true;
-    variants.push_back(rate);
+    const double c_here = drag_felt(step, rope, h), c_double = drag_felt(step, rope, 2.0 * h);
+    if (c_here != 0.0 && std::abs(c_double - 0.5 * c_here) <= 1e-3 * std::abs(0.5 * c_here)) {
+      rate.drag_step = c_here * h;
+      rate.drag = 0.0;
+    }
+    for (DragAt at : {DragAt::Forces, DragAt::NewVelocity, DragAt::AfterPosition}) {
+      rate.drag_at = at;
+      variants.push_back(rate);
+    }
   }
 
   bool best_within = false;
@@ -162,12 +192,12 @@ Identified identify_step(const OwnStep& step, const std::string& name, const boo
          format_text(tr("%s is %s (springlab's %s)%s, with %s: each of %s matches it to %s"),
                      name.c_str(), tr(row.label), row.name, form.c_str(), damped.c_str(),
                      where.c_str(), how.c_str()));
-    if (best.damping.drag < 0.0)
+    if (best.damping.drag < 0.0 || best.damping.drag_step < 0.0)
       fail(section, "damping-sign",
            format_text(tr("the drag has the wrong sign: c = %s 1/s pushes each particle along its "
                           "velocity (a = force(x, v) "
                           "- c v with c > 0 opposes it)"),
-                       num(best.damping.drag).c_str()));
+                       num(best.damping.at_step(h).drag).c_str()));
     return best;
   }
   fail(section, "not-textbook",
