@@ -57,7 +57,9 @@ enum class Rule {
   Half        // Verlet's a h^2 / 2
 };
 
-std::vector<Vec2> spring_forces(const BuiltRope& rope, const RopeState& s, Rule rule) {
+// `flipped`: with the wrong sign as well (two slips at once, a misreading's sign reversed).
+std::vector<Vec2> spring_forces(const BuiltRope& rope, const RopeState& s, Rule rule,
+                                bool flipped = false) {
   std::vector<Vec2> f(s.size(), Vec2::Zero());
   const int n = static_cast<int>(s.size());
   for (const BuiltSpring& spring : rope.springs) {
@@ -73,6 +75,7 @@ std::vector<Vec2> spring_forces(const BuiltRope& rope, const RopeState& s, Rule 
     if (rule == Rule::OverStep) on_a /= kProbeH;
     if (rule == Rule::TimesMass) on_a *= kProbeMass;
     if (rule == Rule::Half) on_a *= 0.5;
+    if (flipped) on_a = -on_a;
     if (rule == Rule::Assigned) {
       f[spring.m1] = on_a;
       f[spring.m2] = -on_a;
@@ -134,11 +137,15 @@ Rule probe_springs(const Bench& bench, Step step, const Damping& damping, CheckS
   const std::vector<Vec2> got = implied_forces(step, masses, s, run[0], kProbeH, d, bench.h_power);
   const Reading* best = &kReadings[0];
   double best_gap = INFINITY;
+  bool flipped = false;  // the reading with the wrong sign too
   for (const Reading& r : kReadings) {
     if ((r.rule == Rule::TimesStep || r.rule == Rule::OverStep) && step != Step::Euler) continue;
     if (r.rule == Rule::Half && step != Step::Verlet) continue;
-    const double gap = relative_gap(got, spring_forces(rope, s, r.rule));
-    if (gap < best_gap) best_gap = gap, best = &r;
+    for (bool flip : {false, true}) {
+      if (flip && (r.rule == Rule::Hooke || r.rule == Rule::Reversed)) continue;
+      const double gap = relative_gap(got, spring_forces(rope, s, r.rule, flip));
+      if (gap < best_gap) best_gap = gap, best = &r, flipped = flip;
+    }
   }
   const std::vector<Vec2> hooke = spring_forces(rope, s, Rule::Hooke);
   const std::string measured = format_text(
@@ -150,9 +157,15 @@ Rule probe_springs(const Bench& bench, Step step, const Damping& damping, CheckS
          format_text(tr("springs: Hooke's law on both ends, with the rest length (the forces a "
                         "step implies match it to %s)"),
                      num(best_gap).c_str()));
-  else if (best_gap <= 1e-3)
+  else if (best_gap <= 1e-3) {
+    if (flipped) {  // the wrong sign, said first
+      const Reading& sign =
+          *std::find_if(std::begin(kReadings), std::end(kReadings),
+                        [](const Reading& r) { return r.rule == Rule::Reversed; });
+      fail(section, sign.key, tr(sign.says));
+    }
     fail(section, best->key, std::string(tr(best->says)) + " (" + measured + ")");
-  else
+  } else
     fail(section, "springs-off",
          format_text(
              tr("springs: the forces are not Hooke's law nor one of its usual misreadings: %s"),
@@ -162,7 +175,7 @@ Rule probe_springs(const Bench& bench, Step step, const Damping& damping, CheckS
   // code's own rule and damping, or, left over, the first step's added to them.
   const RopeState& s1 = run[0];
   const Model model = built_model(rope, Vec2::Zero());
-  std::vector<Vec2> due = spring_forces(rope, s1, rule), kept = due;
+  std::vector<Vec2> due = spring_forces(rope, s1, rule, flipped), kept = due;
   if (step == Step::Euler) {
     const std::vector<Vec2> damped = damping_forces(model, s1, damping);
     for (int i = 0; i < 3; ++i) due[i] += damped[i], kept[i] += damped[i];
