@@ -159,15 +159,16 @@
   }
 
   const kFields = ["position", "last_position", "velocity", "forces"];
-  // The masses' state into out at `at`; a message where a field is not a vector any more.
+  // The masses' state into out at `at`; where a field is not a vector any more, what is wrong as
+  // "left <kind> ..." (js_rope.cpp words it in the page's language).
   function read(rope, out, at) {
     for (let i = 0; i < rope.masses.length; ++i) {
       const m = rope.masses[i];
-      if (!m || typeof m !== "object") return `it left rope.masses[${i}] not a mass`;
+      if (!m || typeof m !== "object") return `left not-a-mass ${i}`;
       for (let f = 0; f < kFields.length; ++f) {
         const v = m[kFields[f]];
         if (!v || typeof v.x !== "number" || typeof v.y !== "number")
-          return `it left rope.masses[${i}].${kFields[f]} not a vector (an object with numbers x and y)`;
+          return `left not-a-vector ${i} ${kFields[f]}`;
         out[at + i * kValues + 2 * f] = v.x;
         out[at + i * kValues + 2 * f + 1] = v.y;
       }
@@ -189,7 +190,7 @@
     const run = guarded(() => {
       for (; done < count; ++done) {
         fn(rope, dt, new Vector2D(gravity.x, gravity.y));
-        if (rope.masses.length !== n) { left = `it changed the number of masses from ${n} to ${rope.masses.length}`; return; }
+        if (rope.masses.length !== n) { left = `left count ${n} ${rope.masses.length}`; return; }
         left = read(rope, states, done * n * kValues);
         if (left) return;
       }

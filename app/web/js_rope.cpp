@@ -4,6 +4,7 @@
 
 #include <cstdlib>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,25 @@ EM_JS(int, js_rope_compiled, (), { return window.springlabHomework && window.spr
 // clang-format on
 
 int next_id = 1;
+
+// What a call left wrong, as homework.js says it ("left not-a-mass I", "left not-a-vector I
+// FIELD", "left count N M"), in words.
+std::string left_text(const std::string& left) {
+  std::istringstream in(left);
+  std::string word, kind, field;
+  int a = 0, b = 0;
+  in >> word >> kind;
+  if (kind == "not-a-mass" && in >> a)
+    return springlab::format_text(springlab::tr("it left rope.masses[%d] not a mass"), a);
+  if (kind == "not-a-vector" && in >> a >> field)
+    return springlab::format_text(
+        springlab::tr("it left rope.masses[%d].%s not a vector (an object with numbers x and y)"),
+        a, field.c_str());
+  if (kind == "count" && in >> a >> b)
+    return springlab::format_text(springlab::tr("it changed the number of masses from %d to %d"), a,
+                                  b);
+  return left;
+}
 
 }  // namespace
 
@@ -100,7 +120,7 @@ std::vector<RopeState> JsRope::simulate(Step step, double dt, const Vec2& gravit
     const std::string what = error.get();
     const std::string call = call_text(step, failed_at + 1, steps, dt);
     if (what == "time") throw CodeFailure(timed_out_text(call, ms / 1000.0));
-    if (what.starts_with("it ")) throw CodeFailure(call + ": " + what);
+    if (what.starts_with("left ")) throw CodeFailure(call + ": " + left_text(what));
     throw CodeFailure(threw_text(call, what));
   }
   std::vector<RopeState> states(steps, RopeState(masses_));

@@ -948,6 +948,10 @@ check("homework 8: JavaScript typed into the panel is checked and runs beside sp
        "    s.m2.forces = s.m2.forces.minus(f);\n    const u = d.unit(), damp = u.times(-0.5 * u.dot(s.m2.velocity.minus(s.m1.velocity)));\n" +
        "    s.m2.forces = s.m2.forces.plus(damp);\n    s.m1.forces = s.m1.forces.minus(damp);"),
      "the lecture's spring damping, along the spring, f_b = -k_d ((v_b - v_a) . u) u, k_d = 0.5 N s/m", 0],
+    ["a damping factor a step, taken after the position moved (correct too)", (c) => c.replace(".minus(m.velocity.times(0.02))", "")
+       .replace("      m.position = m.position.plus(m.velocity.times(delta_t));\n",
+                "      m.position = m.position.plus(m.velocity.times(delta_t));\n      m.velocity = m.velocity.times(1 - 0.00005);\n"),
+     "taken from the new velocity after the position has moved by the undamped one", 0],
     ["forces kept", (c) => c.replaceAll("    m.forces = new Vector2D(0, 0);\n", ""), "forces are not cleared between steps", 2],
     ["one end", (c) => c.replace("    s.m2.forces = s.m2.forces.minus(f);\n", ""), "the spring force acts on one end only (m1)", 2],
     ["wrong sign", (c) => c.replace("times(s.k * (", "times(-s.k * ("), "the spring force has the wrong sign", 2],
@@ -990,6 +994,10 @@ check("homework 8: JavaScript typed into the panel is checked and runs beside sp
   r = await runHomework(page, throws);
   expect(/simulateVerlet \(step \d+ of \d+, h = [^)]*\) threw an exception: TypeError: .* \(line 32 of your code\)/.test(r),
          `throws:\n${r}`);
+  const nulled = typed.replace("  springForces(rope);\n", "  springForces(rope);\n  rope.masses[0].velocity = null;\n");
+  r = await runHomework(page, nulled);
+  expect(/simulateEuler \(step 1 of \d+, h = [^)]*\): it left rope\.masses\[0\]\.velocity not a vector/.test(r),
+         `a mass's velocity left null:\n${r}`);
   const broken = typed.replace("function simulateVerlet(rope, delta_t, gravity) {", "function simulateVerlet(rope, delta_t, gravity {");
   r = await runHomework(page, broken);
   expect(/^your code does not parse: .* at line 24, column \d+/.test(r), `a syntax error:\n${r}`);
