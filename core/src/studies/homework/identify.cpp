@@ -169,6 +169,13 @@ Identified identify(const Bench& bench, Step step, const Damping& damping, bool 
       format_text(tr("the nearest, %s with %s, is off by %s of a step's motion (double's rounding "
                      "allows 1e-8, float's %s)"),
                   tr(row.label), damped.c_str(), num(best.worst).c_str(), num(best.floor).c_str());
+  if (keeps_nothing) {
+    note(section, "not-compared",
+         format_text(tr("%s is compared with springlab's rows once the mistake above is mended: it "
+                        "keeps none of a mass's velocity from step to step"),
+                     step_name(step)));
+    return found;
+  }
   if (!judged) {
     note(section, "not-compared",
          format_text(tr("%s is compared with springlab's rows once its forces are right (above): "
