@@ -175,7 +175,7 @@ void add_emitted_particle(Frame& frame, const app::Lane& lane, const State& stat
   Rgba c = held      ? kGrabbed
            : compare ? tint
                      : Rgba{float(rgb.x()), float(rgb.y()), float(rgb.z()), 1.0f};
-  c.a *= std::sqrt(left) * (lane.sim.diverged() ? 0.35f : 1.0f);
+  c.a *= std::sqrt(left) * (lane.wild() ? 0.35f : 1.0f);
   frame.particles.push_back({f(state.x.row(i)), held ? 1.3f * radius : radius, c, false});
 }
 
@@ -231,11 +231,12 @@ Frame build_frame(const app::Session& session, const ViewOptions& options, const
   const bool compare = session.comparing();
   for (const int index : view.lanes) {
     const app::Lane& lane = session.lanes()[index];
-    // A lane that diverged: its last sane state, faded (its last good state may be blown up).
-    const State& state = lane.sim.diverged() ? lane.sane : lane.sim.state();
+    // A lane that diverged or is blowing up: its last sane state, faded (its last good state may
+    // be blown up).
+    const State& state = lane.shown();
     const Model& m = lane.sim.model();
     Rgba tint = lane_color(lane);
-    if (lane.sim.diverged()) tint.a = 0.35f;
+    if (lane.wild()) tint.a = 0.35f;
 
     if (options.surfaces && !compare)
       for (const Surface& s : scene.surfaces)
@@ -245,14 +246,13 @@ Frame build_frame(const app::Session& session, const ViewOptions& options, const
       add_lane_springs(frame, m, state, tint, compare, kind, options, line_width);
     add_lane_trails(frame, lane, tint, compare, options);
     add_lane_particles(frame, session, lane, state, tint, options, radius, wpp);
-    if (options.mode && lane.analysis && !lane.sim.diverged())
-      add_mode_arrows(frame, lane, state, options);
+    if (options.mode && lane.analysis && !lane.wild()) add_mode_arrows(frame, lane, state, options);
   }
   return frame;
 }
 
 Eigen::Vector3d label_anchor(const app::Lane& lane) {
-  const State& s = lane.sim.diverged() ? lane.sane : lane.sim.state();
+  const State& s = lane.shown();
   if (s.particle_count() == 0) return Eigen::Vector3d::Zero();
   const Eigen::Vector3d lo = s.x.colwise().minCoeff().transpose(),
                         hi = s.x.colwise().maxCoeff().transpose();

@@ -176,21 +176,33 @@ void Session::advance_frame() {
 
 void Session::keep_if_sane(Lane& lane) {
   const Simulation& sim = lane.sim;
+  lane.blowing_up = false;
   if (sim.diverged()) return;
   const State& s = sim.state();
   // Within the scene's bounds: every particle within the reach of the camera's target.
   const Vec3& target = scene_.camera.target;
-  if (s.particle_count() > 0 &&
-      !((s.x.rowwise() - target.transpose()).rowwise().norm().maxCoeff() <= sane_reach_))
-    return;
+  const bool within =
+      s.particle_count() == 0 ||
+      (s.x.rowwise() - target.transpose()).rowwise().norm().maxCoeff() <= sane_reach_;
   // No spring past twice its longest sane length (its rest length, or its length at the start):
-  // a state blowing up stretches its springs before it leaves the bounds.
+  // a state blowing up stretches its springs before it leaves the bounds. (NaN counts as past.)
   const Model& m = sim.model();
+  double stretch = 0.0;
   for (int k = 0; k < m.spring_count(); ++k) {
     const int a = m.spring_a[k], b = m.spring_b[k];
     const double start = (scene_.state.x.row(b) - scene_.state.x.row(a)).norm();
-    if (!((s.x.row(b) - s.x.row(a)).norm() <= 2.0 * std::max(m.rest_length[k], start))) return;
+    const double ratio = (s.x.row(b) - s.x.row(a)).norm() / std::max(m.rest_length[k], start);
+    stretch = std::isnan(ratio) ? INFINITY : std::max(stretch, ratio);
+    if (stretch == INFINITY) break;
   }
+  // Blowing up: a spring past ten times its length on a step past its stability limit (by the
+  // analysis shown) or caught growing by the energy audit. Never a stable run: a soft rope sags
+  // far, a thrown body leaves the view, and a teacher's drag may pull a cloth's corner across it.
+  const StabilityLimit* limit =
+      lane.analysis ? &lane.analysis->limit(sim.settings().method) : nullptr;
+  const bool past = limit && !std::isnan(limit->h) && sim.h() > limit->h;
+  lane.blowing_up = grabbed_ < 0 && stretch > 10.0 && (past || sim.instability());
+  if (!within || !(stretch <= 2.0)) return;
   lane.sane.x = s.x;
   lane.sane.v = s.v;
   lane.sane.t = s.t;

@@ -46,6 +46,13 @@ struct Lane {
   // no spring stretched past twice its rest or starting length): what a diverged lane is drawn
   // as, never its blown-up geometry.
   State sane;
+  // Blowing up before the divergence test says so (its energy not yet 1e6 times the scene's): a
+  // spring past ten times its longest sane length on a step past the method's stability limit, no
+  // particle held (Session::keep_if_sane). Drawn, as a diverged lane is, as its last sane state.
+  bool blowing_up = false;
+  // Whether it is drawn as its last sane state, and the state it is drawn as.
+  bool wild() const { return blowing_up || sim.diverged(); }
+  const State& shown() const { return wild() ? sane : sim.state(); }
   // A lane of one's own (a student's step: homework, app/homework/): its label, in place of its
   // row's ("Your simulateEuler"), and whether the homework checker found the row it is (the row
   // its simulation names, whose theory the gauge then reads) or none. Empty for a row's lane.

@@ -24,7 +24,7 @@ std::optional<Drag> press(app::Session& session, const draw::ViewCamera& camera,
   // Nearest in screen space among the particles within reach of the pointer, the front one on ties.
   const app::Lane& picked =
       session.lanes()[std::clamp<std::size_t>(lane, 0, session.lanes().size() - 1)];
-  const State& s = picked.sim.diverged() ? picked.sane : picked.sim.state();
+  const State& s = picked.shown();
   int best = -1;
   double best_d2 = radius_px * radius_px, best_depth = 2.0;
   for (int i = 0; i < s.particle_count(); ++i) {

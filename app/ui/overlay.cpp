@@ -44,11 +44,16 @@ float swatch_width(float scale) {
   return 22.0f * scale;
 }
 
-// "; drawn as at 1.53 s" for a lane drawn as its last sane state, from a time before it diverged.
+// "; drawn as at 1.53 s" for a lane drawn as its last sane state, from a time before it diverged;
+// "; blowing up: drawn as at 0.15 s" for one that left its bounds before the divergence test said.
 std::string drawn_as(const app::Lane& lane) {
+  char s[96];
+  if (lane.blowing_up) {
+    std::snprintf(s, sizeof s, tr("; blowing up: drawn as at %.3g s"), lane.sane.t);
+    return s;
+  }
   const Divergence* trouble = lane.sim.trouble();
   if (!trouble || !lane.sim.diverged() || !(lane.sane.t < trouble->t - 1e-9)) return "";
-  char s[96];
   std::snprintf(s, sizeof s, tr("; drawn as at %.3g s"), lane.sane.t);
   return s;
 }
@@ -101,7 +106,8 @@ void draw_legend(const app::Session& session, const Legend& legend, float scale)
     chart::draw_mark(dl, draw::lane_mark(lane),
                      ImVec2(legend.at.x + 0.5f * swatch, y + 0.5f * line), 4.5f * scale, u32(c));
     dl->AddText(ImVec2(legend.at.x + swatch + 8.0f * scale, y),
-                lane.sim.trouble() ? u32(draw::kDiverged) : kText, legend.rows[k].c_str());
+                lane.sim.trouble() || lane.blowing_up ? u32(draw::kDiverged) : kText,
+                legend.rows[k].c_str());
   }
 }
 

@@ -80,6 +80,54 @@ TEST(CompareView, ApartEveryLaneHasAViewOfItsOwn) {
   EXPECT_THROW(draw::parse_compare_layout("side", "--compare-layout"), InputError);
 }
 
+// The largest ratio of a spring's length to its longest sane one (its rest length or its start).
+double worst_stretch(const app::Session& session, const app::Lane& lane) {
+  const Model& m = lane.sim.model();
+  const Points& x = lane.sim.state().x;
+  const Points& x0 = session.scene().state.x;
+  double worst = 0.0;
+  for (int k = 0; k < m.spring_count(); ++k) {
+    const int a = m.spring_a[k], b = m.spring_b[k];
+    const double ratio =
+        (x.row(b) - x.row(a)).norm() / std::max(m.rest_length[k], (x0.row(b) - x0.row(a)).norm());
+    worst = std::isnan(ratio) ? INFINITY : std::max(worst, ratio);
+  }
+  return worst;
+}
+
+// Before the divergence test fires (energy 1e6 times the scene's), a lane past its limit whose
+// springs are torn to ten times their length is drawn as its last sane state, faded, and its title
+// says so; a stable lane is not, nor is a stable rope sagging far on soft springs.
+TEST(CompareView, ALaneBlowingUpIsDrawnAsItsLastSaneStateBeforeItDiverges) {
+  app::Session session = rope_compared(2e-4, {Method::Euler, Method::SymplecticEuler, Method::RK4});
+  int torn = 0;
+  for (int frames = 0; frames < 300 && !session.lanes()[0].sim.diverged(); ++frames) {
+    session.advance_frame();
+    const app::Lane& euler = session.lanes()[0];
+    if (!euler.sim.diverged() && worst_stretch(session, euler) > 10.0) {
+      ++torn;
+      EXPECT_TRUE(euler.blowing_up) << "frame " << frames;
+      EXPECT_EQ(&euler.shown(), &euler.sane);
+      EXPECT_LT(euler.sane.t, euler.sim.state().t);
+    }
+    for (std::size_t k = 1; k < session.lanes().size(); ++k)
+      EXPECT_FALSE(session.lanes()[k].wild()) << "frame " << frames << ", lane " << k;
+  }
+  EXPECT_GT(torn, 0) << "explicit Euler never tore its springs before it diverged";
+
+  // Soft springs: symplectic Euler well within its limit, the rope hanging far past ten times its
+  // springs' length.
+  app::Session soft = rope_compared(2e-4, {Method::SymplecticEuler});
+  soft.set_stiffness(1e-3 * soft.primary().sim.model().ks(0));
+  double stretched = 0.0;
+  for (int frames = 0; frames < 240; ++frames) {
+    soft.advance_frame();
+    stretched = std::max(stretched, worst_stretch(soft, soft.primary()));
+    EXPECT_FALSE(soft.primary().wild()) << "frame " << frames;
+  }
+  EXPECT_GT(stretched, 10.0) << "the soft rope should sag past ten times its springs' length";
+}
+
 // Explicit Euler past its limit on the rope (h = 2e-4 s, twice its limit): once it has diverged
 // it is drawn as its last state within the scene's bounds, every spring short, never lines across
 // the frame; symplectic Euler and RK4, stable, are drawn as they are at every frame.
