@@ -27,8 +27,10 @@ std::string order_text(const MethodSummary& m) {
   return format_text(tr(" (order %.2f above a floor of %.2g m)"), m.order, m.floor_error);
 }
 
-std::string step_text(double h) {
-  if (std::isnan(h)) return tr("adaptive");
+// A method's limit in words: NaN is "adaptive" for a method that chooses its steps, "not measured"
+// for any other (a sweep with --stability-budget 0 measures none).
+std::string step_text(double h, Method method) {
+  if (std::isnan(h)) return method_info(method).adaptive() ? tr("adaptive") : tr("not measured");
   if (std::isinf(h)) return tr("always stable");
   if (h == 0.0) return tr("never stable");
   char s[32];
@@ -173,9 +175,10 @@ Chart stability(const SweepResult& r, const std::string& scene) {
       lo = std::min({lo, m.theoretical_stable_h, m.measured_stable_h});
       hi = std::max({hi, m.theoretical_stable_h, m.measured_stable_h});
     } else {
-      std::snprintf(label, sizeof label, tr("%s: %s (theory: %s)"), method_info(m.method).name,
-                    ((m.measured_at_least ? ">= " : "") + step_text(m.measured_stable_h)).c_str(),
-                    step_text(m.theoretical_stable_h).c_str());
+      std::snprintf(
+          label, sizeof label, tr("%s: %s (theory: %s)"), method_info(m.method).name,
+          ((m.measured_at_least ? ">= " : "") + step_text(m.measured_stable_h, m.method)).c_str(),
+          step_text(m.theoretical_stable_h, m.method).c_str());
     }
     s.label = label;
     c.series.push_back(std::move(s));
@@ -250,8 +253,13 @@ Chart solver_convergence(const SweepResult& r, const std::string& scene) {
 std::vector<NamedChart> compare_charts(const SweepResult& result, const std::string& scene) {
   std::vector<NamedChart> out{{"work-precision", work_precision(result, scene, Cost::Time)},
                               {"work-precision-work", work_precision(result, scene, Cost::Work)},
-                              {"convergence", convergence(result, scene)},
-                              {"stability", stability(result, scene)}};
+                              {"convergence", convergence(result, scene)}};
+  // The limits' chart where a limit was found (none with --stability-budget 0, nor for methods
+  // that all choose their own steps: an empty chart says nothing).
+  const bool limits = std::any_of(result.methods.begin(), result.methods.end(), [](const auto& m) {
+    return !std::isnan(m.theoretical_stable_h) || !std::isnan(m.measured_stable_h);
+  });
+  if (limits) out.push_back({"stability", stability(result, scene)});
   if (!result.drift.empty()) out.push_back({"energy-drift", energy_drift(result, scene)});
   if (!result.solver.curves.empty())
     out.push_back({"solver-convergence", solver_convergence(result, scene)});

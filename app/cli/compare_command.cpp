@@ -41,8 +41,10 @@ std::string number(double x) {
   return s;
 }
 
-std::string step_text(double h) {
-  if (std::isnan(h)) return "adaptive";
+// A limit or step in words: NaN is "adaptive" for a method that chooses its steps (or a step
+// not fixed), "not measured" for the limits of any other method.
+std::string step_text(double h, bool adaptive = true) {
+  if (std::isnan(h)) return adaptive ? "adaptive" : "not measured";
   if (std::isinf(h)) return "always";
   if (h == 0.0) return "never";
   char s[32];
@@ -158,7 +160,9 @@ void compare_print_method_row(const MethodSummary& m, const SweepResult& r) {
   char ratio[16] = "";
   if (finite)
     std::snprintf(ratio, sizeof ratio, "%.3f", m.measured_stable_h / m.theoretical_stable_h);
-  std::string measured = step_text(m.measured_stable_h), theory = step_text(m.theoretical_stable_h);
+  const bool adaptive = method_info(m.method).adaptive();
+  std::string measured = step_text(m.measured_stable_h, adaptive),
+              theory = step_text(m.theoretical_stable_h, adaptive);
   if (m.measured_at_least)
     measured = ">= " + measured + " (budget)";
   else if (finite && m.measured_resolution > 0.0) {
