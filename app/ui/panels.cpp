@@ -346,8 +346,11 @@ void divergence_window(app::Session& session, const UiState& ui, float scale, in
   const Simulation& first = session.primary().sim;
   if (const Divergence* trouble = first.trouble(); !session.comparing() && trouble) {
     // In a lesson, where diverging is often the point, one line at the foot of the scene (the
-    // explanation on hover), never over the caption or what it describes.
+    // explanation on hover), never over the caption or what it describes: none while the
+    // accuracy window the step opened covers the scene (its chart is what the caption describes;
+    // the panel's lane line says the divergence in red).
     const bool lesson = ui.band > 0.0f;
+    if (lesson && ui.accuracy) return;
     const draw::Viewport scene = scene_viewport(ui, width, height);
     if (lesson)
       ImGui::SetNextWindowPos(
