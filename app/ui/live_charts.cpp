@@ -110,8 +110,18 @@ chart::Chart phase_chart(const app::Session& session) {
   phase.y.label = "v (m/s)";
   phase.legend = false;
   for (const app::Lane& lane : session.lanes()) {
-    if (lane.sim.diverged()) continue;  // its phase plot would set the scale to its blow-up
-    phase.series.push_back(series("", draw::lane_color(lane), lane.history.x, lane.history.v));
+    chart::Series s = series("", draw::lane_color(lane), lane.history.x, lane.history.v);
+    // A lane that diverged or is blowing up: its path up to its last sane state, as its scene
+    // draws it (the blow-up would set the scale and leave the rest a dot).
+    if (lane.wild() && lane.history.t.size() >= s.x.size()) {
+      const app::Series& t = lane.history.t;
+      std::size_t keep = 0;
+      for (std::size_t k = 0; k < s.x.size(); ++k)
+        if (t[t.size() - s.x.size() + k] <= lane.sane.t + 1e-12) keep = k + 1;
+      s.x.resize(keep);
+      s.y.resize(keep);
+    }
+    phase.series.push_back(std::move(s));
     phase.series.back().mark = draw::lane_mark(lane);
   }
   return phase;
