@@ -256,6 +256,8 @@ function simulateVerlet(rope, delta_t, gravity) {
     const r = report();
     r.textContent = text;
     r.classList.toggle("failed", !!failed);
+    // (in whatever language the words are: what a test or a style waits out)
+    r.classList.toggle("checking", text === words.checking);
   }
 
   // The panel's words in the app's language (the report comes in it too).

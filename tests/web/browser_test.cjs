@@ -699,8 +699,9 @@ const homeworkCode = (name) => fs.readFileSync(path.join(root, "tests/homework/j
 // The report once it is new and no longer "checking...": the text the wait saw, read in the same
 // evaluation (a second read could see the next run's "checking..." in between).
 async function homeworkReport(page, before) {
-  const seen = await page.waitForFunction((b) => { const t = document.getElementById("homework-report").textContent;
-                                                   return t !== b && t !== "checking\u2026" ? t : null; },
+  const seen = await page.waitForFunction((b) => { const e = document.getElementById("homework-report");
+                                                   const t = e.textContent;
+                                                   return t !== b && !e.classList.contains("checking") ? t : null; },
                                           { timeout: 60000 }, before);
   return seen.jsonValue();
 }
