@@ -47,6 +47,7 @@ void region_window(app::Session& session, UiState& ui, float x, float y, float w
   if (!ui.region) return;
   ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Appearing);
   ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Appearing);
+  ImGui::SetNextWindowBgAlpha(1.0f);  // (over the charts, theirs must not show through its own)
   if (!ImGui::Begin((tr("Stability region (G)") + std::string("###region")).c_str(), &ui.region,
                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
     ImGui::End();
@@ -324,11 +325,15 @@ void charts_window(app::Session& session, const UiState& ui, const PanelLayout& 
   ImGui::End();
 }
 
-// The stability region's window, over the scene's top left.
+// The stability region's window, over the scene's top left; in compare mode, where the lanes tile
+// the scene and any place in it hides a lane, over the charts instead (homework 8's step 7 had it
+// over the whole symplectic Euler lane its caption is about).
 void region(app::Session& session, UiState& ui, const PanelLayout& layout, float scale, int width,
             int height) {
   const float pad = 8.0f * scale;
-  if (layout.kind == LayoutKind::Wide) {
+  if (session.comparing() && layout.kind == LayoutKind::Wide && !layout.charts.empty()) {
+    region_window(session, ui, layout.charts.x, layout.charts.y, layout.charts.w, layout.charts.h);
+  } else if (layout.kind == LayoutKind::Wide) {
     region_window(session, ui, layout.charts.x, layout.controls.y,
                   0.55f * (width - layout.charts.x), 0.55f * height);
   } else {
