@@ -303,6 +303,7 @@ void draw_shot(gfx::Offscreen& offscreen, Shot& shot, const ui::FrameStats& stat
   Session& session = *shot.session;
   if (shot.band)
     shot.ui.band = ui::lesson_band_height(*shot.band, static_cast<float>(width), scale);
+  shot.ui.comparing = session.comparing();
   const draw::Viewport viewport = panels || shot.band ? ui::scene_viewport(shot.ui, width, height)
                                                       : draw::Viewport{0, 0, width, height};
   const std::vector<draw::LaneView> views =
@@ -313,11 +314,9 @@ void draw_shot(gfx::Offscreen& offscreen, Shot& shot, const ui::FrameStats& stat
     pictures.push_back(draw::build_frame(session, shot.ui.view, view));
   offscreen.draw(pictures, [&] {
     if (panels) ui::draw_panels(session, shot.ui, stats, width, height);
-    if (shot.accuracy) {  // in the scene's and the charts' place, as in the app's lesson
-      const ui::Rect r = ui::lesson_chart_rect(shot.ui, viewport, width, height, scale);
-      ImGui::SetNextWindowBgAlpha(1.0f);
-      ui::draw_compare_panel(*shot.accuracy, session, scale, r.x, r.y, r.w, r.h);
-    }
+    if (shot.accuracy)  // where the layout puts it, as in the app's lesson
+      ui::draw_compare_panel(*shot.accuracy, session, scale,
+                             ui::accuracy_rect(shot.ui, width, height), width, height);
     if (shot.band) {
       shot.band->elapsed = session.simulated_target() / session.speed();  // (as the app's)
       ui::draw_lesson_band(*shot.band, static_cast<float>(width), scale);

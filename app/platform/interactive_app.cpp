@@ -308,24 +308,17 @@ void InteractiveApp::simulate() {
 
 namespace {
 
-// The accuracy chart (ui/compare_panel.hpp), open while ui.accuracy is: in a lesson in the scene's
-// and the charts' place (the step is about this chart), else over the scene's upper part; then the
+// The accuracy chart (ui/compare_panel.hpp), open while ui.accuracy is, where the layout puts it
+// (in a lesson or beside compare mode's lanes: the scene's and the charts' place); then the
 // tableau panel, open while ui.tableau is. Each panel's open flag goes back to `ui` as its window
 // left it.
 void draw_app_charts(ui::UiState& ui, ui::ComparePanel& accuracy, ui::TableauPanel& tableau,
-                     const std::vector<std::string>& tableaux, Session& session, bool in_lesson,
-                     float scale, int win_w, int win_h) {
+                     const std::vector<std::string>& tableaux, Session& session, float scale,
+                     int win_w, int win_h) {
   accuracy.open = ui.accuracy;
   accuracy.sweep.advance();  // (without threads: the sweep's next pieces; else nothing)
-  if (in_lesson) {  // the step is about this chart: it takes the scene's and the charts' place
-    const ui::Rect r =
-        ui::lesson_chart_rect(ui, ui::scene_viewport(ui, win_w, win_h), win_w, win_h, scale);
-    ImGui::SetNextWindowBgAlpha(1.0f);  // (the charts under it do not show through)
-    ui::draw_compare_panel(accuracy, session, scale, r.x, r.y, r.w, r.h);
-  } else {
-    ui::draw_compare_panel(accuracy, session, scale, 380.0f * scale, 20.0f * scale,
-                           win_w - 400.0f * scale, win_h * 0.62f);
-  }
+  ui::draw_compare_panel(accuracy, session, scale, ui::accuracy_rect(ui, win_w, win_h), win_w,
+                         win_h);
   ui.accuracy = accuracy.open;
   tableau.open = ui.tableau;
   ui::draw_tableau_panel(tableau, session, tableaux, scale);
@@ -357,6 +350,7 @@ void InteractiveApp::frame(const FrameSize& size) {
   const double to_fb = static_cast<double>(size.fb_width) / std::max(1, win_w);
   // The lesson's band as tall as its caption needs at this width.
   if (lesson_) ui_.band = ui::lesson_band_height(band(), static_cast<float>(win_w), ui_.scale);
+  ui_.comparing = session_->comparing();
 
   // The scene's part of the framebuffer (the panels' layout is in window units).
   draw::Viewport viewport = ui::scene_viewport(ui_, win_w, win_h);
@@ -394,8 +388,7 @@ void InteractiveApp::frame(const FrameSize& size) {
       }
     };
   }
-  draw_app_charts(ui_, accuracy_, tableau_, tableaux_, session, lesson_.has_value(), scale, win_w,
-                  win_h);
+  draw_app_charts(ui_, accuracy_, tableau_, tableaux_, session, scale, win_w, win_h);
   ui_.view.line_scale = ui_.presentation ? 1.6f : 1.0f;
   draw_app_overlay(session, ui_, stats_, scale, viewport, to_fb);
   if (requests.quit) quit_ = true;

@@ -81,13 +81,21 @@ void compare_method_ticks(ComparePanel& panel) {
 
 }  // namespace
 
-void draw_compare_panel(ComparePanel& panel, const app::Session& session, float scale, float x,
-                        float y, float width, float height) {
+void draw_compare_panel(ComparePanel& panel, const app::Session& session, float scale,
+                        const Rect& place, int width, int height) {
   if (!panel.open) return;
-  ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Appearing);
-  ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Appearing);
+  ImGuiWindowFlags flags = ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse;
+  if (place.empty()) {
+    ImGui::SetNextWindowPos(ImVec2(380.0f * scale, 20.0f * scale), ImGuiCond_Appearing);
+    ImGui::SetNextWindowSize(ImVec2(width - 400.0f * scale, 0.62f * height), ImGuiCond_Appearing);
+  } else {  // (what it covers, the charts or a lane, does not show through)
+    ImGui::SetNextWindowPos(ImVec2(place.x, place.y));
+    ImGui::SetNextWindowSize(ImVec2(place.w, place.h));
+    ImGui::SetNextWindowBgAlpha(1.0f);
+    flags |= ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize;
+  }
   if (!ImGui::Begin((tr("Accuracy against cost") + std::string("###accuracy")).c_str(), &panel.open,
-                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
+                    flags)) {
     ImGui::End();
     return;
   }

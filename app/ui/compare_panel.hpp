@@ -6,6 +6,7 @@
 
 #include "session/background_sweep.hpp"
 #include "session/session.hpp"
+#include "ui/layout.hpp"
 #include "ui/method_choice.hpp"
 
 namespace springlab::ui {
@@ -24,8 +25,9 @@ struct ComparePanel {
   void start(const app::Session& session);
 };
 
-// Draws the panel (when open) over the area `x, y, width, height` of the window.
-void draw_compare_panel(ComparePanel& panel, const app::Session& session, float scale, float x,
-                        float y, float width, float height);
+// Draws the panel (when open): in the place the layout gives it (PanelLayout::accuracy), opaque
+// and kept there; where that is empty, over the scene's upper part, where it can be dragged.
+void draw_compare_panel(ComparePanel& panel, const app::Session& session, float scale,
+                        const Rect& place, int width, int height);
 
 }  // namespace springlab::ui

@@ -1,6 +1,7 @@
 #include "ui/layout.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "ui/panels.hpp"
 
@@ -20,7 +21,10 @@ LayoutKind layout_kind(float w, float h) {
   return LayoutKind::Wide;
 }
 
-PanelLayout panel_layout(const UiState& ui, int width, int height) {
+namespace {
+
+// The panels by the layout's kind, before the accuracy chart's place is taken out of them.
+PanelLayout panels_by_kind(const UiState& ui, int width, int height) {
   PanelLayout out;
   const float s = ui.scale * (ui.presentation ? kPresentationScale : 1.0f);
   const float W = static_cast<float>(width), H = static_cast<float>(height);
@@ -85,6 +89,43 @@ PanelLayout panel_layout(const UiState& ui, int width, int height) {
       return out;
     }
   }
+  return out;
+}
+
+// The accuracy chart's place, where the layout gives it one (else it floats over the scene):
+//   a lesson's step, a phone    the scene's and the charts' place (the step is about the chart;
+//                               a phone has no room to float it);
+//   compare mode                the same, less a column on the left where the lanes stack (the
+//                               chart over them hid every lane); Upright, where the height allows
+//                               both, a row above it.
+void place_accuracy(PanelLayout& out, const UiState& ui, float W, float H, float s) {
+  if (!ui.accuracy || (ui.lesson.empty() && !ui.comparing && !out.touch)) return;
+  const float foot =
+      out.strip.empty() || out.strip.y <= static_cast<float>(out.scene.y) ? H : out.strip.y;
+  float x = static_cast<float>(out.scene.x), y = static_cast<float>(out.scene.y);
+  if (ui.comparing && out.kind == LayoutKind::Upright && foot - y >= 600.0f * s) {
+    // The lanes above in 2 of 5 (at least 240 units; a chart needs the 360 under them).
+    const int above = static_cast<int>(0.4f * (foot - y));
+    out.scene = {out.scene.x, out.scene.y, out.scene.width, above};
+    y += static_cast<float>(above);
+  } else if (ui.comparing && out.kind != LayoutKind::Upright) {
+    // A third of the width: stacked, 2 to 4 lanes of 16:9 are as large as in a row above a
+    // chart of the same size, and the chart keeps its width.
+    const int column = static_cast<int>(std::round((W - x) / 3.0f));
+    out.scene = {out.scene.x, out.scene.y, column, static_cast<int>(foot) - out.scene.y};
+    x += static_cast<float>(column);
+  }
+  const float pad = kPad * s;
+  out.accuracy = {x + pad, y + pad, W - x - 2 * pad, foot - y - 2 * pad};
+  out.charts = {};  // (under the chart: not drawn)
+}
+
+}  // namespace
+
+PanelLayout panel_layout(const UiState& ui, int width, int height) {
+  PanelLayout out = panels_by_kind(ui, width, height);
+  const float s = ui.scale * (ui.presentation ? kPresentationScale : 1.0f);
+  place_accuracy(out, ui, static_cast<float>(width), static_cast<float>(height), s);
   return out;
 }
 

@@ -9,7 +9,9 @@
 //            the bottom: one row (menu, play or pause, step, the method, dt) that opens to all.
 //   Side     a phone on its side (under 500 high): the scene beside the controls, which fold
 //            away to a strip of buttons (folded at first under a lesson's band).
-// The lesson's band, when there is one, runs across the top in every layout.
+// The lesson's band, when there is one, runs across the top in every layout. The accuracy chart,
+// open in a lesson or beside compare mode's lanes, takes the scene's and the charts' place, less
+// a column for the lanes (place_accuracy).
 #pragma once
 
 #include "draw/scene_frame.hpp"
@@ -30,6 +32,7 @@ struct PanelLayout {
   Rect controls;  // the controls' panel (empty: folded or hidden)
   Rect strip;     // Upright: the sheet's one row; Side: the folded panel's strip of buttons
   Rect charts;    // the charts' panel (empty: none)
+  Rect accuracy;  // the accuracy chart's (empty: it floats over the scene where it is dragged)
   draw::Viewport scene;
   bool touch = false;  // Upright and Side: frames at least 44 layout units high, for a thumb
 };

@@ -91,14 +91,8 @@ draw::Viewport scene_viewport(const UiState& ui, int width, int height) {
   return panel_layout(ui, width, height).scene;
 }
 
-Rect lesson_chart_rect(const UiState& ui, const draw::Viewport& scene, int width, int height,
-                       float scale) {
-  const Rect strip = panel_layout(ui, width, height).strip;
-  const float foot = !strip.empty() && strip.y > static_cast<float>(scene.y)
-                         ? strip.y
-                         : static_cast<float>(height);
-  const float pad = 8.0f * scale, x = static_cast<float>(scene.x), y = static_cast<float>(scene.y);
-  return {x + pad, y + pad, static_cast<float>(width) - x - 2.0f * pad, foot - y - 2.0f * pad};
+Rect accuracy_rect(const UiState& ui, int width, int height) {
+  return panel_layout(ui, width, height).accuracy;
 }
 
 namespace {
@@ -327,12 +321,16 @@ void charts_window(app::Session& session, const UiState& ui, const PanelLayout& 
 
 // The stability region's window, over the scene's top left; in compare mode, where the lanes tile
 // the scene and any place in it hides a lane, over the charts instead (homework 8's step 7 had it
-// over the whole symplectic Euler lane its caption is about).
+// over the whole symplectic Euler lane its caption is about), or over the accuracy chart's lower
+// half where that has taken the charts' place.
 void region(app::Session& session, UiState& ui, const PanelLayout& layout, float scale, int width,
             int height) {
   const float pad = 8.0f * scale;
+  const Rect& a = layout.accuracy;
   if (session.comparing() && layout.kind == LayoutKind::Wide && !layout.charts.empty()) {
     region_window(session, ui, layout.charts.x, layout.charts.y, layout.charts.w, layout.charts.h);
+  } else if (session.comparing() && !a.empty()) {
+    region_window(session, ui, a.x, a.y + 0.5f * a.h, a.w, 0.5f * a.h);
   } else if (layout.kind == LayoutKind::Wide) {
     region_window(session, ui, layout.charts.x, layout.controls.y,
                   0.55f * (width - layout.charts.x), 0.55f * height);
@@ -469,10 +467,8 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
   if (ui.panels && !layout.strip.empty()) strip(session, ui, layout);
   if (ui.panels && !layout.controls.empty())
     controls_window(session, ui, stats, layout, docked, scale, presenting, requests);
-  // (A lesson's accuracy chart takes the scene's and the charts' place: the charts are not drawn
-  // under it.)
-  const bool covered = !ui.lesson.empty() && ui.accuracy;
-  if (ui.panels && !layout.charts.empty() && !covered) charts_window(session, ui, layout, docked);
+  // (Where the accuracy chart takes the charts' place, the layout leaves them none.)
+  if (ui.panels && !layout.charts.empty()) charts_window(session, ui, layout, docked);
   if (ui.panels) region(session, ui, layout, scale, width, height);
   divergence_window(session, ui, scale, width, height);
   if (!ui.message.empty()) message_window(ui, scale, width, height);

@@ -1,6 +1,7 @@
 // What the class sees in compare mode: every lane in a view of its own (lane_views.hpp), a lane
 // that diverged drawn as its last state within the scene's bounds (never its blown-up geometry),
-// a drag in a lane's view picking that lane's particle, and each lane's work in the frame.
+// a drag in a lane's view picking that lane's particle, each lane's work in the frame, and every
+// lane in sight beside the accuracy chart (ui/layout.hpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,6 +13,7 @@
 #include "springlab/error.hpp"
 #include "support.hpp"
 #include "ui/interaction.hpp"
+#include "ui/layout.hpp"
 #include "ui/panels.hpp"
 
 namespace springlab::test {
@@ -78,6 +80,61 @@ TEST(CompareView, ApartEveryLaneHasAViewOfItsOwn) {
   EXPECT_EQ(draw::parse_compare_layout("together", "--compare-layout"),
             draw::CompareLayout::Together);
   EXPECT_THROW(draw::parse_compare_layout("side", "--compare-layout"), InputError);
+}
+
+bool meet(const ui::Rect& a, const draw::Viewport& b) {
+  return a.x < b.x + b.width && b.x < a.x + a.w && a.y < b.y + b.height && b.y < a.y + a.h;
+}
+
+// The accuracy chart beside compare mode's lanes: in a lesson or not, on a laptop, a small one,
+// a phone on its side and one held upright, every lane keeps a view of at least 150 x 84 pixels
+// (a 16:9 box) that the chart does not cover, and the chart keeps at least 320 x 300 within the
+// window (a phone on its side, its controls open, has 514 pixels beside them). Both ways: one lane
+// in a lesson, the chart takes the scene's place (the step is about the chart); one lane outside a
+// lesson on a laptop, the layout leaves it to float.
+TEST(CompareView, TheAccuracyChartLeavesEveryLaneInSight) {
+  const app::Session session =
+      rope_compared(1e-4, {Method::Euler, Method::SymplecticEuler, Method::RK4, Method::Verlet});
+  for (const auto& [width, height] :
+       {std::pair{1280, 720}, {1920, 1080}, {1024, 640}, {844, 390}, {540, 960}, {390, 844}}) {
+    for (const float band : {0.0f, 120.0f}) {
+      if (height < 500 && band > 0.0f) continue;  // (a phone on its side: the band folds)
+      ui::UiState ui;
+      ui.accuracy = ui.comparing = true;
+      ui.band = band;
+      if (band > 0.0f) ui.lesson = "homework-8";
+      const ui::PanelLayout layout = ui::panel_layout(ui, width, height);
+      const std::string at = std::to_string(width) + "x" + std::to_string(height) + ", band " +
+                             std::to_string(static_cast<int>(band));
+      const ui::Rect& chart = layout.accuracy;
+      EXPECT_GE(chart.w, 320.0f) << at;
+      EXPECT_GE(chart.h, 300.0f) << at;
+      EXPECT_TRUE(chart.x >= 0 && chart.y >= band && chart.x + chart.w <= width &&
+                  chart.y + chart.h <= height)
+          << at;
+      EXPECT_TRUE(layout.charts.empty()) << at;  // (under the chart)
+      const auto views = draw::lane_views(session, session.scene().camera,
+                                          draw::CompareLayout::Apart, layout.scene);
+      ASSERT_EQ(views.size(), 4u);
+      for (const draw::LaneView& v : views) {
+        EXPECT_FALSE(meet(chart, v.viewport)) << at;
+        EXPECT_GE(std::min(v.viewport.width / 16.0, v.viewport.height / 9.0), 9.3) << at;
+      }
+    }
+  }
+  ui::UiState ui;
+  ui.accuracy = true;
+  ui.lesson = "rk4-work-precision";
+  ui.band = 120.0f;
+  const ui::PanelLayout lesson = ui::panel_layout(ui, 1280, 720);
+  EXPECT_TRUE(lesson.charts.empty());
+  EXPECT_GE(lesson.accuracy.w, 0.9f * lesson.scene.width);
+  EXPECT_GE(lesson.accuracy.h + 16.0f, 720.0f - 120.0f);
+  ui.lesson.clear();
+  ui.band = 0.0f;
+  const ui::PanelLayout own = ui::panel_layout(ui, 1280, 720);
+  EXPECT_TRUE(own.accuracy.empty());
+  EXPECT_FALSE(own.charts.empty());
 }
 
 // The largest ratio of a spring's length to its longest sane one (its rest length or its start).
