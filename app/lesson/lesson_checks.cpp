@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "chart/compare_charts.hpp"
+#include "draw/camera.hpp"
 #include "lesson/lesson_library.hpp"
 #include "session/ik_kind.hpp"
 #include "springlab/energy.hpp"
@@ -452,6 +453,54 @@ ClaimResult judge(const LessonClaim& c, const Session& session, const std::vecto
   return out;
 }
 
+// The share of a lane's free particles (those alive, where the scene emits them) that land in the
+// scene camera's 16:9 frame: every lane's view shows at least that frame (draw/lane_views.hpp).
+double share_in_frame(const Lane& lane, const draw::ViewCamera& frame) {
+  const State& s = lane.shown();
+  const Model& m = lane.sim.model();
+  const bool emits = !m.emitters.empty();
+  int in = 0, counted = 0;
+  for (int i = 0; i < s.particle_count(); ++i) {
+    if (m.pinned(i) || (emits && !lane.sim.emission().alive(i))) continue;
+    const Eigen::Vector3d p = draw::project(frame, s.x.row(i).transpose(), 1600, 900);
+    ++counted;
+    in += p.x() >= 0 && p.x() <= 1600 && p.y() >= 0 && p.y() <= 900 && p.z() >= 0 && p.z() <= 1;
+  }
+  return counted == 0 ? 1.0 : static_cast<double>(in) / counted;
+}
+
+// InSight: over every frame, each lane that holds to the step's end (never diverges nor goes
+// unstable) keeps at least half of its free particles in the frame. A lane that diverges leaving
+// the frame is the lesson (its claim says so), and is drawn as its last sane state once caught.
+struct Sight {
+  std::vector<double> least;  // a lane's least share, and the frame that showed it
+  std::vector<int> at;
+  void take(const Session& session, const draw::ViewCamera& frame_camera, int frame) {
+    least.resize(session.lanes().size(), 1.0);
+    at.resize(session.lanes().size(), 0);
+    for (std::size_t n = 0; n < session.lanes().size(); ++n) {
+      const double share = share_in_frame(session.lanes()[n], frame_camera);
+      if (share < least[n]) least[n] = share, at[n] = frame;
+    }
+  }
+  ClaimResult result(const Session& session, double fps) const {
+    LessonClaim claim;
+    claim.kind = K::InSight;
+    int worst = -1;
+    for (std::size_t n = 0; n < least.size(); ++n) {
+      const Lane& lane = session.lanes()[n];
+      if (lane.wild() || lane.sim.trouble()) continue;
+      if (worst < 0 || least[n] < least[worst]) worst = static_cast<int>(n);
+    }
+    if (worst < 0 || least[worst] >= 1.0)
+      return {claim, true, "all of every holding lane's, in every frame"};
+    const std::string who(lane_row(session.lanes()[worst]).name);
+    return {claim, least[worst] >= 0.5,
+            who + fmt(": %.1f %% at least", 100.0 * least[worst]) +
+                fmt(", at t = %.3g s", at[worst] / fps)};
+  }
+};
+
 }  // namespace
 
 std::vector<ClaimResult> check_step(const LessonStep& step, double fps) {
@@ -459,8 +508,11 @@ std::vector<ClaimResult> check_step(const LessonStep& step, double fps) {
   const int frames = static_cast<int>(std::lround(step.duration * fps));
   std::vector<Record> records(session->lanes().size());
   std::vector<ClaimResult> results(step.claims.size());
+  const draw::ViewCamera frame_camera = draw::view_camera(session->scene().camera, 1600, 900);
+  Sight sight;
   const auto take = [&](int frame) {
     for (std::size_t k = 0; k < records.size(); ++k) record(session->lanes()[k], frame, records[k]);
+    sight.take(*session, frame_camera, frame);
     for (std::size_t k = 0; k < step.claims.size(); ++k) {
       const LessonClaim& c = step.claims[k];
       if (c.kind != K::Particles || std::lround(*c.at * fps) != frame) continue;
@@ -476,6 +528,7 @@ std::vector<ClaimResult> check_step(const LessonStep& step, double fps) {
   for (std::size_t k = 0; k < step.claims.size(); ++k)
     if (step.claims[k].kind != K::Particles)
       results[k] = judge(step.claims[k], *session, records, fps, frames);
+  results.push_back(sight.result(*session, fps));
   return results;
 }
 

@@ -24,6 +24,9 @@
 //                    fitted order within `within`; best: least error at the largest cost every
 //                    method reaches (log-log interpolation)
 //   particles        particles alive at `at` against `about`
+//   in sight         (never written: every step gets it) each lane that holds to the step's end
+//                    keeps half of its free particles or more in the scene camera's 16:9 frame,
+//                    the least every lane's view shows (draw/lane_views.hpp), in every frame
 #pragma once
 
 #include <string>

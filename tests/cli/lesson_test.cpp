@@ -70,7 +70,7 @@ TEST(Lessons, CheckPrintsEachClaimWithWhatWasMeasured) {
           "ok    euler: energy grows by x1.027778 a step: x1.027778 a step (expected x1.027778)"),
       std::string::npos)
       << r.out;
-  EXPECT_NE(r.out.find("4 of 4 claims hold"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("5 of 5 claims hold"), std::string::npos) << r.out;
 }
 
 TEST(Lessons, AClaimThatDoesNotHoldFailsTheCheck) {
@@ -82,7 +82,7 @@ TEST(Lessons, AClaimThatDoesNotHoldFailsTheCheck) {
   const Result r = springlab("lesson check " + (dir / "wrong.json").string());
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.out.find("FAIL  energy grows"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("0 of 1 claims hold"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("1 of 2 claims hold"), std::string::npos) << r.out;  // (and in sight)
 }
 
 // Every kind of claim can fail: one false claim of each kind, each in a step of its own, played
@@ -151,12 +151,44 @@ TEST(Lessons, EveryKindOfClaimCanFail) {
   const Result r = springlab("lesson check " + (dir / "false1.json").string() + " " +
                              (dir / "false2.json").string());
   EXPECT_EQ(r.status, 1) << r.out << r.err;
-  int fails = 0;
-  for (std::size_t at = r.out.find("FAIL  "); at != std::string::npos;
-       at = r.out.find("FAIL  ", at + 1))
-    ++fails;
+  // (Every step also gets the check's own "in sight", tested below: not counted here.)
+  int fails = 0, oks = 0;
+  std::istringstream lines(r.out);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.find("in sight") != std::string::npos) continue;
+    fails += line.find("FAIL  ") != std::string::npos;
+    oks += line.find("ok  ") != std::string::npos;
+  }
   EXPECT_EQ(fails, 22) << r.out;
-  EXPECT_EQ(r.out.find("ok  "), std::string::npos) << r.out;
+  EXPECT_EQ(oks, 0) << r.out;
+}
+
+// Every step is checked for what a lesson never writes: each lane that holds stays in sight (at
+// least half of its free particles in the scene's 16:9 frame, which every lane's view shows).
+// Both ways: a cloth drifting out at 3 m/s fails, at 0.1 m/s it holds; explicit Euler's spring
+// swinging out as it diverges is what the step shows, and is not flagged.
+TEST(Lessons, ALaneThatHoldsOutOfSightFailsTheCheck) {
+  TempDir dir;
+  write_file(dir / "sight.json", R"({"title": "Sight", "summary": "In sight or not.", "steps": [
+    {"title": "out", "scene": "cloth", "set": {"cloth.pinned": [], "gravity": [0, 0, 0], "drag": 0,
+     "cloth.velocity": [3, 0, 0]}, "method": "xpbd", "dt": 0.016666666666666666, "substeps": 1, "duration": 3,
+     "caption": "c", "claims": [{"claim": "holds"}]},
+    {"title": "in", "scene": "cloth", "set": {"cloth.pinned": [], "gravity": [0, 0, 0], "drag": 0,
+     "cloth.velocity": [0.1, 0, 0]}, "method": "xpbd", "dt": 0.016666666666666666, "substeps": 1, "duration": 3,
+     "caption": "c", "claims": [{"claim": "holds"}]},
+    {"title": "diverging", "scene": "spring", "compare": ["euler", "symplectic-euler"], "dt": 0.05,
+     "substeps": 1, "duration": 3, "caption": "c", "claims": [{"claim": "diverges", "lane": "euler"}]}]})");
+  const Result r = springlab("lesson check " + (dir / "sight.json").string());
+  EXPECT_EQ(r.status, 1) << r.out << r.err;
+  const auto line = [&](const std::string& step) {
+    const std::size_t at = r.out.find("every lane that holds in sight", r.out.find(step));
+    return r.out.substr(r.out.rfind('\n', at) + 1, r.out.find('\n', at) - r.out.rfind('\n', at));
+  };
+  EXPECT_NE(line("step 1: out").find("FAIL  "), std::string::npos) << r.out;
+  EXPECT_NE(line("step 1: out").find("xpbd: 0.0 % at least"), std::string::npos) << r.out;
+  EXPECT_NE(line("step 2: in").find("ok  "), std::string::npos) << r.out;
+  EXPECT_NE(line("step 3: diverging").find("ok  "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("5 of 6 claims hold"), std::string::npos) << r.out;
 }
 
 TEST(Lessons, ABadLessonGetsOneMessageNamingTheFileAndTheFieldAndExitsTwo) {

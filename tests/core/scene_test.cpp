@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "springlab/error.hpp"
+#include "springlab/momentum.hpp"
 #include "springlab/stability.hpp"
 #include "support.hpp"
 
@@ -88,6 +89,23 @@ TEST(Generators, ClothHasItsSpringsAndTwoPinnedCorners) {
     EXPECT_NEAR((s.state.x.row(s.model.spring_b[k]) - s.state.x.row(s.model.spring_a[k])).norm(),
                 s.model.rest_length[k], 1e-12);
   EXPECT_LT(s.model.spans.size(), static_cast<std::size_t>(structural));
+}
+
+// A cloth thrown spinning: P = M v, and about its centre L = I w, I of a thin square plate of
+// side a and mass M: M a^2 / 12 about each in-plane axis and M a^2 / 6 about its normal (the
+// nodes' lattice, n per side, gives M a^2 (n + 1) / (12 (n - 1)) each way instead).
+TEST(Generators, AClothSpinsAsAPlate) {
+  const int n = 9;
+  const Scene s = test::shipped(
+      "cloth", {"cloth.width=" + std::to_string(n), "cloth.height=" + std::to_string(n),
+                "cloth.pinned=[]", "cloth.velocity=[0.5,-1,2]", "cloth.spin=[3,-2,1.5]"});
+  const Vec3 v(0.5, -1, 2), w(3, -2, 1.5), center(0, 2, 1);  // (cloth.json's centre, 2 m wide)
+  const Momentum m = momentum(s.model, s.state);
+  EXPECT_LT((m.linear - 1.0 * v).norm(), 1e-12);
+  const double a = 2.0, in_plane = a * a * (n + 1) / (12.0 * (n - 1));
+  const Vec3 plate_l(in_plane * w.x(), 2 * in_plane * w.y(), in_plane * w.z());  // normal: y
+  const Vec3 about_center = m.angular - center.cross(m.linear);
+  EXPECT_LT((about_center - plate_l).norm(), 1e-12 * plate_l.norm()) << about_center.transpose();
 }
 
 TEST(Generators, BoxSurfaceFacesOutward) {

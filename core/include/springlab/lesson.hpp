@@ -57,6 +57,8 @@ struct LessonClaim {
     Orders,           // measured convergence orders, and the most accurate method for its cost
     Particles,        // about `about` particles alive at `at`, to within `within` (relative)
     Bursts,           // particles burst: `count` born at once, and at least one such burst
+    InSight,          // never written: the check adds it to every step. Each lane that holds
+                      // keeps its body in the scene camera's 16:9 frame (every view shows it)
   };
   Kind kind = Kind::Holds;
   std::string lane;  // a method or solver name of the step; "" for the first lane

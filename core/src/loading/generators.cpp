@@ -228,6 +228,8 @@ void cloth(ObjectReader& r, const std::string& name, Builder& b) {
   const double bend = r.number("bend", 0.0, non_negative(1e12));
   const double damping = r.number("damping", 0.0, non_negative(1e12));
   const Vec3 velocity = r.vec3("velocity", Vec3::Zero());
+  // A spin about the centre, rad/s, as a box's: a cloth thrown turning, every lane alike.
+  const Vec3 spin = r.vec3("spin", Vec3::Zero());
   const long springs = (W - 1) * H + W * (H - 1) + (shear > 0 ? 2 * (W - 1) * (H - 1) : 0) +
                        (bend > 0 ? (W - 2) * H + W * (H - 2) : 0);
   b.reserve(r, W * H, springs);
@@ -247,9 +249,11 @@ void cloth(ObjectReader& r, const std::string& name, Builder& b) {
   const int first = b.model.particle_count();
   const double node_mass = mass / static_cast<double>(count);
   for (long j = 0; j < H; ++j)
-    for (long i = 0; i < W; ++i)
-      b.particle(origin + across * (double(i) / double(W - 1)) + down * (double(j) / double(H - 1)),
-                 velocity, node_mass, pinned[j * W + i]);
+    for (long i = 0; i < W; ++i) {
+      const Vec3 x =
+          origin + across * (double(i) / double(W - 1)) + down * (double(j) / double(H - 1));
+      b.particle(x, velocity + spin.cross(x - center), node_mass, pinned[j * W + i]);
+    }
 
   const auto node = [&](long i, long j) { return first + static_cast<int>(j * W + i); };
   // Rest lengths from the lattice's spacing, not from the nodes' rounded positions: every spring

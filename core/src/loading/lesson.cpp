@@ -297,6 +297,8 @@ void read_claim_figures(ObjectReader& r, LessonClaim& c, const std::string& name
       c.within = r.number("within", 0.1, json_reader::positive(1.0));
       c.at = r.number("at", step.duration, time);
       break;
+    case K::InSight:  // (never read: not a name a lesson writes)
+      break;
   }
 }
 
@@ -507,6 +509,9 @@ std::string LessonClaim::describe() const {
       return "about " + four_digits(about) + " particles at t = " + four_digits(*at) + " s";
     case K::Bursts:
       return "bursts of " + std::to_string(count) + " particles";
+    case K::InSight:
+      return "every lane that holds in sight: at least half of its free particles in the "
+             "scene's 16:9 frame";
   }
   return "";
 }
