@@ -324,6 +324,7 @@ void draw_shot(gfx::Offscreen& offscreen, Shot& shot, const ui::FrameStats& stat
     ui::OverlayOptions overlay;
     overlay.scale = scale;
     overlay.caption = !panels;
+    overlay.trails = shot.ui.view.trails;
     ui::draw_overlay(session, views, viewport, shot.ui.scene_name, overlay);
   });
   if (faults && ImGui::GetCurrentContext() && ImGui::GetDrawData())

@@ -334,6 +334,7 @@ void draw_app_overlay(const Session& session, const ui::UiState& ui, const ui::F
   overlay.scale = scale * (ui.presentation ? ui::kPresentationScale : 1.0f);
   overlay.caption = !ui.panels;
   overlay.realtime = stats.realtime;
+  overlay.trails = ui.view.trails;
   const draw::Viewport in_window{
       static_cast<int>(viewport.x / to_fb), static_cast<int>(viewport.y / to_fb),
       static_cast<int>(viewport.width / to_fb), static_cast<int>(viewport.height / to_fb)};

@@ -16,6 +16,7 @@
 #include "draw/scene_frame.hpp"
 #include "springlab/text.hpp"
 #include "ui/kind_panels.hpp"
+#include "ui/label_place.hpp"
 
 namespace springlab::ui {
 
@@ -32,6 +33,7 @@ const ImU32 kText = IM_COL32(240, 242, 245, 255), kBack = IM_COL32(10, 12, 14, 1
 
 // The compare legend: each lane's colour, mark, name and its own clock (a lane that diverged
 // stopped). Together: every lane's, top right of the scene. Apart: a view's own, at its top left.
+// Either moves to another corner where that covers less of what the view draws.
 struct Legend {
   std::vector<int> lanes;
   std::vector<std::string> rows;  // wrapped to the room there is
@@ -63,8 +65,12 @@ std::string wrapped(const std::string& text, float width) {
   return wrap_text(text, ImGui::GetFont(), ImGui::GetFontSize(), std::max(width, 1.0f));
 }
 
-Legend legend_of(const app::Session& session, const std::vector<int>& lanes,
-                 const draw::Viewport& viewport, bool right, float scale) {
+// Together, the legend of every lane; apart, a view's title: in the corner of the view that
+// covers least of what it draws (ui/label_place.hpp), clear of `blocked` (the caption).
+Legend legend_of(const app::Session& session, const draw::LaneView& view, bool together,
+                 const std::vector<Box>& blocked, bool trails, float scale) {
+  const std::vector<int>& lanes = view.lanes;
+  const draw::Viewport& viewport = view.viewport;
   const float pad = 10.0f * scale, spacing = ImGui::GetStyle().ItemSpacing.y;
   const float swatch = swatch_width(scale);
   const float room = viewport.width - 2.0f * pad - 12.0f - swatch - 10.0f * scale;
@@ -76,7 +82,7 @@ Legend legend_of(const app::Session& session, const std::vector<int>& lanes,
     // A view's own title says too what it draws of a lane that diverged.
     const std::string row =
         wrapped(app::lane_label(lane) + kind_panels(session.kind()).progress(lane) +
-                    (right ? "" : drawn_as(lane)),
+                    (together ? "" : drawn_as(lane)),
                 room);
     const ImVec2 size = ImGui::CalcTextSize(row.c_str());
     width = std::max(width, size.x);
@@ -85,10 +91,18 @@ Legend legend_of(const app::Session& session, const std::vector<int>& lanes,
     legend.rows.push_back(row);
   }
   const float inner = swatch + 10.0f * scale + width;
-  const float x = right ? viewport.x + viewport.width - pad - inner : viewport.x + pad + 8.0f;
-  legend.at = ImVec2(x, viewport.y + pad);
-  legend.box =
-      ImVec4(legend.at.x - 8, legend.at.y - 4, legend.at.x + inner + 4, legend.at.y + height + 2);
+  using C = Corner;
+  const std::vector<C> order =
+      together ? std::vector<C>{C::TopRight, C::TopLeft, C::BottomRight, C::BottomLeft}
+               : std::vector<C>{C::TopLeft, C::TopRight, C::BottomLeft, C::BottomRight};
+  // (Its background reaches 8 left of the swatch and 4 right of the text, 4 above and 2 below.)
+  const Box corners{viewport.x + pad, viewport.y + pad - 4.0f,
+                    viewport.x + viewport.width - pad + 4.0f,
+                    viewport.y + viewport.height - pad + 2.0f};
+  const Box box = corner_box(corners, inner + 12.0f, height + 6.0f,
+                             drawn_points(session, view, trails), blocked, order);
+  legend.at = ImVec2(box.x0 + 8, box.y0 + 4);
+  legend.box = ImVec4(box.x0, box.y0, box.x1, box.y1);
   return legend;
 }
 
@@ -200,6 +214,7 @@ void draw_overlay(const app::Session& session, const std::vector<draw::LaneView>
                   ImVec2(p.x + p.width + 1.0f, p.y + p.height + 1.0f), kSeparator);
     }
 
+  std::vector<Box> blocked;  // (the caption's, where there is one)
   if (options.caption) {
     char s[320];
     const std::string slow = realtime_text(options.realtime);
@@ -214,6 +229,7 @@ void draw_overlay(const app::Session& session, const std::vector<draw::LaneView>
     dl->AddRectFilled(ImVec2(p.x - 6, p.y - 3), ImVec2(p.x + size.x + 6, p.y + size.y + 3), back,
                       4.0f);
     dl->AddText(p, text, s);
+    blocked.push_back({p.x - 6, p.y - 3, p.x + size.x + 6, p.y + size.y + 3});
   }
 
   // A lane waiting for its stability analysis (its sub-steps are chosen from it).
@@ -234,7 +250,7 @@ void draw_overlay(const app::Session& session, const std::vector<draw::LaneView>
   std::vector<Legend> legends;
   if (session.comparing())
     for (const draw::LaneView& v : views)
-      legends.push_back(legend_of(session, v.lanes, v.viewport, views.size() == 1, scale));
+      legends.push_back(legend_of(session, v, views.size() == 1, blocked, options.trails, scale));
   draw_diverged_labels(dl, session, views, legends, scale);
 
   for (const Legend& legend : legends) draw_legend(session, legend, scale);

@@ -18,6 +18,7 @@ struct OverlayOptions {
   float scale = 1.0f;
   bool caption = false;
   double realtime = 1.0;  // simulated seconds a second of wall time (below 0.95 it is shown)
+  bool trails = true;     // the view draws the trails (the labels keep off them too)
 };
 
 // `views`: the session's (lane_views.hpp), in the same units as `viewport`, the scene's whole

@@ -13,6 +13,7 @@
 #include "springlab/error.hpp"
 #include "support.hpp"
 #include "ui/interaction.hpp"
+#include "ui/label_place.hpp"
 #include "ui/layout.hpp"
 #include "ui/panels.hpp"
 
@@ -234,6 +235,51 @@ TEST(CompareView, ADivergedLaneIsDrawnWithinTheScenesBounds) {
     EXPECT_LE((a - b).head<2>().norm(), 0.25 * v.width);
     EXPECT_LT(line.color_a.a, 0.5f);  // faded
   }
+}
+
+// A view's title goes to the corner that covers least of what the view draws (label_place.hpp).
+// The rope starts along the top of its view, under a title at the top left, and a diverged rope
+// is drawn as it was then: each title of the four lanes, 0.7 of its view wide and 44 pixels high
+// (a diverged lane's title wraps to two lines so), covers none of its rope's points, before and
+// after explicit Euler diverged (its trail, where no corner misses it, may be covered). Both ways:
+// with nothing drawn the title keeps the top left; a box covering the top left (the caption) sends
+// it to the next corner free.
+TEST(CompareView, TitlesKeepOffTheirLanesBodies) {
+  app::Session session = rope_compared(
+      2e-3, {Method::Euler, Method::SymplecticEuler, Method::RK4, Method::ImplicitEuler});
+  const draw::ViewOptions options = draw::ViewOptions::for_scene(session.scene());
+  using C = ui::Corner;
+  const std::vector<C> order = {C::TopLeft, C::TopRight, C::BottomLeft, C::BottomRight};
+  const auto room = [](const draw::Viewport& v) {
+    return ui::Box{v.x + 10.0f, v.y + 6.0f, v.x + v.width - 6.0f, v.y + v.height - 8.0f};
+  };
+  int covered_at_top_left = 0;
+  for (const int frames : {0, 150}) {
+    for (int k = 0; k < frames; ++k) session.advance_frame();
+    if (frames > 0) ASSERT_TRUE(session.lanes()[0].sim.diverged());
+    // (The scene's place at 1280 x 720 with the panels.)
+    const auto views = draw::lane_views(session, options.camera, draw::CompareLayout::Apart,
+                                        draw::Viewport{376, 0, 904, 473});
+    for (const draw::LaneView& view : views) {
+      const ui::Drawn drawn = ui::drawn_points(session, view, true);
+      const std::vector<Eigen::Vector2f>& points = drawn.body;
+      ASSERT_GT(points.size(), 60u);
+      const float wide = 0.7f * view.viewport.width;
+      const ui::Box box = ui::corner_box(room(view.viewport), wide, 44.0f, drawn, {}, order);
+      EXPECT_EQ(std::count_if(points.begin(), points.end(), [&](auto& p) { return box.holds(p); }),
+                0)
+          << "frame " << frames << ", lane " << view.lanes.front();
+      const ui::Box top_left = ui::corner_box(room(view.viewport), wide, 44.0f, {}, {}, order);
+      covered_at_top_left +=
+          std::any_of(points.begin(), points.end(), [&](auto& p) { return top_left.holds(p); });
+    }
+  }
+  EXPECT_GT(covered_at_top_left, 0);  // (the old place: over a rope)
+  const ui::Box whole{0, 0, 1000, 600};
+  const ui::Box first = ui::corner_box(whole, 200, 40, {}, {}, order);
+  EXPECT_TRUE(first.x0 == 0 && first.y0 == 0);
+  const ui::Box next = ui::corner_box(whole, 200, 40, {}, {{0, 0, 50, 50}}, order);
+  EXPECT_TRUE(next.x1 == 1000 && next.y0 == 0);
 }
 
 // A press in a lane's view picks that lane's particle where that lane has it (the lanes have
