@@ -159,9 +159,10 @@ void axis_range(const Chart& chart, bool x_axis, double& lo, double& hi) {
   }
   if (hi - lo < 1e-12 * std::max(1.0, std::abs(hi))) {
     // No spread: around the value, or -1 to 1 around zero or round-off (a chart's first sample,
-    // at t = 0, of a scene at rest: its energy 1e-27 J would make ticks of 1e-27).
+    // at t = 0, of a scene at rest: its energy 1e-27 J would make ticks of 1e-27). Along x from
+    // a value not below 0 onwards: a clock's first sample, t = 0, with no time before it.
     const double pad = std::abs(hi) > 1e-6 ? 0.5 * std::abs(hi) : 1.0;
-    lo -= pad;
+    if (!(x_axis && lo >= 0.0)) lo -= pad;
     hi += pad;
   }
   // A little room above and below the data.

@@ -41,10 +41,13 @@ std::vector<LaneView> lane_views(const app::Session& session, const Camera& came
   const int n = static_cast<int>(session.lanes().size());
   std::vector<LaneView> views;
   if (n <= 1 || layout == CompareLayout::Together || viewport.width <= 0 || viewport.height <= 0) {
+    // (Framed too: a small laptop's or a phone's scene, narrower than 16:9, cut the rope's end.)
     LaneView v;
     v.viewport = viewport;
-    v.camera = camera;
-    v.view = view_camera(camera, std::max(1, viewport.width), std::max(1, viewport.height));
+    v.camera = viewport.width > 0 && viewport.height > 0
+                   ? framed(camera, static_cast<double>(viewport.width) / viewport.height)
+                   : camera;
+    v.view = view_camera(v.camera, std::max(1, viewport.width), std::max(1, viewport.height));
     for (int k = 0; k < n; ++k) v.lanes.push_back(k);
     views.push_back(std::move(v));
     return views;

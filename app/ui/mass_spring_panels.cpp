@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <string_view>
 
@@ -223,18 +224,26 @@ void parameters(app::Session& session, UiState& ui, bool touch, bool presenting)
 // The mass-spring kind's strip tail: the method and dt (the strip is the touch layouts' own).
 void mass_spring_strip(app::Session& session, UiState& ui, float button) {
   ImGui::SameLine();
-  // The method's combo takes what the dt slider leaves: at least its two buttons and a
-  // button's width of slider (a phone's row: they ran off its right edge).
+  // The method's combo takes what the dt slider leaves: at least its two buttons and room for
+  // its value's text (a phone's row: they ran off its right edge; then "dt 0.0" was cut).
   const float left = ImGui::GetContentRegionAvail().x;
-  const float dt_least =
-      3.0f * button + 2.0f * ImGui::GetStyle().ItemInnerSpacing.x + ImGui::GetStyle().ItemSpacing.x;
+  double dt = session.primary().sim.settings().dt;
+  char shown[32];
+  std::snprintf(shown, sizeof shown, "dt %.3g", dt);
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float dt_least = 2.0f * button + ImGui::CalcTextSize(shown).x +
+                         2.0f * style.FramePadding.x + 2.0f * style.ItemInnerSpacing.x +
+                         style.ItemSpacing.x;
   ImGui::SetNextItemWidth(std::max(button, std::min(0.45f * left, left - dt_least)));
   row_picker(session, "##method", false);
   ImGui::SameLine();
-  double dt = session.primary().sim.settings().dt;
   ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x);
+  // (Its value alone where "dt" and the value would not fit between the - and + buttons.)
+  const float inside = ImGui::GetContentRegionAvail().x -
+                       2.0f * (button + style.ItemInnerSpacing.x) - 2.0f * style.FramePadding.x;
+  const char* format = ImGui::CalcTextSize(shown).x <= inside ? "dt %.3g" : "%.3g";  // symbols
   if (slider("##dt", dt, ui.ranges.dt / 100, std::min(1.0, std::max(0.1, ui.ranges.dt * 100)), true,
-             true, "dt %.3g"))  // symbols
+             true, format))
     session.set_dt(dt);
 }
 

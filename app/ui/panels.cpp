@@ -132,6 +132,7 @@ void strip(app::Session& session, UiState& ui, const PanelLayout& layout) {
 
 // The scene's picker and the lessons' (a choice is a request, taken after the frame).
 void pickers(const UiState& ui, Requests& requests) {
+  if (!ui.scenes.empty()) widest_beside(tr("scene"));
   if (!ui.scenes.empty() && ImGui::BeginCombo(tr("scene"), ui.scene_name.c_str())) {
     for (const std::string& name : ui.scenes)
       if (ImGui::Selectable(name.c_str(), name == ui.scene_name)) requests.load = name;
@@ -139,10 +140,13 @@ void pickers(const UiState& ui, Requests& requests) {
   }
   // The lessons: the lecture, step by step (the band across the top then leads).
   if (!ui.lessons.empty()) {
-    std::string current = tr("(none: explore freely)");
-    // (Its number and title where they fit the box, else "4 of 13": never a title cut mid-word.)
+    // (Its number and title where they fit the box, else "4 of 13": never a title cut mid-word;
+    // and "(none)" where "(none: explore freely)" would be cut.)
+    widest_beside(tr("lesson"));
     const float room =
         ImGui::CalcItemWidth() - ImGui::GetFrameHeight() - 2.0f * ImGui::GetStyle().FramePadding.x;
+    std::string current = tr("(none: explore freely)");
+    if (ImGui::CalcTextSize(current.c_str()).x > room) current = tr("(none)");
     for (std::size_t k = 0; k < ui.lessons.size(); ++k)
       if (ui.lessons[k].first == ui.lesson) {
         current = std::to_string(k + 1) + "  " + tr(ui.lessons[k].second);
@@ -152,6 +156,7 @@ void pickers(const UiState& ui, Requests& requests) {
           current = s;
         }
       }
+    widest_beside(tr("lesson"));
     if (ImGui::BeginCombo(tr("lesson"), current.c_str())) {
       if (ImGui::Selectable(tr("(none: explore freely)"), ui.lesson.empty())) requests.lesson = "";
       for (std::size_t k = 0; k < ui.lessons.size(); ++k) {
@@ -264,6 +269,7 @@ void tools(app::Session& session, UiState& ui, const FrameStats& stats, float sc
     const auto& all = app::languages();
     const auto shown =
         std::find_if(all.begin(), all.end(), [&](const app::Language& l) { return now == l.tag; });
+    widest_beside(tr("language"));
     if (ImGui::BeginCombo(tr("language"), shown == all.end() ? now.c_str() : shown->name.c_str())) {
       for (const app::Language& l : all)
         if (ImGui::Selectable(l.name.c_str(), now == l.tag) && now != l.tag)

@@ -13,15 +13,19 @@ namespace springlab::ui {
 
 // Glyphs drawn one after another on one line: a label, a number, a line of a paragraph.
 struct TextRun {
-  std::string text;        // UTF-8, its spaces where the pen moved on between glyphs
-  ImVec4 box{0, 0, 0, 0};  // x0, y0, x1, y1: its glyphs' bounds
-  std::vector<ImVec4> glyphs;
-  ImVec4 clip{0, 0, 0, 0};  // the rectangle its widget clips it to
-  int list = 0;             // its draw list's place in the draw data
+  std::string text;            // UTF-8, its spaces where the pen moved on between glyphs
+  ImVec4 box{0, 0, 0, 0};      // x0, y0, x1, y1: its glyphs' bounds
+  std::vector<ImVec4> glyphs;  // whole, a glyph drawn cut on the CPU as it would be uncut
+  bool cut = false;            // a glyph drawn cut on the CPU (its widget's own clip)
+  ImVec4 clip{0, 0, 0, 0};     // the rectangle its widget clips it to
+  int list = 0;                // its draw list's place in the draw data
 };
 
 // The glyph quads of every draw list, told from other shapes by their texture coordinates (each
-// glyph's own corner of the font atlas), in drawing order, grouped into runs.
+// glyph's own corner of the font atlas, or a part of it: a glyph Dear ImGui cut to a widget's
+// own clip on the CPU, a combo's preview or a clipped label), in drawing order, grouped into runs.
+// A glyph wholly past such a clip is not drawn at all and leaves no trace: a preview cut between
+// two glyphs cannot be seen here (widest_beside, ui/widgets.hpp, gives the combos their room).
 std::vector<TextRun> text_runs(const ImDrawData& data, const ImFontAtlas& fonts);
 
 // What the windows do to the text under and in them, from the current Dear ImGui context: where

@@ -52,10 +52,26 @@ bool slider(const char* label, double& value, double lo, double hi, bool log, bo
   return changed;
 }
 
+void widest_beside(const char* label) {
+  const std::string_view shown =
+      std::string_view(label).substr(0, std::string_view(label).find("##"));
+  if (shown.empty()) return;
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemInnerSpacing.x -
+                          ImGui::CalcTextSize(shown.data(), shown.data() + shown.size()).x);
+}
+
 void row_picker(app::Session& session, const char* label, bool coloured) {
   if (session.comparing()) return;
   const app::SceneKind& kind = session.kind();
-  if (!ImGui::BeginCombo(label, app::lane_label(session.primary()).c_str())) return;
+  widest_beside(label);
+  // Its label, or where that does not fit the box (a small laptop's panel), its short name
+  // ("heun-wrong" for "Heun, one entry wrong"), never a label cut.
+  const float room =
+      ImGui::CalcItemWidth() - ImGui::GetFrameHeight() - 2.0f * ImGui::GetStyle().FramePadding.x;
+  std::string preview = app::lane_label(session.primary());
+  if (ImGui::CalcTextSize(preview.c_str()).x > room)
+    preview = std::string(app::lane_row(session.primary()).name);
+  if (!ImGui::BeginCombo(label, preview.c_str())) return;
   const int chosen = session.chosen();
   for (int k = 0; k < kind.row_count(); ++k) {
     const app::LaneRow row = kind.row(k);

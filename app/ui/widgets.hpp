@@ -21,8 +21,12 @@ inline const ImVec4 kSafe = v4(kSafeText), kNear = v4(kNearText), kBeyond = v4(k
 // A slider of a double; on a touch layout (`touch`: no hover, thumbs) with - and + beside it.
 bool slider(const char* label, double& value, double lo, double hi, bool log, bool touch,
             const char* format = "%.3g");
+// The next combo's width: all the row leaves beside its label (a short label such as "method"
+// need not keep the 130 units the sliders' longer labels do: a preview cut there loses its end
+// silently, "Heun, one entry wron"). A label "##..." shows nothing and leaves the width as set.
+void widest_beside(const char* label);
 // The single lane's row (a method, a solver): its number key and label, in its colour; nothing
-// while comparing. `label`: the combo's ("##method": none shown).
+// while comparing. `label`: the combo's ("##method": none shown; its width as the caller set).
 void row_picker(app::Session& session, const char* label, bool coloured);
 // Pause, step, reset.
 void transport(app::Session& session);

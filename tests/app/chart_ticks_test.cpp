@@ -45,6 +45,27 @@ TEST(ChartTicks, LogMinorTicksLabelTwoAndFiveOnShortAxes) {
   EXPECT_EQ(labelled, (std::vector<std::string>{"2", "20", "5", "50"}));
 }
 
+// A chart's first sample, at t = 0: its time axis runs forward from 0 (it showed -1 to 1 s, a
+// time before the scene began), and its value axis around the value either way.
+TEST(ChartTicks, AFirstSampleAtTimeZeroHasNoTimeBeforeIt) {
+  Chart chart;
+  Series s;
+  s.x = {0.0};
+  s.y = {-30.0};
+  chart.series.push_back(s);
+  double lo = 0, hi = 0;
+  axis_range(chart, true, lo, hi);
+  EXPECT_GE(lo, -0.05 * (hi - lo) - 1e-12);  // (the room beside the data: 5 %)
+  EXPECT_GE(hi, 1.0);
+  axis_range(chart, false, lo, hi);
+  EXPECT_LT(lo, -30.0);
+  EXPECT_GT(hi, -30.0);
+  chart.series[0].x = {-2.0};  // (a value axis below 0 keeps both sides)
+  axis_range(chart, true, lo, hi);
+  EXPECT_LT(lo, -2.0);
+  EXPECT_GT(hi, -2.0);
+}
+
 // A narrow chart (a phone, a panel on the side) keeps its x labels apart: as many ticks as fit,
 // never two labels running together, and all five where there is room.
 TEST(ChartTicks, XLabelsNeverRunTogether) {
