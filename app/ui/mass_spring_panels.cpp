@@ -229,7 +229,7 @@ void mass_spring_strip(app::Session& session, UiState& ui, float button) {
   const float left = ImGui::GetContentRegionAvail().x;
   double dt = session.primary().sim.settings().dt;
   char shown[32];
-  std::snprintf(shown, sizeof shown, "dt %.3g", dt);
+  std::snprintf(shown, sizeof shown, "dt %.3g", dt);  // symbols
   const ImGuiStyle& style = ImGui::GetStyle();
   const float dt_least = 2.0f * button + ImGui::CalcTextSize(shown).x +
                          2.0f * style.FramePadding.x + 2.0f * style.ItemInnerSpacing.x +
