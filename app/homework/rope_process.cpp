@@ -83,7 +83,11 @@ void RopeProcess::failed(const std::string& doing, const std::string& error,
   else
     what = ended_text(doing, child_ ? child_->wait() : "");
   const std::string printed = last_lines(output_, 3);
-  if (!printed.empty()) what += printed_text(printed);
+  // (A check of the standard library's that stopped it: said plainly, instead of its own words.)
+  if (const std::string check = library_check_text(printed); !check.empty())
+    what = doing + " " + check;
+  else if (!printed.empty())
+    what += printed_text(printed);
   child_.reset();  // the next call starts afresh
   throw CodeFailure(what);
 }

@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "chart/chart_text.hpp"
+#include "chart/text_wrap.hpp"
 #include "homework/own_lanes.hpp"
 #include "platform/interactive_app.hpp"
 #include "springlab/error.hpp"
@@ -112,13 +113,16 @@ void browser_controls(Page& page) {
     copy_to_clipboard(page.link);
     set_page_link(page.link);
   }
-  ImGui::SameLine();
+  const ImGuiStyle& style = ImGui::GetStyle();
+  ui::same_line_if_fits(ImGui::CalcTextSize(tr("Open file...")).x + 2.0f * style.FramePadding.x);
   if (ImGui::Button(tr("Open file..."))) choose_scene_file();
-  ImGui::SameLine();
   static constexpr double kScales[] = {0.75, 1.0, 1.25, 1.5, 2.0, 2.5, 3.0};
   char current[16];
   std::snprintf(current, sizeof current, tr("UI %g"), page.ui_scale);
-  ImGui::SetNextItemWidth(ImGui::CalcTextSize(tr("UI 1.25")).x + ImGui::GetFrameHeight() * 1.6f);
+  // (On the next line where the row has no room for it: a small laptop's panel cut it.)
+  const float scale_width = ImGui::CalcTextSize(tr("UI 1.25")).x + ImGui::GetFrameHeight() * 1.6f;
+  ui::same_line_if_fits(scale_width);
+  ImGui::SetNextItemWidth(scale_width);
   if (ImGui::BeginCombo("##ui-scale", current)) {
     for (double s : kScales) {
       char item[16];

@@ -81,6 +81,11 @@ std::string timed_out_text(const std::string& call, double seconds);
 std::string ended_text(const std::string& call, const std::string& how);
 /// "; it printed: ..." after any of them, where the code printed something.
 std::string printed_text(const std::string& printed);
+/// What a check of the C++ standard library (the checker builds with _GLIBCXX_ASSERTIONS) that
+/// stopped the code says, in a sentence: "read or wrote a std::vector at an index not below its
+/// size() ..." for libstdc++'s "Assertion '__n < this->size()' failed"; "" where `printed` holds
+/// none.
+std::string library_check_text(const std::string& printed);
 
 /// The student's code, wherever it runs. Every call may throw CodeFailure.
 class RopeCode {

@@ -16,6 +16,7 @@
 //   SPRING_NOT_IN_ROPE    each spring made to a Mass of its own, not the rope's
 //   PINS_BEFORE_MASSES    the skeleton's pin loop left before the masses are made
 //   PINS_NONE             the skeleton's pin loop left commented out
+//   PINS_AS_FLAGS         pinned_nodes read as a flag per node: pinned_nodes[i] past its end
 //   DUPLICATE_SPRINGS     every spring made twice
 //   END_MASS_MISSING      the last mass made for its spring but never put in masses
 //   NULL_MASS             masses sized first, the first slot never filled (a null pointer)
@@ -93,7 +94,10 @@ Rope::Rope(Vector2D start, Vector2D end, int num_nodes, float node_mass, float k
 #ifdef DUPLICATE_SPRINGS
   for (int i = 0; i + 1 < num_nodes; ++i) springs.push_back(new Spring(masses[i], masses[i + 1], k));
 #endif
-#if !defined(PINS_BEFORE_MASSES) && !defined(PINS_NONE) && !defined(NULL_MASS)
+#if defined(PINS_AS_FLAGS)
+  for (int i = 0; i < num_nodes; ++i)
+    if (pinned_nodes[i]) masses[i]->pinned = true;
+#elif !defined(PINS_BEFORE_MASSES) && !defined(PINS_NONE) && !defined(NULL_MASS)
   for (auto& i : pinned_nodes) masses[i]->pinned = true;
 #endif
 }
@@ -214,7 +218,7 @@ void Rope::simulateVerlet(float delta_t, Vector2D gravity) {
   }
 #endif
 #ifdef CRASH
-  Mass* far = masses[masses.size() + (1 << 28)];
+  Mass* far = *(masses.data() + masses.size() + (1 << 28));  // (past the library's check: a pointer)
   far->position = Vector2D(1, 1);
 #endif
 #ifdef PRINTS

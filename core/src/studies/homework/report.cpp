@@ -54,6 +54,27 @@ std::string printed_text(const std::string& printed) {
   return format_text(tr("; it printed: %s"), printed.c_str());
 }
 
+std::string library_check_text(const std::string& printed) {
+  // libstdc++'s own words (_GLIBCXX_ASSERTIONS): "...stl_vector.h:1123: ... operator[](size_type)
+  // [with ...]: Assertion '__n < this->size()' failed."
+  const std::size_t at = printed.find("Assertion '");
+  if (at == std::string::npos || printed.find("/c++/") == std::string::npos) return "";
+  const std::size_t end = printed.find("' failed", at);
+  const std::string check =
+      printed.substr(at + 11, end == std::string::npos ? std::string::npos : end - at - 11);
+  if (check == "__n < this->size()")
+    return tr(
+        "read or wrote a std::vector at an index not below its size() (the standard "
+        "library's bounds check, on in the checker, stopped it: without it the read is "
+        "whatever lies past the end)");
+  if (check == "!this->empty()")
+    return tr(
+        "called front(), back() or pop_back() on an empty std::vector (the standard "
+        "library's check, on in the checker, stopped it)");
+  return format_text(tr("failed a check of the standard library's, on in the checker: %s"),
+                     check.c_str());
+}
+
 std::string step_text(double h) {
   const double inverse = 1.0 / h;
   if (inverse >= 2.0 && inverse == std::round(inverse) && inverse < 1e9)
