@@ -199,8 +199,10 @@ Windows windows_of(const ImDrawData& data) {
   return out;
 }
 
-std::vector<std::string> text_faults(const std::vector<TextRun>& all, const Windows& windows) {
-  // What is seen: each run's glyphs not under a window drawn after it.
+namespace {
+
+// What is seen: each run's glyphs not under a window drawn after it.
+std::vector<TextRun> seen_runs(const std::vector<TextRun>& all, const Windows& windows) {
   std::vector<TextRun> runs;
   for (const TextRun& run : all) {
     TextRun seen = run;
@@ -221,6 +223,13 @@ std::vector<std::string> text_faults(const std::vector<TextRun>& all, const Wind
                         std::max(seen.box.z, g.z), std::max(seen.box.w, g.w));
     runs.push_back(std::move(seen));
   }
+  return runs;
+}
+
+}  // namespace
+
+std::vector<std::string> text_faults(const std::vector<TextRun>& all, const Windows& windows) {
+  const std::vector<TextRun> runs = seen_runs(all, windows);
   const std::vector<ImVec4>& scrolling = windows.scrolling;
   std::vector<std::string> faults;
   char s[400];
