@@ -1,5 +1,6 @@
 // The text-fit check (ui/text_fit.hpp) on frames drawn here with Dear ImGui, no GL: it reads the
-// text back from the draw lists, finds text over text, text cut by its widget and text shortened,
+// text back from the draw lists, finds text over text, text cut by its widget (on the GPU by its
+// clip, or on the CPU glyph by glyph) and text shortened,
 // and says nothing of text that fits, of a row half in view in a window that scrolls, and of text
 // hidden under a window drawn over it. Every golden frame is checked with it by
 // TextFit.EveryGoldenFrameInBothLanguages (tests/golden/golden_test.cpp).
@@ -99,6 +100,45 @@ TEST(TextFit, FindsTextCutByItsWidget) {
     ImGui::End();
   });
   EXPECT_TRUE(has(c.faults, "is cut at its right")) << joined(c.faults);
+}
+
+// A glyph Dear ImGui cuts on the CPU to a widget's own clip (a combo's preview, AddText with a
+// clip rectangle) keeps only part of its corner of the atlas: it is read back all the same and
+// said cut. Both ways: the clip through the middle of a glyph is found; a clip past the text's end,
+// none; a clip exactly between two glyphs drops the second whole and leaves no trace (said in
+// text_fit.hpp), so it is not found.
+TEST(TextFit, FindsAGlyphCutOnTheCpu) {
+  const char* text = "Heun, one entry wrong";
+  const auto clipped_at = [text](float right) {
+    return check([text, right] {
+      const ImVec4 clip(100, 100, right, 140);
+      ImGui::GetForegroundDrawList()->AddText(ImGui::GetFont(), ImGui::GetFontSize(),
+                                              ImVec2(100, 110), IM_COL32_WHITE, text, nullptr, 0.0f,
+                                              &clip);
+    });
+  };
+  // Where the pen stands before the 'g', and the ink of the 'n' before it and of the 'g'.
+  float pen = 0, n_ink_end = 0, g_ink_start = 0, g_ink_end = 0;
+  check([&] {
+    const ImFont* font = ImGui::GetFont();
+    pen = 100 + ImGui::CalcTextSize("Heun, one entry wron").x;
+    const ImFontGlyph* n = font->FindGlyph('n');
+    const ImFontGlyph* g = font->FindGlyph('g');
+    n_ink_end = pen - n->AdvanceX + n->X1;
+    g_ink_start = pen + g->X0;
+    g_ink_end = pen + g->X1;
+  });
+  const Checked cut = clipped_at(0.5f * (g_ink_start + g_ink_end));
+  EXPECT_TRUE(has(cut.faults, "'Heun, one entry wrong' is cut by its widget's own edge"))
+      << joined(cut.faults) << joined(cut.texts);
+  const Checked fits = clipped_at(g_ink_end + 20);
+  EXPECT_TRUE(fits.faults.empty()) << joined(fits.faults);
+  EXPECT_TRUE(has(fits.texts, text)) << joined(fits.texts);
+  if (n_ink_end < g_ink_start - 0.5f) {  // (a gap between the two: the 'g' dropped whole)
+    const Checked between = clipped_at(0.5f * (n_ink_end + g_ink_start));
+    EXPECT_TRUE(between.faults.empty()) << joined(between.faults);
+    EXPECT_TRUE(has(between.texts, "Heun, one entry wron")) << joined(between.texts);
+  }
 }
 
 TEST(TextFit, FindsTextShortenedWithAnEllipsis) {
