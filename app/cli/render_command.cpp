@@ -303,9 +303,9 @@ void draw_shot(gfx::Offscreen& offscreen, Shot& shot, const ui::FrameStats& stat
   Session& session = *shot.session;
   if (shot.band)
     shot.ui.band = ui::lesson_band_height(*shot.band, static_cast<float>(width), scale);
-  shot.ui.comparing = session.comparing();
-  const draw::Viewport viewport = panels || shot.band ? ui::scene_viewport(shot.ui, width, height)
-                                                      : draw::Viewport{0, 0, width, height};
+  const draw::Viewport viewport = panels || shot.band
+                                      ? ui::scene_viewport(shot.ui, session, width, height)
+                                      : draw::Viewport{0, 0, width, height};
   const std::vector<draw::LaneView> views =
       draw::lane_views(session, shot.ui.view.camera, shot.ui.view.compare_layout, viewport);
   std::vector<draw::Frame> pictures;
@@ -316,7 +316,7 @@ void draw_shot(gfx::Offscreen& offscreen, Shot& shot, const ui::FrameStats& stat
     if (panels) ui::draw_panels(session, shot.ui, stats, width, height);
     if (shot.accuracy)  // where the layout puts it, as in the app's lesson
       ui::draw_compare_panel(*shot.accuracy, session, scale,
-                             ui::accuracy_rect(shot.ui, width, height), width, height);
+                             ui::accuracy_rect(shot.ui, session, width, height), width, height);
     if (shot.band) {
       shot.band->elapsed = session.simulated_target() / session.speed();  // (as the app's)
       ui::draw_lesson_band(*shot.band, static_cast<float>(width), scale);

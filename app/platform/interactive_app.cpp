@@ -317,8 +317,8 @@ void draw_app_charts(ui::UiState& ui, ui::ComparePanel& accuracy, ui::TableauPan
                      int win_w, int win_h) {
   accuracy.open = ui.accuracy;
   accuracy.sweep.advance();  // (without threads: the sweep's next pieces; else nothing)
-  ui::draw_compare_panel(accuracy, session, scale, ui::accuracy_rect(ui, win_w, win_h), win_w,
-                         win_h);
+  ui::draw_compare_panel(accuracy, session, scale, ui::accuracy_rect(ui, session, win_w, win_h),
+                         win_w, win_h);
   ui.accuracy = accuracy.open;
   tableau.open = ui.tableau;
   ui::draw_tableau_panel(tableau, session, tableaux, scale);
@@ -351,10 +351,9 @@ void InteractiveApp::frame(const FrameSize& size) {
   const double to_fb = static_cast<double>(size.fb_width) / std::max(1, win_w);
   // The lesson's band as tall as its caption needs at this width.
   if (lesson_) ui_.band = ui::lesson_band_height(band(), static_cast<float>(win_w), ui_.scale);
-  ui_.comparing = session_->comparing();
 
   // The scene's part of the framebuffer (the panels' layout is in window units).
-  draw::Viewport viewport = ui::scene_viewport(ui_, win_w, win_h);
+  draw::Viewport viewport = ui::scene_viewport(ui_, *session_, win_w, win_h);
   viewport = {static_cast<int>(viewport.x * to_fb), static_cast<int>(viewport.y * to_fb),
               static_cast<int>(viewport.width * to_fb), static_cast<int>(viewport.height * to_fb)};
   // What the class changes (a drag, a slider, a key) interrupts a lesson: compared around the

@@ -98,17 +98,18 @@ PanelLayout panels_by_kind(const UiState& ui, int width, int height) {
 //   compare mode                the same, less a column on the left where the lanes stack (the
 //                               chart over them hid every lane); Upright, where the height allows
 //                               both, a row above it.
-void place_accuracy(PanelLayout& out, const UiState& ui, float W, float H, float s) {
-  if (!ui.accuracy || (ui.lesson.empty() && !ui.comparing && !out.touch)) return;
+void place_accuracy(PanelLayout& out, const UiState& ui, bool comparing, float W, float H,
+                    float s) {
+  if (!ui.accuracy || (ui.lesson.empty() && !comparing && !out.touch)) return;
   const float foot =
       out.strip.empty() || out.strip.y <= static_cast<float>(out.scene.y) ? H : out.strip.y;
   float x = static_cast<float>(out.scene.x), y = static_cast<float>(out.scene.y);
-  if (ui.comparing && out.kind == LayoutKind::Upright && foot - y >= 600.0f * s) {
+  if (comparing && out.kind == LayoutKind::Upright && foot - y >= 600.0f * s) {
     // The lanes above in 2 of 5 (at least 240 units; a chart needs the 360 under them).
     const int above = static_cast<int>(0.4f * (foot - y));
     out.scene = {out.scene.x, out.scene.y, out.scene.width, above};
     y += static_cast<float>(above);
-  } else if (ui.comparing && out.kind != LayoutKind::Upright) {
+  } else if (comparing && out.kind != LayoutKind::Upright) {
     // A third of the width: stacked, 2 to 4 lanes of 16:9 are as large as in a row above a
     // chart of the same size, and the chart keeps its width.
     const int column = static_cast<int>(std::round((W - x) / 3.0f));
@@ -122,10 +123,10 @@ void place_accuracy(PanelLayout& out, const UiState& ui, float W, float H, float
 
 }  // namespace
 
-PanelLayout panel_layout(const UiState& ui, int width, int height) {
+PanelLayout panel_layout(const UiState& ui, bool comparing, int width, int height) {
   PanelLayout out = panels_by_kind(ui, width, height);
   const float s = ui.scale * (ui.presentation ? kPresentationScale : 1.0f);
-  place_accuracy(out, ui, static_cast<float>(width), static_cast<float>(height), s);
+  place_accuracy(out, ui, comparing, static_cast<float>(width), static_cast<float>(height), s);
   return out;
 }
 

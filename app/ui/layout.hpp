@@ -38,8 +38,9 @@ struct PanelLayout {
 };
 
 // The layout of a width x height window (pixels) for the UI's state: its scale, whether the
-// panels are shown, presentation mode, the band's height, the sheet or strip opened or folded.
-PanelLayout panel_layout(const UiState& ui, int width, int height);
+// panels are shown, presentation mode, the band's height, the sheet or strip opened or folded;
+// and whether the session compares lanes (they keep a column beside the accuracy chart).
+PanelLayout panel_layout(const UiState& ui, bool comparing, int width, int height);
 LayoutKind layout_kind(float width_units, float height_units);
 
 }  // namespace springlab::ui

@@ -87,12 +87,13 @@ float layout_scale(const UiState& ui) {
 }
 }  // namespace
 
-draw::Viewport scene_viewport(const UiState& ui, int width, int height) {
-  return panel_layout(ui, width, height).scene;
+draw::Viewport scene_viewport(const UiState& ui, const app::Session& session, int width,
+                              int height) {
+  return panel_layout(ui, session.comparing(), width, height).scene;
 }
 
-Rect accuracy_rect(const UiState& ui, int width, int height) {
-  return panel_layout(ui, width, height).accuracy;
+Rect accuracy_rect(const UiState& ui, const app::Session& session, int width, int height) {
+  return panel_layout(ui, session.comparing(), width, height).accuracy;
 }
 
 namespace {
@@ -360,7 +361,7 @@ void divergence_window(app::Session& session, const UiState& ui, float scale, in
     // the panel's lane line says the divergence in red).
     const bool lesson = ui.band > 0.0f;
     if (lesson && ui.accuracy) return;
-    const draw::Viewport scene = scene_viewport(ui, width, height);
+    const draw::Viewport scene = scene_viewport(ui, session, width, height);
     if (lesson)
       ImGui::SetNextWindowPos(
           ImVec2(scene.x + 0.5f * scene.width, static_cast<float>(scene.y + scene.height) - pad),
@@ -455,7 +456,7 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
   if (large) ImGui::PushFont(io.Fonts->Fonts[1]);
   const float scale = layout_scale(ui);
   const bool presenting = ui.presentation;
-  const PanelLayout layout = panel_layout(ui, width, height);
+  const PanelLayout layout = panel_layout(ui, session.comparing(), width, height);
   // A thumb's targets: frames at least 44 units high (Apple's guideline; Material's is 48 dp).
   if (layout.touch) {
     const float frame_pad =

@@ -60,8 +60,6 @@ struct UiState {
   bool presentation = false;      // P: for a projector
   bool region = false;            // G: the stability region
   bool tableau = false;           // Y: your method (a tableau typed in)
-  bool comparing = false;         // the session's, copied at each frame's start: compare mode's
-                                  // lanes keep a column beside the accuracy chart (ui/layout.hpp)
   bool sheet_open = false;        // Upright (ui/layout.hpp): the controls' sheet opened
   std::optional<bool> side_open;  // Side: the controls unfolded (unset: unless a lesson is taught)
   draw::ViewOptions view;
@@ -96,10 +94,11 @@ Requests draw_panels(app::Session& session, UiState& ui, const FrameStats& stats
                      int height);
 
 // The part of a width x height framebuffer the panels leave to the scene.
-draw::Viewport scene_viewport(const UiState& ui, int width, int height);
+draw::Viewport scene_viewport(const UiState& ui, const app::Session& session, int width,
+                              int height);
 
 // Where the accuracy chart goes (ui/layout.hpp: place_accuracy); empty where it floats.
-Rect accuracy_rect(const UiState& ui, int width, int height);
+Rect accuracy_rect(const UiState& ui, const app::Session& session, int width, int height);
 
 // The methods ticked for compare mode, in table order (at most four).
 std::vector<Method> compare_methods(const UiState& ui);

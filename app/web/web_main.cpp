@@ -163,7 +163,8 @@ void frame() {
   page.homework.poll(page.app->session(), page.homework_status);
   page.app->frame(size);
   page.frame_ms = emscripten_get_now() - start;
-  page.scene = ui::scene_viewport(page.app->ui(), size.win_width, size.win_height);
+  page.scene =
+      ui::scene_viewport(page.app->ui(), page.app->session(), size.win_width, size.win_height);
   page.win_width = size.win_width;
   page.win_height = size.win_height;
   if (page.app->take_opened()) page.sets.clear();  // another scene, opened as its file says

@@ -101,10 +101,10 @@ TEST(CompareView, TheAccuracyChartLeavesEveryLaneInSight) {
     for (const float band : {0.0f, 120.0f}) {
       if (height < 500 && band > 0.0f) continue;  // (a phone on its side: the band folds)
       ui::UiState ui;
-      ui.accuracy = ui.comparing = true;
+      ui.accuracy = true;
       ui.band = band;
       if (band > 0.0f) ui.lesson = "homework-8";
-      const ui::PanelLayout layout = ui::panel_layout(ui, width, height);
+      const ui::PanelLayout layout = ui::panel_layout(ui, true, width, height);
       const std::string at = std::to_string(width) + "x" + std::to_string(height) + ", band " +
                              std::to_string(static_cast<int>(band));
       const ui::Rect& chart = layout.accuracy;
@@ -127,13 +127,13 @@ TEST(CompareView, TheAccuracyChartLeavesEveryLaneInSight) {
   ui.accuracy = true;
   ui.lesson = "rk4-work-precision";
   ui.band = 120.0f;
-  const ui::PanelLayout lesson = ui::panel_layout(ui, 1280, 720);
+  const ui::PanelLayout lesson = ui::panel_layout(ui, false, 1280, 720);
   EXPECT_TRUE(lesson.charts.empty());
   EXPECT_GE(lesson.accuracy.w, 0.9f * lesson.scene.width);
   EXPECT_GE(lesson.accuracy.h + 16.0f, 720.0f - 120.0f);
   ui.lesson.clear();
   ui.band = 0.0f;
-  const ui::PanelLayout own = ui::panel_layout(ui, 1280, 720);
+  const ui::PanelLayout own = ui::panel_layout(ui, false, 1280, 720);
   EXPECT_TRUE(own.accuracy.empty());
   EXPECT_FALSE(own.charts.empty());
 }

@@ -188,7 +188,7 @@ TEST(Interaction, KeyboardActionsDoWhatTheHelpSays) {
   EXPECT_FALSE(session.comparing());
   perform(Action::TogglePanels, session, ui);
   EXPECT_FALSE(ui.panels);
-  EXPECT_EQ(scene_viewport(ui, 1280, 720).width, 1280);
+  EXPECT_EQ(scene_viewport(ui, session, 1280, 720).width, 1280);
   perform(Action::ToggleHelp, session, ui);
   EXPECT_TRUE(ui.help);
 }
