@@ -15,6 +15,7 @@
 #include <thread>
 #include <vector>
 
+#include "dynamics/force_pass.hpp"
 #include "dynamics/threads.hpp"
 #include "springlab/forces.hpp"
 #include "springlab/stability.hpp"
@@ -63,6 +64,28 @@ TEST(Determinism, ThreadCountDoesNotChangeABit) {
   // More threads than blocks (and than cores): threads with one block, or none, waiting on others.
   EXPECT_EQ(run_hash(scene, Method::SymplecticEuler, 1, 40),
             run_hash(scene, Method::SymplecticEuler, 12, 40));
+}
+
+// A large model's finer blocks (force_pass.hpp's block_particles: an eighth of the particles, at
+// most 1024 until there are 16 blocks) and local-global's top a coordinate a thread (from 3
+// threads on): the same bits on any team. A 92 x 92 cloth has 9 blocks, 8 of 1024 and one of 272.
+TEST(Determinism, ALargeModelsBlocksAndTopGiveTheSameBitsOnAnyTeam) {
+  using force_detail::block_particles;
+  EXPECT_EQ(block_particles(576), 256);     // the shipped cloth: 3 blocks, as before
+  EXPECT_EQ(block_particles(4096), 512);    // 64 x 64: 8 blocks, as before
+  EXPECT_EQ(block_particles(8192), 1024);   // 8 blocks
+  EXPECT_EQ(block_particles(8464), 1024);   // 92 x 92: 9 (was 8 of 1088)
+  EXPECT_EQ(block_particles(16384), 1024);  // 128 x 128: 16 (was 8 of 2048)
+  EXPECT_EQ(block_particles(65536), 4096);  // 256 x 256: 16
+  const TeamAlways team;
+  const Scene scene = test::shipped("cloth", {"cloth.width=92", "cloth.height=92"});
+  for (const auto& [method, steps] :
+       {std::pair{Method::SymplecticEuler, 10}, std::pair{Method::ImplicitEuler, 2},
+        std::pair{Method::LocalGlobal, 2}}) {
+    const auto one = run_hash(scene, method, 1, steps);
+    EXPECT_EQ(run_hash(scene, method, 3, steps), one) << method_info(method).name;
+    EXPECT_EQ(run_hash(scene, method, 16, steps), one) << method_info(method).name;
+  }
 }
 
 // The team hands a job only to its own helpers: after passes at 12 threads (the pool then holds 11

@@ -113,6 +113,8 @@ struct LocalGlobalSolver {
   // rows (3 a slot), and a stack of pending sums for each piece and for the top, each on cache
   // lines of its own.
   std::vector<double> partial, stacks;
+  // The top's rows one coordinate a thread (solve_top): each coordinate's rows, then its stack.
+  std::vector<double> top;
   // Each particle's springs by row of the factor (compressed): spring s and +1 if the row is its
   // b end, -1 its a end; springs ascending, so that a row's sum takes them in the springs' order.
   std::vector<int> row_springs_first, row_springs;

@@ -460,15 +460,94 @@ void backward_rows(const LocalGlobalSolver& S, int from, int to, double* Z) {
   }
 }
 
+// One coordinate c of the top's rows, solved on T (T[k]: row top_first + k's coordinate c, in a
+// run of memory this coordinate's thread alone writes): forward, then backward. A top row's sum
+// reads only the top's rows and the pieces' partial sums (its entries in a piece's rows are that
+// piece's job), and a top column's only its ancestors, in the top too: so the three coordinates
+// are independent solves, each the same arithmetic in the same order as forward_rows and
+// backward_rows make for it (push_steps, x y z, is the same steps for one coordinate).
+void top_coordinate(const LocalGlobalSolver& S, int c, double* T, const double* partial,
+                    double* stack) {
+  const SolvePlan& P = S.plan;
+  const int top = P.top_first, rows = static_cast<int>(S.inv_d.size());
+  const double* t = T - top;  // t[row], for a top row
+  {
+    const int* index = P.row_index.data();
+    const double* value = P.row_value.data();
+    const auto steps_of = [&](const SumStep* step, int count) {  // push_steps, coordinate c
+      int height = 0;
+      for (const SumStep* end = step + count; step < end; ++step) {
+        double sum = 0.0;
+        if (step->slot >= 0) {
+          sum = partial[3 * step->slot + c];
+        } else {
+          for (int k = height - step->children; k < height; ++k) sum += stack[k];
+          height -= step->children;
+          for (int p = step->first; p < step->last; ++p) sum += value[p] * t[index[p]];
+        }
+        stack[height++] = sum;
+      }
+      return height;
+    };
+    for (int i = top; i < rows; ++i) {
+      double sum = t[i];
+      int first = P.row_begin[i], last = P.row_begin[i + 1];
+      if (const int steps = P.sum_first[i + 1] - P.sum_first[i]; steps > 1) {
+        const SumStep& own = P.sums[P.sum_first[i + 1] - 1];
+        const int children = steps_of(&P.sums[P.sum_first[i]], steps - 1);
+        for (int k = 0; k < children; ++k) sum -= stack[k];
+        first = own.first, last = own.last;
+      }
+      for (int p = first; p < last; ++p) sum -= value[p] * t[index[p]];
+      T[i - top] = sum;
+    }
+  }
+  const int* index = P.col_index.data();
+  const double* value = P.col_value.data();
+  for (int j = rows - 1; j >= top; --j) {
+    double sum = t[j] * S.inv_d[j];
+    for (int p = P.col_begin[j]; p < P.col_begin[j + 1]; ++p) sum -= value[p] * t[index[p]];
+    T[j - top] = sum;
+  }
+}
+
+// The top's rows, forward then backward: a coordinate a thread (top_coordinate) where the team
+// has three threads for it and the work is worth them, else x y z at once on the caller. One
+// coordinate's solve reads the same entries of L as all three's, so it costs more than a third of
+// theirs: on two threads (one coordinate and then two) the top took longer than x y z on one
+// (128 x 128 cloth, 2 cores: 42 against 49 steps a second). On a lent 16-core machine, the 128 x
+// 128 cloth at 3 threads: 41.6 to 54.8 steps a second against 34.9 to 43.3 (docs/performance.md).
+void solve_top(LocalGlobalSolver& S, double* Z, const double* partial, double* stack) {
+  const SolvePlan& P = S.plan;
+  const int top = P.top_first, rows = static_cast<int>(S.inv_d.size()), count = rows - top;
+  const double work =
+      (P.row_begin[rows] - P.row_begin[top]) + (P.col_begin[rows] - P.col_begin[top]);
+  if (count == 0 || threads::max_team() < 3 || !threads::worth_threads(work)) {
+    forward_rows(P, top, rows, Z, partial, stack);
+    backward_rows(S, top, rows, Z);
+    return;
+  }
+  // Each coordinate's rows and stack on cache lines of their own.
+  const std::size_t line = 8, length = (static_cast<std::size_t>(count) + line - 1) / line * line,
+                    height = (static_cast<std::size_t>(P.most_pending) + line - 1) / line * line;
+  S.top.resize(3 * (length + height));
+  threads::for_each_piece(3, work, [&](int c) {
+    double* T = S.top.data() + c * (length + height);
+    for (int k = 0; k < count; ++k) T[k] = Z[3 * (top + k) + c];
+    top_coordinate(S, c, T, partial, T + length);
+  });
+  for (int k = 0; k < count; ++k)
+    for (int c = 0; c < 3; ++c) Z[3 * (top + k) + c] = S.top[c * (length + height) + k];
+}
+
 }  // namespace
 
-// The pieces in parallel, each its rows and then its sums for the top's rows; the top's rows on
-// the caller: forward the pieces then the top, backward the top then the pieces.
+// The pieces in parallel, each its rows and then its sums for the top's rows; the top's rows next
+// (solve_top): forward the pieces then the top, backward the top then the pieces.
 void solve_in_place(LocalGlobalSolver& S, std::vector<double>& z) {
   const SolvePlan& P = S.plan;
   double* Z = z.data();
   const int pieces = static_cast<int>(P.piece_first.size()) - 1;
-  const int rows = static_cast<int>(S.inv_d.size());
   // A stack's cache lines its own (8 doubles a line): the pieces' threads write them at once.
   const std::size_t stack_size = (3 * static_cast<std::size_t>(P.most_pending) + 7) / 8 * 8;
   S.partial.resize(3 * static_cast<std::size_t>(P.slots));
@@ -483,8 +562,7 @@ void solve_in_place(LocalGlobalSolver& S, std::vector<double>& z) {
       std::copy_n(stack, 3, partial + 3 * job.slot);
     }
   });
-  forward_rows(P, P.top_first, rows, Z, partial, S.stacks.data() + stack_size * pieces);
-  backward_rows(S, P.top_first, rows, Z);
+  solve_top(S, Z, partial, S.stacks.data() + stack_size * pieces);
   threads::for_each_piece(pieces, P.piece_work, [&](int k) {
     backward_rows(S, P.piece_first[k], P.piece_first[k + 1], Z);
   });
