@@ -513,10 +513,12 @@ void top_coordinate(const LocalGlobalSolver& S, int c, double* T, const double* 
 
 // The top's rows, forward then backward: a coordinate a thread (top_coordinate) where the team
 // has three threads for it and the work is worth them, else x y z at once on the caller. One
-// coordinate's solve reads the same entries of L as all three's, so it costs more than a third of
-// theirs: on two threads (one coordinate and then two) the top took longer than x y z on one
-// (128 x 128 cloth, 2 cores: 42 against 49 steps a second). On a lent 16-core machine, the 128 x
-// 128 cloth at 3 threads: 41.6 to 54.8 steps a second against 34.9 to 43.3 (docs/performance.md).
+// coordinate's solve takes 0.82 to 0.89 of x y z's time, not a third (the 128 x 128 cloth's top,
+// one thread, here and on a lent 16-core machine): each row's sum is a chain of dependent
+// subtractions, which three coordinates run side by side for the price of one. So the top gains
+// at most 1 / 0.85 from its three threads, and on two (one coordinate, then two) it lost: the
+// 128 x 128 cloth ran 42 steps a second against 49 on 2 cores. The 16-core machine's step at 3 and
+// 4 threads: 8 to 44 % faster in 6 alternating pairs of runs (docs/performance.md).
 void solve_top(LocalGlobalSolver& S, double* Z, const double* partial, double* stack) {
   const SolvePlan& P = S.plan;
   const int top = P.top_first, rows = static_cast<int>(S.inv_d.size()), count = rows - top;
