@@ -29,8 +29,9 @@ for m in symplectic-euler:2e-4:400 xpbd:2e-4:400 implicit-euler:0.01666666666666
 done
 echo "## the helpers' spin between passes: local-global, 128 x 128 cloth, 4 and 16 threads, with"
 echo "## OMP_WAIT_POLICY=passive (helpers sleep after 50 us: sleeps= counts it) and without (about 1 ms)"
-for policy in passive ""; do
-  OMP_WAIT_POLICY="$policy" "$tool" "$cloth" local-global 0.016666666666666666 20 4 16 "${big[@]}"
+for policy in passive ""; do  # ("": unset, libgomp's default; an empty value it calls invalid)
+  env -u OMP_WAIT_POLICY ${policy:+OMP_WAIT_POLICY=$policy} \
+    "$tool" "$cloth" local-global 0.016666666666666666 20 4 16 "${big[@]}"
 done
 echo "## analysis: 128 x 128 cloth, seconds"
 "$tool" "$cloth" symplectic-euler 1e-3 1 1 4 16 0 "${big[@]}" --analysis

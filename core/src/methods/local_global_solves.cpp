@@ -514,8 +514,9 @@ void top_coordinate(const LocalGlobalSolver& S, int c, double* T, const double* 
 // The top's rows, forward then backward: a coordinate a thread (top_coordinate) where the team
 // has three threads for it and the work is worth them, else x y z at once on the caller. One
 // coordinate's solve takes 0.82 to 0.89 of x y z's time, not a third (the 128 x 128 cloth's top,
-// one thread, here and on a lent 16-core machine): each row's sum is a chain of dependent
-// subtractions, which three coordinates run side by side for the price of one. So the top gains
+// one thread, here and on a lent 16-core machine): its time goes to reading L's entries (an index
+// and a value each) and the rows they name, as much for one coordinate as for three (two sums a
+// row, to break the chain of subtractions, gained 1 to 3 % on one thread). So the top gains
 // at most 1 / 0.85 from its three threads, and on two (one coordinate, then two) it lost: the
 // 128 x 128 cloth ran 42 steps a second against 49 on 2 cores. The 16-core machine's step at 3 and
 // 4 threads: 8 to 44 % faster in 6 alternating pairs of runs (docs/performance.md).
