@@ -116,7 +116,8 @@ TEST(Determinism, TheStabilityAnalysisIsTheSameOnAnyNumberOfThreads) {
   // The traced range (10 x 10 cloth, dense spectrum off) and the dense spectrum (8 x 8 cloth, 186
   // free coordinates: every eigenvalue of a 372 x 372 matrix, whose reduction multiplies blocks
   // large enough for Eigen to share among threads where it may: EIGEN_DONT_PARALLELIZE).
-  for (const auto& [side, dense_dofs] : {std::pair{10, 0}, std::pair{8, kDenseDofs}}) {
+  for (const std::pair<int, int>& which : {std::pair{10, 0}, std::pair{8, kDenseDofs}}) {
+    const int side = which.first, dense_dofs = which.second;  // (clang 14 captures no binding)
     const std::string w = "cloth.width=" + std::to_string(side),
                       h = "cloth.height=" + std::to_string(side);
     const Scene scene = test::shipped("cloth", {w, h});
