@@ -388,28 +388,34 @@ void plan(const Model& model, LocalGlobalSolver& S) {
 
 namespace {
 
-// Steps of a sum (SumStep), x y z: each step's value left on `stack` until its parent's step
-// adds it. Returns how many values are left (the next step's children).
+// The solves below, for N coordinates at once: 3 (x y z, a row's three together: the solver's
+// layout) or 1 (one coordinate alone: solve_top's). Row r's coordinate k is at Z[N r + k], a
+// pending sum's at stack[N h + k], and a piece's sum for a top row at partial[3 slot + k] (for
+// one coordinate, `partial` points at its own). Each coordinate's arithmetic is the same, in the
+// same order, whatever N: the same bits.
+
+// Steps of a sum (SumStep): each step's value left on `stack` until its parent's step adds it.
+// Returns how many values are left (the next step's children).
+template <int N>
 int push_steps(const SolvePlan& P, const SumStep* step, int count, const double* Z,
                const double* partial, double* stack) {
   const int* index = P.row_index.data();
   const double* value = P.row_value.data();
   int height = 0;
   for (const SumStep* end = step + count; step < end; ++step) {
-    double s0 = 0.0, s1 = 0.0, s2 = 0.0;
+    double s[N] = {};
     if (step->slot >= 0) {
-      const double* v = partial + 3 * step->slot;
-      s0 = v[0], s1 = v[1], s2 = v[2];
+      for (int k = 0; k < N; ++k) s[k] = partial[3 * step->slot + k];
     } else {
       for (int c = height - step->children; c < height; ++c)
-        s0 += stack[3 * c], s1 += stack[3 * c + 1], s2 += stack[3 * c + 2];
+        for (int k = 0; k < N; ++k) s[k] += stack[N * c + k];
       height -= step->children;
       for (int p = step->first; p < step->last; ++p) {
-        const double* r = Z + 3 * index[p];
-        s0 += value[p] * r[0], s1 += value[p] * r[1], s2 += value[p] * r[2];
+        const double* r = Z + N * index[p];
+        for (int k = 0; k < N; ++k) s[k] += value[p] * r[k];
       }
     }
-    stack[3 * height] = s0, stack[3 * height + 1] = s1, stack[3 * height + 2] = s2;
+    for (int k = 0; k < N; ++k) stack[N * height + k] = s[k];
     ++height;
   }
   return height;
@@ -418,6 +424,7 @@ int push_steps(const SolvePlan& P, const SumStep* step, int count, const double*
 // Forward, L y = b, for the rows at places [from, to) (ascending): y_i = b_i less its children's
 // sums (their steps), in order, less its own entries' terms, in order. Most rows have no
 // children: y_i = b_i - L_ij y_j - ..., j ascending.
+template <int N>
 void forward_rows(const SolvePlan& P, int from, int to, double* Z, const double* partial,
                   double* stack) {
   const int* index = P.row_index.data();
@@ -425,25 +432,27 @@ void forward_rows(const SolvePlan& P, int from, int to, double* Z, const double*
   const int* sums = P.sum_first.data();
   const int* begin = P.row_begin.data();
   for (int i = from; i < to; ++i) {
-    double s0 = Z[3 * i], s1 = Z[3 * i + 1], s2 = Z[3 * i + 2];
+    double s[N];
+    for (int k = 0; k < N; ++k) s[k] = Z[N * i + k];
     int first = begin[i], last = begin[i + 1];
     if (const int steps = sums[i + 1] - sums[i]; steps > 1) {
       const SumStep& own = P.sums[sums[i + 1] - 1];
-      const int children = push_steps(P, &P.sums[sums[i]], steps - 1, Z, partial, stack);
+      const int children = push_steps<N>(P, &P.sums[sums[i]], steps - 1, Z, partial, stack);
       for (int c = 0; c < children; ++c)
-        s0 -= stack[3 * c], s1 -= stack[3 * c + 1], s2 -= stack[3 * c + 2];
+        for (int k = 0; k < N; ++k) s[k] -= stack[N * c + k];
       first = own.first, last = own.last;
     }
     for (int p = first; p < last; ++p) {
-      const double* r = Z + 3 * index[p];
-      s0 -= value[p] * r[0], s1 -= value[p] * r[1], s2 -= value[p] * r[2];
+      const double* r = Z + N * index[p];
+      for (int k = 0; k < N; ++k) s[k] -= value[p] * r[k];
     }
-    Z[3 * i] = s0, Z[3 * i + 1] = s1, Z[3 * i + 2] = s2;
+    for (int k = 0; k < N; ++k) Z[N * i + k] = s[k];
   }
 }
 
 // Then D w = y and L^T z = w for the rows at places [from, to), descending: z_j = y_j / D_j -
 // sum_i L_ij z_i over the rows below j in the factor (its ancestors), i ascending.
+template <int N>
 void backward_rows(const LocalGlobalSolver& S, int from, int to, double* Z) {
   const SolvePlan& P = S.plan;
   const int* begin = P.col_begin.data();
@@ -451,67 +460,17 @@ void backward_rows(const LocalGlobalSolver& S, int from, int to, double* Z) {
   const double* value = P.col_value.data();
   for (int j = to - 1; j >= from; --j) {
     const double inv = S.inv_d[j];
-    double s0 = Z[3 * j] * inv, s1 = Z[3 * j + 1] * inv, s2 = Z[3 * j + 2] * inv;
+    double s[N];
+    for (int k = 0; k < N; ++k) s[k] = Z[N * j + k] * inv;
     for (int p = begin[j]; p < begin[j + 1]; ++p) {
-      const double* r = Z + 3 * index[p];
-      s0 -= value[p] * r[0], s1 -= value[p] * r[1], s2 -= value[p] * r[2];
+      const double* r = Z + N * index[p];
+      for (int k = 0; k < N; ++k) s[k] -= value[p] * r[k];
     }
-    Z[3 * j] = s0, Z[3 * j + 1] = s1, Z[3 * j + 2] = s2;
+    for (int k = 0; k < N; ++k) Z[N * j + k] = s[k];
   }
 }
 
-// One coordinate c of the top's rows, solved on T (T[k]: row top_first + k's coordinate c, in a
-// run of memory this coordinate's thread alone writes): forward, then backward. A top row's sum
-// reads only the top's rows and the pieces' partial sums (its entries in a piece's rows are that
-// piece's job), and a top column's only its ancestors, in the top too: so the three coordinates
-// are independent solves, each the same arithmetic in the same order as forward_rows and
-// backward_rows make for it (push_steps, x y z, is the same steps for one coordinate).
-void top_coordinate(const LocalGlobalSolver& S, int c, double* T, const double* partial,
-                    double* stack) {
-  const SolvePlan& P = S.plan;
-  const int top = P.top_first, rows = static_cast<int>(S.inv_d.size());
-  const double* t = T - top;  // t[row], for a top row
-  {
-    const int* index = P.row_index.data();
-    const double* value = P.row_value.data();
-    const auto steps_of = [&](const SumStep* step, int count) {  // push_steps, coordinate c
-      int height = 0;
-      for (const SumStep* end = step + count; step < end; ++step) {
-        double sum = 0.0;
-        if (step->slot >= 0) {
-          sum = partial[3 * step->slot + c];
-        } else {
-          for (int k = height - step->children; k < height; ++k) sum += stack[k];
-          height -= step->children;
-          for (int p = step->first; p < step->last; ++p) sum += value[p] * t[index[p]];
-        }
-        stack[height++] = sum;
-      }
-      return height;
-    };
-    for (int i = top; i < rows; ++i) {
-      double sum = t[i];
-      int first = P.row_begin[i], last = P.row_begin[i + 1];
-      if (const int steps = P.sum_first[i + 1] - P.sum_first[i]; steps > 1) {
-        const SumStep& own = P.sums[P.sum_first[i + 1] - 1];
-        const int children = steps_of(&P.sums[P.sum_first[i]], steps - 1);
-        for (int k = 0; k < children; ++k) sum -= stack[k];
-        first = own.first, last = own.last;
-      }
-      for (int p = first; p < last; ++p) sum -= value[p] * t[index[p]];
-      T[i - top] = sum;
-    }
-  }
-  const int* index = P.col_index.data();
-  const double* value = P.col_value.data();
-  for (int j = rows - 1; j >= top; --j) {
-    double sum = t[j] * S.inv_d[j];
-    for (int p = P.col_begin[j]; p < P.col_begin[j + 1]; ++p) sum -= value[p] * t[index[p]];
-    T[j - top] = sum;
-  }
-}
-
-// The top's rows, forward then backward: a coordinate a thread (top_coordinate) where the team
+// The top's rows, forward then backward: a coordinate a thread (forward_rows<1>) where the team
 // has three threads for it and the work is worth them, else x y z at once on the caller. One
 // coordinate's solve takes 0.82 to 0.89 of x y z's time, not a third (the 128 x 128 cloth's top,
 // one thread, here and on a lent 16-core machine): its time goes to reading L's entries (an index
@@ -522,25 +481,30 @@ void top_coordinate(const LocalGlobalSolver& S, int c, double* T, const double* 
 // 4 threads: 8 to 44 % faster in 6 alternating pairs of runs (docs/performance.md).
 void solve_top(LocalGlobalSolver& S, double* Z, const double* partial, double* stack) {
   const SolvePlan& P = S.plan;
-  const int top = P.top_first, rows = static_cast<int>(S.inv_d.size()), count = rows - top;
+  const int top = P.top_first, rows = static_cast<int>(S.inv_d.size());
   const double work =
       (P.row_begin[rows] - P.row_begin[top]) + (P.col_begin[rows] - P.col_begin[top]);
-  if (count == 0 || threads::max_team() < 3 || !threads::worth_threads(work)) {
-    forward_rows(P, top, rows, Z, partial, stack);
-    backward_rows(S, top, rows, Z);
+  if (top == rows || threads::max_team() < 3 || !threads::worth_threads(work)) {
+    forward_rows<3>(P, top, rows, Z, partial, stack);
+    backward_rows<3>(S, top, rows, Z);
     return;
   }
-  // Each coordinate's rows and stack on cache lines of their own.
-  const std::size_t line = 8, length = (static_cast<std::size_t>(count) + line - 1) / line * line,
+  // A top row's sum reads only the top's rows and the pieces' sums for it (its entries in a
+  // piece's rows are that piece's job), and a top column's only its ancestors, in the top too: so
+  // the three coordinates are independent solves. Each coordinate's rows (by row; the top's
+  // filled) and its stack on cache lines of their own.
+  const std::size_t line = 8, length = (static_cast<std::size_t>(rows) + line - 1) / line * line,
                     height = (static_cast<std::size_t>(P.most_pending) + line - 1) / line * line;
   S.top.resize(3 * (length + height));
+  const auto coordinate = [&](int c) { return S.top.data() + c * (length + height); };
   threads::for_each_piece(3, work, [&](int c) {
-    double* T = S.top.data() + c * (length + height);
-    for (int k = 0; k < count; ++k) T[k] = Z[3 * (top + k) + c];
-    top_coordinate(S, c, T, partial, T + length);
+    double* T = coordinate(c);
+    for (int i = top; i < rows; ++i) T[i] = Z[3 * i + c];
+    forward_rows<1>(P, top, rows, T, partial + c, T + length);
+    backward_rows<1>(S, top, rows, T);
   });
-  for (int k = 0; k < count; ++k)
-    for (int c = 0; c < 3; ++c) Z[3 * (top + k) + c] = S.top[c * (length + height) + k];
+  for (int i = top; i < rows; ++i)
+    for (int c = 0; c < 3; ++c) Z[3 * i + c] = coordinate(c)[i];
 }
 
 }  // namespace
@@ -558,16 +522,16 @@ void solve_in_place(LocalGlobalSolver& S, std::vector<double>& z) {
   double* partial = S.partial.data();
   threads::for_each_piece(pieces, P.piece_work, [&](int k) {
     double* stack = S.stacks.data() + stack_size * k;
-    forward_rows(P, P.piece_first[k], P.piece_first[k + 1], Z, partial, stack);
+    forward_rows<3>(P, P.piece_first[k], P.piece_first[k + 1], Z, partial, stack);
     for (int j = P.job_first[k]; j < P.job_first[k + 1]; ++j) {
       const SolvePlan::Job& job = P.jobs[j];
-      push_steps(P, &P.sums[job.first], job.last - job.first, Z, partial, stack);
+      push_steps<3>(P, &P.sums[job.first], job.last - job.first, Z, partial, stack);
       std::copy_n(stack, 3, partial + 3 * job.slot);
     }
   });
   solve_top(S, Z, partial, S.stacks.data() + stack_size * pieces);
   threads::for_each_piece(pieces, P.piece_work, [&](int k) {
-    backward_rows(S, P.piece_first[k], P.piece_first[k + 1], Z);
+    backward_rows<3>(S, P.piece_first[k], P.piece_first[k + 1], Z);
   });
 }
 
